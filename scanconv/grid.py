@@ -1,0 +1,90 @@
+"""The text pixel grid printed under every answer.
+
+ASCII only, so it survives every format: ``#`` a plotted pixel, ``o`` a marked point (a
+control point or the centre), ``@`` both, ``.`` an empty cell. Rows are labelled with y and
+grow upward, as in the notes' 5 x 5 grid; ``origin="top-left"`` draws screen addressing
+(y grows downward) instead. The grid covers the pixels' bounding box plus a margin.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from .records import Pixel
+
+MAX_CELLS = 100
+"""Largest number of columns or rows drawn; a larger grid is left out with a note."""
+
+MARGIN = 1
+"""Empty cells around the bounding box."""
+
+
+def too_large(bbox: tuple[int, int, int, int], margin: int = MARGIN) -> str | None:
+    """Why the grid of ``bbox`` would not be readable, or ``None`` if it fits.
+
+    >>> too_large((0, 0, 10, 10)) is None
+    True
+    >>> too_large((0, 0, 500, 3))
+    'grid left out: 503 x 6 cells is more than 100 columns; the table and pixel list are complete'
+    """
+    cols = bbox[2] - bbox[0] + 1 + 2 * margin
+    rows = bbox[3] - bbox[1] + 1 + 2 * margin
+    if cols > MAX_CELLS or rows > MAX_CELLS:
+        what = "columns" if cols > MAX_CELLS else "rows"
+        return (
+            f"grid left out: {cols} x {rows} cells is more than {MAX_CELLS} {what}; "
+            "the table and pixel list are complete"
+        )
+    return None
+
+
+def render_grid(
+    pixels: Iterable[Pixel],
+    bbox: tuple[int, int, int, int],
+    *,
+    origin: str = "bottom-left",
+    marks: Iterable[Pixel] = (),
+    margin: int = MARGIN,
+) -> list[str]:
+    """The grid as lines of text (no trailing newlines).
+
+    >>> print("\\n".join(render_grid([(0, 0), (1, 1), (2, 1)], (0, 0, 2, 1))))
+     2 | .  .  .  .  .
+     1 | .  .  #  #  .
+     0 | .  #  .  .  .
+    -1 | .  .  .  .  .
+       +---------------
+         -1 0  1  2  3
+    # = plotted pixel; x to the right, y up
+    """
+    x0, y0 = bbox[0] - margin, bbox[1] - margin
+    x1, y1 = bbox[2] + margin, bbox[3] + margin
+    plotted = {p for p in pixels if x0 <= p[0] <= x1 and y0 <= p[1] <= y1}
+    marked = {p for p in marks if x0 <= p[0] <= x1 and y0 <= p[1] <= y1}
+    w = max(len(str(x)) for x in (x0, x1))
+    lw = max(len(str(y)) for y in (y0, y1))
+    ys = range(y0, y1 + 1) if origin == "top-left" else range(y1, y0 - 1, -1)
+    lines = []
+    for y in ys:
+        cells = []
+        for x in range(x0, x1 + 1):
+            p = (x, y)
+            ch = (
+                "@"
+                if (p in plotted and p in marked)
+                else "#"
+                if p in plotted
+                else ("o" if p in marked else ".")
+            )
+            cells.append(ch.ljust(w))
+        lines.append(f"{str(y).rjust(lw)} | " + " ".join(cells).rstrip())
+    ncols = x1 - x0 + 1
+    lines.append(" " * lw + " +" + "-" * (ncols * (w + 1)))
+    labels = " ".join(str(x).ljust(w) for x in range(x0, x1 + 1)).rstrip()
+    lines.append(" " * (lw + 3) + labels)
+    legend = "# = plotted pixel"
+    if marked:
+        legend += ", o = marked point, @ = both"
+    direction = "y down (screen addressing)" if origin == "top-left" else "y up"
+    lines.append(f"{legend}; x to the right, {direction}")
+    return lines

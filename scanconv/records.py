@@ -1,0 +1,194 @@
+"""The records every algorithm yields and the solution object every renderer reads.
+
+Coordinate convention (stated once, used everywhere): ``(x, y)`` with x growing to the right
+and y growing **upward**, as in the notes' tables and its 5 x 5 pixel grid. Screen addressing
+(origin top-left, y down) is only a way of *drawing* the grid (``--origin top-left``); the
+numbers in the tables never change.
+
+An algorithm is a generator of :class:`Step` records. A :class:`Solution` bundles what an exam
+answer shows around those steps (given values, derived quantities with numbers substituted,
+column headings, the plotted pixels) without ever formatting or printing anything itself.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass, field
+from enum import Enum
+from typing import Any, NamedTuple
+
+from .numeric import Number
+
+Pixel = tuple[int, int]
+"""A plotted pixel ``(x, y)``."""
+
+
+class Move(str, Enum):
+    """The move a decision makes, named by compass direction (y up).
+
+    ``E``/``NE`` in the first octant, ``N``/``NE`` on steep lines, ``E``/``SE`` for negative
+    slopes, ``E``/``SE`` for the circle's first octant, and so on.
+    """
+
+    E = "E"
+    NE = "NE"
+    N = "N"
+    NW = "NW"
+    W = "W"
+    SW = "SW"
+    S = "S"
+    SE = "SE"
+
+    @classmethod
+    def from_delta(cls, dx: int, dy: int) -> Move:
+        """The move for a unit step ``(dx, dy)``.
+
+        >>> Move.from_delta(1, -1)
+        <Move.SE: 'SE'>
+        """
+        return _MOVES[(dx, dy)]
+
+    def __str__(self) -> str:
+        return self.value
+
+
+_MOVES = {
+    (1, 0): Move.E,
+    (1, 1): Move.NE,
+    (0, 1): Move.N,
+    (-1, 1): Move.NW,
+    (-1, 0): Move.W,
+    (-1, -1): Move.SW,
+    (0, -1): Move.S,
+    (1, -1): Move.SE,
+}
+
+
+class Step(NamedTuple):
+    """One row of a step table.
+
+    A NamedTuple (not a frozen dataclass) because tables can have millions of rows and a
+    frozen dataclass is several times slower to build.
+    """
+
+    k: int
+    """Step index, from 0."""
+    p: Number | None
+    """The decision parameter p_k the decision was taken on; ``None`` if the algorithm has none."""
+    decision: Move | None
+    """The move chosen at this step; ``None`` if the algorithm makes no decision."""
+    pixel: Pixel
+    """The pixel this row plots (for Bresenham: ``(x_{k+1}, y_{k+1})``)."""
+    extra: tuple[Any, ...] = ()
+    """The algorithm's own columns, in the order :attr:`Solution.extra_keys` names them."""
+
+
+#: Building a record through ``tuple.__new__`` skips NamedTuple's Python-level ``__new__``;
+#: the hot loops use it (``_step(Step, (k, p, move, pixel, extra))``).
+new_step: Callable[[type[Step], tuple[Any, ...]], Step] = tuple.__new__  # type: ignore[assignment]
+
+
+class Column(NamedTuple):
+    """How one table column is headed and displayed."""
+
+    key: str
+    """Name in JSON and CSV (``k``, ``p``, ``decision``, ``pixel`` or an ``extra`` key)."""
+    text: str
+    """Heading in Unicode, for the terminal and markdown's non-math cells."""
+    tex: str
+    """Heading as LaTeX math (without ``$``), for markdown and LaTeX."""
+    places: int | None = None
+    """Fixed decimals for every cell (``3`` prints ``2.000``); ``None``: integers as they are."""
+
+
+class Quantity(NamedTuple):
+    """A given or derived value, with the working an exam answer writes out."""
+
+    key: str
+    """Name in JSON (``dx``, ``p0``, ``major_axis``)."""
+    value: Any
+    """The exact value: a number, a pixel, a string (``"x"``) or a tuple of numbers."""
+    text: str
+    """The working in Unicode: ``Δx = x₂ − x₁ = 10 − 2 = 8``."""
+    tex: str
+    """The same working as LaTeX math (without ``$``)."""
+
+
+@dataclass(slots=True)
+class Table:
+    """A secondary table shown after the step table (for example the 8-way symmetry table)."""
+
+    title: str
+    """Heading shown above the table."""
+    columns: tuple[Column, ...]
+    """Column headings; cells are taken by position from each row."""
+    rows: Callable[[], Iterable[tuple[Any, ...]]]
+    """A fresh iterable of rows each time it is called."""
+
+
+@dataclass(slots=True)
+class Solution:
+    """A worked solution: everything a renderer needs, computed lazily and exactly.
+
+    ``steps()`` and ``pixels()`` return fresh generators on every call: a renderer that needs
+    both (table, pixel list and grid) simply calls them again instead of keeping a list, so
+    streaming output stays in constant memory.
+    """
+
+    primitive: str
+    """``"line"``, ``"circle"``, ...: the JSON ``primitive`` field."""
+    algorithm: str
+    """``"bresenham"``, ``"dda"``, ...: the JSON ``algorithm`` field."""
+    title: str
+    """A one-line heading in ASCII: ``Bresenham's line algorithm: (2, 2) to (10, 6)``."""
+    given: tuple[Quantity, ...]
+    """The problem's input, as the answer states it."""
+    derived: tuple[Quantity, ...]
+    """Derived values with their working, in the order an answer writes them."""
+    columns: tuple[Column, ...]
+    """The step table's columns, in the notes' order."""
+    extra_keys: tuple[str, ...]
+    """Names of the values in :attr:`Step.extra`, in order."""
+    steps: Callable[[], Iterator[Step]]
+    """A fresh generator of the step records."""
+    pixels: Callable[[], Iterator[Pixel]]
+    """A fresh generator of every plotted pixel, once each, in plotting order."""
+    bbox: tuple[int, int, int, int]
+    """``(xmin, ymin, xmax, ymax)`` of the plotted pixels, known without running the steps."""
+    notes: tuple[str, ...] = ()
+    """Remarks shown under the derivation (swapped end points, tie rules, ...)."""
+    tables: tuple[Table, ...] = ()
+    """Secondary tables shown after the step table."""
+    marks: tuple[Pixel, ...] = ()
+    """Points drawn differently in the grid (control points, the centre)."""
+    data: dict[str, Any] = field(default_factory=dict)
+    """Extra JSON fields (exact values for tools), merged into the top-level object."""
+
+    @property
+    def has_p(self) -> bool:
+        """True if the step table has a decision-parameter column."""
+        return any(c.key == "p" for c in self.columns)
+
+    @property
+    def has_decision(self) -> bool:
+        """True if the step table has a decision column."""
+        return any(c.key == "decision" for c in self.columns)
+
+
+def step_getter(columns: Iterable[Column], extra_keys: tuple[str, ...]) -> Callable[[Step], tuple]:
+    """A function that turns a step into its cells, in column order.
+
+    >>> get = step_getter([Column("k", "k", "k"), Column("p_next", "p", "p")], ("p_next",))
+    >>> get(Step(0, 0, Move.NE, (3, 3), (-8,)))
+    (0, -8)
+    """
+    core = ("k", "p", "decision", "pixel")
+    where = [
+        (core.index(c.key), None) if c.key in core else (4, extra_keys.index(c.key))
+        for c in columns
+    ]
+
+    def get(step: Step) -> tuple:
+        return tuple(step[i] if j is None else step.extra[j] for i, j in where)
+
+    return get

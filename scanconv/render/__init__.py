@@ -1,0 +1,83 @@
+"""Renderers: turn a :class:`~scanconv.records.Solution` into output, without printing.
+
+:func:`render` is the one dispatch point for ``--format``. Every renderer is a generator that
+yields text chunks for stdout (each ending in a newline), :class:`Notice` objects for stderr,
+and, for the ``rich`` format only, rich renderables. The CLI writes them out; nothing here
+prints, and rich is imported only by the ``rich`` renderer.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+from enum import Enum
+from typing import Any
+
+from ..records import Solution
+
+
+class Format(str, Enum):
+    """Output formats. ``auto`` is resolved by the CLI before :func:`render` is called."""
+
+    auto = "auto"
+    rich = "rich"
+    markdown = "markdown"
+    latex = "latex"
+    csv = "csv"
+    json = "json"
+    plain = "plain"
+
+
+@dataclass(frozen=True, slots=True)
+class Options:
+    """Rendering options shared by every format."""
+
+    grid: bool = True
+    """Draw the text pixel grid (if it fits, see :mod:`scanconv.grid`)."""
+    origin: str = "bottom-left"
+    """``bottom-left`` (y up, as in the notes) or ``top-left`` (screen addressing, y down)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Notice:
+    """A one-line message for stderr (for example why the grid was left out)."""
+
+    message: str
+
+
+Chunk = Any  # str | Notice | a rich renderable
+"""What a renderer yields."""
+
+
+def render(solution: Solution, fmt: Format, options: Options | None = None) -> Iterator[Chunk]:
+    """Render ``solution`` in ``fmt``: the single dispatch for every ``--format``.
+
+    >>> from scanconv.lines import line_solution
+    >>> chunks = render(line_solution("bresenham", 0, 0, 2, 1), Format.csv)
+    >>> print("".join(chunks), end="")
+    k,p,decision,x,y,p_next
+    0,0,NE,1,1,-2
+    1,-2,E,2,1,0
+    """
+    options = options or Options()
+    if fmt is Format.auto:
+        raise ValueError("Format.auto must be resolved before rendering")
+    if fmt is Format.csv:
+        from .data import render_csv
+
+        return render_csv(solution)
+    if fmt is Format.json:
+        from .data import render_json
+
+        return render_json(solution)
+    if fmt is Format.latex:
+        from .latex import render_latex
+
+        return render_latex(solution, options)
+    if fmt is Format.rich:
+        from .terminal import render_rich
+
+        return render_rich(solution, options)
+    from .text import render_text
+
+    return render_text(solution, options, markdown=fmt is Format.markdown)

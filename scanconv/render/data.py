@@ -1,0 +1,110 @@
+"""The ``csv`` and ``json`` formats: data for other tools, streamed row by row.
+
+CSV is the step table only, one header row of column keys; a pixel column becomes two
+columns ``x`` and ``y``. JSON is one object (documented in the README, "JSON output")::
+
+    {"primitive": "line", "algorithm": "bresenham", "title": ..., "given": {...},
+     "derived": {...}, "working": [...], "notes": [...], "columns": [...],
+     "steps": [{"k": 0, "p": 0, "decision": "NE", "pixel": [3, 3], "p_next": -8}, ...],
+     "pixels": [[2, 2], [3, 3], ...]}
+
+Steps carry ``k`` and ``pixel`` always, ``p`` and ``decision`` where the algorithm has them,
+and the algorithm's own columns under their own keys. Integers are JSON integers, other
+exact values JSON numbers. Both formats are written as they are produced.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from collections.abc import Iterator
+
+from ..records import Solution
+from .cells import json_value
+
+
+def render_csv(solution: Solution) -> Iterator[str]:
+    """The step table as CSV."""
+    keys = ["k", "p", "decision", "pixel", *solution.extra_keys]
+    shown = [c.key for c in solution.columns]
+    keys = [k for k in keys if k in shown or k in ("k", "pixel")]
+    header: list[str] = []
+    for k in keys:
+        header.extend(("x", "y") if k == "pixel" else (k,))
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(header)
+    yield buf.getvalue()
+    index = {"k": 0, "p": 1, "decision": 2, "pixel": 3}
+    extra = {k: i for i, k in enumerate(solution.extra_keys)}
+    for step in solution.steps():
+        row: list[object] = []
+        for k in keys:
+            v = step[index[k]] if k in index else step.extra[extra[k]]
+            if k == "pixel":
+                row.extend(step.pixel)
+            else:
+                row.append(_csv_cell(v))
+        buf.seek(0)
+        buf.truncate()
+        writer.writerow(row)
+        yield buf.getvalue()
+
+
+def _csv_cell(v: object) -> object:
+    j = json_value(v)
+    if isinstance(j, list):
+        return " ".join(str(x) for x in j)
+    return "" if j is None else j
+
+
+def render_json(solution: Solution) -> Iterator[str]:
+    """The whole solution as one JSON object, steps streamed one per line."""
+    d = json.dumps
+    head = {
+        "primitive": solution.primitive,
+        "algorithm": solution.algorithm,
+        "title": solution.title,
+        "given": {q.key: json_value(q.value) for q in solution.given},
+        "derived": {q.key: json_value(q.value) for q in solution.derived},
+        "working": [q.text for q in solution.derived],
+        "notes": list(solution.notes),
+        "columns": [c.key for c in solution.columns],
+    }
+    head.update({k: json_value(v) for k, v in solution.data.items()})
+    yield d(head, ensure_ascii=False)[:-1] + ',\n "steps": [\n'
+    has_p, has_decision = solution.has_p, solution.has_decision
+    keys = solution.extra_keys
+    first = True
+    for s in solution.steps():
+        obj: dict[str, object] = {"k": s.k}
+        if has_p:
+            obj["p"] = json_value(s.p)
+        if has_decision:
+            obj["decision"] = json_value(s.decision)
+        obj["pixel"] = list(s.pixel)
+        for k, v in zip(keys, s.extra, strict=True):
+            obj[k] = json_value(v)
+        yield ("  " if first else ",\n  ") + d(obj, ensure_ascii=False)
+        first = False
+    yield ("\n" if not first else "") + ' ],\n "pixels": ['
+    first = True
+    for p in solution.pixels():
+        yield ("" if first else ", ") + f"[{p[0]}, {p[1]}]"
+        first = False
+    yield "]" + _tables_json(solution) + "}\n"
+
+
+def _tables_json(solution: Solution) -> str:
+    if not solution.tables:
+        return ""
+    tables = [
+        {
+            "title": t.title,
+            "columns": [c.key for c in t.columns],
+            "rows": [[json_value(v) for v in row] for row in t.rows()],
+        }
+        for t in solution.tables
+    ]
+    return ',\n "tables": ' + json.dumps(tables, ensure_ascii=False)

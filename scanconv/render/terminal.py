@@ -1,0 +1,83 @@
+"""The ``rich`` format, for a terminal: the same answer with colour and a boxed table.
+
+Returns rich renderables for the CLI's console to print. Text cells are ``Text`` objects, so
+pixel lists like ``[(1, 2)]`` are never read as markup or emoji.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from itertools import islice
+from typing import Any
+
+from rich import box
+from rich.table import Table as RichTable
+from rich.text import Text
+
+from ..numeric import fmt_pixel
+from ..records import Column, Solution
+from . import Notice, Options
+from .cells import numeric_column, wrap_items
+from .text import grid_block, step_rows, table_rows
+
+CHUNK_ROWS = 1000
+"""A long table is printed as several boxed tables of this many rows each."""
+
+
+def _tables(title: str, columns: tuple[Column, ...], rows: Iterator[list[str]]) -> Iterator[Any]:
+    first = True
+    while True:
+        chunk = list(islice(rows, CHUNK_ROWS))
+        if not chunk and not first:
+            return
+        t = RichTable(title=title if first else None, box=box.SIMPLE_HEAVY, show_header=first)
+        for c in columns:
+            t.add_column(
+                Text(c.text, style="bold"), justify="right" if numeric_column(c) else "center"
+            )
+        for r in chunk:
+            t.add_row(*(Text(x) for x in r))
+        yield t
+        first = False
+        if len(chunk) < CHUNK_ROWS:
+            return
+
+
+def render_rich(solution: Solution, options: Options) -> Iterator[Any]:
+    """The worked solution as rich renderables."""
+    yield Text(solution.title, style="bold underline")
+    yield Text("")
+    given = Text("Given: ", style="bold")
+    given.append(", ".join(q.text for q in solution.given))
+    yield given
+    if solution.derived:
+        yield Text("Working:", style="bold")
+        for q in solution.derived:
+            yield Text("  " + q.text, style="cyan")
+    for note in solution.notes:
+        yield Text("  " + note, style="dim")
+    yield from _tables("Step table", solution.columns, step_rows(solution, solution.columns))
+    for table in solution.tables:
+        yield from _tables(table.title, table.columns, table_rows(table))
+    count = sum(1 for _ in solution.pixels())
+    yield Text(f"Pixels plotted ({count}):", style="bold")
+    for line in wrap_items(fmt_pixel(p) for p in solution.pixels()):
+        yield Text("  " + line)
+    for chunk in grid_block(solution, options):
+        if isinstance(chunk, Notice):
+            yield chunk
+        else:
+            if chunk.startswith("#") or "|" not in chunk:
+                yield Text(chunk, style="dim")
+            else:
+                label, _, cells = chunk.partition("|")
+                yield Text(label + "|").append_text(_cells(cells))
+    yield Text("")
+
+
+def _cells(cells: str) -> Text:
+    t = Text()
+    for ch in cells:
+        style = {"#": "bold green", "o": "bold magenta", "@": "bold yellow", ".": "dim"}.get(ch)
+        t.append(ch, style=style)
+    return t

@@ -1,0 +1,183 @@
+"""The ``markdown`` and ``plain`` formats, and the table writer they share.
+
+Markdown: GitHub pipe tables with ``$...$`` math headings, working in ``$...$`` math, the grid
+in a fenced code block. Plain: ASCII only, nothing a terminal could misread.
+
+Tables up to :data:`BUFFER_ROWS` rows are padded into aligned columns; longer tables are
+written as their rows are produced (the first rows fix the widths), so output streams in
+constant memory however long the line.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator, Sequence
+from itertools import islice
+
+from .. import grid as gridmod
+from ..numeric import fmt_pixel
+from ..records import Column, Solution, Table, step_getter
+from . import Notice, Options
+from .cells import ascii_text, cell, numeric_column, wrap_items
+
+BUFFER_ROWS = 1000
+"""Tables with more rows than this are streamed instead of padded."""
+
+
+def table_lines(
+    headers: Sequence[str],
+    right: Sequence[bool],
+    rows: Iterable[Sequence[str]],
+    *,
+    markdown: bool,
+) -> Iterator[str]:
+    """Lines of a text table; padded if short, streamed if long.
+
+    >>> print("\\n".join(table_lines(["k", "pixel"], [True, False], [["0", "(1, 2)"]], markdown=True)))
+    |   k | pixel  |
+    |----:|:------:|
+    |   0 | (1, 2) |
+    >>> print("\\n".join(table_lines(["k", "pixel"], [True, False], [["0", "(1, 2)"]], markdown=False)))
+    k   pixel
+    -  ------
+    0  (1, 2)
+    """
+    it = iter(rows)
+    head = list(islice(it, BUFFER_ROWS + 1))
+    streaming = len(head) > BUFFER_ROWS
+    widths = [len(h) for h in headers]
+    for r in head:
+        for i, c in enumerate(r):
+            widths[i] = max(widths[i], len(c))
+    if markdown:
+        widths = [max(w, 3) for w in widths]
+
+    def pad(c: str, i: int) -> str:
+        if right[i]:
+            return c.rjust(widths[i])
+        return c.center(widths[i])
+
+    def line(cells: Sequence[str]) -> str:
+        if markdown:
+            if streaming:
+                return "| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |"
+            return (
+                "| " + " | ".join(pad(c.replace("|", "\\|"), i) for i, c in enumerate(cells)) + " |"
+            )
+        return "  ".join(pad(c, i) for i, c in enumerate(cells)).rstrip()
+
+    yield line(headers)
+    if markdown:
+        yield (
+            "|"
+            + "|".join(
+                ("-" * (w + 1) + ":") if right[i] else (":" + "-" * w + ":")
+                for i, w in enumerate(widths)
+            )
+            + "|"
+        )
+    else:
+        yield "  ".join("-" * w for w in widths)
+    for r in head:
+        yield line(r)
+    for r in it:
+        yield line(r)
+
+
+def step_rows(solution: Solution, columns: Sequence[Column]) -> Iterator[list[str]]:
+    """Display cells of every step, in column order."""
+    get = step_getter(columns, solution.extra_keys)
+    for step in solution.steps():
+        yield [cell(v, c) for v, c in zip(get(step), columns, strict=True)]
+
+
+def table_rows(table: Table) -> Iterator[list[str]]:
+    """Display cells of a secondary table."""
+    for row in table.rows():
+        yield [cell(v, c) for v, c in zip(row, table.columns, strict=True)]
+
+
+def pixel_lines(solution: Solution) -> Iterator[str]:
+    """The plotted pixels, wrapped, in plotting order."""
+    return wrap_items(fmt_pixel(p) for p in solution.pixels())
+
+
+def grid_block(solution: Solution, options: Options) -> Iterator[str | Notice]:
+    """The grid lines, or a :class:`Notice` saying why it was left out."""
+    if not options.grid:
+        return
+    reason = gridmod.too_large(solution.bbox)
+    if reason:
+        yield Notice(reason)
+        return
+    yield from gridmod.render_grid(
+        solution.pixels(), solution.bbox, origin=options.origin, marks=solution.marks
+    )
+
+
+def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iterator[str | Notice]:
+    """Markdown or plain text, one line per chunk."""
+    conv = (lambda s: s) if markdown else ascii_text
+    if markdown:
+        yield f"## {solution.title}\n\n"
+        yield "**Given:** " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
+        if solution.derived:
+            yield "**Working:**\n\n"
+            for q in solution.derived:
+                yield f"- ${q.tex}$\n"
+            yield "\n"
+        for note in solution.notes:
+            yield f"> {note}\n"
+        if solution.notes:
+            yield "\n"
+    else:
+        title = ascii_text(solution.title)
+        yield f"{title}\n{'=' * len(title)}\n\n"
+        yield "Given: " + ", ".join(ascii_text(q.text) for q in solution.given) + "\n\n"
+        if solution.derived:
+            yield "Working:\n"
+            for q in solution.derived:
+                yield f"  {ascii_text(q.text)}\n"
+            yield "\n"
+        if solution.notes:
+            yield "Notes:\n"
+            for note in solution.notes:
+                yield f"  - {ascii_text(note)}\n"
+            yield "\n"
+
+    def heading(col: Column) -> str:
+        return f"${col.tex}$" if markdown else ascii_text(col.text)
+
+    cols = solution.columns
+    if markdown:
+        yield "**Step table:**\n\n"
+    for line in table_lines(
+        [heading(c) for c in cols],
+        [numeric_column(c) for c in cols],
+        step_rows(solution, cols),
+        markdown=markdown,
+    ):
+        yield line + "\n"
+    yield "\n"
+    for table in solution.tables:
+        yield (f"**{table.title}:**\n\n" if markdown else f"{conv(table.title)}:\n")
+        for line in table_lines(
+            [heading(c) for c in table.columns],
+            [numeric_column(c) for c in table.columns],
+            table_rows(table),
+            markdown=markdown,
+        ):
+            yield line + "\n"
+        yield "\n"
+    count = sum(1 for _ in solution.pixels())
+    yield (f"**Pixels plotted ({count}):**\n\n" if markdown else f"Pixels plotted ({count}):\n")
+    for line in pixel_lines(solution):
+        yield (line if markdown else "  " + line) + "\n"
+    chunks = list(grid_block(solution, options))
+    grid_lines = [c for c in chunks if isinstance(c, str)]
+    yield from (c for c in chunks if isinstance(c, Notice))
+    if grid_lines:
+        yield "\n" + ("```text\n" if markdown else "Grid:\n")
+        for line in grid_lines:
+            yield line + "\n"
+        if markdown:
+            yield "```\n"
