@@ -387,6 +387,7 @@ def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solut
         steps=steps,
         pixels=pixels,
         bbox=_bbox((ix1, iy1), (ix2, iy2)),
+        geometry={"line": (ix1, iy1, ix2, iy2)},
         notes=tuple(notes),
     )
 
@@ -444,6 +445,7 @@ def _dda_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
         steps=lambda: dda(x1, y1, x2, y2),
         pixels=lambda: (s.pixel for s in dda(x1, y1, x2, y2)),
         bbox=_bbox((x1, y1), (x2, y2)),
+        geometry={"line": (x1, y1, x2, y2)},
         notes=notes,
     )
 
@@ -496,5 +498,6 @@ def _basic_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
         steps=lambda: basic(x1, y1, x2, y2),
         pixels=lambda: (s.pixel for s in basic(x1, y1, x2, y2)),
         bbox=_bbox((x1, y1), (x2, y2)),
+        geometry={"line": (x1, y1, x2, y2)},
         notes=(f"Each {mnr} is computed exactly and rounded half up, floor(v + 1/2).",),
     )

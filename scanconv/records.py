@@ -145,15 +145,16 @@ class Solution:
     """The problem's input, as the answer states it."""
     derived: tuple[Quantity, ...]
     """Derived values with their working, in the order an answer writes them."""
-    columns: tuple[Column, ...]
-    """The step table's columns, in the notes' order."""
-    extra_keys: tuple[str, ...]
+    columns: tuple[Column, ...] = ()
+    """The step table's columns, in the notes' order; empty: the answer has no step table."""
+    extra_keys: tuple[str, ...] = ()
     """Names of the values in :attr:`Step.extra`, in order."""
-    steps: Callable[[], Iterator[Step]]
+    steps: Callable[[], Iterator[Step]] = lambda: iter(())
     """A fresh generator of the step records."""
-    pixels: Callable[[], Iterator[Pixel]]
-    """A fresh generator of every plotted pixel, once each, in plotting order."""
-    bbox: tuple[int, int, int, int]
+    pixels: Callable[[], Iterator[Pixel]] | None = None
+    """A fresh generator of every plotted pixel, once each, in plotting order; ``None``: the
+    answer plots nothing (no pixel list, no grid)."""
+    bbox: tuple[int, int, int, int] = (0, 0, 0, 0)
     """``(xmin, ymin, xmax, ymax)`` of the plotted pixels, known without running the steps."""
     notes: tuple[str, ...] = ()
     """Remarks shown under the derivation (swapped end points, tie rules, ...)."""
@@ -161,6 +162,14 @@ class Solution:
     """Secondary tables shown after the step table."""
     marks: tuple[Pixel, ...] = ()
     """Points drawn differently in the grid (control points, the centre)."""
+    figure: Callable[[], list[str]] | None = None
+    """Extra ASCII figure lines (for example a shaded picture of an image matrix)."""
+    geometry: dict[str, Any] = field(default_factory=dict)
+    """The ideal primitive, for figures drawn over the pixels. Keys (all optional):
+    ``line``: ``(x1, y1, x2, y2)``; ``circle``: ``(xc, yc, r)``; ``ellipse``:
+    ``(xc, yc, rx, ry)``; ``polyline``: the sampled ideal curve as ``[(x, y), ...]`` floats;
+    ``control``: control points ``[(x, y), ...]``; ``symmetry``: 1, 4 or 8 with ``center``:
+    ``(xc, yc)``, saying how each step's point is mirrored into plotted pixels."""
     data: dict[str, Any] = field(default_factory=dict)
     """Extra JSON fields (exact values for tools), merged into the top-level object."""
 

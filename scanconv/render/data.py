@@ -25,7 +25,10 @@ from .cells import json_value
 
 
 def render_csv(solution: Solution) -> Iterator[str]:
-    """The step table as CSV."""
+    """The step table as CSV (or, for an answer without one, its first secondary table)."""
+    if not solution.columns:
+        yield from _table_csv(solution)
+        return
     keys = ["k", "p", "decision", "pixel", *solution.extra_keys]
     shown = [c.key for c in solution.columns]
     keys = [k for k in keys if k in shown or k in ("k", "pixel")]
@@ -50,6 +53,21 @@ def render_csv(solution: Solution) -> Iterator[str]:
         buf.truncate()
         writer.writerow(row)
         yield buf.getvalue()
+
+
+def _table_csv(solution: Solution) -> Iterator[str]:
+    if not solution.tables:
+        return
+    table = solution.tables[0]
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow([c.key for c in table.columns])
+    for row in table.rows():
+        writer.writerow([_csv_cell(v) for v in row])
+        yield buf.getvalue()
+        buf.seek(0)
+        buf.truncate()
+    yield buf.getvalue()
 
 
 def _csv_cell(v: object) -> object:
@@ -88,12 +106,15 @@ def render_json(solution: Solution) -> Iterator[str]:
             obj[k] = json_value(v)
         yield ("  " if first else ",\n  ") + d(obj, ensure_ascii=False)
         first = False
-    yield ("\n" if not first else "") + ' ],\n "pixels": ['
-    first = True
-    for p in solution.pixels():
-        yield ("" if first else ", ") + f"[{p[0]}, {p[1]}]"
-        first = False
-    yield "]" + _tables_json(solution) + "}\n"
+    yield ("\n" if not first else "") + " ]"
+    if solution.pixels is not None:
+        yield ',\n "pixels": ['
+        first = True
+        for p in solution.pixels():
+            yield ("" if first else ", ") + f"[{p[0]}, {p[1]}]"
+            first = False
+        yield "]"
+    yield _tables_json(solution) + "}\n"
 
 
 def _tables_json(solution: Solution) -> str:

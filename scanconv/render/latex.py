@@ -10,11 +10,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 
-from ..numeric import fmt_pixel
 from ..records import Column, Solution
 from . import Notice, Options
-from .cells import numeric_column, tex_text, wrap_items
-from .text import grid_block, step_rows, table_rows
+from .cells import numeric_column, tex_text
+from .text import all_tables, figure_lines, pixel_count, pixel_lines
 
 
 def _cell(text: str) -> str:
@@ -38,7 +37,8 @@ def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]
     """The worked solution as a LaTeX fragment."""
     yield "% scanconv answer; needs \\usepackage{booktabs,amsmath}\n"
     yield f"\\subsection*{{{tex_text(solution.title)}}}\n\n"
-    yield "\\paragraph{Given} " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
+    if solution.given:
+        yield "\\paragraph{Given} " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
     if solution.derived:
         yield "\\paragraph{Working}\n\\begin{itemize}\n"
         for q in solution.derived:
@@ -48,18 +48,16 @@ def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]
         yield f"\\noindent {tex_text(note)}\\par\n"
     if solution.notes:
         yield "\n"
-    yield "\\paragraph{Step table}\\mbox{}\\\\[1ex]\n"
-    yield from _tabular(solution.columns, step_rows(solution, solution.columns))
-    for table in solution.tables:
-        yield f"\n\\paragraph{{{tex_text(table.title)}}}\\mbox{{}}\\\\[1ex]\n"
-        yield from _tabular(table.columns, table_rows(table))
-    count = sum(1 for _ in solution.pixels())
-    yield f"\n\\paragraph{{Pixels plotted ({count})}}\n"
-    for line in wrap_items(fmt_pixel(p) for p in solution.pixels()):
-        yield f"${line}$\n"
-    chunks = list(grid_block(solution, options))
-    yield from (c for c in chunks if isinstance(c, Notice))
-    lines = [c for c in chunks if isinstance(c, str)]
+    for title, cols, rows in all_tables(solution):
+        yield f"\\paragraph{{{tex_text(title or 'Step table')}}}\\mbox{{}}\\\\[1ex]\n"
+        yield from _tabular(cols, rows)
+        yield "\n"
+    if solution.pixels is not None:
+        yield f"\\paragraph{{Pixels plotted ({pixel_count(solution)})}}\n"
+        for line in pixel_lines(solution):
+            yield f"${line}$\n"
+    lines, notices = figure_lines(solution, options)
+    yield from notices
     if lines:
         yield "\n\\begin{verbatim}\n"
         for line in lines:

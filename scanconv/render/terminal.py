@@ -14,11 +14,10 @@ from rich import box
 from rich.table import Table as RichTable
 from rich.text import Text
 
-from ..numeric import fmt_pixel
 from ..records import Column, Solution
-from . import Notice, Options
-from .cells import numeric_column, wrap_items
-from .text import grid_block, step_rows, table_rows
+from . import Options
+from .cells import numeric_column
+from .text import all_tables, figure_lines, pixel_count, pixel_lines
 
 CHUNK_ROWS = 1000
 """A long table is printed as several boxed tables of this many rows each."""
@@ -47,31 +46,30 @@ def render_rich(solution: Solution, options: Options) -> Iterator[Any]:
     """The worked solution as rich renderables."""
     yield Text(solution.title, style="bold underline")
     yield Text("")
-    given = Text("Given: ", style="bold")
-    given.append(", ".join(q.text for q in solution.given))
-    yield given
+    if solution.given:
+        given = Text("Given: ", style="bold")
+        given.append(", ".join(q.text for q in solution.given))
+        yield given
     if solution.derived:
         yield Text("Working:", style="bold")
         for q in solution.derived:
             yield Text("  " + q.text, style="cyan")
     for note in solution.notes:
         yield Text("  " + note, style="dim")
-    yield from _tables("Step table", solution.columns, step_rows(solution, solution.columns))
-    for table in solution.tables:
-        yield from _tables(table.title, table.columns, table_rows(table))
-    count = sum(1 for _ in solution.pixels())
-    yield Text(f"Pixels plotted ({count}):", style="bold")
-    for line in wrap_items(fmt_pixel(p) for p in solution.pixels()):
-        yield Text("  " + line)
-    for chunk in grid_block(solution, options):
-        if isinstance(chunk, Notice):
-            yield chunk
+    for title, cols, rows in all_tables(solution):
+        yield from _tables(title or "Step table", tuple(cols), rows)
+    if solution.pixels is not None:
+        yield Text(f"Pixels plotted ({pixel_count(solution)}):", style="bold")
+        for line in pixel_lines(solution):
+            yield Text("  " + line)
+    lines, notices = figure_lines(solution, options)
+    yield from notices
+    for line in lines:
+        if "|" not in line:
+            yield Text(line, style="dim")
         else:
-            if chunk.startswith("#") or "|" not in chunk:
-                yield Text(chunk, style="dim")
-            else:
-                label, _, cells = chunk.partition("|")
-                yield Text(label + "|").append_text(_cells(cells))
+            label, _, cells = line.partition("|")
+            yield Text(label + "|").append_text(_cells(cells))
     yield Text("")
 
 

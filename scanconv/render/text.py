@@ -98,12 +98,19 @@ def table_rows(table: Table) -> Iterator[list[str]]:
 
 def pixel_lines(solution: Solution) -> Iterator[str]:
     """The plotted pixels, wrapped, in plotting order."""
+    if solution.pixels is None:
+        return iter(())
     return wrap_items(fmt_pixel(p) for p in solution.pixels())
+
+
+def pixel_count(solution: Solution) -> int:
+    """How many pixels are plotted (runs the generator once more; constant memory)."""
+    return 0 if solution.pixels is None else sum(1 for _ in solution.pixels())
 
 
 def grid_block(solution: Solution, options: Options) -> Iterator[str | Notice]:
     """The grid lines, or a :class:`Notice` saying why it was left out."""
-    if not options.grid:
+    if not options.grid or solution.pixels is None:
         return
     reason = gridmod.too_large(solution.bbox)
     if reason:
@@ -114,12 +121,33 @@ def grid_block(solution: Solution, options: Options) -> Iterator[str | Notice]:
     )
 
 
+def figure_lines(solution: Solution, options: Options) -> tuple[list[str], list[Notice]]:
+    """The ASCII figures under the answer (the pixel grid, a custom figure) and notices."""
+    chunks = list(grid_block(solution, options))
+    lines = [c for c in chunks if isinstance(c, str)]
+    if solution.figure is not None and options.grid:
+        if lines:
+            lines.append("")
+        lines.extend(solution.figure())
+    return lines, [c for c in chunks if isinstance(c, Notice)]
+
+
+def all_tables(
+    solution: Solution,
+) -> Iterator[tuple[str | None, Sequence[Column], Iterator[list[str]]]]:
+    """``(title, columns, rows)`` of the step table (if any) and every secondary table."""
+    if solution.columns:
+        yield None, solution.columns, step_rows(solution, solution.columns)
+    for table in solution.tables:
+        yield table.title, table.columns, table_rows(table)
+
+
 def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iterator[str | Notice]:
     """Markdown or plain text, one line per chunk."""
-    conv = (lambda s: s) if markdown else ascii_text
     if markdown:
         yield f"## {solution.title}\n\n"
-        yield "**Given:** " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
+        if solution.given:
+            yield "**Given:** " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
         if solution.derived:
             yield "**Working:**\n\n"
             for q in solution.derived:
@@ -130,9 +158,10 @@ def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iter
         if solution.notes:
             yield "\n"
     else:
-        title = ascii_text(solution.title)
-        yield f"{title}\n{'=' * len(title)}\n\n"
-        yield "Given: " + ", ".join(ascii_text(q.text) for q in solution.given) + "\n\n"
+        heading_line = ascii_text(solution.title)
+        yield f"{heading_line}\n{'=' * len(heading_line)}\n\n"
+        if solution.given:
+            yield "Given: " + ", ".join(ascii_text(q.text) for q in solution.given) + "\n\n"
         if solution.derived:
             yield "Working:\n"
             for q in solution.derived:
@@ -147,37 +176,24 @@ def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iter
     def heading(col: Column) -> str:
         return f"${col.tex}$" if markdown else ascii_text(col.text)
 
-    cols = solution.columns
-    if markdown:
-        yield "**Step table:**\n\n"
-    for line in table_lines(
-        [heading(c) for c in cols],
-        [numeric_column(c) for c in cols],
-        step_rows(solution, cols),
-        markdown=markdown,
-    ):
-        yield line + "\n"
-    yield "\n"
-    for table in solution.tables:
-        yield (f"**{table.title}:**\n\n" if markdown else f"{conv(table.title)}:\n")
+    for title, cols, rows in all_tables(solution):
+        name = title or "Step table"
+        yield f"**{name}:**\n\n" if markdown else f"{ascii_text(name)}:\n"
         for line in table_lines(
-            [heading(c) for c in table.columns],
-            [numeric_column(c) for c in table.columns],
-            table_rows(table),
-            markdown=markdown,
+            [heading(c) for c in cols], [numeric_column(c) for c in cols], rows, markdown=markdown
         ):
             yield line + "\n"
         yield "\n"
-    count = sum(1 for _ in solution.pixels())
-    yield (f"**Pixels plotted ({count}):**\n\n" if markdown else f"Pixels plotted ({count}):\n")
-    for line in pixel_lines(solution):
-        yield (line if markdown else "  " + line) + "\n"
-    chunks = list(grid_block(solution, options))
-    grid_lines = [c for c in chunks if isinstance(c, str)]
-    yield from (c for c in chunks if isinstance(c, Notice))
-    if grid_lines:
-        yield "\n" + ("```text\n" if markdown else "Grid:\n")
-        for line in grid_lines:
+    if solution.pixels is not None:
+        count = pixel_count(solution)
+        yield f"**Pixels plotted ({count}):**\n\n" if markdown else f"Pixels plotted ({count}):\n"
+        for line in pixel_lines(solution):
+            yield (line if markdown else "  " + line) + "\n"
+    lines, notices = figure_lines(solution, options)
+    yield from notices
+    if lines:
+        yield "\n" + ("```text\n" if markdown else "")
+        for line in lines:
             yield line + "\n"
         if markdown:
             yield "```\n"
