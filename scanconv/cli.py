@@ -8,6 +8,7 @@ become one line on stderr and exit status 2; a failure to write is exit status 1
 from __future__ import annotations
 
 import os
+import re
 import sys
 import tempfile
 from collections.abc import Iterable
@@ -239,11 +240,20 @@ def _root(
 # --- entry point ------------------------------------------------------------------------------
 
 
+_MINUS = "\u2212"
+_NEG_NONFINITE = re.compile(r"-(inf|infinity|nan)$", re.IGNORECASE)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the CLI; return (and exit with) its status. Never shows a traceback for bad input."""
     from typer._click import exceptions as click_exc  # typer vendors click
 
     command = typer.main.get_command(app)
+    if argv is None:
+        argv = sys.argv[1:]
+    # "-inf"/"-nan" would be read as bundled short options (-i -n -f ...); keep them arguments
+    # so the number parser names them.
+    argv = [_MINUS + a[1:] if _NEG_NONFINITE.match(a) else a for a in argv]
     code = 0
     try:
         result = command.main(args=argv, prog_name=PROG, standalone_mode=False)

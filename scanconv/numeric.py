@@ -62,7 +62,7 @@ def parse_number(text: str) -> Fraction:
     ...
     ValueError: 'nan' is not a finite number
     """
-    s = text.strip()
+    s = text.strip().replace("\u2212", "-")
     if not s:
         raise ValueError("empty value where a number is expected")
     if len(s) > _MAX_LITERAL:
@@ -70,7 +70,7 @@ def parse_number(text: str) -> Fraction:
     if not _NUMBER.fullmatch(s):
         low = s.lower().lstrip("+-")
         if low in ("nan", "inf", "infinity"):
-            raise ValueError(f"{text!r} is not a finite number")
+            raise ValueError(f"{s!r} is not a finite number")
         if s.startswith("-") and not s[1:2].isdigit():
             raise ValueError(f"no such option: {s}")
         raise ValueError(f"{text!r} is not a number")

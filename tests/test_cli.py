@@ -1,0 +1,237 @@
+"""The CLI: every format, terminal detection, colour, errors, files and pipes."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import pty
+import re
+import select
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from .helpers import run, run_process
+
+ANSI = re.compile(r"\x1b\[")
+COLOUR = re.compile(r"\x1b\[[0-9;]*(3[0-7]|38;|9[0-7])[0-9;]*m")
+BOX = re.compile(r"[\u2500-\u257f]")
+LINE = ("line", "2", "2", "10", "6", "--algo", "bresenham")
+FORMATS = ("rich", "markdown", "latex", "csv", "json", "plain")
+
+
+@pytest.mark.parametrize("fmt", FORMATS)
+@pytest.mark.parametrize("algo", ["bresenham", "dda", "basic"])
+def test_every_format_and_algorithm(fmt, algo):
+    r = run("line", "2", "2", "10", "6", "--algo", algo, "--format", fmt)
+    assert r.code == 0 and r.err == ""
+    assert "(10, 6)" in r.out or "10,6" in r.out or "[10, 6]" in r.out
+    assert not ANSI.search(r.out)
+    if fmt != "rich":
+        assert not BOX.search(r.out)
+
+
+def test_plain_is_ascii():
+    for algo in ("bresenham", "dda", "basic"):
+        r = run(
+            "line",
+            "-3",
+            "7",
+            "4",
+            "-1.5",
+            "--algo",
+            algo if algo != "bresenham" else "dda",
+            "-f",
+            "plain",
+        )
+        assert r.code == 0
+        assert r.out.isascii(), [c for c in r.out if not c.isascii()]
+
+
+def test_json_shape():
+    r = run(*LINE, "--format", "json")
+    doc = json.loads(r.out)
+    assert doc["primitive"] == "line" and doc["algorithm"] == "bresenham"
+    assert doc["derived"]["p0"] == 0 and doc["given"]["P1"] == [2, 2]
+    assert doc["steps"][0] == {"k": 0, "p": 0, "decision": "NE", "pixel": [3, 3], "p_next": -8}
+    assert doc["pixels"][0] == [2, 2] and doc["pixels"][-1] == [10, 6]
+    assert len(doc["pixels"]) == len(doc["steps"]) + 1
+
+
+def test_json_dda_has_no_p_and_numbers_are_numbers():
+    doc = json.loads(run("line", "2", "2", "5", "10", "--algo", "dda", "-f", "json").out)
+    step = doc["steps"][1]
+    assert "p" not in step and "decision" not in step
+    assert step["x"] == 2.375 and step["y"] == 3 and isinstance(step["y"], int)
+    assert doc["derived"]["x_inc"] == 0.375
+
+
+def test_csv_is_the_table_only():
+    rows = list(csv.reader(io.StringIO(run(*LINE, "-f", "csv").out)))
+    assert rows[0] == ["k", "p", "decision", "x", "y", "p_next"]
+    assert rows[1] == ["0", "0", "NE", "3", "3", "-8"]
+    assert len(rows) == 9
+
+
+def test_markdown_table_and_math():
+    out = run(*LINE, "-f", "markdown").out
+    assert out.startswith("## Bresenham")
+    assert "| $k$ | $p_k$ |" in out.replace("  ", " ")
+    assert "$p_0 = 2\\Delta y - \\Delta x = 2 \\cdot 4 - 8 = 0$" in out
+    assert "```text\n" in out
+
+
+def test_latex_fragment_escapes_text_and_sets_numbers_in_math():
+    out = run(*LINE, "-f", "latex").out
+    assert "\\toprule" in out and "\\bottomrule" in out
+    assert "$-8$" in out
+    assert "\\$" not in out  # tabulate's latex_booktabs trap: math must not be escaped
+    assert "≥" not in out and "→" not in out
+
+
+def test_auto_is_markdown_when_piped():
+    r = run_process(*LINE)
+    assert r.code == 0
+    assert r.out.startswith("## ")
+    assert not ANSI.search(r.out) and not BOX.search(r.out)
+
+
+def _tty_output(args: list[str], env: dict[str, str]) -> str:
+    master, slave = pty.openpty()
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "scanconv", *args],
+        stdout=slave,
+        stderr=slave,
+        env={**{k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "TERM")}, **env},
+    )
+    os.close(slave)
+    chunks = []
+    while True:
+        ready, _, _ = select.select([master], [], [], 30)
+        if not ready:
+            break
+        try:
+            data = os.read(master, 65536)
+        except OSError:
+            break
+        if not data:
+            break
+        chunks.append(data)
+    proc.wait(timeout=30)
+    os.close(master)
+    return b"".join(chunks).decode("utf-8", "replace")
+
+
+def test_auto_is_rich_on_a_terminal_and_honours_no_color():
+    coloured = _tty_output(list(LINE), {"TERM": "xterm-256color", "COLUMNS": "120"})
+    assert BOX.search(coloured) and COLOUR.search(coloured)
+    plain = _tty_output(list(LINE), {"TERM": "xterm-256color", "COLUMNS": "120", "NO_COLOR": "1"})
+    assert BOX.search(plain)  # still the rich format
+    assert not COLOUR.search(plain)
+
+
+BAD = [
+    (["line", "a", "2", "3", "4"], "'a' is not a number"),
+    (["line", "nan", "2", "3", "4"], "not a finite number"),
+    (["line", "1", "inf", "3", "4"], "not a finite number"),
+    (["line", "1", "2", "3", "-Infinity"], "not a finite number"),
+    (["line", "", "2", "3", "4"], "empty"),
+    (["line", "1", "2", "3"], "Missing argument"),
+    (["line", "1", "2", "3", "4", "5"], "unexpected extra argument"),
+    (["line", "2.5", "2", "3", "4", "--algo", "bresenham"], "integer end points"),
+    (["line", "1", "2", "3", "4", "--algo", "wu"], "'wu' is not one of"),
+    (["line", "1", "2", "3", "4", "--format", "html"], "'html' is not one of"),
+    (["line", "1", "2", "3", "4", "--origin", "middle"], "'middle' is not one of"),
+    (["line", "1", "2", "3", "4", "--bogus"], "--bogus"),
+    (["line", "1e999", "2", "3", "4"], "out of range"),
+    (["line", "1/0", "2", "3", "4"], "divides by zero"),
+    (["line", "9" * 60, "2", "3", "4"], "longer than"),
+    (["nope"], "No such command"),
+]
+
+
+@pytest.mark.parametrize(("args", "message"), BAD, ids=[" ".join(a)[:40] for a, _ in BAD])
+def test_bad_input_is_one_line_exit_2(args, message):
+    r = run(*args)
+    assert r.code == 2
+    assert r.out == ""
+    assert r.err.count("\n") == 1 and r.err.startswith("scanconv: error: ")
+    assert message in r.err
+    assert "Traceback" not in r.err
+
+
+def test_bad_input_in_a_real_process():
+    r = run_process("line", "x", "1", "2", "3")
+    assert r.code == 2 and r.out == "" and r.err.count("\n") == 1
+
+
+def test_output_file_is_written_atomically(tmp_path: Path):
+    target = tmp_path / "answer.md"
+    r = run(*LINE, "--output", str(target))
+    assert r.code == 0 and r.out == ""
+    assert target.read_text().startswith("## Bresenham")
+    assert [p.name for p in tmp_path.iterdir()] == ["answer.md"]
+
+
+def test_unwritable_output_is_exit_1_and_leaves_the_old_file(tmp_path: Path):
+    missing = tmp_path / "no" / "such" / "dir" / "a.md"
+    r = run(*LINE, "--output", str(missing))
+    assert r.code == 1 and r.err.count("\n") == 1 and "cannot write" in r.err
+    existing = tmp_path / "keep.md"
+    existing.write_text("precious")
+    r = run("line", "x", "1", "2", "3", "--output", str(existing))
+    assert r.code == 2 and existing.read_text() == "precious"
+
+
+def test_bad_input_never_truncates_an_existing_file(tmp_path: Path):
+    existing = tmp_path / "keep.md"
+    existing.write_text("precious")
+    r = run("line", "2.5", "1", "2", "3", "--output", str(existing))
+    assert r.code == 2 and existing.read_text() == "precious"
+    assert [p.name for p in tmp_path.iterdir()] == ["keep.md"]
+
+
+def test_broken_pipe_is_quiet():
+    proc = subprocess.run(
+        f"{sys.executable} -m scanconv line 0 0 1000000 3 --format csv | head -1",
+        shell=True,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert proc.stdout == "k,p,decision,x,y,p_next\n"
+    assert "Error" not in proc.stderr and "Traceback" not in proc.stderr
+
+
+def test_grid_too_large_is_a_note_on_stderr():
+    r = run("line", "0", "0", "500", "3", "-f", "markdown")
+    assert r.code == 0
+    assert "grid left out" in r.err and r.err.count("\n") == 1
+    assert "```text" not in r.out and "(500, 3)" in r.out
+
+
+def test_no_grid_and_top_left():
+    assert " | " not in run(*LINE, "-f", "plain", "--no-grid").out
+    up = run("line", "0", "0", "3", "3", "-f", "plain").out
+    down = run("line", "0", "0", "3", "3", "-f", "plain", "--origin", "top-left").out
+    up_rows = [ln for ln in up.splitlines() if " | " in ln]
+    down_rows = [ln for ln in down.splitlines() if " | " in ln]
+    assert up_rows == down_rows[::-1]
+    assert "y down" in down
+
+
+def test_negative_coordinates_are_arguments_not_options():
+    r = run("line", "-2", "-3", "4", "5", "-f", "csv")
+    assert r.code == 0
+    rows = list(csv.DictReader(io.StringIO(r.out)))
+    assert (rows[-1]["x"], rows[-1]["y"]) == ("4", "5") and len(rows) == 8
+
+
+def test_python_dash_m_and_version():
+    r = run_process("--version")
+    assert r.code == 0 and r.out.startswith("scanconv ")
+    assert run_process("line", "--help").out.startswith("Usage: scanconv line")
