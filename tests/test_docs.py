@@ -1,0 +1,38 @@
+"""The README and CI agree, and every command is documented."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+import typer
+
+from scanconv.cli import app
+
+ROOT = Path(__file__).resolve().parent.parent
+README = (ROOT / "README.md").read_text(encoding="utf-8")
+COMMANDS = sorted(typer.main.get_command(app).commands)  # type: ignore[attr-defined]
+
+
+def test_readme_opens_with_install_and_test_commands():
+    blocks = re.findall(r"```sh\n(.*?)\n```", README, flags=re.S)
+    assert (
+        "pip install -e ." in blocks[0] and "scanconv line 2 2 10 6 --algo bresenham" in blocks[0]
+    )
+    assert "pip install -e '.[test]'" in blocks[1]
+
+
+def test_ci_runs_the_readme_test_command():
+    test_command = re.findall(r"```sh\n(.*?)\n```", README, flags=re.S)[1]
+    test_part = test_command.split("pip install -e '.[test]' && ", 1)[1]
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+    assert test_part in ci.splitlines()
+    assert "pip install --quiet -e '.[test]'" in ci and "python3 -m venv" in ci
+
+
+@pytest.mark.parametrize("name", COMMANDS)
+def test_every_command_has_help_and_a_readme_mention(name):
+    command = typer.main.get_command(app).commands[name]  # type: ignore[attr-defined]
+    assert command.help, f"{name} has no help"
+    assert f"scanconv {name}" in README, f"README does not show `scanconv {name}`"
