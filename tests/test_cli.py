@@ -9,6 +9,7 @@ import os
 import pty
 import re
 import select
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -205,6 +206,21 @@ def test_broken_pipe_is_quiet():
     )
     assert proc.stdout == "k,p,decision,x,y,p_next\n"
     assert "Error" not in proc.stderr and "Traceback" not in proc.stderr
+
+
+def test_ctrl_c_during_a_long_stream_exits_130_quietly():
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "scanconv", "line", "0", "0", "100000000", "1", "-f", "csv"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    assert proc.stdout is not None
+    assert proc.stdout.readline() == "k,p,decision,x,y,p_next\n"  # streaming has started
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130
+    assert "Traceback" not in err and "KeyboardInterrupt" not in err
 
 
 def test_grid_too_large_is_a_note_on_stderr():
