@@ -251,3 +251,15 @@ def test_python_dash_m_and_version():
     r = run_process("--version")
     assert r.code == 0 and r.out.startswith("scanconv ")
     assert run_process("line", "--help").out.startswith("Usage: scanconv line")
+
+
+@pytest.mark.parametrize("fmt", FORMATS)
+def test_typer_cli_runner_every_format(fmt):
+    from typer.testing import CliRunner
+
+    from scanconv.cli import app
+
+    result = CliRunner().invoke(app, [*LINE, "--format", fmt], prog_name="scanconv")
+    assert result.exit_code == 0, result.output
+    assert "(9, 6)" in result.stdout or "9,6" in result.stdout or "[9, 6]" in result.stdout
+    assert not ANSI.search(result.stdout)
