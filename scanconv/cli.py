@@ -7,11 +7,11 @@ become one line on stderr and exit status 2; a failure to write is exit status 1
 
 from __future__ import annotations
 
+import copy
 import os
 import re
 import signal
 import sys
-import tempfile
 from collections.abc import Iterable
 from enum import Enum
 from fractions import Fraction
@@ -213,6 +213,8 @@ def write_atomic(path: Path, fill: Any, *, binary: bool = False) -> None:
     A failure leaves any existing file untouched and no partial file behind (exit 1).
     ``fill`` gets a text file (UTF-8, ``\\n`` line ends), or a binary one with ``binary``.
     """
+    import tempfile  # here, not at the top: only a file output needs it (start-up time)
+
     directory = path.parent if str(path.parent) else Path(".")
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
@@ -366,6 +368,7 @@ def storage(
     ] = None,
     fmt: FormatOpt = Format.auto,
     output: OutputOpt = None,
+    explain: ExplainOpt = False,
 ) -> None:
     """Storage of an M x N image: M x N x ceil(log2 L) bits, in bytes, KB/MB and KiB/MiB.
 
@@ -384,7 +387,7 @@ def storage(
         color=None if color is None else color.value,
         frames=1 if frames is None else frames,
     )
-    emit(solution, fmt, output=output)
+    emit(solution, fmt, output=output, explain=explain)
 
 
 @app.command(context_settings=NUMERIC_ARGS)
@@ -420,6 +423,7 @@ def quantize(
     ] = Recon.mid,
     fmt: FormatOpt = Format.auto,
     output: OutputOpt = None,
+    explain: ExplainOpt = False,
 ) -> None:
     """The quantization table: decimal value, binary code and gray-level name of each level.
 
@@ -434,7 +438,7 @@ def quantize(
         integer=kind is InputKind.integer,
         recon=recon.value,
     )
-    emit(solution, fmt, output=output)
+    emit(solution, fmt, output=output, explain=explain)
 
 
 SizeOpt = Annotated[
@@ -447,7 +451,9 @@ LevelsOpt = Annotated[
 
 @app.command(context_settings=NUMERIC_ARGS)
 def sample(
-    expr: Annotated[str, typer.Argument(help="f(x, y), e.g. 'x + y' or 'sin(x)*cos(y)'.")],
+    expr: Annotated[
+        str, typer.Argument(metavar="EXPR", help="f(x, y), e.g. 'x + y' or 'sin(x)*cos(y)'.")
+    ],
     size: SizeOpt,
     levels: LevelsOpt,
     domain: Annotated[
@@ -479,16 +485,17 @@ def sample(
         ),
     ] = Origin.bottom_left,
     output: OutputOpt = None,
+    explain: ExplainOpt = False,
 ) -> None:
     """Sample f(x, y) on an M x N grid, quantize to L levels: the matrix and a shaded picture.
 
     Example: scanconv sample "x + y" --size 8x8 --levels 8
     """
-    from .image import parse_size, sample_solution
+    from .image import parse_size, sample_levels, sample_solution
 
     m, n = library_call(parse_size, size)
-    solution = library_call(
-        sample_solution,
+    sampled = library_call(
+        sample_levels,
         expr,
         m,
         n,
@@ -497,7 +504,8 @@ def sample(
         value_range=_exact_values(value_range),
         origin=origin.value,
     )
-    emit(solution, fmt, grid=grid, output=output)
+    solution = library_call(sample_solution, sampled)
+    emit(solution, fmt, grid=grid, output=output, explain=explain)
 
 
 image_app = typer.Typer(
@@ -524,6 +532,7 @@ def image_ramp(
         bool, typer.Option("--grid/--no-grid", help="Draw the shaded text picture.")
     ] = True,
     output: OutputOpt = None,
+    explain: ExplainOpt = False,
 ) -> None:
     """The notes' grayscale example: level i + j folded back at L - 1, for any size and L.
 
@@ -533,7 +542,7 @@ def image_ramp(
 
     m, n = library_call(parse_size, size)
     solution = library_call(ramp_solution, m, n, 8 if levels is None else levels)
-    emit(solution, fmt, grid=grid, output=output)
+    emit(solution, fmt, grid=grid, output=output, explain=explain)
 
 
 # --- compare: every method for one primitive, side by side (issue 6) -------------------------
@@ -566,6 +575,24 @@ def compare_line(
     from .compare import compare_lines
 
     solution = library_call(compare_lines, x1, y1, x2, y2)
+    emit(solution, fmt, grid=grid, output=output, explain=explain)
+
+
+@compare_app.command("circle", context_settings=NUMERIC_ARGS)
+def compare_circle(
+    r: Num,
+    fmt: FormatOpt = Format.auto,
+    grid: GridOpt = True,
+    output: OutputOpt = None,
+    explain: ExplainOpt = False,
+) -> None:
+    """Every circle method over the first octant (one row per x), against the midpoint method.
+
+    Example: scanconv compare circle 10
+    """
+    from .compare import compare_circles
+
+    solution = library_call(compare_circles, r)
     emit(solution, fmt, grid=grid, output=output, explain=explain)
 
 
@@ -993,6 +1020,7 @@ def local_control(
     fmt: FormatOpt = Format.auto,
     grid: GridOpt = True,
     output: OutputOpt = None,
+    explain: ExplainOpt = False,
 ) -> None:
     """Bezier vs B-spline: move one control point, see which samples and pixels change.
 
@@ -1013,7 +1041,7 @@ def local_control(
         knot_spec,
         DEFAULT_SAMPLES if samples is None else samples,
     )
-    emit(solution, fmt, grid=grid, output=output)
+    emit(solution, fmt, grid=grid, output=output, explain=explain)
 
 
 def _index(text: str) -> int:
@@ -1023,6 +1051,118 @@ def _index(text: str) -> int:
     return value.numerator
 
 
+# --- circles and ellipses (issue 3) ------------------------------------------------------------
+
+
+class CircleMethod(str, Enum):
+    """Circle methods; ``general`` is the notes' name for ``polynomial``."""
+
+    midpoint = "midpoint"
+    bresenham = "bresenham"
+    polynomial = "polynomial"
+    general = "general"
+    trig = "trig"
+    symmetric_dda = "symmetric-dda"
+
+
+class Rounding(str, Enum):
+    """How the floating-point circle methods turn coordinates into pixels."""
+
+    half_up = "half-up"
+    trunc = "trunc"
+
+
+CenterOpt = Annotated[
+    tuple[Fraction, Fraction] | None,
+    typer.Option(
+        "--center",
+        "-c",
+        parser=number,
+        metavar="XC YC",
+        show_default=False,
+        help="Centre (xc, yc), integers; default (0, 0).",
+    ),
+]
+
+
+@app.command(context_settings=NUMERIC_ARGS)
+def circle(
+    r: Num,
+    center: CenterOpt = None,
+    method: Annotated[
+        CircleMethod,
+        typer.Option("--method", "-m", case_sensitive=False, help="Circle method."),
+    ] = CircleMethod.midpoint,
+    rounding: Annotated[
+        Rounding,
+        typer.Option(
+            "--rounding",
+            case_sensitive=False,
+            help="polynomial, trig and symmetric-dda: round half up, floor(v + 1/2), or "
+            "truncate like a C (int) cast.",
+        ),
+    ] = Rounding.half_up,
+    fmt: FormatOpt = Format.auto,
+    grid: GridOpt = True,
+    origin: OriginOpt = Origin.bottom_left,
+    output: OutputOpt = None,
+    explain: ExplainOpt = False,
+    svg: SvgOpt = None,
+    png: PngOpt = None,
+) -> None:
+    """Draw the circle of radius R: one octant's step table, the 8-way symmetry, the pixels.
+
+    Example: scanconv circle 8 --center 10 10 --method bresenham
+    """
+    from .circles import circle_solution
+
+    xc, yc = center or (0, 0)
+    solution = library_call(circle_solution, method.value, r, xc, yc, rounding.value)
+    emit(
+        solution,
+        fmt,
+        grid=grid,
+        origin=origin,
+        output=output,
+        explain=explain,
+        svg=svg,
+        png=png,
+    )
+
+
+@app.command(context_settings=NUMERIC_ARGS)
+def ellipse(
+    rx: Num,
+    ry: Num,
+    center: CenterOpt = None,
+    fmt: FormatOpt = Format.auto,
+    grid: GridOpt = True,
+    origin: OriginOpt = Origin.bottom_left,
+    output: OutputOpt = None,
+    explain: ExplainOpt = False,
+    svg: SvgOpt = None,
+    png: PngOpt = None,
+) -> None:
+    """Draw the ellipse with semi-axes RX, RY by the midpoint method (regions 1 and 2).
+
+    Example: scanconv ellipse 8 6 --center 0 0
+    """
+    from .ellipses import ellipse_solution
+
+    xc, yc = center or (0, 0)
+    solution = library_call(ellipse_solution, rx, ry, xc, yc)
+    emit(
+        solution,
+        fmt,
+        grid=grid,
+        origin=origin,
+        output=output,
+        explain=explain,
+        svg=svg,
+        png=png,
+    )
+
+
 # --- entry point ------------------------------------------------------------------------------
 
 
@@ -1030,11 +1170,34 @@ _MINUS = "\u2212"
 _NEG_NONFINITE = re.compile(r"-(inf|infinity|nan)$", re.IGNORECASE)
 
 
+def _command_for(argv: list[str]) -> Any:
+    """The click command for ``argv``, building only the subcommand it names.
+
+    typer turns the signature of every command into click parameters each time the CLI
+    starts, a cost that grows with each command added. A run that names its subcommand
+    (``scanconv line ...``) gets a group holding just that one, with the same callback and
+    settings, so its parsing, help and errors are unchanged; anything else (``--help``,
+    ``--version``, an unknown name) gets the whole group.
+    """
+    if argv and not argv[0].startswith("-"):
+        commands = [
+            c
+            for c in app.registered_commands
+            if c.callback is not None
+            and (c.name or typer.main.get_command_name(c.callback.__name__)) == argv[0]
+        ]
+        groups = [g for g in app.registered_groups if g.name == argv[0]]
+        if commands or groups:
+            one = copy.copy(app)
+            one.registered_commands, one.registered_groups = commands, groups
+            return typer.main.get_command(one)
+    return typer.main.get_command(app)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the CLI; return (and exit with) its status. Never shows a traceback for bad input."""
     from typer._click import exceptions as click_exc  # typer vendors click
 
-    command = typer.main.get_command(app)
     if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:  # started in the background by a shell
         signal.signal(signal.SIGINT, signal.default_int_handler)
     if argv is None:
@@ -1042,6 +1205,7 @@ def main(argv: list[str] | None = None) -> int:
     # "-inf"/"-nan" would be read as bundled short options (-i -n -f ...); keep them arguments
     # so the number parser names them.
     argv = [_MINUS + a[1:] if _NEG_NONFINITE.match(a) else a for a in argv]
+    command = _command_for(argv)
     code = 0
     try:
         result = command.main(args=argv, prog_name=PROG, standalone_mode=False)

@@ -45,8 +45,12 @@ def render_grid(
     origin: str = "bottom-left",
     marks: Iterable[Pixel] = (),
     margin: int = MARGIN,
+    legend: str | None = None,
 ) -> list[str]:
     """The grid as lines of text (no trailing newlines).
+
+    ``legend`` replaces the key to the symbols (``# = plotted pixel...``) in the last line,
+    for figures whose ``#`` and ``o`` mean something else (``scanconv compare``).
 
     >>> print("\\n".join(render_grid([(0, 0), (1, 1), (2, 1)], (0, 0, 2, 1))))
      2 | .  .  .  .  .
@@ -82,9 +86,10 @@ def render_grid(
     lines.append(" " * lw + " +" + "-" * (ncols * (w + 1)))
     labels = " ".join(str(x).ljust(w) for x in range(x0, x1 + 1)).rstrip()
     lines.append(" " * (lw + 3) + labels)
-    legend = "# = plotted pixel"
-    if marked:
-        legend += ", o = marked point, @ = both"
+    if legend is None:
+        legend = "# = plotted pixel"
+        if marked:
+            legend += ", o = marked point, @ = both"
     direction = "y down (screen addressing)" if origin == "top-left" else "y up"
     lines.append(f"{legend}; x to the right, {direction}")
     return lines

@@ -64,23 +64,26 @@ def bresenham(x1: int, y1: int, x2: int, y2: int) -> Iterator[Step]:
     x1, y1, x2, y2, steep, dmaj, dmin, s, stay, move = _orient(x1, y1, x2, y2)
     inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
     x, y, p = x1, y1, 2 * dmin - dmaj
-    for k in range(dmaj):
-        if p < 0:
-            q, decision = p + inc_keep, stay
-            if steep:
-                y += 1
+    # The hot path of every long table (benchmarks/bench.py measures it): one loop per major
+    # axis so no step tests `steep`, and the record constructor bound to local names.
+    make, cls = new_step, Step
+    # Each record holds p_k, then p becomes p_{k+1} inside the tuple (the `:=`).
+    if steep:
+        for k in range(dmaj):
+            y += 1
+            if p < 0:
+                yield make(cls, (k, p, stay, (x, y), (p := p + inc_keep,)))
             else:
-                x += 1
-        else:
-            q, decision = p + inc_step, move
-            if steep:
                 x += s
-                y += 1
-            else:
-                x += 1
-                y += s
-        yield new_step(Step, (k, p, decision, (x, y), (q,)))
-        p = q
+                yield make(cls, (k, p, move, (x, y), (p := p + inc_step,)))
+        return
+    for k in range(dmaj):
+        x += 1
+        if p < 0:
+            yield make(cls, (k, p, stay, (x, y), (p := p + inc_keep,)))
+        else:
+            y += s
+            yield make(cls, (k, p, move, (x, y), (p := p + inc_step,)))
 
 
 def _orient(x1: int, y1: int, x2: int, y2: int) -> tuple:

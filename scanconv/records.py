@@ -160,6 +160,9 @@ class Solution:
     """Remarks shown under the derivation (swapped end points, tie rules, ...)."""
     tables: tuple[Table, ...] = ()
     """Secondary tables shown after the step table."""
+    show_steps: bool = True
+    """``False``: the text formats leave the step table out because :attr:`tables` show the
+    same steps split up (the ellipse's two regions); csv and json still carry every step."""
     marks: tuple[Pixel, ...] = ()
     """Points drawn differently in the grid (control points, the centre)."""
     figure: Callable[[], list[str]] | None = None
@@ -169,7 +172,8 @@ class Solution:
     ``line``: ``(x1, y1, x2, y2)``; ``circle``: ``(xc, yc, r)``; ``ellipse``:
     ``(xc, yc, rx, ry)``; ``polyline``: the sampled ideal curve as ``[(x, y), ...]`` floats;
     ``control``: control points ``[(x, y), ...]``; ``symmetry``: 1, 4 or 8 with ``center``:
-    ``(xc, yc)``, saying how each step's point is mirrored into plotted pixels."""
+    ``(xc, yc)``, saying how each step's point is mirrored into plotted pixels (with 4 or 8,
+    ``Step.pixel`` is the point relative to the centre, as the circle tables print it)."""
     data: dict[str, Any] = field(default_factory=dict)
     """Extra JSON fields (exact values for tools), merged into the top-level object."""
 

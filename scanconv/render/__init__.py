@@ -36,6 +36,10 @@ class Options:
     """Draw the text pixel grid (if it fits, see :mod:`scanconv.grid`)."""
     origin: str = "bottom-left"
     """``bottom-left`` (y up, as in the notes) or ``top-left`` (screen addressing, y down)."""
+    explain: bool = False
+    """``rich`` only: also show the derivation (given values, working with the numbers
+    substituted, notes). The document formats (markdown, latex, plain) always show it; the
+    terminal shows the answer (title, tables, pixels, grid) unless asked."""
 
 
 @dataclass(frozen=True, slots=True)

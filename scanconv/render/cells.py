@@ -40,6 +40,11 @@ _ASCII = {
     "–": "-",
     "—": "-",
     "’": "'",
+    "⌈": "ceil(",
+    "⌉": ")",
+    "⌊": "floor(",
+    "⌋": ")",
+    "∈": "in",
 }
 
 _TEX = {
@@ -62,6 +67,11 @@ _TEX = {
     "…": r"\ldots{}",
     "–": "--",
     "—": "---",
+    "⌈": r"$\lceil$",
+    "⌉": r"$\rceil$",
+    "⌊": r"$\lfloor$",
+    "⌋": r"$\rfloor$",
+    "∈": r"$\in$",
 }
 
 _TEX_SPECIAL = {
@@ -176,4 +186,8 @@ def wrap_items(items: Iterable[str], width: int = 96, sep: str = ", ") -> Iterat
 
 def numeric_column(column: Column) -> bool:
     """Right-align number columns; centre the rest."""
-    return column.key not in ("decision", "pixel") and not column.key.startswith("point")
+    return column.key not in TEXT_KEYS and not column.key.startswith("point")
+
+
+#: Keys of columns that hold words, not numbers (centred, never set in math mode).
+TEXT_KEYS = ("decision", "pixel", "method", "work", "arithmetic", "reason")

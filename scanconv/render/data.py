@@ -114,18 +114,21 @@ def render_json(solution: Solution) -> Iterator[str]:
             yield ("" if first else ", ") + f"[{p[0]}, {p[1]}]"
             first = False
         yield "]"
-    yield _tables_json(solution) + "}\n"
+    yield from _tables_json(solution)
+    yield "}\n"
 
 
-def _tables_json(solution: Solution) -> str:
+def _tables_json(solution: Solution) -> Iterator[str]:
+    """The ``tables`` field: the text one ``json.dumps`` would write, streamed row by row."""
     if not solution.tables:
-        return ""
-    tables = [
-        {
-            "title": t.title,
-            "columns": [c.key for c in t.columns],
-            "rows": [[json_value(v) for v in row] for row in t.rows()],
-        }
-        for t in solution.tables
-    ]
-    return ',\n "tables": ' + json.dumps(tables, ensure_ascii=False)
+        return
+    d = json.dumps
+    yield ',\n "tables": ['
+    for n, t in enumerate(solution.tables):
+        title = d(t.title, ensure_ascii=False)
+        columns = d([c.key for c in t.columns], ensure_ascii=False)
+        yield f'{", " if n else ""}{{"title": {title}, "columns": {columns}, "rows": ['
+        for i, row in enumerate(t.rows()):
+            yield (", " if i else "") + d([json_value(v) for v in row], ensure_ascii=False)
+        yield "]}"
+    yield "]"

@@ -1,19 +1,27 @@
 """The ``latex`` format: a fragment to ``\\input`` into a document.
 
-Needs ``\\usepackage{booktabs, amsmath}`` in the preamble (the fragment says so in its first
-line). The table is written by hand rather than with tabulate's ``latex_booktabs``, which
-escapes ``$`` and ``_`` and so breaks math headings; every cell that holds a number is set in
-math mode so minus signs are real minus signs, and every text cell is escaped.
+Needs ``\\usepackage{booktabs,amsmath,longtable}`` in the preamble (the fragment says so in
+its first line). The table is written by hand rather than with tabulate's ``latex_booktabs``,
+which escapes ``$`` and ``_`` and so breaks math headings; every cell that holds a number is
+set in math mode so minus signs are real minus signs, and every text cell is escaped.
+
+Tables are ``longtable`` s, so a long line's table continues on the next page (with its
+heading repeated) instead of running off the bottom of the page. Each plotted pixel is its own
+``$...$``, so the pixel list breaks between pixels (TeX does not break math after a comma).
+The pixel list is set ragged-right (long unbreakable pixels would overfill justified lines).
+Wide tables and grids are set tighter or smaller so they fit an article's text width.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
+from itertools import chain, islice
 
+from ..numeric import fmt_pixel
 from ..records import Column, Solution
 from . import Notice, Options
-from .cells import numeric_column, tex_text
-from .text import all_tables, figure_lines, pixel_count, pixel_lines
+from .cells import numeric_column, tex_text, wrap_items
+from .text import all_tables, figure_lines, pixel_count
 
 
 def _cell(text: str) -> str:
@@ -24,18 +32,82 @@ def _cell(text: str) -> str:
     return tex_text(text)
 
 
+TEXT_WIDTH = 345
+"""An article's text width in points (10pt, one column): what tables and grids must fit."""
+
+#: Font sizes to try, with the width of their text relative to the 10pt body text (Computer
+#: Modern's smaller sizes are drawn relatively wider: cmr7 text is 0.79 as wide, not 0.7).
+_SIZES = (("", 1.0), ("\\small", 0.93), ("\\footnotesize", 0.86), ("\\scriptsize", 0.79))
+_SAMPLE_ROWS = 100
+_MARKUP = str.maketrans("", "", "_{}^\\")
+
+
+def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> tuple[str, bool]:
+    """``(font size, tight)`` for a table: the largest font whose estimated width fits
+    :data:`TEXT_WIDTH`, first at the normal 6pt between columns, then at 3pt (``tight``).
+
+    The width is estimated from the headings and the first rows: about 4.8pt a character at
+    10pt (digits are 5pt, points and commas less; a minus sign counts 1.6), plus the gaps.
+
+    >>> from scanconv.records import Column
+    >>> cols = [Column(str(i), f"col {i}", "") for i in range(4)]
+    >>> table_layout(cols, [["1.000"] * 4])
+    ('', False)
+    >>> table_layout([Column(str(i), "N_{i,3}", "") for i in range(11)], [["0.125"] * 11])
+    ('', True)
+    >>> table_layout([Column(str(i), "(xc + x, yc + y)", "") for i in range(9)], [])
+    ('\\\\tiny', True)
+    """
+    widths = [_heading_chars(c) for c in columns]
+    for r in rows:
+        widths = [max(w, len(c) + 0.6 * c.count("-")) for w, c in zip(widths, r, strict=True)]
+    text = 4.8 * sum(widths)
+    for gap, tight in ((12, False), (6, True)):
+        for size, factor in _SIZES:
+            if text * factor + gap * len(columns) <= 0.97 * TEXT_WIDTH:  # 3% to spare
+                return size, tight
+    return "\\tiny", True
+
+
+def _heading_chars(column: Column) -> float:
+    """The width of a heading in characters: its plain text without ``_{}^``, plus one for
+    each ``+ - =``, which math mode sets with space on both sides."""
+    ops = sum(column.tex.count(op) for op in "+-=")
+    return len(column.text.translate(_MARKUP)) + ops
+
+
 def _tabular(columns: Sequence[Column], rows: Iterator[list[str]]) -> Iterator[str]:
     spec = "".join("r" if numeric_column(c) else "c" for c in columns)
-    yield f"\\begin{{tabular}}{{{spec}}}\n\\toprule\n"
-    yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n"
-    for r in rows:
+    head = list(islice(rows, _SAMPLE_ROWS))
+    size, tight = table_layout(columns, head)
+    group = bool(size or tight)
+    if group:
+        yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
+    yield f"\\begin{{longtable}}{{{spec}}}\n\\toprule\n"
+    yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n\\endhead\n"
+    for r in chain(head, rows):
         yield " & ".join(_cell(c) for c in r) + " \\\\\n"
-    yield "\\bottomrule\n\\end{tabular}\n"
+    yield "\\bottomrule\n\\end{longtable}\n" + ("}\n" if group else "")
+
+
+#: Font sizes for the verbatim grid by the widest line (characters) that fits an article's
+#: 345pt text width in cmtt (0.525 em a character): 10pt holds 65, 8pt 82, 7pt 94, 5pt 131.
+_GRID_SIZES = ((65, ""), (82, "\\footnotesize"), (94, "\\scriptsize"))
+
+
+def grid_size(lines: Sequence[str]) -> str:
+    """The font-size command that lets the grid fit the text width (``""``: normal size).
+
+    >>> grid_size(["7 | .  #"]), grid_size(["x" * 90]), grid_size(["x" * 200])
+    ('', '\\\\scriptsize', '\\\\tiny')
+    """
+    width = max((len(line) for line in lines), default=0)
+    return next((size for limit, size in _GRID_SIZES if width <= limit), "\\tiny")
 
 
 def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]:
     """The worked solution as a LaTeX fragment."""
-    yield "% scanconv answer; needs \\usepackage{booktabs,amsmath}\n"
+    yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable}\n"
     yield f"\\subsection*{{{tex_text(solution.title)}}}\n\n"
     if solution.given:
         yield "\\paragraph{Given} " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
@@ -54,12 +126,15 @@ def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]
         yield "\n"
     if solution.pixels is not None:
         yield f"\\paragraph{{Pixels plotted ({pixel_count(solution)})}}\n"
-        for line in pixel_lines(solution):
-            yield f"${line}$\n"
+        yield "{\\raggedright\n"
+        for line in wrap_items(f"${fmt_pixel(p)}$" for p in solution.pixels()):
+            yield line + "\n"
+        yield "\\par}\n"
     lines, notices = figure_lines(solution, options)
     yield from notices
     if lines:
-        yield "\n\\begin{verbatim}\n"
+        size = grid_size(lines)
+        yield "\n" + (f"{{{size}\n" if size else "") + "\\begin{verbatim}\n"
         for line in lines:
             yield line + "\n"
-        yield "\\end{verbatim}\n"
+        yield "\\end{verbatim}\n" + ("}\n" if size else "")

@@ -1,4 +1,8 @@
-"""The ``rich`` format, for a terminal: the same answer with colour and a boxed table.
+"""The ``rich`` format, for a terminal: the answer with colour and a boxed table.
+
+By default the terminal shows the answer: the title, the tables, the pixels and the grid.
+``--explain`` (:attr:`Options.explain`) adds the derivation the documents always carry: the
+given values, the working with the numbers substituted, and the notes.
 
 Returns rich renderables for the CLI's console to print. Text cells are ``Text`` objects, so
 pixel lists like ``[(1, 2)]`` are never read as markup or emoji.
@@ -46,16 +50,8 @@ def render_rich(solution: Solution, options: Options) -> Iterator[Any]:
     """The worked solution as rich renderables."""
     yield Text(solution.title, style="bold underline")
     yield Text("")
-    if solution.given:
-        given = Text("Given: ", style="bold")
-        given.append(", ".join(q.text for q in solution.given))
-        yield given
-    if solution.derived:
-        yield Text("Working:", style="bold")
-        for q in solution.derived:
-            yield Text("  " + q.text, style="cyan")
-    for note in solution.notes:
-        yield Text("  " + note, style="dim")
+    if options.explain:
+        yield from _derivation(solution)
     for title, cols, rows in all_tables(solution):
         yield from _tables(title or "Step table", tuple(cols), rows)
     if solution.pixels is not None:
@@ -71,6 +67,20 @@ def render_rich(solution: Solution, options: Options) -> Iterator[Any]:
             label, _, cells = line.partition("|")
             yield Text(label + "|").append_text(_cells(cells))
     yield Text("")
+
+
+def _derivation(solution: Solution) -> Iterator[Text]:
+    """What ``--explain`` adds: the given values, the working and the notes, as in markdown."""
+    if solution.given:
+        given = Text("Given: ", style="bold")
+        given.append(", ".join(q.text for q in solution.given))
+        yield given
+    if solution.derived:
+        yield Text("Working:", style="bold")
+        for q in solution.derived:
+            yield Text("  " + q.text, style="cyan")
+    for note in solution.notes:
+        yield Text("  " + note, style="dim")
 
 
 def _cells(cells: str) -> Text:

@@ -136,7 +136,7 @@ def all_tables(
     solution: Solution,
 ) -> Iterator[tuple[str | None, Sequence[Column], Iterator[list[str]]]]:
     """``(title, columns, rows)`` of the step table (if any) and every secondary table."""
-    if solution.columns:
+    if solution.columns and solution.show_steps:
         yield None, solution.columns, step_rows(solution, solution.columns)
     for table in solution.tables:
         yield table.title, table.columns, table_rows(table)

@@ -1,0 +1,478 @@
+"""Side-by-side comparisons: every algorithm for one primitive, and why their pixels differ.
+
+The notes ask "Compare DDA and Bresenham's line algorithms"; :func:`compare_lines` answers with
+evidence: one row per major-axis coordinate, the ideal line's exact value there, the pixel each
+method plots, and, where they differ, the reason (a tie broken differently, a DDA sample that is
+not on a pixel centre, ...), each reason explained once in the notes with its numbers.
+:func:`compare_circles` does the same for the circle methods over the first octant.
+
+A comparison is a :class:`~scanconv.records.Solution` with no step table: its table is a
+secondary :class:`~scanconv.records.Table`, and its text figure marks the pixels on which the
+methods disagree.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator
+from fractions import Fraction
+from typing import Any
+
+from . import grid as gridmod
+from .numeric import Number, fmt, fmt_short, normalize
+from .records import Column, Pixel, Solution, Table
+
+LINE_METHODS = ("basic", "dda", "bresenham")
+"""The line algorithms compared, in the order of the table's columns."""
+
+CIRCLE_METHODS = ("midpoint", "bresenham", "polynomial", "trig", "symmetric-dda")
+"""The circle methods compared; the first is the reference the others are measured against."""
+
+NAMES = {
+    "basic": "basic",
+    "dda": "DDA",
+    "bresenham": "Bresenham",
+    "midpoint": "midpoint",
+    "polynomial": "polynomial",
+    "trig": "trig",
+    "symmetric-dda": "sym. DDA",
+}
+"""Display names of the methods (table headings)."""
+
+SHORT = {"bresenham": "Bresenham", "polynomial": "poly", "trig": "trig", "symmetric-dda": "SDDA"}
+"""Names of the circle methods in reason tags (``trig off``, ``SDDA twice``)."""
+
+#: Reason tags shown in the table; the notes explain each one that occurs, with its numbers.
+TIE = "tie"
+DDA_OFF = "DDA off centre"
+DDA_NONE = "DDA skips"
+DDA_MANY = "DDA repeats"
+BASIC_NONE = "basic range"
+
+
+def arithmetic(maj: str, mnr: str, negative: bool = False) -> tuple[tuple[str, str, str], ...]:
+    """What each line method computes per pixel (the textbook forms), for a major axis.
+
+    >>> arithmetic("x", "y")[2]
+    ('Bresenham', 'p += 2dy or 2dy - 2dx', 'integers only')
+    >>> arithmetic("y", "x", negative=True)[2][1]
+    'p += 2|dx| or 2|dx| - 2dy'
+    """
+    d = f"|d{mnr}|" if negative else f"d{mnr}"
+    return (
+        ("basic", f"{mnr} = {mnr}1 + m({maj} - {maj}1)", "fractions, rounding"),
+        ("DDA", "x += x_inc, y += y_inc", "fractions, rounding"),
+        ("Bresenham", f"p += 2{d} or 2{d} - 2d{maj}", "integers only"),
+    )
+
+
+def _cell(values: list[int]) -> Any:
+    """One method's minor coordinate(s) in a column: an int, ``None`` or ``"3, 4"``."""
+    if not values:
+        return None
+    if len(values) == 1:
+        return values[0]
+    return ", ".join(str(v) for v in values)
+
+
+def _group(pixels: Iterable[Pixel], steep: bool) -> dict[int, list[int]]:
+    """Minor coordinates by major coordinate, each once, in plotting order."""
+    out: dict[int, list[int]] = {}
+    for x, y in pixels:
+        a, b = (y, x) if steep else (x, y)
+        col = out.setdefault(a, [])
+        if b not in col:
+            col.append(b)
+    return out
+
+
+def _first_rows(differing: list[tuple[Any, ...]]) -> Iterator[tuple[str, tuple[Any, ...]]]:
+    """Each reason tag that occurs (the last cell of a row, tags joined by ", ") with the first
+    row that has it: the example its note is worked on."""
+    seen: set[str] = set()
+    for row in differing:
+        for tag in str(row[-1]).split(", "):
+            if tag not in seen:
+                seen.add(tag)
+                yield tag, row
+
+
+def _plotted(sol: Solution) -> list[Pixel]:
+    """Every pixel a compared method plots (each of them plots some)."""
+    return [] if sol.pixels is None else list(sol.pixels())
+
+
+def _summary(sols: dict[str, Solution], differing: int, columns: int) -> str:
+    """How many columns differ, and how many pixels each method plots."""
+    counts = {m: len(set(_plotted(s))) for m, s in sols.items()}
+    if not differing:
+        return f"Every method plots the same pixels ({next(iter(counts.values()))})."
+    return (
+        f"The methods differ in {differing} of {_plural(columns, 'column')} ("
+        + ", ".join(f"{NAMES[m]}: {_plural(n, 'pixel')}" for m, n in counts.items())
+        + ")."
+    )
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}" if n == 1 else f"{n} {word}s"
+
+
+def _is_int(v: Number) -> bool:
+    return Fraction(v).denominator == 1
+
+
+def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
+    """The basic method, the DDA and Bresenham's algorithm side by side for one line.
+
+    Bresenham's algorithm needs integer end points; with fractional ones only the basic
+    method and the DDA are compared.
+
+    Notes
+    -----
+    With integer end points the basic method and the DDA compute the same exact points
+    (``y = y1 + m (x - x1)``: the DDA adds ``m`` where the basic method multiplies, and with
+    exact fractions both land on the line), and both round half up, so they always agree.
+    Bresenham's decision picks the pixel nearer the line too, so it differs from them only
+    at exact ties (``p_k = 0``, the line half-way between two pixels): it steps the minor
+    coordinate toward the end point, which is *down* on a line of negative slope, while
+    rounding half up always goes up.
+
+    Examples
+    --------
+    >>> sol = compare_lines(2, 8, 10, 4)
+    >>> for row in list(sol.tables[0].rows())[:3]:
+    ...     print(row)
+    (2, 8, 8, 8, 8, None)
+    (3, Fraction(15, 2), 8, 8, 7, 'tie')
+    (4, 7, 7, 7, 7, None)
+    """
+    from .lines import line_solution
+
+    integer = all(_is_int(v) for v in (x1, y1, x2, y2))
+    methods = LINE_METHODS if integer else LINE_METHODS[:2]
+    sols = {m: line_solution(m, x1, y1, x2, y2) for m in methods}
+    dx, dy = Fraction(x2 - x1), Fraction(y2 - y1)
+    steep = abs(dy) > abs(dx)
+    maj, mnr = ("y", "x") if steep else ("x", "y")
+    a1, b1, a2 = (y1, x1, y2) if steep else (x1, y1, x2)
+    da, db = (dy, dx) if steep else (dx, dy)
+    slope = db / da if da else Fraction(0)
+
+    def exact(a: int) -> Number:
+        return normalize(b1 + slope * (a - a1))
+
+    def groups() -> dict[str, dict[int, list[int]]]:
+        return {m: _group(_plotted(sols[m]), steep) for m in methods}
+
+    first = groups()
+    majors = sorted(set().union(*first.values()), reverse=a2 < a1)
+
+    def rows() -> Iterator[tuple[Any, ...]]:
+        cols = groups()
+        for a in majors:
+            cells = [cols[m].get(a, []) for m in methods]
+            reasons = _line_reasons(dict(zip(methods, cells, strict=True)))
+            yield (a, exact(a), *(_cell(c) for c in cells), ", ".join(reasons) or None)
+
+    differing = [r for r in rows() if r[-1] is not None]
+    notes = _line_notes(sols, steep, maj, mnr, exact, differing, integer, len(majors))
+    bres = sols.get("bresenham")
+    derived = tuple(sols["dda"].derived) + (
+        tuple(q for q in bres.derived if q.key in ("p0", "inc_keep", "inc_step")) if bres else ()
+    )
+    columns = (
+        Column(maj, maj, maj),
+        Column(f"{mnr}_exact", f"{mnr} on the line", f"{mnr} \\text{{ on the line}}", 3),
+        *(Column(m, NAMES[m], f"\\text{{{NAMES[m]}}}") for m in methods),
+        Column("reason", "differ", r"\text{differ}"),
+    )
+    tables = [Table(f"Pixels side by side ({mnr} for each {maj})", columns, rows)]
+    if integer:
+        tables.append(
+            Table(
+                "Arithmetic per pixel",
+                (
+                    Column("method", "method", r"\text{method}"),
+                    Column("work", "per pixel", r"\text{per pixel}"),
+                    Column("arithmetic", "arithmetic", r"\text{arithmetic}"),
+                ),
+                lambda: iter(arithmetic(maj, mnr, da * db < 0)),
+            )
+        )
+    all_pixels = {m: _plotted(sols[m]) for m in methods}
+    return Solution(
+        primitive="line",
+        algorithm="compare",
+        title=f"Line algorithms compared: ({fmt_short(x1)}, {fmt_short(y1)}) to "
+        f"({fmt_short(x2)}, {fmt_short(y2)})",
+        given=sols["dda"].given,
+        derived=derived,
+        notes=tuple(notes),
+        tables=tuple(tables),
+        figure=_disagreement_figure(all_pixels),
+        geometry={"line": (x1, y1, x2, y2)},
+        data={"methods": list(methods), "columns_differing": len(differing)},
+    )
+
+
+def _line_reasons(cells: dict[str, list[int]]) -> list[str]:
+    """The reason tags of one column (empty when every method agrees)."""
+    ref, dda = cells["basic"], cells["dda"]
+    out = []
+    bres = cells.get("bresenham")
+    if bres is not None and bres != ref:
+        out.append(TIE)  # the only way they differ (see compare_lines' Notes; tested)
+    if dda != ref:
+        # The DDA's major coordinate moves by at most 1 a step, from round(P1) to round(P2),
+        # so it covers the basic method's columns exactly; it differs within a column only.
+        out.append(DDA_MANY if len(dda) > 1 else DDA_OFF)
+    return out
+
+
+def _line_notes(
+    sols: dict[str, Solution],
+    steep: bool,
+    maj: str,
+    mnr: str,
+    exact: Callable[[int], Number],
+    differing: list[tuple[Any, ...]],
+    integer: bool,
+    columns: int,
+) -> list[str]:
+    """The summary, then one note per reason tag that occurs, with its first example."""
+    notes = [_summary(sols, len(differing), columns)]
+    if integer:
+        notes.append(
+            "With integer end points the basic method and the DDA compute the same exact "
+            f"points, {mnr} = {mnr}1 + ({'dx/dy' if steep else 'dy/dx'})({maj} - {maj}1), "
+            "and both round half up, so they agree; Bresenham picks the nearer pixel with "
+            "integers only and can differ from them only at an exact tie."
+        )
+    else:
+        notes.append("Bresenham's algorithm needs integer end points; it is left out.")
+    bres_p = _bresenham_p(sols["bresenham"], steep) if "bresenham" in sols else {}
+    dda_pts = _dda_points(sols["dda"], steep)
+    for tag, row in _first_rows(differing):
+        a = row[0]
+        e = exact(a)
+        at = f"{maj} = {a}"
+        if tag == TIE:
+            lo, hi = Fraction(e) - Fraction(1, 2), Fraction(e) + Fraction(1, 2)
+            k, p = bres_p.get(a, (None, None))
+            lower = row[-2] == normalize(lo)
+            way = ("left" if lower else "right") if steep else ("down" if lower else "up")
+            notes.append(
+                f"Tie (rows marked 'tie'): at {at} the line is at {mnr} = {fmt_short(e)}, "
+                f"half-way between {fmt_short(lo)} and {fmt_short(hi)}. Rounding half up "
+                f"(basic, DDA) takes "
+                f"{fmt_short(hi)}; Bresenham's p_{k} = {p} steps {mnr} toward the end point, "
+                f"{way} to {row[-2]}."
+            )
+        else:
+            pts = dda_pts.get(a, [])
+            shown = " and ".join(f"({fmt_short(x)}, {fmt_short(y)})" for x, y in pts)
+            what = (
+                f"samples the line at {shown}, not on the pixel centre {at}, and rounds "
+                "both coordinates"
+                if tag == DDA_OFF
+                else f"has the points {shown}, which round to the same {at}"
+            )
+            notes.append(
+                f"{tag[:1].upper()}{tag[1:]} (rows marked '{tag}'): the DDA {what}; the "
+                f"basic method evaluates the line at the pixel centre ({mnr} = "
+                f"{fmt_short(e)} at {at})."
+            )
+    return notes
+
+
+def _bresenham_p(sol: Solution, steep: bool) -> dict[int, tuple[int, Any]]:
+    """``(k, p_k)`` of the Bresenham step that plotted each major coordinate."""
+    return {(s.pixel[1] if steep else s.pixel[0]): (s.k, s.p) for s in sol.steps()}
+
+
+def _dda_points(sol: Solution, steep: bool) -> dict[int, list[tuple[Number, Number]]]:
+    """The DDA's exact points ``(x_k, y_k)`` by the major coordinate of their pixel."""
+    out: dict[int, list[tuple[Number, Number]]] = {}
+    for s in sol.steps():
+        out.setdefault(s.pixel[1] if steep else s.pixel[0], []).append(s.extra[:2])
+    return out
+
+
+def _disagreement_figure(pixels: dict[str, list[Pixel]]) -> Callable[[], list[str]] | None:
+    """A text grid: ``#`` where every method plots the pixel, ``o`` where only some do."""
+    sets = [set(p) for p in pixels.values()]
+    union = set().union(*sets)
+    if not union:
+        return None
+    agreed = set.intersection(*sets)
+    xs, ys = [p[0] for p in union], [p[1] for p in union]
+    bbox = (min(xs), min(ys), max(xs), max(ys))
+    if gridmod.too_large(bbox):
+        return None
+
+    def figure() -> list[str]:
+        return gridmod.render_grid(
+            sorted(agreed),
+            bbox,
+            marks=sorted(union - agreed),
+            legend="# = every method plots it, o = only some do (see the table)",
+        )
+
+    return figure
+
+
+# --- circles -------------------------------------------------------------------------------------
+
+
+def compare_circles(r: Number) -> Solution:
+    """Every circle method side by side over the first octant, measured against the midpoint.
+
+    The 8 images of a point ``(x, y)`` depend only on ``{|x|, |y|}``, so two methods plot the
+    same circle exactly when they plot the same points with ``0 <= x <= y``: the table has one
+    row per x of that octant (x is its major axis), the circle's ``y = sqrt(r² - x²)`` (to 3
+    decimals), and the y each method plots there. Where a method differs from the midpoint
+    method (Bresenham's ``d0 = 3 - 2r`` never does), the row says how: ``off`` (its point in
+    this column is not the rounded circle: the parametric method and the symmetric DDA sample
+    off the pixel centres), ``skips`` or ``twice`` (no point, or two, in this column),
+    ``stops`` (it ends at the 45 degree diagonal before the midpoint method does). The
+    symmetric DDA is left out above its radius limit.
+
+    Examples
+    --------
+    >>> sol = compare_circles(5)
+    >>> for row in sol.tables[0].rows():
+    ...     print(row[0], *row[2:])
+    0 5 5 5 5 5 None
+    1 5 5 5 5 5 None
+    2 5 5 5 5 5, 4 SDDA twice
+    3 4 4 4 4 4, 3 SDDA twice
+    """
+    from .circles import SDDA_MAX_RADIUS, _sqrt6, check_integer, circle_solution
+
+    ir = check_integer(r, "radius", negative=False)
+    methods = tuple(m for m in CIRCLE_METHODS if m != "symmetric-dda" or ir <= SDDA_MAX_RADIUS)
+    sols = {m: circle_solution(m, ir) for m in methods}
+
+    def octant(m: str) -> dict[int, list[int]]:
+        pts = sorted(
+            (p for p in _plotted(sols[m]) if 0 <= p[0] <= p[1]), key=lambda p: (p[0], -p[1])
+        )
+        return _group(pts, steep=False)
+
+    cols = {m: octant(m) for m in methods}
+    xs = sorted(set().union(*cols.values()))
+    last = {m: max(cols[m], default=-1) for m in methods}
+
+    def exact(x: int) -> Number:
+        return normalize(_sqrt6(ir * ir - x * x))
+
+    def rows() -> Iterator[tuple[Any, ...]]:
+        for x in xs:
+            cells = {m: cols[m].get(x, []) for m in methods}
+            reasons = _circle_reasons(x, cells, last)
+            yield (x, exact(x), *(_cell(cells[m]) for m in methods), ", ".join(reasons) or None)
+
+    differing = [row for row in rows() if row[-1] is not None]
+    notes = [_summary(sols, len(differing), len(xs))]
+    notes.append(
+        "Only the points with 0 <= x <= y are compared: the other seven octants are their "
+        "mirror images, the same for every method. The midpoint method (p0 = 1 - r) and "
+        "Bresenham's (d0 = 3 - 2r) decide on the same sign, so they always agree."
+    )
+    notes.extend(_circle_notes(sols, cols, differing, exact))
+    derived = tuple(
+        q
+        for m in methods
+        for q in sols[m].derived
+        if q.key in ("p0", "d0", "equation", "dtheta", "epsilon")
+    )
+    columns = (
+        Column("x", "x", "x"),
+        Column("y_exact", "y on the circle", r"y = \sqrt{r^2 - x^2}", 3),
+        *(Column(m, NAMES[m], f"\\text{{{NAMES[m]}}}") for m in methods),
+        Column("reason", "differ", r"\text{differ}"),
+    )
+    return Solution(
+        primitive="circle",
+        algorithm="compare",
+        title=f"Circle methods compared: r = {ir}",
+        given=sols["midpoint"].given[:1],
+        derived=derived,
+        notes=tuple(notes),
+        tables=(Table("First octant side by side (y for each x)", columns, rows),),
+        figure=_disagreement_figure({m: _plotted(sols[m]) for m in methods}),
+        geometry={"circle": (0, 0, ir)},
+        data={"methods": list(methods), "columns_differing": len(differing)},
+    )
+
+
+def _circle_reasons(x: int, cells: dict[str, list[int]], last: dict[str, int]) -> list[str]:
+    """The reason tags of one octant column, each method measured against the midpoint's;
+    ``last`` is each method's last column in the octant."""
+    ref = cells["midpoint"]
+    out = []
+    for m, ys in cells.items():
+        if m == "midpoint" or ys == ref:
+            continue
+        if not ys:
+            kind = "stops" if x > last[m] else "skips"
+        elif not ref:
+            kind = "beyond"
+        else:
+            kind = "twice" if len(ys) > 1 else "off"
+        out.append(f"{SHORT[m]} {kind}")
+    return out
+
+
+def _circle_notes(
+    sols: dict[str, Solution],
+    cols: dict[str, dict[int, list[int]]],
+    differing: list[tuple[Any, ...]],
+    exact: Callable[[int], Number],
+) -> Iterator[str]:
+    """One note per reason tag that occurs, with its first example's numbers."""
+    by_short = {v: k for k, v in SHORT.items()}
+    for tag, row in _first_rows(differing):
+        x = row[0]
+        short, kind = tag.rsplit(" ", 1)
+        m = by_short[short]
+        head = f"{tag} (rows marked '{tag}'): at x = {x} the circle is at y = {fmt(exact(x), 3)}"
+        ref = _cell(cols["midpoint"].get(x, []))
+        if kind == "stops":
+            a = max(cols[m])
+            b = cols[m][a][-1]
+            gap = (
+                f"; the circle has a gap between ({a}, {b}) and its mirror image ({b}, {a})"
+                if b - a > 1
+                else ""
+            )
+            yield (
+                f"{head}; the {NAMES[m]} method's last point in the octant is ({a}, {b}) "
+                f"(it stops at the 45 degree diagonal), so it plots nothing in this column, "
+                f"where the midpoint method plots ({x}, {ref}){gap}."
+            )
+            continue
+        samples = ", ".join(
+            f"({fmt(px, 3)}, {fmt(py, 3)})" for px, py in _octant_samples(sols[m], x)
+        )
+        what = {
+            "off": f"the {NAMES[m]} method's point in this column, {samples}, is not at the "
+            f"pixel centre and rounds to y = {_cell(cols[m][x])}, the midpoint method's "
+            f"to y = {ref}",
+            "twice": f"the {NAMES[m]} method's points {samples} both round into this column",
+            "skips": f"none of the {NAMES[m]} method's points rounds into this column",
+            "beyond": f"the {NAMES[m]} method's point {samples} lies past the midpoint "
+            "method's last column",
+        }[kind]
+        yield f"{head}; {what}."
+
+
+def _octant_samples(sol: Solution, x: int) -> Iterator[tuple[Any, Any]]:
+    """The exact or float sample points of a circle method whose pixel lies in column x of
+    the octant 0 <= x <= y (a point past the diagonal counts in its mirror column)."""
+    for s in sol.steps():
+        px, py = s.pixel
+        if min(px, py) != x:
+            continue
+        sx, sy = s.extra[-2:]  # the methods' own (x, y) columns come last
+        yield (sx, sy) if px <= py else (sy, sx)

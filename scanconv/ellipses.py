@@ -1,0 +1,323 @@
+"""The midpoint ellipse algorithm, in its two regions, with 4-way symmetry.
+
+The quadrant is computed for an ellipse centred at the origin, from ``(0, ry)`` clockwise to
+``(rx, 0)``; the centre ``(xc, yc)`` is applied in the symmetry step. Coordinates are
+``(x, y)`` with y up (see :mod:`scanconv.records`).
+
+Pixel order
+-----------
+``Solution.pixels()`` (and :func:`symmetric_pixels`) yields, for each quadrant point in
+plotting order (the start point ``(0, ry)``, then the points of region 1, then those of
+region 2), its 4 images ``(xc+x, yc+y), (xc-x, yc+y), (xc+x, yc-y), (xc-x, yc-y)``, each pixel
+only the first time it appears. Quadrant points are all different and lie in x >= 0, y >= 0,
+so images coincide only for a point on an axis (x = 0 or y = 0); no set of pixels is kept.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from fractions import Fraction
+from itertools import dropwhile, takewhile
+
+from .circles import check_integer, symmetry_table
+from .numeric import Number, fmt_short
+from .records import Column, Move, Pixel, Quantity, Solution, Step, Table, new_step, step_getter
+
+
+def _quarter(v: int) -> Number:
+    """``v / 4`` as an exact value (int when it divides)."""
+    return v >> 2 if v & 3 == 0 else Fraction(v, 4)
+
+
+def midpoint_ellipse(rx: int, ry: int) -> Iterator[Step]:
+    """The midpoint ellipse algorithm (Hearn & Baker), one quadrant from ``(0, ry)``.
+
+    Yields the steps of region 1, then of region 2; ``Step.pixel`` is ``(x_{k+1}, y_{k+1})``,
+    ``Step.p`` the decision parameter p1_k or p2_k the move was chosen on (exact),
+    ``Step.decision`` the move (``E``/``SE`` in region 1, ``S``/``SE`` in region 2) and
+    ``Step.extra`` is ``(region, 2ry²x_{k+1}, 2rx²y_{k+1})``. k restarts at 0 in region 2.
+    The start point ``(0, ry)`` is not a step: it is plotted before the loop.
+
+    Notes
+    -----
+    Region 1 (slope magnitude below 1): ``p1_0 = ry² - rx²ry + rx²/4``; while
+    ``2ry²x < 2rx²y``: if ``p1_k < 0`` the next point is ``(x+1, y)`` and
+    ``p1_{k+1} = p1_k + 2ry²x_{k+1} + ry²``, else ``(x+1, y-1)`` and
+    ``p1_{k+1} = p1_k + 2ry²x_{k+1} - 2rx²y_{k+1} + ry²``.
+
+    Region 2, from the last region-1 point ``(x0, y0)``:
+    ``p2_0 = ry²(x0 + 1/2)² + rx²(y0 - 1)² - rx²ry²``; while ``y > 0``: if ``p2_k > 0`` the next
+    point is ``(x, y-1)`` and ``p2_{k+1} = p2_k - 2rx²y_{k+1} + rx²``, else ``(x+1, y-1)`` and
+    ``p2_{k+1} = p2_k + 2ry²x_{k+1} - 2rx²y_{k+1} + rx²``. Ties (p = 0) choose SE in region 1
+    and SE in region 2, as in Hearn & Baker.
+
+    One addition to the textbook loops: a flat ellipse (rx much larger than ry², e.g. 10 by 1)
+    reaches y = 0 while still in region 1, at some x < rx, and both loops stop there, leaving
+    the pixels out to the tips (rx, 0) and (-rx, 0) unplotted. The walk then continues along
+    y = 0 to x = rx as extra region-2 rows with decision E and no p (Zingl's "too early stop of
+    flat ellipses"). Every quadrant therefore ends at ``(rx, 0)``. Both loops advance one
+    coordinate per step, so the walk always ends after at most ``rx + ry`` steps.
+
+    Exact arithmetic: the p values are multiples of 1/4 (kept as ``4p`` in integers).
+
+    References: Hearn & Baker, *Computer Graphics*, section 3-10 and its example (rx = 8,
+    ry = 6); A. Zingl, *A Rasterizing Algorithm for Drawing Curves*, 2012, section 2.
+
+    Examples
+    --------
+    Hearn & Baker's example, rx = 8, ry = 6:
+
+    >>> for s in midpoint_ellipse(8, 6):
+    ...     print(s.extra[0], s.k, s.p, s.decision.value, s.pixel, *s.extra[1:])
+    1 0 -332 E (1, 6) 72 768
+    1 1 -224 E (2, 6) 144 768
+    1 2 -44 E (3, 6) 216 768
+    1 3 208 SE (4, 5) 288 640
+    1 4 -108 E (5, 5) 360 640
+    1 5 288 SE (6, 4) 432 512
+    1 6 244 SE (7, 3) 504 384
+    2 0 -23 SE (8, 2) 576 256
+    2 1 361 S (8, 1) 576 128
+    2 2 297 S (8, 0) 576 0
+    """
+    # midpoint_ellipse(8, 6) -> region 1 p: -332 -224 -44 208 -108 288 244 ; region 2: -23 361 297
+    # midpoint_ellipse(10, 1) -> region 1 ends at (9, 0); the tip (10, 0) follows with decision E
+    rx2, ry2 = rx * rx, ry * ry
+    x, y = 0, ry
+    tx, ty = 0, 2 * rx2 * ry  # 2ry²x and 2rx²y, kept incrementally
+    p4 = 4 * ry2 - 4 * rx2 * ry + rx2  # 4·p1_0
+    k = 0
+    while tx < ty:
+        x += 1
+        tx += 2 * ry2
+        if p4 < 0:
+            q4, move = p4 + 4 * (tx + ry2), Move.E
+        else:
+            y -= 1
+            ty -= 2 * rx2
+            q4, move = p4 + 4 * (tx - ty + ry2), Move.SE
+        yield new_step(Step, (k, _quarter(p4), move, (x, y), (1, tx, ty)))
+        p4, k = q4, k + 1
+    p4 = ry2 * (2 * x + 1) ** 2 + 4 * rx2 * (y - 1) ** 2 - 4 * rx2 * ry2  # 4·p2_0
+    k = 0
+    while y > 0:
+        y -= 1
+        ty -= 2 * rx2
+        if p4 > 0:
+            q4, move = p4 + 4 * (rx2 - ty), Move.S
+        else:
+            x += 1
+            tx += 2 * ry2
+            q4, move = p4 + 4 * (tx - ty + rx2), Move.SE
+        yield new_step(Step, (k, _quarter(p4), move, (x, y), (2, tx, ty)))
+        p4, k = q4, k + 1
+    while x < rx:  # the tip of a flat ellipse, along y = 0
+        x += 1
+        tx += 2 * ry2
+        yield new_step(Step, (k, None, Move.E, (x, 0), (2, tx, 0)))
+        k += 1
+
+
+def region1_end(rx: int, ry: int) -> Pixel:
+    """The last point of region 1 (where region 2 starts), without building any steps.
+
+    >>> region1_end(8, 6)
+    (7, 3)
+    """
+    rx2, ry2 = rx * rx, ry * ry
+    x, y, tx, ty = 0, ry, 0, 2 * rx2 * ry
+    p4 = 4 * ry2 - 4 * rx2 * ry + rx2
+    while tx < ty:
+        x += 1
+        tx += 2 * ry2
+        if p4 < 0:
+            p4 += 4 * (tx + ry2)
+        else:
+            y -= 1
+            ty -= 2 * rx2
+            p4 += 4 * (tx - ty + ry2)
+    return x, y
+
+
+def images(x: int, y: int, xc: int = 0, yc: int = 0) -> tuple[Pixel, ...]:
+    """The 4 symmetric images of ``(x, y)`` about ``(xc, yc)``.
+
+    >>> images(2, 6, 1, 1)
+    ((3, 7), (-1, 7), (3, -5), (-1, -5))
+    """
+    return ((xc + x, yc + y), (xc - x, yc + y), (xc + x, yc - y), (xc - x, yc - y))
+
+
+def symmetric_pixels(points: Iterable[Pixel], xc: int = 0, yc: int = 0) -> Iterator[Pixel]:
+    """The 4-way images of distinct quadrant points, once each, in the module's order.
+
+    >>> list(symmetric_pixels([(0, 2), (1, 1), (2, 0)]))
+    [(0, 2), (0, -2), (1, 1), (-1, 1), (1, -1), (-1, -1), (2, 0), (-2, 0)]
+    """
+    for x, y in points:
+        a, b, c, d = images(x, y, xc, yc)
+        yield a
+        if x:
+            yield b
+        if y:
+            yield c
+            if x:
+                yield d
+
+
+def quadrant_points(rx: int, ry: int) -> Iterator[Pixel]:
+    """The start point ``(0, ry)``, then every step's point.
+
+    >>> list(quadrant_points(2, 1))
+    [(0, 1), (1, 1), (2, 0)]
+    """
+    yield (0, ry)
+    for s in midpoint_ellipse(rx, ry):
+        yield s.pixel
+
+
+# --- the Solution -----------------------------------------------------------------------------
+
+
+def _region_columns(p: str) -> tuple[Column, ...]:
+    return (
+        Column("k", "k", "k"),
+        Column("p", f"{p}_k", f"{p}_k"),
+        Column("pixel", "(x_{k+1}, y_{k+1})", "(x_{k+1}, y_{k+1})"),
+        Column("two_ry2_x", "2ry²x_{k+1}", "2r_y^2 x_{k+1}"),
+        Column("two_rx2_y", "2rx²y_{k+1}", "2r_x^2 y_{k+1}"),
+    )
+
+
+_EXTRA = ("region", "two_ry2_x", "two_rx2_y")
+
+
+def _paren(v: Number) -> str:
+    s = fmt_short(v)
+    return f"({s})" if s.startswith("-") else s
+
+
+def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> Solution:
+    """The worked solution of the midpoint ellipse with semi-axes ``rx``, ``ry``.
+
+    Raises ``ValueError`` for a negative or non-integer semi-axis or centre. ``rx = ry = 0``
+    plots the centre; one zero semi-axis gives the segment between the tips.
+
+    >>> sol = ellipse_solution(8, 6)
+    >>> for q in sol.derived[2:4]:
+    ...     print(q.text)
+    p1_0 = ry² - rx²·ry + rx²/4 = 36 - 64·6 + 64/4 = -332
+    region 2 starts at (x0, y0) = (7, 3), the last point of region 1
+    >>> [len(list(t.rows())) for t in sol.tables]
+    [7, 3, 11]
+    >>> sum(1 for _ in sol.pixels()), sol.bbox
+    (40, (-8, -6, 8, 6))
+    """
+    irx = check_integer(rx, "rx", negative=False)
+    iry = check_integer(ry, "ry", negative=False)
+    ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
+    rx2, ry2 = irx * irx, iry * iry
+    x0, y0 = region1_end(irx, iry)
+    p1 = _quarter(4 * ry2 - 4 * rx2 * iry + rx2)
+    p2 = _quarter(ry2 * (2 * x0 + 1) ** 2 + 4 * rx2 * (y0 - 1) ** 2 - 4 * rx2 * ry2)
+    half = Fraction(2 * x0 + 1, 2)
+    given = (
+        Quantity("rx", irx, f"rx = {irx}", f"r_x = {irx}"),
+        Quantity("ry", iry, f"ry = {iry}", f"r_y = {iry}"),
+        Quantity(
+            "center",
+            (ixc, iyc),
+            f"centre (xc, yc) = ({ixc}, {iyc})",
+            f"(x_c, y_c) = ({ixc}, {iyc})",
+        ),
+    )
+    derived: tuple[Quantity, ...] = (
+        Quantity(
+            "squares",
+            (rx2, ry2, 2 * rx2, 2 * ry2),
+            f"rx² = {rx2}, ry² = {ry2}, 2rx² = {2 * rx2}, 2ry² = {2 * ry2}",
+            f"r_x^2 = {rx2},\\ r_y^2 = {ry2},\\ 2r_x^2 = {2 * rx2},\\ 2r_y^2 = {2 * ry2}",
+        ),
+        Quantity(
+            "region1",
+            (2 * rx2 * iry,),
+            f"region 1 from (0, {iry}) while 2ry²x < 2rx²y (2rx²y starts at {2 * rx2 * iry})",
+            f"\\text{{region 1 from }} (0, {iry}) \\text{{ while }} 2r_y^2 x < 2r_x^2 y",
+        ),
+        Quantity(
+            "p1_0",
+            p1,
+            f"p1_0 = ry² - rx²·ry + rx²/4 = {ry2} - {rx2}·{iry} + {rx2}/4 = {fmt_short(p1)}",
+            f"p1_0 = r_y^2 - r_x^2 r_y + \\tfrac{{r_x^2}}{{4}} = {ry2} - {rx2} \\cdot {iry} + "
+            f"\\tfrac{{{rx2}}}{{4}} = {fmt_short(p1)}",
+        ),
+        Quantity(
+            "region2_start",
+            (x0, y0),
+            f"region 2 starts at (x0, y0) = ({x0}, {y0}), the last point of region 1",
+            f"\\text{{region 2 starts at }} (x_0, y_0) = ({x0}, {y0})",
+        ),
+        Quantity(
+            "p2_0",
+            p2,
+            f"p2_0 = ry²(x0 + 1/2)² + rx²(y0 - 1)² - rx²ry² = {ry2}·{fmt_short(half)}² + "
+            f"{rx2}·{_paren(y0 - 1)}² - {rx2}·{ry2} = {fmt_short(p2)}",
+            f"p2_0 = r_y^2 (x_0 + \\tfrac12)^2 + r_x^2 (y_0 - 1)^2 - r_x^2 r_y^2 = "
+            f"{ry2} \\cdot {fmt_short(half)}^2 + {rx2} \\cdot {_paren(y0 - 1)}^2 - "
+            f"{rx2} \\cdot {ry2} = {fmt_short(p2)}",
+        ),
+    )
+    if y0 == 0:  # region 1 ended on the x axis: region 2 has no steps, p2_0 is not used
+        derived = derived[:-1]
+    notes = [
+        "Region 1: p1_k < 0 -> (x+1, y), p1_{k+1} = p1_k + 2ry²x_{k+1} + ry²; "
+        "else (x+1, y-1), p1_{k+1} = p1_k + 2ry²x_{k+1} - 2rx²y_{k+1} + ry².",
+        "Region 2: p2_k > 0 -> (x, y-1), p2_{k+1} = p2_k - 2rx²y_{k+1} + rx²; "
+        "else (x+1, y-1), p2_{k+1} = p2_k + 2ry²x_{k+1} - 2rx²y_{k+1} + rx²; until y = 0.",
+        f"The start point (0, {iry}) is plotted before the first step.",
+    ]
+    if y0 == 0 and x0 < irx:
+        notes.append(
+            f"Region 1 reached y = 0 at x = {x0} < rx = {irx}: the textbook loops stop here; "
+            f"the tip is completed along y = 0 to ({irx}, 0) (rows without p, decision E)."
+        )
+    notes.append("Each quadrant point is mirrored into 4 pixels; a pixel is listed once.")
+
+    def steps() -> Iterator[Step]:
+        return midpoint_ellipse(irx, iry)
+
+    def points() -> Iterator[Pixel]:
+        return quadrant_points(irx, iry)
+
+    columns = (Column("region", "region", r"\text{region}"), *_region_columns("p"))
+    get1 = step_getter(_region_columns("p1"), _EXTRA)
+    get2 = step_getter(_region_columns("p2"), _EXTRA)
+
+    def region1() -> Iterator[tuple]:
+        return (get1(s) for s in takewhile(lambda s: s.extra[0] == 1, steps()))
+
+    def region2() -> Iterator[tuple]:
+        return (get2(s) for s in dropwhile(lambda s: s.extra[0] == 1, steps()))
+
+    tables = (
+        Table("Region 1 (slope magnitude below 1)", _region_columns("p1"), region1),
+        Table("Region 2 (slope magnitude 1 or more)", _region_columns("p2"), region2),
+        symmetry_table(points, images, ixc, iyc),
+    )
+    return Solution(
+        primitive="ellipse",
+        algorithm="midpoint",
+        title=f"Midpoint ellipse algorithm: rx = {irx}, ry = {iry}, centre ({ixc}, {iyc})",
+        given=given,
+        derived=derived,
+        columns=columns,
+        extra_keys=_EXTRA,
+        steps=steps,
+        pixels=lambda: symmetric_pixels(points(), ixc, iyc),
+        bbox=(ixc - irx, iyc - iry, ixc + irx, iyc + iry),
+        notes=tuple(notes),
+        tables=tables,
+        show_steps=False,
+        marks=((ixc, iyc),),
+        geometry={"ellipse": (ixc, iyc, irx, iry), "symmetry": 4, "center": (ixc, iyc)},
+    )

@@ -1,0 +1,545 @@
+"""Figures of a worked solution, as the textbooks draw them beside the step table.
+
+:func:`build` lays out a :class:`Figure` (a list of shapes in picture coordinates) from a
+:class:`~scanconv.records.Solution`; :func:`to_svg` writes it as SVG text. Nothing here prints
+or writes files: the CLI's ``--svg FILE`` does that, atomically.
+
+What the figure shows:
+
+* the pixel grid, one square cell per pixel, pixel ``(x, y)`` centred on the integer point
+  ``(x, y)``; the cells span the plotted pixels, the ideal primitive and the control points,
+  plus one empty cell of margin (as the text grid);
+* every plotted pixel filled (one ``<rect class="pixel">`` each);
+* the ideal primitive from :attr:`Solution.geometry` drawn over the pixels: ``line``,
+  ``circle``, ``ellipse``, ``polyline`` (a sampled curve) and, for Bezier and B-spline curves,
+  the ``control`` polygon with its points;
+* the marked points (:attr:`Solution.marks`: the centre, ...) as small crosses;
+* the axes: every column and row labelled with its x and y (every 2nd, 5th, ... when the
+  numbers would collide), y growing upward as in the notes, or downward with
+  ``origin="top-left"``; the lines x = 0 and y = 0 drawn heavier when they are in view;
+* the step number in each pixel, by :func:`step_labels`.
+
+Step numbers: a pixel is numbered ``i`` when it is the table's ``(x_i, y_i)``. Tables whose
+pixel column is ``(x_{k+1}, y_{k+1})`` (Bresenham's line, the midpoint circle, ...) number the
+pixel of step ``k`` as ``k + 1`` and the start pixel, plotted before the first step, as 0;
+tables whose row ``k`` plots its own point (DDA, the basic method, curves) number it ``k``.
+With 4- or 8-way symmetry (``geometry["symmetry"]`` and ``geometry["center"]``) a step's point
+is relative to the centre, and every mirror image of it carries that step's number (the
+ellipse numbers each region's steps on their own, as its two tables do). A pixel reached by
+several steps keeps the first.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import dataclass, field
+from fractions import Fraction
+from itertools import pairwise
+from typing import Any, NamedTuple
+from xml.sax.saxutils import escape
+
+from .numeric import round_half_up
+from .records import Pixel, Solution
+
+CELL = 32
+"""Side of one pixel cell, in SVG user units (px)."""
+
+MAX_CELLS = 200
+"""Largest number of columns or rows drawn; a larger figure is refused."""
+
+MARGIN = 1
+"""Empty cells around everything drawn."""
+
+PAD_LEFT, PAD_TOP, PAD_RIGHT, PAD_BOTTOM = 48, 46, 36, 56
+"""Room around the grid for the title, the axis labels and the legend."""
+
+
+class Paint(NamedTuple):
+    """How one CSS class of shapes is painted (SVG and PNG read the same table)."""
+
+    fill: str | None
+    stroke: str | None = None
+    width: float = 0.0
+    dash: tuple[float, float] | None = None
+
+
+PAINT = {
+    "cell": Paint(None, "#c8c8c8", 1),
+    "pixel": Paint("#9ec5e8", "#3a6ea5", 1),
+    "axis": Paint(None, "#333333", 1.5),
+    "ideal": Paint(None, "#d62728", 2),
+    "control": Paint(None, "#2ca02c", 1.5, (6, 4)),
+    "control-point": Paint(None, "#2ca02c", 2),
+    "mark": Paint(None, "#7b3294", 2),
+    "step": Paint("#111111", "#ffffff", 3),
+    "tick": Paint("#333333"),
+    "title": Paint("#111111"),
+    "legend": Paint("#333333"),
+}
+"""Colours and strokes by CSS class; text strokes are a halo painted under the glyphs."""
+
+
+def _css() -> str:
+    rules = []
+    for cls, p in PAINT.items():
+        decl = [f"fill:{p.fill or 'none'}"]
+        if p.stroke:
+            decl += [f"stroke:{p.stroke}", f"stroke-width:{_num(p.width)}"]
+            decl += ["stroke-linecap:round", "stroke-linejoin:round"]
+        if p.dash:
+            decl.append(f"stroke-dasharray:{_num(p.dash[0])} {_num(p.dash[1])}")
+        if cls in ("step", "tick", "title", "legend") and p.stroke:
+            decl.append("paint-order:stroke")
+        if cls == "title":
+            decl.append("font-weight:bold")
+        rules.append(f".{cls}{{{';'.join(decl)}}}")
+    return "\n".join(rules)
+
+
+@dataclass(frozen=True, slots=True)
+class Shape:
+    """One element of a figure, in picture coordinates (px, y down).
+
+    ``kind`` and ``at`` say where it is: ``rect`` ``(x, y)`` (the top-left corner of a cell),
+    ``line`` ``(x1, y1, x2, y2)``, ``circle`` ``(cx, cy, r)``, ``ellipse`` ``(cx, cy, rx, ry)``,
+    ``polyline`` ``(x1, y1, x2, y2, ...)``, ``text`` ``(x, y)`` (the baseline).
+    """
+
+    kind: str
+    cls: str
+    """The CSS class: ``pixel``, ``cell``, ``axis``, ``ideal``, ``control``, ``step``, ..."""
+    at: tuple[float, ...]
+    text: str = ""
+    """The text of a ``text`` shape."""
+    size: float = 11.0
+    """The font size of a ``text`` shape."""
+    anchor: str = "start"
+    """``start``, ``middle`` or ``end``: which point of a ``text`` shape is at ``at``."""
+
+
+@dataclass(slots=True)
+class Figure:
+    """A laid-out figure: its size, title and shapes, back to front."""
+
+    width: float
+    height: float
+    title: str
+    shapes: list[Shape] = field(default_factory=list)
+
+    def count(self, cls: str) -> int:
+        """How many shapes have the CSS class ``cls``."""
+        return sum(1 for s in self.shapes if s.cls == cls)
+
+
+# --- step numbers ------------------------------------------------------------------------------
+
+
+def mirror_images(pixel: Pixel, symmetry: int, center: tuple[Any, Any]) -> Iterator[Pixel]:
+    """The plotted pixels of a step's point.
+
+    Without symmetry the point is the pixel. With 4- or 8-way symmetry it is the point
+    relative to the centre, as the circle and ellipse tables print it (an octant point
+    ``(x, y)`` of the circle about the origin), and its images are ``(xc ± x, yc ± y)`` and,
+    for 8-way symmetry, ``(xc ± y, yc ± x)``, in the notes' order.
+
+    >>> list(mirror_images((3, 4), 1, (0, 0)))
+    [(3, 4)]
+    >>> list(mirror_images((2, 1), 4, (10, 5)))
+    [(12, 6), (8, 6), (12, 4), (8, 4)]
+    >>> sorted(set(mirror_images((3, 4), 8, (0, 0))))[:4]
+    [(-4, -3), (-4, 3), (-3, -4), (-3, 4)]
+    """
+    if symmetry not in (4, 8):
+        yield pixel
+        return
+    xc, yc = int(center[0]), int(center[1])
+    x, y = pixel
+    offsets = [(x, y), (-x, y), (x, -y), (-x, -y)]
+    if symmetry == 8:
+        offsets += [(y, x), (-y, x), (y, -x), (-y, -x)]
+    for ox, oy in offsets:
+        yield (xc + ox, yc + oy)
+
+
+def label_offset(solution: Solution) -> int:
+    """1 when the step table's pixel column is ``(x_{k+1}, y_{k+1})``, else 0.
+
+    >>> from scanconv.lines import line_solution
+    >>> label_offset(line_solution("bresenham", 2, 2, 10, 6)), label_offset(
+    ...     line_solution("dda", 2, 2, 10, 6))
+    (1, 0)
+    """
+    for c in solution.columns:
+        if c.key == "pixel":
+            return 1 if "k+1" in c.tex.replace(" ", "") else 0
+    return 0
+
+
+def step_labels(solution: Solution) -> dict[Pixel, int]:
+    """The step number of every plotted pixel that has one (see the module's notes).
+
+    >>> from scanconv.lines import line_solution
+    >>> labels = step_labels(line_solution("bresenham", 2, 2, 10, 6))
+    >>> labels[(2, 2)], labels[(3, 3)], labels[(10, 6)]
+    (0, 1, 8)
+    >>> step_labels(line_solution("dda", 2, 2, 10, 6))[(10, 6)]
+    8
+    """
+    plotted = set(solution.pixels()) if solution.pixels is not None else set()
+    offset = label_offset(solution)
+    symmetry = int(solution.geometry.get("symmetry", 1))
+    center = solution.geometry.get("center", (0, 0))
+    labels: dict[Pixel, int] = {}
+    for step in solution.steps():
+        for p in mirror_images(step.pixel, symmetry, center):
+            if p in plotted:
+                labels.setdefault(p, step.k + offset)
+    if offset:
+        for p in plotted:
+            labels.setdefault(p, 0)
+    return labels
+
+
+# --- layout ------------------------------------------------------------------------------------
+
+
+def _points(geometry: dict[str, Any]) -> Iterator[tuple[float, float]]:
+    """Every point the ideal primitive reaches (its bounding box's corners for conics)."""
+    if "line" in geometry:
+        x1, y1, x2, y2 = (float(v) for v in geometry["line"])
+        yield from ((x1, y1), (x2, y2))
+    if "circle" in geometry:
+        xc, yc, r = (float(v) for v in geometry["circle"])
+        yield from ((xc - r, yc - r), (xc + r, yc + r))
+    if "ellipse" in geometry:
+        xc, yc, rx, ry = (float(v) for v in geometry["ellipse"])
+        yield from ((xc - rx, yc - ry), (xc + rx, yc + ry))
+    for key in ("polyline", "control"):
+        for x, y in geometry.get(key, ()):
+            yield float(x), float(y)
+
+
+def extent(solution: Solution, pixels: Iterable[Pixel]) -> tuple[int, int, int, int]:
+    """``(xmin, ymin, xmax, ymax)`` of the cells drawn, margin included.
+
+    >>> from scanconv.lines import line_solution
+    >>> sol = line_solution("bresenham", 2, 2, 10, 6)
+    >>> extent(sol, sol.pixels())
+    (1, 1, 11, 7)
+    """
+    xs: list[int] = []
+    ys: list[int] = []
+    for x, y in pixels:
+        xs.append(x)
+        ys.append(y)
+    for x, y in solution.marks:
+        xs.append(x)
+        ys.append(y)
+    for fx, fy in _points(solution.geometry):
+        xs.append(round_half_up(fx))
+        ys.append(round_half_up(fy))
+    if not xs:
+        raise ValueError("this answer plots no pixels, so there is no figure to draw")
+    return min(xs) - MARGIN, min(ys) - MARGIN, max(xs) + MARGIN, max(ys) + MARGIN
+
+
+def _num(v: float) -> str:
+    """A coordinate with at most 2 decimals: ``12``, ``12.5``."""
+    s = f"{v:.2f}".rstrip("0").rstrip(".")
+    return "0" if s == "-0" else s
+
+
+def _tick_step(labels: Sequence[int]) -> int:
+    """Label every n-th column so that the numbers (about 7 px a digit) do not collide."""
+    width = 7 * max(len(str(v)) for v in labels)
+    return next(n for n in (1, 2, 5, 10, 20, 50, 100) if width < n * CELL - 4)
+
+
+class _Frame:
+    """Maps solution coordinates (pixel centres on integers, y up) to picture coordinates."""
+
+    def __init__(self, cells: tuple[int, int, int, int], top_left: bool) -> None:
+        self.x0, self.y0, self.x1, self.y1 = cells
+        self.top_left = top_left
+        self.left, self.top = float(PAD_LEFT), float(PAD_TOP)
+        self.right = PAD_LEFT + (self.x1 - self.x0 + 1) * CELL
+        self.bottom = PAD_TOP + (self.y1 - self.y0 + 1) * CELL
+
+    def px(self, x: float) -> float:
+        return PAD_LEFT + (x - self.x0 + 0.5) * CELL
+
+    def py(self, y: float) -> float:
+        rows = (y - self.y0 + 0.5) if self.top_left else (self.y1 + 0.5 - y)
+        return PAD_TOP + rows * CELL
+
+    def pt(self, x: Any, y: Any) -> tuple[float, float]:
+        return self.px(float(x)), self.py(float(y))
+
+
+def build(solution: Solution, origin: str = "bottom-left") -> Figure:
+    """Lay out the figure of ``solution`` (see the module's notes for what it shows).
+
+    Raises ``ValueError`` if the answer plots no pixels or the figure would be more than
+    :data:`MAX_CELLS` cells wide or high.
+
+    >>> from scanconv.lines import line_solution
+    >>> fig = build(line_solution("bresenham", 2, 2, 10, 6))
+    >>> fig.count("pixel"), fig.count("ideal"), fig.count("step"), fig.height
+    (9, 1, 9, 340.0)
+    """
+    if solution.pixels is None:
+        raise ValueError("this answer plots no pixels, so there is no figure to draw")
+    pixels = list(dict.fromkeys(solution.pixels()))
+    cells = extent(solution, pixels)
+    cols, rows = cells[2] - cells[0] + 1, cells[3] - cells[1] + 1
+    if cols > MAX_CELLS or rows > MAX_CELLS:
+        raise ValueError(
+            f"figure would be {cols} x {rows} cells, more than {MAX_CELLS}; "
+            "draw a smaller primitive or leave out --svg"
+        )
+    f = _Frame(cells, origin == "top-left")
+    width = max(f.right + PAD_RIGHT, 16 + 8.4 * len(solution.title))
+    fig = Figure(float(width), float(f.bottom + PAD_BOTTOM), solution.title)
+    add = fig.shapes.append
+    add(Shape("text", "title", (8, 22), solution.title, 14))
+    half = -0.5 if f.top_left else 0.5
+    for x, y in pixels:
+        add(Shape("rect", "pixel", (f.px(x - 0.5), f.py(y + half))))
+    for j in range(cols + 1):
+        add(Shape("line", "cell", (f.left + j * CELL, f.top, f.left + j * CELL, f.bottom)))
+    for j in range(rows + 1):
+        add(Shape("line", "cell", (f.left, f.top + j * CELL, f.right, f.top + j * CELL)))
+    if f.x0 <= 0 <= f.x1:
+        add(Shape("line", "axis", (f.px(0), f.top, f.px(0), f.bottom)))
+    if f.y0 <= 0 <= f.y1:
+        add(Shape("line", "axis", (f.left, f.py(0), f.right, f.py(0))))
+    _primitive(fig, solution.geometry, f)
+    arm = CELL * 0.22
+    for x, y in _marks(solution):
+        cx, cy = f.pt(x, y)
+        add(Shape("line", "mark", (cx - arm, cy - arm, cx + arm, cy + arm)))
+        add(Shape("line", "mark", (cx - arm, cy + arm, cx + arm, cy - arm)))
+    labels = step_labels(solution)
+    for (x, y), k in labels.items():
+        text = str(k)
+        size = min(13.0, (CELL - 6) / (0.62 * len(text)))
+        add(Shape("text", "step", (f.px(x), f.py(y) + 0.36 * size), text, size, "middle"))
+    for x, y in solution.geometry.get("control", ()):
+        # A ring, over the step number it may share a pixel with.
+        add(Shape("circle", "control-point", (*f.pt(x, y), CELL * 0.3)))
+    _axes(fig, f)
+    _legend(fig, solution, f.bottom, numbered=bool(labels))
+    return fig
+
+
+def _marks(solution: Solution) -> list[Pixel]:
+    """The marked points still to draw: those that are not a control point's pixel (the
+    control points are drawn exactly, on their polygon)."""
+    control = {
+        (round_half_up(Fraction(x)), round_half_up(Fraction(y)))
+        for x, y in solution.geometry.get("control", ())
+    }
+    return [p for p in solution.marks if p not in control]
+
+
+def _primitive(fig: Figure, geometry: dict[str, Any], f: _Frame) -> None:
+    """The ideal primitive and the control polygon."""
+    add = fig.shapes.append
+    if "line" in geometry:
+        x1, y1, x2, y2 = geometry["line"]
+        add(Shape("line", "ideal", (*f.pt(x1, y1), *f.pt(x2, y2))))
+    if "circle" in geometry:
+        xc, yc, r = geometry["circle"]
+        add(Shape("circle", "ideal", (*f.pt(xc, yc), float(r) * CELL)))
+    if "ellipse" in geometry:
+        xc, yc, rx, ry = geometry["ellipse"]
+        add(Shape("ellipse", "ideal", (*f.pt(xc, yc), float(rx) * CELL, float(ry) * CELL)))
+    if geometry.get("polyline"):
+        add(
+            Shape(
+                "polyline", "ideal", tuple(c for x, y in geometry["polyline"] for c in f.pt(x, y))
+            )
+        )
+    control = [f.pt(x, y) for x, y in geometry.get("control", ())]
+    if control:
+        add(Shape("polyline", "control", tuple(c for p in control for c in p)))
+
+
+def _axes(fig: Figure, f: _Frame) -> None:
+    """Column and row numbers, and the axis names with their directions."""
+    add = fig.shapes.append
+    xs = range(f.x0, f.x1 + 1)
+    nx = _tick_step(xs)
+    for x in xs:
+        if x % nx == 0:
+            add(Shape("text", "tick", (f.px(x), f.bottom + 15), str(x), anchor="middle"))
+    for y in range(f.y0, f.y1 + 1):
+        add(Shape("text", "tick", (f.left - 6, f.py(y) + 4), str(y), anchor="end"))
+    add(Shape("text", "tick", (f.right + 6, f.bottom + 15), "x \u2192"))
+    ylabel = "y \u2193" if f.top_left else "y \u2191"
+    add(Shape("text", "tick", (f.left - 6, f.top - 6), ylabel, anchor="end"))
+
+
+def _legend(fig: Figure, solution: Solution, bottom: float, numbered: bool) -> None:
+    """What the colours and numbers mean, wrapped to the figure's width."""
+    parts = ["filled: plotted pixel"]
+    if numbered:
+        parts.append("number: step i of pixel (x_i, y_i)")
+    geometry = solution.geometry
+    kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in geometry]
+    if geometry.get("polyline"):
+        kinds.append("curve")
+    if kinds:
+        parts.append(f"red: ideal {' and '.join(kinds)}")
+    if geometry.get("control"):
+        parts.append("green: control polygon and points")
+    if _marks(solution):
+        parts.append("cross: marked point")
+    room = max(int((fig.width - 16) / 6.2), 40)
+    lines: list[str] = []
+    for part in parts:
+        if lines and len(lines[-1]) + 2 + len(part) <= room:
+            lines[-1] += "; " + part
+        else:
+            lines.append(part)
+    for i, line in enumerate(lines):
+        fig.shapes.append(Shape("text", "legend", (8, bottom + 38 + 14 * i), line))
+    fig.height += 14 * (len(lines) - 1)
+    fig.width = max(fig.width, 16 + 6.2 * max(len(line) for line in lines))
+
+
+# --- output ------------------------------------------------------------------------------------
+
+_SVG_ATTRS = {
+    "rect": ("x", "y"),
+    "line": ("x1", "y1", "x2", "y2"),
+    "circle": ("cx", "cy", "r"),
+    "ellipse": ("cx", "cy", "rx", "ry"),
+    "text": ("x", "y"),
+}
+
+
+def _svg_element(s: Shape) -> str:
+    if s.kind == "polyline":
+        pts = " ".join(f"{_num(x)},{_num(y)}" for x, y in zip(s.at[::2], s.at[1::2], strict=True))
+        return f'<polyline class="{s.cls}" points="{pts}"/>'
+    attrs = "".join(f' {k}="{_num(v)}"' for k, v in zip(_SVG_ATTRS[s.kind], s.at, strict=True))
+    if s.kind == "rect":
+        return f'<rect class="{s.cls}"{attrs} width="{CELL}" height="{CELL}"/>'
+    if s.kind == "text":
+        attrs += f' font-size="{_num(s.size)}"'
+        if s.anchor != "start":
+            attrs += f' text-anchor="{s.anchor}"'
+        return f'<text class="{s.cls}"{attrs}>{escape(s.text)}</text>'
+    return f'<{s.kind} class="{s.cls}"{attrs}/>'
+
+
+def to_svg(fig: Figure) -> str:
+    """The figure as a standalone SVG document.
+
+    >>> from scanconv.lines import line_solution
+    >>> svg = to_svg(build(line_solution("dda", 0, 0, 2, 1)))
+    >>> svg.splitlines()[1][:40]
+    '<svg xmlns="http://www.w3.org/2000/svg" '
+    >>> svg.count('class="pixel"'), svg.count('class="step"')
+    (3, 3)
+    """
+    w, h = _num(fig.width), _num(fig.height)
+    out = [
+        '<?xml version="1.0" encoding="UTF-8"?>',
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" '
+        'font-family="DejaVu Sans, Helvetica, Arial, sans-serif">',
+        f"<title>{escape(fig.title)}</title>",
+        f"<style>\n{_css()}\n</style>",
+        '<rect width="100%" height="100%" fill="#fff"/>',
+    ]
+    out.extend(_svg_element(s) for s in fig.shapes)
+    out.append("</svg>")
+    return "\n".join(out) + "\n"
+
+
+def svg(solution: Solution, origin: str = "bottom-left") -> str:
+    """The SVG figure of ``solution``: :func:`build` then :func:`to_svg`."""
+    return to_svg(build(solution, origin))
+
+
+def _dashes(pts: Sequence[tuple[float, float]], on: float, off: float) -> Iterator[list[float]]:
+    """The drawn pieces of a dashed polyline (Pillow draws no dashes itself)."""
+    pos, period = 0.0, on + off
+    for (ax, ay), (bx, by) in pairwise(pts):
+        length = math.hypot(bx - ax, by - ay)
+        t = 0.0
+        while t < length:
+            phase = pos % period
+            span = min((on - phase) if phase < on else (period - phase), length - t)
+            if phase < on:
+                f0, f1 = t / length, (t + span) / length
+                yield [
+                    ax + (bx - ax) * f0,
+                    ay + (by - ay) * f0,
+                    ax + (bx - ax) * f1,
+                    ay + (by - ay) * f1,
+                ]
+            t += span
+            pos += span
+
+
+def to_png(fig: Figure, scale: int = 2) -> bytes:
+    """The figure as PNG bytes, drawn by Pillow (the ``png`` extra) at ``scale`` px per unit.
+
+    The same shapes and colours as the SVG, drawn 2x larger then scaled down so edges are
+    smooth. Raises ``ModuleNotFoundError`` without Pillow.
+
+    >>> from scanconv.lines import line_solution
+    >>> to_png(build(line_solution("dda", 0, 0, 2, 1)))[:8]
+    b'\\x89PNG\\r\\n\\x1a\\n'
+    """
+    from PIL import Image, ImageDraw, ImageFont
+
+    k = 2 * scale
+
+    def font(size: float, bold: bool = False) -> Any:
+        name = "DejaVuSans-Bold.ttf" if bold else "DejaVuSans.ttf"
+        try:
+            return ImageFont.truetype(name, round(size * k))
+        except OSError:
+            return ImageFont.load_default(size * k)
+
+    img = Image.new("RGB", (math.ceil(fig.width * k), math.ceil(fig.height * k)), "#ffffff")
+    draw = ImageDraw.Draw(img)
+    for s in fig.shapes:
+        paint = PAINT[s.cls]
+        at = [v * k for v in s.at]
+        width = max(1, round(paint.width * k))
+        if s.kind == "text":
+            anchor = {"start": "ls", "middle": "ms", "end": "rs"}[s.anchor]
+            draw.text(
+                (at[0], at[1]),
+                s.text,
+                fill=paint.fill,
+                font=font(s.size, s.cls == "title"),
+                anchor=anchor,
+                stroke_width=round(paint.width * k / 2) if paint.stroke else 0,
+                stroke_fill=paint.stroke,
+            )
+        elif s.kind == "rect":
+            box = [at[0], at[1], at[0] + CELL * k, at[1] + CELL * k]
+            draw.rectangle(box, fill=paint.fill, outline=paint.stroke, width=width)
+        elif s.kind in ("circle", "ellipse"):
+            rx, ry = (at[2], at[2]) if s.kind == "circle" else (at[2], at[3])
+            box = [at[0] - rx, at[1] - ry, at[0] + rx, at[1] + ry]
+            draw.ellipse(box, fill=paint.fill, outline=paint.stroke, width=width)
+        elif paint.dash:
+            pts = list(zip(at[::2], at[1::2], strict=True))
+            for piece in _dashes(pts, paint.dash[0] * k, paint.dash[1] * k):
+                draw.line(piece, fill=paint.stroke, width=width)
+        else:
+            draw.line(at, fill=paint.stroke, width=width, joint="curve")
+    img = img.resize(
+        (math.ceil(fig.width * scale), math.ceil(fig.height * scale)), Image.Resampling.LANCZOS
+    )
+    out = io.BytesIO()
+    img.save(out, "PNG")
+    return out.getvalue()

@@ -1,0 +1,305 @@
+"""The bulk rasterizers give exactly the generators' pixels, in the same order.
+
+Each closed form in :mod:`scanconv.raster` is checked against the step generator it replaces
+(``Solution.pixels()``), on thousands of random inputs and on the degenerate cases, and the
+integer helper against Python's exact integers. No timing here: see ``benchmarks/bench.py``.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+
+from scanconv import raster
+from scanconv.circles import circle_solution
+from scanconv.ellipses import ellipse_solution
+from scanconv.lines import line_solution
+
+coord = st.integers(min_value=-60, max_value=60)
+far = st.integers(min_value=-(10**9), max_value=10**9)
+short = st.integers(min_value=-300, max_value=300)
+frac = st.builds(Fraction, st.integers(-480, 480), st.sampled_from([1, 2, 3, 4, 5, 8, 10, 12]))
+
+
+def as_pixels(coords: raster.Coords) -> list[tuple[int, int]]:
+    xs, ys = coords
+    assert xs.dtype == np.int64 and ys.dtype == np.int64
+    assert xs.ndim == ys.ndim == 1 and xs.shape == ys.shape
+    return list(zip(xs.tolist(), ys.tolist(), strict=True))
+
+
+def generator_pixels(algo: str, *line: int | Fraction) -> list[tuple[int, int]]:
+    sol = line_solution(algo, *line)
+    assert sol.pixels is not None
+    return list(sol.pixels())
+
+
+# --- lines ------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
+@settings(max_examples=1000, deadline=None)
+@given(x1=coord, y1=coord, x2=coord, y2=coord)
+@example(x1=3, y1=3, x2=3, y2=3)  # single point
+@example(x1=-4, y1=2, x2=9, y2=2)  # horizontal
+@example(x1=5, y1=9, x2=5, y2=-7)  # vertical, downward
+@example(x1=0, y1=0, x2=-7, y2=7)  # 45 degrees
+@example(x1=2, y1=2, x2=10, y2=6)  # the notes' example: p_k = 0 ties
+@example(x1=10, y1=6, x2=2, y2=2)  # the same, right to left
+def test_line_matches_generator(algo, x1, y1, x2, y2):
+    assert as_pixels(raster.line(x1, y1, x2, y2, algo=algo)) == generator_pixels(
+        algo, x1, y1, x2, y2
+    )
+
+
+@pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
+@settings(max_examples=200, deadline=None)
+@given(x1=far, y1=far, dx=short, dy=short)
+def test_line_far_from_the_origin(algo, x1, y1, dx, dy):
+    x2 = max(-(10**9), min(10**9, x1 + dx))
+    y2 = max(-(10**9), min(10**9, y1 + dy))
+    assert as_pixels(raster.line(x1, y1, x2, y2, algo=algo)) == generator_pixels(
+        algo, x1, y1, x2, y2
+    )
+
+
+@pytest.mark.parametrize("algo", ["dda", "basic"])
+@settings(max_examples=400, deadline=None)
+@given(x1=frac, y1=frac, x2=frac, y2=frac)
+@example(x1=Fraction(1, 2), y1=Fraction(1, 2), x2=Fraction(1, 2), y2=Fraction(1, 2))
+@example(x1=Fraction(0), y1=Fraction(0), x2=Fraction(3, 2), y2=Fraction(4))
+def test_fractional_line_matches_generator(algo, x1, y1, x2, y2):
+    assert as_pixels(raster.line(x1, y1, x2, y2, algo=algo)) == generator_pixels(
+        algo, x1, y1, x2, y2
+    )
+
+
+@pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
+@pytest.mark.parametrize(
+    "end",
+    [(70_001, 23_456), (-70_001, 23_456), (23_456, -70_001), (-31_337, -70_001)],
+    ids=["E", "W", "S", "SW-steep"],
+)
+def test_long_line_crosses_blocks(algo, end):
+    assert abs(end[0]) > 2 * raster.BLOCK or abs(end[1]) > 2 * raster.BLOCK
+    got = as_pixels(raster.line(-5, 7, end[0], end[1], algo=algo))
+    assert got == generator_pixels(algo, -5, 7, *end)
+
+
+@settings(max_examples=300, deadline=None)
+@given(x1=st.integers(-500, 500), y1=st.integers(-500, 500), dx=st.integers(0, 500), dy=short)
+def test_bresenham_equals_skimage_when_walking_the_same_way(x1, y1, dx, dy):
+    """skimage.draw.line walks from its first point; ours from the smaller major coordinate."""
+    draw = pytest.importorskip("skimage.draw")
+    if abs(dy) > dx:  # steep: walk upward, as scanconv does
+        x2, y2 = x1 + (dx if dy > 0 else -dx), y1 + abs(dy)
+    else:
+        x2, y2 = x1 + dx, y1 + dy
+    rr, cc = draw.line(y1, x1, y2, x2)
+    xs, ys = raster.line(x1, y1, x2, y2)
+    assert np.array_equal(xs, cc) and np.array_equal(ys, rr)
+
+
+def test_line_rejects_bad_input():
+    with pytest.raises(ValueError, match="x1 must be an integer"):
+        raster.line(Fraction(1, 2), 0, 4, 4)
+    with pytest.raises(ValueError, match="out of range"):
+        raster.line(0, 0, 10**9 + 1, 0)
+    with pytest.raises(ValueError, match="unknown line algorithm 'wu'"):
+        raster.line(0, 0, 1, 1, algo="wu")
+    with pytest.raises(TypeError, match="int or a Fraction, got float"):
+        raster.line(0.5, 0, 1, 1, algo="dda")
+
+
+def test_line_accepts_numpy_integers():
+    got = raster.line(np.int64(2), np.int32(2), np.int16(10), np.uint8(6))
+    assert as_pixels(got) == generator_pixels("bresenham", 2, 2, 10, 6)
+
+
+# --- the exact integer helper -----------------------------------------------------------------
+
+
+def _expected(alpha: Fraction, beta: Fraction, n: int, offset: int, sign: int) -> list[int]:
+    return [offset + sign * math.floor(alpha + beta * k) for k in range(n)]
+
+
+@settings(max_examples=600, deadline=None)
+@given(
+    num=st.integers(-(10**30), 10**30),
+    den=st.one_of(st.integers(1, 1000), st.integers(1, 10**20)),
+    bnum=st.integers(-(10**20), 10**20),
+    bden=st.one_of(st.integers(1, 1000), st.integers(1, 10**20)),
+    n=st.integers(1, 300),
+    offset=st.integers(-(10**9), 10**9),
+    sign=st.sampled_from([1, -1]),
+)
+def test_floor_affine_is_exact(num, den, bnum, bden, n, offset, sign):
+    alpha, beta = Fraction(num, den), Fraction(bnum, bden) % 3 - Fraction(3, 2)
+    expected = _expected(alpha, beta, n, offset, sign)
+    if any(abs(v) >= 2**62 for v in expected):
+        return  # results themselves beyond int64 are out of scope
+    got = raster._floor_affine(alpha, beta, n, offset=offset, sign=sign)
+    assert got.dtype == np.int64 and got.tolist() == expected
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    c=st.integers(2**20, 2**31),
+    a=st.integers(-(10**15), 10**15),
+    share=st.floats(0, 1),
+    sign=st.sampled_from([1, -1]),
+)
+def test_floor_affine_float_path_at_its_limit(c, a, share, sign):
+    """A whole block with |b| BLOCK + c just under 2**46: the largest float error allowed."""
+    b = sign * int(share * (2**46 - c - 1) // raster.BLOCK)
+    n = raster.BLOCK + 3
+    got = raster._floor_affine(Fraction(a, c), Fraction(b, c), n)
+    assert got.tolist() == [(a + b * k) // c for k in range(n)]
+
+
+@pytest.mark.parametrize(
+    ("alpha", "beta", "n"),
+    [
+        (Fraction(1, 2), Fraction(3141, 9999), 3 * raster.BLOCK + 17),  # float, rounded
+        (Fraction(10**18 + 1, 2), Fraction(-7, 3), 2 * raster.BLOCK + 5),  # float, large q
+        (Fraction(1, 3), Fraction(7, 10**14 + 1), 2 * raster.BLOCK + 5),  # int64 division
+        (Fraction(5, 10**17 + 3), Fraction(1, 10**16 + 1), 2000),  # exact Python integers
+        (Fraction(-7), Fraction(-1), 2 * raster.BLOCK),  # integral: arange
+        (Fraction(9, 4), Fraction(0), 5),  # constant
+    ],
+    ids=["float", "float-large", "int64", "object", "arange", "constant"],
+)
+@pytest.mark.parametrize("sign", [1, -1])
+def test_floor_affine_every_path(alpha, beta, n, sign):
+    offset = 123
+    got = raster._floor_affine(alpha, beta, n, offset=offset, sign=sign)
+    assert got.tolist() == _expected(alpha, beta, n, offset, sign)
+
+
+# --- circles ----------------------------------------------------------------------------------
+
+
+def test_circle_every_small_radius():
+    for r in range(200):
+        for centre in ((0, 0), (-3, 7)):
+            expected = list(circle_solution("midpoint", r, *centre).pixels())
+            assert as_pixels(raster.circle(r, *centre)) == expected, (r, centre)
+
+
+@settings(max_examples=300, deadline=None)
+@given(r=st.integers(0, 1500), xc=st.integers(-(10**9), 10**9), yc=st.integers(-(10**9), 10**9))
+def test_circle_matches_both_generators(r, xc, yc):
+    got = as_pixels(raster.circle(r, xc, yc))
+    assert got == list(circle_solution("midpoint", r, xc, yc).pixels())
+    assert got == list(circle_solution("bresenham", r, xc, yc).pixels())
+
+
+@settings(max_examples=100, deadline=None)
+@given(r=st.integers(0, 3000), xc=st.integers(-500, 500), yc=st.integers(-500, 500))
+def test_circle_pixel_set_equals_skimage_bresenham(r, xc, yc):
+    draw = pytest.importorskip("skimage.draw")
+    rr, cc = draw.circle_perimeter(yc, xc, r, method="bresenham")
+    assert set(as_pixels(raster.circle(r, xc, yc))) == set(
+        zip(cc.tolist(), rr.tolist(), strict=True)
+    )
+
+
+@pytest.mark.parametrize("r", [98_765, 123_457])
+def test_circle_large_radius(r):
+    assert as_pixels(raster.circle(r, 5, -5)) == list(
+        circle_solution("midpoint", r, 5, -5).pixels()
+    )
+
+
+def test_circle_rejects_bad_input():
+    with pytest.raises(ValueError, match="radius must be a non-negative integer"):
+        raster.circle(-1)
+    with pytest.raises(ValueError, match="radius must be an integer"):
+        raster.circle(Fraction(5, 2))
+    with pytest.raises(ValueError, match="out of range"):
+        raster.circle(5, 10**9 + 1, 0)
+
+
+# --- ellipses ---------------------------------------------------------------------------------
+
+
+def test_ellipse_every_small_pair_of_semi_axes():
+    for rx in range(40):
+        for ry in range(40):
+            expected = list(ellipse_solution(rx, ry, 2, -3).pixels())
+            assert as_pixels(raster.ellipse(rx, ry, 2, -3)) == expected, (rx, ry)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    rx=st.integers(0, 1200),
+    ry=st.integers(0, 1200),
+    xc=st.integers(-(10**9), 10**9),
+    yc=st.integers(-(10**9), 10**9),
+)
+@example(rx=10, ry=1, xc=0, yc=0)  # flat: region 1 reaches y = 0 before the tip
+@example(rx=1, ry=10, xc=0, yc=0)
+@example(rx=7, ry=7, xc=0, yc=0)  # rx = ry
+@example(rx=0, ry=5, xc=1, yc=1)  # a segment on the y axis
+@example(rx=5, ry=0, xc=1, yc=1)  # a segment on the x axis
+def test_ellipse_matches_generator(rx, ry, xc, yc):
+    got = as_pixels(raster.ellipse(rx, ry, xc, yc))
+    assert got == list(ellipse_solution(rx, ry, xc, yc).pixels())
+
+
+@settings(max_examples=60, deadline=None)
+@given(rx=st.integers(1, 5_000), ry=st.integers(1, 25))
+def test_flat_ellipse_matches_generator(rx, ry):
+    for a, b in ((rx, ry), (ry, rx)):
+        assert as_pixels(raster.ellipse(a, b)) == list(ellipse_solution(a, b).pixels())
+
+
+def test_ellipse_large_semi_axes():
+    got = as_pixels(raster.ellipse(100_003, 60_001, -7, 9))
+    assert got == list(ellipse_solution(100_003, 60_001, -7, 9).pixels())
+
+
+# --- the exact count behind both ---------------------------------------------------------------
+
+
+def _odd_count(d: int, p: int, q: int, strict: bool) -> int:
+    """Reference: odd t >= 1 with (q t)**2 < 4 p**2 d (or <=), in exact integers."""
+    v = 4 * p * p * max(d, 0)
+    if strict and v == 0:
+        return 0
+    top = (math.isqrt(v - 1) if strict else math.isqrt(v)) // q
+    return (top + 1) // 2
+
+
+@settings(max_examples=500, deadline=None)
+@given(
+    p=st.integers(0, 10**9),
+    q=st.integers(1, 10**9),
+    s=st.integers(0, 10**5),
+    t=st.integers(0, 10**4).map(lambda n: 2 * n + 1),
+    nudge=st.sampled_from([-1, 0, 1]),
+    strict=st.booleans(),
+)
+def test_odd_below_is_exact_at_and_next_to_ties(p, q, s, t, nudge, strict):
+    """d chosen so that 2p·sqrt(d)/q is exactly the odd number t (q = 2p s), then nudged."""
+    q = max(1, 2 * p * s) if s else q
+    d = min((s * t) ** 2 + nudge, 10**18) if s else min(t * t * q + nudge, 10**18)
+    got = raster._odd_below(np.array([d], dtype=np.int64), p, q, strict=strict)
+    assert got.tolist() == [_odd_count(d, p, q, strict)]
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    d=st.lists(st.integers(-5, 10**18), min_size=1, max_size=50),
+    p=st.integers(0, 10**9),
+    q=st.integers(1, 10**9),
+    strict=st.booleans(),
+)
+def test_odd_below_is_exact(d, p, q, strict):
+    got = raster._odd_below(np.array(d, dtype=np.int64), p, q, strict=strict)
+    assert got.tolist() == [_odd_count(v, p, q, strict) for v in d]

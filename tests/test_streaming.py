@@ -1,0 +1,85 @@
+"""Long answers stream: rows are rendered and written as the generator produces them.
+
+Each test counts how many step records have been pulled from the algorithm when the first
+rows come out; a renderer or writer that built a list first would have pulled them all.
+(Peak memory of the real CLI is measured in ``benchmarks/bench.py``.)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import io
+from collections.abc import Iterator
+from itertools import islice
+
+import pytest
+
+from scanconv import cli
+from scanconv.lines import line_solution
+from scanconv.records import Solution, Step
+from scanconv.render import Format, Options, render
+from scanconv.render.text import BUFFER_ROWS
+
+LENGTH = 1_000_000
+
+
+def counted(solution: Solution) -> tuple[Solution, list[int]]:
+    """The same solution, counting the step records its generators hand out."""
+    pulled = [0]
+    steps, pixels = solution.steps, solution.pixels
+
+    def counting_steps() -> Iterator[Step]:
+        for s in steps():
+            pulled[0] += 1
+            yield s
+
+    def counting_pixels() -> Iterator[tuple[int, int]]:
+        assert pixels is not None
+        for p in pixels():
+            pulled[0] += 1
+            yield p
+
+    return dataclasses.replace(solution, steps=counting_steps, pixels=counting_pixels), pulled
+
+
+@pytest.mark.parametrize("fmt", [Format.csv, Format.json])
+def test_data_formats_stream_row_by_row(fmt):
+    sol, pulled = counted(line_solution("bresenham", 0, 0, LENGTH, 1))
+    chunks = render(sol, fmt, Options(grid=False))
+    first = list(islice(chunks, 50))
+    assert any("," in c for c in first[2:])  # step rows, not just the header
+    assert pulled[0] <= 50
+
+
+@pytest.mark.parametrize("fmt", [Format.plain, Format.markdown])
+def test_text_formats_buffer_only_the_padded_head(fmt):
+    sol, pulled = counted(line_solution("bresenham", 0, 0, LENGTH, 1))
+    chunks = render(sol, fmt, Options(grid=False))
+    text = ""
+    for chunk in chunks:
+        text += chunk if isinstance(chunk, str) else ""
+        if text.count("\n") > 60 + BUFFER_ROWS:
+            break
+    assert pulled[0] <= BUFFER_ROWS + 100
+
+
+class ClosedAfter(io.StringIO):
+    """A stdout that fails after a number of writes, like a pipe whose reader has gone."""
+
+    def __init__(self, writes: int) -> None:
+        super().__init__()
+        self.left = writes
+
+    def write(self, s: str) -> int:
+        self.left -= 1
+        if self.left < 0:
+            raise BrokenPipeError
+        return super().write(s)
+
+
+@pytest.mark.parametrize("fmt", [Format.csv, Format.json])
+def test_the_cli_writes_each_chunk_as_it_comes(fmt):
+    sol, pulled = counted(line_solution("bresenham", 0, 0, LENGTH, 1))
+    with pytest.raises(BrokenPipeError):
+        cli._write(render(sol, fmt, Options(grid=False)), ClosedAfter(100), fmt)
+    assert pulled[0] <= 100
