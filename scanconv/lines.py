@@ -214,6 +214,20 @@ def basic(x1: Number, y1: Number, x2: Number, y2: Number) -> Iterator[Step]:
 # --- Solutions: the exam answer around the steps -------------------------------------------
 
 
+def _once(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
+    """Drop a pixel equal to the one before it (DDA rows can round to the same pixel when the
+    end points are fractional); a monotone walk never revisits an older pixel.
+
+    >>> list(_once(iter([(1, 0), (1, 0), (2, 0)])))
+    [(1, 0), (2, 0)]
+    """
+    last = None
+    for p in pixels:
+        if p != last:
+            yield p
+        last = p
+
+
 def _paren(v: Number) -> str:
     s = fmt_short(v)
     return f"({s})" if s.startswith("-") else s
@@ -446,7 +460,7 @@ def _dda_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
         ),
         extra_keys=("x", "y", "round_x", "round_y"),
         steps=lambda: dda(x1, y1, x2, y2),
-        pixels=lambda: (s.pixel for s in dda(x1, y1, x2, y2)),
+        pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2)),
         bbox=_bbox((x1, y1), (x2, y2)),
         geometry={"line": (x1, y1, x2, y2)},
         notes=notes,

@@ -204,6 +204,13 @@ def test_fractional_end_points_stay_connected(x1, y1, x2, y2):
         assert px[0] == (round_half_up(x1), round_half_up(y1)) or algo == "basic"
 
 
+def test_dda_pixels_are_listed_once():
+    """Two rows of (0.5, 0) -> (1.4, 0.2) round to the same pixel; it is plotted once."""
+    rows = [s.pixel for s in dda(Fraction(1, 2), 0, Fraction(7, 5), Fraction(1, 5))]
+    assert rows == [(1, 0), (1, 0)]
+    assert pixels("dda", Fraction(1, 2), 0, Fraction(7, 5), Fraction(1, 5)) == [(1, 0)]
+
+
 def test_basic_matches_its_equation():
     for s in basic(0, 0, 3, 7):
         y, x_exact, x_rounded = s.extra
