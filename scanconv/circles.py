@@ -205,9 +205,9 @@ def trig(r: int, rounding: str = "half-up") -> Iterator[Step]:
     -----
     θ runs from 90° down towards 45° in steps of ``Δθ = 1/r`` radians (about one pixel of arc
     per step): ``θ_k = π/2 - k/r`` for ``k = 0, 1, ...`` while the plotted point has
-    ``x <= y``. That is every θ_k >= 45° (``k <= floor(π r / 4)``, decided exactly with
-    rational bounds on π) and at most one more, whose rounded point still lies on the
-    diagonal: the octant then ends next to its mirror image. Stopping at θ >= 45° instead can
+    ``x <= y``, and for at most one θ below 45°. That is every θ_k >= 45°
+    (``k <= floor(π r / 4)``, decided exactly with rational bounds on π) and at most one more,
+    whose rounded point still lies on the diagonal: the octant then ends next to its mirror image. Stopping at θ >= 45° instead can
     leave a gap at 45° (r = 10 would end at (6, 8), two pixels from its image (8, 6); the next
     row, θ = 44.2°, plots (7, 7)). cos and sin are transcendental, so x and y are computed as
     floats (the only floats in scanconv's tables; their error, about 10⁻¹⁶·r, is far below the
@@ -232,13 +232,11 @@ def trig(r: int, rounding: str = "half-up") -> Iterator[Step]:
     if r == 0:
         yield new_step(Step, (0, None, None, (0, 0), (90.0, math.pi / 2, 0.0, 0.0)))
         return
-    k = 0
-    while True:
+    for k in range(trig_steps(r) + 2):  # never more than one step below 45°
         step = _trig_step(r, k, rnd)
         if step.pixel[0] > step.pixel[1]:
             return
         yield step
-        k += 1
 
 
 def _trig_step(r: int, k: int, rnd: Callable[[Number], int]) -> Step:
@@ -254,13 +252,9 @@ def trig_last(r: int, rounding: str = "half-up") -> int:
     >>> trig_last(5), trig_last(10)
     (3, 8)
     """
-    rnd = _rounder(rounding)
     k = trig_steps(r)
-    while True:  # at most twice: two steps below 45° put x at least 1.4 beyond y
-        p = _trig_step(r, k + 1, rnd).pixel
-        if p[0] > p[1]:
-            return k
-        k += 1
+    p = _trig_step(r, k + 1, _rounder(rounding)).pixel
+    return k + 1 if p[0] <= p[1] else k
 
 
 def trig_steps(r: int) -> int:
@@ -314,7 +308,7 @@ def symmetric_dda(r: int, rounding: str = "half-up") -> Iterator[Step]:
     # x = xs / 2^s and y = ys / 2^s: shifts instead of Fraction arithmetic, whose gcds would
     # make this quadratically slower; the values yielded are the same exact fractions.
     xs, ys, s, k = 0, r, 0, 0
-    while True:
+    while k <= 1 << n:  # a guard only: about π/4 · 2^n steps reach the diagonal
         x, y = _dyadic(xs, s), _dyadic(ys, s)
         point = (rnd(x), rnd(y))
         if point[0] > point[1]:

@@ -10,7 +10,6 @@ wrong pixels for the notes' own DDA example; it is never used here.
 
 from __future__ import annotations
 
-import math
 import re
 from fractions import Fraction
 
@@ -32,12 +31,14 @@ def round_half_up(v: Number | float) -> int:
     [1, 2, 3, 4, 0, -1]
     >>> round_half_up(Fraction(9, 2)), round(4.5)   # Python's round() gives 4
     (5, 4)
+    >>> round_half_up(0.49999999999999994)   # floor(v + 0.5) in floats would give 1
+    0
     """
     if isinstance(v, int):
         return v
-    if isinstance(v, Fraction):
-        return (2 * v.numerator + v.denominator) // (2 * v.denominator)
-    return math.floor(v + 0.5)
+    if not isinstance(v, Fraction):
+        v = Fraction(v)  # exact: float v + 0.5 would round 0.49999999999999994 up to 1
+    return (2 * v.numerator + v.denominator) // (2 * v.denominator)
 
 
 def round_trunc(v: Number | float) -> int:

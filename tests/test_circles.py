@@ -294,6 +294,7 @@ def test_trig_follows_cos_and_sin(r):
         assert math.isclose(rad, math.pi / 2 - s.k / r, abs_tol=1e-12)
         assert math.isclose(deg, math.degrees(rad), abs_tol=1e-9)
         assert math.isclose(x, r * math.cos(rad), abs_tol=1e-9)
+        assert math.isclose(y, r * math.sin(rad), abs_tol=1e-9)
         assert s.pixel == point(s.k) and s.pixel[0] <= s.pixel[1]
 
 
