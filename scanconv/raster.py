@@ -180,7 +180,8 @@ def line(
       before step ``k``. The minor axis steps when ``p_k >= 0``, that is when
       ``δ(k + 1) / Δ >= m_k + 1/2``, so by induction ``m_k = floor(δ k / Δ + 1/2)``: the
       ideal minor offset rounded half up, ties stepping, as the tie rule ``p_k = 0`` says.
-    * ``dda``: ``round_half_up(x1 + k Δx / steps)`` for ``k = 0 .. steps``, and the same for y.
+    * ``dda``: ``round_half_up(x1 + k Δx / steps)`` for ``k = 0 .. steps``, and the same for y;
+      a row that rounds to the pixel before it (fractional end points only) is dropped.
     * ``basic``: the major coordinate runs from ``round(P1)`` to ``round(P2)``; the minor is
       the line equation rounded half up.
 
@@ -209,7 +210,11 @@ def line(
         n = dda_steps(*p) + 1
         xi, yi = dda_increments(*p)
         half = Fraction(1, 2)
-        return _floor_affine(p[0] + half, xi, n), _floor_affine(p[1] + half, yi, n)
+        xs, ys = _floor_affine(p[0] + half, xi, n), _floor_affine(p[1] + half, yi, n)
+        # fractional end points can round two rows to one pixel, listed once (lines._once)
+        keep = np.ones(n, dtype=bool)
+        keep[1:] = (xs[1:] != xs[:-1]) | (ys[1:] != ys[:-1])
+        return (xs, ys) if keep.all() else (xs[keep], ys[keep])
     if algo == "basic":
         return _basic(*p)
     raise ValueError(f"unknown line algorithm {algo!r} (choose from {', '.join(LINE_ALGORITHMS)})")
