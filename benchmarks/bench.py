@@ -99,6 +99,18 @@ def bench_line(repeat: int) -> Row:
     )
 
 
+def speedup(label: str, t_ours: float, t_sk: float, same: bool, factor: int, *, exact: bool) -> Row:
+    """A row for "at least ``factor`` times faster"; ``exact``: the pixel sets must agree."""
+    shown = verdict(same) if exact else ("yes" if same else "no")
+    return (
+        label,
+        f"{ms(t_sk)} / {ms(t_ours)}; same pixel set: {shown}",
+        f"{t_sk / t_ours:.1f}x",
+        f">= {factor}x",
+        verdict(t_sk >= factor * t_ours and (same or not exact)),
+    )
+
+
 def bench_circle(repeat: int) -> Row:
     import skimage.draw
 
@@ -109,13 +121,10 @@ def bench_circle(repeat: int) -> Row:
         repeat,
     )
     same = np.array_equal(pixel_keys(*ours), pixel_keys(*theirs))
-    return (
-        f"circle, r = {r:,}: `skimage.draw.circle_perimeter(method='bresenham')` / `raster.circle`",
-        f"{ms(t_sk)} / {ms(t_ours)}; same pixel set: {verdict(same)}",
-        f"{t_sk / t_ours:.1f}x",
-        ">= 10x",
-        verdict(t_sk >= 10 * t_ours and same),
+    label = (
+        f"circle, r = {r:,}: `skimage.draw.circle_perimeter(method='bresenham')` / `raster.circle`"
     )
+    return speedup(label, t_ours, t_sk, same, 10, exact=True)
 
 
 def bench_ellipse(repeat: int) -> Row:
@@ -127,13 +136,10 @@ def bench_ellipse(repeat: int) -> Row:
     )
     # skimage draws Zingl's ellipse, not the midpoint one: the same set is not a target
     same = np.array_equal(pixel_keys(*ours), pixel_keys(*theirs))
-    return (
-        f"ellipse, rx = {rx:,}, ry = {ry:,}: `skimage.draw.ellipse_perimeter` / `raster.ellipse`",
-        f"{ms(t_sk)} / {ms(t_ours)}; same pixel set: {'yes' if same else 'no'}",
-        f"{t_sk / t_ours:.1f}x",
-        ">= 5x",
-        verdict(t_sk >= 5 * t_ours),
+    label = (
+        f"ellipse, rx = {rx:,}, ry = {ry:,}: `skimage.draw.ellipse_perimeter` / `raster.ellipse`"
     )
+    return speedup(label, t_ours, t_sk, same, 5, exact=False)
 
 
 def bench_records(repeat: int) -> Row:

@@ -13,20 +13,22 @@ Integer types
 -------------
 Inputs are Python ``int`` (or numpy integers) and, where an algorithm takes fractional end
 points, :class:`fractions.Fraction`; floats are refused because they are not exact. Every
-coordinate and size must satisfy ``|v| <= COORD_LIMIT`` (``10**9``). Results are ``int64``:
+coordinate and size must satisfy ``|v| <= COORD_LIMIT`` (``10**9``). Results are ``int64``,
+because a centre plus a radius reaches ``2 * 10**9``, beyond int32; every intermediate is kept
+far inside int64 (or decided exactly in Python integers):
 
 * lines: each coordinate is ``offset + floor(alpha + beta * k)`` with exact rationals
-  ``alpha`` and ``beta``. It is evaluated block by block (:data:`BLOCK` pixels) with the
-  integer part of ``alpha + beta * k0`` split off in Python integers, so the only int64
-  intermediates are ``r + b1 * j < c * (BLOCK + 1)`` for the common denominator ``c``.
-  Integer end points give ``c <= 2 * 2 * 10**9``, far inside int64; end points with huge
-  denominators fall back to exact Python-integer arithmetic (slow, never wrong).
-* circles: ``4 * (r**2 - x**2) <= 4 * 10**18 < 2**63 - 1`` and the integer square root is
-  corrected in int64, so ``r <= 10**9`` is exact.
-* ellipses: the region tests multiply fourth powers of the radii (``rx**2 * ry**2`` reaches
-  ``10**36``), which no machine integer holds. They are estimated in float64, whose error is
-  bounded far below the margin used, and every value within that margin of a decision
-  boundary is decided again with exact Python integers.
+  ``alpha`` and ``beta`` (:func:`_floor_affine`). It is evaluated block by block
+  (:data:`BLOCK` pixels) with the integer part of each block's first value split off in
+  Python integers, so what is left is below ``c * (BLOCK + 1)`` for the common denominator
+  ``c``: integer end points give ``c <= 4 * 10**9``. It is computed in float64 with a proven
+  error bound when ``|b| BLOCK + c < 2**46`` (integer end points less than ``10**9``
+  apart), else divided in int64; denominators near ``2**63`` (fractional end points only) fall back to
+  exact Python integers (slow, never wrong).
+* circles and ellipses: each decision compares ``(q t)**2`` with ``4 p**2 d``, up to
+  ``4 * 10**36``, which no machine integer holds. They are estimated in float64
+  (:func:`_odd_below`), whose error is bounded far below the margin used, and every value
+  within that margin of a decision boundary is decided again in exact Python integers.
 
 Examples
 --------
@@ -211,6 +213,8 @@ def line(
         xi, yi = dda_increments(*p)
         half = Fraction(1, 2)
         xs, ys = _floor_affine(p[0] + half, xi, n), _floor_affine(p[1] + half, yi, n)
+        if all(isinstance(v, int) for v in p):  # the major coordinate moves 1 per row
+            return xs, ys
         # fractional end points can round two rows to one pixel, listed once (lines._once)
         keep = np.ones(n, dtype=bool)
         keep[1:] = (xs[1:] != xs[:-1]) | (ys[1:] != ys[:-1])
