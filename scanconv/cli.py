@@ -65,6 +65,16 @@ def number(text: str) -> Fraction:
         raise typer.BadParameter(str(err)) from None
 
 
+def integer(text: str | int) -> int:
+    """typer parser for a whole number (``16``, ``1e3``); the error names the bad value."""
+    if isinstance(text, int):  # a default value
+        return text
+    value = number(text)
+    if value.denominator != 1:
+        raise typer.BadParameter(f"{text!r} is not an integer")
+    return value.numerator
+
+
 # Shared options, declared once.
 FormatOpt = Annotated[
     Format,
@@ -158,7 +168,14 @@ def _write(chunks: Iterable[Any], out: Any, fmt: Format) -> None:
                 from rich.console import Console
 
                 console = Console(file=out, highlight=False, emoji=False, markup=False)
+                console.on_broken_pipe = _broken_pipe  # type: ignore[method-assign]
             console.print(chunk)
+
+
+def _broken_pipe() -> NoReturn:
+    """rich's own handler exits with status 1 when the reader leaves; raise, so that
+    :func:`emit` stops quietly with status 0 as for every other format."""
+    raise BrokenPipeError(32, "Broken pipe")
 
 
 def emit(
@@ -213,11 +230,26 @@ def write_atomic(path: Path, fill: Any, *, binary: bool = False) -> None:
     A failure leaves any existing file untouched and no partial file behind (exit 1).
     ``fill`` gets a text file (UTF-8, ``\\n`` line ends), or a binary one with ``binary``.
     """
+    import stat
     import tempfile  # here, not at the top: only a file output needs it (start-up time)
 
-    directory = path.parent if str(path.parent) else Path(".")
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+        special = not stat.S_ISREG(os.stat(path).st_mode)
+    except OSError:  # missing (or unreadable): created below, or the error is reported there
+        special = False
+    if special:  # /dev/null, /dev/stdout, a FIFO: nothing to replace, so write into it
+        try:
+            with (
+                open(path, "wb") if binary else open(path, "w", encoding="utf-8", newline="\n")
+            ) as f:
+                fill(f)
+        except OSError as err:
+            fail(f"cannot write {path}: {err.strerror or err}", 1)
+        return
+    target = Path(os.path.realpath(path))  # through a symlink: replace its target, keep the link
+    directory = target.parent
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
     except OSError as err:
         fail(f"cannot write {path}: {err.strerror or err}", 1)
     try:
@@ -226,7 +258,7 @@ def write_atomic(path: Path, fill: Any, *, binary: bool = False) -> None:
         ) as f:
             fill(f)
         os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the mode open() would
-        os.replace(tmp, path)
+        os.replace(tmp, target)
     except OSError as err:
         _unlink(tmp)
         fail(f"cannot write {path}: {err.strerror or err}", 1)
@@ -603,6 +635,7 @@ SamplesOpt = Annotated[
     typer.Option(
         "--samples",
         "-n",
+        parser=integer,
         help="Steps of t: the curve is tabulated at N + 1 values of t, both ends included "
         "(default 16; parametric line: max(|dx|, |dy|)).",
         show_default=False,
@@ -617,7 +650,12 @@ TRangeOpt = Annotated[
         show_default=False,
     ),
 ]
-DegreeOpt = Annotated[int, typer.Option("--degree", "-p", help="B-spline degree p (1 <= p <= n).")]
+DegreeOpt = Annotated[
+    int,
+    typer.Option(
+        "--degree", "-p", parser=integer, help="B-spline degree p (1 <= p <= n, at most 10)."
+    ),
+]
 KnotsOpt = Annotated[
     str,
     typer.Option(
@@ -1207,6 +1245,7 @@ def main(argv: list[str] | None = None) -> int:
     argv = [_MINUS + a[1:] if _NEG_NONFINITE.match(a) else a for a in argv]
     command = _command_for(argv)
     code = 0
+    previous_term = _catch_sigterm()
     try:
         result = command.main(args=argv, prog_name=PROG, standalone_mode=False)
         code = result if isinstance(result, int) else 0
@@ -1234,7 +1273,33 @@ def main(argv: list[str] | None = None) -> int:
     except RecursionError:
         note("error: input too deeply nested")
         code = 2
+    except ValueError as err:  # bad input found while the answer was already streaming
+        note(f"error: {' '.join(str(err).split())}")
+        code = 2
+    except MemoryError:
+        note("error: out of memory (see docs/limits.md for the input limits)")
+        code = 1
+    finally:
+        _restore_sigterm(previous_term)
     return code
+
+
+def _catch_sigterm() -> Any:
+    """Turn SIGTERM into ``SystemExit(143)`` so a file being written is cleaned up (its
+    temporary is removed; the target is untouched). Returns the handler to restore."""
+    try:
+        return signal.signal(signal.SIGTERM, _terminate)
+    except ValueError:  # not the main thread: leave signals alone
+        return None
+
+
+def _terminate(signum: int, frame: Any) -> NoReturn:
+    raise SystemExit(128 + signum)
+
+
+def _restore_sigterm(handler: Any) -> None:
+    if handler is not None:
+        signal.signal(signal.SIGTERM, handler)
 
 
 def _quiet_pipe() -> int:

@@ -121,6 +121,15 @@ def _is_int(v: Number) -> bool:
     return Fraction(v).denominator == 1
 
 
+MAX_LENGTH = 10**4
+"""Largest major-axis length of ``compare line`` (about 2 s): unlike the step tables, a
+comparison runs every method and groups its pixels before the first row."""
+
+MAX_RADIUS = 2000
+"""Largest radius of ``compare circle`` (a few seconds: five methods, the floating-point ones
+with exact checks, all run before the first row)."""
+
+
 def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
     """The basic method, the DDA and Bresenham's algorithm side by side for one line.
 
@@ -148,6 +157,12 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
     """
     from .lines import line_solution
 
+    length = max(abs(Fraction(x2 - x1)), abs(Fraction(y2 - y1)))
+    if length > MAX_LENGTH:
+        raise ValueError(
+            f"compare line: the line is {fmt_short(length)} pixels long along its major axis; "
+            f"at most {MAX_LENGTH} (every method runs before the first row)"
+        )
     integer = all(_is_int(v) for v in (x1, y1, x2, y2))
     methods = LINE_METHODS if integer else LINE_METHODS[:2]
     sols = {m: line_solution(m, x1, y1, x2, y2) for m in methods}
@@ -350,6 +365,11 @@ def compare_circles(r: Number) -> Solution:
     from .circles import SDDA_MAX_RADIUS, _sqrt6, check_integer, circle_solution
 
     ir = check_integer(r, "radius", negative=False)
+    if ir > MAX_RADIUS:
+        raise ValueError(
+            f"compare circle: the radius must be at most {MAX_RADIUS} (got {ir}; "
+            "every method runs before the first row)"
+        )
     methods = tuple(m for m in CIRCLE_METHODS if m != "symmetric-dda" or ir <= SDDA_MAX_RADIUS)
     sols = {m: circle_solution(m, ir) for m in methods}
 

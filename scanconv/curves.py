@@ -30,7 +30,7 @@ from typing import Any
 
 import numpy as np
 
-from .expr import Expr, compile_expr
+from .expr import MAX_BITS, Expr, compile_expr
 from .lines import bresenham
 from .numeric import COORD_LIMIT, Number, fmt, fmt_short, fmt_value, normalize, round_half_up
 from .records import Column, Pixel, Quantity, Solution, Step, Table
@@ -56,11 +56,28 @@ KNOTS = ("open", "uniform")
 DEFAULT_SAMPLES = 16
 """Steps of t when ``--samples`` is not given (the parametric line uses max(|dx|, |dy|))."""
 
-MAX_SAMPLES = 10**6
-"""Most steps of t accepted."""
+MAX_SAMPLES = 10**5
+"""Most steps of t accepted. A parametric curve evaluates every sample before it prints
+anything (to report a domain error or the bounding box first): 10**5 exact samples take a few
+seconds."""
 
 MAX_POINTS = 100
 """Most control points accepted (the tables have one column per point)."""
+
+MAX_DEGREE = 10
+"""Highest B-spline degree accepted. Every row evaluates Cox–de Boor exactly, at a cost that
+grows with p (100 points at p = 10 already take about 20 ms a row); the notes use p <= 3."""
+
+MAX_WEIGHTS = 10**5
+"""Most exact weights in a Bezier or B-spline table: ``(samples + 1) × control points``.
+
+Each weight is an exact fraction, and a row of a 100-point curve takes several milliseconds;
+the limit keeps the slowest accepted table (one pass per output section) to about a minute."""
+
+MAX_CURVE_PIXELS = 10**6
+"""Longest accepted pixel path of a curve: the Bresenham joins between successive samples,
+``max(|dx|, |dy|)`` summed. The plotted pixels are listed once each, so all of them are held
+in memory (about 140 bytes a pixel: 140 MB at the limit)."""
 
 _DENSE = 2049
 """Most points of the dense float polyline in ``geometry``."""
@@ -82,6 +99,78 @@ def check_samples(samples: int) -> int:
     if samples > MAX_SAMPLES:
         raise ValueError(f"samples must be at most {MAX_SAMPLES}, got {samples}")
     return samples
+
+
+def check_weights(samples: int, points: int) -> None:
+    """Refuse a table of more than :data:`MAX_WEIGHTS` exact weights, before any is computed.
+
+    >>> check_weights(10**5, 4)
+    Traceback (most recent call last):
+    ...
+    ValueError: (samples + 1) x control points = 100001 x 4 = 400,004 exact weights is too many (at most 100,000); use fewer --samples
+    """
+    cells = (samples + 1) * points
+    if cells > MAX_WEIGHTS:
+        raise ValueError(
+            f"(samples + 1) x control points = {samples + 1} x {points} = {cells:,} exact "
+            f"weights is too many (at most {MAX_WEIGHTS:,}); use fewer --samples"
+        )
+
+
+def check_path(polygons: Iterable[Sequence[Point]], samples: int) -> None:
+    """Refuse curves whose pixel path could exceed :data:`MAX_CURVE_PIXELS`, before any work.
+
+    A Bezier curve or B-spline is no longer than its control polygon (in any norm: the
+    derivative is a convex combination of the polygon's edges, scaled), and rounding each
+    sample adds at most one pixel per step, so the polygon's ``max(|dx|, |dy|)`` summed plus
+    ``samples`` bounds the pixels joined, for each polygon.
+
+    >>> check_path([[(0, 0), (10**6, 0)]], 16)
+    Traceback (most recent call last):
+    ...
+    ValueError: the control polygon is 1,000,000 pixels long (max(|dx|, |dy|) summed) and 16 samples add up to 16 more: the curve could need 1,000,016 pixels, more than 1,000,000
+    """
+    for pts in polygons:
+        edges = (
+            max(abs(Fraction(q[0]) - Fraction(p[0])), abs(Fraction(q[1]) - Fraction(p[1])))
+            for p, q in itertools.pairwise(pts)
+        )
+        length = math.ceil(sum(edges, Fraction(0)))
+        if length + samples > MAX_CURVE_PIXELS:
+            raise ValueError(
+                f"the control polygon is {length:,} pixels long (max(|dx|, |dy|) summed) and "
+                f"{samples} samples add up to {samples} more: the curve could need "
+                f"{length + samples:,} pixels, more than {MAX_CURVE_PIXELS:,}"
+            )
+
+
+def check_exact(values: Iterable[Any], what: str) -> None:
+    """Refuse exact values with more than :data:`~scanconv.expr.MAX_BITS` bits, too long to show.
+
+    >>> check_exact([Fraction(1, 3**3000)], "B(t)")
+    Traceback (most recent call last):
+    ...
+    ValueError: B(t): exact values would need more than 4096 bits (give fewer decimals, fewer control points or a lower degree)
+    """
+    for v in values:
+        if isinstance(v, Fraction):
+            _check_bits(max(v.numerator.bit_length(), v.denominator.bit_length()), what)
+
+
+def _check_bits(bits: int, what: str) -> None:
+    if bits > MAX_BITS:
+        raise ValueError(
+            f"{what}: exact values would need more than {MAX_BITS} bits (give fewer "
+            "decimals, fewer control points or a lower degree)"
+        )
+
+
+def _check_row(steps: Iterator[Step], what: str) -> None:
+    """Evaluate the row at ``k = 1`` (``t = 1/N`` carries the largest denominators) and refuse
+    it if its exact values are too long (:func:`check_exact`)."""
+    row = next(itertools.islice(steps, 1, None), None)
+    if row is not None:
+        check_exact(row.extra, what)
 
 
 def sample_ts(t0: Value, t1: Value, samples: int) -> Iterator[Value]:
@@ -115,8 +204,9 @@ def coord(v: Value) -> int:
         if not abs(v) <= COORD_LIMIT:
             raise ValueError(f"curve point coordinate {v:.6g} is out of range (|v| <= 1e+09)")
         return round_half_up(Fraction(f"{v:.9f}"))
-    if abs(Fraction(v)) > COORD_LIMIT:
-        raise ValueError(f"curve point coordinate {fmt(v)} is out of range (|v| <= 1e+09)")
+    if abs(q := Fraction(v)) > COORD_LIMIT:
+        shown = fmt(q) if abs(q) < 10**15 else f"{float(q):.6g}"
+        raise ValueError(f"curve point coordinate {shown} is out of range (|v| <= 1e+09)")
     return round_half_up(v)
 
 
@@ -503,8 +593,11 @@ def parametric_solution(
             f"Parametric parabola: vertex {_pt((h, kk))}, a = {_v(av)}",
         )
     elif kind == "custom":
-        if not x or not y:
-            raise ValueError("custom curve needs both --x and --y formulas in t")
+        if not x.strip() or not y.strip():
+            empty = "--x" if not x.strip() else "--y"
+            raise ValueError(
+                f"custom curve needs both --x and --y formulas in t ({empty} is empty)"
+            )
         compile_expr(x, ("t",))
         compile_expr(y, ("t",))
         spec = _Spec(
@@ -598,9 +691,9 @@ def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples
     def pixels() -> Iterator[Pixel]:
         return curve_pixels(s.pixel for s in steps())
 
-    # One pass evaluates every sample: a domain error or an out-of-range point is reported
-    # here, before any output, and gives the bounding box.
-    bbox = _bbox([*((s.pixel) for s in _corners(steps())), *marks])
+    # One pass evaluates every sample: a domain error, an out-of-range point or a pixel path
+    # that is too long is reported here, before any output, and gives the bounding box.
+    bbox = _extent(steps(), marks)
     try:
         ts = _dense_ts(t0, t1, samples)
         polyline = _polyline(fx(t=ts), fy(t=ts))
@@ -643,18 +736,31 @@ def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples
     )
 
 
-def _corners(steps: Iterable[Step]) -> Iterator[Step]:
-    """The steps whose pixel extends the bounding box so far (evaluates every step once)."""
-    box: tuple[int, int, int, int] | None = None
+def _extent(steps: Iterable[Step], marks: Iterable[Pixel]) -> tuple[int, int, int, int]:
+    """The bounding box of the sample pixels and ``marks`` (evaluates every step once).
+
+    Refuses the curve as soon as the Bresenham joins between successive sample pixels add up
+    to more than :data:`MAX_CURVE_PIXELS`.
+
+    >>> _extent(iter([Step(0, None, None, (0, 0), ()), Step(1, None, None, (3, -2), ())]), [(5, 5)])
+    (0, -2, 5, 5)
+    """
+    x0 = y0 = x1 = y1 = length = 0
+    prev: Pixel | None = None
     for s in steps:
         x, y = s.pixel
-        if box is None or not (box[0] <= x <= box[2] and box[1] <= y <= box[3]):
-            box = (
-                (x, y, x, y)
-                if box is None
-                else (min(box[0], x), min(box[1], y), max(box[2], x), max(box[3], y))
-            )
-            yield s
+        if prev is None:
+            x0, y0, x1, y1 = x, y, x, y
+        else:
+            length += max(abs(x - prev[0]), abs(y - prev[1]))
+            if length > MAX_CURVE_PIXELS:
+                raise ValueError(
+                    f"the curve's pixel path is more than {MAX_CURVE_PIXELS:,} pixels long "
+                    f"(reached at t_{s.k}); use a smaller curve or t range"
+                )
+            x0, y0, x1, y1 = min(x0, x), min(y0, y), max(x1, x), max(y1, y)
+        prev = (x, y)
+    return _bbox([(x0, y0), (x1, y1), *marks])
 
 
 # --- Bezier curves -----------------------------------------------------------------------------
@@ -824,11 +930,15 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
     """
     pts = check_points(points, 2, "a Bezier curve")
     check_samples(samples)
+    check_weights(samples, len(pts))
+    check_path([pts], samples)
     n = len(pts) - 1
     marks = _marks(pts)
 
     def steps() -> Iterator[Step]:
         return bezier(pts, samples)
+
+    _check_row(steps(), "Bezier curve")
 
     ts = _dense_ts(0, 1, samples)
     dense = _combine(bernstein(n, ts), _control_geometry(pts))
@@ -892,6 +1002,10 @@ def bezier_at_solution(points: Sequence[Point], t: Value) -> Solution:
     pts = check_points(points, 2, "a Bezier curve")
     t = check_unit_t(t)
     n = len(pts) - 1
+    if not isinstance(t, float):  # level r of the construction has denominators den(t)^r
+        scale = math.lcm(*(Fraction(c).denominator for p in pts for c in p))
+        bits = n * Fraction(t).denominator.bit_length() + scale.bit_length()
+        _check_bits(bits, "de Casteljau's construction")
     *_, last = de_casteljau(pts, t)
     point: Point = last.extra[0]
     w = tuple(_norm(v) for v in bernstein(n, t if isinstance(t, float) else Fraction(t)))
@@ -984,6 +1098,8 @@ def knot_vector(kind: str | Sequence[Number], n: int, p: int) -> tuple[Number, .
         raise ValueError(
             f"degree must satisfy 1 <= p <= n = {n} (n + 1 = {n + 1} control points), got p = {p}"
         )
+    if p > MAX_DEGREE:
+        raise ValueError(f"degree p = {p} is too high (at most {MAX_DEGREE})")
     m = n + p + 1
     if kind == "open":
         inner = n - p + 1
@@ -1269,10 +1385,15 @@ def bspline_solution(
     """
     pts, n, u, kind = _bspline_setup(points, degree, knots)
     samples = bspline_samples(u, degree, n) if samples is None else check_samples(samples)
+    check_weights(samples, n + 1)
+    if not basis_only:
+        check_path([pts], samples)
     t0, t1 = _domain(u, degree, n)
 
     def steps() -> Iterator[Step]:
         return bspline(pts, degree, u, samples)
+
+    _check_row(steps(), "B-spline")
 
     derived = [
         *_bspline_derived(pts, degree, u, kind),
@@ -1353,6 +1474,7 @@ def bspline_at_solution(
     levels = basis_levels(u, degree, n, t)
     w = levels[degree][: n + 1]
     point = _combine(w, pts)
+    check_exact((*w, *point), "the B-spline at this t")
     pixel = curve_pixel(*point)
     s = span(u, n, t)
     ts = _v(t)
@@ -1500,6 +1622,10 @@ def continuity_solution(
     a_pts = check_points(first, 2, "the first segment")
     b_pts = check_points(second, 2, "the second segment")
     check_samples(samples)
+    check_weights(samples, len(a_pts) + len(b_pts))
+    check_path([a_pts, b_pts], samples)
+    _check_row(bezier(a_pts, samples), "the first segment")
+    _check_row(bezier(b_pts, samples), "the second segment")
     n, m = len(a_pts) - 1, len(b_pts) - 1
     a = end_derivatives(a_pts, True)
     b = end_derivatives(b_pts, False)
@@ -1655,8 +1781,7 @@ def local_control(
     [('0', False, '0', False), ('0.25', True, '1', False), ('0.5', True, '2', False), ('0.75', True, '3', False), ('1', True, '4', True)]
     """
     pts = check_points(points, 2, "the control polygon")
-    if not 0 <= index < len(pts):
-        raise ValueError(f"--move index must be 0 .. {len(pts) - 1}, got {index}")
+    _check_index(index, len(pts))
     after = list(pts)
     after[index] = _exact_point(moved)
     # local_control(6 points, move P5, p=2 open) -> Bezier moves for t > 0 ;
@@ -1684,6 +1809,11 @@ def local_control(
                 before_s.extra[-2:] != after_s.extra[-2:],
             ),
         )
+
+
+def _check_index(index: int, count: int) -> None:
+    if not 0 <= index < count:
+        raise ValueError(f"--move index must be 0 .. {count - 1}, got {index}")
 
 
 def _moved_quantity(key: str, moved: int, total: int, removed: int, added: int) -> Quantity:
@@ -1714,6 +1844,13 @@ def local_control_solution(
     """
     pts, n, u, _ = _bspline_setup(points, degree, knots)
     check_samples(samples)
+    check_weights(samples, len(pts))
+    _check_index(index, len(pts))
+    moved_pts = [*pts[:index], _exact_point(moved), *pts[index + 1 :]]
+    check_path([pts, moved_pts], samples)
+    for polygon in (pts, moved_pts):
+        _check_row(bezier(polygon, samples), "Bezier curve")
+        _check_row(bspline(polygon, degree, u, samples), "B-spline")
     z_moved = s_moved = 0
     for s in local_control(pts, index, moved, degree, u, samples):  # also validates index
         z_moved += s.extra[3]

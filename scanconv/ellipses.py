@@ -118,6 +118,12 @@ def midpoint_ellipse(rx: int, ry: int) -> Iterator[Step]:
         k += 1
 
 
+MAX_AXIS = 10**6
+"""Largest semi-axis of :func:`ellipse_solution`: its working (where region 2 starts, p2_0)
+needs the end of region 1 before the first line is printed, and finding it runs region 1
+(about rx²/sqrt(rx² + ry²) steps: well under a second at 10**6, hours at 10**9)."""
+
+
 def region1_end(rx: int, ry: int) -> Pixel:
     """The last point of region 1 (where region 2 starts), without building any steps.
 
@@ -216,6 +222,11 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
     irx = check_integer(rx, "rx", negative=False)
     iry = check_integer(ry, "ry", negative=False)
     ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
+    if max(irx, iry) > MAX_AXIS:
+        raise ValueError(
+            f"semi-axes of the midpoint ellipse must be at most {MAX_AXIS:.0e} "
+            f"(got rx = {irx}, ry = {iry}): the working needs the end of region 1 first"
+        )
     rx2, ry2 = irx * irx, iry * iry
     x0, y0 = region1_end(irx, iry)
     p1 = _quarter(4 * ry2 - 4 * rx2 * iry + rx2)

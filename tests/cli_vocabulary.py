@@ -1,0 +1,352 @@
+"""Every command of the CLI, enumerated from the typer app, with a vocabulary for each.
+
+``tests/test_bad_input.py``, ``tests/test_fuzz.py`` and ``tests/test_files.py`` walk
+:func:`commands`, so a new command is covered as soon as it is registered, and they fail until
+it has an entry in :data:`VOCABULARY`: a quick valid invocation, which of its values are
+numbers, and its own ways of being out of range, too short, too long or of the wrong type.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from enum import Enum
+from pathlib import Path
+from typing import Any
+
+import typer
+
+from scanconv.cli import app
+
+Argv = tuple[str, ...]
+
+
+def _walk(command: Any, path: tuple[str, ...]) -> Iterator[tuple[tuple[str, ...], Any]]:
+    subcommands = getattr(command, "commands", None)
+    if subcommands:
+        for name, sub in sorted(subcommands.items()):
+            yield from _walk(sub, (*path, name))
+        return
+    yield path, command
+
+
+def commands() -> list[tuple[tuple[str, ...], Any]]:
+    """``(path, click command)`` for every leaf command: ``("line",)``, ``("image", "ramp")``."""
+    return list(_walk(typer.main.get_command(app), ()))
+
+
+def annotation(param: Any) -> Any:
+    return param.type_descriptor.annotation
+
+
+def choices(param: Any) -> tuple[str, ...]:
+    """The values an option accepts, if it is a choice (an Enum), else ``()``."""
+    ann = annotation(param)
+    if isinstance(ann, type) and issubclass(ann, Enum):
+        return tuple(m.value for m in ann)
+    return ()
+
+
+def options(command: Any) -> list[Any]:
+    """The command's options (not its positional arguments), ``--help`` excluded."""
+    return [p for p in command.params if getattr(p, "opts", None) and p.opts[0].startswith("-")]
+
+
+def file_options(command: Any) -> list[str]:
+    """The options that name a file to write: ``--output``, ``--svg``, ``--png``."""
+    return [p.opts[0] for p in options(command) if annotation(p) is Path]
+
+
+@dataclass(frozen=True)
+class Vocab:
+    """What a command accepts, for building good and bad argument vectors."""
+
+    valid: tuple[Argv, ...]
+    """Quick valid invocations (after the command path), each finishing in well under a second."""
+    numbers: tuple[tuple[int, ...], ...]
+    """For each valid invocation, the indexes of its values that are numbers (or formulas)."""
+    out_of_range: tuple[tuple[Argv, str], ...]
+    """Invocations just beyond a limit, with a word the message must contain."""
+    too_few: tuple[Argv, str]
+    too_many: tuple[Argv, str]
+    wrong_type: tuple[Argv, str]
+    """A value of the right kind but the wrong type (a fraction where an integer is needed)."""
+    small: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    """Plausible values per option for the fuzz test, kept small so that a valid run is quick."""
+    positional: tuple[str, ...] = ()
+    """Plausible positional values for the fuzz test (repeated as the command needs)."""
+
+
+COORD = ("0", "1", "2", "-3", "7", "10", "1/2", "2.5", "-0.25")
+SMALL_INT = ("1", "2", "3", "4", "8")
+POINTS = ("0", "0", "1", "2", "3", "3", "4", "0", "5", "2")
+TOO_MANY_POINTS = tuple(str(i % 7) for i in range(202))  # 101 points, one beyond MAX_POINTS
+
+VOCABULARY: dict[tuple[str, ...], Vocab] = {
+    ("line",): Vocab(
+        valid=(("2", "2", "10", "6"),),
+        numbers=((0, 1, 2, 3),),
+        out_of_range=((("0", "0", "1e10", "1"), "out of range"),),
+        too_few=(("1", "2", "3"), "Missing argument"),
+        too_many=(("1", "2", "3", "4", "5"), "unexpected extra argument"),
+        wrong_type=(("2.5", "2", "3", "4", "--algo", "bresenham"), "integer end points"),
+        small={"--algo": ("bresenham", "dda", "basic")},
+        positional=COORD,
+    ),
+    ("storage",): Vocab(
+        valid=(("1024", "768", "--levels", "256"), ("640", "480", "--bits", "8", "--frames", "2")),
+        numbers=((0, 1, 3), (0, 1, 3, 5)),
+        out_of_range=(
+            (("8", "8", "--levels", "16777217"), "at most 24 bits"),
+            (("8", "8", "--bits", "25"), "at most 24"),
+            (("8", "8", "--bits", "8", "--frames", "1e10"), "out of range"),
+            (("1e10", "8", "--bits", "8"), "out of range"),
+        ),
+        too_few=(("1024",), "Missing argument"),
+        too_many=(("1", "2", "3", "--bits", "8"), "unexpected extra argument"),
+        wrong_type=(("2.5", "8", "--bits", "8"), "must be an integer"),
+        small={
+            "--levels": ("2", "3", "256"),
+            "--bits": SMALL_INT,
+            "--frames": ("1", "30"),
+            "--color": ("rgb24",),
+        },
+        positional=("1", "8", "640", "1024", "0"),
+    ),
+    ("quantize",): Vocab(
+        valid=(("--bits", "3", "--range", "0", "255"),),
+        numbers=((1, 3, 4),),
+        out_of_range=((("--bits", "25"), "at most 24"),),
+        too_few=(("--bits", "3", "--range", "0"), "requires 2 arguments"),
+        too_many=(("--bits", "3", "7"), "unexpected extra argument"),
+        wrong_type=(("--bits", "2.5"), "must be an integer"),
+        small={"--bits": SMALL_INT, "--range": ("0", "1", "255", "-1")},
+    ),
+    ("sample",): Vocab(
+        valid=(("x + y", "--size", "4x4", "--levels", "4"),),
+        numbers=((0, 2, 4),),
+        out_of_range=(
+            (("x", "--size", "4097x4096", "--levels", "4"), "too large"),
+            (("x", "--size", "4", "--levels", "16777217"), "at most 24 bits"),
+        ),
+        too_few=(("x + y", "--size", "4x4"), "Missing option"),
+        too_many=(("x", "y", "--size", "4", "--levels", "4"), "unexpected extra argument"),
+        wrong_type=(("x", "--size", "2.5x4", "--levels", "4"), "size must be"),
+        small={
+            "--size": ("1", "3x5", "8", "2x2"),
+            "--levels": ("2", "4", "8"),
+            "--domain": ("0", "1", "-1", "pi"),
+            "--range": ("0", "1", "10"),
+        },
+        positional=("x + y", "sin(x)*cos(y)", "x*y/4", "log(x)", "1/x", "x**2"),
+    ),
+    ("image", "ramp"): Vocab(
+        valid=(("--size", "4", "--levels", "4"),),
+        numbers=((1, 3),),
+        out_of_range=((("--size", "4097x4096"), "too large"),),
+        too_few=(("--size",), "requires an argument"),
+        too_many=(("--size", "4", "9"), "unexpected extra argument"),
+        wrong_type=(("--levels", "2.5"), "must be an integer"),
+        small={"--size": ("1", "3x5", "8"), "--levels": ("2", "4", "8")},
+    ),
+    ("compare", "line"): Vocab(
+        valid=(("2", "8", "10", "4"),),
+        numbers=((0, 1, 2, 3),),
+        out_of_range=((("0", "0", "1e10", "1"), "out of range"),),
+        too_few=(("1", "2", "3"), "Missing argument"),
+        too_many=(("1", "2", "3", "4", "5"), "unexpected extra argument"),
+        wrong_type=(("2", "8", "10", "4", "--explain=yes"), "does not take a value"),
+        positional=COORD,
+    ),
+    ("compare", "circle"): Vocab(
+        valid=(("5",),),
+        numbers=((0,),),
+        out_of_range=((("1e10",), "out of range"),),
+        too_few=((), "Missing argument"),
+        too_many=(("5", "6"), "unexpected extra argument"),
+        wrong_type=(("2.5",), "integer"),
+        positional=("0", "1", "4", "10", "2.5"),
+    ),
+    ("circle",): Vocab(
+        valid=(("5", "--center", "1", "2"),),
+        numbers=((0, 2, 3),),
+        out_of_range=((("1e10",), "out of range"),),
+        too_few=(("5", "--center", "1"), "requires 2 arguments"),
+        too_many=(("5", "6"), "unexpected extra argument"),
+        wrong_type=(("2.5",), "integer"),
+        small={
+            "--center": ("0", "1", "-2"),
+            "--method": ("midpoint", "bresenham", "polynomial", "general", "trig"),
+            "--rounding": ("half-up", "trunc"),
+        },
+        positional=("0", "1", "5", "10", "2.5"),
+    ),
+    ("ellipse",): Vocab(
+        valid=(("5", "3"),),
+        numbers=((0, 1),),
+        out_of_range=((("1e10", "3"), "out of range"),),
+        too_few=(("5",), "Missing argument"),
+        too_many=(("5", "3", "1"), "unexpected extra argument"),
+        wrong_type=(("2.5", "3"), "integer"),
+        small={"--center": ("0", "1", "-2")},
+        positional=("0", "1", "3", "8", "2.5"),
+    ),
+    ("parametric", "circle"): Vocab(
+        valid=(
+            (
+                *("--radius", "5", "--samples", "8", "--center", "0", "0"),
+                *("--t-range", "0", "1"),
+            ),
+        ),
+        numbers=((1, 3, 5, 6, 8, 9),),
+        out_of_range=(
+            (("--radius", "1e10"), "out of range"),
+            (("--samples", "100001"), "at most 100000"),
+            (("--radius", "1000000000", "--samples", "4"), "1,000,000"),
+        ),
+        too_few=(("--center", "1"), "requires 2 arguments"),
+        too_many=(("--radius", "5", "7"), "unexpected extra argument"),
+        wrong_type=(("--samples", "2.5"), "not an integer"),
+        small={
+            "--radius": ("1", "5", "1/2"),
+            "--samples": SMALL_INT,
+            "--center": ("0", "1", "-2"),
+            "--t-range": ("0", "1", "pi", "2*pi", "-1"),
+        },
+    ),
+    ("parametric", "ellipse"): Vocab(
+        valid=(("--a", "4", "--b", "2", "--samples", "8"),),
+        numbers=((1, 3, 5),),
+        out_of_range=((("--a", "1e10"), "out of range"),),
+        too_few=(("--center", "1"), "requires 2 arguments"),
+        too_many=(("--a", "4", "7"), "unexpected extra argument"),
+        wrong_type=(("--samples", "2.5"), "not an integer"),
+        small={
+            "--a": ("1", "4"),
+            "--b": ("1", "2"),
+            "--samples": SMALL_INT,
+            "--center": ("0", "1"),
+            "--t-range": ("0", "pi"),
+        },
+    ),
+    ("parametric", "parabola"): Vocab(
+        valid=(("--vertex", "0", "0", "--a", "1", "--samples", "8"),),
+        numbers=((1, 2, 4, 6),),
+        out_of_range=((("--a", "1e10"), "out of range"),),
+        too_few=(("--vertex", "1"), "requires 2 arguments"),
+        too_many=(("--a", "1", "7"), "unexpected extra argument"),
+        wrong_type=(("--samples", "2.5"), "not an integer"),
+        small={
+            "--vertex": ("0", "1", "-2"),
+            "--a": ("1", "-1", "1/2"),
+            "--samples": SMALL_INT,
+            "--t-range": ("-3", "3", "0", "1"),
+        },
+    ),
+    ("parametric", "line"): Vocab(
+        valid=(("0", "0", "4", "2", "--samples", "4"),),
+        numbers=((0, 1, 2, 3, 5),),
+        out_of_range=(
+            (("0", "0", "1e10", "1"), "out of range"),
+            (("0", "0", "1000000000", "1", "--samples", "2"), "1,000,000"),
+        ),
+        too_few=(("0", "0", "4"), "Missing argument"),
+        too_many=(("0", "0", "4", "2", "9"), "unexpected extra argument"),
+        wrong_type=(("0", "0", "4", "2", "--samples", "2.5"), "not an integer"),
+        small={"--samples": SMALL_INT, "--t-range": ("0", "1", "1/2")},
+        positional=COORD,
+    ),
+    ("parametric", "custom"): Vocab(
+        valid=(("--x", "t", "--y", "t*t", "--samples", "4"),),
+        numbers=((1, 3, 5),),
+        out_of_range=(
+            (("--x", "9**9**9", "--y", "t"), "exponent"),
+            (("--x", "t", "--y", "t", "--samples", "100001"), "at most 100000"),
+            (("--x", "1e10 + t", "--y", "t"), "out of range"),
+        ),
+        too_few=(("--x", "t"), "Missing option"),
+        too_many=(("--x", "t", "--y", "t", "t"), "unexpected extra argument"),
+        wrong_type=(("--x", "'t'", "--y", "t"), "strings are not allowed"),
+        small={
+            "--x": ("t", "3*cos(t)", "t**2", "sqrt(t)", "1/t"),
+            "--y": ("t", "2*sin(t)", "-t", "log(t)"),
+            "--samples": SMALL_INT,
+            "--t-range": ("0", "1", "2*pi", "-1"),
+        },
+    ),
+    ("bezier",): Vocab(
+        valid=((*POINTS[:8], "--samples", "4"), (*POINTS[:8], "--at", "1/2")),
+        numbers=((0, 1, 2, 3, 4, 5, 6, 7, 9), (0, 1, 2, 3, 4, 5, 6, 7, 9)),
+        out_of_range=(
+            (("0", "0", "1e10", "1"), "out of range"),
+            (("0", "0", "1", "1", "--samples", "100001"), "at most 100000"),
+            (("0", "0", "1", "1", "--at", "1.5"), "[0, 1]"),
+            (("0", "0", "1000000000", "1"), "1,000,000"),
+            (("0", "0", "1", "1", "--samples", "50000"), "at most 100,000"),
+        ),
+        too_few=(("0", "0"), "at least 2 control points"),
+        too_many=(TOO_MANY_POINTS, "at most 100 control points"),
+        wrong_type=(("0", "0", "1", "1", "--samples", "2.5"), "not an integer"),
+        small={"--samples": SMALL_INT, "--at": ("0", "1/2", "1", "0.25")},
+        positional=COORD,
+    ),
+    ("bspline",): Vocab(
+        valid=(
+            (*POINTS, "--degree", "2", "--samples", "4"),
+            (*POINTS[:6], "--degree", "2", "--at", "1/2"),
+        ),
+        numbers=((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 11, 13), (0, 1, 2, 3, 4, 5, 7, 9)),
+        out_of_range=(
+            (("0", "0", "1e10", "1"), "out of range"),
+            ((*POINTS, "--degree", "5"), "1 <= p <= n"),
+            ((*TOO_MANY_POINTS[:24], "--degree", "11"), "at most 10"),
+            (("0", "0", "1", "1", "--degree", "1", "--samples", "50000"), "at most 100,000"),
+        ),
+        too_few=(("0", "0"), "at least 2 control points"),
+        too_many=(TOO_MANY_POINTS, "at most 100 control points"),
+        wrong_type=((*POINTS, "--degree", "1.5"), "not an integer"),
+        small={
+            "--degree": ("1", "2", "3"),
+            "--knots": ("open", "uniform", "0,0,0,1,2,3,3,3", "0,1"),
+            "--samples": SMALL_INT,
+            "--at": ("0", "1", "1/2", "3"),
+        },
+        positional=COORD,
+    ),
+    ("continuity",): Vocab(
+        valid=(
+            ("0", "0", "1", "1", "2", "0", ":", "2", "0", "3", "-1", "4", "0", "--samples", "4"),
+        ),
+        numbers=((0, 1, 2, 3, 4, 5, 7, 8, 9, 10, 11, 12, 14),),
+        out_of_range=(
+            (("0", "0", "1e10", "1", ":", "1", "1", "2", "2"), "out of range"),
+            (
+                ("0", "0", "1", "1", ":", "1", "1", "2", "2", "--samples", "50000"),
+                "at most 100,000",
+            ),
+        ),
+        too_few=(("0", "0", "1", "1", ":", "1", "1"), "at least 2 control points"),
+        too_many=(("0", "0", "1", "1", ":", "1", "1", "2", "2", ":", "3", "3"), "separated by ':'"),
+        wrong_type=(("0", "0", "1", "1", ":", "1", "1", "2", "2", "-n", "0.5"), "not an integer"),
+        small={"--samples": SMALL_INT},
+        positional=(*COORD, ":"),
+    ),
+    ("local-control",): Vocab(
+        valid=((*POINTS, "--move", "2", "3", "4", "--degree", "2", "--samples", "4"),),
+        numbers=((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 11, 12, 13, 15, 17),),
+        out_of_range=(
+            ((*POINTS, "--move", "9", "1", "1"), "index"),
+            ((*POINTS, "--move", "1", "1e10", "1"), "out of range"),
+        ),
+        too_few=((*POINTS, "--move", "1", "2"), "requires 3 arguments"),
+        too_many=((*TOO_MANY_POINTS, "--move", "1", "1", "1"), "at most 100 control points"),
+        wrong_type=((*POINTS, "--move", "1.5", "1", "1"), "must be an integer"),
+        small={
+            "--move": ("0", "1", "2", "3", "-1"),
+            "--degree": ("1", "2", "3"),
+            "--samples": SMALL_INT,
+            "--knots": ("open", "uniform"),
+        },
+        positional=COORD,
+    ),
+}

@@ -1,0 +1,82 @@
+"""CI fails when any check fails: lint, format, types, tests or coverage under 90 %.
+
+``tests/test_docs.py`` checks that ``.ci/run`` runs the README's test command verbatim. Here the
+command itself is run with stand-ins for ruff, mypy and pytest that succeed or fail on demand,
+so the test shows that each failure reaches the exit status of ``.ci/run``.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+README = (ROOT / "README.md").read_text(encoding="utf-8")
+CI = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+TEST_COMMAND = re.findall(r"```sh\n(.*?)\n```", README, flags=re.S)[1].split(
+    "pip install -e '.[test]' && ", 1
+)[1]
+
+STUB = """#!/usr/bin/env bash
+echo "$(basename "$0")${*:+ $*}" >> "$STUB_LOG"
+key="$(basename "$0")${1:+ $1}"
+[ "$key" = "$STUB_FAIL" ] && exit 1
+exit 0
+"""
+
+
+def test_the_test_command_is_the_last_line_of_ci():
+    """Its status is the script's: nothing runs after it (and set -e / pipefail are on)."""
+    lines = [ln for ln in CI.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+    assert lines[-1] == TEST_COMMAND
+    assert "set -euo pipefail" in CI
+
+
+def test_the_command_checks_lint_format_types_and_coverage():
+    steps = [s.strip() for s in TEST_COMMAND.split("&&")]
+    assert steps == [
+        "ruff check .",
+        "ruff format --check .",
+        "mypy",
+        "pytest --cov --cov-fail-under=90",
+    ]
+    pyproject = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
+    assert re.search(r'\[tool\.coverage\.run\]\nsource = \["scanconv"\]', pyproject)
+    assert re.search(r'\[tool\.mypy\][^\[]*files = \["scanconv"\]', pyproject)
+
+
+@pytest.mark.parametrize(
+    "failing", [None, "ruff check", "ruff format", "mypy", "pytest --cov"], ids=str
+)
+def test_any_failing_check_fails_the_run(failing, tmp_path):
+    for tool in ("ruff", "mypy", "pytest"):
+        stub = tmp_path / tool
+        stub.write_text(STUB)
+        stub.chmod(0o755)
+    log = tmp_path / "log"
+    proc = subprocess.run(
+        ["bash", "-c", f"set -euo pipefail\n{TEST_COMMAND}\n"],
+        env={
+            "PATH": f"{tmp_path}:/usr/bin:/bin",
+            "STUB_LOG": str(log),
+            "STUB_FAIL": failing or "",
+        },
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    ran = log.read_text().splitlines()
+    if failing is None:
+        assert proc.returncode == 0
+        assert ran == [
+            "ruff check .",
+            "ruff format --check .",
+            "mypy",
+            "pytest --cov --cov-fail-under=90",
+        ]
+    else:
+        assert proc.returncode != 0, ran
+        assert ran[-1].startswith(failing)  # it stopped at the failing check

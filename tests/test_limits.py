@@ -1,0 +1,301 @@
+"""docs/limits.md agrees with the code, and every limit is enforced at once and at its edge.
+
+For each documented limit: the number in the table is the constant in the code; an input just
+beyond it is refused with exit 2 and one line naming the limit, within a second, with little
+memory and without reaching numpy's array constructors; an input exactly at it is accepted.
+Every limit-like constant in ``scanconv/`` must be in the table. Finally every command, given
+its largest accepted input, starts answering (or refuses) within seconds and within 2 GiB.
+"""
+
+from __future__ import annotations
+
+import importlib
+import os
+import pkgutil
+import re
+import resource
+import select
+import subprocess
+import sys
+import time
+import tracemalloc
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import scanconv
+from scanconv.expr import parse_exact
+
+from .helpers import run
+
+ROOT = Path(__file__).resolve().parent.parent
+DOC = (ROOT / "docs" / "limits.md").read_text(encoding="utf-8")
+ROW = re.compile(r"^\| [^|]+ \| `([^`]+)` \| `(\w+)\.(\w+)` \|", re.M)
+DOCUMENTED = {f"{m}.{n}": value for value, m, n in ROW.findall(DOC)}
+
+#: Constants whose names look like limits but bound no input.
+NOT_INPUT_LIMITS = {"raster._INT64_MAX"}
+
+POINTS_101 = [str(i % 7) for i in range(202)]
+POINTS_12 = [str(i % 5) for i in range(24)]
+
+#: For each limit: command lines just beyond it, with a word the one-line refusal must contain.
+BEYOND: dict[str, list[tuple[list[str], str]]] = {
+    "numeric.COORD_LIMIT": [
+        (["line", "0", "0", "1000000001", "0"], "1e+09"),
+        (["circle", "1000000001"], "1e+09"),
+        (["ellipse", "5", "1000000001"], "1e+09"),
+        (["storage", "1000000001", "8", "--bits", "8"], "1e+09"),
+        (["bezier", "0", "0", "1000000001", "0"], "1e+09"),
+        (["parametric", "circle", "--radius", "1000000001"], "1e+09"),
+        (["storage", "8", "8", "--bits", "8", "--frames", "1000000001"], "1e+09"),
+        (["bspline", "0", "0", "1", "1", "--degree", "1", "--knots", "0,0,1000000001,1"], "1e+09"),
+    ],
+    "numeric._MAX_LITERAL": [(["line", "0" * 40 + "1", "0", "1", "1"], "longer than 40")],
+    "expr.MAX_LENGTH": [
+        (["parametric", "custom", "--x", "t" + "+0" * 250, "--y", "t"], "at most 500"),
+        (["sample", "x" + "+0" * 250, "--size", "4", "--levels", "4"], "at most 500"),
+    ],
+    "expr.MAX_BRACKETS": [
+        (["parametric", "custom", "--x", "(" * 51 + "t" + ")" * 51, "--y", "t"], "at most 50"),
+    ],
+    "expr.MAX_DEPTH": [(["parametric", "custom", "--x", "-" * 199 + "t", "--y", "t"], "200")],
+    "expr.MAX_EXPONENT": [
+        (["parametric", "custom", "--x", "t**101", "--y", "t"], "<= 100"),
+        (["sample", "x**-101", "--size", "4", "--levels", "4"], "<= 100"),
+    ],
+    "expr.MAX_BITS": [
+        (["parametric", "custom", "--x", "t**41", "--y", "t", "--t-range", "0", "2**100"], "4096"),
+    ],
+    "image.MAX_BITS": [
+        (["quantize", "--bits", "25"], "at most 24"),
+        (["storage", "8", "8", "--bits", "25"], "at most 24"),
+    ],
+    "image.MAX_LEVELS": [
+        (["storage", "8", "8", "--levels", "16777217"], "16,777,216"),
+        (["sample", "x", "--size", "4", "--levels", "16777217"], "16,777,216"),
+        (["image", "ramp", "--levels", "16777217"], "16,777,216"),
+    ],
+    "image.MAX_SIDE": [(["sample", "x", "--size", "4097x4096", "--levels", "4"], "4096 x 4096")],
+    "image.MAX_CELLS": [
+        (["sample", "x", "--size", "1x16777217", "--levels", "4"], "16,777,216 cells"),
+        (["image", "ramp", "--size", "16777217x1"], "16,777,216 cells"),
+    ],
+    "curves.MAX_SAMPLES": [
+        (["parametric", "circle", "--samples", "100001"], "at most 100000"),
+        (["parametric", "custom", "--x", "t", "--y", "t", "-n", "100001"], "at most 100000"),
+    ],
+    "curves.MAX_POINTS": [
+        (["bezier", *POINTS_101], "at most 100 control points"),
+        (["bspline", *POINTS_101], "at most 100 control points"),
+        (["local-control", *POINTS_101, "--move", "0", "1", "1"], "at most 100 control points"),
+        (["continuity", *POINTS_101, ":", "0", "0", "1", "1"], "at most 100 control points"),
+    ],
+    "curves.MAX_DEGREE": [
+        (["bspline", *POINTS_12, "--degree", "11"], "at most 10"),
+        (["local-control", *POINTS_12, "--move", "0", "1", "1", "--degree", "11"], "at most 10"),
+    ],
+    "curves.MAX_WEIGHTS": [
+        (["bezier", "0", "0", "1", "1", "--samples", "50000"], "at most 100,000"),
+        (["bspline", "0", "0", "1", "1", "--degree", "1", "-n", "50000"], "at most 100,000"),
+        (["continuity", "0", "0", "1", "1", ":", "1", "1", "2", "2", "-n", "25000"], "100,000"),
+    ],
+    "curves.MAX_CURVE_PIXELS": [
+        (["bezier", "0", "0", "999985", "0", "--samples", "16"], "more than 1,000,000"),
+        (["bspline", "0", "0", "999985", "0", "--degree", "1", "-n", "16"], "more than 1,000,000"),
+        (["parametric", "line", "0", "0", "1000001", "0", "-n", "4"], "more than 1,000,000"),
+        (["parametric", "circle", "--radius", "250001", "-n", "4"], "more than 1,000,000"),
+    ],
+    "ellipses.MAX_AXIS": [(["ellipse", "1000001", "5"], "1e+06")],
+    "compare.MAX_LENGTH": [(["compare", "line", "0", "0", "3", "10001"], "at most 10000")],
+    "compare.MAX_RADIUS": [(["compare", "circle", "2001"], "at most 2000")],
+    "circles.SDDA_MAX_RADIUS": [(["circle", "16384", "--method", "symmetric-dda"], "16383")],
+    "figure.MAX_CELLS": [(["line", "0", "0", "198", "0", "--svg", "FIGURE"], "201 x 3")],
+}
+
+#: A limit that is not a refusal: the grid is left out with a note, and the answer is complete.
+NOTED = {"grid.MAX_CELLS": (["line", "0", "0", "98", "0", "-f", "plain"], "101 x 3 cells")}
+
+ALLOCATORS = ("empty", "zeros", "ones", "full", "arange", "linspace", "meshgrid", "indices")
+
+
+def _constant(name: str) -> int:
+    module, attr = name.split(".")
+    return getattr(importlib.import_module(f"scanconv.{module}"), attr)
+
+
+def _limit_constants() -> set[str]:
+    """Every module-level int named like a limit (MAX_..., ..._MAX_..., ...LIMIT), defined in
+    its own module (not imported under another name)."""
+    found = set()
+    for info in pkgutil.walk_packages(scanconv.__path__, "scanconv."):
+        if info.name == "scanconv.__main__":  # importing it runs the CLI
+            continue
+        module = importlib.import_module(info.name)
+        source = Path(module.__file__ or "").read_text(encoding="utf-8")
+        short = info.name.removeprefix("scanconv.")
+        for name, value in vars(module).items():
+            if not isinstance(value, int) or isinstance(value, bool):
+                continue
+            if not re.search(r"(^|_)MAX(_|$)|LIMIT", name):
+                continue
+            if re.search(rf"^{name}\s*(:[^=]*)?=", source, re.M):
+                found.add(f"{short}.{name}")
+    return found - NOT_INPUT_LIMITS
+
+
+def test_the_table_lists_every_limit_constant_in_the_code():
+    missing = sorted(_limit_constants() - set(DOCUMENTED))
+    assert not missing, f"document these limits in docs/limits.md: {missing}"
+    assert len(DOCUMENTED) >= 19
+
+
+@pytest.mark.parametrize("name", sorted(DOCUMENTED))
+def test_the_documented_value_is_the_constant(name):
+    documented = parse_exact(DOCUMENTED[name])  # the doc's value, a Python expression
+    assert isinstance(documented, Fraction)
+    assert documented == _constant(name), f"docs/limits.md says {DOCUMENTED[name]} for {name}"
+
+
+def test_every_documented_limit_has_a_refusal_case():
+    assert set(BEYOND) | set(NOTED) == set(DOCUMENTED)
+
+
+def _warm_up(args: list[str]) -> None:
+    """Import what the command imports, so the timed run measures the refusal alone."""
+    run(*args[: 2 if args[0] in ("parametric", "image") else 1], "--help")
+
+
+CASES = [
+    pytest.param(name, args, word, id=f"{name}: {' '.join(args)[:50]}")
+    for name, cases in BEYOND.items()
+    for args, word in cases
+]
+
+
+@pytest.mark.parametrize(("name", "args", "word"), CASES)
+def test_just_beyond_the_limit_is_refused_at_once(name, args, word, monkeypatch, tmp_path):
+    args = [str(tmp_path / "f.svg") if a == "FIGURE" else a for a in args]
+    _warm_up(args)
+
+    def allocation_reached(*a, **k):
+        raise AssertionError("numpy allocated before the input was refused")
+
+    # A parametric curve's pixel path is known only from its samples: evaluating them (in
+    # chunks of 4096) is the work that finds it; the pixels and the figure are never reached.
+    if not (name == "curves.MAX_CURVE_PIXELS" and args[0] == "parametric"):
+        for fn in ALLOCATORS:
+            monkeypatch.setattr(np, fn, allocation_reached)
+    tracemalloc.start()
+    start = time.perf_counter()
+    try:
+        r = run(*args)
+        elapsed = time.perf_counter() - start
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert r.code == 2, (r.code, r.err)
+    assert r.out == ""
+    assert r.err.startswith("scanconv: error: ") and r.err.count("\n") == 1, r.err
+    assert word in r.err, r.err
+    assert elapsed < 1.0, f"refused after {elapsed:.2f} s"
+    assert peak < 16 * 2**20, f"{peak / 2**20:.1f} MiB allocated before the refusal"
+    assert not list(tmp_path.iterdir()), "a file was written for a refused input"
+
+
+def test_the_grid_limit_leaves_the_grid_out_with_a_note():
+    args, word = NOTED["grid.MAX_CELLS"]
+    r = run(*args)
+    assert r.code == 0 and word in r.err and r.err.count("\n") == 1
+    assert "(98, 0)" in r.out and " | " not in r.out
+    at_limit = run("line", "0", "0", "97", "0", "-f", "plain")
+    assert at_limit.code == 0 and at_limit.err == "" and " | " in at_limit.out
+
+
+def test_exactly_at_each_limit_is_accepted():
+    """The other side of each edge: the largest accepted value passes its check."""
+    from scanconv import curves, expr, figure, image, numeric
+    from scanconv.circles import circle_solution
+    from scanconv.lines import line_solution
+
+    assert numeric.parse_number(str(numeric.COORD_LIMIT)) == 10**9
+    assert numeric.parse_number("-" + str(numeric.COORD_LIMIT)) == -(10**9)
+    assert numeric.parse_number("0" * 39 + "1") == 1
+    assert expr.compile_expr("-" * (expr.MAX_DEPTH - 2) + "t", ("t",))(t=1.0) == 1.0
+    assert expr.compile_expr("t**100", ("t",))(t=1.0) == 1.0
+    assert expr.compile_expr("t**40", ("t",)).exact(t=2**100) == 2**4000
+    with pytest.raises(ValueError, match="4096 bits"):
+        expr.compile_expr("t**41", ("t",)).exact(t=2**100)
+    assert image.check_bits(24) == 24 and image.check_levels(2**24) == 2**24
+    image.check_cells(4096, 4096)
+    image.check_cells(1, 4096 * 4096)
+    assert curves.check_samples(10**5) == 10**5
+    assert len(curves.check_points([(i, 0) for i in range(100)], 2, "a curve")) == 100
+    assert len(curves.knot_vector("open", 10, 10)) == 22
+    curves.check_weights(49_999, 2)  # 50,000 x 2 = 100,000
+    curves.check_path([[(0, 0), (999_984, 0)]], 16)  # 999,984 + 16 = 1,000,000
+    # de Casteljau with 2 points at t = 1/2^4094: 4095 + 1 bits, exactly the limit
+    sol = curves.bezier_at_solution([(0, 0), (1, 1)], Fraction(1, 2**4094))
+    assert sol.derived[-1].value == (Fraction(1, 2**4094), Fraction(1, 2**4094))
+    with pytest.raises(ValueError, match="4096 bits"):
+        curves.bezier_at_solution([(0, 0), (1, 1)], Fraction(1, 2**4095))
+    assert circle_solution("symmetric-dda", 2**14 - 1).title
+    figure.build(line_solution("bresenham", 0, 0, 197, 0))  # 200 x 3 cells
+
+
+# --- every command at its largest accepted input ---------------------------------------------
+
+MAX_COORD = "1000000000"
+POINTS_100 = [str((i * 7919) % 1000 if i % 2 else (i * 104729) % 997) for i in range(200)]
+
+#: The largest inputs each command accepts. Each must start answering, or refuse, quickly.
+LARGEST = [
+    ["line", "0", "0", MAX_COORD, "1", "-f", "csv"],
+    ["line", "0", "0", MAX_COORD, MAX_COORD, "-f", "markdown", "--algo", "dda"],
+    ["circle", MAX_COORD, "-f", "markdown"],
+    ["circle", MAX_COORD, "--method", "trig", "-f", "csv"],
+    ["ellipse", "1000000", "1000000", "-f", "markdown"],
+    ["ellipse", "1000000", "1", "-f", "csv"],
+    ["ellipse", MAX_COORD, "1", "-f", "csv"],
+    ["compare", "line", "0", "0", "10000", "1", "-f", "csv"],
+    ["compare", "line", "0", "0", MAX_COORD, "1", "-f", "csv"],
+    ["compare", "circle", "2000", "-f", "csv"],
+    ["compare", "circle", MAX_COORD, "-f", "csv"],
+    ["quantize", "--bits", "24", "--range", "0", "1", "--input", "real", "-f", "csv"],
+    ["storage", MAX_COORD, MAX_COORD, "--bits", "24", "--frames", MAX_COORD, "-f", "json"],
+    ["bezier", *POINTS_100, "--samples", "999", "-f", "markdown"],
+    ["bspline", *POINTS_100, "--degree", "10", "--samples", "999", "-f", "csv"],
+    ["continuity", *POINTS_100[:100], ":", *POINTS_100[100:], "-n", "999", "-f", "json"],
+    ["parametric", "circle", "--radius", MAX_COORD, "-n", "100000", "-f", "csv"],
+    ["parametric", "custom", "--x", "t", "--y", "t", "-n", "100000", "-f", "csv"],
+]
+
+
+def _limit_memory() -> None:  # pragma: no cover - runs in the child
+    resource.setrlimit(resource.RLIMIT_AS, (2 * 2**30, 2 * 2**30))
+
+
+@pytest.mark.parametrize("args", LARGEST, ids=lambda a: " ".join(a)[:60])
+def test_the_largest_accepted_input_answers_at_once_in_bounded_memory(args):
+    """A refusal within 10 s, or the first output within 10 s, within 2 GiB; no traceback."""
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "scanconv", *args],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        preexec_fn=_limit_memory,
+        env={**os.environ, "PYTHONDONTWRITEBYTECODE": "1"},
+    )
+    assert proc.stdout is not None
+    ready, _, _ = select.select([proc.stdout], [], [], 10)
+    first = os.read(proc.stdout.fileno(), 65536) if ready else b""
+    if proc.poll() is None:
+        proc.kill()
+    _out, err = proc.communicate(timeout=60)
+    stderr = err.decode("utf-8", "replace")
+    assert "Traceback" not in stderr and "MemoryError" not in stderr, stderr[-2000:]
+    if proc.returncode == 2:
+        assert first == b"" and stderr.count("\n") == 1, stderr
+        return
+    assert first, f"no output within 10 s (exit {proc.returncode}): {stderr[-500:]}"

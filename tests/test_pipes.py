@@ -1,0 +1,47 @@
+"""``scanconv ... | head -1``: the reader leaves early; scanconv stops quietly with status 0.
+
+``tests/test_cli.py`` covers the CSV line; this covers the other streamed formats and a curve.
+``set -o pipefail`` makes the shell's status scanconv's own, so a non-zero exit shows.
+"""
+
+from __future__ import annotations
+
+import shlex
+import subprocess
+import sys
+
+import pytest
+
+LONG_LINE = ["line", "0", "0", "1000000", "3"]
+PIPES = [
+    pytest.param([*LONG_LINE, "--format", "json"], '{"primitive": "line"', id="line json"),
+    pytest.param([*LONG_LINE, "--format", "markdown"], "## Bresenham", id="line markdown"),
+    pytest.param([*LONG_LINE, "--format", "plain"], "Bresenham", id="line plain"),
+    pytest.param([*LONG_LINE, "--format", "latex"], "% scanconv", id="line latex"),
+    pytest.param([*LONG_LINE, "--format", "rich"], "Bresenham", id="line rich"),
+    pytest.param(
+        ["bezier", "0", "0", "300", "900", "1000", "0", "--samples", "30000", "--format", "csv"],
+        "k,x,y,t,B0,B1,B2,x_t,y_t",
+        id="bezier csv",
+    ),
+    pytest.param(
+        ["parametric", "circle", "--radius", "1000", "-n", "20000", "--format", "markdown"],
+        "## Parametric circle",
+        id="parametric circle markdown",
+    ),
+]
+
+
+@pytest.mark.parametrize(("args", "first"), PIPES)
+def test_head_closes_the_pipe_and_scanconv_exits_quietly(args, first):
+    command = " ".join(shlex.quote(a) for a in (sys.executable, "-m", "scanconv", *args))
+    proc = subprocess.run(
+        ["bash", "-c", f"set -o pipefail; {command} | head -1"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.startswith(first), proc.stdout[:200]
+    assert proc.stdout.count("\n") == 1
+    assert proc.stderr == "", proc.stderr  # no BrokenPipeError, no "Exception ignored"
