@@ -503,7 +503,7 @@ def to_png(fig: Figure, scale: int = 2) -> bytes:
     def font(size: float, bold: bool = False) -> Any:
         name = "DejaVuSans-Bold.ttf" if bold else "DejaVuSans.ttf"
         try:
-            return ImageFont.truetype(name, round(size * k))
+            return ImageFont.truetype(name, round_half_up(size * k))
         except OSError:
             return ImageFont.load_default(size * k)
 
@@ -512,7 +512,7 @@ def to_png(fig: Figure, scale: int = 2) -> bytes:
     for s in fig.shapes:
         paint = PAINT[s.cls]
         at = [v * k for v in s.at]
-        width = max(1, round(paint.width * k))
+        width = max(1, round_half_up(paint.width * k))
         if s.kind == "text":
             anchor = {"start": "ls", "middle": "ms", "end": "rs"}[s.anchor]
             draw.text(
@@ -521,7 +521,7 @@ def to_png(fig: Figure, scale: int = 2) -> bytes:
                 fill=paint.fill,
                 font=font(s.size, s.cls == "title"),
                 anchor=anchor,
-                stroke_width=round(paint.width * k / 2) if paint.stroke else 0,
+                stroke_width=round_half_up(paint.width * k / 2) if paint.stroke else 0,
                 stroke_fill=paint.stroke,
             )
         elif s.kind == "rect":
