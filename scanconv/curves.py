@@ -32,7 +32,16 @@ import numpy as np
 
 from .expr import MAX_BITS, Expr, compile_expr
 from .lines import bresenham
-from .numeric import COORD_LIMIT, Number, fmt, fmt_short, fmt_value, normalize, round_half_up
+from .numeric import (
+    COORD_LIMIT,
+    Number,
+    check_between,
+    fmt,
+    fmt_short,
+    fmt_value,
+    normalize,
+    round_half_up,
+)
 from .records import Column, Pixel, Quantity, Solution, Step, Table
 
 Value = Number | float
@@ -94,11 +103,7 @@ def check_samples(samples: int) -> int:
     ...
     ValueError: samples must be at least 1, got 0
     """
-    if samples < 1:
-        raise ValueError(f"samples must be at least 1, got {samples}")
-    if samples > MAX_SAMPLES:
-        raise ValueError(f"samples must be at most {MAX_SAMPLES}, got {samples}")
-    return samples
+    return check_between(samples, "samples", 1, MAX_SAMPLES)
 
 
 def check_weights(samples: int, points: int) -> None:

@@ -28,7 +28,7 @@ from fractions import Fraction
 from typing import TYPE_CHECKING
 
 from .grid import MAX_CELLS as PICTURE_LIMIT
-from .numeric import Number, as_int, fmt, fmt_short, normalize, round_half_up
+from .numeric import Number, as_int, check_between, fmt, fmt_short, normalize, round_half_up
 from .records import Column, Quantity, Solution, Table
 
 if TYPE_CHECKING:  # numpy is imported where arrays are made: storage and quantize start faster
@@ -126,12 +126,7 @@ def check_bits(value: Number) -> int:
     ...
     ValueError: bits per pixel must be at most 24, got 25
     """
-    bits = as_int(value, "bits per pixel")
-    if bits < 1:
-        raise ValueError(f"bits per pixel must be at least 1, got {bits}")
-    if bits > MAX_BITS:
-        raise ValueError(f"bits per pixel must be at most {MAX_BITS}, got {bits}")
-    return bits
+    return check_between(as_int(value, "bits per pixel"), "bits per pixel", 1, MAX_BITS)
 
 
 def check_cells(m: int, n: int) -> None:
