@@ -155,7 +155,7 @@ def fail(message: str, code: int = 2) -> NoReturn:
     raise typer.Exit(code)
 
 
-def _write(chunks: Iterable[Any], out: Any, fmt: Format) -> None:
+def _write(chunks: Iterable[Any], out: Any) -> None:
     console = None
     for chunk in chunks:
         if isinstance(chunk, str):
@@ -200,12 +200,12 @@ def emit(
     chunks = render(solution, fmt, Options(grid=grid, origin=origin.value, explain=explain))
     if output is None:
         try:
-            _write(chunks, sys.stdout, fmt)
+            _write(chunks, sys.stdout)
             sys.stdout.flush()
         except BrokenPipeError:
             _quiet_pipe()
         return
-    write_atomic(output, lambda f: _write(chunks, f, fmt))
+    write_atomic(output, lambda f: _write(chunks, f))
 
 
 def write_figures(solution: Solution, origin: Origin, svg: Path | None, png: Path | None) -> None:

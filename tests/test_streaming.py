@@ -81,5 +81,5 @@ class ClosedAfter(io.StringIO):
 def test_the_cli_writes_each_chunk_as_it_comes(fmt):
     sol, pulled = counted(line_solution("bresenham", 0, 0, LENGTH, 1))
     with pytest.raises(BrokenPipeError):
-        cli._write(render(sol, fmt, Options(grid=False)), ClosedAfter(100), fmt)
+        cli._write(render(sol, fmt, Options(grid=False)), ClosedAfter(100))
     assert pulled[0] <= 100
