@@ -40,6 +40,7 @@ from .numeric import (
     fmt_short,
     fmt_value,
     normalize,
+    paren,
     round_half_up,
 )
 from .records import Column, Pixel, Quantity, Solution, Step, Table
@@ -291,8 +292,7 @@ def _pt(p: Point) -> str:
 
 
 def _paren(v: Value) -> str:
-    s = _v(v)
-    return f"({s})" if s.startswith("-") else s
+    return paren(_v(v))
 
 
 def _exact_point(p: Point) -> Point:
@@ -359,15 +359,11 @@ def _step_quantity(t0: Value, t1: Value, samples: int, lo: str, hi: str, tex_lo:
     return Quantity(
         "dt",
         dt,
-        f"{lo} ≤ t ≤ {hi}; Δt = ({hi} - {_paren_text(lo)}) / {samples} {shown}"
+        f"{lo} ≤ t ≤ {hi}; Δt = ({hi} - {paren(lo)}) / {samples} {shown}"
         f"   ({samples} steps, {samples + 1} values of t)",
         f"{tex_lo} \\le t \\le {tex_hi}; \\quad \\Delta t = \\frac{{{tex_hi} - "
-        f"{_paren_text(tex_lo)}}}{{{samples}}} {tex_shown}",
+        f"{paren(tex_lo)}}}{{{samples}}} {tex_shown}",
     )
-
-
-def _paren_text(s: str) -> str:
-    return f"({s})" if s.startswith("-") else s
 
 
 _JOIN_NOTE = (

@@ -20,7 +20,7 @@ from fractions import Fraction
 from itertools import dropwhile, takewhile
 
 from .circles import check_integer, symmetry_table
-from .numeric import Number, fmt_short
+from .numeric import Number, fmt_paren, fmt_short
 from .records import Column, Move, Pixel, Quantity, Solution, Step, Table, new_step, step_getter
 
 
@@ -198,11 +198,6 @@ def _region_columns(p: str) -> tuple[Column, ...]:
 _EXTRA = ("region", "two_ry2_x", "two_rx2_y")
 
 
-def _paren(v: Number) -> str:
-    s = fmt_short(v)
-    return f"({s})" if s.startswith("-") else s
-
-
 def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> Solution:
     """The worked solution of the midpoint ellipse with semi-axes ``rx``, ``ry``.
 
@@ -272,9 +267,9 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
             "p2_0",
             p2,
             f"p2_0 = ry²(x0 + 1/2)² + rx²(y0 - 1)² - rx²ry² = {ry2}·{fmt_short(half)}² + "
-            f"{rx2}·{_paren(y0 - 1)}² - {rx2}·{ry2} = {fmt_short(p2)}",
+            f"{rx2}·{fmt_paren(y0 - 1)}² - {rx2}·{ry2} = {fmt_short(p2)}",
             f"p2_0 = r_y^2 (x_0 + \\tfrac12)^2 + r_x^2 (y_0 - 1)^2 - r_x^2 r_y^2 = "
-            f"{ry2} \\cdot {fmt_short(half)}^2 + {rx2} \\cdot {_paren(y0 - 1)}^2 - "
+            f"{ry2} \\cdot {fmt_short(half)}^2 + {rx2} \\cdot {fmt_paren(y0 - 1)}^2 - "
             f"{rx2} \\cdot {ry2} = {fmt_short(p2)}",
         ),
     )

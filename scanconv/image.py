@@ -28,7 +28,17 @@ from fractions import Fraction
 from typing import TYPE_CHECKING
 
 from .grid import MAX_CELLS as PICTURE_LIMIT
-from .numeric import Number, as_int, check_between, fmt, fmt_short, normalize, round_half_up
+from .numeric import (
+    Number,
+    as_int,
+    check_between,
+    fmt,
+    fmt_paren,
+    fmt_short,
+    normalize,
+    paren,
+    round_half_up,
+)
 from .records import Column, Quantity, Solution, Table
 
 if TYPE_CHECKING:  # numpy is imported where arrays are made: storage and quantize start faster
@@ -741,31 +751,26 @@ def _places(*values: Number) -> int | None:
     return places or None
 
 
-def _paren(v: Number) -> str:
-    s = fmt_short(v)
-    return f"({s})" if s.startswith("-") else s
-
-
 def _quantizer_working(q: Quantizer) -> list[Quantity]:
-    lo, hi, step = fmt_short(q.lo), _paren(q.hi), _paren(q.step)
+    lo, hi, step = fmt_short(q.lo), fmt_paren(q.hi), fmt_paren(q.step)
     plus1, plus1_t = (" + 1", " + 1") if q.integer else ("", "")
     off, off_t = ("(k + 1/2)", r"(k + \tfrac{1}{2})") if q.recon == "midpoint" else ("k", "k")
     return [
         Quantity(
             "step",
             q.step,
-            f"Δ = (HI − LO{plus1}) / L = ({hi} − {_paren(q.lo)}{plus1}) / {q.levels} = "
+            f"Δ = (HI − LO{plus1}) / L = ({hi} − {fmt_paren(q.lo)}{plus1}) / {q.levels} = "
             f"{fmt_short(q.step)}",
-            f"\\Delta = \\frac{{HI - LO{plus1_t}}}{{L}} = \\frac{{{hi} - {_paren(q.lo)}"
+            f"\\Delta = \\frac{{HI - LO{plus1_t}}}{{L}} = \\frac{{{hi} - {fmt_paren(q.lo)}"
             f"{plus1_t}}}{{{q.levels}}} = {fmt_short(q.step)}",
         ),
         Quantity(
             "level",
             None,
-            f"level = ⌊(v − LO) / Δ⌋ = ⌊(v − {_paren(q.lo)}) / {step}⌋"
+            f"level = ⌊(v − LO) / Δ⌋ = ⌊(v − {fmt_paren(q.lo)}) / {step}⌋"
             + ("" if q.integer else f", at most L − 1 = {q.levels - 1}"),
             f"\\text{{level}} = \\lfloor (v - LO) / \\Delta \\rfloor = \\lfloor (v - "
-            f"{_paren(q.lo)}) / {step} \\rfloor"
+            f"{fmt_paren(q.lo)}) / {step} \\rfloor"
             + ("" if q.integer else f", \\text{{ at most }} L - 1 = {q.levels - 1}"),
         ),
         Quantity(
@@ -1002,8 +1007,7 @@ def _show(v: Number | float) -> str:
 
 
 def _paren_show(v: Number | float) -> str:
-    s = _show(v)
-    return f"({s})" if s.startswith("-") else s
+    return paren(_show(v))
 
 
 def _rel(*values: Number | float) -> tuple[str, str]:

@@ -12,7 +12,7 @@ import math
 from collections.abc import Iterator
 from fractions import Fraction
 
-from .numeric import Number, fmt_exact, fmt_short, fmt_value, normalize, round_half_up
+from .numeric import Number, fmt_exact, fmt_paren, fmt_short, fmt_value, normalize, round_half_up
 from .records import Column, Move, Pixel, Quantity, Solution, Step, new_step
 
 ALGORITHMS = ("bresenham", "dda", "basic")
@@ -228,19 +228,14 @@ def _once(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
         last = p
 
 
-def _paren(v: Number) -> str:
-    s = fmt_short(v)
-    return f"({s})" if s.startswith("-") else s
-
-
 def _diff(name: str, tex: str, a: Number, b: Number, key: str) -> Quantity:
     """``Δx = x₂ - x₁ = 10 - 2 = 8``."""
     v = normalize(b - a)
     return Quantity(
         key,
         v,
-        f"Δ{name} = {name}2 - {name}1 = {fmt_short(b)} - {_paren(a)} = {fmt_short(v)}",
-        f"\\Delta {tex} = {tex}_2 - {tex}_1 = {fmt_short(b)} - {_paren(a)} = {fmt_short(v)}",
+        f"Δ{name} = {name}2 - {name}1 = {fmt_short(b)} - {fmt_paren(a)} = {fmt_short(v)}",
+        f"\\Delta {tex} = {tex}_2 - {tex}_1 = {fmt_short(b)} - {fmt_paren(a)} = {fmt_short(v)}",
     )
 
 
@@ -482,9 +477,9 @@ def _basic_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
             Quantity(
                 "equation",
                 inv,
-                f"x = x1 + (Δx / Δy)(y - y1) = {fmt_short(x1)} + {fmt_value(inv)}·(y - {_paren(y1)})",
+                f"x = x1 + (Δx / Δy)(y - y1) = {fmt_short(x1)} + {fmt_value(inv)}·(y - {fmt_paren(y1)})",
                 f"x = x_1 + \\frac{{\\Delta x}}{{\\Delta y}}(y - y_1) = {fmt_short(x1)} + "
-                f"{fmt_short(inv)} (y - {_paren(y1)})",
+                f"{fmt_short(inv)} (y - {fmt_paren(y1)})",
             )
         )
         maj, mnr = "y", "x"
@@ -494,8 +489,8 @@ def _basic_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
             Quantity(
                 "equation",
                 m,
-                f"y = y1 + m(x - x1) = {fmt_short(y1)} + {fmt_value(m)}·(x - {_paren(x1)})",
-                f"y = y_1 + m(x - x_1) = {fmt_short(y1)} + {fmt_short(m)} (x - {_paren(x1)})",
+                f"y = y1 + m(x - x1) = {fmt_short(y1)} + {fmt_value(m)}·(x - {fmt_paren(x1)})",
+                f"y = y_1 + m(x - x_1) = {fmt_short(y1)} + {fmt_short(m)} (x - {fmt_paren(x1)})",
             )
         )
         maj, mnr = "x", "y"

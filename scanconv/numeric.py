@@ -157,6 +157,24 @@ def fmt_short(value: Number) -> str:
     return str(value)
 
 
+def paren(text: str) -> str:
+    """Bracket a negative number's text where it is substituted into working: ``10 - (-2)``.
+
+    >>> paren("-2"), paren("3/4")
+    ('(-2)', '3/4')
+    """
+    return f"({text})" if text.startswith("-") else text
+
+
+def fmt_paren(value: Number) -> str:
+    """:func:`fmt_short`, bracketed when negative.
+
+    >>> fmt_paren(Fraction(-3, 2)), fmt_paren(4)
+    ('(-1.5)', '4')
+    """
+    return paren(fmt_short(value))
+
+
 def fmt_exact(value: Number) -> str:
     """Display a number exactly: ``3/8`` rather than ``0.375``.
 
