@@ -21,9 +21,10 @@ far inside int64 (or decided exactly in Python integers):
   ``alpha`` and ``beta`` (:func:`_floor_affine`). It is evaluated block by block
   (:data:`BLOCK` pixels) with the integer part of each block's first value split off in
   Python integers, so what is left is below ``c * (BLOCK + 1)`` for the common denominator
-  ``c``: integer end points give ``c <= 4 * 10**9``. It is computed in float64 with a proven
-  error bound when ``|b| BLOCK + c < 2**46`` (integer end points less than ``10**9``
-  apart), else divided in int64; denominators near ``2**63`` (fractional end points only) fall back to
+  ``c``: integer end points give ``c <= 4 * 10**9``. It is computed in int64 fixed point
+  (scale ``2**k >= 8c``, an add and a shift per pixel, exact by a proven bound) whenever the
+  scaled values fit, which they do for every line with integer end points; else it
+  is divided in int64; denominators near ``2**63`` (fractional end points only) fall back to
   exact Python integers (slow, never wrong).
 * circles and ellipses: each decision compares ``(q t)**2`` with ``4 p**2 d``, up to
   ``4 * 10**36``, which no machine integer holds. They are estimated in float64
@@ -42,6 +43,7 @@ from __future__ import annotations
 import bisect
 import math
 import operator
+import threading
 from collections.abc import Callable
 from fractions import Fraction
 
@@ -61,6 +63,9 @@ LINE_ALGORITHMS = ("bresenham", "dda", "basic")
 
 BLOCK = 1 << 15
 """Pixels computed per block: small enough for the temporaries to stay in cache."""
+
+PARALLEL_MIN = 1 << 20
+"""Lines with at least this many pixels compute x and y on two threads (see :func:`line`)."""
 
 _INT64_MAX = int(np.iinfo(np.int64).max)
 
@@ -82,10 +87,20 @@ def _exact(value: object, name: str) -> Number:
     return v
 
 
-_MAGIC = 1.5 * 2.0**52
-"""Adding this to a float64 ``|v| < 2**51`` rounds v to an integer held in the low mantissa
-bits: ``view(int64) - _MAGIC_BITS`` is that integer, with no slow float-to-int cast."""
-_MAGIC_BITS = int(np.array(_MAGIC).view(np.int64))
+def _fixed_point(a: int, b: int, c: int, n: int, block: int) -> tuple[int, int, bool] | None:
+    """``(k, q_bound, fold)`` when :func:`_floor_affine` can use fixed point, else None.
+
+    The scale is ``S = 2**k >= 8c``. A block's sums ``floor(j b S / c) + floor((4r + 1) S / 4c)``
+    stay below ``span = S (block (|b| // c + 1) + 2)`` in magnitude, which must fit in int64
+    (so ``c block < span / 8`` does too). Every block's integer part q has
+    ``|q| <= q_bound``; ``fold`` says whether ``q S`` fits in beside the sum as well.
+    """
+    k = (8 * c - 1).bit_length()
+    span = (block * (abs(b) // c + 1) + 2) << k
+    if span >= _INT64_MAX:
+        return None
+    q_bound = max(abs(a), abs(a + b * (n - 1))) // c + 1
+    return k, q_bound, span + (q_bound << k) < _INT64_MAX
 
 
 def _floor_affine(
@@ -98,9 +113,11 @@ def _floor_affine(
     integer part ``q`` of the block's first value is split off in Python integers, leaving
     ``floor((r + b j) / c)`` with ``0 <= r < c`` and ``j < BLOCK``:
 
-    * if ``|b| BLOCK + c < 2**46``: as the float64 ``(r + 1/4)/c - 1/2 + j (b/c)`` rounded to
-      the nearest integer. The true value is at least ``1/(4c)`` away from a half-integer
-      and the float error is below ``2**-50 (|b| BLOCK + c) / c``, under a sixteenth of that;
+    * in fixed point, with ``S = 2**k >= 8c``: ``floor(j b S / c)`` is computed once, and each
+      block adds ``floor((4r + 1) S / 4c)`` (and ``q S`` when it fits, see
+      :func:`_fixed_point`) and shifts right by k. The two floors lose less than
+      ``2 <= 1/(4c) S``, and the sum is ``S (m + (f + 1/4) / c)`` for the wanted
+      ``m = floor((r + b j) / c)`` and some ``0 <= f < c``: the shift gives exactly m;
     * else in int64, ``r + (b mod c) j < c (BLOCK + 1)`` divided exactly;
     * denominators beyond even that use exact Python integers (slow, never wrong).
 
@@ -114,26 +131,31 @@ def _floor_affine(
     a = offset * c + sign * alpha.numerator * (c // alpha.denominator)
     a += c - 1 if sign < 0 else 0
     b = sign * beta.numerator * (c // beta.denominator)
-    if b == 0 or n <= 1:
+    path = _affine_path(a, b, c, n)
+    if path == "constant":
         return np.full(n, a // c, dtype=np.int64)
-    if c == 1:
+    if path == "arange":
         return np.arange(a, a + n * b, b, dtype=np.int64)
-    block = min(BLOCK, n)
-    if c * (block + 1) >= _INT64_MAX:
+    if path == "object":
         ks = np.arange(n, dtype=np.int64).astype(object)
         return ((a + b * ks) // c).astype(np.int64)  # type: ignore[no-any-return]
+    block = min(BLOCK, n)
     out = np.empty(n, dtype=np.int64)
     ramp = np.arange(block, dtype=np.int64)
-    if abs(b) * block + c < 2**46:
-        step = (ramp * b).astype(np.float64) * (1.0 / c)
-        tmp = np.empty(block, dtype=np.float64)
+    fixed = _fixed_point(a, b, c, n, block)
+    if fixed is not None:
+        k, _, fold = fixed
+        # floor(j b S / c) = j u + floor(j v / c), where 0 <= j v < c block < span / 8 fits
+        u, v = divmod(b << k, c)
+        step = ramp * u + ramp * v // c
         for k0 in range(0, n, block):
             m = min(block, n - k0)
             q, r = divmod(a + b * k0, c)
-            t = tmp[:m]
-            np.add(step[:m], (4 * r + 1 - 2 * c) / (4 * c), out=t)  # int / int: correctly rounded
-            t += _MAGIC
-            np.subtract(t.view(np.int64), _MAGIC_BITS - q, out=out[k0 : k0 + m])
+            o = out[k0 : k0 + m]
+            np.add(step[:m], ((4 * r + 1) << k) // (4 * c) + (q << k if fold else 0), out=o)
+            o >>= k
+            if not fold:
+                o += q
         return out
     b0, b1 = divmod(b, c)
     b1j, b0j = ramp * b1, ramp * b0
@@ -150,12 +172,28 @@ def _floor_affine(
     return out
 
 
+def _affine_path(a: int, b: int, c: int, n: int) -> str:
+    """Which method :func:`_floor_affine` uses for ``floor((a + b k) / c)``, ``k < n``:
+    ``constant``, ``arange``, ``fixed`` (q folded in), ``fixed+q``, ``int64`` or ``object``."""
+    if b == 0 or n <= 1:
+        return "constant"
+    if c == 1:
+        return "arange"
+    block = min(BLOCK, n)
+    fixed = _fixed_point(a, b, c, n, block)
+    if fixed is not None:
+        return "fixed" if fixed[2] else "fixed+q"
+    return "int64" if c * (block + 1) < _INT64_MAX else "object"
+
+
 def line(
     x1: int | Fraction,
     y1: int | Fraction,
     x2: int | Fraction,
     y2: int | Fraction,
     algo: str = "bresenham",
+    *,
+    parallel: bool = True,
 ) -> Coords:
     """Every pixel of a line, in the order ``line_solution(algo, ...).pixels()`` plots them.
 
@@ -166,6 +204,11 @@ def line(
         also take fractions.
     algo : {"bresenham", "dda", "basic"}
         The algorithm whose pixels are wanted (see :mod:`scanconv.lines`).
+    parallel : bool
+        For lines of at least :data:`PARALLEL_MIN` pixels, compute one coordinate array on a
+        second thread while this one computes the other (numpy releases the GIL; each array
+        is written once, so the two threads share no data). ``False`` stays on the calling
+        thread. The result is the same either way.
 
     Returns
     -------
@@ -203,16 +246,23 @@ def line(
         )
         sx, sy, _, _, steep, dmaj, dmin, s, _, _ = _orient(ix1, iy1, ix2, iy2)
         smaj, smin = (sy, sx) if steep else (sx, sy)
-        major = _floor_affine(smaj, 1, dmaj + 1)
-        minor = _floor_affine(
-            Fraction(1, 2), Fraction(dmin, dmaj or 1), dmaj + 1, offset=smin, sign=s
+        major, minor = _pair(
+            parallel and dmaj + 1 >= PARALLEL_MIN,
+            lambda: _floor_affine(smaj, 1, dmaj + 1),
+            lambda: _floor_affine(
+                Fraction(1, 2), Fraction(dmin, dmaj or 1), dmaj + 1, offset=smin, sign=s
+            ),
         )
         return (minor, major) if steep else (major, minor)
     if algo == "dda":
         n = dda_steps(*p) + 1
         xi, yi = dda_increments(*p)
         half = Fraction(1, 2)
-        xs, ys = _floor_affine(p[0] + half, xi, n), _floor_affine(p[1] + half, yi, n)
+        xs, ys = _pair(
+            parallel and n >= PARALLEL_MIN,
+            lambda: _floor_affine(p[0] + half, xi, n),
+            lambda: _floor_affine(p[1] + half, yi, n),
+        )
         if all(isinstance(v, int) for v in p):  # the major coordinate moves 1 per row
             return xs, ys
         # fractional end points can round two rows to one pixel, listed once (lines._once)
@@ -222,6 +272,32 @@ def line(
     if algo == "basic":
         return _basic(*p)
     raise ValueError(f"unknown line algorithm {algo!r} (choose from {', '.join(LINE_ALGORITHMS)})")
+
+
+def _pair(
+    threaded: bool, first: Callable[[], Array], second: Callable[[], Array]
+) -> tuple[Array, Array]:
+    """``(first(), second())``; with ``threaded``, ``first`` runs on a second thread."""
+    if not threaded:
+        return first(), second()
+    box: list[Array | BaseException] = []
+
+    def run() -> None:
+        try:
+            box.append(first())
+        except BaseException as exc:  # handed to the caller below
+            box.append(exc)
+
+    worker = threading.Thread(target=run, name="scanconv-raster", daemon=True)
+    worker.start()
+    try:
+        other = second()
+    finally:
+        worker.join()
+    (result,) = box
+    if isinstance(result, BaseException):
+        raise result
+    return result, other
 
 
 def _basic(x1: Number, y1: Number, x2: Number, y2: Number) -> Coords:

@@ -12,7 +12,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from enum import Enum
 from pathlib import Path
-from typing import Any
+from types import UnionType
+from typing import Any, Union, get_args, get_origin, get_type_hints
 
 import typer
 
@@ -30,13 +31,38 @@ def _walk(command: Any, path: tuple[str, ...]) -> Iterator[tuple[tuple[str, ...]
     yield path, command
 
 
+_ANNOTATIONS: dict[int, tuple[Any, Any]] = {}
+"""``id(param) -> (param, annotation)``, filled by :func:`commands` (the param is kept alive)."""
+
+
+def _annotations(command: Any) -> None:
+    """Record each parameter's Python annotation, read from the command's own function.
+
+    Read from the signature rather than from typer's parameter objects, whose attributes
+    differ between typer releases. ``X | None`` counts as ``X``.
+    """
+    function = getattr(command.callback, "__wrapped__", command.callback)
+    hints = get_type_hints(function)
+    for param in command.params:
+        if param.name not in hints:
+            continue
+        hint = hints[param.name]
+        if get_origin(hint) in (Union, UnionType):
+            (hint,) = (a for a in get_args(hint) if a is not type(None))
+        _ANNOTATIONS[id(param)] = (param, hint)
+
+
 def commands() -> list[tuple[tuple[str, ...], Any]]:
     """``(path, click command)`` for every leaf command: ``("line",)``, ``("image", "ramp")``."""
-    return list(_walk(typer.main.get_command(app), ()))
+    found = list(_walk(typer.main.get_command(app), ()))
+    for _, command in found:
+        _annotations(command)
+    return found
 
 
 def annotation(param: Any) -> Any:
-    return param.type_descriptor.annotation
+    """The Python type a parameter of a command from :func:`commands` is declared with."""
+    return _ANNOTATIONS[id(param)][1]
 
 
 def choices(param: Any) -> tuple[str, ...]:

@@ -8,6 +8,7 @@ integer helper against Python's exact integers. No timing here: see ``benchmarks
 from __future__ import annotations
 
 import math
+import threading
 from fractions import Fraction
 
 import numpy as np
@@ -105,6 +106,46 @@ def test_bresenham_equals_skimage_when_walking_the_same_way(x1, y1, dx, dy):
     assert np.array_equal(xs, cc) and np.array_equal(ys, rr)
 
 
+@pytest.mark.parametrize("algo", ["bresenham", "dda"])
+@settings(max_examples=200, deadline=None)
+@given(x1=short, y1=short, x2=short, y2=short)
+def test_parallel_line_matches_generator(algo, x1, y1, x2, y2):
+    """With the threshold lowered to one pixel, every line takes the two-thread path."""
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(raster, "PARALLEL_MIN", 1)
+        got = as_pixels(raster.line(x1, y1, x2, y2, algo=algo))
+    assert got == generator_pixels(algo, x1, y1, x2, y2)
+
+
+@pytest.mark.parametrize("algo", ["bresenham", "dda"])
+def test_long_line_is_the_same_on_one_thread_or_two(algo):
+    n = raster.PARALLEL_MIN + 12_345
+    one = raster.line(7, -3, 7 - 987_654, -3 - n + 1, algo=algo, parallel=False)
+    two = raster.line(7, -3, 7 - 987_654, -3 - n + 1, algo=algo)
+    assert len(one[0]) == n
+    assert all(np.array_equal(a, b) for a, b in zip(one, two, strict=True))
+    ends = {(int(one[0][i]), int(one[1][i])) for i in (0, -1)}
+    assert ends == {(7, -3), (7 - 987_654, -3 - n + 1)}
+
+
+def test_parallel_line_hands_a_worker_error_to_the_caller(monkeypatch):
+    """The second thread's exception is raised in the caller, after the caller's own half."""
+    real = raster._floor_affine
+    calls = []
+
+    def fails_on_the_worker(*args, **kwargs):
+        calls.append(threading.current_thread().name)
+        if threading.current_thread() is not threading.main_thread():
+            raise MemoryError("no room")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(raster, "PARALLEL_MIN", 1)
+    monkeypatch.setattr(raster, "_floor_affine", fails_on_the_worker)
+    with pytest.raises(MemoryError, match="no room"):
+        raster.line(0, 0, 5, 3)
+    assert sorted(calls) == ["MainThread", "scanconv-raster"]
+
+
 def test_line_rejects_bad_input():
     with pytest.raises(ValueError, match="x1 must be an integer"):
         raster.line(Fraction(1, 2), 0, 4, 4)
@@ -147,36 +188,47 @@ def test_floor_affine_is_exact(num, den, bnum, bden, n, offset, sign):
     assert got.dtype == np.int64 and got.tolist() == expected
 
 
+def _numerators(alpha: Fraction, beta: Fraction, sign: int, offset: int) -> tuple[int, int, int]:
+    """``(a, b, c)`` with ``offset + sign floor(alpha + beta k) = floor((a + b k) / c)``."""
+    c = math.lcm(alpha.denominator, beta.denominator)
+    a = offset * c + sign * alpha.numerator * (c // alpha.denominator) + (c - 1 if sign < 0 else 0)
+    return a, sign * beta.numerator * (c // beta.denominator), c
+
+
 @settings(max_examples=40, deadline=None)
 @given(
-    c=st.integers(2**20, 2**31),
+    c=st.integers(2**20, 2**40),
     a=st.integers(-(10**15), 10**15),
-    share=st.floats(0, 1),
+    share=st.floats(0.5, 1),
     sign=st.sampled_from([1, -1]),
 )
-def test_floor_affine_float_path_at_its_limit(c, a, share, sign):
-    """A whole block with |b| BLOCK + c just under 2**46: the largest float error allowed."""
-    b = sign * int(share * (2**46 - c - 1) // raster.BLOCK)
+def test_floor_affine_fixed_point_at_its_limit(c, a, share, sign):
+    """A whole block whose scaled sums come within a factor of two of int64's limit."""
+    k = (8 * c - 1).bit_length()
+    top = (2**63 >> k) // raster.BLOCK - 1  # the largest |b| // c + 1 that still fits
+    b = sign * max(1, int(share * top) - 1) * c + sign * (c // 3)
     n = raster.BLOCK + 3
+    assert raster._affine_path(a, b, c, n).startswith("fixed")
     got = raster._floor_affine(Fraction(a, c), Fraction(b, c), n)
     assert got.tolist() == [(a + b * k) // c for k in range(n)]
 
 
 @pytest.mark.parametrize(
-    ("alpha", "beta", "n"),
+    ("alpha", "beta", "n", "path"),
     [
-        (Fraction(1, 2), Fraction(3141, 9999), 3 * raster.BLOCK + 17),  # float, rounded
-        (Fraction(10**18 + 1, 2), Fraction(-7, 3), 2 * raster.BLOCK + 5),  # float, large q
-        (Fraction(1, 3), Fraction(7, 10**14 + 1), 2 * raster.BLOCK + 5),  # int64 division
-        (Fraction(5, 10**17 + 3), Fraction(1, 10**16 + 1), 2000),  # exact Python integers
-        (Fraction(-7), Fraction(-1), 2 * raster.BLOCK),  # integral: arange
-        (Fraction(9, 4), Fraction(0), 5),  # constant
+        (Fraction(1, 2), Fraction(3141, 9999), 3 * raster.BLOCK + 17, "fixed"),
+        (Fraction(10**18 + 1, 2), Fraction(-7, 3), 2 * raster.BLOCK + 5, "fixed+q"),
+        (Fraction(1, 3), Fraction(7, 10**13 + 1), 2 * raster.BLOCK + 5, "int64"),
+        (Fraction(5, 10**17 + 3), Fraction(1, 10**16 + 1), 2000, "object"),
+        (Fraction(-7), Fraction(-1), 2 * raster.BLOCK, "arange"),
+        (Fraction(9, 4), Fraction(0), 5, "constant"),
     ],
-    ids=["float", "float-large", "int64", "object", "arange", "constant"],
+    ids=["fixed", "fixed+q", "int64", "object", "arange", "constant"],
 )
 @pytest.mark.parametrize("sign", [1, -1])
-def test_floor_affine_every_path(alpha, beta, n, sign):
+def test_floor_affine_every_path(alpha, beta, n, path, sign):
     offset = 123
+    assert raster._affine_path(*_numerators(alpha, beta, sign, offset), n) == path
     got = raster._floor_affine(alpha, beta, n, offset=offset, sign=sign)
     assert got.tolist() == _expected(alpha, beta, n, offset, sign)
 
