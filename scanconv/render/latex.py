@@ -9,19 +9,21 @@ Tables are ``longtable`` s, so a long line's table continues on the next page (w
 heading repeated) instead of running off the bottom of the page. Each plotted pixel is its own
 ``$...$``, so the pixel list breaks between pixels (TeX does not break math after a comma).
 The pixel list is set ragged-right (long unbreakable pixels would overfill justified lines).
-Wide tables and grids are set tighter or smaller so they fit an article's text width.
+Wide tables and grids are set tighter or smaller so they fit an article's text width; a table
+too wide even in ``\\scriptsize`` (the circle's 9-column symmetry table) is set in parts of its
+columns, each part repeating the first column.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from itertools import chain, islice
+from itertools import islice
 
 from ..numeric import fmt_pixel
 from ..records import Column, Solution
 from . import Notice, Options
 from .cells import numeric_column, tex_text, wrap_items
-from .text import all_tables, figure_lines, pixel_count
+from .text import Rows, all_tables, figure_lines, pixel_count
 
 
 def _cell(text: str) -> str:
@@ -42,9 +44,10 @@ _SAMPLE_ROWS = 100
 _MARKUP = str.maketrans("", "", "_{}^\\")
 
 
-def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> tuple[str, bool]:
+def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> tuple[str, bool] | None:
     """``(font size, tight)`` for a table: the largest font whose estimated width fits
-    :data:`TEXT_WIDTH`, first at the normal 6pt between columns, then at 3pt (``tight``).
+    :data:`TEXT_WIDTH`, first at the normal 6pt between columns, then at 3pt (``tight``);
+    ``None`` if it does not fit even in ``\\scriptsize`` at 3pt.
 
     The width is estimated from the headings and the first rows: about 4.8pt a character at
     10pt (digits are 5pt, points and commas less; a minus sign counts 1.6), plus the gaps.
@@ -55,8 +58,8 @@ def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> tuple[
     ('', False)
     >>> table_layout([Column(str(i), "N_{i,3}", "") for i in range(11)], [["0.125"] * 11])
     ('', True)
-    >>> table_layout([Column(str(i), "(xc + x, yc + y)", "") for i in range(9)], [])
-    ('\\\\tiny', True)
+    >>> table_layout([Column(str(i), "(xc + x, yc + y)", "") for i in range(9)], []) is None
+    True
     """
     widths = [_heading_chars(c) for c in columns]
     for r in rows:
@@ -66,7 +69,34 @@ def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> tuple[
         for size, factor in _SIZES:
             if text * factor + gap * len(columns) <= 0.97 * TEXT_WIDTH:  # 3% to spare
                 return size, tight
-    return "\\tiny", True
+    return None
+
+
+def split_columns(columns: Sequence[Column], rows: Sequence[list[str]]) -> list[list[int]]:
+    """Column indexes of each part a table is set in: one part if it fits the text width,
+    else the fewest parts of about equal width that each fit, every part repeating the first
+    column (``k``, or the octant point of a symmetry table) so its rows can be read alone.
+
+    >>> from scanconv.records import Column
+    >>> split_columns([Column("k", "k", "")] + [Column("c", "(xc + x, yc + y)", "")] * 8, [])
+    [[0, 1, 2, 3, 4], [0, 5, 6, 7, 8]]
+    """
+    every = list(range(len(columns)))
+    if table_layout(columns, rows) is not None or len(columns) < 3:
+        return [every]
+    rest = every[1:]
+    for count in range(2, len(rest) + 1):
+        bounds = [len(rest) * i // count for i in range(count + 1)]
+        parts = [[0, *rest[bounds[i] : bounds[i + 1]]] for i in range(count)]
+        if all(table_layout(*_select(columns, rows, part)) is not None for part in parts):
+            return parts
+    return [every]  # not even one column beside the first fits: one table, in \tiny
+
+
+def _select(
+    columns: Sequence[Column], rows: Sequence[list[str]], part: Sequence[int]
+) -> tuple[list[Column], list[list[str]]]:
+    return [columns[i] for i in part], [[r[i] for i in part] for r in rows]
 
 
 def _heading_chars(column: Column) -> float:
@@ -76,16 +106,31 @@ def _heading_chars(column: Column) -> float:
     return len(column.text.translate(_MARKUP)) + ops
 
 
-def _tabular(columns: Sequence[Column], rows: Iterator[list[str]]) -> Iterator[str]:
+def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
+    """One table, or several of its columns each when it is too wide for the page."""
+    head = list(islice(rows(), _SAMPLE_ROWS))
+    parts = split_columns(columns, head)
+    for n, part in enumerate(parts, 1):
+        label = title if len(parts) == 1 else f"{title}, part {n} of {len(parts)}"
+        yield f"\\paragraph{{{tex_text(label)}}}\\mbox{{}}\\\\[1ex]\n"
+        cols, sample = _select(columns, head, part)
+        body = ([r[i] for i in part] for r in rows())
+        yield from _tabular(cols, sample, body)
+        yield "\n"
+
+
+def _tabular(
+    columns: Sequence[Column], head: Sequence[list[str]], rows: Iterator[list[str]]
+) -> Iterator[str]:
+    """A longtable of every row in ``rows``; ``head`` (its first rows) decides the layout."""
     spec = "".join("r" if numeric_column(c) else "c" for c in columns)
-    head = list(islice(rows, _SAMPLE_ROWS))
-    size, tight = table_layout(columns, head)
+    size, tight = table_layout(columns, head) or ("\\tiny", True)
     group = bool(size or tight)
     if group:
         yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
     yield f"\\begin{{longtable}}{{{spec}}}\n\\toprule\n"
     yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n\\endhead\n"
-    for r in chain(head, rows):
+    for r in rows:
         yield " & ".join(_cell(c) for c in r) + " \\\\\n"
     yield "\\bottomrule\n\\end{longtable}\n" + ("}\n" if group else "")
 
@@ -121,9 +166,7 @@ def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]
     if solution.notes:
         yield "\n"
     for title, cols, rows in all_tables(solution):
-        yield f"\\paragraph{{{tex_text(title or 'Step table')}}}\\mbox{{}}\\\\[1ex]\n"
-        yield from _tabular(cols, rows)
-        yield "\n"
+        yield from _tables(title or "Step table", cols, rows)
     if solution.pixels is not None:
         yield f"\\paragraph{{Pixels plotted ({pixel_count(solution)})}}\n"
         yield "{\\raggedright\n"

@@ -53,7 +53,7 @@ def render_rich(solution: Solution, options: Options) -> Iterator[Any]:
     if options.explain:
         yield from _derivation(solution)
     for title, cols, rows in all_tables(solution):
-        yield from _tables(title or "Step table", tuple(cols), rows)
+        yield from _tables(title or "Step table", tuple(cols), rows())
     if solution.pixels is not None:
         yield Text(f"Pixels plotted ({pixel_count(solution)}):", style="bold")
         for line in pixel_lines(solution):

@@ -10,7 +10,8 @@ constant memory however long the line.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from functools import partial
 from itertools import islice
 
 from .. import grid as gridmod
@@ -132,14 +133,16 @@ def figure_lines(solution: Solution, options: Options) -> tuple[list[str], list[
     return lines, [c for c in chunks if isinstance(c, Notice)]
 
 
-def all_tables(
-    solution: Solution,
-) -> Iterator[tuple[str | None, Sequence[Column], Iterator[list[str]]]]:
+Rows = Callable[[], Iterator[list[str]]]
+"""A factory of display rows: a fresh iterator on every call (a renderer may read them twice)."""
+
+
+def all_tables(solution: Solution) -> Iterator[tuple[str | None, Sequence[Column], Rows]]:
     """``(title, columns, rows)`` of the step table (if any) and every secondary table."""
     if solution.columns and solution.show_steps:
-        yield None, solution.columns, step_rows(solution, solution.columns)
+        yield None, solution.columns, partial(step_rows, solution, solution.columns)
     for table in solution.tables:
-        yield table.title, table.columns, table_rows(table)
+        yield table.title, table.columns, partial(table_rows, table)
 
 
 def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iterator[str | Notice]:
@@ -180,7 +183,7 @@ def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iter
         name = title or "Step table"
         yield f"**{name}:**\n\n" if markdown else f"{ascii_text(name)}:\n"
         for line in table_lines(
-            [heading(c) for c in cols], [numeric_column(c) for c in cols], rows, markdown=markdown
+            [heading(c) for c in cols], [numeric_column(c) for c in cols], rows(), markdown=markdown
         ):
             yield line + "\n"
         yield "\n"
