@@ -481,3 +481,27 @@ def test_readme_method_table_is_the_codes_output():
 if __name__ == "__main__":
     print(README_MARK)
     print(readme_table())
+
+
+class _NoPrivateConstructor(Fraction):
+    """A Fraction whose constructor has neither private fast path (a future Python, say)."""
+
+    def __new__(cls, numerator=0, denominator=None):
+        return super().__new__(cls, numerator, denominator)
+
+
+class _OnlyFromCoprime(Fraction):
+    @classmethod
+    def _from_coprime_ints(cls, numerator, denominator):
+        return super().__new__(cls, numerator, denominator)
+
+
+@pytest.mark.parametrize("cls", [Fraction, _NoPrivateConstructor, _OnlyFromCoprime])
+def test_coprime_constructor_gives_the_value_on_every_python(cls):
+    from scanconv.circles import coprime_constructor
+
+    make = coprime_constructor(cls)
+    for num, den in [(3, 4), (-7, 16), (0, 1), (5, 1), (2**70 + 1, 2**71)]:
+        value = make(num, den)
+        assert (value.numerator, value.denominator) == (num, den)
+        assert value == Fraction(num, den)
