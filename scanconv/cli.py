@@ -537,7 +537,7 @@ def sample(
         origin=origin.value,
     )
     solution = library_call(sample_solution, sampled)
-    emit(solution, fmt, grid=grid, output=output, explain=explain)
+    emit(solution, fmt, grid=grid, origin=origin, output=output, explain=explain)
 
 
 image_app = typer.Typer(
@@ -597,6 +597,7 @@ def compare_line(
     y2: Num,
     fmt: FormatOpt = Format.auto,
     grid: GridOpt = True,
+    origin: OriginOpt = Origin.bottom_left,
     output: OutputOpt = None,
     explain: ExplainOpt = False,
 ) -> None:
@@ -607,7 +608,7 @@ def compare_line(
     from .compare import compare_lines
 
     solution = library_call(compare_lines, x1, y1, x2, y2)
-    emit(solution, fmt, grid=grid, output=output, explain=explain)
+    emit(solution, fmt, grid=grid, origin=origin, output=output, explain=explain)
 
 
 @compare_app.command("circle", context_settings=NUMERIC_ARGS)
@@ -615,6 +616,7 @@ def compare_circle(
     r: Num,
     fmt: FormatOpt = Format.auto,
     grid: GridOpt = True,
+    origin: OriginOpt = Origin.bottom_left,
     output: OutputOpt = None,
     explain: ExplainOpt = False,
 ) -> None:
@@ -625,7 +627,7 @@ def compare_circle(
     from .compare import compare_circles
 
     solution = library_call(compare_circles, r)
-    emit(solution, fmt, grid=grid, output=output, explain=explain)
+    emit(solution, fmt, grid=grid, origin=origin, output=output, explain=explain)
 
 
 # --- curves (issue 4): parametric, Bezier, B-spline, continuity, local control -----------------
@@ -1057,6 +1059,7 @@ def local_control(
     samples: SamplesOpt = None,
     fmt: FormatOpt = Format.auto,
     grid: GridOpt = True,
+    origin: OriginOpt = Origin.bottom_left,
     output: OutputOpt = None,
     explain: ExplainOpt = False,
 ) -> None:
@@ -1079,7 +1082,7 @@ def local_control(
         knot_spec,
         DEFAULT_SAMPLES if samples is None else samples,
     )
-    emit(solution, fmt, grid=grid, output=output, explain=explain)
+    emit(solution, fmt, grid=grid, origin=origin, output=output, explain=explain)
 
 
 def _index(text: str) -> int:

@@ -313,7 +313,7 @@ def _dda_points(sol: Solution, steep: bool) -> dict[int, list[tuple[Number, Numb
     return out
 
 
-def _disagreement_figure(pixels: dict[str, list[Pixel]]) -> Callable[[], list[str]] | None:
+def _disagreement_figure(pixels: dict[str, list[Pixel]]) -> Callable[[str], list[str]] | None:
     """A text grid: ``#`` where every method plots the pixel, ``o`` where only some do."""
     sets = [set(p) for p in pixels.values()]
     union = set().union(*sets)
@@ -325,10 +325,11 @@ def _disagreement_figure(pixels: dict[str, list[Pixel]]) -> Callable[[], list[st
     if gridmod.too_large(bbox):
         return None
 
-    def figure() -> list[str]:
+    def figure(origin: str) -> list[str]:
         return gridmod.render_grid(
             sorted(agreed),
             bbox,
+            origin=origin,
             marks=sorted(union - agreed),
             legend="# = every method plots it, o = only some do (see the table)",
         )

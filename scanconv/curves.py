@@ -1901,7 +1901,7 @@ def local_control_solution(
         _moved_quantity("bspline", s_moved, total, s_rm, s_add),
     ]
 
-    def figure() -> list[str]:
+    def figure(origin: str) -> list[str]:
         from .grid import render_grid, too_large
 
         out: list[str] = []
@@ -1910,12 +1910,13 @@ def local_control_solution(
             ("B-spline", s_before, s_after),
         ):
             box = _bbox([*before, *aft])
-            out.append(f"{name}: # = after the move only, o = before only, @ = both")
+            out.append(f"{name}:")
             reason = too_large(box)
             if reason:
                 out.append(reason)
             else:
-                out.extend(render_grid(aft, box, marks=before)[:-1])
+                legend = "# = after the move only, o = before only, @ = both"
+                out.extend(render_grid(aft, box, origin=origin, marks=before, legend=legend))
             out.append("")
         return out[:-1]
 

@@ -984,7 +984,7 @@ def ramp_solution(m: Number, n: Number, levels: Number) -> Solution:
             *((note,) if note else ()),
         ),
         tables=(Table("Gray levels f(i, j)", matrix_columns(N), rows),),
-        figure=None if note else (lambda: shade_lines((r[1:] for r in rows()), L, N)),
+        figure=None if note else (lambda _origin: shade_lines((r[1:] for r in rows()), L, N)),
     )
 
 
@@ -1265,7 +1265,7 @@ def sample_solution(s: Sampled) -> Solution:
         derived=tuple(derived),
         notes=tuple(notes),
         tables=(Table("Quantized levels (row i, column j)", matrix_columns(N), rows),),
-        figure=None if picture_note else (lambda: shade_lines(iter(levels_m), L, N)),
+        figure=None if picture_note else (lambda _origin: shade_lines(iter(levels_m), L, N)),
         data={"x": s.x.tolist(), "y": s.y.tolist()},
     )
 

@@ -165,8 +165,10 @@ class Solution:
     same steps split up (the ellipse's two regions); csv and json still carry every step."""
     marks: tuple[Pixel, ...] = ()
     """Points drawn differently in the grid (control points, the centre)."""
-    figure: Callable[[], list[str]] | None = None
-    """Extra ASCII figure lines (for example a shaded picture of an image matrix)."""
+    figure: Callable[[str], list[str]] | None = None
+    """Extra ASCII figure lines (a shaded picture of an image matrix, the grids of a
+    comparison), given the origin (``"bottom-left"`` or ``"top-left"``) for those that are
+    coordinate grids."""
     geometry: dict[str, Any] = field(default_factory=dict)
     """The ideal primitive, for figures drawn over the pixels. Keys (all optional):
     ``line``: ``(x1, y1, x2, y2)``; ``circle``: ``(xc, yc, r)``; ``ellipse``:

@@ -191,7 +191,7 @@ def test_markdown_survives_exactly(name: str) -> None:
         expected = gridmod.render_grid(solution.pixels(), solution.bbox, marks=solution.marks)
         assert html.pre[0].rstrip("\n").splitlines() == expected
     elif solution.figure is not None:
-        assert html.pre[0].rstrip("\n").splitlines() == solution.figure()
+        assert html.pre[0].rstrip("\n").splitlines() == solution.figure("bottom-left")
 
 
 # --- LaTeX through pdflatex ---------------------------------------------------------------------

@@ -129,7 +129,7 @@ def figure_lines(solution: Solution, options: Options) -> tuple[list[str], list[
     if solution.figure is not None and options.grid:
         if lines:
             lines.append("")
-        lines.extend(solution.figure())
+        lines.extend(solution.figure(options.origin))
     return lines, [c for c in chunks if isinstance(c, Notice)]
 
 
