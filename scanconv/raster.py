@@ -115,9 +115,10 @@ def _floor_affine(
 
     * in fixed point, with ``S = 2**k >= 8c``: ``floor(j b S / c)`` is computed once, and each
       block adds ``floor((4r + 1) S / 4c)`` (and ``q S`` when it fits, see
-      :func:`_fixed_point`) and shifts right by k. The two floors lose less than
-      ``2 <= 1/(4c) S``, and the sum is ``S (m + (f + 1/4) / c)`` for the wanted
-      ``m = floor((r + b j) / c)`` and some ``0 <= f < c``: the shift gives exactly m;
+      :func:`_fixed_point`) and shifts right by k. Without the floors the sum would be
+      ``S (m + (f + 1/4) / c)`` for the wanted ``m = floor((r + b j) / c)`` and some
+      ``0 <= f < c``; the two floors take off less than ``2 <= S / (4c)``, so the sum stays
+      within ``[S m, S (m + 1))`` and the shift gives exactly m;
     * else in int64, ``r + (b mod c) j < c (BLOCK + 1)`` divided exactly;
     * denominators beyond even that use exact Python integers (slow, never wrong).
 
