@@ -87,20 +87,9 @@ def _exact(value: object, name: str) -> Number:
     return v
 
 
-def _fixed_point(a: int, b: int, c: int, n: int, block: int) -> tuple[int, int, bool] | None:
-    """``(k, q_bound, fold)`` when :func:`_floor_affine` can use fixed point, else None.
-
-    The scale is ``S = 2**k >= 8c``. A block's sums ``floor(j b S / c) + floor((4r + 1) S / 4c)``
-    stay below ``span = S (block (|b| // c + 1) + 2)`` in magnitude, which must fit in int64
-    (so ``c block < span / 8`` does too). Every block's integer part q has
-    ``|q| <= q_bound``; ``fold`` says whether ``q S`` fits in beside the sum as well.
-    """
-    k = (8 * c - 1).bit_length()
-    span = (block * (abs(b) // c + 1) + 2) << k
-    if span >= _INT64_MAX:
-        return None
-    q_bound = max(abs(a), abs(a + b * (n - 1))) // c + 1
-    return k, q_bound, span + (q_bound << k) < _INT64_MAX
+def _scale_bits(c: int) -> int:
+    """k with ``S = 2**k`` the smallest power of two ``>= 8c``: the fixed-point scale."""
+    return (8 * c - 1).bit_length()
 
 
 def _floor_affine(
@@ -115,7 +104,7 @@ def _floor_affine(
 
     * in fixed point, with ``S = 2**k >= 8c``: ``floor(j b S / c)`` is computed once, and each
       block adds ``floor((4r + 1) S / 4c)`` (and ``q S`` when it fits, see
-      :func:`_fixed_point`) and shifts right by k. Without the floors the sum would be
+      :func:`_affine_path`) and shifts right by k. Without the floors the sum would be
       ``S (m + (f + 1/4) / c)`` for the wanted ``m = floor((r + b j) / c)`` and some
       ``0 <= f < c``; the two floors take off less than ``2 <= S / (4c)``, so the sum stays
       within ``[S m, S (m + 1))`` and the shift gives exactly m;
@@ -143,9 +132,8 @@ def _floor_affine(
     block = min(BLOCK, n)
     out = np.empty(n, dtype=np.int64)
     ramp = np.arange(block, dtype=np.int64)
-    fixed = _fixed_point(a, b, c, n, block)
-    if fixed is not None:
-        k, _, fold = fixed
+    if path in ("fixed", "fixed+q"):
+        k, fold = _scale_bits(c), path == "fixed"
         # floor(j b S / c) = j u + floor(j v / c), where 0 <= j v < c block < span / 8 fits
         u, v = divmod(b << k, c)
         step = ramp * u + ramp * v // c
@@ -175,15 +163,25 @@ def _floor_affine(
 
 def _affine_path(a: int, b: int, c: int, n: int) -> str:
     """Which method :func:`_floor_affine` uses for ``floor((a + b k) / c)``, ``k < n``:
-    ``constant``, ``arange``, ``fixed`` (q folded in), ``fixed+q``, ``int64`` or ``object``."""
+    ``constant``, ``arange``, ``fixed`` (q folded in), ``fixed+q``, ``int64`` or ``object``.
+
+    Fixed point, with ``S = 2**k >= 8c`` (:func:`_scale_bits`): a block's sums
+    ``floor(j b S / c) + floor((4r + 1) S / 4c)`` stay below
+    ``span = S (block (|b| // c + 1) + 2)`` in magnitude, which must fit in int64 (so
+    ``c block < span / 8`` does too). Every block's integer part q has ``|q| <= q_bound``;
+    ``fixed`` when ``q S`` fits in beside the sum as well, else ``fixed+q`` adds q after the
+    shift.
+    """
     if b == 0 or n <= 1:
         return "constant"
     if c == 1:
         return "arange"
     block = min(BLOCK, n)
-    fixed = _fixed_point(a, b, c, n, block)
-    if fixed is not None:
-        return "fixed" if fixed[2] else "fixed+q"
+    k = _scale_bits(c)
+    span = (block * (abs(b) // c + 1) + 2) << k
+    if span < _INT64_MAX:
+        q_bound = max(abs(a), abs(a + b * (n - 1))) // c + 1
+        return "fixed" if span + (q_bound << k) < _INT64_MAX else "fixed+q"
     return "int64" if c * (block + 1) < _INT64_MAX else "object"
 
 

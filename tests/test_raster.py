@@ -204,7 +204,7 @@ def _numerators(alpha: Fraction, beta: Fraction, sign: int, offset: int) -> tupl
 )
 def test_floor_affine_fixed_point_at_its_limit(c, a, share, sign):
     """A whole block whose scaled sums come within a factor of two of int64's limit."""
-    k = (8 * c - 1).bit_length()
+    k = raster._scale_bits(c)
     top = (2**63 >> k) // raster.BLOCK - 1  # the largest |b| // c + 1 that still fits
     b = sign * max(1, int(share * top) - 1) * c + sign * (c // 3)
     n = raster.BLOCK + 3
