@@ -16,8 +16,8 @@ columns, each part repeating the first column.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
-from itertools import islice
+from collections.abc import Iterable, Iterator, Sequence
+from itertools import chain, islice
 
 from ..numeric import fmt_pixel
 from ..records import Column, Solution
@@ -44,7 +44,14 @@ _SAMPLE_ROWS = 100
 _MARKUP = str.maketrans("", "", "_{}^\\")
 
 
-def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> tuple[str, bool] | None:
+Layout = tuple[str, bool]
+"""``(font size, tight)``: what :func:`table_layout` picks for a table."""
+
+_TINY: Layout = ("\\tiny", True)
+"""The last resort for a table whose first column and one other do not fit side by side."""
+
+
+def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> Layout | None:
     """``(font size, tight)`` for a table: the largest font whose estimated width fits
     :data:`TEXT_WIDTH`, first at the normal 6pt between columns, then at 3pt (``tight``);
     ``None`` if it does not fit even in ``\\scriptsize`` at 3pt.
@@ -72,25 +79,36 @@ def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> tuple[
     return None
 
 
-def split_columns(columns: Sequence[Column], rows: Sequence[list[str]]) -> list[list[int]]:
-    """Column indexes of each part a table is set in: one part if it fits the text width,
-    else the fewest parts of about equal width that each fit, every part repeating the first
-    column (``k``, or the octant point of a symmetry table) so its rows can be read alone.
+def split_columns(
+    columns: Sequence[Column], rows: Sequence[list[str]]
+) -> list[tuple[list[int], Layout]]:
+    """The column indexes of each part a table is set in, with each part's layout: one part
+    if it fits the text width, else the fewest parts of about equal width that each fit,
+    every part repeating the first column (``k``, or the octant point of a symmetry table) so
+    its rows can be read alone.
 
     >>> from scanconv.records import Column
-    >>> split_columns([Column("k", "k", "")] + [Column("c", "(xc + x, yc + y)", "")] * 8, [])
+    >>> cols = [Column("k", "k", "")] + [Column("c", "(xc + x, yc + y)", "")] * 8
+    >>> [part for part, _ in split_columns(cols, [])]
     [[0, 1, 2, 3, 4], [0, 5, 6, 7, 8]]
     """
     every = list(range(len(columns)))
-    if table_layout(columns, rows) is not None or len(columns) < 3:
-        return [every]
+    whole = table_layout(columns, rows)
+    if whole is not None or len(columns) < 3:
+        return [(every, whole or _TINY)]
     rest = every[1:]
     for count in range(2, len(rest) + 1):
         bounds = [len(rest) * i // count for i in range(count + 1)]
         parts = [[0, *rest[bounds[i] : bounds[i + 1]]] for i in range(count)]
-        if all(table_layout(*_select(columns, rows, part)) is not None for part in parts):
-            return parts
-    return [every]  # not even one column beside the first fits: one table, in \tiny
+        fitted = []
+        for part in parts:
+            layout = table_layout(*_select(columns, rows, part))
+            if layout is None:
+                break
+            fitted.append((part, layout))
+        else:
+            return fitted
+    return [(every, _TINY)]  # not even one column beside the first fits
 
 
 def _select(
@@ -108,23 +126,24 @@ def _heading_chars(column: Column) -> float:
 
 def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
     """One table, or several of its columns each when it is too wide for the page."""
-    head = list(islice(rows(), _SAMPLE_ROWS))
+    first = rows()
+    head = list(islice(first, _SAMPLE_ROWS))
     parts = split_columns(columns, head)
-    for n, part in enumerate(parts, 1):
+    for n, (part, layout) in enumerate(parts, 1):
         label = title if len(parts) == 1 else f"{title}, part {n} of {len(parts)}"
         yield f"\\paragraph{{{tex_text(label)}}}\\mbox{{}}\\\\[1ex]\n"
-        cols, sample = _select(columns, head, part)
-        body = ([r[i] for i in part] for r in rows())
-        yield from _tabular(cols, sample, body)
+        if len(parts) == 1:  # the whole table: the rows already started, read on
+            yield from _tabular(columns, layout, chain(head, first))
+        else:  # each part reads the rows afresh, keeping its own columns
+            cols = [columns[i] for i in part]
+            yield from _tabular(cols, layout, ([r[i] for i in part] for r in rows()))
         yield "\n"
 
 
-def _tabular(
-    columns: Sequence[Column], head: Sequence[list[str]], rows: Iterator[list[str]]
-) -> Iterator[str]:
-    """A longtable of every row in ``rows``; ``head`` (its first rows) decides the layout."""
+def _tabular(columns: Sequence[Column], layout: Layout, rows: Iterable[list[str]]) -> Iterator[str]:
+    """A longtable of every row in ``rows``, in the font size and spacing of ``layout``."""
     spec = "".join("r" if numeric_column(c) else "c" for c in columns)
-    size, tight = table_layout(columns, head) or ("\\tiny", True)
+    size, tight = layout
     group = bool(size or tight)
     if group:
         yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
