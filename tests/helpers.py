@@ -6,10 +6,13 @@ import io
 import os
 import subprocess
 import sys
+from collections import deque
+from collections.abc import Set
 from contextlib import redirect_stderr, redirect_stdout
 from dataclasses import dataclass
 
 from scanconv.cli import main
+from scanconv.records import Pixel
 
 
 @dataclass
@@ -38,3 +41,28 @@ def run_process(*args: str, env: dict[str, str] | None = None, timeout: float = 
         timeout=timeout,
     )
     return Result(proc.returncode, proc.stdout, proc.stderr)
+
+
+def assert_refused(r: Result, *words: str) -> None:
+    """Bad input: exit 2, nothing on stdout, one line on stderr naming the problem (each of
+    ``words``), and no traceback."""
+    assert r.code == 2, (r.code, r.out[:200], r.err)
+    assert r.out == ""
+    assert r.err.startswith("scanconv: error: ") and r.err.count("\n") == 1, r.err
+    assert r.err.endswith("\n")
+    assert "Traceback" not in r.err
+    for word in words:
+        assert word in r.err, (word, r.err)
+
+
+def connected(pixels: Set[Pixel]) -> bool:
+    """Every pixel reachable from any other through 8-neighbours (breadth-first search)."""
+    start = next(iter(pixels))
+    seen, todo = {start}, deque([start])
+    while todo:
+        x, y = todo.popleft()
+        for q in ((x + dx, y + dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1)):
+            if q in pixels and q not in seen:
+                seen.add(q)
+                todo.append(q)
+    return len(seen) == len(pixels)

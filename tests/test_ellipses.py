@@ -7,7 +7,6 @@ exact integer arithmetic, the midpoint circle (rx = ry), and, loosely, skimage's
 
 from __future__ import annotations
 
-from collections import deque
 from itertools import pairwise
 
 import pytest
@@ -17,6 +16,8 @@ from hypothesis import strategies as st
 from scanconv.circles import circle_solution
 from scanconv.ellipses import ellipse_solution, midpoint_ellipse
 from scanconv.records import Move
+
+from .helpers import connected
 
 Pixel = tuple[int, int]
 axis = st.integers(min_value=0, max_value=300)
@@ -33,21 +34,6 @@ def pixel_list(rx: int, ry: int, xc: int = 0, yc: int = 0) -> list[Pixel]:
 
 def quadrant(rx: int, ry: int) -> list[Pixel]:
     return [(0, ry), *(s.pixel for s in midpoint_ellipse(rx, ry))]
-
-
-def connected(pixels: set[Pixel]) -> bool:
-    """Every pixel reachable from any other through 8-neighbours (breadth-first search)."""
-    start = next(iter(pixels))
-    seen, todo = {start}, deque([start])
-    while todo:
-        x, y = todo.popleft()
-        for dx in (-1, 0, 1):
-            for dy in (-1, 0, 1):
-                q = (x + dx, y + dy)
-                if q in pixels and q not in seen:
-                    seen.add(q)
-                    todo.append(q)
-    return len(seen) == len(pixels)
 
 
 def touches_ellipse(p: Pixel, rx: int, ry: int) -> bool:

@@ -28,7 +28,7 @@ import pytest
 import scanconv
 from scanconv.expr import parse_exact
 
-from .helpers import run
+from .helpers import assert_refused, run
 
 ROOT = Path(__file__).resolve().parent.parent
 DOC = (ROOT / "docs" / "limits.md").read_text(encoding="utf-8")
@@ -196,10 +196,7 @@ def test_just_beyond_the_limit_is_refused_at_once(name, args, word, monkeypatch,
         peak = tracemalloc.get_traced_memory()[1]
     finally:
         tracemalloc.stop()
-    assert r.code == 2, (r.code, r.err)
-    assert r.out == ""
-    assert r.err.startswith("scanconv: error: ") and r.err.count("\n") == 1, r.err
-    assert word in r.err, r.err
+    assert_refused(r, word)
     assert elapsed < 1.0, f"refused after {elapsed:.2f} s"
     assert peak < 16 * 2**20, f"{peak / 2**20:.1f} MiB allocated before the refusal"
     assert not list(tmp_path.iterdir()), "a file was written for a refused input"
