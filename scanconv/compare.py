@@ -238,7 +238,7 @@ def _line_reasons(cells: dict[str, list[int]]) -> list[str]:
     if bres is not None and bres != ref:
         out.append(TIE)  # the only way they differ (see compare_lines' Notes; tested)
     if dda != ref:
-        # The DDA's major coordinate moves by at most 1 a step, from round(P1) to round(P2),
+        # The DDA's major coordinate moves by at most 1 a step, from P1 to P2 rounded half up,
         # so it covers the basic method's columns exactly; it differs within a column only.
         out.append(DDA_MANY if len(dda) > 1 else DDA_OFF)
     return out

@@ -808,9 +808,8 @@ def _ramp(levels: int) -> str:
 
 
 def shade(k: int, levels: int) -> str:
-    """The picture character of level ``k``: ``round(k (R - 1) / (L - 1))`` along the ramp.
-
-    Rounded half up. Up to 10 levels use :data:`SHADES`, more use
+    """The picture character of level ``k``: ``round_half_up(k (R - 1) / (L - 1))`` along the
+    ramp. Up to 10 levels use :data:`SHADES`, more use
     :data:`SHADES_LONG` (R characters); beyond R levels, neighbouring levels share a character.
 
     >>> shade(0, 8), shade(7, 8), shade(128, 256)

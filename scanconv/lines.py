@@ -109,8 +109,8 @@ def _orient(x1: int, y1: int, x2: int, y2: int) -> tuple:
 def dda(x1: Number, y1: Number, x2: Number, y2: Number) -> Iterator[Step]:
     """The simple DDA, from P1 to P2 as given, with exact increments.
 
-    ``Step.extra`` is ``(x_k, y_k, round(x_k), round(y_k))``; there are ``steps + 1`` rows, the
-    first plotting P1 and the last P2.
+    ``Step.extra`` is ``(x_k, y_k, round_half_up(x_k), round_half_up(y_k))``; there are
+    ``steps + 1`` rows, the first plotting P1 and the last P2.
 
     Notes
     -----
@@ -173,13 +173,13 @@ def dda_increments(x1: Number, y1: Number, x2: Number, y2: Number) -> tuple[Numb
 def basic(x1: Number, y1: Number, x2: Number, y2: Number) -> Iterator[Step]:
     """The direct method: step the major axis by 1, solve the line equation, round.
 
-    ``Step.extra`` is ``(major, minor_exact, minor_rounded)``: ``(x, y, round(y))`` when x is
-    the major axis, ``(y, x, round(x))`` when y is.
+    ``Step.extra`` is ``(major, minor_exact, minor_rounded)``: ``(x, y, round_half_up(y))``
+    when x is the major axis, ``(y, x, round_half_up(x))`` when y is.
 
     Notes
     -----
-    The major coordinate runs over the pixel centres from ``round(P1)`` to ``round(P2)`` in
-    the direction given; the minor coordinate is computed exactly from
+    The major coordinate runs over the pixel centres from ``round_half_up(P1)`` to
+    ``round_half_up(P2)`` in the direction given; the minor coordinate is computed exactly from
     ``y = y1 + m (x - x1)`` (or ``x = x1 + (y - y1) / m`` on steep lines) and rounded half up.
 
     Examples

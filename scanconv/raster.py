@@ -226,8 +226,8 @@ def line(
       ideal minor offset rounded half up, ties stepping, as the tie rule ``p_k = 0`` says.
     * ``dda``: ``round_half_up(x1 + k Δx / steps)`` for ``k = 0 .. steps``, and the same for y;
       a row that rounds to the pixel before it (fractional end points only) is dropped.
-    * ``basic``: the major coordinate runs from ``round(P1)`` to ``round(P2)``; the minor is
-      the line equation rounded half up.
+    * ``basic``: the major coordinate runs from ``round_half_up(P1)`` to
+      ``round_half_up(P2)``; the minor is the line equation rounded half up.
 
     Examples
     --------
