@@ -38,7 +38,7 @@ from typing import Any
 import numpy as np
 
 from scanconv import raster
-from scanconv.lines import bresenham
+from scanconv.algorithms.lines import bresenham
 
 Row = tuple[str, str, str, str, str]
 

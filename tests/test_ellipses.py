@@ -13,9 +13,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.circles import circle_solution
-from scanconv.ellipses import ellipse_solution, midpoint_ellipse
-from scanconv.records import Move
+from scanconv.answers.circle import circle_solution
+from scanconv.answers.ellipse import ellipse_solution
+from scanconv.algorithms.ellipses import midpoint_ellipse
+from scanconv.core.records import Move
 
 from .helpers import connected
 

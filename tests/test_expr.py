@@ -11,13 +11,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from scanconv.expr import (
-    MAX_BRACKETS,
-    MAX_LENGTH,
-    compile_expr,
-    parse_exact,
-    parse_value,
-)
+from scanconv.core.expr import MAX_BRACKETS, MAX_LENGTH, compile_expr, parse_exact, parse_value
 
 #: Each hostile input with a word its refusal message must contain.
 HOSTILE = [

@@ -18,7 +18,7 @@ import tracemalloc
 
 import pytest
 
-from scanconv.expr import MAX_BRACKETS, MAX_DEPTH, MAX_LENGTH, compile_expr, parse_exact
+from scanconv.core.expr import MAX_BRACKETS, MAX_DEPTH, MAX_LENGTH, compile_expr, parse_exact
 
 #: (issue item, formula, a word of the refusal)
 HOSTILE = [

@@ -19,9 +19,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv import figure
-from scanconv.lines import bresenham, dda, line_solution
-from scanconv.records import Column, Solution, Step
+from scanconv.render import figure
+from scanconv.algorithms.lines import bresenham, dda
+from scanconv.answers.line import line_solution
+from scanconv.core.records import Column, Solution, Step
 
 from .helpers import run
 
@@ -100,7 +101,7 @@ def test_axes_label_every_column_and_row():
 
 
 def test_curve_figure_draws_the_curve_and_the_control_polygon():
-    from scanconv.curves import bezier_solution
+    from scanconv.answers.curves import bezier_solution
 
     solution = bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8)
     root = _parse(figure.svg(solution))
@@ -277,7 +278,7 @@ def test_readme_line_figure_is_current():
 
 
 def test_readme_bezier_figure_is_well_formed():
-    from scanconv.curves import bezier_solution
+    from scanconv.answers.curves import bezier_solution
 
     solution = bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8)
     root = _parse((DOCS / "bezier-0-0-1-2-3-3-4-0.svg").read_text(encoding="utf-8"))
@@ -286,7 +287,7 @@ def test_readme_bezier_figure_is_well_formed():
 
 
 def test_readme_circle_figure_is_well_formed():
-    from scanconv.circles import circle_solution
+    from scanconv.answers.circle import circle_solution
 
     solution = circle_solution("midpoint", 10)
     root = _parse((DOCS / "circle-midpoint-10.svg").read_text(encoding="utf-8"))
@@ -298,7 +299,7 @@ def test_readme_circle_figure_is_well_formed():
 @pytest.mark.parametrize("r", [1, 5, 10, 23])
 @pytest.mark.parametrize("method", ["midpoint", "bresenham", "polynomial", "trig", "symmetric-dda"])
 def test_circle_figures_number_every_pixel_by_its_octant_step(method, r):
-    from scanconv.circles import circle_solution
+    from scanconv.answers.circle import circle_solution
 
     solution = circle_solution(method, r, 3, -2)
     labels = figure.step_labels(solution)
@@ -311,7 +312,7 @@ def test_circle_figures_number_every_pixel_by_its_octant_step(method, r):
 
 
 def test_ellipse_figure_draws_the_ellipse_and_marks_the_centre():
-    from scanconv.ellipses import ellipse_solution
+    from scanconv.answers.ellipse import ellipse_solution
 
     solution = ellipse_solution(8, 6, 2, 1)
     root = _parse(figure.svg(solution))
@@ -337,7 +338,7 @@ def test_png_draws_the_same_shapes():
     Image = pytest.importorskip("PIL.Image")
     from io import BytesIO
 
-    from scanconv.curves import bezier_solution
+    from scanconv.answers.curves import bezier_solution
 
     fig = figure.build(bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8))
     with Image.open(BytesIO(figure.to_png(fig, scale=1))) as img:

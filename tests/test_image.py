@@ -19,14 +19,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.image import (
-    MAX_CELLS,
-    Quantizer,
-    ramp,
-    ramp_solution,
-    sample_levels,
-    storage_solution,
-)
+from scanconv.answers.image import MAX_CELLS, Quantizer, ramp, ramp_solution, sample_levels, storage_solution
 
 from .helpers import run
 

@@ -26,24 +26,24 @@ import numpy as np
 import pytest
 
 import scanconv
-from scanconv.expr import parse_exact
+from scanconv.core.expr import parse_exact
 
 from .helpers import assert_refused, run
 
 ROOT = Path(__file__).resolve().parent.parent
 DOC = (ROOT / "docs" / "limits.md").read_text(encoding="utf-8")
-ROW = re.compile(r"^\| [^|]+ \| `([^`]+)` \| `(\w+)\.(\w+)` \|", re.M)
+ROW = re.compile(r"^\| [^|]+ \| `([^`]+)` \| `([\w.]+)\.(\w+)` \|", re.M)
 DOCUMENTED = {f"{m}.{n}": value for value, m, n in ROW.findall(DOC)}
 
 #: Constants whose names look like limits but bound no input.
-NOT_INPUT_LIMITS = {"raster._INT64_MAX"}
+NOT_INPUT_LIMITS = {"algorithms.raster._INT64_MAX"}
 
 POINTS_101 = [str(i % 7) for i in range(202)]
 POINTS_12 = [str(i % 5) for i in range(24)]
 
 #: For each limit: command lines just beyond it, with a word the one-line refusal must contain.
 BEYOND: dict[str, list[tuple[list[str], str]]] = {
-    "numeric.COORD_LIMIT": [
+    "core.numeric.COORD_LIMIT": [
         (["line", "0", "0", "1000000001", "0"], "1e+09"),
         (["circle", "1000000001"], "1e+09"),
         (["ellipse", "5", "1000000001"], "1e+09"),
@@ -53,76 +53,76 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
         (["storage", "8", "8", "--bits", "8", "--frames", "1000000001"], "1e+09"),
         (["bspline", "0", "0", "1", "1", "--degree", "1", "--knots", "0,0,1000000001,1"], "1e+09"),
     ],
-    "numeric._MAX_LITERAL": [(["line", "0" * 40 + "1", "0", "1", "1"], "longer than 40")],
-    "expr.MAX_LENGTH": [
+    "core.numeric._MAX_LITERAL": [(["line", "0" * 40 + "1", "0", "1", "1"], "longer than 40")],
+    "core.expr.MAX_LENGTH": [
         (["parametric", "custom", "--x", "t" + "+0" * 250, "--y", "t"], "at most 500"),
         (["sample", "x" + "+0" * 250, "--size", "4", "--levels", "4"], "at most 500"),
     ],
-    "expr.MAX_BRACKETS": [
+    "core.expr.MAX_BRACKETS": [
         (["parametric", "custom", "--x", "(" * 51 + "t" + ")" * 51, "--y", "t"], "at most 50"),
     ],
-    "expr.MAX_DEPTH": [(["parametric", "custom", "--x", "-" * 199 + "t", "--y", "t"], "200")],
-    "expr.MAX_EXPONENT": [
+    "core.expr.MAX_DEPTH": [(["parametric", "custom", "--x", "-" * 199 + "t", "--y", "t"], "200")],
+    "core.expr.MAX_EXPONENT": [
         (["parametric", "custom", "--x", "t**101", "--y", "t"], "<= 100"),
         (["sample", "x**-101", "--size", "4", "--levels", "4"], "<= 100"),
     ],
-    "expr.MAX_BITS": [
+    "core.expr.MAX_BITS": [
         (["parametric", "custom", "--x", "t**41", "--y", "t", "--t-range", "0", "2**100"], "4096"),
     ],
-    "image.MAX_BITS": [
+    "answers.image.MAX_BITS": [
         (["quantize", "--bits", "25"], "at most 24"),
         (["storage", "8", "8", "--bits", "25"], "at most 24"),
     ],
-    "image.MAX_LEVELS": [
+    "answers.image.MAX_LEVELS": [
         (["storage", "8", "8", "--levels", "16777217"], "16,777,216"),
         (["sample", "x", "--size", "4", "--levels", "16777217"], "16,777,216"),
         (["image", "ramp", "--levels", "16777217"], "16,777,216"),
     ],
-    "image.MAX_SIDE": [(["sample", "x", "--size", "4097x4096", "--levels", "4"], "4096 x 4096")],
-    "image.MAX_CELLS": [
+    "answers.image.MAX_SIDE": [(["sample", "x", "--size", "4097x4096", "--levels", "4"], "4096 x 4096")],
+    "answers.image.MAX_CELLS": [
         (["sample", "x", "--size", "1x16777217", "--levels", "4"], "16,777,216 cells"),
         (["image", "ramp", "--size", "16777217x1"], "16,777,216 cells"),
     ],
-    "curves.MAX_SAMPLES": [
+    "answers.curves.MAX_SAMPLES": [
         (["parametric", "circle", "--samples", "100001"], "at most 100000"),
         (["parametric", "custom", "--x", "t", "--y", "t", "-n", "100001"], "at most 100000"),
     ],
-    "curves.MAX_POINTS": [
+    "answers.curves.MAX_POINTS": [
         (["bezier", *POINTS_101], "at most 100 control points"),
         (["bspline", *POINTS_101], "at most 100 control points"),
         (["local-control", *POINTS_101, "--move", "0", "1", "1"], "at most 100 control points"),
         (["continuity", *POINTS_101, ":", "0", "0", "1", "1"], "at most 100 control points"),
     ],
-    "curves.MAX_DEGREE": [
+    "answers.curves.MAX_DEGREE": [
         (["bspline", *POINTS_12, "--degree", "11"], "at most 10"),
         (["local-control", *POINTS_12, "--move", "0", "1", "1", "--degree", "11"], "at most 10"),
     ],
-    "curves.MAX_WEIGHTS": [
+    "answers.curves.MAX_WEIGHTS": [
         (["bezier", "0", "0", "1", "1", "--samples", "50000"], "at most 100,000"),
         (["bspline", "0", "0", "1", "1", "--degree", "1", "-n", "50000"], "at most 100,000"),
         (["continuity", "0", "0", "1", "1", ":", "1", "1", "2", "2", "-n", "25000"], "100,000"),
     ],
-    "curves.MAX_CURVE_PIXELS": [
+    "answers.curves.MAX_CURVE_PIXELS": [
         (["bezier", "0", "0", "999985", "0", "--samples", "16"], "more than 1,000,000"),
         (["bspline", "0", "0", "999985", "0", "--degree", "1", "-n", "16"], "more than 1,000,000"),
         (["parametric", "line", "0", "0", "1000001", "0", "-n", "4"], "more than 1,000,000"),
         (["parametric", "circle", "--radius", "250001", "-n", "4"], "more than 1,000,000"),
     ],
-    "ellipses.MAX_AXIS": [(["ellipse", "1000001", "5"], "1e+06")],
-    "compare.MAX_LENGTH": [(["compare", "line", "0", "0", "3", "10001"], "at most 10000")],
-    "compare.MAX_RADIUS": [(["compare", "circle", "2001"], "at most 2000")],
-    "circles.SDDA_MAX_RADIUS": [(["circle", "16384", "--method", "symmetric-dda"], "16383")],
-    "figure.MAX_CELLS": [(["line", "0", "0", "198", "0", "--svg", "FIGURE"], "201 x 3")],
+    "algorithms.ellipses.MAX_AXIS": [(["ellipse", "1000001", "5"], "1e+06")],
+    "answers.compare.MAX_LENGTH": [(["compare", "line", "0", "0", "3", "10001"], "at most 10000")],
+    "answers.compare.MAX_RADIUS": [(["compare", "circle", "2001"], "at most 2000")],
+    "algorithms.circles.SDDA_MAX_RADIUS": [(["circle", "16384", "--method", "symmetric-dda"], "16383")],
+    "render.figure.MAX_CELLS": [(["line", "0", "0", "198", "0", "--svg", "FIGURE"], "201 x 3")],
 }
 
 #: A limit that is not a refusal: the grid is left out with a note, and the answer is complete.
-NOTED = {"grid.MAX_CELLS": (["line", "0", "0", "98", "0", "-f", "plain"], "101 x 3 cells")}
+NOTED = {"core.records.MAX_GRID_CELLS": (["line", "0", "0", "98", "0", "-f", "plain"], "101 x 3 cells")}
 
 ALLOCATORS = ("empty", "zeros", "ones", "full", "arange", "linspace", "meshgrid", "indices")
 
 
 def _constant(name: str) -> int:
-    module, attr = name.split(".")
+    module, attr = name.rsplit(".", 1)
     return getattr(importlib.import_module(f"scanconv.{module}"), attr)
 
 
@@ -131,7 +131,7 @@ def _limit_constants() -> set[str]:
     its own module (not imported under another name)."""
     found = set()
     for info in pkgutil.walk_packages(scanconv.__path__, "scanconv."):
-        if info.name == "scanconv.__main__":  # importing it runs the CLI
+        if info.name in ("scanconv.__main__", "scanconv.raster"):  # runs the CLI; an alias
             continue
         module = importlib.import_module(info.name)
         source = Path(module.__file__ or "").read_text(encoding="utf-8")
@@ -185,7 +185,7 @@ def test_just_beyond_the_limit_is_refused_at_once(name, args, word, monkeypatch,
 
     # A parametric curve's pixel path is known only from its samples: evaluating them (in
     # chunks of 4096) is the work that finds it; the pixels and the figure are never reached.
-    if not (name == "curves.MAX_CURVE_PIXELS" and args[0] == "parametric"):
+    if not (name == "answers.curves.MAX_CURVE_PIXELS" and args[0] == "parametric"):
         for fn in ALLOCATORS:
             monkeypatch.setattr(np, fn, allocation_reached)
     tracemalloc.start()
@@ -203,7 +203,7 @@ def test_just_beyond_the_limit_is_refused_at_once(name, args, word, monkeypatch,
 
 
 def test_the_grid_limit_leaves_the_grid_out_with_a_note():
-    args, word = NOTED["grid.MAX_CELLS"]
+    args, word = NOTED["core.records.MAX_GRID_CELLS"]
     r = run(*args)
     assert r.code == 0 and word in r.err and r.err.count("\n") == 1
     assert "(98, 0)" in r.out and " | " not in r.out
@@ -213,9 +213,11 @@ def test_the_grid_limit_leaves_the_grid_out_with_a_note():
 
 def test_exactly_at_each_limit_is_accepted():
     """The other side of each edge: the largest accepted value passes its check."""
-    from scanconv import curves, expr, figure, image, numeric
-    from scanconv.circles import circle_solution
-    from scanconv.lines import line_solution
+    from scanconv.answers import curves, image
+    from scanconv.core import expr, numeric
+    from scanconv.render import figure
+    from scanconv.answers.circle import circle_solution
+    from scanconv.answers.line import line_solution
 
     assert numeric.parse_number(str(numeric.COORD_LIMIT)) == 10**9
     assert numeric.parse_number("-" + str(numeric.COORD_LIMIT)) == -(10**9)

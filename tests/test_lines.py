@@ -13,9 +13,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.lines import basic, bresenham, dda, line_solution
-from scanconv.numeric import round_half_up
-from scanconv.records import Move
+from scanconv.algorithms.lines import basic, bresenham, dda
+from scanconv.answers.line import line_solution
+from scanconv.core.numeric import round_half_up
+from scanconv.core.records import Move
 
 coord = st.integers(min_value=-60, max_value=60)
 lines = st.tuples(coord, coord, coord, coord)

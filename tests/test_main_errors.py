@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-import scanconv.cli as cli
+import scanconv.cli.commands as cli
 
 from .helpers import run
 

@@ -17,9 +17,9 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from scanconv import raster
-from scanconv.circles import circle_solution
-from scanconv.ellipses import ellipse_solution
-from scanconv.lines import line_solution
+from scanconv.answers.circle import circle_solution
+from scanconv.answers.ellipse import ellipse_solution
+from scanconv.answers.line import line_solution
 
 coord = st.integers(min_value=-60, max_value=60)
 far = st.integers(min_value=-(10**9), max_value=10**9)

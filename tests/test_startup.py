@@ -14,7 +14,7 @@ import sys
 import pytest
 import typer
 
-from scanconv import cli
+from scanconv.cli import commands as cli
 
 PROBE = """
 import sys

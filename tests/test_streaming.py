@@ -14,9 +14,9 @@ from itertools import islice
 
 import pytest
 
-from scanconv import cli
-from scanconv.lines import line_solution
-from scanconv.records import Solution, Step
+from scanconv.cli import commands as cli
+from scanconv.answers.line import line_solution
+from scanconv.core.records import Solution, Step
 from scanconv.render import Format, Options, render
 from scanconv.render.text import BUFFER_ROWS
 

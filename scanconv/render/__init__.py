@@ -1,4 +1,4 @@
-"""Renderers: turn a :class:`~scanconv.records.Solution` into output, without printing.
+"""Renderers: turn a :class:`~scanconv.core.records.Solution` into output, without printing.
 
 :func:`render` is the one dispatch point for ``--format``. Every renderer is a generator that
 yields text chunks for stdout (each ending in a newline), :class:`Notice` objects for stderr,
@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from enum import Enum
 from typing import Any
 
-from ..records import Solution
+from ..core.records import Solution
 
 
 class Format(str, Enum):
@@ -33,7 +33,7 @@ class Options:
     """Rendering options shared by every format."""
 
     grid: bool = True
-    """Draw the text pixel grid (if it fits, see :mod:`scanconv.grid`)."""
+    """Draw the text pixel grid (if it fits, see :mod:`scanconv.render.grid`)."""
     origin: str = "bottom-left"
     """``bottom-left`` (y up, as in the notes) or ``top-left`` (screen addressing, y down)."""
     explain: bool = False
@@ -56,7 +56,7 @@ Chunk = Any  # str | Notice | a rich renderable
 def render(solution: Solution, fmt: Format, options: Options | None = None) -> Iterator[Chunk]:
     """Render ``solution`` in ``fmt``: the single dispatch for every ``--format``.
 
-    >>> from scanconv.lines import line_solution
+    >>> from scanconv.answers.line import line_solution
     >>> chunks = render(line_solution("bresenham", 0, 0, 2, 1), Format.csv)
     >>> print("".join(chunks), end="")
     k,p,decision,x,y,p_next

@@ -1,6 +1,6 @@
 """Cell and symbol formatting shared by the renderers.
 
-Decisions stay structured (:class:`~scanconv.records.Move`) until here; each format picks its
+Decisions stay structured (:class:`~scanconv.core.records.Move`) until here; each format picks its
 own glyphs. ``plain`` must be pure ASCII, so Unicode working (``Δx``, ``≥``, ``·``) is
 transliterated by :func:`ascii_text`; LaTeX gets math through :func:`tex_text`.
 """
@@ -12,119 +12,14 @@ from enum import Enum
 from fractions import Fraction
 from typing import Any
 
-from ..numeric import fmt, fmt_pixel, json_number
-from ..records import Column
-
-_ASCII = {
-    "Δ": "d",
-    "−": "-",
-    "≥": ">=",
-    "≤": "<=",
-    "≠": "!=",
-    "·": "*",
-    "×": "x",
-    "→": "->",
-    "≈": "~",
-    "²": "^2",
-    "³": "^3",
-    "√": "sqrt",
-    "ε": "eps",
-    "θ": "theta",
-    "π": "pi",
-    "°": " deg",
-    "₀": "0",
-    "₁": "1",
-    "₂": "2",
-    "ᵢ": "i",
-    "…": "...",
-    "–": "-",
-    "—": "-",
-    "’": "'",
-    "⌈": "ceil(",
-    "⌉": ")",
-    "⌊": "floor(",
-    "⌋": ")",
-    "∈": "in",
-}
-
-_TEX = {
-    "Δ": r"$\Delta$",
-    "≥": r"$\ge$",
-    "≤": r"$\le$",
-    "≠": r"$\ne$",
-    "·": r"$\cdot$",
-    "×": r"$\times$",
-    "→": r"$\to$",
-    "≈": r"$\approx$",
-    "²": r"$^2$",
-    "³": r"$^3$",
-    "√": r"$\surd$",
-    "ε": r"$\varepsilon$",
-    "θ": r"$\theta$",
-    "π": r"$\pi$",
-    "°": r"$^\circ$",
-    "−": "--",
-    "…": r"\ldots{}",
-    "–": "--",
-    "—": "---",
-    "⌈": r"$\lceil$",
-    "⌉": r"$\rceil$",
-    "⌊": r"$\lfloor$",
-    "⌋": r"$\rfloor$",
-    "∈": r"$\in$",
-}
-
-_TEX_SPECIAL = {
-    "\\": r"\textbackslash{}",
-    "&": r"\&",
-    "%": r"\%",
-    "$": r"\$",
-    "#": r"\#",
-    "_": r"\_",
-    "{": r"\{",
-    "}": r"\}",
-    "~": r"\textasciitilde{}",
-    "^": r"\textasciicircum{}",
-    "<": r"\textless{}",
-    ">": r"\textgreater{}",
-    "|": r"\textbar{}",
-}
-
-
-def ascii_text(s: str) -> str:
-    """Transliterate Unicode working to ASCII; anything unknown becomes ``?``.
-
-    >>> ascii_text("p0 = 2Δy - Δx = 2·4 - 8 ≥ 0")
-    'p0 = 2dy - dx = 2*4 - 8 >= 0'
-    """
-    if s.isascii():
-        return s
-    return "".join(ch if ch.isascii() else _ASCII.get(ch, "?") for ch in s)
-
-
-def tex_text(s: str) -> str:
-    """Escape text for LaTeX, turning known Unicode symbols into math.
-
-    >>> tex_text("p_k >= 0 chooses NE; 50% of Δx")
-    'p\\\\_k \\\\textgreater{}= 0 chooses NE; 50\\\\% of $\\\\Delta$x'
-    """
-    out = []
-    for ch in s:
-        if ch in _TEX_SPECIAL:
-            out.append(_TEX_SPECIAL[ch])
-        elif ch in _TEX:
-            out.append(_TEX[ch])
-        elif ch.isascii():
-            out.append(ch)
-        else:
-            out.append("?")
-    return "".join(out)
+from ..core.numeric import fmt, fmt_pixel, json_number
+from ..core.records import Column
 
 
 def cell(value: Any, column: Column) -> str:
     """Display text of one cell (Unicode-free for every value scanconv produces).
 
-    >>> from scanconv.records import Move
+    >>> from scanconv.core.records import Move
     >>> cell(Fraction(5, 2), Column("y", "y", "y", 3)), cell(Move.NE, Column("d", "d", "d"))
     ('2.500', 'NE')
     >>> cell((3, 4), Column("pixel", "", "")), cell(None, Column("p", "", ""))
@@ -150,7 +45,7 @@ def cell(value: Any, column: Column) -> str:
 def json_value(value: Any) -> Any:
     """A JSON-ready value: exact integers stay integers, other numbers become floats.
 
-    >>> from scanconv.records import Move
+    >>> from scanconv.core.records import Move
     >>> json_value((Fraction(1, 2), 3)), json_value(Move.SE), json_value(None)
     ([0.5, 3], 'SE', None)
     """

@@ -20,7 +20,7 @@ import io
 import json
 from collections.abc import Iterator
 
-from ..records import Solution
+from ..core.records import Solution
 from .cells import json_value
 
 

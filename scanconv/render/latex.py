@@ -19,10 +19,11 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Sequence
 from itertools import chain, islice
 
-from ..numeric import fmt_pixel
-from ..records import Column, Solution
+from ..core.numeric import fmt_pixel
+from ..core.records import Column, Solution
+from ..core.working import tex_text
 from . import Notice, Options
-from .cells import numeric_column, tex_text, wrap_items
+from .cells import numeric_column, wrap_items
 from .text import Rows, all_tables, figure_lines, pixel_count
 
 
@@ -59,7 +60,7 @@ def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> Layout
     The width is estimated from the headings and the first rows: about 4.8pt a character at
     10pt (digits are 5pt, points and commas less; a minus sign counts 1.6), plus the gaps.
 
-    >>> from scanconv.records import Column
+    >>> from scanconv.core.records import Column
     >>> cols = [Column(str(i), f"col {i}", "") for i in range(4)]
     >>> table_layout(cols, [["1.000"] * 4])
     ('', False)
@@ -87,7 +88,7 @@ def split_columns(
     every part repeating the first column (``k``, or the octant point of a symmetry table) so
     its rows can be read alone.
 
-    >>> from scanconv.records import Column
+    >>> from scanconv.core.records import Column
     >>> cols = [Column("k", "k", "")] + [Column("c", "(xc + x, yc + y)", "")] * 8
     >>> [part for part, _ in split_columns(cols, [])]
     [[0, 1, 2, 3, 4], [0, 5, 6, 7, 8]]

@@ -18,7 +18,7 @@ from rich import box
 from rich.table import Table as RichTable
 from rich.text import Text
 
-from ..records import Column, Solution
+from ..core.records import Column, Solution
 from . import Options
 from .cells import numeric_column
 from .text import all_tables, figure_lines, pixel_count, pixel_lines

@@ -14,11 +14,13 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from functools import partial
 from itertools import islice
 
-from .. import grid as gridmod
-from ..numeric import fmt_pixel
-from ..records import Column, Solution, Table, step_getter
+from ..core.numeric import fmt_pixel
+from ..core.records import Column, Figure, ShadedMatrix, Solution, Table, step_getter
+from ..core.working import ascii_text
 from . import Notice, Options
-from .cells import ascii_text, cell, numeric_column, wrap_items
+from . import grid as gridmod
+from .cells import cell, numeric_column, wrap_items
+from .shade import matrix_lines
 
 BUFFER_ROWS = 1000
 """Tables with more rows than this are streamed instead of padded."""
@@ -126,11 +128,20 @@ def figure_lines(solution: Solution, options: Options) -> tuple[list[str], list[
     """The ASCII figures under the answer (the pixel grid, a custom figure) and notices."""
     chunks = list(grid_block(solution, options))
     lines = [c for c in chunks if isinstance(c, str)]
-    if solution.figure is not None and options.grid:
-        if lines:
-            lines.append("")
-        lines.extend(solution.figure(options.origin))
+    if options.grid:
+        for figure in solution.figures:
+            drawn = figure_text(figure, options.origin)
+            if drawn and lines:
+                lines.append("")
+            lines.extend(drawn)
     return lines, [c for c in chunks if isinstance(c, Notice)]
+
+
+def figure_text(figure: Figure, origin: str) -> list[str]:
+    """The text lines of one of :attr:`Solution.figures <scanconv.core.records.Solution.figures>`."""
+    if isinstance(figure, ShadedMatrix):
+        return matrix_lines(figure)
+    return gridmod.figure_grid(figure, origin)
 
 
 Rows = Callable[[], Iterator[list[str]]]

@@ -10,10 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from .records import Pixel
-
-MAX_CELLS = 100
-"""Largest number of columns or rows drawn; a larger grid is left out with a note."""
+from ..core.records import MAX_GRID_CELLS as MAX_CELLS
+from ..core.records import Pixel, PixelFigure
 
 MARGIN = 1
 """Empty cells around the bounding box."""
@@ -93,3 +91,25 @@ def render_grid(
     direction = "y down (screen addressing)" if origin == "top-left" else "y up"
     lines.append(f"{legend}; x to the right, {direction}")
     return lines
+
+
+def figure_grid(figure: PixelFigure, origin: str) -> list[str]:
+    """The lines of a :class:`~scanconv.core.records.PixelFigure`: its title, then its grid
+    (or, for a titled figure too large to draw, why it is left out).
+
+    >>> print("\\n".join(figure_grid(PixelFigure(((0, 0),), ((1, 0),), (0, 0, 1, 0), "key", "A:"), "bottom-left")))
+    A:
+     1 | .  .  .  .
+     0 | .  #  o  .
+    -1 | .  .  .  .
+       +------------
+         -1 0  1  2
+    key; x to the right, y up
+    """
+    reason = too_large(figure.bbox)
+    lines = [] if figure.title is None else [figure.title]
+    if reason:
+        return [*lines, reason] if lines else []
+    return lines + render_grid(
+        figure.pixels, figure.bbox, origin=origin, marks=figure.marks, legend=figure.legend
+    )

@@ -20,10 +20,10 @@ from typing import Annotated, Any, NoReturn
 
 import typer
 
-from . import __version__
-from .numeric import parse_number
-from .records import Solution
-from .render import Format, Notice, Options, render
+from .. import __version__
+from ..core.numeric import parse_number
+from ..core.records import Solution
+from ..render import Format, Notice, Options, render
 
 PROG = "scanconv"
 
@@ -210,7 +210,7 @@ def emit(
 
 def write_figures(solution: Solution, origin: Origin, svg: Path | None, png: Path | None) -> None:
     """Draw the figure of ``solution`` and write it, atomically, as SVG and/or PNG."""
-    from . import figure
+    from ..render import figure
 
     fig = library_call(figure.build, solution, origin.value)
     if svg is not None:
@@ -313,7 +313,7 @@ def line(
 
     Example: scanconv line 2 2 10 6 --algo bresenham --svg line.svg
     """
-    from .lines import line_solution
+    from ..answers.line import line_solution
 
     solution = library_call(line_solution, algo.value, x1, y1, x2, y2)
     emit(
@@ -371,7 +371,7 @@ def _exact_values(texts: tuple[str, ...] | None) -> tuple[Any, ...] | None:
     """Constant expressions (``2*pi``, ``-1/3``) from the command line, exact when rational."""
     if texts is None:
         return None
-    from .expr import parse_exact
+    from ..core.expr import parse_exact
 
     return tuple(library_call(parse_exact, t) for t in texts)
 
@@ -407,7 +407,7 @@ def storage(
     Give exactly one of --levels, --bits, --binary, --color.
     Example: scanconv storage 1024 768 --levels 256
     """
-    from .image import storage_solution
+    from ..answers.image import storage_solution
 
     solution = library_call(
         storage_solution,
@@ -461,7 +461,7 @@ def quantize(
 
     Example: scanconv quantize --bits 3 --range 0 255
     """
-    from .image import quantize_solution
+    from ..answers.image import quantize_solution
 
     solution = library_call(
         quantize_solution,
@@ -523,7 +523,7 @@ def sample(
 
     Example: scanconv sample "x + y" --size 8x8 --levels 8
     """
-    from .image import parse_size, sample_levels, sample_solution
+    from ..answers.image import parse_size, sample_levels, sample_solution
 
     m, n = library_call(parse_size, size)
     sampled = library_call(
@@ -570,7 +570,7 @@ def image_ramp(
 
     Example: scanconv image ramp --size 8 --levels 8
     """
-    from .image import parse_size, ramp_solution
+    from ..answers.image import parse_size, ramp_solution
 
     m, n = library_call(parse_size, size)
     solution = library_call(ramp_solution, m, n, 8 if levels is None else levels)
@@ -605,7 +605,7 @@ def compare_line(
 
     Example: scanconv compare line 2 8 10 4
     """
-    from .compare import compare_lines
+    from ..answers.compare import compare_lines
 
     solution = library_call(compare_lines, x1, y1, x2, y2)
     emit(solution, fmt, grid=grid, origin=origin, output=output, explain=explain)
@@ -624,7 +624,7 @@ def compare_circle(
 
     Example: scanconv compare circle 10
     """
-    from .compare import compare_circles
+    from ..answers.compare import compare_circles
 
     solution = library_call(compare_circles, r)
     emit(solution, fmt, grid=grid, origin=origin, output=output, explain=explain)
@@ -672,14 +672,14 @@ Coords = Annotated[
 
 def _control_points(values: list[str]) -> list[tuple[Any, Any]]:
     """``X0 Y0 X1 Y1 ...`` as exact points (``ValueError`` for a bad number or an odd count)."""
-    from .curves import pairs
+    from ..answers.curves import pairs
 
     return pairs([parse_number(v) for v in values])
 
 
 def _parameter(text: str) -> Any:
     """A value of t: a number or a constant formula (exact when rational)."""
-    from .expr import parse_exact
+    from ..core.expr import parse_exact
 
     value = parse_exact(text)
     return value.numerator if isinstance(value, Fraction) and value.denominator == 1 else value
@@ -728,7 +728,7 @@ def _parametric(
     png: Path | None,
     **kwargs: Any,
 ) -> None:
-    from .curves import parametric_solution
+    from ..answers.curves import parametric_solution
 
     solution = library_call(parametric_solution, kind, **kwargs)
     _curve_emit(solution, fmt, grid, origin, output, explain, svg, png)
@@ -943,7 +943,7 @@ def bezier(
 
     Example: scanconv bezier 0 0 1 2 3 3 4 0 --samples 8   (or --at 0.5)
     """
-    from .curves import DEFAULT_SAMPLES, bezier_at_solution, bezier_solution
+    from ..answers.curves import DEFAULT_SAMPLES, bezier_at_solution, bezier_solution
 
     points = library_call(_control_points, coords)
     if at is not None:
@@ -983,7 +983,7 @@ def bspline(
 
     Example: scanconv bspline 0 0 1 2 3 3 4 0 5 2 --degree 2 --knots open
     """
-    from .curves import bspline_at_solution, bspline_solution, parse_knots
+    from ..answers.curves import bspline_at_solution, bspline_solution, parse_knots
 
     points = library_call(_control_points, coords)
     knot_spec = library_call(parse_knots, knots)
@@ -1033,7 +1033,7 @@ def continuity(
 
     Example: scanconv continuity 0 0 1 2 3 3 4 0 : 4 0 5 -3 7 -2 8 0
     """
-    from .curves import DEFAULT_SAMPLES, continuity_solution
+    from ..answers.curves import DEFAULT_SAMPLES, continuity_solution
 
     first, second = library_call(_two_segments, coords)
     solution = library_call(
@@ -1067,7 +1067,7 @@ def local_control(
 
     Example: scanconv local-control 0 0 1 2 3 3 4 0 5 2 7 1 --move 5 7 5 --degree 2
     """
-    from .curves import DEFAULT_SAMPLES, local_control_solution, parse_knots
+    from ..answers.curves import DEFAULT_SAMPLES, local_control_solution, parse_knots
 
     points = library_call(_control_points, coords)
     knot_spec = library_call(parse_knots, knots)
@@ -1155,7 +1155,7 @@ def circle(
 
     Example: scanconv circle 8 --center 10 10 --method bresenham
     """
-    from .circles import circle_solution
+    from ..answers.circle import circle_solution
 
     xc, yc = center or (0, 0)
     solution = library_call(circle_solution, method.value, r, xc, yc, rounding.value)
@@ -1188,7 +1188,7 @@ def ellipse(
 
     Example: scanconv ellipse 8 6 --center 0 0
     """
-    from .ellipses import ellipse_solution
+    from ..answers.ellipse import ellipse_solution
 
     xc, yc = center or (0, 0)
     solution = library_call(ellipse_solution, rx, ry, xc, yc)

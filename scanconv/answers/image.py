@@ -22,13 +22,12 @@ default, as everywhere in scanconv. Nothing here prints; the solutions are rende
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterator
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
-from .grid import MAX_CELLS as PICTURE_LIMIT
-from .numeric import (
+from ..core.numeric import (
     Number,
     as_int,
     check_between,
@@ -37,9 +36,9 @@ from .numeric import (
     fmt_short,
     normalize,
     paren,
-    round_half_up,
 )
-from .records import Column, Quantity, Solution, Table
+from ..core.records import MAX_GRID_CELLS as PICTURE_LIMIT
+from ..core.records import Column, Quantity, ShadedMatrix, Solution, Table
 
 if TYPE_CHECKING:  # numpy is imported where arrays are made: storage and quantize start faster
     import numpy as np
@@ -79,12 +78,6 @@ GRAY_NAMES: dict[int, tuple[str, ...]] = {
     ),
 }
 """Gray-level names by bits: 3 bits are the notes' table; 1 and 2 bits name the same ends."""
-
-SHADES = "@%#*+=-:. "
-"""Picture characters from darkest (black) to lightest (white), for up to 10 levels."""
-
-SHADES_LONG = "@B%8&WM#*oahkbdpqwmZO0QLCJUYXzcvunxrjft/()1{}[]?-_+~<>i!lI;:,^'. "
-"""A longer dark-to-light ramp (Paul Bourke's, without ``$ \\ | " ```), for up to 65 levels."""
 
 RECON = ("midpoint", "lower")
 """Reconstruction conventions of :class:`Quantizer`."""
@@ -803,71 +796,6 @@ def _quantizer_note(q: Quantizer) -> str:
 # --- matrices: the shaded picture and the table ---------------------------------------------
 
 
-def _ramp(levels: int) -> str:
-    return SHADES if levels <= len(SHADES) else SHADES_LONG
-
-
-def shade(k: int, levels: int) -> str:
-    """The picture character of level ``k``: ``round_half_up(k (R - 1) / (L - 1))`` along the
-    ramp. Up to 10 levels use :data:`SHADES`, more use
-    :data:`SHADES_LONG` (R characters); beyond R levels, neighbouring levels share a character.
-
-    >>> shade(0, 8), shade(7, 8), shade(128, 256)
-    ('@', ' ', 'u')
-    """
-    ramp = _ramp(levels)
-    return ramp[round_half_up(Fraction(k * (len(ramp) - 1), levels - 1))]
-
-
-def shade_chars(levels: int) -> str:
-    """The picture characters of levels ``0 .. L - 1``, darkest first (the ramp if L > R).
-
-    >>> shade_chars(8), shade_chars(2)
-    ('@%*+=-. ', '@ ')
-    """
-    ramp = _ramp(levels)
-    if levels > len(ramp):
-        return ramp
-    return "".join(shade(k, levels) for k in range(levels))
-
-
-def shade_lines(rows: Iterable[Sequence[int]], levels: int, width: int) -> list[str]:
-    """A shaded text picture of a level matrix, framed, with a legend.
-
-    >>> print("\\n".join(shade_lines([[0, 1], [1, 0]], 2, 2)))
-    +--+
-    |@ |
-    | @|
-    +--+
-    shades: '@' = 0 (black), ' ' = 1 (white); row 0 at the top
-    """
-    chars = shade_chars(levels)
-    border = "+" + "-" * width + "+"
-    lines = [border]
-    # shade_lines(ramp 8x8, L=8) -> |@%*+=-. | ; |%*+=-. .| ; ...
-    for row in rows:
-        lines.append("|" + "".join(shade(int(v), levels) for v in row) + "|")
-    lines.append(border)
-    if levels <= 16 and len(chars) == levels:
-        legend = ", ".join(
-            f"{chars[k]!r} = {k}"
-            + (" (black)" if k == 0 else " (white)" if k == levels - 1 else "")
-            for k in range(levels)
-        )
-    elif len(chars) == levels:
-        legend = (
-            f"{chars[0]!r} = 0 (black) to {chars[-1]!r} = {levels - 1} (white), one character "
-            f"per level, darkest first: {chars}"
-        )
-    else:
-        legend = (
-            f"{chars[0]!r} = 0 (black) to {chars[-1]!r} = {levels - 1} (white); {levels} levels "
-            f"share {len(chars)} characters in bands, darkest first: {chars}"
-        )
-    lines.append(f"shades: {legend}; row 0 at the top")
-    return lines
-
-
 def matrix_columns(n: int) -> tuple[Column, ...]:
     """Columns of a level matrix: the row index ``i``, then one per column ``j = 0 .. N-1``."""
     return (Column("i", "i", "i"), *(Column(str(j), str(j), str(j)) for j in range(n)))
@@ -983,7 +911,7 @@ def ramp_solution(m: Number, n: Number, levels: Number) -> Solution:
             *((note,) if note else ()),
         ),
         tables=(Table("Gray levels f(i, j)", matrix_columns(N), rows),),
-        figure=None if note else (lambda _origin: shade_lines((r[1:] for r in rows()), L, N)),
+        figures=() if note else (ShadedMatrix(tuple(tuple(r[1:]) for r in rows()), L, N),),
     )
 
 
@@ -1073,7 +1001,7 @@ def sample_levels(
     integer coordinates). Column ``j`` samples ``x_j = X0 + j Δx`` with ``Δx = (X1 - X0)/(N - 1)``;
     row ``i`` samples ``y_i = Y1 - i Δy`` (row 0 at the top, y up) or, with
     ``origin="top-left"``, ``y_i = Y0 + i Δy`` (y down, screen addressing). f is evaluated in
-    float64 by the safe evaluator :func:`scanconv.expr.compile_expr`, in blocks of
+    float64 by the safe evaluator :func:`scanconv.core.expr.compile_expr`, in blocks of
     :data:`BLOCK_SAMPLES` samples. The samples are quantized over ``value_range`` (default: the
     smallest and largest sample) by a real :class:`Quantizer`:
     ``level = min(⌊(f - f_min) L / (f_max - f_min)⌋, L - 1)``; samples outside a given range
@@ -1091,7 +1019,7 @@ def sample_levels(
     """
     import numpy as np
 
-    from .expr import compile_expr
+    from ..core.expr import compile_expr
 
     M, N, L = positive(m, "M (rows)"), positive(n, "N (columns)"), check_levels(levels)
     check_cells(M, N)
@@ -1159,7 +1087,7 @@ def sample_solution(s: Sampled) -> Solution:
     M, N = s.levels.shape
     L, origin, expr = s.L, s.origin, s.expr
     x0, x1, y0, y1 = s.domain
-    from .render.cells import tex_text
+    from ..core.working import tex_text
 
     shown = " ".join(expr.split())
     dom = f"x ∈ [{_show(x0)}, {_show(x1)}], y ∈ [{_show(y0)}, {_show(y1)}]"
@@ -1264,7 +1192,9 @@ def sample_solution(s: Sampled) -> Solution:
         derived=tuple(derived),
         notes=tuple(notes),
         tables=(Table("Quantized levels (row i, column j)", matrix_columns(N), rows),),
-        figure=None if picture_note else (lambda _origin: shade_lines(iter(levels_m), L, N)),
+        figures=()
+        if picture_note
+        else (ShadedMatrix(tuple(tuple(r) for r in levels_m.tolist()), L, N),),
         data={"x": s.x.tolist(), "y": s.y.tolist()},
     )
 

@@ -6,15 +6,15 @@ the knots are rational, ``t_k`` and every weight and coordinate are exact fracti
 show them to 3 decimals. Transcendental values (``cos t``) are floats.
 
 Rasterizing: each sample point becomes a pixel by the one rounding rule, ``floor(v + 1/2)``
-(:func:`~scanconv.numeric.round_half_up`); a float is first written to 9 decimals, so that
+(:func:`~scanconv.core.numeric.round_half_up`); a float is first written to 9 decimals, so that
 float noise (``5 sin(pi/6) = 2.4999999999999996``) cannot move a pixel. Successive sample pixels
-are joined with Bresenham's line (:func:`scanconv.lines.bresenham`), so the plotted curve is
+are joined with Bresenham's line (:func:`scanconv.algorithms.lines.bresenham`), so the plotted curve is
 8-connected; a pixel reached twice is plotted once (:func:`curve_pixels`).
 
-The algorithms are generators of :class:`~scanconv.records.Step` records with ``p`` and
+The algorithms are generators of :class:`~scanconv.core.records.Step` records with ``p`` and
 ``decision`` ``None`` and the algorithm's columns in ``extra``: :func:`parametric`,
 :func:`bezier`, :func:`de_casteljau` and :func:`bspline`. The ``*_solution`` functions wrap them
-with the working an exam answer writes (:class:`~scanconv.records.Solution`).
+with the working an exam answer writes (:class:`~scanconv.core.records.Solution`).
 """
 
 from __future__ import annotations
@@ -30,9 +30,9 @@ from typing import Any
 
 import numpy as np
 
-from .expr import MAX_BITS, Expr, compile_expr
-from .lines import bresenham
-from .numeric import (
+from ..algorithms.lines import bresenham
+from ..core.expr import MAX_BITS, Expr, compile_expr
+from ..core.numeric import (
     COORD_LIMIT,
     Number,
     check_between,
@@ -43,7 +43,7 @@ from .numeric import (
     paren,
     round_half_up,
 )
-from .records import Column, Pixel, Quantity, Solution, Step, Table
+from ..core.records import Column, Pixel, PixelFigure, Quantity, Solution, Step, Table
 
 Value = Number | float
 """A coordinate or parameter value: exact where the input is rational, else a float."""
@@ -151,7 +151,7 @@ def check_path(polygons: Iterable[Sequence[Point]], samples: int) -> None:
 
 
 def check_exact(values: Iterable[Any], what: str) -> None:
-    """Refuse exact values with more than :data:`~scanconv.expr.MAX_BITS` bits, too long to show.
+    """Refuse exact values with more than :data:`~scanconv.core.expr.MAX_BITS` bits, too long to show.
 
     >>> check_exact([Fraction(1, 3**3000)], "B(t)")
     Traceback (most recent call last):
@@ -201,7 +201,7 @@ def sample_ts(t0: Value, t1: Value, samples: int) -> Iterator[Value]:
 def coord(v: Value) -> int:
     """The pixel coordinate of ``v``: ``floor(v + 1/2)``; a float is taken to 9 decimals first.
 
-    Raises ``ValueError`` beyond :data:`~scanconv.numeric.COORD_LIMIT`.
+    Raises ``ValueError`` beyond :data:`~scanconv.core.numeric.COORD_LIMIT`.
 
     >>> coord(Fraction(5, 2)), coord(5 * math.sin(math.pi / 6)), coord(-2.5)
     (3, 3, -2)
@@ -228,7 +228,7 @@ def curve_pixel(x: Value, y: Value) -> Pixel:
 def _segment(a: Pixel, b: Pixel) -> Iterator[Pixel]:
     """Bresenham's pixels from ``a`` (excluded) to ``b`` (included), in that order.
 
-    :func:`~scanconv.lines.bresenham` walks toward increasing major coordinate; a segment going
+    :func:`~scanconv.algorithms.lines.bresenham` walks toward increasing major coordinate; a segment going
     the other way is drawn as the point reflection of the walk from ``-a`` to ``-b``, so pixels
     stream in curve order without being buffered.
 
@@ -415,7 +415,7 @@ def parametric(
 ) -> Iterator[Step]:
     """Tabulate the parametric curve ``(x(t), y(t))`` for ``t0 <= t <= t1``.
 
-    ``x`` and ``y`` are formulas in ``t`` (see :mod:`scanconv.expr`). Yields ``samples + 1``
+    ``x`` and ``y`` are formulas in ``t`` (see :mod:`scanconv.core.expr`). Yields ``samples + 1``
     steps with ``extra = (t, x(t), y(t))`` and the rounded point as ``pixel``.
 
     Notes
@@ -628,7 +628,7 @@ def _bound(v: Value | str) -> _Range:
     """A ``--t-range`` bound: a number, or a formula such as ``2*pi`` (exact if rational)."""
     if not isinstance(v, str):
         return _Range(_norm(v))
-    from .expr import parse_exact
+    from ..core.expr import parse_exact
 
     value = parse_exact(v)
     if isinstance(value, Fraction):
@@ -1140,7 +1140,7 @@ def parse_knots(text: str) -> str | tuple[Fraction, ...]:
     >>> parse_knots("0, 1/2,1")
     (Fraction(0, 1), Fraction(1, 2), Fraction(1, 1))
     """
-    from .numeric import parse_number
+    from ..core.numeric import parse_number
 
     s = text.strip().lower()
     if s in KNOTS:
@@ -1901,24 +1901,11 @@ def local_control_solution(
         _moved_quantity("bspline", s_moved, total, s_rm, s_add),
     ]
 
-    def figure(origin: str) -> list[str]:
-        from .grid import render_grid, too_large
-
-        out: list[str] = []
-        for name, before, aft in (
-            ("Bezier", z_before, z_after),
-            ("B-spline", s_before, s_after),
-        ):
-            box = _bbox([*before, *aft])
-            out.append(f"{name}:")
-            reason = too_large(box)
-            if reason:
-                out.append(reason)
-            else:
-                legend = "# = after the move only, o = before only, @ = both"
-                out.extend(render_grid(aft, box, origin=origin, marks=before, legend=legend))
-            out.append("")
-        return out[:-1]
+    legend = "# = after the move only, o = before only, @ = both"
+    figures = tuple(
+        PixelFigure(tuple(aft), tuple(before), _bbox([*before, *aft]), legend, f"{name}:")
+        for name, before, aft in (("Bezier", z_before, z_after), ("B-spline", s_before, s_after))
+    )
 
     return Solution(
         primitive="curve",
@@ -1955,7 +1942,7 @@ def local_control_solution(
             "B-splines have local control (N_{i,p} vanishes outside [u_i, u_(i+p+1)]).",
             _JOIN_NOTE,
         ),
-        figure=figure,
+        figures=figures,
         data={
             "bezier_samples_moved": z_moved,
             "bspline_samples_moved": s_moved,

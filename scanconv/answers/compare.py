@@ -6,8 +6,8 @@ method plots, and, where they differ, the reason (a tie broken differently, a DD
 not on a pixel centre, ...), each reason explained once in the notes with its numbers.
 :func:`compare_circles` does the same for the circle methods over the first octant.
 
-A comparison is a :class:`~scanconv.records.Solution` with no step table: its table is a
-secondary :class:`~scanconv.records.Table`, and its text figure marks the pixels on which the
+A comparison is a :class:`~scanconv.core.records.Solution` with no step table: its table is a
+secondary :class:`~scanconv.core.records.Table`, and its text figure marks the pixels on which the
 methods disagree.
 """
 
@@ -17,9 +17,8 @@ from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 from typing import Any
 
-from . import grid as gridmod
-from .numeric import Number, fmt, fmt_short, normalize
-from .records import Column, Pixel, Solution, Table
+from ..core.numeric import Number, fmt, fmt_short, normalize
+from ..core.records import Column, Pixel, PixelFigure, Solution, Table
 
 LINE_METHODS = ("basic", "dda", "bresenham")
 """The line algorithms compared, in the order of the table's columns."""
@@ -155,7 +154,7 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
     (3, Fraction(15, 2), 8, 8, 7, 'tie')
     (4, 7, 7, 7, 7, None)
     """
-    from .lines import line_solution
+    from .line import line_solution
 
     length = max(abs(Fraction(x2 - x1)), abs(Fraction(y2 - y1)))
     if length > MAX_LENGTH:
@@ -224,7 +223,7 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
         derived=derived,
         notes=tuple(notes),
         tables=tuple(tables),
-        figure=_disagreement_figure(all_pixels),
+        figures=_disagreement_figure(all_pixels),
         geometry={"line": (x1, y1, x2, y2)},
         data={"methods": list(methods), "columns_differing": len(differing)},
     )
@@ -313,28 +312,22 @@ def _dda_points(sol: Solution, steep: bool) -> dict[int, list[tuple[Number, Numb
     return out
 
 
-def _disagreement_figure(pixels: dict[str, list[Pixel]]) -> Callable[[str], list[str]] | None:
-    """A text grid: ``#`` where every method plots the pixel, ``o`` where only some do."""
+def _disagreement_figure(pixels: dict[str, list[Pixel]]) -> tuple[PixelFigure, ...]:
+    """A grid: ``#`` where every method plots the pixel, ``o`` where only some do."""
     sets = [set(p) for p in pixels.values()]
     union = set().union(*sets)
     if not union:
-        return None
+        return ()
     agreed = set.intersection(*sets)
     xs, ys = [p[0] for p in union], [p[1] for p in union]
-    bbox = (min(xs), min(ys), max(xs), max(ys))
-    if gridmod.too_large(bbox):
-        return None
-
-    def figure(origin: str) -> list[str]:
-        return gridmod.render_grid(
-            sorted(agreed),
-            bbox,
-            origin=origin,
-            marks=sorted(union - agreed),
+    return (
+        PixelFigure(
+            tuple(sorted(agreed)),
+            tuple(sorted(union - agreed)),
+            (min(xs), min(ys), max(xs), max(ys)),
             legend="# = every method plots it, o = only some do (see the table)",
-        )
-
-    return figure
+        ),
+    )
 
 
 # --- circles -------------------------------------------------------------------------------------
@@ -363,7 +356,9 @@ def compare_circles(r: Number) -> Solution:
     2 5 5 5 5 5, 4 SDDA twice
     3 4 4 4 4 4, 3 SDDA twice
     """
-    from .circles import SDDA_MAX_RADIUS, _sqrt6, check_integer, circle_solution
+    from ..algorithms.circles import SDDA_MAX_RADIUS, sqrt6
+    from ..core.checks import check_integer
+    from .circle import circle_solution
 
     ir = check_integer(r, "radius", negative=False)
     if ir > MAX_RADIUS:
@@ -385,7 +380,7 @@ def compare_circles(r: Number) -> Solution:
     last = {m: max(cols[m], default=-1) for m in methods}
 
     def exact(x: int) -> Number:
-        return normalize(_sqrt6(ir * ir - x * x))
+        return normalize(sqrt6(ir * ir - x * x))
 
     def rows() -> Iterator[tuple[Any, ...]]:
         for x in xs:
@@ -421,7 +416,7 @@ def compare_circles(r: Number) -> Solution:
         derived=derived,
         notes=tuple(notes),
         tables=(Table("First octant side by side (y for each x)", columns, rows),),
-        figure=_disagreement_figure({m: _plotted(sols[m]) for m in methods}),
+        figures=_disagreement_figure({m: _plotted(sols[m]) for m in methods}),
         geometry={"circle": (0, 0, ir)},
         data={"methods": list(methods), "columns_differing": len(differing)},
     )

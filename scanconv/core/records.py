@@ -126,6 +126,45 @@ class Table:
     """A fresh iterable of rows each time it is called."""
 
 
+MAX_GRID_CELLS = 100
+"""Largest number of columns or rows of a text figure (the pixel grid, a shaded picture); a
+larger one is left out with a note."""
+
+
+@dataclass(frozen=True, slots=True)
+class PixelFigure:
+    """A text grid of two pixel sets, drawn under the answer by :mod:`scanconv.render`: ``#``
+    where :attr:`pixels` has a pixel, ``o`` where :attr:`marks` has one, ``@`` where both do."""
+
+    pixels: tuple[Pixel, ...]
+    """The pixels drawn ``#``."""
+    marks: tuple[Pixel, ...]
+    """The pixels drawn ``o``."""
+    bbox: tuple[int, int, int, int]
+    """``(xmin, ymin, xmax, ymax)`` the grid covers (plus the usual margin)."""
+    legend: str | None = None
+    """What ``#`` and ``o`` mean here; ``None``: the pixel grid's own key."""
+    title: str | None = None
+    """A line above the grid. A titled figure that is too large says so under its title; an
+    untitled one is left out silently."""
+
+
+@dataclass(frozen=True, slots=True)
+class ShadedMatrix:
+    """A matrix of gray levels, drawn as a shaded text picture (level 0 black)."""
+
+    rows: tuple[tuple[int, ...], ...]
+    """The levels, row 0 first (drawn at the top)."""
+    levels: int
+    """The number of gray levels L (levels run 0 .. L - 1)."""
+    width: int
+    """Cells per row."""
+
+
+Figure = PixelFigure | ShadedMatrix
+"""What an answer asks :mod:`scanconv.render` to draw under it, besides its own pixel grid."""
+
+
 @dataclass(slots=True)
 class Solution:
     """A worked solution: everything a renderer needs, computed lazily and exactly.
@@ -165,10 +204,9 @@ class Solution:
     same steps split up (the ellipse's two regions); csv and json still carry every step."""
     marks: tuple[Pixel, ...] = ()
     """Points drawn differently in the grid (control points, the centre)."""
-    figure: Callable[[str], list[str]] | None = None
-    """Extra ASCII figure lines (a shaded picture of an image matrix, the grids of a
-    comparison), given the origin (``"bottom-left"`` or ``"top-left"``) for those that are
-    coordinate grids."""
+    figures: tuple[Figure, ...] = ()
+    """Extra figures drawn under the pixel grid (a shaded picture of an image matrix, the grids
+    of a comparison): data only, drawn by :mod:`scanconv.render`."""
     geometry: dict[str, Any] = field(default_factory=dict)
     """The ideal primitive, for figures drawn over the pixels. Keys (all optional):
     ``line``: ``(x1, y1, x2, y2)``; ``circle``: ``(xc, yc, r)``; ``ellipse``:

@@ -1,7 +1,7 @@
 """Figures of a worked solution, as the textbooks draw them beside the step table.
 
 :func:`build` lays out a :class:`Figure` (a list of shapes in picture coordinates) from a
-:class:`~scanconv.records.Solution`; :func:`to_svg` writes it as SVG text. Nothing here prints
+:class:`~scanconv.core.records.Solution`; :func:`to_svg` writes it as SVG text. Nothing here prints
 or writes files: the CLI's ``--svg FILE`` does that, atomically.
 
 What the figure shows:
@@ -40,8 +40,8 @@ from itertools import pairwise
 from typing import Any, NamedTuple
 from xml.sax.saxutils import escape
 
-from .numeric import round_half_up
-from .records import Pixel, Solution
+from ..core.numeric import round_half_up
+from ..core.records import Pixel, Solution
 
 CELL = 32
 """Side of one pixel cell, in SVG user units (px)."""
@@ -166,7 +166,7 @@ def mirror_images(pixel: Pixel, symmetry: int, center: tuple[Any, Any]) -> Itera
 def label_offset(solution: Solution) -> int:
     """1 when the step table's pixel column is ``(x_{k+1}, y_{k+1})``, else 0.
 
-    >>> from scanconv.lines import line_solution
+    >>> from scanconv.answers.line import line_solution
     >>> label_offset(line_solution("bresenham", 2, 2, 10, 6)), label_offset(
     ...     line_solution("dda", 2, 2, 10, 6))
     (1, 0)
@@ -180,7 +180,7 @@ def label_offset(solution: Solution) -> int:
 def step_labels(solution: Solution) -> dict[Pixel, int]:
     """The step number of every plotted pixel that has one (see the module's notes).
 
-    >>> from scanconv.lines import line_solution
+    >>> from scanconv.answers.line import line_solution
     >>> labels = step_labels(line_solution("bresenham", 2, 2, 10, 6))
     >>> labels[(2, 2)], labels[(3, 3)], labels[(10, 6)]
     (0, 1, 8)
@@ -224,7 +224,7 @@ def _points(geometry: dict[str, Any]) -> Iterator[tuple[float, float]]:
 def extent(solution: Solution, pixels: Iterable[Pixel]) -> tuple[int, int, int, int]:
     """``(xmin, ymin, xmax, ymax)`` of the cells drawn, margin included.
 
-    >>> from scanconv.lines import line_solution
+    >>> from scanconv.answers.line import line_solution
     >>> sol = line_solution("bresenham", 2, 2, 10, 6)
     >>> extent(sol, sol.pixels())
     (1, 1, 11, 7)
@@ -284,7 +284,7 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
     Raises ``ValueError`` if the answer plots no pixels or the figure would be more than
     :data:`MAX_CELLS` cells wide or high.
 
-    >>> from scanconv.lines import line_solution
+    >>> from scanconv.answers.line import line_solution
     >>> fig = build(line_solution("bresenham", 2, 2, 10, 6))
     >>> fig.count("pixel"), fig.count("ideal"), fig.count("step"), fig.height
     (9, 1, 9, 340.0)
@@ -439,7 +439,7 @@ def _svg_element(s: Shape) -> str:
 def to_svg(fig: Figure) -> str:
     """The figure as a standalone SVG document.
 
-    >>> from scanconv.lines import line_solution
+    >>> from scanconv.answers.line import line_solution
     >>> svg = to_svg(build(line_solution("dda", 0, 0, 2, 1)))
     >>> svg.splitlines()[1][:40]
     '<svg xmlns="http://www.w3.org/2000/svg" '
@@ -492,7 +492,7 @@ def to_png(fig: Figure, scale: int = 2) -> bytes:
     The same shapes and colours as the SVG, drawn 2x larger then scaled down so edges are
     smooth. Raises ``ModuleNotFoundError`` without Pillow.
 
-    >>> from scanconv.lines import line_solution
+    >>> from scanconv.answers.line import line_solution
     >>> to_png(build(line_solution("dda", 0, 0, 2, 1)))[:8]
     b'\\x89PNG\\r\\n\\x1a\\n'
     """

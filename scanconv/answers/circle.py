@@ -1,0 +1,457 @@
+"""The worked answer of a circle: the method's octant table, the 8-way symmetry table and
+the pixels."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Iterator
+from fractions import Fraction
+
+from ..algorithms.circles import (
+    ALIASES,
+    FLOAT_METHODS,
+    METHODS,
+    SDDA_MAX_RADIUS,
+    SQRT_PLACES,
+    bresenham,
+    images,
+    midpoint,
+    polynomial,
+    rounder,
+    sqrt6,
+    symmetric_dda,
+    symmetric_pixels,
+    trig,
+    trig_last,
+)
+from ..core.checks import check_integer
+from ..core.numeric import (
+    Number,
+    fmt,
+    fmt_value,
+)
+from ..core.records import Column, Pixel, Quantity, Solution, Step, Table
+
+SYMMETRY_HEADS = (
+    ("(xc+x, yc+y)", "(x_c+x, y_c+y)"),
+    ("(xc-x, yc+y)", "(x_c-x, y_c+y)"),
+    ("(xc+x, yc-y)", "(x_c+x, y_c-y)"),
+    ("(xc-x, yc-y)", "(x_c-x, y_c-y)"),
+    ("(xc+y, yc+x)", "(x_c+y, y_c+x)"),
+    ("(xc-y, yc+x)", "(x_c-y, y_c+x)"),
+    ("(xc+y, yc-x)", "(x_c+y, y_c-x)"),
+    ("(xc-y, yc-x)", "(x_c-y, y_c-x)"),
+)
+"""Headings of the symmetry tables, in the notes' order (the ellipse uses the first 4)."""
+
+
+def symmetry_table(
+    points: Callable[[], Iterable[Pixel]],
+    mirror: Callable[[int, int, int, int], tuple[Pixel, ...]],
+    xc: int,
+    yc: int,
+) -> Table:
+    """The n-way symmetry table: one row per computed point (a repeated point once), its
+    images in the columns. ``mirror`` is :func:`images` (8-way) or the ellipse's (4-way)."""
+    n = len(mirror(0, 0, 0, 0))
+
+    def rows() -> Iterator[tuple[Pixel, ...]]:
+        last = None
+        for p in points():
+            if p != last:
+                yield (p, *mirror(p[0], p[1], xc, yc))
+            last = p
+
+    return Table(
+        title=f"{n}-way symmetry about the centre ({xc}, {yc})",
+        columns=(
+            Column("point", "(x, y)", "(x, y)"),
+            *(Column(f"point_{i}", t, tex) for i, (t, tex) in enumerate(SYMMETRY_HEADS[:n], 1)),
+        ),
+        rows=rows,
+    )
+
+
+def _circle_given(r: int, xc: int, yc: int) -> tuple[Quantity, ...]:
+    return (
+        Quantity("r", r, f"r = {r}", f"r = {r}"),
+        Quantity(
+            "center", (xc, yc), f"centre (xc, yc) = ({xc}, {yc})", f"(x_c, y_c) = ({xc}, {yc})"
+        ),
+    )
+
+
+def _rule(key: str, text: str, tex: str) -> Quantity:
+    """A stated rule: its JSON value is the Unicode text."""
+    return Quantity(key, text, text, tex)
+
+
+def _start(r: int) -> Quantity:
+    return Quantity(
+        "start", (0, r), f"start (x0, y0) = (0, r) = (0, {r})", f"(x_0, y_0) = (0, r) = (0, {r})"
+    )
+
+
+def circle_solution(
+    method: str, r: Number, xc: Number = 0, yc: Number = 0, rounding: str = "half-up"
+) -> Solution:
+    """The worked solution of a circle with one of :data:`METHODS` (or an alias).
+
+    Raises ``ValueError`` for an unknown method or rounding rule, a negative or non-integer
+    radius or centre, a rounding rule other than half-up with an integer method, and a radius
+    above :data:`SDDA_MAX_RADIUS` with the symmetric DDA.
+
+    >>> sol = circle_solution("midpoint", 5, 10, 10)
+    >>> print(sol.derived[1].text)
+    p0 = 1 - r = 1 - 5 = -4
+    >>> [s.pixel for s in sol.steps()]
+    [(1, 5), (2, 5), (3, 4), (4, 3)]
+    >>> list(sol.pixels())[:6]
+    [(10, 15), (10, 5), (15, 10), (5, 10), (11, 15), (9, 15)]
+    >>> sum(1 for _ in sol.pixels()), sol.bbox
+    (28, (5, 5, 15, 15))
+    """
+    method = ALIASES.get(method, method)
+    if method not in METHODS:
+        names = ", ".join((*METHODS, *ALIASES))
+        raise ValueError(f"unknown circle method {method!r} (choose from {names})")
+    rounder(rounding)
+    ir = check_integer(r, "radius", negative=False)
+    ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
+    if method not in FLOAT_METHODS and rounding != "half-up":
+        raise ValueError(
+            f"--rounding applies to {', '.join(FLOAT_METHODS)}; {method} uses integers only"
+        )
+    if method == "symmetric-dda" and ir > SDDA_MAX_RADIUS:
+        raise ValueError(
+            f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "
+            f"the radius must be at most {SDDA_MAX_RADIUS} (got {ir})"
+        )
+    build = {
+        "midpoint": _midpoint_parts,
+        "bresenham": _bresenham_parts,
+        "polynomial": _polynomial_parts,
+        "trig": _trig_parts,
+        "symmetric-dda": _sdda_parts,
+    }[method]
+    title, derived, columns, extra_keys, steps, points, notes = build(ir, rounding)
+    if method in FLOAT_METHODS:
+        notes = (*notes, _rounding_note(rounding))
+    notes = (
+        *notes,
+        "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
+        "once, the first time it is plotted.",
+    )
+    return Solution(
+        primitive="circle",
+        algorithm=method,
+        title=f"{title}: r = {ir}, centre ({ixc}, {iyc})",
+        given=_circle_given(ir, ixc, iyc),
+        derived=derived,
+        columns=columns,
+        extra_keys=extra_keys,
+        steps=steps,
+        pixels=lambda: symmetric_pixels(points(), ixc, iyc),
+        bbox=(ixc - ir, iyc - ir, ixc + ir, iyc + ir),
+        notes=notes,
+        tables=(symmetry_table(points, images, ixc, iyc),),
+        marks=((ixc, iyc),),
+        geometry={"circle": (ixc, iyc, ir), "symmetry": 8, "center": (ixc, iyc)},
+        data={"rounding": rounding} if method in FLOAT_METHODS else {},
+    )
+
+
+def _rounding_note(rounding: str) -> str:
+    if rounding == "trunc":
+        return "Coordinates are truncated toward zero (--rounding trunc), like a C (int) cast."
+    return "Coordinates are rounded half up, floor(v + 1/2) (--rounding half-up)."
+
+
+_Parts = tuple[
+    str,
+    tuple[Quantity, ...],
+    tuple[Column, ...],
+    tuple[str, ...],
+    Callable[[], Iterator[Step]],
+    Callable[[], Iterator[Pixel]],
+    tuple[str, ...],
+]
+
+
+def _pixels_of(gen: Callable[[], Iterator[Step]]) -> Callable[[], Iterator[Pixel]]:
+    return lambda: (s.pixel for s in gen())
+
+
+def _midpoint_parts(r: int, rounding: str) -> _Parts:
+    derived = (
+        _start(r),
+        Quantity(
+            "p0", 1 - r, f"p0 = 1 - r = 1 - {r} = {1 - r}", f"p_0 = 1 - r = 1 - {r} = {1 - r}"
+        ),
+        _rule(
+            "if_negative",
+            "p_k < 0: next point (x_k + 1, y_k) (E), p_{k+1} = p_k + 2x_{k+1} + 1",
+            r"p_k < 0: (x_k + 1, y_k)\ (E),\ p_{k+1} = p_k + 2x_{k+1} + 1",
+        ),
+        _rule(
+            "otherwise",
+            "p_k >= 0: next point (x_k + 1, y_k - 1) (SE), p_{k+1} = p_k + 2x_{k+1} + 1 - 2y_{k+1}",
+            r"p_k \ge 0: (x_k + 1, y_k - 1)\ (SE),\ p_{k+1} = p_k + 2x_{k+1} + 1 - 2y_{k+1}",
+        ),
+        _rule("loop", "continue while x < y", r"\text{continue while } x < y"),
+    )
+    notes = [
+        f"The start point (0, {r}) is plotted before the first step.",
+        "p0 = 1 - r is 5/4 - r rounded to an integer; every p_k is an integer and the "
+        "decisions are those of 5/4 - r.",
+    ]
+    last = _last(midpoint(r))
+    if last is not None and last[0] > last[1]:
+        notes.append(
+            f"The last point {last} lies past the diagonal; its 8 images are those of "
+            f"({last[1]}, {last[0]}), already plotted."
+        )
+
+    def steps() -> Iterator[Step]:
+        return midpoint(r)
+
+    def points() -> Iterator[Pixel]:
+        yield (0, r)
+        for s in midpoint(r):
+            yield s.pixel
+
+    columns = (
+        Column("k", "k", "k"),
+        Column("p", "p_k", "p_k"),
+        Column("pixel", "(x_{k+1}, y_{k+1})", "(x_{k+1}, y_{k+1})"),
+        Column("two_x", "2x_{k+1}", "2x_{k+1}"),
+        Column("two_y", "2y_{k+1}", "2y_{k+1}"),
+    )
+    return (
+        "Midpoint circle algorithm",
+        derived,
+        columns,
+        ("two_x", "two_y"),
+        steps,
+        points,
+        tuple(notes),
+    )
+
+
+def _last(steps: Iterator[Step]) -> Pixel | None:
+    """The last step's pixel, if there are few steps (the note is for small answers only)."""
+    last = None
+    for i, s in enumerate(steps):
+        if i > 1000:
+            return None
+        last = s.pixel
+    return last
+
+
+def _bresenham_parts(r: int, rounding: str) -> _Parts:
+    d0 = 3 - 2 * r
+    derived = (
+        _start(r),
+        Quantity(
+            "d0", d0, f"d0 = 3 - 2r = 3 - 2·{r} = {d0}", f"d_0 = 3 - 2r = 3 - 2 \\cdot {r} = {d0}"
+        ),
+        _rule(
+            "if_negative",
+            "d_k < 0: d_{k+1} = d_k + 4x_k + 6, y_{k+1} = y_k (E)",
+            r"d_k < 0: d_{k+1} = d_k + 4x_k + 6,\ y_{k+1} = y_k\ (E)",
+        ),
+        _rule(
+            "otherwise",
+            "d_k >= 0: d_{k+1} = d_k + 4(x_k - y_k) + 10, y_{k+1} = y_k - 1 (SE)",
+            r"d_k \ge 0: d_{k+1} = d_k + 4(x_k - y_k) + 10,\ y_{k+1} = y_k - 1\ (SE)",
+        ),
+        _rule(
+            "loop",
+            "x_{k+1} = x_k + 1; plot (x_k, y_k) while x <= y",
+            r"x_{k+1} = x_k + 1;\ \text{plot } (x_k, y_k) \text{ while } x \le y",
+        ),
+    )
+    columns = (
+        Column("k", "k", "k"),
+        Column("p", "d_k", "d_k"),
+        Column("decision", "decision", r"\text{decision}"),
+        Column("pixel", "(x_k, y_k)", "(x_k, y_k)"),
+    )
+    notes = ("Each row plots (x_k, y_k); d_k and the decision give the next point.",)
+
+    def steps() -> Iterator[Step]:
+        return bresenham(r)
+
+    return ("Bresenham's circle algorithm", derived, columns, (), steps, _pixels_of(steps), notes)
+
+
+def _rounded_name(rounding: str, v: str) -> tuple[str, str]:
+    if rounding == "trunc":
+        return f"trunc({v})", f"\\operatorname{{trunc}}({v})"
+    return f"round({v})", f"\\operatorname{{round}}({v})"
+
+
+def _polynomial_parts(r: int, rounding: str) -> _Parts:
+    rnd = rounder(rounding)
+    xmax = math.isqrt(r * r // 2)  # the last x with x <= y exactly; one more may qualify
+    if xmax < r and rnd(sqrt6(r * r - (xmax + 1) ** 2)) >= xmax + 1:
+        xmax += 1
+    bound = Fraction(math.isqrt(r * r * SQRT_PLACES * SQRT_PLACES // 2), SQRT_PLACES)
+    rounded, rounded_tex = _rounded_name(rounding, "y")
+    derived = (
+        Quantity(
+            "equation",
+            r * r,
+            f"y = √(r² - x²) = √({r * r} - x²)",
+            f"y = \\sqrt{{r^2 - x^2}} = \\sqrt{{{r * r} - x^2}}",
+        ),
+        Quantity(
+            "x_last",
+            xmax,
+            f"x = 0, 1, ... while x <= {rounded} (the plotted point stays on or above the "
+            f"diagonal; r/√2 = {fmt(bound, 3)}): x = 0 .. {xmax}",
+            f"x = 0, 1, \\ldots \\text{{ while }} x \\le {rounded_tex} "
+            f"\\ (r/\\sqrt{{2}} = {fmt(bound, 3)}): x = 0 \\ldots {xmax}",
+        ),
+    )
+    name, tex = _rounded_name(rounding, "y")
+    columns = (
+        Column("k", "x", "x"),
+        Column("y_sqrt", "y = √(r² - x²)", r"y = \sqrt{r^2 - x^2}", 3),
+        Column("round_y", name, tex),
+        Column("pixel", "point (x, y)", r"\text{point } (x, y)"),
+    )
+    notes = (
+        "y is computed exactly from integer square roots (shown to 3 decimals), "
+        "so the rounding never depends on floating-point error.",
+    )
+
+    def steps() -> Iterator[Step]:
+        return polynomial(r, rounding)
+
+    return (
+        "Circle by the polynomial (general) method",
+        derived,
+        columns,
+        ("y_sqrt", "round_y"),
+        steps,
+        _pixels_of(steps),
+        notes,
+    )
+
+
+def _trig_parts(r: int, rounding: str) -> _Parts:
+    if r == 0:
+        derived: tuple[Quantity, ...] = (
+            _rule("zero", "r = 0: only the centre is plotted", r"r = 0:\ \text{only the centre}"),
+        )
+    else:
+        kmax = trig_last(r, rounding)
+        rounded, _ = _rounded_name(rounding, "x")
+        rounded_y, _ = _rounded_name(rounding, "y")
+        dtheta = Fraction(1, r)
+        derived = (
+            Quantity(
+                "dtheta",
+                dtheta,
+                f"Δθ = 1/r = 1/{r} rad = {fmt_value(dtheta)} rad = {fmt(180 / (math.pi * r), 3)}°",
+                f"\\Delta\\theta = 1/r = 1/{r} \\text{{ rad}} = "
+                + fmt_value(dtheta).replace("≈", "\\approx")
+                + f" \\text{{ rad}} = {fmt(180 / (math.pi * r), 3)}^\\circ",
+            ),
+            Quantity(
+                "k_last",
+                kmax,
+                f"θ_k = 90° - k·Δθ from 90° towards 45° (π·r/4 = {fmt(math.pi * r / 4, 3)} "
+                f"steps), while {rounded} <= {rounded_y}: k = 0 .. {kmax}",
+                f"\\theta_k = 90^\\circ - k \\Delta\\theta \\text{{ towards }} 45^\\circ "
+                f"\\ (\\pi r / 4 = {fmt(math.pi * r / 4, 3)}) \\text{{ while the point has }} "
+                f"x \\le y: k = 0 \\ldots {kmax}",
+            ),
+            _rule(
+                "equation",
+                "x = r cos θ_k, y = r sin θ_k",
+                r"x = r \cos\theta_k,\ y = r \sin\theta_k",
+            ),
+        )
+    columns = (
+        Column("k", "k", "k"),
+        Column("theta_deg", "θ_k (deg)", r"\theta_k\ (^\circ)", 3),
+        Column("theta_rad", "θ_k (rad)", r"\theta_k\ (\text{rad})", 3),
+        Column("x_cos", "x = r cos θ", r"x = r\cos\theta", 3),
+        Column("y_sin", "y = r sin θ", r"y = r\sin\theta", 3),
+        Column("pixel", "point", r"\text{point}"),
+    )
+    notes = ("cos and sin are computed in floating point (shown to 3 decimals).",)
+
+    def steps() -> Iterator[Step]:
+        return trig(r, rounding)
+
+    return (
+        "Circle by the parametric (trigonometric) method",
+        derived,
+        columns,
+        ("theta_deg", "theta_rad", "x_cos", "y_sin"),
+        steps,
+        _pixels_of(steps),
+        notes,
+    )
+
+
+def _sdda_parts(r: int, rounding: str) -> _Parts:
+    name, tex = _rounded_name(rounding, "x_k")
+    yname, ytex = _rounded_name(rounding, "y_k")
+    if r == 0:
+        derived: tuple[Quantity, ...] = (
+            _rule("zero", "r = 0: only the centre is plotted", r"r = 0:\ \text{only the centre}"),
+        )
+    else:
+        n = r.bit_length()
+        eps = Fraction(1, 2**n)
+        lo, hi = 2 ** (n - 1), 2**n
+        derived = (
+            Quantity(
+                "n",
+                n,
+                f"2^(n-1) <= r < 2^n: 2^{n - 1} = {lo} <= {r} < {hi} = 2^{n}, so n = {n}",
+                f"2^{{n-1}} \\le r < 2^n: 2^{{{n - 1}}} = {lo} \\le {r} < {hi} = 2^{{{n}}}, "
+                f"\\text{{ so }} n = {n}",
+            ),
+            Quantity(
+                "epsilon",
+                eps,
+                f"ε = 2^-n = 2^-{n} = {fmt_value(eps)}",
+                f"\\varepsilon = 2^{{-n}} = 2^{{-{n}}} = "
+                + fmt_value(eps).replace("≈", "\\approx"),
+            ),
+            _rule(
+                "update",
+                "x_{k+1} = x_k + ε·y_k, y_{k+1} = y_k - ε·x_{k+1} (the new x)",
+                r"x_{k+1} = x_k + \varepsilon y_k,\ y_{k+1} = y_k - \varepsilon x_{k+1}",
+            ),
+            _rule(
+                "loop",
+                f"from (x0, y0) = (0, {r}) while {name} <= {yname}",
+                f"(x_0, y_0) = (0, {r}) \\text{{ while }} {tex} \\le {ytex}",
+            ),
+        )
+    columns = (
+        Column("k", "k", "k"),
+        Column("x_k", "x_k", "x_k", 3),
+        Column("y_k", "y_k", "y_k", 3),
+        Column("pixel", f"({name}, {yname})", f"({tex}, {ytex})"),
+    )
+    notes = ("x_k and y_k are exact fractions (shown to 3 decimals).",)
+
+    def steps() -> Iterator[Step]:
+        return symmetric_dda(r, rounding)
+
+    return (
+        "Circle by the symmetric DDA",
+        derived,
+        columns,
+        ("x_k", "y_k"),
+        steps,
+        _pixels_of(steps),
+        notes,
+    )
