@@ -1,33 +1,100 @@
 """scanconv: scan-conversion algorithms as exam-style worked solutions.
 
-The library is usable without the CLI: every algorithm is a generator of
-:class:`~scanconv.core.records.Step` records, and every ``*_solution`` function returns a
-:class:`~scanconv.core.records.Solution` that the renderers in :mod:`scanconv.render` turn into
-text. Coordinates are ``(x, y)`` with y up (see :mod:`scanconv.core.records`).
+The library is usable without the CLI. One function per question, each returning an
+:class:`~scanconv.display.Answer` (a :class:`~scanconv.core.records.Solution` that shows
+itself: ``.to("markdown")``, ``.rows()``, ``.pixels()``, and a table in Jupyter):
 
->>> from scanconv import bresenham
->>> [s.pixel for s in bresenham(0, 0, 3, 1)]
+>>> import scanconv  # doctest: +SKIP
+>>> sol = scanconv.line(2, 2, 10, 6, algo="bresenham")  # doctest: +SKIP
+>>> [s.p for s in sol.steps()]  # doctest: +SKIP
+[0, -8, 0, -8, 0, -8, 0, -8]
+>>> list(sol.pixels())[:4]  # doctest: +SKIP
+[(2, 2), (3, 3), (4, 3), (5, 4)]
+>>> scanconv.circle(5, method="midpoint").rows()[0]  # doctest: +SKIP
+{'k': 0, 'p': -4, 'decision': 'E', 'pixel': (1, 5), 'two_x': 2, 'two_y': 10}
+
+The algorithms themselves are generators of :class:`~scanconv.core.records.Step` records,
+under unambiguous names:
+
+>>> [s.pixel for s in scanconv.bresenham_line(0, 0, 3, 1)]  # doctest: +SKIP
 [(1, 0), (2, 1), (3, 1)]
+
+Coordinates are ``(x, y)`` with y up. Everything is imported on first use (PEP 562), so
+``import scanconv`` stays cheap for the command line.
 """
 
-from .algorithms.lines import basic, bresenham, dda
-from .answers.line import line_solution
-from .core.numeric import round_half_up
-from .core.records import Column, Move, Quantity, Solution, Step, Table
+from __future__ import annotations
+
+import importlib
+from typing import Any
 
 __version__ = "0.1.0"
 
-__all__ = [
-    "Column",
-    "Move",
-    "Quantity",
-    "Solution",
-    "Step",
-    "Table",
-    "__version__",
-    "basic",
-    "bresenham",
-    "dda",
-    "line_solution",
-    "round_half_up",
-]
+#: public name -> (module, attribute); an API function is wrapped to return an Answer.
+_LAZY: dict[str, tuple[str, str]] = {
+    # records
+    "Answer": ("scanconv.display", "Answer"),
+    "Column": ("scanconv.core.records", "Column"),
+    "Move": ("scanconv.core.records", "Move"),
+    "Quantity": ("scanconv.core.records", "Quantity"),
+    "Solution": ("scanconv.core.records", "Solution"),
+    "Step": ("scanconv.core.records", "Step"),
+    "Table": ("scanconv.core.records", "Table"),
+    "InputError": ("scanconv.core.checks", "InputError"),
+    "round_half_up": ("scanconv.core.numeric", "round_half_up"),
+    # the generators, by unambiguous names
+    "bresenham_line": ("scanconv.algorithms.lines", "bresenham"),
+    "dda_line": ("scanconv.algorithms.lines", "dda"),
+    "basic_line": ("scanconv.algorithms.lines", "basic"),
+    "midpoint_circle": ("scanconv.algorithms.circles", "midpoint"),
+    "bresenham_circle": ("scanconv.algorithms.circles", "bresenham"),
+    "midpoint_ellipse": ("scanconv.algorithms.ellipses", "midpoint_ellipse"),
+    # earlier names, kept
+    "bresenham": ("scanconv.algorithms.lines", "bresenham"),
+    "dda": ("scanconv.algorithms.lines", "dda"),
+    "basic": ("scanconv.algorithms.lines", "basic"),
+    "line_solution": ("scanconv.answers.line", "line_solution"),
+}
+
+#: The API functions (one per command), from :mod:`scanconv._api`.
+API = (
+    "line",
+    "circle",
+    "ellipse",
+    "bezier",
+    "bezier_at",
+    "bspline",
+    "bspline_at",
+    "bspline_basis",
+    "parametric",
+    "continuity",
+    "local_control",
+    "storage",
+    "quantize",
+    "sample",
+    "ramp",
+    "compare_lines",
+    "compare_circles",
+)
+
+__all__ = sorted([*_LAZY, *API, "raster", "__version__"])
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        module, attr = _LAZY[name]
+        value = getattr(importlib.import_module(module), attr)
+    elif name in API:
+        from .display import answering
+
+        value = answering(name)
+    elif name == "raster":
+        value = importlib.import_module("scanconv.algorithms.raster")
+    else:
+        raise AttributeError(f"module 'scanconv' has no attribute {name!r}")
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return __all__

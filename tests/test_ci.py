@@ -1,4 +1,5 @@
-"""CI fails when any check fails: lint, format, types, tests or coverage under 90 %.
+"""CI fails when any check fails: lint, format, types, the layers contract, tests or coverage
+under 90 %.
 
 ``tests/test_docs.py`` checks that ``.ci/run`` runs the README's test command verbatim. Here the
 command itself is run with stand-ins for ruff, mypy and pytest that succeed or fail on demand,
@@ -41,6 +42,7 @@ def test_the_command_checks_lint_format_types_and_coverage():
         "ruff check .",
         "ruff format --check .",
         "mypy",
+        "lint-imports --no-cache",
         "pytest --cov --cov-fail-under=90",
     ]
     pyproject = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
@@ -49,10 +51,12 @@ def test_the_command_checks_lint_format_types_and_coverage():
 
 
 @pytest.mark.parametrize(
-    "failing", [None, "ruff check", "ruff format", "mypy", "pytest --cov"], ids=str
+    "failing",
+    [None, "ruff check", "ruff format", "mypy", "lint-imports --no-cache", "pytest --cov"],
+    ids=str,
 )
 def test_any_failing_check_fails_the_run(failing, tmp_path):
-    for tool in ("ruff", "mypy", "pytest"):
+    for tool in ("ruff", "mypy", "lint-imports", "pytest"):
         stub = tmp_path / tool
         stub.write_text(STUB)
         stub.chmod(0o755)
@@ -75,6 +79,7 @@ def test_any_failing_check_fails_the_run(failing, tmp_path):
             "ruff check .",
             "ruff format --check .",
             "mypy",
+            "lint-imports --no-cache",
             "pytest --cov --cov-fail-under=90",
         ]
     else:

@@ -23,7 +23,7 @@ def _pytest(golden: Path, *flags: str) -> subprocess.CompletedProcess[str]:
 
 
 def test_update_golden_rewrites_then_fails(tmp_path: Path):
-    source = ROOT / "golden" / "line-bresenham-2-2-10-6.csv"
+    source = ROOT / "golden" / "lines" / "line-bresenham-2-2-10-6.csv"
     stale = tmp_path / source.name
     command, _, expected = source.read_text().partition("\n")
     stale.write_text(f"{command}\nk,p,decision,x,y,p_next\n0,999,E,0,0,0\n")

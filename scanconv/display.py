@@ -1,0 +1,122 @@
+"""What the Python API returns: a :class:`~scanconv.core.records.Solution` that shows itself.
+
+:class:`Answer` adds to the inert ``Solution`` record (which lives in the bottom layer and
+must not know about formats) the ways a person looks at an answer from Python: ``to(fmt)``
+(the very text the CLI prints), a short ``repr``, ``_repr_markdown_`` for Jupyter (rich's
+``JupyterMixin`` idea: the object renders itself through the one :func:`~scanconv.render.render`
+dispatch), ``rows()`` as dictionaries, and pickling. This module sits above every layer, like
+the CLI, so the layers below never import a renderer.
+
+>>> import scanconv  # doctest: +SKIP
+>>> sol = scanconv.line(0, 0, 3, 1)  # doctest: +SKIP
+>>> sol  # doctest: +SKIP
+<Answer line/bresenham: Bresenham's line algorithm: (0, 0) to (3, 1)>
+>>> print(sol.to("csv"), end="")  # doctest: +SKIP
+k,p,decision,x,y,p_next
+0,-1,E,1,0,1
+1,1,NE,2,1,-1
+2,-1,E,3,1,1
+>>> sol.rows()[0]  # doctest: +SKIP
+{'k': 0, 'p': -1, 'decision': 'E', 'pixel': (1, 0), 'p_next': 1}
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from .core.records import Solution, step_getter
+
+Recipe = tuple[str, tuple[Any, ...], tuple[tuple[str, Any], ...]]
+"""How an answer was asked for: the API function's name, its positional and keyword arguments."""
+
+
+@dataclass(slots=True, repr=False)
+class Answer(Solution):
+    """A :class:`~scanconv.core.records.Solution` with ways to show itself (see the module)."""
+
+    recipe: Recipe | None = None
+    """The API call that made it, so that it pickles (steps and pixels are generator
+    factories, rebuilt by calling the API again: the algorithms are deterministic)."""
+
+    @classmethod
+    def of(cls, solution: Solution, recipe: Recipe | None = None) -> Answer:
+        """``solution`` as an Answer (the same fields, nothing computed)."""
+        fields = {f.name: getattr(solution, f.name) for f in dataclasses.fields(Solution)}
+        return cls(**fields, recipe=recipe)
+
+    def __repr__(self) -> str:
+        return f"<Answer {self.primitive}/{self.algorithm}: {self.title}>"
+
+    def __reduce__(self) -> tuple[Callable[..., Answer], tuple[Any, ...]]:
+        if self.recipe is None:
+            raise TypeError("only answers made by the scanconv API functions can be pickled")
+        return _rebuild, (self.recipe,)
+
+    def to(
+        self,
+        fmt: str = "markdown",
+        *,
+        grid: bool = True,
+        origin: str = "bottom-left",
+        explain: bool = True,
+    ) -> str:
+        """The answer as text in ``fmt`` (``markdown``, ``latex``, ``plain``, ``csv``,
+        ``json``): the same text ``scanconv ... --format fmt`` prints."""
+        from .render import Format, Notice, Options, render
+
+        try:
+            chosen = Format(fmt)
+        except ValueError:
+            names = ", ".join(f.value for f in Format if f not in (Format.auto, Format.rich))
+            raise ValueError(f"unknown format {fmt!r} (choose from {names})") from None
+        if chosen in (Format.auto, Format.rich):
+            raise ValueError("the rich format is for a terminal: use markdown or plain")
+        options = Options(grid=grid, origin=origin, explain=explain)
+        return "".join(c for c in render(self, chosen, options) if not isinstance(c, Notice))
+
+    def grid(self, origin: str = "bottom-left") -> str:
+        """The text pixel grid (empty if the answer plots no pixels or the grid is too large)."""
+        from .render.grid import render_grid, too_large
+
+        if self.pixels is None or too_large(self.bbox):
+            return ""
+        lines = render_grid(self.pixels(), self.bbox, origin=origin, marks=self.marks)
+        return "\n".join(lines) + "\n"
+
+    def rows(self) -> list[dict[str, Any]]:
+        """The step table as dictionaries keyed by column key, exact values as computed
+        (decisions as their names)."""
+        get = step_getter(self.columns, self.extra_keys)
+        keys = [c.key for c in self.columns]
+        return [
+            {k: (str(v) if k == "decision" and v is not None else v) for k, v in zip(keys, get(s))}
+            for s in self.steps()
+        ]
+
+    def _repr_markdown_(self) -> str:
+        return self.to("markdown")
+
+
+def answering(name: str) -> Callable[..., Answer]:
+    """The API function ``name`` of :mod:`scanconv._api`, returning an :class:`Answer` that
+    remembers the call (``scanconv.line`` is ``answering("line")``)."""
+    import functools
+
+    from . import _api
+
+    fn = getattr(_api, name)
+
+    @functools.wraps(fn)
+    def ask(*args: Any, **kwargs: Any) -> Answer:
+        return Answer.of(fn(*args, **kwargs), (name, args, tuple(sorted(kwargs.items()))))
+
+    return ask
+
+
+def _rebuild(recipe: Recipe) -> Answer:
+    """Unpickle: ask the API again."""
+    name, args, kwargs = recipe
+    return answering(name)(*args, **dict(kwargs))
