@@ -92,7 +92,10 @@ class Answer(Solution):
         get = step_getter(self.columns, self.extra_keys)
         keys = [c.key for c in self.columns]
         return [
-            {k: (str(v) if k == "decision" and v is not None else v) for k, v in zip(keys, get(s))}
+            {
+                k: (str(v) if k == "decision" and v is not None else v)
+                for k, v in zip(keys, get(s), strict=True)
+            }
             for s in self.steps()
         ]
 
