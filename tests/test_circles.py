@@ -19,7 +19,17 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.algorithms.circles import FLOAT_METHODS, METHODS, SDDA_MAX_RADIUS, bresenham, midpoint, polynomial, symmetric_dda, trig, trig_steps
+from scanconv.algorithms.circles import (
+    FLOAT_METHODS,
+    METHODS,
+    SDDA_MAX_RADIUS,
+    bresenham,
+    midpoint,
+    polynomial,
+    symmetric_dda,
+    trig,
+    trig_steps,
+)
 from scanconv.answers.circle import circle_solution
 
 from .helpers import assert_refused, connected, run, run_process

@@ -13,8 +13,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.interpolate import BSpline
 
-from scanconv.answers.curves import basis, bernstein, bezier, bezier_solution, bspline, bspline_solution, continuity_level, coord, curve_pixels, de_casteljau, knot_vector, local_control, parametric, parametric_solution, sample_ts, span
+from scanconv.algorithms.bezier import bernstein, bezier, de_casteljau
+from scanconv.algorithms.bspline import basis, bspline, knot_vector, span
+from scanconv.algorithms.continuity import continuity_level
 from scanconv.algorithms.lines import bresenham
+from scanconv.algorithms.local_control import local_control
+from scanconv.algorithms.parametric import parametric
+from scanconv.algorithms.sampling import coord, curve_pixels, sample_ts
+from scanconv.answers.bezier import bezier_solution
+from scanconv.answers.bspline import bspline_solution
+from scanconv.answers.parametric import parametric_solution
 
 from .helpers import assert_refused, connected, run
 

@@ -26,9 +26,9 @@ from pathlib import Path
 import pytest
 import typer
 
-from scanconv.render import grid as gridmod
 from scanconv.cli import app
 from scanconv.core.records import Solution
+from scanconv.render import grid as gridmod
 
 from .helpers import run
 

@@ -13,9 +13,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from scanconv.algorithms.ellipses import midpoint_ellipse
 from scanconv.answers.circle import circle_solution
 from scanconv.answers.ellipse import ellipse_solution
-from scanconv.algorithms.ellipses import midpoint_ellipse
 from scanconv.core.records import Move
 
 from .helpers import connected

@@ -19,10 +19,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.render import figure
 from scanconv.algorithms.lines import bresenham, dda
 from scanconv.answers.line import line_solution
 from scanconv.core.records import Column, Solution, Step
+from scanconv.render import figure
 
 from .helpers import run
 
@@ -101,7 +101,7 @@ def test_axes_label_every_column_and_row():
 
 
 def test_curve_figure_draws_the_curve_and_the_control_polygon():
-    from scanconv.answers.curves import bezier_solution
+    from scanconv.answers.bezier import bezier_solution
 
     solution = bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8)
     root = _parse(figure.svg(solution))
@@ -278,7 +278,7 @@ def test_readme_line_figure_is_current():
 
 
 def test_readme_bezier_figure_is_well_formed():
-    from scanconv.answers.curves import bezier_solution
+    from scanconv.answers.bezier import bezier_solution
 
     solution = bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8)
     root = _parse((DOCS / "bezier-0-0-1-2-3-3-4-0.svg").read_text(encoding="utf-8"))
@@ -338,7 +338,7 @@ def test_png_draws_the_same_shapes():
     Image = pytest.importorskip("PIL.Image")
     from io import BytesIO
 
-    from scanconv.answers.curves import bezier_solution
+    from scanconv.answers.bezier import bezier_solution
 
     fig = figure.build(bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8))
     with Image.open(BytesIO(figure.to_png(fig, scale=1))) as img:

@@ -19,7 +19,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.answers.image import MAX_CELLS, Quantizer, ramp, ramp_solution, sample_levels, storage_solution
+from scanconv.algorithms.image_limits import MAX_CELLS
+from scanconv.algorithms.quantize import Quantizer
+from scanconv.algorithms.ramp import ramp
+from scanconv.algorithms.sample import sample_levels
+from scanconv.answers.ramp import ramp_solution
+from scanconv.answers.storage import storage_solution
 
 from .helpers import run
 

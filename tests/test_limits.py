@@ -69,40 +69,42 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "core.expr.MAX_BITS": [
         (["parametric", "custom", "--x", "t**41", "--y", "t", "--t-range", "0", "2**100"], "4096"),
     ],
-    "answers.image.MAX_BITS": [
+    "algorithms.image_limits.MAX_BITS": [
         (["quantize", "--bits", "25"], "at most 24"),
         (["storage", "8", "8", "--bits", "25"], "at most 24"),
     ],
-    "answers.image.MAX_LEVELS": [
+    "algorithms.image_limits.MAX_LEVELS": [
         (["storage", "8", "8", "--levels", "16777217"], "16,777,216"),
         (["sample", "x", "--size", "4", "--levels", "16777217"], "16,777,216"),
         (["image", "ramp", "--levels", "16777217"], "16,777,216"),
     ],
-    "answers.image.MAX_SIDE": [(["sample", "x", "--size", "4097x4096", "--levels", "4"], "4096 x 4096")],
-    "answers.image.MAX_CELLS": [
+    "algorithms.image_limits.MAX_SIDE": [
+        (["sample", "x", "--size", "4097x4096", "--levels", "4"], "4096 x 4096")
+    ],
+    "algorithms.image_limits.MAX_CELLS": [
         (["sample", "x", "--size", "1x16777217", "--levels", "4"], "16,777,216 cells"),
         (["image", "ramp", "--size", "16777217x1"], "16,777,216 cells"),
     ],
-    "answers.curves.MAX_SAMPLES": [
+    "algorithms.curve_limits.MAX_SAMPLES": [
         (["parametric", "circle", "--samples", "100001"], "at most 100000"),
         (["parametric", "custom", "--x", "t", "--y", "t", "-n", "100001"], "at most 100000"),
     ],
-    "answers.curves.MAX_POINTS": [
+    "algorithms.curve_limits.MAX_POINTS": [
         (["bezier", *POINTS_101], "at most 100 control points"),
         (["bspline", *POINTS_101], "at most 100 control points"),
         (["local-control", *POINTS_101, "--move", "0", "1", "1"], "at most 100 control points"),
         (["continuity", *POINTS_101, ":", "0", "0", "1", "1"], "at most 100 control points"),
     ],
-    "answers.curves.MAX_DEGREE": [
+    "algorithms.curve_limits.MAX_DEGREE": [
         (["bspline", *POINTS_12, "--degree", "11"], "at most 10"),
         (["local-control", *POINTS_12, "--move", "0", "1", "1", "--degree", "11"], "at most 10"),
     ],
-    "answers.curves.MAX_WEIGHTS": [
+    "algorithms.curve_limits.MAX_WEIGHTS": [
         (["bezier", "0", "0", "1", "1", "--samples", "50000"], "at most 100,000"),
         (["bspline", "0", "0", "1", "1", "--degree", "1", "-n", "50000"], "at most 100,000"),
         (["continuity", "0", "0", "1", "1", ":", "1", "1", "2", "2", "-n", "25000"], "100,000"),
     ],
-    "answers.curves.MAX_CURVE_PIXELS": [
+    "algorithms.curve_limits.MAX_CURVE_PIXELS": [
         (["bezier", "0", "0", "999985", "0", "--samples", "16"], "more than 1,000,000"),
         (["bspline", "0", "0", "999985", "0", "--degree", "1", "-n", "16"], "more than 1,000,000"),
         (["parametric", "line", "0", "0", "1000001", "0", "-n", "4"], "more than 1,000,000"),
@@ -111,12 +113,16 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "algorithms.ellipses.MAX_AXIS": [(["ellipse", "1000001", "5"], "1e+06")],
     "answers.compare.MAX_LENGTH": [(["compare", "line", "0", "0", "3", "10001"], "at most 10000")],
     "answers.compare.MAX_RADIUS": [(["compare", "circle", "2001"], "at most 2000")],
-    "algorithms.circles.SDDA_MAX_RADIUS": [(["circle", "16384", "--method", "symmetric-dda"], "16383")],
+    "algorithms.circles.SDDA_MAX_RADIUS": [
+        (["circle", "16384", "--method", "symmetric-dda"], "16383")
+    ],
     "render.figure.MAX_CELLS": [(["line", "0", "0", "198", "0", "--svg", "FIGURE"], "201 x 3")],
 }
 
 #: A limit that is not a refusal: the grid is left out with a note, and the answer is complete.
-NOTED = {"core.records.MAX_GRID_CELLS": (["line", "0", "0", "98", "0", "-f", "plain"], "101 x 3 cells")}
+NOTED = {
+    "core.records.MAX_GRID_CELLS": (["line", "0", "0", "98", "0", "-f", "plain"], "101 x 3 cells")
+}
 
 ALLOCATORS = ("empty", "zeros", "ones", "full", "arange", "linspace", "meshgrid", "indices")
 
@@ -185,7 +191,7 @@ def test_just_beyond_the_limit_is_refused_at_once(name, args, word, monkeypatch,
 
     # A parametric curve's pixel path is known only from its samples: evaluating them (in
     # chunks of 4096) is the work that finds it; the pixels and the figure are never reached.
-    if not (name == "answers.curves.MAX_CURVE_PIXELS" and args[0] == "parametric"):
+    if not (name == "algorithms.curve_limits.MAX_CURVE_PIXELS" and args[0] == "parametric"):
         for fn in ALLOCATORS:
             monkeypatch.setattr(np, fn, allocation_reached)
     tracemalloc.start()
@@ -213,11 +219,12 @@ def test_the_grid_limit_leaves_the_grid_out_with_a_note():
 
 def test_exactly_at_each_limit_is_accepted():
     """The other side of each edge: the largest accepted value passes its check."""
-    from scanconv.answers import curves, image
-    from scanconv.core import expr, numeric
-    from scanconv.render import figure
+    from scanconv.algorithms import bspline, curve_limits, image_limits
+    from scanconv.answers.bezier import bezier_at_solution
     from scanconv.answers.circle import circle_solution
     from scanconv.answers.line import line_solution
+    from scanconv.core import expr, numeric
+    from scanconv.render import figure
 
     assert numeric.parse_number(str(numeric.COORD_LIMIT)) == 10**9
     assert numeric.parse_number("-" + str(numeric.COORD_LIMIT)) == -(10**9)
@@ -227,19 +234,19 @@ def test_exactly_at_each_limit_is_accepted():
     assert expr.compile_expr("t**40", ("t",)).exact(t=2**100) == 2**4000
     with pytest.raises(ValueError, match="4096 bits"):
         expr.compile_expr("t**41", ("t",)).exact(t=2**100)
-    assert image.check_bits(24) == 24 and image.check_levels(2**24) == 2**24
-    image.check_cells(4096, 4096)
-    image.check_cells(1, 4096 * 4096)
-    assert curves.check_samples(10**5) == 10**5
-    assert len(curves.check_points([(i, 0) for i in range(100)], 2, "a curve")) == 100
-    assert len(curves.knot_vector("open", 10, 10)) == 22
-    curves.check_weights(49_999, 2)  # 50,000 x 2 = 100,000
-    curves.check_path([[(0, 0), (999_984, 0)]], 16)  # 999,984 + 16 = 1,000,000
+    assert image_limits.check_bits(24) == 24 and image_limits.check_levels(2**24) == 2**24
+    image_limits.check_cells(4096, 4096)
+    image_limits.check_cells(1, 4096 * 4096)
+    assert curve_limits.check_samples(10**5) == 10**5
+    assert len(curve_limits.check_points([(i, 0) for i in range(100)], 2, "a curve")) == 100
+    assert len(bspline.knot_vector("open", 10, 10)) == 22
+    curve_limits.check_weights(49_999, 2)  # 50,000 x 2 = 100,000
+    curve_limits.check_path([[(0, 0), (999_984, 0)]], 16)  # 999,984 + 16 = 1,000,000
     # de Casteljau with 2 points at t = 1/2^4094: 4095 + 1 bits, exactly the limit
-    sol = curves.bezier_at_solution([(0, 0), (1, 1)], Fraction(1, 2**4094))
+    sol = bezier_at_solution([(0, 0), (1, 1)], Fraction(1, 2**4094))
     assert sol.derived[-1].value == (Fraction(1, 2**4094), Fraction(1, 2**4094))
     with pytest.raises(ValueError, match="4096 bits"):
-        curves.bezier_at_solution([(0, 0), (1, 1)], Fraction(1, 2**4095))
+        bezier_at_solution([(0, 0), (1, 1)], Fraction(1, 2**4095))
     assert circle_solution("symmetric-dda", 2**14 - 1).title
     figure.build(line_solution("bresenham", 0, 0, 197, 0))  # 200 x 3 cells
 

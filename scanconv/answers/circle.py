@@ -30,19 +30,19 @@ from ..core.numeric import (
     fmt,
     fmt_value,
 )
-from ..core.records import Column, Pixel, Quantity, Solution, Step, Table
+from ..core.records import Column, Pixel, Quantity, Solution, Step, Table, heading, rule, worked
 
 SYMMETRY_HEADS = (
-    ("(xc+x, yc+y)", "(x_c+x, y_c+y)"),
-    ("(xc-x, yc+y)", "(x_c-x, y_c+y)"),
-    ("(xc+x, yc-y)", "(x_c+x, y_c-y)"),
-    ("(xc-x, yc-y)", "(x_c-x, y_c-y)"),
-    ("(xc+y, yc+x)", "(x_c+y, y_c+x)"),
-    ("(xc-y, yc+x)", "(x_c-y, y_c+x)"),
-    ("(xc+y, yc-x)", "(x_c+y, y_c-x)"),
-    ("(xc-y, yc-x)", "(x_c-y, y_c-x)"),
+    "(x_c+x, y_c+y)",
+    "(x_c-x, y_c+y)",
+    "(x_c+x, y_c-y)",
+    "(x_c-x, y_c-y)",
+    "(x_c+y, y_c+x)",
+    "(x_c-y, y_c+x)",
+    "(x_c+y, y_c-x)",
+    "(x_c-y, y_c-x)",
 )
-"""Headings of the symmetry tables, in the notes' order (the ellipse uses the first 4)."""
+"""Headings (TeX) of the symmetry tables, in the notes' order (the ellipse uses the first 4)."""
 
 
 def symmetry_table(
@@ -65,8 +65,8 @@ def symmetry_table(
     return Table(
         title=f"{n}-way symmetry about the centre ({xc}, {yc})",
         columns=(
-            Column("point", "(x, y)", "(x, y)"),
-            *(Column(f"point_{i}", t, tex) for i, (t, tex) in enumerate(SYMMETRY_HEADS[:n], 1)),
+            heading("point", "(x, y)"),
+            *(heading(f"point_{i}", tex) for i, tex in enumerate(SYMMETRY_HEADS[:n], 1)),
         ),
         rows=rows,
     )
@@ -74,22 +74,13 @@ def symmetry_table(
 
 def _circle_given(r: int, xc: int, yc: int) -> tuple[Quantity, ...]:
     return (
-        Quantity("r", r, f"r = {r}", f"r = {r}"),
-        Quantity(
-            "center", (xc, yc), f"centre (xc, yc) = ({xc}, {yc})", f"(x_c, y_c) = ({xc}, {yc})"
-        ),
+        worked("r", r, f"r = {r}"),
+        worked("center", (xc, yc), f"\\text{{centre }} (x_c, y_c) = ({xc}, {yc})"),
     )
-
-
-def _rule(key: str, text: str, tex: str) -> Quantity:
-    """A stated rule: its JSON value is the Unicode text."""
-    return Quantity(key, text, text, tex)
 
 
 def _start(r: int) -> Quantity:
-    return Quantity(
-        "start", (0, r), f"start (x0, y0) = (0, r) = (0, {r})", f"(x_0, y_0) = (0, r) = (0, {r})"
-    )
+    return worked("start", (0, r), f"\\text{{start }} (x_0, y_0) = (0, r) = (0, {r})")
 
 
 def circle_solution(
@@ -103,7 +94,7 @@ def circle_solution(
 
     >>> sol = circle_solution("midpoint", 5, 10, 10)
     >>> print(sol.derived[1].text)
-    p0 = 1 - r = 1 - 5 = -4
+    p₀ = 1 - r = 1 - 5 = -4
     >>> [s.pixel for s in sol.steps()]
     [(1, 5), (2, 5), (3, 4), (4, 3)]
     >>> list(sol.pixels())[:6]
@@ -185,20 +176,17 @@ def _pixels_of(gen: Callable[[], Iterator[Step]]) -> Callable[[], Iterator[Pixel
 def _midpoint_parts(r: int, rounding: str) -> _Parts:
     derived = (
         _start(r),
-        Quantity(
-            "p0", 1 - r, f"p0 = 1 - r = 1 - {r} = {1 - r}", f"p_0 = 1 - r = 1 - {r} = {1 - r}"
-        ),
-        _rule(
+        worked("p0", 1 - r, f"p_0 = 1 - r = 1 - {r} = {1 - r}"),
+        rule(
             "if_negative",
-            "p_k < 0: next point (x_k + 1, y_k) (E), p_{k+1} = p_k + 2x_{k+1} + 1",
-            r"p_k < 0: (x_k + 1, y_k)\ (E),\ p_{k+1} = p_k + 2x_{k+1} + 1",
+            r"p_k < 0: \text{next point } (x_k + 1, y_k)\ (\text{E}),\ p_{k+1} = p_k + 2x_{k+1} + 1",
         ),
-        _rule(
+        rule(
             "otherwise",
-            "p_k >= 0: next point (x_k + 1, y_k - 1) (SE), p_{k+1} = p_k + 2x_{k+1} + 1 - 2y_{k+1}",
-            r"p_k \ge 0: (x_k + 1, y_k - 1)\ (SE),\ p_{k+1} = p_k + 2x_{k+1} + 1 - 2y_{k+1}",
+            r"p_k \ge 0: \text{next point } (x_k + 1, y_k - 1)\ (\text{SE}),\ "
+            r"p_{k+1} = p_k + 2x_{k+1} + 1 - 2y_{k+1}",
         ),
-        _rule("loop", "continue while x < y", r"\text{continue while } x < y"),
+        rule("loop", r"\text{continue while } x < y"),
     )
     notes = [
         f"The start point (0, {r}) is plotted before the first step.",
@@ -221,11 +209,11 @@ def _midpoint_parts(r: int, rounding: str) -> _Parts:
             yield s.pixel
 
     columns = (
-        Column("k", "k", "k"),
-        Column("p", "p_k", "p_k"),
-        Column("pixel", "(x_{k+1}, y_{k+1})", "(x_{k+1}, y_{k+1})"),
-        Column("two_x", "2x_{k+1}", "2x_{k+1}"),
-        Column("two_y", "2y_{k+1}", "2y_{k+1}"),
+        heading("k", "k"),
+        heading("p", "p_k"),
+        heading("pixel", "(x_{k+1}, y_{k+1})"),
+        heading("two_x", "2x_{k+1}"),
+        heading("two_y", "2y_{k+1}"),
     )
     return (
         "Midpoint circle algorithm",
@@ -252,30 +240,19 @@ def _bresenham_parts(r: int, rounding: str) -> _Parts:
     d0 = 3 - 2 * r
     derived = (
         _start(r),
-        Quantity(
-            "d0", d0, f"d0 = 3 - 2r = 3 - 2·{r} = {d0}", f"d_0 = 3 - 2r = 3 - 2 \\cdot {r} = {d0}"
-        ),
-        _rule(
-            "if_negative",
-            "d_k < 0: d_{k+1} = d_k + 4x_k + 6, y_{k+1} = y_k (E)",
-            r"d_k < 0: d_{k+1} = d_k + 4x_k + 6,\ y_{k+1} = y_k\ (E)",
-        ),
-        _rule(
+        worked("d0", d0, f"d_0 = 3 - 2r = 3 - 2 \\cdot {r} = {d0}"),
+        rule("if_negative", r"d_k < 0: d_{k+1} = d_k + 4x_k + 6,\ y_{k+1} = y_k\ (\text{E})"),
+        rule(
             "otherwise",
-            "d_k >= 0: d_{k+1} = d_k + 4(x_k - y_k) + 10, y_{k+1} = y_k - 1 (SE)",
-            r"d_k \ge 0: d_{k+1} = d_k + 4(x_k - y_k) + 10,\ y_{k+1} = y_k - 1\ (SE)",
+            r"d_k \ge 0: d_{k+1} = d_k + 4(x_k - y_k) + 10,\ y_{k+1} = y_k - 1\ (\text{SE})",
         ),
-        _rule(
-            "loop",
-            "x_{k+1} = x_k + 1; plot (x_k, y_k) while x <= y",
-            r"x_{k+1} = x_k + 1;\ \text{plot } (x_k, y_k) \text{ while } x \le y",
-        ),
+        rule("loop", r"x_{k+1} = x_k + 1;\ \text{plot } (x_k, y_k) \text{ while } x \le y"),
     )
     columns = (
-        Column("k", "k", "k"),
-        Column("p", "d_k", "d_k"),
-        Column("decision", "decision", r"\text{decision}"),
-        Column("pixel", "(x_k, y_k)", "(x_k, y_k)"),
+        heading("k", "k"),
+        heading("p", "d_k"),
+        heading("decision", r"\text{decision}"),
+        heading("pixel", "(x_k, y_k)"),
     )
     notes = ("Each row plots (x_k, y_k); d_k and the decision give the next point.",)
 
@@ -285,10 +262,10 @@ def _bresenham_parts(r: int, rounding: str) -> _Parts:
     return ("Bresenham's circle algorithm", derived, columns, (), steps, _pixels_of(steps), notes)
 
 
-def _rounded_name(rounding: str, v: str) -> tuple[str, str]:
-    if rounding == "trunc":
-        return f"trunc({v})", f"\\operatorname{{trunc}}({v})"
-    return f"round({v})", f"\\operatorname{{round}}({v})"
+def _rounded_name(rounding: str, v: str) -> str:
+    """``\\operatorname{round}(v)`` or ``\\operatorname{trunc}(v)``."""
+    name = "trunc" if rounding == "trunc" else "round"
+    return f"\\operatorname{{{name}}}({v})"
 
 
 def _polynomial_parts(r: int, rounding: str) -> _Parts:
@@ -297,29 +274,21 @@ def _polynomial_parts(r: int, rounding: str) -> _Parts:
     if xmax < r and rnd(sqrt6(r * r - (xmax + 1) ** 2)) >= xmax + 1:
         xmax += 1
     bound = Fraction(math.isqrt(r * r * SQRT_PLACES * SQRT_PLACES // 2), SQRT_PLACES)
-    rounded, rounded_tex = _rounded_name(rounding, "y")
+    rounded = _rounded_name(rounding, "y")
     derived = (
-        Quantity(
-            "equation",
-            r * r,
-            f"y = √(r² - x²) = √({r * r} - x²)",
-            f"y = \\sqrt{{r^2 - x^2}} = \\sqrt{{{r * r} - x^2}}",
-        ),
-        Quantity(
+        worked("equation", r * r, f"y = \\sqrt{{r^2 - x^2}} = \\sqrt{{{r * r} - x^2}}"),
+        worked(
             "x_last",
             xmax,
-            f"x = 0, 1, ... while x <= {rounded} (the plotted point stays on or above the "
-            f"diagonal; r/√2 = {fmt(bound, 3)}): x = 0 .. {xmax}",
-            f"x = 0, 1, \\ldots \\text{{ while }} x \\le {rounded_tex} "
-            f"\\ (r/\\sqrt{{2}} = {fmt(bound, 3)}): x = 0 \\ldots {xmax}",
+            f"x = 0, 1, \\ldots \\text{{ while }} x \\le {rounded}\\ (\\text{{the plotted point stays "
+            f"on or above the diagonal; }} r/\\sqrt{{2}} = {fmt(bound, 3)}): x = 0 \\ldots {xmax}",
         ),
     )
-    name, tex = _rounded_name(rounding, "y")
     columns = (
-        Column("k", "x", "x"),
-        Column("y_sqrt", "y = √(r² - x²)", r"y = \sqrt{r^2 - x^2}", 3),
-        Column("round_y", name, tex),
-        Column("pixel", "point (x, y)", r"\text{point } (x, y)"),
+        heading("k", "x"),
+        heading("y_sqrt", r"y = \sqrt{r^2 - x^2}", 3),
+        heading("round_y", rounded),
+        heading("pixel", r"\text{point } (x, y)"),
     )
     notes = (
         "y is computed exactly from integer square roots (shown to 3 decimals), "
@@ -340,47 +309,40 @@ def _polynomial_parts(r: int, rounding: str) -> _Parts:
     )
 
 
+_ZERO = rule("zero", r"r = 0:\ \text{only the centre is plotted}")
+
+
 def _trig_parts(r: int, rounding: str) -> _Parts:
     if r == 0:
-        derived: tuple[Quantity, ...] = (
-            _rule("zero", "r = 0: only the centre is plotted", r"r = 0:\ \text{only the centre}"),
-        )
+        derived: tuple[Quantity, ...] = (_ZERO,)
     else:
         kmax = trig_last(r, rounding)
-        rounded, _ = _rounded_name(rounding, "x")
-        rounded_y, _ = _rounded_name(rounding, "y")
         dtheta = Fraction(1, r)
         derived = (
-            Quantity(
+            worked(
                 "dtheta",
                 dtheta,
-                f"Δθ = 1/r = 1/{r} rad = {fmt_value(dtheta)} rad = {fmt(180 / (math.pi * r), 3)}°",
                 f"\\Delta\\theta = 1/r = 1/{r} \\text{{ rad}} = "
                 + fmt_value(dtheta).replace("≈", "\\approx")
                 + f" \\text{{ rad}} = {fmt(180 / (math.pi * r), 3)}^\\circ",
             ),
-            Quantity(
+            worked(
                 "k_last",
                 kmax,
-                f"θ_k = 90° - k·Δθ from 90° towards 45° (π·r/4 = {fmt(math.pi * r / 4, 3)} "
-                f"steps), while {rounded} <= {rounded_y}: k = 0 .. {kmax}",
-                f"\\theta_k = 90^\\circ - k \\Delta\\theta \\text{{ towards }} 45^\\circ "
-                f"\\ (\\pi r / 4 = {fmt(math.pi * r / 4, 3)}) \\text{{ while the point has }} "
-                f"x \\le y: k = 0 \\ldots {kmax}",
+                f"\\theta_k = 90^\\circ - k \\cdot \\Delta\\theta \\text{{ from }} 90^\\circ "
+                f"\\text{{ towards }} 45^\\circ\\ (\\pi \\cdot r/4 = {fmt(math.pi * r / 4, 3)} "
+                f"\\text{{ steps}}),\\ \\text{{while }} {_rounded_name(rounding, 'x')} \\le "
+                f"{_rounded_name(rounding, 'y')}: k = 0 \\ldots {kmax}",
             ),
-            _rule(
-                "equation",
-                "x = r cos θ_k, y = r sin θ_k",
-                r"x = r \cos\theta_k,\ y = r \sin\theta_k",
-            ),
+            rule("equation", r"x = r \cos\theta_k,\ y = r \sin\theta_k"),
         )
     columns = (
-        Column("k", "k", "k"),
-        Column("theta_deg", "θ_k (deg)", r"\theta_k\ (^\circ)", 3),
-        Column("theta_rad", "θ_k (rad)", r"\theta_k\ (\text{rad})", 3),
-        Column("x_cos", "x = r cos θ", r"x = r\cos\theta", 3),
-        Column("y_sin", "y = r sin θ", r"y = r\sin\theta", 3),
-        Column("pixel", "point", r"\text{point}"),
+        heading("k", "k"),
+        heading("theta_deg", r"\theta_k\ (\text{deg})", 3),
+        heading("theta_rad", r"\theta_k\ (\text{rad})", 3),
+        heading("x_cos", r"x = r \cos\theta", 3),
+        heading("y_sin", r"y = r \sin\theta", 3),
+        heading("pixel", r"\text{point}"),
     )
     notes = ("cos and sin are computed in floating point (shown to 3 decimals).",)
 
@@ -399,47 +361,41 @@ def _trig_parts(r: int, rounding: str) -> _Parts:
 
 
 def _sdda_parts(r: int, rounding: str) -> _Parts:
-    name, tex = _rounded_name(rounding, "x_k")
-    yname, ytex = _rounded_name(rounding, "y_k")
+    name, yname = _rounded_name(rounding, "x_k"), _rounded_name(rounding, "y_k")
     if r == 0:
-        derived: tuple[Quantity, ...] = (
-            _rule("zero", "r = 0: only the centre is plotted", r"r = 0:\ \text{only the centre}"),
-        )
+        derived: tuple[Quantity, ...] = (_ZERO,)
     else:
         n = r.bit_length()
         eps = Fraction(1, 2**n)
         lo, hi = 2 ** (n - 1), 2**n
         derived = (
-            Quantity(
+            worked(
                 "n",
                 n,
-                f"2^(n-1) <= r < 2^n: 2^{n - 1} = {lo} <= {r} < {hi} = 2^{n}, so n = {n}",
                 f"2^{{n-1}} \\le r < 2^n: 2^{{{n - 1}}} = {lo} \\le {r} < {hi} = 2^{{{n}}}, "
                 f"\\text{{ so }} n = {n}",
             ),
-            Quantity(
+            worked(
                 "epsilon",
                 eps,
-                f"ε = 2^-n = 2^-{n} = {fmt_value(eps)}",
                 f"\\varepsilon = 2^{{-n}} = 2^{{-{n}}} = "
                 + fmt_value(eps).replace("≈", "\\approx"),
             ),
-            _rule(
+            rule(
                 "update",
-                "x_{k+1} = x_k + ε·y_k, y_{k+1} = y_k - ε·x_{k+1} (the new x)",
-                r"x_{k+1} = x_k + \varepsilon y_k,\ y_{k+1} = y_k - \varepsilon x_{k+1}",
+                r"x_{k+1} = x_k + \varepsilon \cdot y_k,\ y_{k+1} = y_k - \varepsilon \cdot x_{k+1}"
+                r"\ (\text{the new } x)",
             ),
-            _rule(
+            rule(
                 "loop",
-                f"from (x0, y0) = (0, {r}) while {name} <= {yname}",
-                f"(x_0, y_0) = (0, {r}) \\text{{ while }} {tex} \\le {ytex}",
+                f"\\text{{from }} (x_0, y_0) = (0, {r}) \\text{{ while }} {name} \\le {yname}",
             ),
         )
     columns = (
-        Column("k", "k", "k"),
-        Column("x_k", "x_k", "x_k", 3),
-        Column("y_k", "y_k", "y_k", 3),
-        Column("pixel", f"({name}, {yname})", f"({tex}, {ytex})"),
+        heading("k", "k"),
+        heading("x_k", "x_k", 3),
+        heading("y_k", "y_k", 3),
+        heading("pixel", f"({name}, {yname})"),
     )
     notes = ("x_k and y_k are exact fractions (shown to 3 decimals).",)
 

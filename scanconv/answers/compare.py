@@ -18,7 +18,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..core.numeric import Number, fmt, fmt_short, normalize
-from ..core.records import Column, Pixel, PixelFigure, Solution, Table
+from ..core.records import Pixel, PixelFigure, Solution, Table, heading
 
 LINE_METHODS = ("basic", "dda", "bresenham")
 """The line algorithms compared, in the order of the table's columns."""
@@ -195,10 +195,10 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
         tuple(q for q in bres.derived if q.key in ("p0", "inc_keep", "inc_step")) if bres else ()
     )
     columns = (
-        Column(maj, maj, maj),
-        Column(f"{mnr}_exact", f"{mnr} on the line", f"{mnr} \\text{{ on the line}}", 3),
-        *(Column(m, NAMES[m], f"\\text{{{NAMES[m]}}}") for m in methods),
-        Column("reason", "differ", r"\text{differ}"),
+        heading(maj, maj),
+        heading(f"{mnr}_exact", f"{mnr} \\text{{ on the line}}", 3),
+        *(heading(m, f"\\text{{{NAMES[m]}}}") for m in methods),
+        heading("reason", r"\text{differ}"),
     )
     tables = [Table(f"Pixels side by side ({mnr} for each {maj})", columns, rows)]
     if integer:
@@ -206,9 +206,9 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
             Table(
                 "Arithmetic per pixel",
                 (
-                    Column("method", "method", r"\text{method}"),
-                    Column("work", "per pixel", r"\text{per pixel}"),
-                    Column("arithmetic", "arithmetic", r"\text{arithmetic}"),
+                    heading("method", r"\text{method}"),
+                    heading("work", r"\text{per pixel}"),
+                    heading("arithmetic", r"\text{arithmetic}"),
                 ),
                 lambda: iter(arithmetic(maj, mnr, da * db < 0)),
             )
@@ -403,10 +403,10 @@ def compare_circles(r: Number) -> Solution:
         if q.key in ("p0", "d0", "equation", "dtheta", "epsilon")
     )
     columns = (
-        Column("x", "x", "x"),
-        Column("y_exact", "y on the circle", r"y = \sqrt{r^2 - x^2}", 3),
-        *(Column(m, NAMES[m], f"\\text{{{NAMES[m]}}}") for m in methods),
-        Column("reason", "differ", r"\text{differ}"),
+        heading("x", "x"),
+        heading("y_exact", r"y = \sqrt{r^2 - x^2}", 3),
+        *(heading(m, f"\\text{{{NAMES[m]}}}") for m in methods),
+        heading("reason", r"\text{differ}"),
     )
     return Solution(
         primitive="circle",

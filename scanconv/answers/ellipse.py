@@ -25,7 +25,9 @@ from ..core.records import (
     Solution,
     Step,
     Table,
+    heading,
     step_getter,
+    worked,
 )
 from .circle import symmetry_table
 
@@ -34,11 +36,11 @@ from .circle import symmetry_table
 
 def _region_columns(p: str) -> tuple[Column, ...]:
     return (
-        Column("k", "k", "k"),
-        Column("p", f"{p}_k", f"{p}_k"),
-        Column("pixel", "(x_{k+1}, y_{k+1})", "(x_{k+1}, y_{k+1})"),
-        Column("two_ry2_x", "2ry²x_{k+1}", "2r_y^2 x_{k+1}"),
-        Column("two_rx2_y", "2rx²y_{k+1}", "2r_x^2 y_{k+1}"),
+        heading("k", "k"),
+        heading("p", f"{p}_k"),
+        heading("pixel", "(x_{k+1}, y_{k+1})"),
+        heading("two_ry2_x", "2r_y^2 x_{k+1}"),
+        heading("two_rx2_y", "2r_x^2 y_{k+1}"),
     )
 
 
@@ -54,8 +56,8 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
     >>> sol = ellipse_solution(8, 6)
     >>> for q in sol.derived[2:4]:
     ...     print(q.text)
-    p1_0 = ry² - rx²·ry + rx²/4 = 36 - 64·6 + 64/4 = -332
-    region 2 starts at (x0, y0) = (7, 3), the last point of region 1
+    p1₀ = r_y² - rₓ²·r_y + rₓ²/4 = 36 - 64·6 + 64/4 = -332
+    region 2 starts at (x₀, y₀) = (7, 3), the last point of region 1
     >>> [len(list(t.rows())) for t in sol.tables]
     [7, 3, 11]
     >>> sum(1 for _ in sol.pixels()), sol.bbox
@@ -75,47 +77,38 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
     p2 = quarter(ry2 * (2 * x0 + 1) ** 2 + 4 * rx2 * (y0 - 1) ** 2 - 4 * rx2 * ry2)
     half = Fraction(2 * x0 + 1, 2)
     given = (
-        Quantity("rx", irx, f"rx = {irx}", f"r_x = {irx}"),
-        Quantity("ry", iry, f"ry = {iry}", f"r_y = {iry}"),
-        Quantity(
-            "center",
-            (ixc, iyc),
-            f"centre (xc, yc) = ({ixc}, {iyc})",
-            f"(x_c, y_c) = ({ixc}, {iyc})",
-        ),
+        worked("rx", irx, f"r_x = {irx}"),
+        worked("ry", iry, f"r_y = {iry}"),
+        worked("center", (ixc, iyc), f"\\text{{centre }} (x_c, y_c) = ({ixc}, {iyc})"),
     )
     derived: tuple[Quantity, ...] = (
-        Quantity(
+        worked(
             "squares",
             (rx2, ry2, 2 * rx2, 2 * ry2),
-            f"rx² = {rx2}, ry² = {ry2}, 2rx² = {2 * rx2}, 2ry² = {2 * ry2}",
             f"r_x^2 = {rx2},\\ r_y^2 = {ry2},\\ 2r_x^2 = {2 * rx2},\\ 2r_y^2 = {2 * ry2}",
         ),
-        Quantity(
+        worked(
             "region1",
             (2 * rx2 * iry,),
-            f"region 1 from (0, {iry}) while 2ry²x < 2rx²y (2rx²y starts at {2 * rx2 * iry})",
-            f"\\text{{region 1 from }} (0, {iry}) \\text{{ while }} 2r_y^2 x < 2r_x^2 y",
+            f"\\text{{region 1 from }} (0, {iry}) \\text{{ while }} 2r_y^2 x < 2r_x^2 y\\ "
+            f"(2r_x^2 y \\text{{ starts at }} {2 * rx2 * iry})",
         ),
-        Quantity(
+        worked(
             "p1_0",
             p1,
-            f"p1_0 = ry² - rx²·ry + rx²/4 = {ry2} - {rx2}·{iry} + {rx2}/4 = {fmt_short(p1)}",
-            f"p1_0 = r_y^2 - r_x^2 r_y + \\tfrac{{r_x^2}}{{4}} = {ry2} - {rx2} \\cdot {iry} + "
+            f"p1_0 = r_y^2 - r_x^2 \\cdot r_y + \\tfrac{{r_x^2}}{{4}} = {ry2} - {rx2} \\cdot {iry} + "
             f"\\tfrac{{{rx2}}}{{4}} = {fmt_short(p1)}",
         ),
-        Quantity(
+        worked(
             "region2_start",
             (x0, y0),
-            f"region 2 starts at (x0, y0) = ({x0}, {y0}), the last point of region 1",
-            f"\\text{{region 2 starts at }} (x_0, y_0) = ({x0}, {y0})",
+            f"\\text{{region 2 starts at }} (x_0, y_0) = ({x0}, {y0})"
+            f"\\text{{, the last point of region 1}}",
         ),
-        Quantity(
+        worked(
             "p2_0",
             p2,
-            f"p2_0 = ry²(x0 + 1/2)² + rx²(y0 - 1)² - rx²ry² = {ry2}·{fmt_short(half)}² + "
-            f"{rx2}·{fmt_paren(y0 - 1)}² - {rx2}·{ry2} = {fmt_short(p2)}",
-            f"p2_0 = r_y^2 (x_0 + \\tfrac12)^2 + r_x^2 (y_0 - 1)^2 - r_x^2 r_y^2 = "
+            f"p2_0 = r_y^2(x_0 + \\tfrac12)^2 + r_x^2(y_0 - 1)^2 - r_x^2 r_y^2 = "
             f"{ry2} \\cdot {fmt_short(half)}^2 + {rx2} \\cdot {fmt_paren(y0 - 1)}^2 - "
             f"{rx2} \\cdot {ry2} = {fmt_short(p2)}",
         ),
@@ -142,7 +135,7 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
     def points() -> Iterator[Pixel]:
         return quadrant_points(irx, iry)
 
-    columns = (Column("region", "region", r"\text{region}"), *_region_columns("p"))
+    columns = (heading("region", r"\text{region}"), *_region_columns("p"))
     get1 = step_getter(_region_columns("p1"), _EXTRA)
     get2 = step_getter(_region_columns("p2"), _EXTRA)
 

@@ -24,7 +24,7 @@ from ..core.numeric import (
     normalize,
     round_half_up,
 )
-from ..core.records import Column, Pixel, Quantity, Solution, Step
+from ..core.records import Pixel, Quantity, Solution, Step, heading, worked
 
 # --- Solutions: the exam answer around the steps -------------------------------------------
 
@@ -43,63 +43,58 @@ def _once(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
         last = p
 
 
-def _diff(name: str, tex: str, a: Number, b: Number, key: str) -> Quantity:
+def _tex_value(v: Number) -> str:
+    """:func:`fmt_value` as TeX: ``1/3 \\approx 0.333``."""
+    return fmt_value(v).replace("≈", "\\approx")
+
+
+def _diff(name: str, a: Number, b: Number, key: str) -> Quantity:
     """``Δx = x₂ - x₁ = 10 - 2 = 8``."""
     v = normalize(b - a)
-    return Quantity(
+    return worked(
         key,
         v,
-        f"Δ{name} = {name}2 - {name}1 = {fmt_short(b)} - {fmt_paren(a)} = {fmt_short(v)}",
-        f"\\Delta {tex} = {tex}_2 - {tex}_1 = {fmt_short(b)} - {fmt_paren(a)} = {fmt_short(v)}",
+        f"\\Delta {name} = {name}_2 - {name}_1 = {fmt_short(b)} - {fmt_paren(a)} = {fmt_short(v)}",
     )
 
 
 def _slope(dx: Number, dy: Number) -> Quantity:
     if dx == 0:
-        return Quantity(
-            "m",
-            None,
-            "m = Δy / Δx is undefined (vertical line)",
-            r"m = \Delta y / \Delta x \text{ is undefined (vertical line)}",
-        )
+        return worked("m", None, r"m = \Delta y / \Delta x \text{ is undefined (vertical line)}")
     m = normalize(Fraction(dy) / dx)
-    return Quantity(
+    return worked(
         "m",
         m,
-        f"m = Δy / Δx = {fmt_short(dy)} / {fmt_short(dx)} = {fmt_value(m)}",
         f"m = \\frac{{\\Delta y}}{{\\Delta x}} = \\frac{{{fmt_short(dy)}}}{{{fmt_short(dx)}}} = "
-        + fmt_value(m).replace("≈", "\\approx"),
+        + _tex_value(m),
     )
 
 
 def _major(dx: Number, dy: Number) -> Quantity:
     steep = abs_value(dy) > abs_value(dx)
     axis = "y" if steep else "x"
-    rel, tex_rel = (">", ">") if steep else ("<=", r"\le")
-    return Quantity(
+    rel = ">" if steep else r"\le"
+    return worked(
         "major_axis",
         axis,
-        f"major axis: {axis}, since |Δy| = {fmt_short(abs_value(dy))} {rel} |Δx| = {fmt_short(abs_value(dx))}",
-        f"\\text{{major axis: }} {axis}, \\quad |\\Delta y| = {fmt_short(abs_value(dy))} {tex_rel} "
-        f"|\\Delta x| = {fmt_short(abs_value(dx))}",
+        f"\\text{{major axis: }} {axis}, \\text{{ since }} |\\Delta y| = {fmt_short(abs_value(dy))} "
+        f"{rel} |\\Delta x| = {fmt_short(abs_value(dx))}",
     )
+
+
+def _substituted(b1: Number, slope: Number, a: str, a1: Number) -> str:
+    """``2 + 0.5 \\cdot (x - 2)``; a slope that is not a short decimal is written exactly, then
+    approximately: ``2 + 1/3 \\cdot (x - 2) \\approx 2 + 0.333 \\cdot (x - 2)``."""
+    exact, _, approx = fmt_value(slope).partition(" ≈ ")
+    line = f"{fmt_short(b1)} + {{}} \\cdot ({a} - {fmt_paren(a1)})"
+    return line.format(exact) + (f" \\approx {line.format(approx)}" if approx else "")
 
 
 def _given(x1: Number, y1: Number, x2: Number, y2: Number) -> tuple[Quantity, ...]:
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
     return (
-        Quantity(
-            "P1",
-            p1,
-            f"P1 = ({fmt_short(x1)}, {fmt_short(y1)})",
-            f"P_1 = ({fmt_short(x1)}, {fmt_short(y1)})",
-        ),
-        Quantity(
-            "P2",
-            p2,
-            f"P2 = ({fmt_short(x2)}, {fmt_short(y2)})",
-            f"P_2 = ({fmt_short(x2)}, {fmt_short(y2)})",
-        ),
+        worked("P1", p1, f"P_1 = ({fmt_short(x1)}, {fmt_short(y1)})"),
+        worked("P2", p2, f"P_2 = ({fmt_short(x2)}, {fmt_short(y2)})"),
     )
 
 
@@ -122,9 +117,9 @@ def line_solution(algo: str, x1: Number, y1: Number, x2: Number, y2: Number) -> 
     >>> sol = line_solution("bresenham", 2, 2, 10, 6)
     >>> for q in sol.derived[-3:]:
     ...     print(q.text)
-    p0 = 2Δy - Δx = 2·4 - 8 = 0
-    2Δy = 2·4 = 8   (added when p_k < 0)
-    2Δy - 2Δx = 2·4 - 2·8 = -8   (added when p_k >= 0)
+    p₀ = 2Δy - Δx = 2·4 - 8 = 0
+    2Δy = 2·4 = 8   (added when pₖ < 0)
+    2Δy - 2Δx = 2·4 - 2·8 = -8   (added when pₖ ≥ 0)
     >>> list(sol.pixels())[:4]
     [(2, 2), (3, 3), (4, 3), (5, 4)]
     """
@@ -149,31 +144,23 @@ def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solut
     swapped = (sx, sy) != (ix1, iy1)
     dx, dy = ex - sx, ey - sy  # after the swap, as the working is written
     maj, mnr = ("y", "x") if steep else ("x", "y")
-    dmin_s = f"|Δ{mnr}|" if sign < 0 else f"Δ{mnr}"
     dmin_t = f"|\\Delta {mnr}|" if sign < 0 else f"\\Delta {mnr}"
     p0 = 2 * dmin - dmaj
     inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
     derived = [
-        _diff("x", "x", sx, ex, "dx"),
-        _diff("y", "y", sy, ey, "dy"),
+        _diff("x", sx, ex, "dx"),
+        _diff("y", sy, ey, "dy"),
         _slope(dx, dy),
         _major(dx, dy),
-        Quantity(
-            "p0",
-            p0,
-            f"p0 = 2{dmin_s} - Δ{maj} = 2·{dmin} - {dmaj} = {p0}",
-            f"p_0 = 2{dmin_t} - \\Delta {maj} = 2 \\cdot {dmin} - {dmaj} = {p0}",
-        ),
-        Quantity(
+        worked("p0", p0, f"p_0 = 2{dmin_t} - \\Delta {maj} = 2 \\cdot {dmin} - {dmaj} = {p0}"),
+        worked(
             "inc_keep",
             inc_keep,
-            f"2{dmin_s} = 2·{dmin} = {inc_keep}   (added when p_k < 0)",
             f"2{dmin_t} = 2 \\cdot {dmin} = {inc_keep} \\quad (\\text{{added when }} p_k < 0)",
         ),
-        Quantity(
+        worked(
             "inc_step",
             inc_step,
-            f"2{dmin_s} - 2Δ{maj} = 2·{dmin} - 2·{dmaj} = {inc_step}   (added when p_k >= 0)",
             f"2{dmin_t} - 2\\Delta {maj} = 2 \\cdot {dmin} - 2 \\cdot {dmaj} = {inc_step} "
             f"\\quad (\\text{{added when }} p_k \\ge 0)",
         ),
@@ -204,11 +191,11 @@ def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solut
         given=_given(ix1, iy1, ix2, iy2),
         derived=tuple(derived),
         columns=(
-            Column("k", "k", "k"),
-            Column("p", "p_k", "p_k"),
-            Column("decision", "decision", r"\text{decision}"),
-            Column("pixel", "(x_{k+1}, y_{k+1})", "(x_{k+1}, y_{k+1})"),
-            Column("p_next", "p_{k+1}", "p_{k+1}"),
+            heading("k", "k"),
+            heading("p", "p_k"),
+            heading("decision", r"\text{decision}"),
+            heading("pixel", "(x_{k+1}, y_{k+1})"),
+            heading("p_next", "p_{k+1}"),
         ),
         extra_keys=("p_next",),
         steps=steps,
@@ -223,31 +210,28 @@ def _dda_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
     steps_n = dda_steps(x1, y1, x2, y2)
     xi, yi = dda_increments(x1, y1, x2, y2)
-    ceil_note = "" if max(abs_value(dx), abs_value(dy)) == steps_n else f", rounded up to {steps_n}"
+    longest = max(abs_value(dx), abs_value(dy))
+    ceil_note = "" if longest == steps_n else f"{fmt_short(longest)},\\ \\text{{rounded up to }} "
     derived = [
-        _diff("x", "x", x1, x2, "dx"),
-        _diff("y", "y", y1, y2, "dy"),
+        _diff("x", x1, x2, "dx"),
+        _diff("y", y1, y2, "dy"),
         _slope(dx, dy),
         _major(dx, dy),
-        Quantity(
+        worked(
             "steps",
             steps_n,
-            f"steps = max(|Δx|, |Δy|) = max({fmt_short(abs_value(dx))}, {fmt_short(abs_value(dy))}) = {steps_n}"
-            + ceil_note,
             f"\\text{{steps}} = \\max(|\\Delta x|, |\\Delta y|) = \\max({fmt_short(abs_value(dx))}, "
-            f"{fmt_short(abs_value(dy))}) = {steps_n}",
+            f"{fmt_short(abs_value(dy))}) = {ceil_note}{steps_n}",
         ),
     ]
     if steps_n:
         for name, d, inc in (("x", dx, xi), ("y", dy, yi)):
             derived.append(
-                Quantity(
+                worked(
                     f"{name}_inc",
                     inc,
-                    f"{name}_inc = Δ{name} / steps = {fmt_short(d)} / {steps_n} = {fmt_value(inc)}",
                     f"{name}_{{inc}} = \\frac{{\\Delta {name}}}{{\\text{{steps}}}} = "
-                    f"\\frac{{{fmt_short(d)}}}{{{steps_n}}} = "
-                    + fmt_value(inc).replace("≈", "\\approx"),
+                    f"\\frac{{{fmt_short(d)}}}{{{steps_n}}} = " + _tex_value(inc),
                 )
             )
     notes = (
@@ -261,12 +245,12 @@ def _dda_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
         given=_given(x1, y1, x2, y2),
         derived=tuple(derived),
         columns=(
-            Column("k", "k", "k"),
-            Column("x", "x_k", "x_k", 3),
-            Column("y", "y_k", "y_k", 3),
-            Column("round_x", "round(x_k)", r"\operatorname{round}(x_k)"),
-            Column("round_y", "round(y_k)", r"\operatorname{round}(y_k)"),
-            Column("pixel", "pixel (x, y)", r"\text{pixel } (x, y)"),
+            heading("k", "k"),
+            heading("x", "x_k", 3),
+            heading("y", "y_k", 3),
+            heading("round_x", r"\operatorname{round}(x_k)"),
+            heading("round_y", r"\operatorname{round}(y_k)"),
+            heading("pixel", r"\text{pixel } (x, y)"),
         ),
         extra_keys=("x", "y", "round_x", "round_y"),
         steps=lambda: dda(x1, y1, x2, y2),
@@ -281,32 +265,25 @@ def _basic_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
     steep = abs_value(dy) > abs_value(dx)
     derived = [
-        _diff("x", "x", x1, x2, "dx"),
-        _diff("y", "y", y1, y2, "dy"),
+        _diff("x", x1, x2, "dx"),
+        _diff("y", y1, y2, "dy"),
         _slope(dx, dy),
         _major(dx, dy),
     ]
     if steep:
         inv = normalize(Fraction(dx) / dy)
         derived.append(
-            Quantity(
+            worked(
                 "equation",
                 inv,
-                f"x = x1 + (Δx / Δy)(y - y1) = {fmt_short(x1)} + {fmt_value(inv)}·(y - {fmt_paren(y1)})",
-                f"x = x_1 + \\frac{{\\Delta x}}{{\\Delta y}}(y - y_1) = {fmt_short(x1)} + "
-                f"{fmt_short(inv)} (y - {fmt_paren(y1)})",
+                r"x = x_1 + \frac{\Delta x}{\Delta y}(y - y_1) = " + _substituted(x1, inv, "y", y1),
             )
         )
         maj, mnr = "y", "x"
     else:
         m = normalize(Fraction(dy) / dx) if dx else 0
         derived.append(
-            Quantity(
-                "equation",
-                m,
-                f"y = y1 + m(x - x1) = {fmt_short(y1)} + {fmt_value(m)}·(x - {fmt_paren(x1)})",
-                f"y = y_1 + m(x - x_1) = {fmt_short(y1)} + {fmt_short(m)} (x - {fmt_paren(x1)})",
-            )
+            worked("equation", m, "y = y_1 + m(x - x_1) = " + _substituted(y1, m, "x", x1))
         )
         maj, mnr = "x", "y"
     return Solution(
@@ -316,10 +293,10 @@ def _basic_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
         given=_given(x1, y1, x2, y2),
         derived=tuple(derived),
         columns=(
-            Column(maj, maj, maj),
-            Column(mnr, f"{mnr} (calculated)", f"{mnr} \\text{{ (calculated)}}", 3),
-            Column(f"round_{mnr}", f"{mnr} (rounded)", f"{mnr} \\text{{ (rounded)}}"),
-            Column("pixel", "pixel (x, y)", r"\text{pixel } (x, y)"),
+            heading(maj, maj),
+            heading(mnr, f"{mnr} \\text{{ (calculated)}}", 3),
+            heading(f"round_{mnr}", f"{mnr} \\text{{ (rounded)}}"),
+            heading("pixel", r"\text{pixel } (x, y)"),
         ),
         extra_keys=(maj, mnr, f"round_{mnr}"),
         steps=lambda: basic(x1, y1, x2, y2),

@@ -35,3 +35,50 @@ def check_integer(value: Number, what: str, *, negative: bool = True) -> int:
     if abs(v) > COORD_LIMIT:
         raise ValueError(f"{what} = {v} is out of range (|value| <= {COORD_LIMIT:.0e})")
     return v
+
+
+def check_positive(value: Number, what: str, *, param: str | None = None) -> int:
+    """``value`` as an ``int`` >= 1, or :class:`InputError` naming ``what`` (about ``param``).
+
+    >>> from fractions import Fraction
+    >>> check_positive(Fraction(8), "M")
+    8
+    >>> check_positive(0, "M (rows)", param="m")
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: M (rows) must be a positive integer, got 0
+    """
+    n = check_whole(value, what, param=param)
+    if n < 1:
+        raise InputError(f"{what} must be a positive integer, got {n}", param)
+    return n
+
+
+def check_whole(value: Number, what: str, *, param: str | None = None) -> int:
+    """``value`` as an ``int``, or :class:`InputError` naming ``what`` (no range check).
+
+    >>> from fractions import Fraction
+    >>> check_whole(Fraction(5, 2), "L", param="levels")
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: L must be an integer, got 2.500
+    """
+    try:
+        return as_int(value, what)
+    except ValueError as err:
+        raise InputError(str(err), param) from None
+
+
+def check_count(value: int, what: str, lo: int, hi: int, *, param: str | None = None) -> int:
+    """``value`` if ``lo <= value <= hi``, else :class:`InputError` naming the bound it passes.
+
+    >>> check_count(25, "bits per pixel", 1, 24, param="bits")
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: bits per pixel must be at most 24, got 25
+    """
+    if value < lo:
+        raise InputError(f"{what} must be at least {lo}, got {value}", param)
+    if value > hi:
+        raise InputError(f"{what} must be at most {hi}, got {value}", param)
+    return value

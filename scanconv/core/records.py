@@ -18,6 +18,7 @@ from enum import Enum
 from typing import Any, NamedTuple
 
 from .numeric import Number
+from .working import tex_to_unicode
 
 Pixel = tuple[int, int]
 """A plotted pixel ``(x, y)``."""
@@ -94,7 +95,8 @@ class Column(NamedTuple):
     key: str
     """Name in JSON and CSV (``k``, ``p``, ``decision``, ``pixel`` or an ``extra`` key)."""
     text: str
-    """Heading in Unicode, for the terminal and markdown's non-math cells."""
+    """Heading in Unicode, for the terminal and plain text; :func:`heading` derives it from
+    :attr:`tex`."""
     tex: str
     """Heading as LaTeX math (without ``$``), for markdown and LaTeX."""
     places: int | None = None
@@ -109,9 +111,40 @@ class Quantity(NamedTuple):
     value: Any
     """The exact value: a number, a pixel, a string (``"x"``) or a tuple of numbers."""
     text: str
-    """The working in Unicode: ``Δx = x₂ − x₁ = 10 − 2 = 8``."""
+    """The working in Unicode: ``Δx = x₂ - x₁ = 10 - 2 = 8``; :func:`worked` derives it from
+    :attr:`tex`."""
     tex: str
     """The same working as LaTeX math (without ``$``)."""
+
+
+def worked(key: str, value: Any, tex: str) -> Quantity:
+    """A quantity whose working is written once, as TeX math: the Unicode text is derived by
+    :func:`~scanconv.core.working.tex_to_unicode`, so every format says the same thing.
+
+    >>> q = worked("p0", 0, r"p_0 = 2\\Delta y - \\Delta x = 2 \\cdot 4 - 8 = 0")
+    >>> q.text
+    'p₀ = 2Δy - Δx = 2·4 - 8 = 0'
+    """
+    return Quantity(key, value, tex_to_unicode(tex), tex)
+
+
+def rule(key: str, tex: str) -> Quantity:
+    """A stated rule, written once as TeX math: its value (what JSON reports) is its text.
+
+    >>> rule("loop", r"\\text{continue while } x < y").value
+    'continue while x < y'
+    """
+    text = tex_to_unicode(tex)
+    return Quantity(key, text, text, tex)
+
+
+def heading(key: str, tex: str, places: int | None = None) -> Column:
+    """A table column headed once, in TeX math; the Unicode heading is derived.
+
+    >>> heading("pixel", "(x_{k+1}, y_{k+1})")
+    Column(key='pixel', text='(xₖ₊₁, yₖ₊₁)', tex='(x_{k+1}, y_{k+1})', places=None)
+    """
+    return Column(key, tex_to_unicode(tex), tex, places)
 
 
 @dataclass(slots=True)

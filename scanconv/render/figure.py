@@ -297,7 +297,7 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
     if cols > MAX_CELLS or rows > MAX_CELLS:
         raise ValueError(
             f"figure would be {cols} x {rows} cells, more than {MAX_CELLS}; "
-            "draw a smaller primitive or leave out --svg"
+            "draw a smaller primitive, or no figure"
         )
     f = _Frame(cells, origin == "top-left")
     width = max(f.right + PAD_RIGHT, 16 + 8.4 * len(solution.title))

@@ -1,0 +1,342 @@
+"""The worked answers of a B-spline: the knot vector and domain, the Cox–de Boor recurrence,
+the table of basis values and points (or of the basis alone), and the curve at one t."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from typing import Any, NamedTuple
+
+from ..algorithms.bspline import (
+    basis_dense,
+    basis_levels,
+    bspline,
+    bspline_samples,
+    domain,
+    knot_vector,
+    span,
+)
+from ..algorithms.curve_limits import (
+    Point,
+    Value,
+    check_exact,
+    check_path,
+    check_points,
+    check_row,
+    check_samples,
+    check_weights,
+    norm_value,
+)
+from ..algorithms.sampling import (
+    bbox,
+    combine,
+    curve_pixel,
+    curve_pixels,
+    dense_ts,
+    float_points,
+    polyline,
+)
+from ..core.checks import InputError
+from ..core.numeric import Number
+from ..core.records import Column, Quantity, Solution, Step, Table
+from ._curve import (
+    JOIN_NOTE,
+    K_T_COLUMNS,
+    ROUND_NOTE,
+    control_marks,
+    given_points,
+    knot_text,
+    point_text,
+    step_quantity,
+    value_text,
+    xy_columns,
+)
+
+
+class BsplineSetup(NamedTuple):
+    """A checked B-spline problem."""
+
+    points: tuple[Point, ...]
+    """The control points, exact."""
+    n: int
+    """The last control point's index (``n + 1`` points)."""
+    knots: tuple[Number, ...]
+    """The knot vector ``u_0 .. u_m``."""
+    kind: str
+    """``open``, ``uniform`` or ``explicit``: how the knots were given."""
+
+
+def bspline_setup(
+    points: Sequence[Point], degree: int, knots: str | Sequence[Number]
+) -> BsplineSetup:
+    """Check the control points, the degree and the knots; build the knot vector.
+
+    >>> bspline_setup([(0, 0), (1, 2), (3, 3)], 2, "open").knots
+    (0, 0, 0, 1, 1, 1)
+    """
+    pts = check_points(points, 2, "a B-spline")
+    n = len(pts) - 1
+    u = knot_vector(knots, n, degree)
+    kind = knots if isinstance(knots, str) else "explicit"
+    return BsplineSetup(pts, n, u, kind)
+
+
+def _bspline_derived(
+    pts: Sequence[Point], p: int, knots: Sequence[Number], kind: str
+) -> list[Quantity]:
+    n = len(pts) - 1
+    m = n + p + 1
+    t0, t1 = domain(knots, p, n)
+    how = {
+        "open": f"open: p + 1 = {p + 1} equal knots at each end, uniform inside",
+        "uniform": "uniform: equally spaced, not clamped",
+    }.get(kind, "as given")
+    terms = " + ".join(f"N_{{{i},{p}}}(t)·{point_text(pt)}" for i, pt in enumerate(pts))
+    tex_terms = " + ".join(f"N_{{{i},{p}}}(t) \\cdot {point_text(pt)}" for i, pt in enumerate(pts))
+    tex_kind = kind if kind != "explicit" else "as given"
+    return [
+        Quantity(
+            "n",
+            n,
+            f"n = number of control points - 1 = {n + 1} - 1 = {n}; degree p = {p}",
+            f"n = {n + 1} - 1 = {n}; \\quad p = {p}",
+        ),
+        Quantity(
+            "m",
+            m,
+            f"m = n + p + 1 = {n} + {p} + 1 = {m}: knots u_0 … u_{m}",
+            f"m = n + p + 1 = {n} + {p} + 1 = {m}: \\; u_0 \\ldots u_{{{m}}}",
+        ),
+        Quantity(
+            "knots",
+            tuple(knots),
+            f"U = {knot_text(knots)}   ({how})",
+            f"U = {knot_text(knots)} \\quad \\text{{({tex_kind})}}",
+        ),
+        Quantity(
+            "domain",
+            (t0, t1),
+            f"domain u_p ≤ t ≤ u_(n+1): u_{p} = {value_text(t0)} ≤ t ≤ u_{n + 1} = "
+            f"{value_text(t1)}",
+            f"u_p \\le t \\le u_{{n+1}}: \\; u_{{{p}}} = {value_text(t0)} \\le t \\le "
+            f"u_{{{n + 1}}} = {value_text(t1)}",
+        ),
+        Quantity(
+            "N0",
+            None,
+            "N_{i,0}(t) = 1 if u_i ≤ t < u_(i+1), else 0",
+            r"N_{i,0}(t) = 1 \text{ if } u_i \le t < u_{i+1}, \text{ else } 0",
+        ),
+        Quantity(
+            "Np",
+            None,
+            "N_{i,p}(t) = (t - u_i)/(u_(i+p) - u_i)·N_{i,p-1}(t) + "
+            "(u_(i+p+1) - t)/(u_(i+p+1) - u_(i+1))·N_{i+1,p-1}(t)   (0/0 = 0)",
+            r"N_{i,p}(t) = \frac{t - u_i}{u_{i+p} - u_i} N_{i,p-1}(t) + "
+            r"\frac{u_{i+p+1} - t}{u_{i+p+1} - u_{i+1}} N_{i+1,p-1}(t) \quad (0/0 = 0)",
+        ),
+        Quantity("C(t)", None, f"C(t) = {terms}", f"C(t) = {tex_terms}"),
+    ]
+
+
+_BSPLINE_NOTES = (
+    "Cox–de Boor with 0/0 taken as 0; at the right end of the domain the last non-empty span "
+    "is closed, so a clamped curve ends exactly on its last control point.",
+)
+
+
+def bspline_solution(
+    points: Sequence[Point],
+    degree: int = 3,
+    knots: str | Sequence[Number] = "open",
+    samples: int | None = None,
+    *,
+    basis_only: bool = False,
+) -> Solution:
+    """The worked solution of a B-spline; ``basis_only``: only the table of ``N_{i,p}(t)``.
+
+    >>> sol = bspline_solution([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, "open", 4)
+    >>> sol.derived[2].text
+    'U = (0, 0, 0, 1, 2, 3, 3, 3)   (open: p + 1 = 3 equal knots at each end, uniform inside)'
+    >>> list(sol.pixels())[-1]
+    (5, 2)
+    """
+    pts, n, u, kind = bspline_setup(points, degree, knots)
+    samples = bspline_samples(u, degree, n) if samples is None else check_samples(samples)
+    check_weights(samples, n + 1)
+    if not basis_only:
+        check_path([pts], samples)
+    t0, t1 = domain(u, degree, n)
+
+    def steps() -> Iterator[Step]:
+        return bspline(pts, degree, u, samples)
+
+    check_row(steps(), "B-spline")
+
+    derived = [
+        *_bspline_derived(pts, degree, u, kind),
+        step_quantity(
+            t0, t1, samples, value_text(t0), value_text(t1), value_text(t0), value_text(t1)
+        ),
+    ]
+    basis_cols = tuple(
+        Column(f"N{i}", f"N_{{{i},{degree}}}", f"N_{{{i},{degree}}}", 3) for i in range(n + 1)
+    )
+    title = (
+        f"B-spline of degree {degree}: {n + 1} control points, knots {knot_text(u)}, "
+        f"{samples} steps of t"
+    )
+    if basis_only:
+
+        def rows() -> Iterator[tuple[Any, ...]]:
+            for s in steps():
+                yield (s.k, *s.extra[: n + 2])
+
+        return Solution(
+            primitive="curve",
+            algorithm="bspline-basis",
+            title="Basis functions of a " + title,
+            given=(Quantity("p", degree, f"p = {degree}", f"p = {degree}"),),
+            derived=tuple(q for q in derived if q.key != "C(t)"),
+            tables=(
+                Table(
+                    f"Basis functions N_(i,{degree})(t) (each row sums to 1)",
+                    (*K_T_COLUMNS, *basis_cols),
+                    rows,
+                ),
+            ),
+            notes=_BSPLINE_NOTES,
+        )
+    marks = control_marks(pts)
+    ts = dense_ts(t0, t1, samples)
+    dense = combine(basis_dense(u, degree, n, ts), float_points(pts))
+    return Solution(
+        primitive="curve",
+        algorithm="bspline",
+        title=title,
+        given=tuple(given_points(pts)),
+        derived=tuple(derived),
+        columns=(*K_T_COLUMNS, *basis_cols, *xy_columns()),
+        extra_keys=("t", *(f"N{i}" for i in range(n + 1)), "x_t", "y_t"),
+        steps=steps,
+        pixels=lambda: curve_pixels(s.pixel for s in steps()),
+        # Basis values are >= 0 and sum to 1 on the domain: the curve lies in the convex hull.
+        bbox=bbox(marks),
+        notes=(
+            *_BSPLINE_NOTES,
+            "Basis values and points are exact fractions (3 decimals shown).",
+            ROUND_NOTE,
+            JOIN_NOTE,
+            "Control points are marked o in the grid; a clamped (open) curve passes through the "
+            "first and last of them, an unclamped one in general through none.",
+        ),
+        marks=marks,
+        geometry={"polyline": polyline(*dense), "control": float_points(pts)},
+    )
+
+
+def bspline_at_solution(
+    points: Sequence[Point], degree: int, knots: str | Sequence[Number], t: Value
+) -> Solution:
+    """One ``t``: the Cox–de Boor triangle, the non-zero ``N_{i,p}(t)``, their weighted sum.
+
+    >>> from fractions import Fraction
+    >>> sol = bspline_at_solution([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, "open", Fraction(3, 2))
+    >>> sol.derived[-1].text
+    'C(1.5) = 0.125·(1, 2) + 0.75·(3, 3) + 0.125·(4, 0) = (2.875, 2.5) -> pixel (3, 3)'
+    """
+    pts, n, u, kind = bspline_setup(points, degree, knots)
+    t0, t1 = domain(u, degree, n)
+    if not t0 <= t <= t1:
+        raise InputError(
+            f"t must lie in the domain [u_p, u_(n+1)] = [{value_text(t0)}, {value_text(t1)}], "
+            f"got t = {value_text(t)}",
+            "t",
+        )
+    t = norm_value(t)
+    levels = basis_levels(u, degree, n, t)
+    w = levels[degree][: n + 1]
+    point = combine(w, pts)
+    check_exact((*w, *point), "the B-spline at this t")
+    pixel = curve_pixel(*point)
+    s = span(u, n, t)
+    ts = value_text(t)
+    nz = [i for i in range(n + 1) if w[i] != 0]
+    closed = t == t1
+    span_text = (
+        f"t = {ts} lies in span s = {s}: u_{s} = {value_text(u[s])} ≤ t "
+        + ("≤" if closed else "<")
+        + f" u_{s + 1} = {value_text(u[s + 1])}"
+        + ("   (right end: the last non-empty span is closed)" if closed else "")
+    )
+    span_tex = (
+        f"s = {s}: \\; u_{{{s}}} = {value_text(u[s])} \\le t = {ts} "
+        + ("\\le" if closed else "<")
+        + f" u_{{{s + 1}}} = {value_text(u[s + 1])}"
+    )
+    derived = [
+        *(q for q in _bspline_derived(pts, degree, u, kind) if q.key not in ("N0", "Np")),
+        Quantity("span", s, span_text, span_tex),
+        Quantity(
+            "nonzero",
+            tuple(nz),
+            "non-zero basis values: "
+            + ", ".join(f"N_{{{i},{degree}}}({ts}) = {value_text(w[i])}" for i in nz)
+            + f"   (sum = {value_text(sum(w[i] for i in nz))})",
+            ", ".join(f"N_{{{i},{degree}}}({ts}) = {value_text(w[i])}" for i in nz),
+        ),
+        Quantity(
+            "point",
+            point,
+            f"C({ts}) = "
+            + " + ".join(f"{value_text(w[i])}·{point_text(pts[i])}" for i in nz)
+            + f" = {point_text(point)} -> pixel {pixel}",
+            f"C({ts}) = "
+            + " + ".join(f"{value_text(w[i])} \\cdot {point_text(pts[i])}" for i in nz)
+            + f" = {point_text(point)} \\to \\text{{pixel }} {pixel}",
+        ),
+    ]
+    lo = max(s - degree, 0)
+    tri_cols = tuple(Column(f"N{i}", f"N_{{{i},d}}", f"N_{{{i},d}}", 3) for i in range(lo, s + 1))
+
+    def triangle() -> Iterator[tuple[Any, ...]]:
+        for d, row in enumerate(levels):
+            yield (d, *(row[i] if s - d <= i < len(row) else None for i in range(lo, s + 1)))
+
+    def weighted() -> Iterator[tuple[Any, ...]]:
+        for i in nz:
+            yield (i, w[i], pts[i], (norm_value(w[i] * pts[i][0]), norm_value(w[i] * pts[i][1])))
+
+    marks = control_marks(pts)
+    return Solution(
+        primitive="curve",
+        algorithm="bspline-at",
+        title=f"B-spline of degree {degree} at t = {ts}: knots {knot_text(u)}",
+        given=(*given_points(pts), Quantity("t", t, f"t = {ts}", f"t = {ts}")),
+        derived=tuple(derived),
+        tables=(
+            Table(
+                f"Cox–de Boor at t = {ts}: N_(i,d) for d = 0 .. {degree} (only the span's "
+                "functions can be non-zero)",
+                (Column("d", "d", "d"), *tri_cols),
+                triangle,
+            ),
+            Table(
+                "Weighted sum of the non-zero terms",
+                (
+                    Column("i", "i", "i"),
+                    Column("N", f"N_(i,{degree})(t)", f"N_{{i,{degree}}}(t)", 3),
+                    Column("point_P", "P_i", "P_i"),
+                    Column("point_NP", f"N_(i,{degree})(t)·P_i", f"N_{{i,{degree}}}(t) P_i"),
+                ),
+                weighted,
+            ),
+        ),
+        pixels=lambda: iter((pixel,)),
+        bbox=bbox((*marks, pixel)),
+        notes=(*_BSPLINE_NOTES, ROUND_NOTE),
+        marks=marks,
+        geometry={
+            "polyline": [(float(point[0]), float(point[1]))],
+            "control": float_points(pts),
+        },
+    )

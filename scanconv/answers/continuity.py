@@ -1,0 +1,173 @@
+"""The worked answer of the join of two Bezier segments: positions, first and second
+derivatives at the join, and the highest of C0, C1, C2 that holds."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from typing import Any
+
+import numpy as np
+
+from ..algorithms.bezier import bernstein, bezier
+from ..algorithms.continuity import continuity_level, end_derivatives, same_direction
+from ..algorithms.curve_limits import (
+    DEFAULT_SAMPLES,
+    Point,
+    check_path,
+    check_points,
+    check_row,
+    check_samples,
+    check_weights,
+)
+from ..algorithms.sampling import bbox, combine, curve_pixels, dense_ts, float_points, polyline
+from ..core.records import Column, Pixel, Quantity, Solution, Table
+from ._curve import JOIN_NOTE, control_marks, given_points, point_text
+
+_ORDERS = ("C0", "C1", "C2")
+
+
+def _verdict(level: int) -> str:
+    """The classification in words.
+
+    >>> _verdict(-1), _verdict(1), _verdict(2)
+    ('none: the segments do not meet (C0 fails)', 'C1 (C0 and C1 hold; C2 fails)', 'C2 (C0 and C1 and C2 hold)')
+    """
+    if level < 0:
+        return "none: the segments do not meet (C0 fails)"
+    holds = " and ".join(_ORDERS[: level + 1])
+    verdict = f"{_ORDERS[level]} ({holds} {'hold' if level else 'holds'}"
+    return verdict + (f"; {_ORDERS[level + 1]} fails)" if level < 2 else ")")
+
+
+def continuity_solution(
+    first: Sequence[Point], second: Sequence[Point], samples: int = DEFAULT_SAMPLES
+) -> Solution:
+    """Classify the join of two Bezier segments: the highest of C0, C1, C2 that holds.
+
+    >>> sol = continuity_solution([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)])
+    >>> sol.derived[-1].text
+    'continuity at the join: C1 (C0 and C1 hold; C2 fails)'
+    """
+    a_pts = check_points(first, 2, "the first segment", param="first")
+    b_pts = check_points(second, 2, "the second segment", param="second")
+    check_samples(samples)
+    check_weights(samples, len(a_pts) + len(b_pts))
+    check_path([a_pts, b_pts], samples)
+    check_row(bezier(a_pts, samples), "the first segment")
+    check_row(bezier(b_pts, samples), "the second segment")
+    n, m = len(a_pts) - 1, len(b_pts) - 1
+    a = end_derivatives(a_pts, True)
+    b = end_derivatives(b_pts, False)
+    level = continuity_level(a_pts, b_pts)
+    derived = [
+        Quantity(
+            "A(1)",
+            a[0],
+            f"A(1) = P_{n} = {point_text(a[0])}",
+            f"A(1) = P_{{{n}}} = {point_text(a[0])}",
+        ),
+        Quantity(
+            "B(0)", b[0], f"B(0) = Q_0 = {point_text(b[0])}", f"B(0) = Q_0 = {point_text(b[0])}"
+        ),
+        Quantity(
+            "A'(1)",
+            a[1],
+            f"A'(1) = n(P_{n} - P_{n - 1}) = {n}·({point_text(a_pts[-1])} - {point_text(a_pts[-2])}) = "
+            f"{point_text(a[1])}",
+            f"A'(1) = n(P_{{{n}}} - P_{{{n - 1}}}) = {n}({point_text(a_pts[-1])} - {point_text(a_pts[-2])}) = "
+            f"{point_text(a[1])}",
+        ),
+        Quantity(
+            "B'(0)",
+            b[1],
+            f"B'(0) = m(Q_1 - Q_0) = {m}·({point_text(b_pts[1])} - {point_text(b_pts[0])}) = {point_text(b[1])}",
+            f"B'(0) = m(Q_1 - Q_0) = {m}({point_text(b_pts[1])} - {point_text(b_pts[0])}) = {point_text(b[1])}",
+        ),
+        _second("A''(1)", a_pts[::-1], a[2], "P", n, True),
+        _second("B''(0)", b_pts, b[2], "Q", m, False),
+    ]
+    verdict = _verdict(level)
+    derived.append(
+        Quantity(
+            "continuity",
+            _ORDERS[level] if level >= 0 else None,
+            f"continuity at the join: {verdict}",
+            f"\\text{{continuity at the join: {verdict}}}",
+        )
+    )
+    notes = [
+        "A(t) has control points P_0 .. P_n, B(t) has Q_0 .. Q_m; each runs over 0 ≤ t ≤ 1 and "
+        "they join at A(1) and B(0).",
+        "C0: positions equal (position continuity); C1: first derivatives equal (tangent "
+        "continuity); C2: second derivatives equal too (curvature continuity).",
+    ]
+    if level == 0 and same_direction(a[1], b[1]):
+        notes.append(
+            "The tangents point the same way but differ in length: the join is G1 (geometric "
+            "tangent continuity), though not C1."
+        )
+    notes.append(JOIN_NOTE)
+
+    def rows() -> Iterator[tuple[Any, ...]]:
+        labels = ("position", "first derivative", "second derivative")
+        for k in range(3):
+            yield (_ORDERS[k], labels[k], a[k], b[k], a[k] == b[k])
+
+    marks = control_marks((*a_pts, *b_pts))
+
+    def pixels() -> Iterator[Pixel]:
+        return curve_pixels(
+            (s.pixel for s in bezier(a_pts, samples)), (s.pixel for s in bezier(b_pts, samples))
+        )
+
+    ts = dense_ts(0, 1, samples)
+    xa, ya = combine(bernstein(n, ts), float_points(a_pts))
+    xb, yb = combine(bernstein(m, ts), float_points(b_pts))
+    return Solution(
+        primitive="curve",
+        algorithm="continuity",
+        title=f"Continuity of two Bezier segments (degrees {n} and {m}) at their join",
+        given=(*given_points(a_pts), *given_points(b_pts, "Q", "Q")),
+        derived=tuple(derived),
+        tables=(
+            Table(
+                "Continuity at the join",
+                (
+                    Column("order", "order", r"\text{order}"),
+                    Column("quantity", "compared", r"\text{compared}"),
+                    Column("point_A", "A at t = 1", r"A(1)"),
+                    Column("point_B", "B at t = 0", r"B(0)"),
+                    Column("equal", "equal", r"\text{equal}"),
+                ),
+                rows,
+            ),
+        ),
+        pixels=pixels,
+        bbox=bbox(marks),
+        notes=tuple(notes),
+        marks=marks,
+        geometry={
+            "polyline": polyline(np.concatenate([xa, xb]), np.concatenate([ya, yb])),
+            "control": float_points((*a_pts, *b_pts)),
+        },
+        data={"continuity": _ORDERS[level] if level >= 0 else None},
+    )
+
+
+def _second(key: str, pts: Sequence[Point], value: Point, name: str, n: int, end: bool) -> Quantity:
+    """The working of ``A''(1)`` or ``B''(0)``; ``pts`` start at the join."""
+    deg = "n" if name == "P" else "m"
+    if n < 2:
+        return Quantity(key, value, f"{key} = 0 (degree 1)", f"{key} = 0 \\; (\\text{{degree 1}})")
+    idx = (n, n - 1, n - 2) if end else (0, 1, 2)
+    sym = f"{name}_{idx[0]} - 2{name}_{idx[1]} + {name}_{idx[2]}"
+    tex_sym = f"{name}_{{{idx[0]}}} - 2{name}_{{{idx[1]}}} + {name}_{{{idx[2]}}}"
+    nums = f"{point_text(pts[0])} - 2·{point_text(pts[1])} + {point_text(pts[2])}"
+    tex_nums = f"{point_text(pts[0])} - 2{point_text(pts[1])} + {point_text(pts[2])}"
+    return Quantity(
+        key,
+        value,
+        f"{key} = {deg}({deg} - 1)({sym}) = {n}·{n - 1}·({nums}) = {point_text(value)}",
+        f"{key} = {deg}({deg}-1)({tex_sym}) = {n} \\cdot {n - 1} ({tex_nums}) = "
+        f"{point_text(value)}",
+    )

@@ -1,0 +1,166 @@
+"""The worked answer of the notes' Bezier-vs-B-spline comparison: move one control point and
+count which samples and pixels of each curve change."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+
+from ..algorithms.bezier import bezier
+from ..algorithms.bspline import bspline, domain
+from ..algorithms.curve_limits import (
+    DEFAULT_SAMPLES,
+    Point,
+    check_index,
+    check_path,
+    check_row,
+    check_samples,
+    check_weights,
+    exact_point,
+)
+from ..algorithms.local_control import local_control
+from ..algorithms.sampling import bbox, curve_pixels
+from ..core.numeric import Number
+from ..core.records import Column, Pixel, PixelFigure, Quantity, Solution
+from ._curve import JOIN_NOTE, given_points, knot_text, point_text, value_text
+from .bspline import bspline_setup
+
+
+def _moved_quantity(key: str, moved: int, total: int, removed: int, added: int) -> Quantity:
+    name = "Bezier" if key == "bezier" else "B-spline"
+    text = f"{moved} of {total} samples moved; pixels: {removed} removed, {added} added"
+    return Quantity(f"{key}_moved", moved, f"{name}: {text}", f"\\text{{{name}: {text}}}")
+
+
+def _changed(before: Iterable[Pixel], after: Iterable[Pixel]) -> tuple[int, int]:
+    """Pixels removed and added by the move.
+
+    >>> _changed([(0, 0), (1, 1)], [(1, 1), (2, 1), (3, 1)])
+    (1, 2)
+    """
+    b, a = set(before), set(after)
+    return len(b - a), len(a - b)
+
+
+def local_control_solution(
+    points: Sequence[Point],
+    index: int,
+    moved: Point,
+    degree: int = 3,
+    knots: str | Sequence[Number] = "open",
+    samples: int = DEFAULT_SAMPLES,
+) -> Solution:
+    """The notes' Bezier-vs-B-spline comparison as an example: move one point, count changes.
+
+    >>> pts = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2), (7, 1)]
+    >>> sol = local_control_solution(pts, 5, (7, 5), 2, "open", 8)
+    >>> sol.data["bezier_samples_moved"], sol.data["bspline_samples_moved"]
+    (8, 2)
+    """
+    pts, n, u, _ = bspline_setup(points, degree, knots)
+    check_samples(samples)
+    check_weights(samples, len(pts))
+    check_index(index, len(pts))
+    new = exact_point(moved)
+    after = [*pts[:index], new, *pts[index + 1 :]]
+    check_path([pts, after], samples)
+    for polygon in (pts, after):
+        check_row(bezier(polygon, samples), "Bezier curve")
+        check_row(bspline(polygon, degree, u, samples), "B-spline")
+    z_moved = s_moved = 0
+    for s in local_control(pts, index, new, degree, u, samples):
+        z_moved += s.extra[3]
+        s_moved += s.extra[7]
+    z_before = list(curve_pixels(s.pixel for s in bezier(pts, samples)))
+    z_after = list(curve_pixels(s.pixel for s in bezier(after, samples)))
+    s_before = list(curve_pixels(s.pixel for s in bspline(pts, degree, u, samples)))
+    s_after = list(curve_pixels(s.pixel for s in bspline(after, degree, u, samples)))
+    z_rm, z_add = _changed(z_before, z_after)
+    s_rm, s_add = _changed(s_before, s_after)
+    lo, hi = u[index], u[index + degree + 1]
+    t0, t1 = domain(u, degree, n)
+    total = samples + 1
+    old = point_text(pts[index])
+    derived = [
+        Quantity(
+            "move",
+            (index, new),
+            f"P{index} moves from {old} to {point_text(new)}",
+            f"P_{{{index}}}: {old} \\to {point_text(new)}",
+        ),
+        Quantity(
+            "knots",
+            tuple(u),
+            f"B-spline: degree p = {degree}, U = {knot_text(u)}, domain {value_text(t0)} ≤ t ≤ "
+            f"{value_text(t1)}",
+            f"\\text{{B-spline: }} p = {degree}, \\; U = {knot_text(u)}, \\; {value_text(t0)} "
+            f"\\le t \\le {value_text(t1)}",
+        ),
+        Quantity(
+            "bezier_support",
+            (0, 1),
+            f"Bezier: B_{{{index},{n}}}(t) > 0 for all 0 < t < 1, so every point with "
+            "0 < t < 1 moves",
+            f"\\text{{Bezier: }} B_{{{index},{n}}}(t) > 0 \\text{{ for }} 0 < t < 1",
+        ),
+        _moved_quantity("bezier", z_moved, total, z_rm, z_add),
+        Quantity(
+            "bspline_support",
+            (lo, hi),
+            f"B-spline: N_{{{index},{degree}}}(t) = 0 outside u_{index} = {value_text(lo)} ≤ t ≤ "
+            f"u_{index + degree + 1} = {value_text(hi)}, so only that stretch moves",
+            f"\\text{{B-spline: }} N_{{{index},{degree}}}(t) = 0 \\text{{ outside }} "
+            f"u_{{{index}}} = {value_text(lo)} \\le t \\le u_{{{index + degree + 1}}} = "
+            f"{value_text(hi)}",
+        ),
+        _moved_quantity("bspline", s_moved, total, s_rm, s_add),
+    ]
+
+    legend = "# = after the move only, o = before only, @ = both"
+    figures = tuple(
+        PixelFigure(tuple(aft), tuple(before), bbox([*before, *aft]), legend, f"{name}:")
+        for name, before, aft in (("Bezier", z_before, z_after), ("B-spline", s_before, s_after))
+    )
+
+    return Solution(
+        primitive="curve",
+        algorithm="local-control",
+        title=f"Local control: Bezier vs B-spline, P{index} moved from {old} to {point_text(new)}",
+        given=tuple(given_points(pts)),
+        derived=tuple(derived),
+        columns=(
+            Column("k", "k", "k"),
+            Column("t_bezier", "t (Bezier)", r"t_{\text{Bez}}", 3),
+            Column("bezier_before", "Bezier before", r"\text{Bezier before}"),
+            Column("bezier_after", "Bezier after", r"\text{Bezier after}"),
+            Column("bezier_moved", "moved", r"\text{moved}"),
+            Column("t_bspline", "t (B-spline)", r"t_{\text{B-spl}}", 3),
+            Column("bspline_before", "B-spline before", r"\text{B-spline before}"),
+            Column("bspline_after", "B-spline after", r"\text{B-spline after}"),
+            Column("bspline_moved", "moved", r"\text{moved}"),
+        ),
+        extra_keys=(
+            "t_bezier",
+            "bezier_before",
+            "bezier_after",
+            "bezier_moved",
+            "t_bspline",
+            "bspline_before",
+            "bspline_after",
+            "bspline_moved",
+        ),
+        steps=lambda: local_control(pts, index, new, degree, u, samples),
+        notes=(
+            "Both curves use the same control points and the same number of samples; 'moved' "
+            "compares the exact points before and after.",
+            "Bezier curves have global control (every weight is positive inside 0 < t < 1); "
+            "B-splines have local control (N_{i,p} vanishes outside [u_i, u_(i+p+1)]).",
+            JOIN_NOTE,
+        ),
+        figures=figures,
+        data={
+            "bezier_samples_moved": z_moved,
+            "bspline_samples_moved": s_moved,
+            "bezier_pixels_changed": z_rm + z_add,
+            "bspline_pixels_changed": s_rm + s_add,
+        },
+    )
