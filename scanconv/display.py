@@ -7,16 +7,16 @@ must not know about formats) the ways a person looks at an answer from Python: `
 dispatch), ``rows()`` as dictionaries, and pickling. This module sits above every layer, like
 the CLI, so the layers below never import a renderer.
 
->>> import scanconv  # doctest: +SKIP
->>> sol = scanconv.line(0, 0, 3, 1)  # doctest: +SKIP
->>> sol  # doctest: +SKIP
+>>> import scanconv
+>>> sol = scanconv.line(0, 0, 3, 1)
+>>> sol
 <Answer line/bresenham: Bresenham's line algorithm: (0, 0) to (3, 1)>
->>> print(sol.to("csv"), end="")  # doctest: +SKIP
+>>> print(sol.to("csv"), end="")
 k,p,decision,x,y,p_next
 0,-1,E,1,0,1
-1,1,NE,2,1,-1
-2,-1,E,3,1,1
->>> sol.rows()[0]  # doctest: +SKIP
+1,1,NE,2,1,-3
+2,-3,E,3,1,-1
+>>> sol.rows()[0]
 {'k': 0, 'p': -1, 'decision': 'E', 'pixel': (1, 0), 'p_next': 1}
 """
 

@@ -336,7 +336,7 @@ def test_radius_zero_plots_the_centre_only(method, rounding):
         (("midpoint", 5, Fraction(1, 2)), "xc must be an integer"),
         (("wu", 5), "unknown circle method"),
         (("trig", 5, 0, 0, "even"), "unknown rounding"),
-        (("midpoint", 5, 0, 0, "trunc"), "--rounding applies to"),
+        (("midpoint", 5, 0, 0, "trunc"), "a rounding rule applies only to"),
         (("midpoint", 10**10), "out of range"),
     ],
 )
@@ -353,7 +353,7 @@ BAD = [
     (["circle", "5", "--center", "1", "2", "3"], "unexpected extra argument"),
     (["circle", "5", "--center", "1.5", "2"], "xc must be an integer"),
     (["circle", "5", "--center", "x", "2"], "not a number"),
-    (["circle", "5", "--rounding", "trunc"], "--rounding applies to"),
+    (["circle", "5", "--rounding", "trunc"], "--rounding: a rounding rule applies only to"),
     (["circle", "5", "--rounding", "even", "-m", "trig"], "'even' is not one of"),
     (["circle", "20000", "-m", "symmetric-dda"], "at most 16383"),
     (["circle", "nan"], "not a finite number"),

@@ -25,15 +25,69 @@ LINE = ("line", "2", "2", "10", "6", "--algo", "bresenham")
 FORMATS = ("rich", "markdown", "latex", "csv", "json", "plain")
 
 
+PAIR = re.compile(r"\((-?\d+), (-?\d+)\)")
+
+
+def _pairs(text: str) -> list[tuple[int, int]]:
+    return [(int(x), int(y)) for x, y in PAIR.findall(text)]
+
+
+def _plotted(out: str) -> list[tuple[int, int]]:
+    """The pixels listed under "Pixels plotted (N)", N checked (markdown, latex, plain, rich)."""
+    rest = out.partition("Pixels plotted (")[2]
+    assert rest, out
+    count = int(rest.split(")", 1)[0])
+    lines = rest.splitlines()[1:]
+    start = next(i for i, ln in enumerate(lines) if PAIR.search(ln))
+    listed = []
+    for ln in lines[start:]:
+        if not PAIR.search(ln):
+            break
+        listed += _pairs(ln)
+    assert len(listed) == count
+    return listed
+
+
+def _table_pixels(out: str, fmt: str) -> list[tuple[int, int]]:
+    """The pixel of each step-table row: the one ``(x, y)`` cell of the row."""
+    if fmt == "markdown":
+        rows = [ln for ln in out.splitlines() if ln.startswith("|") and PAIR.search(ln)]
+    elif fmt == "latex":
+        rows = [ln for ln in out.splitlines() if ln.endswith("\\\\") and PAIR.search(ln)]
+    else:  # plain and rich: the rows between the table's heading and "Pixels plotted"
+        table = out.split("Step table", 1)[1].split("Pixels plotted", 1)[0]
+        rows = [ln for ln in table.splitlines() if PAIR.search(ln)]
+    assert all(len(_pairs(row)) == 1 for row in rows), rows
+    return [_pairs(row)[0] for row in rows]
+
+
 @pytest.mark.parametrize("fmt", FORMATS)
 @pytest.mark.parametrize("algo", ["bresenham", "dda", "basic"])
 def test_every_format_and_algorithm(fmt, algo):
+    """Each format, parsed, gives the solution's own pixels: JSON ``pixels`` and each step's
+    ``pixel``, the CSV rows' x and y, the table rows and the list of pixels plotted."""
+    from scanconv.answers.line import line_solution
+
+    solution = line_solution(algo, 2, 2, 10, 6)
+    pixels = list(solution.pixels())
+    steps = [s.pixel for s in solution.steps()]
     r = run("line", "2", "2", "10", "6", "--algo", algo, "--format", fmt)
     assert r.code == 0 and r.err == ""
-    assert "(10, 6)" in r.out or "10,6" in r.out or "[10, 6]" in r.out
     assert not ANSI.search(r.out)
     if fmt != "rich":
         assert not BOX.search(r.out)
+    if fmt == "json":
+        doc = json.loads(r.out)
+        assert [tuple(p) for p in doc["pixels"]] == pixels
+        assert [tuple(s["pixel"]) for s in doc["steps"]] == steps
+    elif fmt == "csv":
+        header, *rows = list(csv.reader(io.StringIO(r.out)))
+        x, y = header.index("x"), header.index("y")  # the first x and y: the pixel's
+        assert [(int(row[x]), int(row[y])) for row in rows] == steps
+        assert pixels[len(pixels) - len(rows) :] == steps  # bresenham plots the start first
+    else:
+        assert _plotted(r.out) == pixels
+        assert _table_pixels(r.out, fmt) == steps
 
 
 def test_plain_is_ascii():
@@ -258,3 +312,88 @@ def test_typer_cli_runner_every_format(fmt):
     assert result.exit_code == 0, result.output
     assert "(9, 6)" in result.stdout or "9,6" in result.stdout or "[9, 6]" in result.stdout
     assert not ANSI.search(result.stdout)
+
+
+# --- errors name the command's flag; the library names its parameter ---------------------------
+
+
+@pytest.mark.parametrize(
+    ("args", "api_name", "param", "flag"),
+    [
+        (("circle", "5", "-m", "trig"), "circle", "rounding", "--rounding: "),
+        (("circle", "5"), "circle", "xc", "--center: "),  # one option, two parameters
+        (("circle", "5"), "circle", "r", ""),  # a positional argument: no flag
+        (("bezier", "0", "0", "1", "1"), "bezier", "samples", "--samples: "),
+        (("bezier", "0", "0", "1", "1", "--at", "1"), "bezier_at", "t", "--at: "),
+        (("sample", "x", "--size", "4", "--levels", "4"), "sample", "m", "--size: "),
+        (("quantize", "--bits", "2"), "quantize", "integer", "--input: "),
+        (("storage", "8", "8", "--bits", "2"), "storage", "m", ""),  # storage M N: positional
+        (("line", "0", "0", "1", "1"), "line", None, ""),
+    ],
+)
+def test_an_input_error_names_the_flag_of_its_parameter(monkeypatch, args, api_name, param, flag):
+    from scanconv import _api
+    from scanconv.core.checks import InputError
+
+    def refuse(*args, **kwargs):
+        raise InputError("the value is wrong\n(on two lines)", param)
+
+    monkeypatch.setattr(_api, api_name, refuse)
+    r = run(*args)
+    assert_refused(r)
+    assert r.err == f"scanconv: error: {flag}the value is wrong (on two lines)\n"
+
+
+def test_a_flag_already_in_the_message_is_not_repeated(monkeypatch):
+    from scanconv import _api
+    from scanconv.core.checks import InputError
+
+    def refuse(*args, **kwargs):
+        raise InputError("--rounding applies to the float methods", "rounding")
+
+    monkeypatch.setattr(_api, "circle", refuse)
+    assert run("circle", "5").err == "scanconv: error: --rounding applies to the float methods\n"
+
+
+@pytest.mark.parametrize(
+    ("args", "name"),
+    [
+        (("line", "--bogus", "1", "2", "3"), "--bogus"),
+        (("line", "1", "2", "3", "-Q"), "-Q"),
+        (("circle", "5", "--center", "-q", "0"), "-q"),
+        (("parametric", "circle", "--radius", "-q"), "-q"),
+        (("bezier", "0", "0", "1", "1", "--bogus"), "--bogus"),
+        (("continuity", "0", "0", "1", "1", ":", "-q", "1", "2", "2"), "-q"),
+    ],
+)
+def test_an_option_where_a_number_belongs_is_no_such_option(args, name):
+    """``ignore_unknown_options`` hands ``--bogus`` to the number parser, which says what
+    click says of an unknown option (the library only says the text is not a number)."""
+    assert_refused(run(*args), f"No such option: {name}")
+
+
+def test_the_library_says_not_a_number_without_naming_options():
+    from scanconv.core.numeric import parse_number
+
+    with pytest.raises(ValueError, match="'--bogus' is not a number"):
+        parse_number("--bogus")
+
+
+def test_shared_options_are_declared_once_and_added_by_answers():
+    """The drawing commands get --svg and --png; storage and quantize no grid; sample keeps
+    its own --origin help (and reads the option itself)."""
+    import typer
+
+    from scanconv.cli import app
+
+    group = typer.main.get_command(app)
+    names = {
+        cmd: {p.name: p for p in group.commands[cmd].params}  # type: ignore[attr-defined]
+        for cmd in ("line", "storage", "sample", "local-control")
+    }
+    assert {"fmt", "grid", "origin", "output", "explain", "svg", "png"} <= set(names["line"])
+    assert {"fmt", "output", "explain"} <= set(names["storage"])
+    assert not {"grid", "origin", "svg", "png"} & set(names["storage"])
+    assert "svg" not in names["local-control"] and "origin" in names["local-control"]
+    assert "Row 0 is the top" in (names["sample"]["origin"].help or "")
+    assert list(names["line"])[:5] == ["x1", "y1", "x2", "y2", "algo"]

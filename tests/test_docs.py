@@ -36,3 +36,20 @@ def test_every_command_has_help_and_a_readme_mention(name):
     command = typer.main.get_command(app).commands[name]  # type: ignore[attr-defined]
     assert command.help, f"{name} has no help"
     assert f"scanconv {name}" in README, f"README does not show `scanconv {name}`"
+
+
+def test_readme_python_examples_are_true():
+    """Every ```python block of the README runs as a doctest and prints what it shows."""
+    import doctest
+
+    blocks = re.findall(r"```python\n(.*?)```", README, flags=re.S)
+    assert blocks, "the README shows the Python API"
+    parser = doctest.DocTestParser()
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    namespace: dict[str, object] = {}  # the blocks read as one session
+    for i, block in enumerate(blocks):
+        test = parser.get_doctest(block, namespace, f"README block {i + 1}", "README.md", 0)
+        test.globs = namespace
+        runner.run(test, clear_globs=False)
+    result = runner.summarize(verbose=False)
+    assert result.failed == 0 and result.attempted > 0

@@ -14,7 +14,8 @@ from pathlib import Path
 
 import pytest
 
-import scanconv.cli.commands as cli
+import scanconv.cli.entry as entry
+import scanconv.cli.output as cli
 
 from .helpers import run
 
@@ -86,10 +87,10 @@ def test_sigterm_handler_is_installed_during_a_run_and_restored(monkeypatch):
     before = signal.getsignal(signal.SIGTERM)
     monkeypatch.setattr(cli, "render", render)
     assert run(*LINE).code == 0
-    assert seen == [cli._terminate]
+    assert seen == [entry._terminate]
     assert signal.getsignal(signal.SIGTERM) is before
     with pytest.raises(SystemExit) as info:
-        cli._terminate(signal.SIGTERM, None)
+        entry._terminate(signal.SIGTERM, None)
     assert info.value.code == 143
 
 

@@ -14,7 +14,8 @@ import sys
 import pytest
 import typer
 
-from scanconv.cli import commands as cli
+from scanconv.cli import app
+from scanconv.cli.entry import _command_for
 
 PROBE = """
 import sys
@@ -53,12 +54,34 @@ def test_rich_format_loads_rich():
 
 
 def test_only_the_named_command_is_built():
-    every = typer.main.get_command(cli.app).commands  # type: ignore[attr-defined]
+    every = typer.main.get_command(app).commands  # type: ignore[attr-defined]
     assert len(every) > 1
-    assert list(cli._command_for(["line", "2", "2", "10", "6"]).commands) == ["line"]
-    assert set(cli._command_for(["--version"]).commands) == set(every)
-    assert set(cli._command_for(["no-such-command"]).commands) == set(every)
-    assert set(cli._command_for([]).commands) == set(every)
+    assert list(_command_for(["line", "2", "2", "10", "6"]).commands) == ["line"]
+    assert set(_command_for(["--version"]).commands) == set(every)
+    assert set(_command_for(["no-such-command"]).commands) == set(every)
+    assert set(_command_for([]).commands) == set(every)
+
+
+SIGNATURES = """
+from scanconv.cli.application import app
+from scanconv.cli.entry import _command_for
+_command_for({args!r})
+groups = [app, *(g.typer_instance for g in app.registered_groups)]
+callbacks = [c.callback for g in groups for c in g.registered_commands]
+print(*sorted(c.__name__ for c in callbacks if "parameters" in vars(c)))
+"""
+
+
+@pytest.mark.parametrize(
+    ("args", "built"),
+    [(["line", "2", "2", "10", "6"], "line"), (["parametric", "circle"], "parametric_circle")],
+)
+def test_only_the_named_command_works_out_its_signature(args, built):
+    """``@answers`` adds the shared options when typer first reads a command's signature, so
+    a run evaluates only its own command's annotations (the others stay as written)."""
+    code = SIGNATURES.format(args=args)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.stdout.split() == [built], out.stderr
 
 
 def _help(command: object, args: list[str]) -> str:
@@ -68,9 +91,26 @@ def _help(command: object, args: list[str]) -> str:
     return out.getvalue()
 
 
-@pytest.mark.parametrize("name", sorted(typer.main.get_command(cli.app).commands))  # type: ignore[attr-defined]
+@pytest.mark.parametrize("name", sorted(typer.main.get_command(app).commands))  # type: ignore[attr-defined]
 def test_help_is_the_same_as_with_the_whole_group(name):
-    whole = typer.main.get_command(cli.app)
-    alone = cli._command_for([name, "--help"])
+    whole = typer.main.get_command(app)
+    alone = _command_for([name, "--help"])
     assert list(alone.commands) == [name]
     assert _help(alone, [name, "--help"]) == _help(whole, [name, "--help"]) != ""
+
+
+GROUPED = sorted(
+    (group, name)
+    for group, sub in typer.main.get_command(app).commands.items()  # type: ignore[attr-defined]
+    for name in getattr(sub, "commands", {})
+)
+
+
+@pytest.mark.parametrize(("group", "name"), GROUPED, ids=[" ".join(p) for p in GROUPED])
+def test_a_command_of_a_group_is_built_alone_with_the_same_help(group, name):
+    whole = typer.main.get_command(app)
+    alone = _command_for([group, name, "--help"])
+    assert list(alone.commands) == [group]
+    assert list(alone.commands[group].commands) == [name]
+    args = [group, name, "--help"]
+    assert _help(alone, args) == _help(whole, args) != ""

@@ -14,8 +14,8 @@ from itertools import islice
 
 import pytest
 
-from scanconv.cli import commands as cli
 from scanconv.answers.line import line_solution
+from scanconv.cli import output as cli
 from scanconv.core.records import Solution, Step
 from scanconv.render import Format, Options, render
 from scanconv.render.text import BUFFER_ROWS

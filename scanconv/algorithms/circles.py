@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Iterable, Iterator
+from enum import Enum
 from fractions import Fraction
 
 from ..core.numeric import (
@@ -37,17 +38,11 @@ from ..core.numeric import (
 )
 from ..core.records import Move, Pixel, Step, new_step
 
-METHODS = ("midpoint", "bresenham", "polynomial", "trig", "symmetric-dda")
-"""The circle methods, by their ``--method`` names."""
-
 ALIASES = {"general": "polynomial"}
 """Other names accepted for a method (the notes call the polynomial method "general")."""
 
 FLOAT_METHODS = ("polynomial", "trig", "symmetric-dda")
 """The methods that compute non-integer coordinates and so take a rounding rule."""
-
-ROUNDINGS: dict[str, Callable[[Number], int]] = {"half-up": round_half_up, "trunc": round_trunc}
-"""Rounding rules for :data:`FLOAT_METHODS`: ``floor(v + 1/2)`` or truncation toward zero."""
 
 SDDA_MAX_RADIUS = 2**14 - 1
 """Largest radius for the symmetric DDA: its exact values gain about 2n bits per step."""
@@ -425,3 +420,33 @@ def symmetric_pixels(points: Iterable[Pixel], xc: int = 0, yc: int = 0) -> Itera
                     yield p
         else:
             yield from images(x, y, xc, yc)
+
+
+class CircleMethod(str, Enum):
+    """The circle methods, by the names the API and the CLI (``--method``) take; ``general``
+    is the notes' name for ``polynomial`` (see :data:`ALIASES`)."""
+
+    midpoint = "midpoint"
+    bresenham = "bresenham"
+    polynomial = "polynomial"
+    general = "general"
+    trig = "trig"
+    symmetric_dda = "symmetric-dda"
+
+
+class Rounding(str, Enum):
+    """How the floating-point methods (:data:`FLOAT_METHODS`) turn a coordinate into a pixel."""
+
+    half_up = "half-up"
+    trunc = "trunc"
+
+
+METHODS = tuple(m.value for m in CircleMethod if m.value not in ALIASES)
+"""The circle methods' names, without the aliases: midpoint, bresenham, polynomial, trig,
+symmetric-dda."""
+
+ROUNDINGS: dict[str, Callable[[Number], int]] = {
+    Rounding.half_up.value: round_half_up,
+    Rounding.trunc.value: round_trunc,
+}
+"""Rounding rules for :data:`FLOAT_METHODS`: ``floor(v + 1/2)`` or truncation toward zero."""

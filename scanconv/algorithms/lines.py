@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from enum import Enum
 from fractions import Fraction
 
 from ..core.numeric import (
@@ -18,9 +19,6 @@ from ..core.numeric import (
     round_half_up,
 )
 from ..core.records import Move, Step, new_step
-
-ALGORITHMS = ("bresenham", "dda", "basic")
-"""The line algorithms, by their ``--algo`` names."""
 
 
 def bresenham(x1: int, y1: int, x2: int, y2: int) -> Iterator[Step]:
@@ -213,3 +211,15 @@ def basic(x1: Number, y1: Number, x2: Number, y2: Number) -> Iterator[Step]:
         rb = round_half_up(b)
         pixel = (rb, a) if steep else (a, rb)
         yield Step(k, None, None, pixel, (a, b, rb))
+
+
+class LineAlgorithm(str, Enum):
+    """The line algorithms, by the names the API and the CLI (``--algo``) take."""
+
+    bresenham = "bresenham"
+    dda = "dda"
+    basic = "basic"
+
+
+ALGORITHMS = tuple(a.value for a in LineAlgorithm)
+"""The line algorithms' names: ``("bresenham", "dda", "basic")``."""

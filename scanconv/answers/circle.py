@@ -24,7 +24,7 @@ from ..algorithms.circles import (
     trig,
     trig_last,
 )
-from ..core.checks import check_integer
+from ..core.checks import InputError, check_integer
 from ..core.numeric import (
     Number,
     fmt,
@@ -105,18 +105,21 @@ def circle_solution(
     method = ALIASES.get(method, method)
     if method not in METHODS:
         names = ", ".join((*METHODS, *ALIASES))
-        raise ValueError(f"unknown circle method {method!r} (choose from {names})")
+        raise InputError(f"unknown circle method {method!r} (choose from {names})", "method")
     rounder(rounding)
     ir = check_integer(r, "radius", negative=False)
     ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
     if method not in FLOAT_METHODS and rounding != "half-up":
-        raise ValueError(
-            f"--rounding applies to {', '.join(FLOAT_METHODS)}; {method} uses integers only"
+        raise InputError(
+            f"a rounding rule applies only to {', '.join(FLOAT_METHODS)}; "
+            f"{method} uses integers only",
+            "rounding",
         )
     if method == "symmetric-dda" and ir > SDDA_MAX_RADIUS:
-        raise ValueError(
+        raise InputError(
             f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "
-            f"the radius must be at most {SDDA_MAX_RADIUS} (got {ir})"
+            f"the radius must be at most {SDDA_MAX_RADIUS} (got {ir})",
+            "r",
         )
     build = {
         "midpoint": _midpoint_parts,
@@ -154,8 +157,8 @@ def circle_solution(
 
 def _rounding_note(rounding: str) -> str:
     if rounding == "trunc":
-        return "Coordinates are truncated toward zero (--rounding trunc), like a C (int) cast."
-    return "Coordinates are rounded half up, floor(v + 1/2) (--rounding half-up)."
+        return "Coordinates are truncated toward zero, like a C (int) cast."
+    return "Coordinates are rounded half up, floor(v + 1/2)."
 
 
 _Parts = tuple[

@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 from typing import Any
 
+from ..core.checks import InputError
 from ..core.numeric import Number, fmt, fmt_short, normalize
 from ..core.records import Pixel, PixelFigure, Solution, Table, heading
 
@@ -158,7 +159,7 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
 
     length = max(abs(Fraction(x2 - x1)), abs(Fraction(y2 - y1)))
     if length > MAX_LENGTH:
-        raise ValueError(
+        raise InputError(
             f"compare line: the line is {fmt_short(length)} pixels long along its major axis; "
             f"at most {MAX_LENGTH} (every method runs before the first row)"
         )
@@ -362,7 +363,7 @@ def compare_circles(r: Number) -> Solution:
 
     ir = check_integer(r, "radius", negative=False)
     if ir > MAX_RADIUS:
-        raise ValueError(
+        raise InputError(
             f"compare circle: the radius must be at most {MAX_RADIUS} (got {ir}; "
             "every method runs before the first row)"
         )

@@ -16,7 +16,7 @@ from ..algorithms.ellipses import (
     region1_end,
     symmetric_pixels,
 )
-from ..core.checks import check_integer
+from ..core.checks import InputError, check_integer
 from ..core.numeric import Number, fmt_paren, fmt_short
 from ..core.records import (
     Column,
@@ -67,9 +67,10 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
     iry = check_integer(ry, "ry", negative=False)
     ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
     if max(irx, iry) > MAX_AXIS:
-        raise ValueError(
+        raise InputError(
             f"semi-axes of the midpoint ellipse must be at most {MAX_AXIS:.0e} "
-            f"(got rx = {irx}, ry = {iry}): the working needs the end of region 1 first"
+            f"(got rx = {irx}, ry = {iry}): the working needs the end of region 1 first",
+            "rx" if irx > MAX_AXIS else "ry",
         )
     rx2, ry2 = irx * irx, iry * iry
     x0, y0 = region1_end(irx, iry)

@@ -15,6 +15,7 @@ from ..algorithms.lines import (
     dda_steps,
     orient,
 )
+from ..core.checks import InputError
 from ..core.numeric import (
     Number,
     fmt_exact,
@@ -129,15 +130,18 @@ def line_solution(algo: str, x1: Number, y1: Number, x2: Number, y2: Number) -> 
         return _dda_solution(x1, y1, x2, y2)
     if algo == "basic":
         return _basic_solution(x1, y1, x2, y2)
-    raise ValueError(f"unknown line algorithm {algo!r} (choose from {', '.join(ALGORITHMS)})")
+    raise InputError(
+        f"unknown line algorithm {algo!r} (choose from {', '.join(ALGORITHMS)})", "algo"
+    )
 
 
 def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
     for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2")):
         if normalize(v) != int(v):
-            raise ValueError(
+            raise InputError(
                 f"bresenham needs integer end points, got {n} = {fmt_exact(v)} "
-                "(use --algo dda or basic for fractional end points)"
+                "(the dda and basic algorithms take fractional end points)",
+                n,
             )
     ix1, iy1, ix2, iy2 = int(x1), int(y1), int(x2), int(y2)
     sx, sy, ex, ey, steep, dmaj, dmin, sign, stay, move = orient(ix1, iy1, ix2, iy2)

@@ -1,5 +1,13 @@
-"""The ``scanconv`` command line: the only layer that parses flags and prints."""
+"""The ``scanconv`` command line: the only layer that parses flags and prints.
 
-from .commands import app, main
+:mod:`.application` holds the typer app and its groups, :mod:`.options` the parsers and option
+declarations, :mod:`.command` the ``@answers`` decorator (shared output options, bad input),
+:mod:`.output` the writing, :mod:`.entry` the entry point ``main``; the commands are grouped
+by topic in :mod:`.lines`, :mod:`.circles`, :mod:`.curves`, :mod:`.image` and :mod:`.compare`,
+each a thin mapping from flags to a :mod:`scanconv._api` function.
+"""
+
+from .application import app
+from .entry import main
 
 __all__ = ["app", "main"]

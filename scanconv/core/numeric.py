@@ -72,8 +72,6 @@ def parse_number(text: str) -> Fraction:
         low = s.lower().lstrip("+-")
         if low in ("nan", "inf", "infinity"):
             raise ValueError(f"{s!r} is not a finite number")
-        if s.startswith("-") and not s[1:2].isdigit():
-            raise ValueError(f"no such option: {s}")
         raise ValueError(f"{text!r} is not a number")
     if "/" in s and int(s.split("/")[1]) == 0:
         raise ValueError(f"{text!r} divides by zero")

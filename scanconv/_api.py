@@ -1,0 +1,650 @@
+"""The Python API: one function per command of the command line, each returning a
+:class:`~scanconv.core.records.Solution`.
+
+The keywords are the library's parameter names; the choices are strings or the library's enums
+(:class:`LineAlgorithm`, :class:`CircleMethod`, :class:`Rounding`). A number may be an ``int``,
+a :class:`~fractions.Fraction`, a ``float`` (read as the decimal it prints as, so ``0.1`` is
+exactly 1/10, as on the command line) or a string (``"5/2"``, ``"-3"``, ``"1e3"``); a formula
+parameter (``t``, ``t_range``, ``domain``, ``value_range`` of :func:`sample`) also takes a
+constant expression such as ``"2*pi"``. Bad input raises
+:class:`~scanconv.core.checks.InputError` (a ``ValueError``) naming the parameter where this
+module finds it, and the library's ``ValueError`` otherwise.
+
+Render a solution with :func:`scanconv.render.render`, or read it directly:
+
+>>> sol = circle(5, method="bresenham")
+>>> [step.pixel for step in sol.steps()]
+[(0, 5), (1, 5), (2, 5), (3, 4)]
+
+The library modules are imported inside the functions: importing this module stays cheap.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from decimal import Decimal
+from enum import Enum
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any
+
+from .algorithms.circles import CircleMethod, Rounding
+from .algorithms.lines import LineAlgorithm
+from .core.checks import InputError
+from .core.numeric import Number, fmt_short, parse_number
+
+if TYPE_CHECKING:
+    from .core.records import Solution
+
+__all__ = [
+    "CircleMethod",
+    "LineAlgorithm",
+    "Rounding",
+    "bezier",
+    "bezier_at",
+    "bspline",
+    "bspline_at",
+    "bspline_basis",
+    "circle",
+    "compare_circles",
+    "compare_lines",
+    "continuity",
+    "ellipse",
+    "line",
+    "local_control",
+    "parametric_circle",
+    "parametric_custom",
+    "parametric_ellipse",
+    "parametric_line",
+    "parametric_parabola",
+    "quantize",
+    "ramp",
+    "sample",
+    "storage",
+]
+
+NumberLike = int | Fraction | float | Decimal | str
+"""What a number parameter takes."""
+
+PointLike = tuple[NumberLike, NumberLike]
+"""A point ``(x, y)``."""
+
+PointsLike = Sequence[PointLike] | Sequence[NumberLike]
+"""Control points: ``[(x0, y0), (x1, y1), ...]`` or flat, ``[x0, y0, x1, y1, ...]``."""
+
+FormulaLike = NumberLike
+"""A number, or a constant expression in a string (``"2*pi"``, ``"1/3"``)."""
+
+TRangeLike = tuple[FormulaLike, FormulaLike]
+"""The range of a curve's parameter t: two formulas (``(0, "2*pi")``)."""
+
+
+# --- lines, circles, ellipses ------------------------------------------------------------------
+
+
+def line(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    algo: LineAlgorithm | str = "bresenham",
+) -> Solution:
+    """The line from ``(x1, y1)`` to ``(x2, y2)`` by ``algo`` (``scanconv line``).
+
+    >>> list(line(0, 0, 3, 1).pixels())
+    [(0, 0), (1, 0), (2, 1), (3, 1)]
+    >>> [s.pixel for s in line("1/2", 0, 3.5, 1, algo=LineAlgorithm.dda).steps()]
+    [(1, 0), (2, 0), (3, 1), (4, 1)]
+    """
+    from .answers.line import line_solution
+
+    coords = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    return line_solution(_choice(algo, "algo"), *coords)
+
+
+def circle(
+    r: NumberLike,
+    center: PointLike = (0, 0),
+    method: CircleMethod | str = "midpoint",
+    rounding: Rounding | str = "half-up",
+) -> Solution:
+    """The circle of radius ``r`` about ``center`` by ``method`` (``scanconv circle``).
+
+    ``rounding`` is for the floating-point methods (polynomial, trig, symmetric-dda).
+
+    >>> [s.pixel for s in circle(5).steps()]
+    [(1, 5), (2, 5), (3, 4), (4, 3)]
+    >>> circle(5, (10, 10), method=CircleMethod.trig, rounding="trunc").data
+    {'rounding': 'trunc'}
+    """
+    from .answers.circle import circle_solution
+
+    radius = _number(r, "r")
+    xc, yc = _pair(center, "center")
+    return circle_solution(
+        _choice(method, "method"), radius, xc, yc, rounding=_choice(rounding, "rounding")
+    )
+
+
+def ellipse(rx: NumberLike, ry: NumberLike, center: PointLike = (0, 0)) -> Solution:
+    """The midpoint ellipse with semi-axes ``rx``, ``ry`` about ``center`` (``scanconv ellipse``).
+
+    >>> sorted(ellipse(2, 1).pixels())
+    [(-2, 0), (-1, -1), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 1), (2, 0)]
+    """
+    from .answers.ellipse import ellipse_solution
+
+    a, b = _numbers(rx=rx, ry=ry)
+    xc, yc = _pair(center, "center")
+    return ellipse_solution(a, b, xc, yc)
+
+
+def compare_lines(x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike) -> Solution:
+    """The basic method, DDA and Bresenham side by side (``scanconv compare line``).
+
+    >>> len(list(compare_lines(2, 8, 10, 4).tables[0].rows()))  # x = 2 .. 10
+    9
+    """
+    from .answers.compare import compare_lines as solution
+
+    return solution(*_numbers(x1=x1, y1=y1, x2=x2, y2=y2))
+
+
+def compare_circles(r: NumberLike) -> Solution:
+    """Every circle method over the first octant (``scanconv compare circle``).
+
+    >>> len(list(compare_circles(10).tables[0].rows()))
+    8
+    """
+    from .answers.compare import compare_circles as solution
+
+    return solution(_number(r, "r"))
+
+
+# --- image representation ---------------------------------------------------------------------
+
+
+def storage(
+    m: NumberLike,
+    n: NumberLike,
+    *,
+    levels: NumberLike | None = None,
+    bits: NumberLike | None = None,
+    binary: bool = False,
+    color: str | None = None,
+    frames: NumberLike = 1,
+) -> Solution:
+    """The storage of an ``m`` x ``n`` image (``scanconv storage``): give exactly one of
+    ``levels``, ``bits``, ``binary`` or ``color="rgb24"``.
+
+    >>> storage(1024, 768, levels=256).data["sizes"]["KiB"]
+    Fraction(768, 1)
+    """
+    from .answers.storage import storage_solution
+
+    return storage_solution(
+        *_numbers(m=m, n=n),
+        levels=_optional(levels, "levels"),
+        bits=_optional(bits, "bits"),
+        binary=binary,
+        color=None if color is None else _choice(color, "color"),
+        frames=_number(frames, "frames"),
+    )
+
+
+def quantize(
+    bits: NumberLike,
+    value_range: tuple[NumberLike, NumberLike] | None = None,
+    *,
+    integer: bool = True,
+    recon: str = "midpoint",
+) -> Solution:
+    """The quantization table for ``bits`` bits over ``value_range`` (``scanconv quantize``):
+    integer inputs ``LO..HI``, or with ``integer=False`` real ones in ``[LO, HI]``; ``recon`` is
+    ``"midpoint"`` or ``"lower"``.
+
+    >>> [row[-1] for row in quantize(2, (0, 255)).tables[0].rows()]
+    [32, 96, 160, 224]
+    """
+    from .answers.quantize import quantize_solution
+
+    return quantize_solution(
+        _number(bits, "bits"),
+        None if value_range is None else _pair(value_range, "value_range"),
+        integer=integer,
+        recon=_choice(recon, "recon"),
+    )
+
+
+def sample(
+    expr: str,
+    size: str | int | tuple[int, int],
+    levels: NumberLike,
+    *,
+    domain: tuple[FormulaLike, FormulaLike, FormulaLike, FormulaLike] | None = None,
+    value_range: tuple[FormulaLike, FormulaLike] | None = None,
+    origin: str = "bottom-left",
+) -> Solution:
+    """Sample ``f(x, y) = expr`` on an M x N grid and quantize it to ``levels`` levels
+    (``scanconv sample``). ``size`` is ``"MxN"``, ``M`` or ``(M, N)``; ``domain`` is
+    ``(X0, X1, Y0, Y1)``; ``value_range`` the range of f mapped onto the levels.
+
+    >>> next(iter(sample("x + y", "8x8", 8).tables[0].rows()))
+    (0, 4, 4, 5, 5, 6, 6, 7, 7)
+    """
+    from .algorithms.sample import sample_levels
+    from .answers.sample import sample_solution
+
+    m, n = _size(size)
+    sampled = sample_levels(
+        expr,
+        m,
+        n,
+        _number(levels, "levels"),
+        domain=None if domain is None else _formulas(domain, "domain", 4),
+        value_range=None if value_range is None else _formulas(value_range, "value_range", 2),
+        origin=_choice(origin, "origin"),
+    )
+    return sample_solution(sampled)
+
+
+def ramp(size: str | int | tuple[int, int] = "8", levels: NumberLike = 8) -> Solution:
+    """The notes' grayscale ramp, ``i + j`` folded back at ``L - 1`` (``scanconv image ramp``).
+
+    >>> next(iter(ramp(8, 8).tables[0].rows()))
+    (0, 0, 1, 2, 3, 4, 5, 6, 7)
+    """
+    from .answers.ramp import ramp_solution
+
+    m, n = _size(size)
+    return ramp_solution(m, n, _number(levels, "levels"))
+
+
+# --- curves -----------------------------------------------------------------------------------
+
+
+def parametric_circle(
+    center: PointLike = (0, 0),
+    radius: NumberLike = 1,
+    *,
+    t_range: TRangeLike | None = None,
+    samples: NumberLike | None = None,
+) -> Solution:
+    """``x = xc + r cos t``, ``y = yc + r sin t`` (``scanconv parametric circle``).
+
+    ``samples`` steps of t over ``t_range`` (default: 16 steps over ``0 .. 2*pi``).
+
+    >>> list(parametric_circle(radius=5, samples=4).pixels())[:3]
+    [(5, 0), (4, 1), (3, 2)]
+    """
+    return _parametric(
+        "circle",
+        t_range,
+        samples,
+        center=_pair(center, "center"),
+        radius=_number(radius, "radius"),
+    )
+
+
+def parametric_ellipse(
+    center: PointLike = (0, 0),
+    a: NumberLike = 2,
+    b: NumberLike = 1,
+    *,
+    t_range: TRangeLike | None = None,
+    samples: NumberLike | None = None,
+) -> Solution:
+    """``x = xc + a cos t``, ``y = yc + b sin t`` (``scanconv parametric ellipse``).
+
+    >>> list(parametric_ellipse(a=8, b=4, samples=4).pixels())[0]
+    (8, 0)
+    """
+    point = _pair(center, "center")
+    a, b = _numbers(a=a, b=b)
+    return _parametric("ellipse", t_range, samples, center=point, a=a, b=b)
+
+
+def parametric_parabola(
+    vertex: PointLike = (0, 0),
+    a: NumberLike = 1,
+    *,
+    t_range: TRangeLike | None = None,
+    samples: NumberLike | None = None,
+) -> Solution:
+    """``x = h + t``, ``y = k + a t^2`` (``scanconv parametric parabola``; t from -3 to 3).
+
+    >>> [s.pixel for s in parametric_parabola(samples=2).steps()]
+    [(-3, 9), (0, 0), (3, 9)]
+    """
+    point = _pair(vertex, "vertex")
+    return _parametric("parabola", t_range, samples, vertex=point, a=_number(a, "a"))
+
+
+def parametric_line(
+    x0: NumberLike,
+    y0: NumberLike,
+    x1: NumberLike,
+    y1: NumberLike,
+    *,
+    t_range: TRangeLike | None = None,
+    samples: NumberLike | None = None,
+) -> Solution:
+    """``x = x0 + t (x1 - x0)``, ``y = y0 + t (y1 - y0)`` (``scanconv parametric line``).
+
+    >>> list(parametric_line(0, 0, 4, 2).pixels())
+    [(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)]
+    """
+    points = _numbers(x0=x0, y0=y0, x1=x1, y1=y1)
+    return _parametric("line", t_range, samples, points=points)
+
+
+def parametric_custom(
+    x: str,
+    y: str,
+    *,
+    t_range: TRangeLike | None = None,
+    samples: NumberLike | None = None,
+) -> Solution:
+    """Your own ``x(t)`` and ``y(t)`` (``scanconv parametric custom``).
+
+    >>> list(parametric_custom("t", "t*t", t_range=(0, 2), samples=2).pixels())
+    [(0, 0), (1, 1), (1, 2), (2, 3), (2, 4)]
+    """
+    return _parametric("custom", t_range, samples, x=x, y=y)
+
+
+def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
+    """The Bezier curve of ``points`` at ``samples`` steps of t (default 16)
+    (``scanconv bezier``).
+
+    >>> list(bezier([(0, 0), (1, 2), (3, 3), (4, 0)], 8).pixels())
+    [(0, 0), (0, 1), (1, 1), (1, 2), (2, 2), (3, 2), (4, 1), (4, 0)]
+    """
+    from .algorithms.curve_limits import DEFAULT_SAMPLES
+    from .answers.bezier import bezier_solution
+
+    pts = _points(points)
+    return bezier_solution(pts, _whole(DEFAULT_SAMPLES if samples is None else samples, "samples"))
+
+
+def bezier_at(points: PointsLike, t: FormulaLike) -> Solution:
+    """De Casteljau's construction at one ``t`` in [0, 1] (``scanconv bezier --at``).
+
+    >>> list(bezier_at([0, 0, 1, 2, 3, 3, 4, 0], "1/2").pixels())  # B(1/2) = (2, 1.875)
+    [(2, 2)]
+    """
+    from .answers.bezier import bezier_at_solution
+
+    pts = _points(points)
+    return bezier_at_solution(pts, _formula(t, "t"))
+
+
+def bspline(
+    points: PointsLike,
+    degree: NumberLike = 3,
+    knots: str | Sequence[NumberLike] = "open",
+    samples: NumberLike | None = None,
+) -> Solution:
+    """The B-spline of ``degree`` over ``points`` (``scanconv bspline``). ``knots`` is
+    ``"open"``, ``"uniform"``, or the ``n + p + 2`` knot values (a list or ``"0,0,1,2,2"``);
+    ``samples`` defaults to a few steps per knot span.
+
+    >>> list(bspline([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, samples=4).pixels())[-1]
+    (5, 2)
+    """
+    return _bspline(points, degree, knots, samples, basis_only=False)
+
+
+def bspline_basis(
+    points: PointsLike,
+    degree: NumberLike = 3,
+    knots: str | Sequence[NumberLike] = "open",
+    samples: NumberLike | None = None,
+) -> Solution:
+    """Only the table of the basis values ``N_i,p(t)`` (``scanconv bspline --basis``).
+
+    >>> [c.key for c in bspline_basis([0, 0, 1, 2, 3, 3], 2).tables[0].columns][:3]
+    ['k', 't', 'N0']
+    """
+    return _bspline(points, degree, knots, samples, basis_only=True)
+
+
+def bspline_at(
+    points: PointsLike,
+    t: FormulaLike,
+    degree: NumberLike = 3,
+    knots: str | Sequence[NumberLike] = "open",
+) -> Solution:
+    """One ``t``: the Cox-de Boor triangle and the weighted sum (``scanconv bspline --at``).
+
+    >>> pts = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)]
+    >>> list(bspline_at(pts, 1.5, 2).pixels())  # C(1.5) = (2.875, 2.5)
+    [(3, 3)]
+    """
+    from .answers.bspline import bspline_at_solution
+
+    pts = _points(points)
+    spec = _knots(knots)
+    return bspline_at_solution(pts, _whole(degree, "degree"), spec, _formula(t, "t"))
+
+
+def continuity(
+    first: PointsLike, second: PointsLike, samples: NumberLike | None = None
+) -> Solution:
+    """C0, C1, C2 at the join of two Bezier segments (``scanconv continuity``).
+
+    >>> continuity([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)]).data["continuity"]
+    'C1'
+    """
+    from .algorithms.curve_limits import DEFAULT_SAMPLES
+    from .answers.continuity import continuity_solution
+
+    a, b = _points(first, "first"), _points(second, "second")
+    steps = _whole(DEFAULT_SAMPLES if samples is None else samples, "samples")
+    return continuity_solution(a, b, steps)
+
+
+def local_control(
+    points: PointsLike,
+    index: NumberLike,
+    moved: PointLike,
+    degree: NumberLike = 3,
+    knots: str | Sequence[NumberLike] = "open",
+    samples: NumberLike | None = None,
+) -> Solution:
+    """Move control point ``index`` to ``moved``: what changes on the Bezier curve and on the
+    B-spline (``scanconv local-control``).
+
+    >>> pts = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2), (7, 1)]
+    >>> sol = local_control(pts, 5, (7, 5), 2, samples=8)
+    >>> sol.data["bezier_samples_moved"], sol.data["bspline_samples_moved"]
+    (8, 2)
+    """
+    from .algorithms.curve_limits import DEFAULT_SAMPLES
+    from .answers.local_control import local_control_solution
+
+    pts = _points(points)
+    spec = _knots(knots)
+    return local_control_solution(
+        pts,
+        _whole(index, "index"),
+        _pair(moved, "moved"),
+        _whole(degree, "degree"),
+        spec,
+        _whole(DEFAULT_SAMPLES if samples is None else samples, "samples"),
+    )
+
+
+def _parametric(
+    kind: str,
+    t_range: TRangeLike | None,
+    samples: NumberLike | None,
+    **given: Any,
+) -> Solution:
+    from .answers.parametric import parametric_solution
+
+    return parametric_solution(
+        kind,
+        t_range=None if t_range is None else _bounds(t_range),
+        samples=None if samples is None else _whole(samples, "samples"),
+        **given,
+    )
+
+
+def _bspline(
+    points: PointsLike,
+    degree: NumberLike,
+    knots: str | Sequence[NumberLike],
+    samples: NumberLike | None,
+    *,
+    basis_only: bool,
+) -> Solution:
+    from .answers.bspline import bspline_solution
+
+    pts = _points(points)
+    spec = _knots(knots)
+    return bspline_solution(
+        pts,
+        _whole(degree, "degree"),
+        spec,
+        None if samples is None else _whole(samples, "samples"),
+        basis_only=basis_only,
+    )
+
+
+# --- reading the arguments ----------------------------------------------------------------------
+
+
+def _number(value: NumberLike, param: str) -> Number:
+    """An exact number: ``int`` and ``Fraction`` as given, anything else through
+    :func:`~scanconv.core.numeric.parse_number` (a float as the decimal it prints as)."""
+    if isinstance(value, int | Fraction) and not isinstance(value, bool):
+        return value
+    if isinstance(value, float | Decimal):
+        text = repr(value) if isinstance(value, float) else str(value)
+    elif isinstance(value, str):
+        text = value
+    else:
+        raise InputError(f"{param} must be a number, got {value!r}", param)
+    try:
+        return parse_number(text)
+    except ValueError as err:
+        raise InputError(str(err), param) from None
+
+
+def _numbers(**values: NumberLike) -> tuple[Number, ...]:
+    return tuple(_number(v, name) for name, v in values.items())
+
+
+def _optional(value: NumberLike | None, param: str) -> Number | None:
+    return None if value is None else _number(value, param)
+
+
+def _whole(value: NumberLike, param: str) -> int:
+    v = _number(value, param)
+    if isinstance(v, Fraction):
+        if v.denominator != 1:
+            raise InputError(f"{param} must be an integer, got {fmt_short(v)}", param)
+        return v.numerator
+    return v
+
+
+def _pair(values: Sequence[NumberLike], param: str) -> tuple[Number, Number]:
+    """A point or a range: two numbers."""
+    if isinstance(values, str) or len(values) != 2:
+        raise InputError(f"{param} takes 2 numbers, got {values!r}", param)
+    return _number(values[0], param), _number(values[1], param)
+
+
+def _formula(value: FormulaLike, param: str) -> Any:
+    """A value of a parameter such as ``t``: a number, or a constant expression (exact when it
+    is rational; ``"pi/4"`` is a float)."""
+    if isinstance(value, str):
+        from .core.expr import parse_exact
+
+        try:
+            parsed: Any = parse_exact(value)
+        except ValueError as err:
+            raise InputError(str(err), param) from None
+    else:
+        parsed = _number(value, param)
+    if isinstance(parsed, Fraction) and parsed.denominator == 1:
+        return parsed.numerator
+    return parsed
+
+
+def _formulas(values: Sequence[FormulaLike], param: str, count: int) -> tuple[Any, ...]:
+    """``domain`` and ``value_range`` of :func:`sample`: numbers or constant expressions."""
+    if isinstance(values, str) or len(values) != count:
+        raise InputError(f"{param} takes {count} values, got {values!r}", param)
+    from .core.expr import parse_exact
+
+    out = []
+    for v in values:
+        try:
+            out.append(parse_exact(v) if isinstance(v, str) else _number(v, param))
+        except ValueError as err:
+            raise InputError(str(err), param) from None
+    return tuple(out)
+
+
+def _bounds(values: TRangeLike) -> tuple[Any, Any]:
+    """``t_range``: formulas stay text, for the answer to show them as given (``2π``)."""
+    if isinstance(values, str) or len(values) != 2:
+        raise InputError(f"t_range takes 2 values, got {values!r}", "t_range")
+    lo, hi = (v if isinstance(v, str) else _number(v, "t_range") for v in values)
+    return lo, hi
+
+
+def _points(values: PointsLike, param: str = "points") -> list[Any]:
+    """Control points, as pairs or flat, as the library's exact pairs."""
+    from .algorithms.curve_limits import pairs
+
+    flat: list[Any] = []
+    for v in values:
+        if not isinstance(v, tuple | list):
+            flat.append(v)
+        elif len(v) == 2:
+            flat.extend(v)
+        else:
+            raise InputError(f"a point is a pair (x, y), got {v!r}", param)
+    try:
+        return pairs([_number(v, param) for v in flat])
+    except InputError:
+        raise
+    except ValueError as err:
+        raise InputError(str(err), param) from None
+
+
+def _knots(value: str | Sequence[NumberLike]) -> str | tuple[Number, ...]:
+    if not isinstance(value, str):
+        return tuple(_number(v, "knots") for v in value)
+    from .algorithms.bspline import parse_knots
+
+    try:
+        return parse_knots(value)
+    except ValueError as err:
+        raise InputError(str(err), "knots") from None
+
+
+def _size(value: str | int | tuple[int, int]) -> tuple[int, int]:
+    if isinstance(value, str):
+        from .algorithms.image_limits import parse_size
+
+        try:
+            return parse_size(value)
+        except ValueError as err:
+            raise InputError(str(err), "size") from None
+    if isinstance(value, tuple):
+        m, n = value
+        return _whole(m, "size"), _whole(n, "size")
+    side = _whole(value, "size")
+    return side, side
+
+
+def _choice(value: Enum | str, param: str) -> str:
+    """A choice as the library's string (an enum member's value)."""
+    if isinstance(value, Enum):
+        return str(value.value)
+    if isinstance(value, str):
+        return value
+    raise InputError(f"{param} must be a string, got {value!r}", param)

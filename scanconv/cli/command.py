@@ -1,0 +1,177 @@
+"""``@answers``: what every command shares, in one place.
+
+A command declares only its own arguments and options and returns the
+:class:`~scanconv.core.records.Solution` that :mod:`scanconv._api` builds for them.
+:func:`answers` adds the shared output options to the signature typer reads, takes their
+values out into an :class:`~scanconv.cli.output.Output`, calls the command and writes the
+answer. It is also the one place where bad input found by the library (a ``ValueError``, or an
+:class:`~scanconv.core.checks.InputError` naming its parameter) becomes one line on stderr and
+exit status 2; the line names the command's flag for the parameter (:func:`flag_for`).
+"""
+
+from __future__ import annotations
+
+import functools
+import inspect
+from collections.abc import Callable, Iterable
+from typing import Any, get_args, get_type_hints
+
+from typer.models import OptionInfo, ParameterInfo
+
+from ..core.records import Solution
+from ..render import Format
+from .options import (
+    ExplainOpt,
+    FormatOpt,
+    GridOpt,
+    Origin,
+    OriginOpt,
+    OutputOpt,
+    PictureOpt,
+    PngOpt,
+    SvgOpt,
+)
+from .output import Output, emit, fail
+
+SHARED = ("fmt", "grid", "origin", "output", "explain", "svg", "png")
+"""The shared output options, in the order they are listed after a command's own."""
+
+ALIASES = {
+    "xc": "center",
+    "yc": "center",
+    "m": "size",
+    "n": "size",
+    "index": "move",
+    "moved": "move",
+    "integer": "kind",
+}
+"""Library parameters that a command takes under another name: ``--center XC YC`` holds
+``xc`` and ``yc``, ``--size MxN`` holds ``m`` and ``n``, ``--move I X Y`` holds ``index`` and
+``moved``, and ``--input`` sets ``integer``. (A command with a parameter of the library's own
+name, such as ``storage M N``, keeps it.)"""
+
+_KEYWORD = inspect.Parameter.KEYWORD_ONLY
+
+
+def _shared(
+    *, figures: bool, grid: bool, origin: bool, picture: bool
+) -> dict[str, inspect.Parameter]:
+    annotations: dict[str, tuple[Any, Any]] = {
+        "fmt": (FormatOpt, Format.auto),
+        "output": (OutputOpt, None),
+        "explain": (ExplainOpt, False),
+    }
+    if grid:
+        annotations["grid"] = (PictureOpt if picture else GridOpt, True)
+        if origin:
+            annotations["origin"] = (OriginOpt, Origin.bottom_left)
+    if figures:
+        annotations["svg"] = (SvgOpt, None)
+        annotations["png"] = (PngOpt, None)
+    return {
+        name: inspect.Parameter(name, _KEYWORD, default=default, annotation=annotation)
+        for name, (annotation, default) in annotations.items()
+    }
+
+
+def answers(
+    *, figures: bool = False, grid: bool = True, origin: bool = True, picture: bool = False
+) -> Callable[[Callable[..., Solution]], Callable[..., None]]:
+    """Make a function that returns a ``Solution`` into a command that writes it.
+
+    The command gets ``--format``, ``--output`` and ``--explain``; ``--grid/--no-grid`` and
+    ``--origin`` unless ``grid`` is false (``--origin`` also unless ``origin`` is false; the
+    grid is the shaded picture with ``picture``); and ``--svg`` and ``--png`` with
+    ``figures``. A shared option the function declares itself (``sample`` has its own
+    ``--origin``) keeps its declaration and is passed to the function too.
+    """
+
+    def decorate(fn: Callable[..., Solution]) -> Callable[..., None]:
+        return Command(fn, _shared(figures=figures, grid=grid, origin=origin, picture=picture))
+
+    return decorate
+
+
+class Command:
+    """A command as typer sees it: the function's own parameters and the shared ones.
+
+    The signature is worked out when typer first asks for it (``__signature__``), so a run
+    pays only for the one command it builds (start-up time); calling the command splits the
+    shared options off into an :class:`~scanconv.cli.output.Output`, runs the function and
+    writes its answer.
+    """
+
+    def __init__(self, fn: Callable[..., Solution], shared: dict[str, inspect.Parameter]) -> None:
+        self.__wrapped__ = fn
+        self.__name__ = fn.__name__
+        self.__qualname__ = fn.__qualname__
+        self.__module__ = fn.__module__
+        self.__doc__ = fn.__doc__
+        self._shared = shared
+
+    @functools.cached_property
+    def parameters(self) -> list[inspect.Parameter]:
+        """The function's own parameters, then the shared ones, annotations evaluated."""
+        fn = self.__wrapped__
+        hints = get_type_hints(fn, include_extras=True)
+        own = {
+            name: p.replace(annotation=hints[name])
+            for name, p in inspect.signature(fn).parameters.items()
+        }
+        return [p for name, p in own.items() if name not in SHARED] + [
+            own[name].replace(kind=_KEYWORD) if name in own else self._shared[name]
+            for name in SHARED
+            if name in own or name in self._shared
+        ]
+
+    @property
+    def __signature__(self) -> inspect.Signature:
+        return inspect.Signature(self.parameters)
+
+    @property
+    def __annotations__(self) -> dict[str, Any]:  # type: ignore[override]  # get_type_hints
+        return {p.name: p.annotation for p in self.parameters}
+
+    def __call__(self, **kwargs: Any) -> None:
+        own = inspect.signature(self.__wrapped__).parameters
+        values = {name: kwargs[name] for name in SHARED if name in kwargs}
+        for name in values.keys() - own.keys():
+            del kwargs[name]
+        try:
+            emit(self.__wrapped__(**kwargs), Output(**values))
+        except ValueError as err:  # InputError included
+            fail(error_message(err, self.parameters))
+
+
+def error_message(err: ValueError, params: Iterable[inspect.Parameter]) -> str:
+    """The one-line message for bad input: the library's text, after the flag it concerns."""
+    message = " ".join(str(err).split())
+    flag = flag_for(getattr(err, "param", None), params)
+    if flag is not None and not message.startswith(flag):
+        message = f"{flag}: {message}"
+    return message
+
+
+def flag_for(param: str | None, params: Iterable[inspect.Parameter]) -> str | None:
+    """The command's option for the library parameter ``param``, or ``None`` (no parameter,
+    or a positional argument, which the message already names by its value).
+
+    >>> import inspect
+    >>> from scanconv.cli.options import Center
+    >>> center = inspect.Parameter("center", inspect.Parameter.KEYWORD_ONLY, annotation=Center)
+    >>> flag_for("xc", [center]), flag_for("radius", [center])
+    ('--center', None)
+    """
+    if param is None:
+        return None
+    by_name = {p.name: p for p in params}
+    found = by_name.get(param) or by_name.get(ALIASES.get(param, ""))
+    if found is None:
+        return None
+    info = next((m for m in get_args(found.annotation)[1:] if isinstance(m, ParameterInfo)), None)
+    if not isinstance(info, OptionInfo):
+        return None
+    # In ``Annotated``, typer keeps an option's first name in ``default``.
+    names = [d for d in (info.default, *(info.param_decls or ())) if isinstance(d, str)]
+    long = [d.split("/")[0] for d in names if d.startswith("--")]
+    return long[0] if long else "--" + found.name.replace("_", "-")

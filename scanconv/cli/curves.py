@@ -1,0 +1,194 @@
+"""Curves: ``parametric ...``, ``bezier``, ``bspline``, ``continuity`` and ``local-control``."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Annotated
+
+import typer
+
+from .. import _api as api
+from ..core.records import Solution
+from .application import app, parametric_app
+from .command import answers
+from .options import (
+    NUMERIC_ARGS,
+    ORIGIN,
+    CurveCenter,
+    Degree,
+    Knots,
+    Num,
+    Points,
+    Samples,
+    Segments,
+    TRange,
+    Vertex,
+    num_option,
+    number,
+    segments,
+)
+
+# --- parametric -------------------------------------------------------------------------------
+
+
+@parametric_app.command("circle", context_settings=NUMERIC_ARGS)
+@answers(figures=True)
+def parametric_circle(
+    center: CurveCenter = ORIGIN,
+    radius: Annotated[Fraction, num_option("--radius", "-r", help="Radius r.")] = Fraction(1),
+    t_range: TRange = None,
+    samples: Samples = None,
+) -> Solution:
+    """x = xc + r cos t, y = yc + r sin t, 0 <= t <= 2 pi.
+
+    Example: scanconv parametric circle --center 0 0 --radius 5 --samples 16
+    """
+    return api.parametric_circle(center, radius, t_range=t_range, samples=samples)
+
+
+@parametric_app.command("ellipse", context_settings=NUMERIC_ARGS)
+@answers(figures=True)
+def parametric_ellipse(
+    center: CurveCenter = ORIGIN,
+    a: Annotated[Fraction, num_option("--a", help="Semi-axis a (along x).")] = Fraction(2),
+    b: Annotated[Fraction, num_option("--b", help="Semi-axis b (along y).")] = Fraction(1),
+    t_range: TRange = None,
+    samples: Samples = None,
+) -> Solution:
+    """x = xc + a cos t, y = yc + b sin t, 0 <= t <= 2 pi.
+
+    Example: scanconv parametric ellipse --center 0 0 --a 8 --b 4
+    """
+    return api.parametric_ellipse(center, a, b, t_range=t_range, samples=samples)
+
+
+@parametric_app.command("parabola", context_settings=NUMERIC_ARGS)
+@answers(figures=True)
+def parametric_parabola(
+    vertex: Vertex = ORIGIN,
+    a: Annotated[Fraction, num_option("--a", help="Coefficient a in y = k + a t^2.")] = Fraction(1),
+    t_range: TRange = None,
+    samples: Samples = None,
+) -> Solution:
+    """x = h + t, y = k + a t^2 (the notes' x = t, y = t^2 by default), -3 <= t <= 3.
+
+    Example: scanconv parametric parabola --t-range -3 3
+    """
+    return api.parametric_parabola(vertex, a, t_range=t_range, samples=samples)
+
+
+@parametric_app.command("line", context_settings=NUMERIC_ARGS)
+@answers(figures=True)
+def parametric_line(
+    x0: Num, y0: Num, x1: Num, y1: Num, t_range: TRange = None, samples: Samples = None
+) -> Solution:
+    """x = x0 + t (x1 - x0), y = y0 + t (y1 - y0), 0 <= t <= 1.
+
+    Example: scanconv parametric line 0 0 10 4
+    """
+    return api.parametric_line(x0, y0, x1, y1, t_range=t_range, samples=samples)
+
+
+@parametric_app.command("custom", context_settings=NUMERIC_ARGS)
+@answers(figures=True)
+def parametric_custom(
+    x: Annotated[str, typer.Option("--x", help="x(t), e.g. '3*cos(t)'.", show_default=False)],
+    y: Annotated[str, typer.Option("--y", help="y(t), e.g. '2*sin(t)'.", show_default=False)],
+    t_range: TRange = None,
+    samples: Samples = None,
+) -> Solution:
+    """Your own x(t) and y(t): numbers, t, + - * / **, pi, e, sin cos tan sqrt exp log abs.
+
+    Example: scanconv parametric custom --x "3*cos(t)" --y "2*sin(t)" --t-range 0 2*pi
+    """
+    return api.parametric_custom(x, y, t_range=t_range, samples=samples)
+
+
+# --- Bezier and B-spline curves ---------------------------------------------------------------
+
+BezierAt = Annotated[
+    str | None,
+    typer.Option("--at", metavar="T", help="De Casteljau's construction at this t in [0, 1]."),
+]
+BsplineAt = Annotated[
+    str | None,
+    typer.Option(
+        "--at", metavar="T", help="Evaluate one t: Cox-de Boor, the non-zero terms, C(t)."
+    ),
+]
+
+
+@app.command(context_settings=NUMERIC_ARGS)
+@answers(figures=True)
+def bezier(
+    points: Points,
+    samples: Samples = None,
+    t: BezierAt = None,
+) -> Solution:
+    """Bezier curve of the control points P0 .. Pn: Bernstein weights per t, pixels, grid.
+
+    Example: scanconv bezier 0 0 1 2 3 3 4 0 --samples 8   (or --at 0.5)
+    """
+    if t is not None:
+        return api.bezier_at(points, t)
+    return api.bezier(points, samples)
+
+
+@app.command(context_settings=NUMERIC_ARGS)
+@answers(figures=True)
+def bspline(
+    points: Points,
+    degree: Degree = 3,
+    knots: Knots = "open",
+    basis: Annotated[
+        bool, typer.Option("--basis", help="Print only the table of basis values N_i,p(t).")
+    ] = False,
+    t: BsplineAt = None,
+    samples: Samples = None,
+) -> Solution:
+    """B-spline of degree p (Cox-de Boor): basis values N_i,p(t) per t, the curve, pixels.
+
+    Example: scanconv bspline 0 0 1 2 3 3 4 0 5 2 --degree 2 --knots open
+    """
+    if t is not None:
+        return api.bspline_at(points, t, degree, knots)
+    if basis:
+        return api.bspline_basis(points, degree, knots, samples)
+    return api.bspline(points, degree, knots, samples)
+
+
+@app.command(context_settings=NUMERIC_ARGS)
+@answers(figures=True)
+def continuity(values: Segments, samples: Samples = None) -> Solution:
+    """Continuity (C0, C1, C2) at the join of two Bezier segments, with the derivatives.
+
+    Example: scanconv continuity 0 0 1 2 3 3 4 0 : 4 0 5 -3 7 -2 8 0
+    """
+    first, second = segments(values)
+    return api.continuity(first, second, samples)
+
+
+@app.command("local-control", context_settings=NUMERIC_ARGS)
+@answers()
+def local_control(
+    points: Points,
+    move: Annotated[
+        tuple[Fraction, Fraction, Fraction],
+        typer.Option(
+            "--move",
+            parser=number,
+            metavar="I X Y",
+            help="Move control point P_I to (X, Y).",
+            show_default=False,
+        ),
+    ],
+    degree: Degree = 3,
+    knots: Knots = "open",
+    samples: Samples = None,
+) -> Solution:
+    """Bezier vs B-spline: move one control point, see which samples and pixels change.
+
+    Example: scanconv local-control 0 0 1 2 3 3 4 0 5 2 7 1 --move 5 7 5 --degree 2
+    """
+    index, x, y = move
+    return api.local_control(points, index, (x, y), degree, knots, samples)

@@ -1,0 +1,183 @@
+"""Writing an answer: stdout or a file (atomically), the figures, and the reader leaving.
+
+This module and :mod:`scanconv.cli.entry` are the only ones that write to stdout or stderr.
+The renderers never print; they return generators, and :func:`emit` writes what they yield.
+A failure to write is exit status 1.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import IO, Any, NamedTuple, NoReturn
+
+import typer
+
+from ..core.records import Solution
+from ..render import Format, Notice, Options, render
+from .options import Origin
+
+PROG = "scanconv"
+
+
+class Output(NamedTuple):
+    """How and where to write an answer: the shared output options of every command."""
+
+    fmt: Format = Format.auto
+    grid: bool = True
+    origin: Origin = Origin.bottom_left
+    output: Path | None = None
+    explain: bool = False
+    svg: Path | None = None
+    png: Path | None = None
+
+
+def resolve(fmt: Format, to_file: bool) -> Format:
+    """Resolve ``auto`` once, at the edge: rich on a terminal, markdown otherwise."""
+    if fmt is not Format.auto:
+        return fmt
+    return Format.rich if (not to_file and sys.stdout.isatty()) else Format.markdown
+
+
+def note(message: str) -> None:
+    """A one-line message on stderr."""
+    print(f"{PROG}: {message}", file=sys.stderr)
+
+
+def fail(message: str, code: int = 2) -> NoReturn:
+    """One line on stderr, then exit."""
+    note(f"error: {message}")
+    raise typer.Exit(code)
+
+
+def _write(chunks: Iterable[Any], out: Any) -> None:
+    console = None
+    for chunk in chunks:
+        if isinstance(chunk, str):
+            out.write(chunk)
+        elif isinstance(chunk, Notice):
+            out.flush()
+            note(chunk.message)
+        else:
+            if console is None:
+                from rich.console import Console
+
+                console = Console(file=out, highlight=False, emoji=False, markup=False)
+                console.on_broken_pipe = _broken_pipe  # type: ignore[method-assign]
+            console.print(chunk)
+
+
+def _broken_pipe() -> NoReturn:
+    """rich's own handler exits with status 1 when the reader leaves; raise, so that
+    :func:`emit` stops quietly with status 0 as for every other format."""
+    raise BrokenPipeError(32, "Broken pipe")
+
+
+def emit(solution: Solution, out: Output) -> None:
+    """Render ``solution`` and write it to stdout or, atomically, to ``out.output``.
+
+    The figures (``out.svg``, ``out.png``) are drawn and written first, so a figure that
+    cannot be drawn (a ``ValueError``, exit 2 by the caller) or written (exit 1) leaves stdout
+    empty.
+    """
+    if out.svg is not None or out.png is not None:
+        write_figures(solution, out.origin, out.svg, out.png)
+    fmt = resolve(out.fmt, out.output is not None)
+    options = Options(grid=out.grid, origin=out.origin.value, explain=out.explain)
+    chunks = render(solution, fmt, options)
+    if out.output is None:
+        try:
+            _write(chunks, sys.stdout)
+            sys.stdout.flush()
+        except BrokenPipeError:
+            _quiet_pipe()
+        return
+    write_atomic(out.output, lambda f: _write(chunks, f))
+
+
+def write_figures(solution: Solution, origin: Origin, svg: Path | None, png: Path | None) -> None:
+    """Draw the figure of ``solution`` and write it, atomically, as SVG and/or PNG."""
+    from ..render import figure
+
+    fig = figure.build(solution, origin.value)
+    if svg is not None:
+        text = figure.to_svg(fig)
+        write_atomic(svg, lambda f: f.write(text))
+    if png is not None:
+        try:
+            data = figure.to_png(fig)
+        except ModuleNotFoundError:
+            fail("--png needs Pillow: pip install 'scanconv[png]' (or use --svg)", 1)
+        write_atomic(png, lambda f: f.write(data), binary=True)
+
+
+def write_atomic(path: Path, fill: Callable[[IO[Any]], object], *, binary: bool = False) -> None:
+    """Create ``path`` through a temporary file in its directory and a rename.
+
+    A failure leaves any existing file untouched and no partial file behind (exit 1).
+    ``fill`` gets a text file (UTF-8, ``\\n`` line ends), or a binary one with ``binary``.
+    """
+    import stat
+    import tempfile  # here, not at the top: only a file output needs it (start-up time)
+
+    try:
+        special = not stat.S_ISREG(os.stat(path).st_mode)
+    except OSError:  # missing (or unreadable): created below, or the error is reported there
+        special = False
+    if special:  # /dev/null, /dev/stdout, a FIFO: nothing to replace, so write into it
+        try:
+            with (
+                open(path, "wb") if binary else open(path, "w", encoding="utf-8", newline="\n")
+            ) as f:
+                fill(f)
+        except OSError as err:
+            fail(f"cannot write {path}: {err.strerror or err}", 1)
+        return
+    target = Path(os.path.realpath(path))  # through a symlink: replace its target, keep the link
+    directory = target.parent
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
+    except OSError as err:
+        fail(f"cannot write {path}: {err.strerror or err}", 1)
+    try:
+        with (
+            os.fdopen(fd, "wb") if binary else os.fdopen(fd, "w", encoding="utf-8", newline="\n")
+        ) as f:
+            fill(f)
+        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the mode open() would
+        os.replace(tmp, target)
+    except OSError as err:
+        _unlink(tmp)
+        fail(f"cannot write {path}: {err.strerror or err}", 1)
+    except BaseException:
+        _unlink(tmp)
+        raise
+
+
+def _umask() -> int:
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
+def _unlink(path: str) -> None:
+    try:
+        os.unlink(path)
+    except OSError:
+        pass
+
+
+def _quiet_pipe() -> int:
+    """The reader went away (``| head``): stop quietly with status 0.
+
+    What was wanted was read; later writes (and the interpreter's final flush) go to
+    ``/dev/null`` so no ``BrokenPipeError`` text reaches the terminal.
+    """
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+    return 0

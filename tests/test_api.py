@@ -1,0 +1,219 @@
+"""The Python API (:mod:`scanconv._api`): one function per command, the same answers.
+
+Each function is called once and its answer, rendered as JSON, is compared with the CLI's JSON
+for the same question, so the two cannot drift; every command and every function has a case.
+The API's own ways of taking values (floats, strings, pairs or flat points, enums) are checked
+at the end.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any
+
+import pytest
+
+from scanconv import _api
+from scanconv.core.checks import InputError
+from scanconv.render import Format, Options, render
+
+from .cli_vocabulary import commands
+from .helpers import run
+
+P4 = [(0, 0), (1, 2), (3, 3), (4, 0)]
+P5 = [*P4, (5, 2)]
+FLAT5 = ("0", "0", "1", "2", "3", "3", "4", "0", "5", "2")
+
+#: (command path, CLI arguments, API function, its arguments, its keywords): the same question.
+CASES: list[tuple[tuple[str, ...], tuple[str, ...], str, tuple[Any, ...], dict[str, Any]]] = [
+    (("line",), ("2", "2", "10", "6"), "line", (2, 2, 10, 6), {}),
+    (
+        ("line",),
+        ("2", "2.5", "8", "5", "--algo", "basic"),
+        "line",
+        ("2", 2.5, 8, Fraction(5)),
+        {"algo": _api.LineAlgorithm.basic},
+    ),
+    (
+        ("circle",),
+        ("5", "--center", "10", "10", "--method", "trig", "--rounding", "trunc"),
+        "circle",
+        (5, (10, 10)),
+        {"method": "trig", "rounding": _api.Rounding.trunc},
+    ),
+    (("circle",), ("5", "-m", "general"), "circle", (5,), {"method": _api.CircleMethod.general}),
+    (("ellipse",), ("5", "3", "--center", "1", "-2"), "ellipse", (5, 3), {"center": (1, -2)}),
+    (("compare", "line"), ("0.5", "0", "3.5", "1"), "compare_lines", (0.5, 0, "7/2", 1), {}),
+    (("compare", "circle"), ("10",), "compare_circles", (10,), {}),
+    (
+        ("storage",),
+        ("640", "480", "--bits", "8", "--frames", "2"),
+        "storage",
+        (640, 480),
+        {"bits": 8, "frames": 2},
+    ),
+    (("storage",), ("8", "8", "--color", "rgb24"), "storage", (8, 8), {"color": "rgb24"}),
+    (
+        ("quantize",),
+        ("--bits", "3", "--range", "0", "1", "--input", "real", "--recon", "lower"),
+        "quantize",
+        (3, (0, 1)),
+        {"integer": False, "recon": "lower"},
+    ),
+    (
+        ("sample",),
+        ("x + y", "--size", "4x6", "-L", "4", "--domain", "0", "1", "0", "pi", "--range", "0", "5"),
+        "sample",
+        ("x + y", "4x6", 4),
+        {"domain": (0, 1, 0, "pi"), "value_range": ("0", "5")},
+    ),
+    (
+        ("sample",),
+        ("x * y", "--size", "3", "--levels", "2", "--origin", "top-left"),
+        "sample",
+        ("x * y", 3, 2),
+        {"origin": "top-left"},
+    ),
+    (("image", "ramp"), ("--size", "4x6", "--levels", "5"), "ramp", ((4, 6), 5), {}),
+    (
+        ("parametric", "circle"),
+        ("--center", "1", "2", "--radius", "5/2", "--t-range", "0", "pi", "--samples", "8"),
+        "parametric_circle",
+        ((1, 2), "5/2"),
+        {"t_range": ("0", "pi"), "samples": 8},
+    ),
+    (
+        ("parametric", "ellipse"),
+        ("--a", "8", "--b", "4", "--samples", "8"),
+        "parametric_ellipse",
+        (),
+        {"a": 8, "b": 4, "samples": 8},
+    ),
+    (
+        ("parametric", "parabola"),
+        ("--vertex", "1", "-1", "--a", "0.5", "--samples", "4"),
+        "parametric_parabola",
+        ((1, -1), 0.5),
+        {"samples": "4"},
+    ),
+    (("parametric", "line"), ("0", "0", "10", "4"), "parametric_line", (0, 0, 10, 4), {}),
+    (
+        ("parametric", "custom"),
+        ("--x", "3*cos(t)", "--y", "2*sin(t)", "--t-range", "0", "2*pi", "--samples", "8"),
+        "parametric_custom",
+        ("3*cos(t)", "2*sin(t)"),
+        {"t_range": ("0", "2*pi"), "samples": 8},
+    ),
+    (("bezier",), (*FLAT5[:8], "--samples", "8"), "bezier", (P4, 8), {}),
+    (("bezier",), (*FLAT5[:8], "--at", "0.5"), "bezier_at", ([0, 0, 1, 2, 3, 3, 4, 0], 0.5), {}),
+    (("bspline",), (*FLAT5, "--degree", "2", "--samples", "4"), "bspline", (P5, 2), {"samples": 4}),
+    (
+        ("bspline",),
+        (*FLAT5, "--degree", "2", "--knots", "uniform", "--basis"),
+        "bspline_basis",
+        (P5, 2, "uniform"),
+        {},
+    ),
+    (
+        ("bspline",),
+        (*FLAT5, "-p", "2", "--knots", "0,0,0,1,2,3,3,3", "--at", "3/2"),
+        "bspline_at",
+        (P5, "3/2", 2, [0, 0, 0, 1, 2, 3, 3, 3]),
+        {},
+    ),
+    (
+        ("continuity",),
+        ("0", "0", "1", "1", "2", "0", ":", "2", "0", "3", "-1", "4", "0", "--samples", "4"),
+        "continuity",
+        ([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)], 4),
+        {},
+    ),
+    (
+        ("local-control",),
+        (*FLAT5, "7", "1", "--move", "5", "7", "5", "--degree", "2", "--samples", "8"),
+        "local_control",
+        ([*P5, (7, 1)], 5, (7, 5), 2),
+        {"samples": 8},
+    ),
+]
+
+
+def _json(solution: Any) -> str:
+    chunks = render(solution, Format.json, Options())
+    return "".join(c for c in chunks if isinstance(c, str))
+
+
+@pytest.mark.parametrize(
+    ("path", "argv", "name", "args", "kwargs"),
+    CASES,
+    ids=[f"{name}: {' '.join(path)}" for path, _, name, _, _ in CASES],
+)
+def test_the_api_and_the_cli_give_the_same_answer(path, argv, name, args, kwargs):
+    cli = run(*path, *argv, "--format", "json")
+    assert cli.code == 0, cli.err
+    assert _json(getattr(_api, name)(*args, **kwargs)) == cli.out
+
+
+def test_every_command_and_every_function_has_a_case():
+    paths = {path for path, _ in commands()}
+    assert paths == {path for path, *_ in CASES}
+    functions = {n for n in _api.__all__ if n[0].islower()}
+    assert functions == {name for _, _, name, _, _ in CASES}
+
+
+def test_every_function_is_documented_with_an_example():
+    for name in _api.__all__:
+        doc = getattr(_api, name).__doc__ or ""
+        assert ">>>" in doc or name[0].isupper(), name
+
+
+# --- how the API takes values --------------------------------------------------------------------
+
+
+def test_floats_are_the_decimals_they_print_as():
+    """0.1 is exactly 1/10 (as on the command line), not the binary float's value."""
+    assert _json(_api.line(0.1, 0, 1.1, 1, algo="dda")) == _json(
+        _api.line(Fraction(1, 10), 0, "1.1", 1, algo="dda")
+    )
+
+
+def test_points_are_pairs_or_flat():
+    assert _json(_api.bezier(P4)) == _json(_api.bezier([0, 0, 1, 2, 3, 3, 4, 0]))
+
+
+@pytest.mark.parametrize(
+    ("call", "param", "words"),
+    [
+        (lambda: _api.circle("abc"), "r", "'abc' is not a number"),
+        (lambda: _api.circle(5, (1, "nan")), "center", "not a finite number"),
+        (lambda: _api.line(True, 0, 1, 1), "x1", "must be a number"),
+        (lambda: _api.bezier(P4, samples=2.5), "samples", "samples must be an integer, got 2.5"),
+        (lambda: _api.bezier_at(P4, "x"), "t", "unknown name 'x'"),
+        (lambda: _api.bspline(P5, knots="bogus"), "knots", "unknown knot vector"),
+        (lambda: _api.bezier([0, 0, 1]), "points", "odd count"),
+        (lambda: _api.bezier([(0, 0, 1), (1, 1)]), "points", "a point is a pair"),
+        (lambda: _api.local_control(P5, 1.5, (0, 0)), "index", "index must be an integer"),
+        (lambda: _api.ramp("0x4"), "size", "must be a positive integer"),
+        (lambda: _api.sample("x", 4, 4, domain=(0, 1, 0)), "domain", "takes 4 values"),
+        (lambda: _api.parametric_circle(t_range=(0,)), "t_range", "takes 2 values"),
+        (lambda: _api.storage(8, 8, bits=8, color=24), "color", "must be a string"),
+    ],
+)
+def test_bad_input_is_an_input_error_naming_the_parameter(call, param, words):
+    with pytest.raises(InputError) as info:
+        call()
+    assert info.value.param == param and words in str(info.value), str(info.value)
+
+
+def test_importing_the_api_imports_no_answer_module():
+    """The library is imported inside the functions: start-up stays cheap."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, scanconv._api\n"
+        "print(*sorted(m for m in sys.modules if m.startswith('scanconv.answers.')))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    loaded = set(out.stdout.split()) - {"scanconv.answers.line"}  # with ``import scanconv``
+    assert not loaded, loaded
