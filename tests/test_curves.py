@@ -417,8 +417,8 @@ def test_continuity_answer_reports_the_deciding_derivatives():
         "plain",
     )
     assert r.code == 0, r.err
-    assert "A'(1) = n(P_2 - P_1) = 2*((2, 0) - (1, 1)) = (2, -2)" in r.out
-    assert "B'(0) = m(Q_1 - Q_0) = 2*((4, -2) - (2, 0)) = (4, -4)" in r.out
+    assert "A'(1) = n(P2 - P1) = 2*((2, 0) - (1, 1)) = (2, -2)" in r.out
+    assert "B'(0) = m(Q1 - Q0) = 2*((4, -2) - (2, 0)) = (4, -4)" in r.out
     assert "continuity at the join: C0 (C0 holds; C1 fails)" in r.out
     assert "G1" in r.out
 

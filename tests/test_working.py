@@ -16,10 +16,20 @@ from pathlib import Path
 
 import pytest
 
+from scanconv.algorithms.sample import sample_levels
+from scanconv.answers.bezier import bezier_at_solution, bezier_solution
+from scanconv.answers.bspline import bspline_at_solution, bspline_solution
 from scanconv.answers.circle import circle_solution
 from scanconv.answers.compare import compare_circles, compare_lines
+from scanconv.answers.continuity import continuity_solution
 from scanconv.answers.ellipse import ellipse_solution
 from scanconv.answers.line import line_solution
+from scanconv.answers.local_control import local_control_solution
+from scanconv.answers.parametric import parametric_solution
+from scanconv.answers.quantize import quantize_solution
+from scanconv.answers.ramp import ramp_solution
+from scanconv.answers.sample import sample_solution
+from scanconv.answers.storage import storage_solution
 from scanconv.core.records import Column, Quantity, Solution, heading, rule, worked
 from scanconv.core.working import ascii_text, tex_text, tex_to_unicode
 
@@ -167,7 +177,7 @@ def test_the_constructors_derive_the_text() -> None:
 
 # --- every answer's working says the same thing in every format -------------------------------
 
-TOPICS = ("lines", "circles", "ellipses", "compare")
+TOPICS = ("lines", "circles", "ellipses", "compare", "curves", "image")
 GOLDEN = Path(__file__).resolve().parent.parent / "golden"
 COMMANDS = sorted(p for topic in TOPICS for p in (GOLDEN / topic).glob("*") if p.is_file())
 _FORMAT_OPTIONS = {"-f", "--format", "-o", "--output"}
@@ -217,7 +227,7 @@ def _markdown_headings(lines: list[str]) -> list[list[str]]:
     return [
         re.findall(r"\$(.*?)\$", lines[i])
         for i in range(len(lines) - 1)
-        if lines[i].startswith("| ") and re.match(r"\|[-:]", lines[i + 1])
+        if lines[i].startswith("| ") and re.fullmatch(r"\|(:?-+:?\|)+", lines[i + 1])
     ]
 
 
@@ -288,7 +298,58 @@ def _solutions() -> list[Solution]:
     sols += [ellipse_solution(*a) for a in ((8, 6), (5, 3), (10, 1), (0, 4), (0, 0), (3, 9))]
     sols += [compare_lines(2, 8, 10, 4), compare_lines(half, 0, Fraction(7, 2), 1)]
     sols += [compare_circles(r) for r in (0, 4, 10)]
+    sols += _curves() + _images()
     return sols
+
+
+def _curves() -> list[Solution]:
+    """Curve answers: every parametric kind (fractional, negative and formula bounds), Bezier
+    and B-spline (every kind of knots, the closed right end), joins and local control."""
+    pts = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)]
+    half, third = Fraction(1, 2), Fraction(1, 3)
+    return [
+        parametric_solution("circle", center=(half, -2), radius=5, samples=8),
+        parametric_solution("ellipse", a=8, b=third, t_range=(-1, 2)),
+        parametric_solution("parabola", vertex=(1, 2), a=-third),
+        parametric_solution("line", points=(0, 0, 10, -4)),
+        parametric_solution("custom", x="3*cos(t)", y="t**2 - pi", t_range=("-pi", "2*pi")),
+        bezier_solution(pts[:2], 2),
+        bezier_solution(pts, 4),
+        bezier_at_solution(pts[:4], half),
+        bezier_at_solution(pts[:3], 0.25),
+        bspline_solution(pts, 2, "open", 6),
+        bspline_solution(pts, 2, "uniform", 4, basis_only=True),
+        bspline_solution(pts[:4], 3, (0, 0, 1, 2, 3, 3, 4, 4), 4),
+        bspline_at_solution(pts, 2, "open", Fraction(3, 2)),
+        bspline_at_solution(pts, 2, "open", 3),
+        continuity_solution([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)]),
+        continuity_solution([(0, 0), (2, 0)], [(2, 0), (3, 1)]),
+        continuity_solution([(0, 0), (1, 1)], [(2, 0), (3, 1)]),
+        local_control_solution([*pts, (7, 1)], 5, (7, 5), 2, "open", 8),
+    ]
+
+
+def _images() -> list[Solution]:
+    """Image answers: every depth of storage, quantizers, the ramp and sampling."""
+    half = Fraction(1, 2)
+    return [
+        storage_solution(1024, 768, levels=256),
+        storage_solution(100, 100, levels=100),
+        storage_solution(3, 3, levels=3, frames=12_000),
+        storage_solution(640, 480, binary=True),
+        storage_solution(640, 480, color="rgb24", frames=30),
+        storage_solution(1024, 768, bits=8),
+        quantize_solution(3),
+        quantize_solution(2, (0, 255)),
+        quantize_solution(3, (0, 1), integer=False, recon="lower"),
+        ramp_solution(8, 8, 8),
+        ramp_solution(1, 1, 2),
+        sample_solution(sample_levels("x + y", 8, 8, 8)),
+        sample_solution(sample_levels("x*y/3", 1, 3, 4, origin="top-left")),
+        sample_solution(
+            sample_levels("sin(x) * cos(y)", 3, 4, 8, domain=(0, 1, half, 2), value_range=(0, 1))
+        ),
+    ]
 
 
 def test_every_quantity_and_heading_is_written_once() -> None:

@@ -8,8 +8,9 @@ from fractions import Fraction
 
 from ..algorithms.curve_limits import Point, Value
 from ..algorithms.sampling import curve_pixel
-from ..core.numeric import Number, fmt, fmt_short, fmt_value, normalize, paren
-from ..core.records import Column, Pixel, Quantity
+from ..core.numeric import Number, fmt, fmt_short, fmt_value, normalize
+from ..core.records import Column, Pixel, Quantity, heading, worked
+from ..core.working import tex_to_unicode
 
 
 def value_text(v: Value) -> str:
@@ -39,46 +40,35 @@ def knot_text(knots: Sequence[Number]) -> str:
     return "(" + ", ".join(value_text(u) for u in knots) + ")"
 
 
-def given_points(points: Sequence[Point], name: str = "P", tex: str = "P") -> list[Quantity]:
+def given_points(points: Sequence[Point], name: str = "P") -> list[Quantity]:
     """The control points as given quantities ``P0``, ``P1``, ...
 
     >>> [q.text for q in given_points([(0, 0), (1, 2)])]
-    ['P0 = (0, 0)', 'P1 = (1, 2)']
+    ['P₀ = (0, 0)', 'P₁ = (1, 2)']
     """
     return [
-        Quantity(
-            f"{name}{i}",
-            p,
-            f"{name}{i} = {point_text(p)}",
-            f"{tex}_{{{i}}} = {point_text(p)}",
-        )
-        for i, p in enumerate(points)
+        worked(f"{name}{i}", p, f"{name}_{{{i}}} = {point_text(p)}") for i, p in enumerate(points)
     ]
 
 
-def step_quantity(
-    t0: Value, t1: Value, samples: int, lo: str, hi: str, tex_lo: str, tex_hi: str
-) -> Quantity:
-    """``Δt = (t1 - t0) / N``, with the range as the answer names it.
+def step_quantity(t0: Value, t1: Value, samples: int, lo: str, hi: str) -> Quantity:
+    """``Δt = (t1 - t0) / N``, with the range as the answer names it (``lo`` and ``hi`` in TeX).
 
-    >>> step_quantity(0, 1, 8, "0", "1", "0", "1").text
+    >>> step_quantity(0, 1, 8, "0", "1").text
     '0 ≤ t ≤ 1; Δt = (1 - 0) / 8 = 0.125   (8 steps, 9 values of t)'
     """
     if isinstance(t0, float) or isinstance(t1, float):
         dt: Value = (float(t1) - float(t0)) / samples
-        shown = f"≈ {fmt(dt)}"
-        tex_shown = f"\\approx {fmt(dt)}"
+        shown = f"\\approx {fmt(dt)}"
     else:
         dt = normalize(Fraction(t1 - t0) / samples)
-        shown = "= " + fmt_value(dt)
-        tex_shown = "= " + fmt_value(dt).replace("≈", "\\approx")
-    return Quantity(
+        shown = "= " + fmt_value(dt).replace("≈", "\\approx")
+    sub = f"({lo})" if tex_to_unicode(lo).startswith("-") else lo
+    return worked(
         "dt",
         dt,
-        f"{lo} ≤ t ≤ {hi}; Δt = ({hi} - {paren(lo)}) / {samples} {shown}"
-        f"   ({samples} steps, {samples + 1} values of t)",
-        f"{tex_lo} \\le t \\le {tex_hi}; \\quad \\Delta t = \\frac{{{tex_hi} - "
-        f"{paren(tex_lo)}}}{{{samples}}} {tex_shown}",
+        f"{lo} \\le t \\le {hi};\\ \\Delta t = \\frac{{{hi} - {sub}}}{{{samples}}} {shown} "
+        f"\\quad ({samples} \\text{{ steps, }} {samples + 1} \\text{{ values of }} t)",
     )
 
 
@@ -103,14 +93,14 @@ def control_marks(points: Iterable[Point]) -> tuple[Pixel, ...]:
     return tuple(curve_pixel(*p) for p in points)
 
 
-K_T_COLUMNS = (Column("k", "k", "k"), Column("t", "t", "t", 3))
+K_T_COLUMNS = (heading("k", "k"), heading("t", "t", 3))
 """The first two columns of the Bezier and B-spline tables."""
 
 
 def xy_columns() -> tuple[Column, ...]:
     """The last three columns of a curve table: ``x(t)``, ``y(t)`` and the pixel."""
     return (
-        Column("x_t", "x(t)", "x(t)", 3),
-        Column("y_t", "y(t)", "y(t)", 3),
-        Column("pixel", "pixel (x, y)", r"\text{pixel } (x, y)"),
+        heading("x_t", "x(t)", 3),
+        heading("y_t", "y(t)", 3),
+        heading("pixel", r"\text{pixel } (x, y)"),
     )

@@ -4,7 +4,7 @@ matrix and the note for a shaded picture too large to draw."""
 from __future__ import annotations
 
 from ..core.records import MAX_GRID_CELLS as PICTURE_LIMIT
-from ..core.records import Column
+from ..core.records import Column, heading
 
 
 def int_text(n: int) -> str:
@@ -31,7 +31,7 @@ def matrix_columns(n: int) -> tuple[Column, ...]:
     >>> [c.key for c in matrix_columns(3)]
     ['i', '0', '1', '2']
     """
-    return (Column("i", "i", "i"), *(Column(str(j), str(j), str(j)) for j in range(n)))
+    return (heading("i", "i"), *(heading(str(j), str(j)) for j in range(n)))
 
 
 def picture_note(m: int, n: int) -> str | None:

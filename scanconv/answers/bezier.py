@@ -31,7 +31,8 @@ from ..algorithms.sampling import (
     float_points,
     polyline,
 )
-from ..core.records import Column, Quantity, Solution, Step, Table
+from ..core.records import Column, Quantity, Solution, Step, Table, heading, worked
+from ..core.working import tex_to_unicode
 from ._curve import (
     JOIN_NOTE,
     K_T_COLUMNS,
@@ -45,68 +46,35 @@ from ._curve import (
 )
 
 
-def _power(base: str, k: int) -> str:
-    """``base`` to the power ``k`` as the working writes it: ``""``, ``t``, ``t²``, ``t^4``.
+def bernstein_tex(i: int, n: int) -> str:
+    """``B_{i,n}(t)`` multiplied out, in TeX: ``3t(1 - t)^{2}``.
 
-    >>> [_power("t", k) for k in range(5)]
-    ['', 't', 't²', 't³', 't^4']
-    """
-    if k == 0:
-        return ""
-    if k == 1:
-        return base
-    return base + {2: "²", 3: "³"}.get(k, f"^{k}")
-
-
-def bernstein_text(i: int, n: int) -> tuple[str, str]:
-    """``B_{i,n}(t)`` multiplied out: ``3t(1 - t)²``, and its LaTeX.
-
-    >>> bernstein_text(1, 3)
-    ('3t(1 - t)²', '3t(1 - t)^{2}')
+    >>> bernstein_tex(1, 3), bernstein_tex(0, 1), bernstein_tex(3, 3)
+    ('3t(1 - t)^{2}', '(1 - t)', 't^{3}')
     """
     c = math.comb(n, i)
-    text = ("" if c == 1 else str(c)) + _power("t", i) + _power("(1 - t)", n - i)
     tex = (
         ("" if c == 1 else str(c))
         + ("" if i == 0 else "t" if i == 1 else f"t^{{{i}}}")
         + ("" if n == i else "(1 - t)" if n - i == 1 else f"(1 - t)^{{{n - i}}}")
     )
-    return text or "1", tex or "1"
+    return tex or "1"
 
 
 def _bezier_derived(pts: Sequence[Point]) -> list[Quantity]:
     n = len(pts) - 1
-    out = [
-        Quantity(
-            "n",
-            n,
-            f"n = number of control points - 1 = {n + 1} - 1 = {n}",
-            f"n = {n + 1} - 1 = {n}",
-        )
-    ]
+    out = [worked("n", n, f"n = \\text{{number of control points}} - 1 = {n + 1} - 1 = {n}")]
     for i in range(n + 1):
-        text, tex = bernstein_text(i, n)
+        tex = bernstein_tex(i, n)
         out.append(
-            Quantity(
+            worked(
                 f"B{i}",
-                text,
-                f"B_{{{i},{n}}}(t) = C({n},{i}) t^{i} (1 - t)^{n - i} = {text}",
-                f"B_{{{i},{n}}}(t) = \\binom{{{n}}}{{{i}}} t^{{{i}}} (1-t)^{{{n - i}}} = {tex}",
+                tex_to_unicode(tex),
+                f"B_{{{i},{n}}}(t) = \\binom{{{n}}}{{{i}}} t^{{{i}}} (1 - t)^{{{n - i}}} = {tex}",
             )
         )
-    terms = [bernstein_text(i, n) for i in range(n + 1)]
-    out.append(
-        Quantity(
-            "B(t)",
-            None,
-            "B(t) = "
-            + " + ".join(f"{t}·{point_text(p)}" for (t, _), p in zip(terms, pts, strict=True)),
-            "B(t) = "
-            + " + ".join(
-                f"{tex} \\cdot {point_text(p)}" for (_, tex), p in zip(terms, pts, strict=True)
-            ),
-        )
-    )
+    terms = " + ".join(f"{bernstein_tex(i, n)} \\cdot {point_text(p)}" for i, p in enumerate(pts))
+    out.append(worked("B(t)", None, f"B(t) = {terms}"))
     return out
 
 
@@ -115,7 +83,7 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
 
     >>> sol = bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], 8)
     >>> sol.derived[2].text
-    'B_{1,3}(t) = C(3,1) t^1 (1 - t)^2 = 3t(1 - t)²'
+    'B_{1,3}(t) = C(3, 1) t¹ (1 - t)² = 3t(1 - t)²'
     >>> list(sol.pixels())
     [(0, 0), (0, 1), (1, 1), (1, 2), (2, 2), (3, 2), (4, 1), (4, 0)]
     """
@@ -135,7 +103,7 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
     dense = combine(bernstein(n, ts), float_points(pts))
     derived = [
         *_bezier_derived(pts),
-        step_quantity(0, 1, samples, "0", "1", "0", "1"),
+        step_quantity(0, 1, samples, "0", "1"),
     ]
     return Solution(
         primitive="curve",
@@ -145,7 +113,7 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
         derived=tuple(derived),
         columns=(
             *K_T_COLUMNS,
-            *(Column(f"B{i}", f"B_{{{i},{n}}}", f"B_{{{i},{n}}}", 3) for i in range(n + 1)),
+            *(heading(f"B{i}", f"B_{{{i},{n}}}", 3) for i in range(n + 1)),
             *xy_columns(),
         ),
         extra_keys=("t", *(f"B{i}" for i in range(n + 1)), "x_t", "y_t"),
@@ -166,8 +134,8 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
     )
 
 
-def _point_columns(count: int, name: str, tex: str) -> tuple[Column, ...]:
-    return tuple(Column(f"point_{i}", f"{name}_{i}", f"{tex}_{{{i}}}") for i in range(count))
+def _point_columns(count: int, name: str) -> tuple[Column, ...]:
+    return tuple(heading(f"point_{i}", f"{name}_{{{i}}}") for i in range(count))
 
 
 def bezier_at_solution(points: Sequence[Point], t: Value) -> Solution:
@@ -175,7 +143,7 @@ def bezier_at_solution(points: Sequence[Point], t: Value) -> Solution:
 
     >>> sol = bezier_at_solution([(0, 0), (1, 2), (3, 3), (4, 0)], Fraction(1, 2))
     >>> sol.derived[-1].text
-    'B(0.5) = (2, 1.875) -> pixel (2, 2)'
+    'B(0.5) = (2, 1.875) → pixel (2, 2)'
     """
     pts = check_points(points, 2, "a Bezier curve")
     t = check_unit_t(t)
@@ -193,31 +161,24 @@ def bezier_at_solution(points: Sequence[Point], t: Value) -> Solution:
     marks = control_marks(pts)
     pixel = curve_pixel(*point)
     ts = value_text(t)
+    terms = " + ".join(
+        f"{value_text(wi)} \\cdot {point_text(p)}" for wi, p in zip(w, pts, strict=True)
+    )
     derived = [
-        Quantity(
+        worked(
             "recurrence",
             t,
-            f"P_i^(r) = (1 - t)·P_i^(r-1) + t·P_(i+1)^(r-1) = {value_text(1 - t)}·P_i^(r-1) + "
-            f"{ts}·P_(i+1)^(r-1)",
-            f"P_i^{{(r)}} = (1 - t) P_i^{{(r-1)}} + t P_{{i+1}}^{{(r-1)}} = {value_text(1 - t)} "
-            f"P_i^{{(r-1)}} + {ts} P_{{i+1}}^{{(r-1)}}",
+            f"P_i^{{(r)}} = (1 - t) \\cdot P_i^{{(r-1)}} + t \\cdot P_{{i+1}}^{{(r-1)}} = "
+            f"{value_text(1 - t)} \\cdot P_i^{{(r-1)}} + {ts} \\cdot P_{{i+1}}^{{(r-1)}}",
         ),
-        Quantity(
+        worked(
             "bernstein",
             w,
-            f"Bernstein check: B({ts}) = "
-            + " + ".join(f"{value_text(wi)}·{point_text(p)}" for wi, p in zip(w, pts, strict=True))
-            + f" = {point_text(bern)}",
-            f"B({ts}) = "
-            + " + ".join(
-                f"{value_text(wi)} \\cdot {point_text(p)}" for wi, p in zip(w, pts, strict=True)
-            )
-            + f" = {point_text(bern)}",
+            f"\\text{{Bernstein check: }} B({ts}) = {terms} = {point_text(bern)}",
         ),
-        Quantity(
+        worked(
             "point",
             point,
-            f"B({ts}) = {point_text(point)} -> pixel {pixel}",
             f"B({ts}) = {point_text(point)} \\to \\text{{pixel }} {pixel}",
         ),
     ]
@@ -232,13 +193,13 @@ def bezier_at_solution(points: Sequence[Point], t: Value) -> Solution:
         title=f"De Casteljau's construction of a Bezier curve of degree {n} at t = {ts}",
         given=(
             *given_points(pts),
-            Quantity("t", t, f"t = {ts}", f"t = {ts}"),
+            worked("t", t, f"t = {ts}"),
         ),
         derived=tuple(derived),
         tables=(
             Table(
                 f"De Casteljau levels at t = {ts} (row r holds P_i^(r))",
-                (Column("r", "r", "r"), *_point_columns(n + 1, "P", "P")),
+                (heading("r", "r"), *_point_columns(n + 1, "P")),
                 rows,
             ),
         ),

@@ -37,7 +37,7 @@ from ..algorithms.sampling import (
 )
 from ..core.checks import InputError
 from ..core.numeric import Number
-from ..core.records import Column, Quantity, Solution, Step, Table
+from ..core.records import Quantity, Solution, Step, Table, heading, worked
 from ._curve import (
     JOIN_NOTE,
     K_T_COLUMNS,
@@ -86,55 +86,39 @@ def _bspline_derived(
     n = len(pts) - 1
     m = n + p + 1
     t0, t1 = domain(knots, p, n)
+    # Kept short: LaTeX cannot break this line (inline math) and it must fit the page width.
     how = {
-        "open": f"open: p + 1 = {p + 1} equal knots at each end, uniform inside",
-        "uniform": "uniform: equally spaced, not clamped",
-    }.get(kind, "as given")
-    terms = " + ".join(f"N_{{{i},{p}}}(t)·{point_text(pt)}" for i, pt in enumerate(pts))
-    tex_terms = " + ".join(f"N_{{{i},{p}}}(t) \\cdot {point_text(pt)}" for i, pt in enumerate(pts))
-    tex_kind = kind if kind != "explicit" else "as given"
+        "open": f"(\\text{{open: }} p + 1 = {p + 1} \\text{{ equal end knots, uniform inside}})",
+        "uniform": r"(\text{uniform: equally spaced, not clamped})",
+    }.get(kind, r"(\text{as given})")
+    terms = " + ".join(f"N_{{{i},{p}}}(t) \\cdot {point_text(pt)}" for i, pt in enumerate(pts))
     return [
-        Quantity(
+        worked(
             "n",
             n,
-            f"n = number of control points - 1 = {n + 1} - 1 = {n}; degree p = {p}",
-            f"n = {n + 1} - 1 = {n}; \\quad p = {p}",
+            f"n = \\text{{number of control points}} - 1 = {n + 1} - 1 = {n};\\ "
+            f"\\text{{degree }} p = {p}",
         ),
-        Quantity(
+        worked(
             "m",
             m,
-            f"m = n + p + 1 = {n} + {p} + 1 = {m}: knots u_0 … u_{m}",
-            f"m = n + p + 1 = {n} + {p} + 1 = {m}: \\; u_0 \\ldots u_{{{m}}}",
+            f"m = n + p + 1 = {n} + {p} + 1 = {m}: \\; \\text{{knots }} u_0 \\ldots u_{{{m}}}",
         ),
-        Quantity(
-            "knots",
-            tuple(knots),
-            f"U = {knot_text(knots)}   ({how})",
-            f"U = {knot_text(knots)} \\quad \\text{{({tex_kind})}}",
-        ),
-        Quantity(
+        worked("knots", tuple(knots), f"U = {knot_text(knots)}\\ {how}"),
+        worked(
             "domain",
             (t0, t1),
-            f"domain u_p ≤ t ≤ u_(n+1): u_{p} = {value_text(t0)} ≤ t ≤ u_{n + 1} = "
-            f"{value_text(t1)}",
-            f"u_p \\le t \\le u_{{n+1}}: \\; u_{{{p}}} = {value_text(t0)} \\le t \\le "
-            f"u_{{{n + 1}}} = {value_text(t1)}",
+            f"\\text{{domain }} u_p \\le t \\le u_{{n+1}}: \\; u_{{{p}}} = {value_text(t0)} "
+            f"\\le t \\le u_{{{n + 1}}} = {value_text(t1)}",
         ),
-        Quantity(
-            "N0",
-            None,
-            "N_{i,0}(t) = 1 if u_i ≤ t < u_(i+1), else 0",
-            r"N_{i,0}(t) = 1 \text{ if } u_i \le t < u_{i+1}, \text{ else } 0",
-        ),
-        Quantity(
+        worked("N0", None, r"N_{i,0}(t) = 1 \text{ if } u_i \le t < u_{i+1}, \text{ else } 0"),
+        worked(
             "Np",
             None,
-            "N_{i,p}(t) = (t - u_i)/(u_(i+p) - u_i)·N_{i,p-1}(t) + "
-            "(u_(i+p+1) - t)/(u_(i+p+1) - u_(i+1))·N_{i+1,p-1}(t)   (0/0 = 0)",
-            r"N_{i,p}(t) = \frac{t - u_i}{u_{i+p} - u_i} N_{i,p-1}(t) + "
-            r"\frac{u_{i+p+1} - t}{u_{i+p+1} - u_{i+1}} N_{i+1,p-1}(t) \quad (0/0 = 0)",
+            r"N_{i,p}(t) = \frac{t - u_i}{u_{i+p} - u_i} \cdot N_{i,p-1}(t) + "
+            r"\frac{u_{i+p+1} - t}{u_{i+p+1} - u_{i+1}} \cdot N_{i+1,p-1}(t) \quad (0/0 = 0)",
         ),
-        Quantity("C(t)", None, f"C(t) = {terms}", f"C(t) = {tex_terms}"),
+        worked("C(t)", None, f"C(t) = {terms}"),
     ]
 
 
@@ -156,7 +140,7 @@ def bspline_solution(
 
     >>> sol = bspline_solution([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, "open", 4)
     >>> sol.derived[2].text
-    'U = (0, 0, 0, 1, 2, 3, 3, 3)   (open: p + 1 = 3 equal knots at each end, uniform inside)'
+    'U = (0, 0, 0, 1, 2, 3, 3, 3) (open: p + 1 = 3 equal end knots, uniform inside)'
     >>> list(sol.pixels())[-1]
     (5, 2)
     """
@@ -174,13 +158,9 @@ def bspline_solution(
 
     derived = [
         *_bspline_derived(pts, degree, u, kind),
-        step_quantity(
-            t0, t1, samples, value_text(t0), value_text(t1), value_text(t0), value_text(t1)
-        ),
+        step_quantity(t0, t1, samples, value_text(t0), value_text(t1)),
     ]
-    basis_cols = tuple(
-        Column(f"N{i}", f"N_{{{i},{degree}}}", f"N_{{{i},{degree}}}", 3) for i in range(n + 1)
-    )
+    basis_cols = tuple(heading(f"N{i}", f"N_{{{i},{degree}}}", 3) for i in range(n + 1))
     title = (
         f"B-spline of degree {degree}: {n + 1} control points, knots {knot_text(u)}, "
         f"{samples} steps of t"
@@ -195,7 +175,7 @@ def bspline_solution(
             primitive="curve",
             algorithm="bspline-basis",
             title="Basis functions of a " + title,
-            given=(Quantity("p", degree, f"p = {degree}", f"p = {degree}"),),
+            given=(worked("p", degree, f"p = {degree}"),),
             derived=tuple(q for q in derived if q.key != "C(t)"),
             tables=(
                 Table(
@@ -242,7 +222,7 @@ def bspline_at_solution(
     >>> from fractions import Fraction
     >>> sol = bspline_at_solution([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, "open", Fraction(3, 2))
     >>> sol.derived[-1].text
-    'C(1.5) = 0.125·(1, 2) + 0.75·(3, 3) + 0.125·(4, 0) = (2.875, 2.5) -> pixel (3, 3)'
+    'C(1.5) = 0.125·(1, 2) + 0.75·(3, 3) + 0.125·(4, 0) = (2.875, 2.5) → pixel (3, 3)'
     """
     pts, n, u, kind = bspline_setup(points, degree, knots)
     t0, t1 = domain(u, degree, n)
@@ -262,41 +242,31 @@ def bspline_at_solution(
     ts = value_text(t)
     nz = [i for i in range(n + 1) if w[i] != 0]
     closed = t == t1
-    span_text = (
-        f"t = {ts} lies in span s = {s}: u_{s} = {value_text(u[s])} ≤ t "
-        + ("≤" if closed else "<")
-        + f" u_{s + 1} = {value_text(u[s + 1])}"
-        + ("   (right end: the last non-empty span is closed)" if closed else "")
-    )
     span_tex = (
-        f"s = {s}: \\; u_{{{s}}} = {value_text(u[s])} \\le t = {ts} "
+        f"t = {ts} \\text{{ lies in span }} s = {s}: \\; u_{{{s}}} = {value_text(u[s])} \\le t "
         + ("\\le" if closed else "<")
         + f" u_{{{s + 1}}} = {value_text(u[s + 1])}"
+        + (r" \quad (\text{right end: the last non-empty span is closed})" if closed else "")
     )
+    values = ", ".join(f"N_{{{i},{degree}}}({ts}) = {value_text(w[i])}" for i in nz)
+    terms = " + ".join(f"{value_text(w[i])} \\cdot {point_text(pts[i])}" for i in nz)
     derived = [
         *(q for q in _bspline_derived(pts, degree, u, kind) if q.key not in ("N0", "Np")),
-        Quantity("span", s, span_text, span_tex),
-        Quantity(
+        worked("span", s, span_tex),
+        worked(
             "nonzero",
             tuple(nz),
-            "non-zero basis values: "
-            + ", ".join(f"N_{{{i},{degree}}}({ts}) = {value_text(w[i])}" for i in nz)
-            + f"   (sum = {value_text(sum(w[i] for i in nz))})",
-            ", ".join(f"N_{{{i},{degree}}}({ts}) = {value_text(w[i])}" for i in nz),
+            f"\\text{{non-zero basis values: }} {values} \\quad "
+            f"(\\text{{sum}} = {value_text(sum(w[i] for i in nz))})",
         ),
-        Quantity(
+        worked(
             "point",
             point,
-            f"C({ts}) = "
-            + " + ".join(f"{value_text(w[i])}·{point_text(pts[i])}" for i in nz)
-            + f" = {point_text(point)} -> pixel {pixel}",
-            f"C({ts}) = "
-            + " + ".join(f"{value_text(w[i])} \\cdot {point_text(pts[i])}" for i in nz)
-            + f" = {point_text(point)} \\to \\text{{pixel }} {pixel}",
+            f"C({ts}) = {terms} = {point_text(point)} \\to \\text{{pixel }} {pixel}",
         ),
     ]
     lo = max(s - degree, 0)
-    tri_cols = tuple(Column(f"N{i}", f"N_{{{i},d}}", f"N_{{{i},d}}", 3) for i in range(lo, s + 1))
+    tri_cols = tuple(heading(f"N{i}", f"N_{{{i},d}}", 3) for i in range(lo, s + 1))
 
     def triangle() -> Iterator[tuple[Any, ...]]:
         for d, row in enumerate(levels):
@@ -311,22 +281,22 @@ def bspline_at_solution(
         primitive="curve",
         algorithm="bspline-at",
         title=f"B-spline of degree {degree} at t = {ts}: knots {knot_text(u)}",
-        given=(*given_points(pts), Quantity("t", t, f"t = {ts}", f"t = {ts}")),
+        given=(*given_points(pts), worked("t", t, f"t = {ts}")),
         derived=tuple(derived),
         tables=(
             Table(
                 f"Cox–de Boor at t = {ts}: N_(i,d) for d = 0 .. {degree} (only the span's "
                 "functions can be non-zero)",
-                (Column("d", "d", "d"), *tri_cols),
+                (heading("d", "d"), *tri_cols),
                 triangle,
             ),
             Table(
                 "Weighted sum of the non-zero terms",
                 (
-                    Column("i", "i", "i"),
-                    Column("N", f"N_(i,{degree})(t)", f"N_{{i,{degree}}}(t)", 3),
-                    Column("point_P", "P_i", "P_i"),
-                    Column("point_NP", f"N_(i,{degree})(t)·P_i", f"N_{{i,{degree}}}(t) P_i"),
+                    heading("i", "i"),
+                    heading("N", f"N_{{i,{degree}}}(t)", 3),
+                    heading("point_P", "P_i"),
+                    heading("point_NP", f"N_{{i,{degree}}}(t) \\cdot P_i"),
                 ),
                 weighted,
             ),

@@ -20,7 +20,7 @@ from ..algorithms.curve_limits import (
     check_weights,
 )
 from ..algorithms.sampling import bbox, combine, curve_pixels, dense_ts, float_points, polyline
-from ..core.records import Column, Pixel, Quantity, Solution, Table
+from ..core.records import Pixel, Quantity, Solution, Table, heading, worked
 from ._curve import JOIN_NOTE, control_marks, given_points, point_text
 
 _ORDERS = ("C0", "C1", "C2")
@@ -59,39 +59,30 @@ def continuity_solution(
     a = end_derivatives(a_pts, True)
     b = end_derivatives(b_pts, False)
     level = continuity_level(a_pts, b_pts)
+    a_end, a_before = point_text(a_pts[-1]), point_text(a_pts[-2])
+    b_start, b_next = point_text(b_pts[0]), point_text(b_pts[1])
     derived = [
-        Quantity(
-            "A(1)",
-            a[0],
-            f"A(1) = P_{n} = {point_text(a[0])}",
-            f"A(1) = P_{{{n}}} = {point_text(a[0])}",
-        ),
-        Quantity(
-            "B(0)", b[0], f"B(0) = Q_0 = {point_text(b[0])}", f"B(0) = Q_0 = {point_text(b[0])}"
-        ),
-        Quantity(
+        worked("A(1)", a[0], f"A(1) = P_{{{n}}} = {point_text(a[0])}"),
+        worked("B(0)", b[0], f"B(0) = Q_0 = {point_text(b[0])}"),
+        worked(
             "A'(1)",
             a[1],
-            f"A'(1) = n(P_{n} - P_{n - 1}) = {n}·({point_text(a_pts[-1])} - {point_text(a_pts[-2])}) = "
-            f"{point_text(a[1])}",
-            f"A'(1) = n(P_{{{n}}} - P_{{{n - 1}}}) = {n}({point_text(a_pts[-1])} - {point_text(a_pts[-2])}) = "
+            f"A'(1) = n(P_{{{n}}} - P_{{{n - 1}}}) = {n} \\cdot ({a_end} - {a_before}) = "
             f"{point_text(a[1])}",
         ),
-        Quantity(
+        worked(
             "B'(0)",
             b[1],
-            f"B'(0) = m(Q_1 - Q_0) = {m}·({point_text(b_pts[1])} - {point_text(b_pts[0])}) = {point_text(b[1])}",
-            f"B'(0) = m(Q_1 - Q_0) = {m}({point_text(b_pts[1])} - {point_text(b_pts[0])}) = {point_text(b[1])}",
+            f"B'(0) = m(Q_1 - Q_0) = {m} \\cdot ({b_next} - {b_start}) = {point_text(b[1])}",
         ),
         _second("A''(1)", a_pts[::-1], a[2], "P", n, True),
         _second("B''(0)", b_pts, b[2], "Q", m, False),
     ]
     verdict = _verdict(level)
     derived.append(
-        Quantity(
+        worked(
             "continuity",
             _ORDERS[level] if level >= 0 else None,
-            f"continuity at the join: {verdict}",
             f"\\text{{continuity at the join: {verdict}}}",
         )
     )
@@ -127,17 +118,17 @@ def continuity_solution(
         primitive="curve",
         algorithm="continuity",
         title=f"Continuity of two Bezier segments (degrees {n} and {m}) at their join",
-        given=(*given_points(a_pts), *given_points(b_pts, "Q", "Q")),
+        given=(*given_points(a_pts), *given_points(b_pts, "Q")),
         derived=tuple(derived),
         tables=(
             Table(
                 "Continuity at the join",
                 (
-                    Column("order", "order", r"\text{order}"),
-                    Column("quantity", "compared", r"\text{compared}"),
-                    Column("point_A", "A at t = 1", r"A(1)"),
-                    Column("point_B", "B at t = 0", r"B(0)"),
-                    Column("equal", "equal", r"\text{equal}"),
+                    heading("order", r"\text{order}"),
+                    heading("quantity", r"\text{compared}"),
+                    heading("point_A", r"A \text{ at } t = 1"),
+                    heading("point_B", r"B \text{ at } t = 0"),
+                    heading("equal", r"\text{equal}"),
                 ),
                 rows,
             ),
@@ -158,16 +149,13 @@ def _second(key: str, pts: Sequence[Point], value: Point, name: str, n: int, end
     """The working of ``A''(1)`` or ``B''(0)``; ``pts`` start at the join."""
     deg = "n" if name == "P" else "m"
     if n < 2:
-        return Quantity(key, value, f"{key} = 0 (degree 1)", f"{key} = 0 \\; (\\text{{degree 1}})")
+        return worked(key, value, f"{key} = 0 \\; (\\text{{degree 1}})")
     idx = (n, n - 1, n - 2) if end else (0, 1, 2)
-    sym = f"{name}_{idx[0]} - 2{name}_{idx[1]} + {name}_{idx[2]}"
-    tex_sym = f"{name}_{{{idx[0]}}} - 2{name}_{{{idx[1]}}} + {name}_{{{idx[2]}}}"
-    nums = f"{point_text(pts[0])} - 2·{point_text(pts[1])} + {point_text(pts[2])}"
-    tex_nums = f"{point_text(pts[0])} - 2{point_text(pts[1])} + {point_text(pts[2])}"
-    return Quantity(
+    sym = f"{name}_{{{idx[0]}}} - 2{name}_{{{idx[1]}}} + {name}_{{{idx[2]}}}"
+    nums = f"{point_text(pts[0])} - 2 \\cdot {point_text(pts[1])} + {point_text(pts[2])}"
+    return worked(
         key,
         value,
-        f"{key} = {deg}({deg} - 1)({sym}) = {n}·{n - 1}·({nums}) = {point_text(value)}",
-        f"{key} = {deg}({deg}-1)({tex_sym}) = {n} \\cdot {n - 1} ({tex_nums}) = "
+        f"{key} = {deg}({deg} - 1)({sym}) = {n} \\cdot {n - 1} \\cdot ({nums}) = "
         f"{point_text(value)}",
     )

@@ -20,7 +20,7 @@ from ..algorithms.curve_limits import (
 from ..algorithms.local_control import local_control
 from ..algorithms.sampling import bbox, curve_pixels
 from ..core.numeric import Number
-from ..core.records import Column, Pixel, PixelFigure, Quantity, Solution
+from ..core.records import Pixel, PixelFigure, Quantity, Solution, heading, worked
 from ._curve import JOIN_NOTE, given_points, knot_text, point_text, value_text
 from .bspline import bspline_setup
 
@@ -28,7 +28,7 @@ from .bspline import bspline_setup
 def _moved_quantity(key: str, moved: int, total: int, removed: int, added: int) -> Quantity:
     name = "Bezier" if key == "bezier" else "B-spline"
     text = f"{moved} of {total} samples moved; pixels: {removed} removed, {added} added"
-    return Quantity(f"{key}_moved", moved, f"{name}: {text}", f"\\text{{{name}: {text}}}")
+    return worked(f"{key}_moved", moved, f"\\text{{{name}: {text}}}")
 
 
 def _changed(before: Iterable[Pixel], after: Iterable[Pixel]) -> tuple[int, int]:
@@ -81,36 +81,30 @@ def local_control_solution(
     total = samples + 1
     old = point_text(pts[index])
     derived = [
-        Quantity(
+        worked(
             "move",
             (index, new),
-            f"P{index} moves from {old} to {point_text(new)}",
-            f"P_{{{index}}}: {old} \\to {point_text(new)}",
+            f"P_{{{index}}} \\text{{ moves from }} {old} \\text{{ to }} {point_text(new)}",
         ),
-        Quantity(
+        worked(
             "knots",
             tuple(u),
-            f"B-spline: degree p = {degree}, U = {knot_text(u)}, domain {value_text(t0)} ≤ t ≤ "
-            f"{value_text(t1)}",
-            f"\\text{{B-spline: }} p = {degree}, \\; U = {knot_text(u)}, \\; {value_text(t0)} "
-            f"\\le t \\le {value_text(t1)}",
+            f"\\text{{B-spline: degree }} p = {degree}, \\; U = {knot_text(u)}, \\; "
+            f"\\text{{domain }} {value_text(t0)} \\le t \\le {value_text(t1)}",
         ),
-        Quantity(
+        worked(
             "bezier_support",
             (0, 1),
-            f"Bezier: B_{{{index},{n}}}(t) > 0 for all 0 < t < 1, so every point with "
-            "0 < t < 1 moves",
-            f"\\text{{Bezier: }} B_{{{index},{n}}}(t) > 0 \\text{{ for }} 0 < t < 1",
+            f"\\text{{Bezier: }} B_{{{index},{n}}}(t) > 0 \\text{{ for all }} 0 < t < 1, "
+            r"\text{ so every point with } 0 < t < 1 \text{ moves}",
         ),
         _moved_quantity("bezier", z_moved, total, z_rm, z_add),
-        Quantity(
+        worked(
             "bspline_support",
             (lo, hi),
-            f"B-spline: N_{{{index},{degree}}}(t) = 0 outside u_{index} = {value_text(lo)} ≤ t ≤ "
-            f"u_{index + degree + 1} = {value_text(hi)}, so only that stretch moves",
             f"\\text{{B-spline: }} N_{{{index},{degree}}}(t) = 0 \\text{{ outside }} "
             f"u_{{{index}}} = {value_text(lo)} \\le t \\le u_{{{index + degree + 1}}} = "
-            f"{value_text(hi)}",
+            f"{value_text(hi)}, \\text{{ so only that stretch moves}}",
         ),
         _moved_quantity("bspline", s_moved, total, s_rm, s_add),
     ]
@@ -128,15 +122,15 @@ def local_control_solution(
         given=tuple(given_points(pts)),
         derived=tuple(derived),
         columns=(
-            Column("k", "k", "k"),
-            Column("t_bezier", "t (Bezier)", r"t_{\text{Bez}}", 3),
-            Column("bezier_before", "Bezier before", r"\text{Bezier before}"),
-            Column("bezier_after", "Bezier after", r"\text{Bezier after}"),
-            Column("bezier_moved", "moved", r"\text{moved}"),
-            Column("t_bspline", "t (B-spline)", r"t_{\text{B-spl}}", 3),
-            Column("bspline_before", "B-spline before", r"\text{B-spline before}"),
-            Column("bspline_after", "B-spline after", r"\text{B-spline after}"),
-            Column("bspline_moved", "moved", r"\text{moved}"),
+            heading("k", "k"),
+            heading("t_bezier", r"t \ (\text{Bezier})", 3),
+            heading("bezier_before", r"\text{Bezier before}"),
+            heading("bezier_after", r"\text{Bezier after}"),
+            heading("bezier_moved", r"\text{moved}"),
+            heading("t_bspline", r"t \ (\text{B-spline})", 3),
+            heading("bspline_before", r"\text{B-spline before}"),
+            heading("bspline_after", r"\text{B-spline after}"),
+            heading("bspline_moved", r"\text{moved}"),
         ),
         extra_keys=(
             "t_bezier",

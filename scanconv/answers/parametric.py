@@ -8,7 +8,6 @@ the default range of t and the given values), built by the factory registered fo
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -20,7 +19,8 @@ from ..algorithms.sampling import curve_pixel, curve_pixels, dense_ts, path_bbox
 from ..core.checks import InputError
 from ..core.expr import Expr, compile_expr, parse_exact
 from ..core.numeric import Number, fmt_short, normalize
-from ..core.records import Column, Pixel, Quantity, Solution, Step
+from ..core.records import Pixel, Quantity, Solution, Step, heading, worked
+from ..core.working import tex_text, tex_to_unicode
 from ._curve import (
     FLOAT_ROUND_NOTE,
     JOIN_NOTE,
@@ -33,10 +33,10 @@ from ._curve import (
 
 
 def _affine(a: Value, c: Value, var: str) -> str:
-    """``a + c·var`` as the working writes it: ``0 + 5 cos t``, ``2 - t²``, ``0 + 10t``.
+    """``a + c·var`` in TeX as the working writes it: ``0 + 5 \\cos t``, ``2 - t^2``, ``0 + 10t``.
 
-    >>> _affine(0, 5, "cos t"), _affine(2, -1, "t²"), _affine(0, Fraction(1, 2), "t")
-    ('0 + 5 cos t', '2 - t²', '0 + 0.5t')
+    >>> _affine(0, 5, r"\\cos t"), _affine(2, -1, "t^2"), _affine(0, Fraction(1, 2), "t")
+    ('0 + 5 \\\\cos t', '2 - t^2', '0 + 0.5t')
     """
     mag: Value = -c if c < 0 else c
     coef = "" if mag == 1 else value_text(mag) + ("" if var.startswith("t") else " ")
@@ -53,25 +53,24 @@ def _expr_literal(v: Value) -> str:
     return s if s.isdigit() else f"({s})"
 
 
-def _tex_expr(text: str) -> str:
-    """A formula typed by the user, as LaTeX math.
-
-    >>> _tex_expr("3*cos(t)")
-    '3 \\\\cdot \\\\cos(t)'
-    """
-    s = " ".join(text.split()).replace("**", "^").replace("*", r" \cdot ")
-    s = re.sub(r"\b(sin|cos|tan|exp|log)\b", r"\\\1", s)
-    return re.sub(r"\bpi\b", r"\\pi", s)
-
-
 def _words(text: str) -> str:
     """A formula with its whitespace collapsed, as the working shows it."""
     return " ".join(text.split())
 
 
+def _typed(text: str) -> str:
+    """A formula typed by the user, in TeX: as typed, in typewriter type.
+
+    >>> _typed("3*cos(t)")
+    '\\\\texttt{3*cos(t)}'
+    """
+    return f"\\texttt{{{tex_text(text)}}}"
+
+
 @dataclass(frozen=True, slots=True)
 class _Range:
-    """A parameter bound: its value (exact or float) and how the working shows it."""
+    """A parameter bound: its value (exact or float), its text for messages and its TeX for
+    the working."""
 
     value: Value
     text: str
@@ -88,9 +87,8 @@ TWO_PI = _Range(2 * math.pi, "2π", r"2\pi")
 
 
 class _Working(NamedTuple):
-    """One coordinate's formula: in general, in general as TeX, with the numbers substituted."""
+    """One coordinate's formula in TeX: in general, and with the numbers substituted."""
 
-    text: str
     tex: str
     substituted: str
 
@@ -108,8 +106,6 @@ class _Spec:
     samples: int
     title: str
     marks: tuple[Point, ...] = ()
-    tex_formulas: bool = False
-    """True: the substituted formulas are the user's own text, turned into TeX."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -141,13 +137,10 @@ def _line_spec(inp: _Inputs) -> _Spec:
             f"{_expr_literal(x0)} + t*{_expr_literal(dx)}",
             f"{_expr_literal(y0)} + t*{_expr_literal(dy)}",
         ),
-        _Working("x(t) = x0 + t(x1 - x0)", "x(t) = x_0 + t(x_1 - x_0)", _affine(x0, dx, "t")),
-        _Working("y(t) = y0 + t(y1 - y0)", "y(t) = y_0 + t(y_1 - y_0)", _affine(y0, dy, "t")),
+        _Working("x(t) = x_0 + t(x_1 - x_0)", _affine(x0, dx, "t")),
+        _Working("y(t) = y_0 + t(y_1 - y_0)", _affine(y0, dy, "t")),
         (_Range.of(0), _Range.of(1)),
-        (
-            Quantity("P0", (x0, y0), f"P0 = {p0}", f"P_0 = {p0}"),
-            Quantity("P1", (x1, y1), f"P1 = {p1}", f"P_1 = {p1}"),
-        ),
+        (worked("P0", (x0, y0), f"P_0 = {p0}"), worked("P1", (x1, y1), f"P_1 = {p1}")),
         max(1, math.ceil(max(abs(Fraction(dx)), abs(Fraction(dy))))),
         f"Parametric line: {p0} to {p1}",
     )
@@ -164,18 +157,10 @@ def _conic_spec(
             f"{_expr_literal(xc)} + {_expr_literal(ra)}*cos(t)",
             f"{_expr_literal(yc)} + {_expr_literal(rb)}*sin(t)",
         ),
-        _Working(
-            f"x(t) = xc + {names[0]} cos t",
-            f"x(t) = x_c + {names[0]} \\cos t",
-            _affine(xc, ra, "cos t"),
-        ),
-        _Working(
-            f"y(t) = yc + {names[1]} sin t",
-            f"y(t) = y_c + {names[1]} \\sin t",
-            _affine(yc, rb, "sin t"),
-        ),
+        _Working(f"x(t) = x_c + {names[0]} \\cos t", _affine(xc, ra, r"\cos t")),
+        _Working(f"y(t) = y_c + {names[1]} \\sin t", _affine(yc, rb, r"\sin t")),
         (_Range.of(0), TWO_PI),
-        (Quantity("center", center, f"centre {c}", f"(x_c, y_c) = {c}"), *given),
+        (worked("center", center, f"\\text{{centre }} (x_c, y_c) = {c}"), *given),
         DEFAULT_SAMPLES,
         title,
         marks=(center,),
@@ -183,7 +168,7 @@ def _conic_spec(
 
 
 def _given(key: str, v: Number) -> Quantity:
-    return Quantity(key, v, f"{key} = {value_text(v)}", f"{key} = {value_text(v)}")
+    return worked(key, v, f"{key} = {value_text(v)}")
 
 
 def _circle_spec(inp: _Inputs) -> _Spec:
@@ -217,13 +202,10 @@ def _parabola_spec(inp: _Inputs) -> _Spec:
     v = point_text((h, k))
     return _Spec(
         *_formulas(f"{_expr_literal(h)} + t", f"{_expr_literal(k)} + {_expr_literal(a)}*t**2"),
-        _Working("x(t) = h + t", "x(t) = h + t", f"{value_text(h)} + t"),
-        _Working("y(t) = k + a t²", "y(t) = k + a t^2", _affine(k, a, "t²")),
+        _Working("x(t) = h + t", f"{value_text(h)} + t"),
+        _Working("y(t) = k + a t^2", _affine(k, a, "t^2")),
         (_Range.of(-3), _Range.of(3)),
-        (
-            Quantity("vertex", (h, k), f"vertex (h, k) = {v}", f"(h, k) = {v}"),
-            _given("a", a),
-        ),
+        (worked("vertex", (h, k), f"\\text{{vertex }} (h, k) = {v}"), _given("a", a)),
         DEFAULT_SAMPLES,
         f"Parametric parabola: vertex {v}, a = {value_text(a)}",
     )
@@ -240,13 +222,12 @@ def _custom_spec(inp: _Inputs) -> _Spec:
     return _Spec(
         fx,
         fy,
-        _Working("x(t)", "x(t)", x),
-        _Working("y(t)", "y(t)", y),
+        _Working("x(t)", _typed(x)),
+        _Working("y(t)", _typed(y)),
         (_Range.of(0), _Range.of(1)),
         (),
         DEFAULT_SAMPLES,
         f"Parametric curve: x(t) = {x}, y(t) = {y}",
-        tex_formulas=True,
     )
 
 
@@ -286,7 +267,7 @@ def parametric_solution(
 
     >>> sol = parametric_solution("circle", radius=5, samples=4)
     >>> [q.text for q in sol.derived[:2]]
-    ['x(t) = xc + r cos t = 0 + 5 cos t', 'y(t) = yc + r sin t = 0 + 5 sin t']
+    ['x(t) = x_c + r cos t = 0 + 5 cos t', 'y(t) = y_c + r sin t = 0 + 5 sin t']
     >>> list(sol.pixels())[:3]
     [(5, 0), (4, 1), (3, 2)]
     """
@@ -315,15 +296,12 @@ def _bound(v: Value | str) -> _Range:
     if isinstance(value, Fraction):
         return _Range.of(normalize(value))
     text = _words(v)
-    return _Range.of(value, text, _tex_expr(text))
+    return _Range.of(value, text, _typed(text))
 
 
-def _formula(key: str, work: _Working, tex_formulas: bool) -> Quantity:
-    tex_sub = _tex_expr(work.substituted) if tex_formulas else work.substituted.replace("²", "^2")
-    tex_sub = re.sub(r"\b(cos|sin) t\b", r"\\\1 t", tex_sub)
-    return Quantity(
-        key, work.substituted, f"{work.text} = {work.substituted}", f"{work.tex} = {tex_sub}"
-    )
+def _formula(key: str, work: _Working) -> Quantity:
+    """``x(t) = x_c + r cos t = 0 + 5 cos t``; its value is the substituted formula."""
+    return worked(key, tex_to_unicode(work.substituted), f"{work.tex} = {work.substituted}")
 
 
 def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples: int) -> Solution:
@@ -347,9 +325,9 @@ def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples
     except ValueError:  # a singularity between the samples: draw the samples only
         dense = [(float(s.extra[1]), float(s.extra[2])) for s in steps()]
     derived = [
-        _formula("x(t)", spec.x_work, spec.tex_formulas),
-        _formula("y(t)", spec.y_work, spec.tex_formulas),
-        step_quantity(t0, t1, samples, lo.text, hi.text, lo.tex, hi.tex),
+        _formula("x(t)", spec.x_work),
+        _formula("y(t)", spec.y_work),
+        step_quantity(t0, t1, samples, lo.tex, hi.tex),
     ]
     exact = not (isinstance(t0, float) or isinstance(t1, float)) and fx.rational and fy.rational
     notes = [
@@ -368,8 +346,8 @@ def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples
         given=spec.given,
         derived=tuple(derived),
         columns=(
-            Column("k", "k", "k"),
-            Column("t", "t_k", "t_k", 3),
+            heading("k", "k"),
+            heading("t", "t_k", 3),
             *xy_columns(),
         ),
         extra_keys=("t", "x_t", "y_t"),

@@ -10,7 +10,7 @@ from ..algorithms.image_limits import check_bits
 from ..algorithms.quantize import Quantizer
 from ..algorithms.storage import bits_per_pixel
 from ..core.numeric import Number, fmt_paren, fmt_short
-from ..core.records import Column, Quantity, Solution, Table
+from ..core.records import Quantity, Solution, Table, heading, worked
 from ._image import int_tex, int_text
 
 GRAY_NAMES: dict[int, tuple[str, ...]] = {
@@ -99,20 +99,19 @@ def quantize_solution(
     >>> sol = quantize_solution(2, (0, 255))
     >>> for q in sol.derived:
     ...     print(q.text)
-    L = 2^B = 2^2 = 4 levels, 0 to 3
-    Δ = (HI − LO + 1) / L = (255 − 0 + 1) / 4 = 64
-    level = ⌊(v − LO) / Δ⌋ = ⌊(v − 0) / 64⌋
-    r_k = LO + (k + 1/2)·Δ = 0 + (k + 1/2)·64
+    L = 2^B = 2² = 4 levels, 0 to 3
+    Δ = (HI - LO + 1) / L = (255 - 0 + 1) / 4 = 64
+    level = ⌊(v - LO) / Δ⌋ = ⌊(v - 0) / 64⌋
+    rₖ = LO + (k + 1/2)·Δ = 0 + (k + 1/2)·64
     >>> [row[-1] for row in sol.tables[0].rows()]
     [32, 96, 160, 224]
     """
     B = check_bits(bits)
     L = 1 << B
     derived = [
-        Quantity(
+        worked(
             "L",
             L,
-            f"L = 2^B = 2^{B} = {int_text(L)} levels, 0 to {int_text(L - 1)}",
             f"L = 2^B = 2^{{{B}}} = {int_tex(L)} \\text{{ levels, 0 to }} {int_tex(L - 1)}",
         )
     ]
@@ -128,9 +127,9 @@ def quantize_solution(
             f"Gray k/{L - 1} here, with 0 Black and {L - 1} White."
         )
     columns = [
-        Column("decimal", "Decimal value", r"\text{Decimal value}"),
-        Column("binary", f"Binary ({B} bits)", f"\\text{{Binary ({B} bits)}}"),
-        Column("gray_level", "Gray level", r"\text{Gray level}"),
+        heading("decimal", r"\text{Decimal value}"),
+        heading("binary", f"\\text{{Binary ({B} bits)}}"),
+        heading("gray_level", r"\text{Gray level}"),
     ]
     q = None
     if value_range is not None:
@@ -139,11 +138,10 @@ def quantize_solution(
         notes.append(_quantizer_note(q))
         edges = None if q.integer else _places(q.lo, q.step)
         columns += [
-            Column("from", "from", r"\text{from}", edges),
-            Column("to", "to", r"\text{to}", edges),
-            Column(
+            heading("from", r"\text{from}", edges),
+            heading("to", r"\text{to}", edges),
+            heading(
                 "reconstruction",
-                "reconstruction r_k",
                 r"\text{reconstruction } r_k",
                 _places(q.reconstruction(0), q.step),
             ),
@@ -153,7 +151,7 @@ def quantize_solution(
         primitive="image",
         algorithm="quantize",
         title=f"{names.get(B, f'{B}-bit')} quantization ({int_text(L)} gray levels)",
-        given=(Quantity("B", B, f"B = {B} bits", f"B = {B} \\text{{ bits}}"),),
+        given=(worked("B", B, f"B = {B} \\text{{ bits}}"),),
         derived=tuple(derived),
         notes=tuple(notes),
         tables=(Table("Quantization table", tuple(columns), lambda: quantization_rows(B, q)),),
@@ -186,31 +184,24 @@ def _places(*values: Number) -> int | None:
 
 def _quantizer_working(q: Quantizer) -> list[Quantity]:
     lo, hi, step = fmt_short(q.lo), fmt_paren(q.hi), fmt_paren(q.step)
-    plus1, plus1_t = (" + 1", " + 1") if q.integer else ("", "")
-    off, off_t = ("(k + 1/2)", r"(k + \tfrac{1}{2})") if q.recon == "midpoint" else ("k", "k")
+    plus1 = " + 1" if q.integer else ""
+    off = r"(k + \tfrac{1}{2})" if q.recon == "midpoint" else "k"
     return [
-        Quantity(
+        worked(
             "step",
             q.step,
-            f"Δ = (HI − LO{plus1}) / L = ({hi} − {fmt_paren(q.lo)}{plus1}) / {q.levels} = "
-            f"{fmt_short(q.step)}",
-            f"\\Delta = \\frac{{HI - LO{plus1_t}}}{{L}} = \\frac{{{hi} - {fmt_paren(q.lo)}"
-            f"{plus1_t}}}{{{q.levels}}} = {fmt_short(q.step)}",
+            f"\\Delta = \\frac{{HI - LO{plus1}}}{{L}} = \\frac{{{hi} - {fmt_paren(q.lo)}"
+            f"{plus1}}}{{{q.levels}}} = {fmt_short(q.step)}",
         ),
-        Quantity(
+        worked(
             "level",
             None,
-            f"level = ⌊(v − LO) / Δ⌋ = ⌊(v − {fmt_paren(q.lo)}) / {step}⌋"
-            + ("" if q.integer else f", at most L − 1 = {q.levels - 1}"),
             f"\\text{{level}} = \\lfloor (v - LO) / \\Delta \\rfloor = \\lfloor (v - "
             f"{fmt_paren(q.lo)}) / {step} \\rfloor"
             + ("" if q.integer else f", \\text{{ at most }} L - 1 = {q.levels - 1}"),
         ),
-        Quantity(
-            "reconstruction",
-            None,
-            f"r_k = LO + {off}·Δ = {lo} + {off}·{step}",
-            f"r_k = LO + {off_t} \\cdot \\Delta = {lo} + {off_t} \\cdot {step}",
+        worked(
+            "reconstruction", None, f"r_k = LO + {off} \\cdot \\Delta = {lo} + {off} \\cdot {step}"
         ),
     ]
 

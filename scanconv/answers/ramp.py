@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from ..algorithms.ramp import ramp_row, ramp_size
 from ..algorithms.storage import bits_per_pixel
 from ..core.numeric import Number
-from ..core.records import Quantity, ShadedMatrix, Solution, Table
+from ..core.records import ShadedMatrix, Solution, Table, worked
 from ._image import matrix_columns, picture_note
 from .storage import storage_quantity
 
@@ -20,7 +20,7 @@ def ramp_solution(m: Number, n: Number, levels: Number) -> Solution:
 
     >>> sol = ramp_solution(8, 8, 8)
     >>> print(sol.derived[1].text)
-    f(i, j) = s if s ≤ L − 1, else 2(L − 1) − s = 14 − s, where s = (i + j) mod 2(L − 1) = (i + j) mod 14
+    f(i, j) = s if s ≤ L - 1, else 2(L - 1) - s = 14 - s, where s = (i + j) mod 2(L - 1) = (i + j) mod 14
     >>> next(iter(sol.tables[0].rows()))
     (0, 0, 1, 2, 3, 4, 5, 6, 7)
     """
@@ -33,20 +33,17 @@ def ramp_solution(m: Number, n: Number, levels: Number) -> Solution:
         for i in range(M):
             yield (i, *ramp_row(i, N, L).tolist())
 
-    bits_q = Quantity(
+    bits_q = worked(
         "k",
         k,
-        f"k = ⌈log2 L⌉ = ⌈log2 {L}⌉ = {k} bits per pixel (levels 0 to {L - 1})",
         f"k = \\lceil \\log_2 L \\rceil = \\lceil \\log_2 {L} \\rceil = {k} \\text{{ bits per "
         f"pixel (levels 0 to {L - 1})}}",
     )
-    rule = Quantity(
+    fold = worked(
         "rule",
         None,
-        f"f(i, j) = s if s ≤ L − 1, else 2(L − 1) − s = {P} − s, where s = (i + j) mod "
-        f"2(L − 1) = (i + j) mod {P}",
         f"f(i, j) = s \\text{{ if }} s \\le L - 1, \\text{{ else }} 2(L - 1) - s = {P} - s, "
-        f"\\quad s = (i + j) \\bmod 2(L - 1) = (i + j) \\bmod {P}",
+        f"\\text{{ where }} s = (i + j) \\bmod 2(L - 1) = (i + j) \\bmod {P}",
     )
     note = picture_note(M, N)
     return Solution(
@@ -54,11 +51,11 @@ def ramp_solution(m: Number, n: Number, levels: Number) -> Solution:
         algorithm="ramp",
         title=f"Grayscale ramp image: {M} x {N}, L = {L}",
         given=(
-            Quantity("M", M, f"M = {M} rows", f"M = {M} \\text{{ rows}}"),
-            Quantity("N", N, f"N = {N} columns", f"N = {N} \\text{{ columns}}"),
-            Quantity("L", L, f"L = {L} gray levels", f"L = {L} \\text{{ gray levels}}"),
+            worked("M", M, f"M = {M} \\text{{ rows}}"),
+            worked("N", N, f"N = {N} \\text{{ columns}}"),
+            worked("L", L, f"L = {L} \\text{{ gray levels}}"),
         ),
-        derived=(bits_q, rule, storage_quantity(M, N, L)),
+        derived=(bits_q, fold, storage_quantity(M, N, L)),
         notes=(
             "Row i from the top, column j from the left; 0 is black and L − 1 white.",
             *((note,) if note else ()),

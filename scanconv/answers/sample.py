@@ -9,7 +9,7 @@ from fractions import Fraction
 
 from ..algorithms.sample import Sampled
 from ..core.numeric import Number, fmt, fmt_short, normalize, paren
-from ..core.records import Quantity, ShadedMatrix, Solution, Table
+from ..core.records import Quantity, ShadedMatrix, Solution, Table, worked
 from ..core.working import tex_text
 from ._image import matrix_columns, picture_note
 from .storage import storage_quantity
@@ -34,10 +34,13 @@ def _paren_show(v: Number | float) -> str:
     return paren(_show(v))
 
 
-def _rel(*values: Number | float) -> tuple[str, str]:
-    """``=`` if every value shows exactly, else ``≈``; as text and as TeX."""
-    exact = all(_num(v)[1] for v in values)
-    return ("=", "=") if exact else ("≈", r"\approx")
+def _rel(*values: Number | float) -> str:
+    """``=`` if every value shows exactly, else ``\\approx``.
+
+    >>> _rel(1, Fraction(1, 2)), _rel(Fraction(1, 3))
+    ('=', '\\\\approx')
+    """
+    return "=" if all(_num(v)[1] for v in values) else r"\approx"
 
 
 def sample_solution(s: Sampled) -> Solution:
@@ -48,10 +51,10 @@ def sample_solution(s: Sampled) -> Solution:
     >>> sol = sample_solution(sample_levels("x + y", 8, 8, 8))
     >>> for q in sol.derived[4:]:
     ...     print(q.text)
-    f_min = 0, f_max = 14 (over the 64 samples)
-    Δ = (f_max − f_min) / L = (14 − 0) / 8 = 1.75
-    level = min(⌊(f − f_min) / Δ⌋, L − 1)
-    storage = M × N × ⌈log2 L⌉ = 8 × 8 × 3 = 192 bits = 24 bytes
+    fₘᵢₙ = 0, fₘₐₓ = 14 (over the 64 samples)
+    Δ = (fₘₐₓ - fₘᵢₙ) / L = (14 - 0) / 8 = 1.75
+    level = min(⌊(f - fₘᵢₙ) / Δ⌋, L - 1)
+    storage = M × N × ⌈log₂ L⌉ = 8 × 8 × 3 = 192 bits = 24 bytes
     >>> next(iter(sol.tables[0].rows()))
     (0, 4, 4, 5, 5, 6, 6, 7, 7)
     """
@@ -59,48 +62,44 @@ def sample_solution(s: Sampled) -> Solution:
     L, origin, expr = s.L, s.origin, s.expr
     x0, x1, y0, y1 = s.domain
     shown = " ".join(expr.split())
-    dom = f"x ∈ [{_show(x0)}, {_show(x1)}], y ∈ [{_show(y0)}, {_show(y1)}]"
     given = (
-        Quantity("f", shown, f"f(x, y) = {shown}", f"f(x, y) = \\texttt{{{tex_text(shown)}}}"),
-        Quantity("M", M, f"M = {M} rows", f"M = {M} \\text{{ rows}}"),
-        Quantity("N", N, f"N = {N} columns", f"N = {N} \\text{{ columns}}"),
-        Quantity("L", L, f"L = {L} levels", f"L = {L} \\text{{ levels}}"),
-        Quantity("domain", (x0, x1, y0, y1), dom, dom.replace("∈", "\\in")),
+        worked("f", shown, f"f(x, y) = \\texttt{{{tex_text(shown)}}}"),
+        worked("M", M, f"M = {M} \\text{{ rows}}"),
+        worked("N", N, f"N = {N} \\text{{ columns}}"),
+        worked("L", L, f"L = {L} \\text{{ levels}}"),
+        worked(
+            "domain",
+            (x0, x1, y0, y1),
+            f"x \\in [{_show(x0)}, {_show(x1)}], y \\in [{_show(y0)}, {_show(y1)}]",
+        ),
     )
     top = "y down" if origin == "top-left" else "y up"
-    y_rule = ("y0 + i·Δy", "y_0 + i \\cdot \\Delta y")
-    if origin != "top-left":
-        y_rule = ("y1 − i·Δy", "y_1 - i \\cdot \\Delta y")
+    y_rule = "y_0 + i \\cdot \\Delta y" if origin == "top-left" else "y_1 - i \\cdot \\Delta y"
     derived = [
         _spacing("x", x0, x1, N, "N"),
         _spacing("y", y0, y1, M, "M"),
-        Quantity(
+        worked(
             "x_j",
             None,
-            f"x_j = x0 + j·Δx, j = 0 … {N - 1} (columns, left to right)",
             f"x_j = x_0 + j \\cdot \\Delta x,\\ j = 0 \\ldots {N - 1} "
             "\\text{ (columns, left to right)}",
         ),
-        Quantity(
+        worked(
             "y_i",
             None,
-            f"y_i = {y_rule[0]}, i = 0 … {M - 1} (row 0 at the top, {top})",
-            f"y_i = {y_rule[1]},\\ i = 0 \\ldots {M - 1} \\text{{ (row 0 at the top, {top})}}",
+            f"y_i = {y_rule},\\ i = 0 \\ldots {M - 1} \\text{{ (row 0 at the top, {top})}}",
         ),
     ]
     notes = []
     q = s.quantizer
-    r_min, t_min = _rel(s.f_min)
-    r_max, t_max = _rel(s.f_max)
+    t_min, t_max = _rel(s.f_min), _rel(s.f_max)
     samples = f"{M * N:,}"
     noun = "sample" if M * N == 1 else "samples"
     if not s.range_given:
         derived.append(
-            Quantity(
+            worked(
                 "f_range",
                 (s.f_min, s.f_max),
-                f"f_min {r_min} {_show(s.f_min)}, f_max {r_max} {_show(s.f_max)} "
-                f"(over the {samples} {noun})",
                 f"f_{{\\min}} {t_min} {_show(s.f_min)},\\ f_{{\\max}} {t_max} "
                 f"{_show(s.f_max)} \\text{{ (over the {samples.replace(',', '{,}')} {noun})}}",
             )
@@ -108,11 +107,9 @@ def sample_solution(s: Sampled) -> Solution:
     else:
         assert q is not None
         derived.append(
-            Quantity(
+            worked(
                 "f_range",
                 (q.lo, q.hi),
-                f"f_min = {_show(q.lo)}, f_max = {_show(q.hi)} (given; the samples lie in "
-                f"[{_show(s.f_min)}, {_show(s.f_max)}])",
                 f"f_{{\\min}} = {_show(q.lo)},\\ f_{{\\max}} = {_show(q.hi)} \\text{{ (given; "
                 f"the samples lie in }} [{_show(s.f_min)}, {_show(s.f_max)}])",
             )
@@ -126,19 +123,17 @@ def sample_solution(s: Sampled) -> Solution:
         notes.append(f"f is constant ({_show(s.f_min)}) on the grid: every sample is level 0.")
     else:
         lo_s, hi_s, step = _paren_show(q.lo), _paren_show(q.hi), _show(q.step)
-        rel, trel = _rel(q.lo, q.hi, q.step)
+        trel = _rel(q.lo, q.hi, q.step)
         derived += [
-            Quantity(
+            worked(
                 "step",
                 q.step,
-                f"Δ = (f_max − f_min) / L = ({hi_s} − {lo_s}) / {L} {rel} {step}",
                 f"\\Delta = \\frac{{f_{{\\max}} - f_{{\\min}}}}{{L}} = \\frac{{{hi_s} - {lo_s}}}"
                 f"{{{L}}} {trel} {step}",
             ),
-            Quantity(
+            worked(
                 "level",
                 None,
-                "level = min(⌊(f − f_min) / Δ⌋, L − 1)",
                 r"\text{level} = \min(\lfloor (f - f_{\min}) / \Delta \rfloor, L - 1)",
             ),
         ]
@@ -171,10 +166,9 @@ def sample_solution(s: Sampled) -> Solution:
 def _spacing(name: str, lo: Number | float, hi: Number | float, count: int, cname: str) -> Quantity:
     """``Δx = (x1 − x0) / (N − 1) = (7 − 0) / 7 = 1``."""
     if count == 1:
-        return Quantity(
+        return worked(
             f"d{name}",
             0,
-            f"{cname} = 1: one sample, {name} = {name}0 = {_show(lo)}",
             f"{cname} = 1: \\text{{ one sample, }} {name} = {name}_0 = {_show(lo)}",
         )
     exact = not isinstance(lo, float) and not isinstance(hi, float)
@@ -184,11 +178,10 @@ def _spacing(name: str, lo: Number | float, hi: Number | float, count: int, cnam
         else (float(hi) - float(lo)) / (count - 1)
     )
     a, b, d = _paren_show(hi), _paren_show(lo), _show(step)
-    rel, trel = _rel(lo, hi, step)
-    return Quantity(
+    trel = _rel(lo, hi, step)
+    return worked(
         f"d{name}",
         step,
-        f"Δ{name} = ({name}1 − {name}0) / ({cname} − 1) = ({a} − {b}) / {count - 1} {rel} {d}",
         f"\\Delta {name} = \\frac{{{name}_1 - {name}_0}}{{{cname} - 1}} = \\frac{{{a} - {b}}}"
         f"{{{count - 1}}} {trel} {d}",
     )

@@ -12,7 +12,7 @@ from ..algorithms.image_limits import MAX_LEVELS, check_bits, check_levels
 from ..algorithms.storage import UNITS, bits_per_pixel, sizes, storage_bits
 from ..core.checks import InputError, check_positive
 from ..core.numeric import Number, fmt, fmt_short, normalize
-from ..core.records import Column, Quantity, Solution, Table
+from ..core.records import Quantity, Solution, Table, heading, worked
 from ._image import int_tex, int_text
 
 
@@ -46,16 +46,15 @@ def storage_quantity(m: int, n: int, levels: int) -> Quantity:
     """The storage of one M × N image of L levels, in one line of working.
 
     >>> print(storage_quantity(8, 8, 8).text)
-    storage = M × N × ⌈log2 L⌉ = 8 × 8 × 3 = 192 bits = 24 bytes
+    storage = M × N × ⌈log₂ L⌉ = 8 × 8 × 3 = 192 bits = 24 bytes
     """
     k = bits_per_pixel(levels)
     b = storage_bits(m, n, k)
     unit = "bit" if b == 1 else "bits"
     by = size_text(Fraction(b, 8))
-    return Quantity(
+    return worked(
         "storage_bits",
         b,
-        f"storage = M × N × ⌈log2 L⌉ = {m} × {n} × {k} = {int_text(b)} {unit} = {by} bytes",
         f"\\text{{storage}} = M \\times N \\times \\lceil \\log_2 L \\rceil = {m} \\times {n} "
         f"\\times {k} = {int_tex(b)} \\text{{ {unit}}} = {_tex(by)} \\text{{ bytes}}",
     )
@@ -84,10 +83,9 @@ def _depth_quantities(
         return (
             1,
             [
-                Quantity(
+                worked(
                     "k",
                     1,
-                    "k = 1 bit per pixel (binary image: L = 2, 0 = black, 1 = white)",
                     r"k = 1 \text{ bit per pixel (binary image: } L = 2\text{, 0 = black, "
                     r"1 = white)}",
                 )
@@ -100,17 +98,15 @@ def _depth_quantities(
         return (
             24,
             [
-                Quantity(
+                worked(
                     "k",
                     24,
-                    "k = 3 × 8 = 24 bits per pixel (R, G, B: 8 bits each, true colour)",
                     r"k = 3 \times 8 = 24 \text{ bits per pixel (R, G, B: 8 bits each, "
                     r"true colour)}",
                 ),
-                Quantity(
+                worked(
                     "L",
                     MAX_LEVELS,
-                    f"L = 2^24 = {int_text(MAX_LEVELS)} colours",
                     f"L = 2^{{24}} = {int_tex(MAX_LEVELS)} \\text{{ colours}}",
                 ),
             ],
@@ -121,18 +117,12 @@ def _depth_quantities(
         return (
             b,
             [
-                Quantity(
+                worked(
                     "L",
                     1 << b,
-                    f"L = 2^B = 2^{b} = {int_text(1 << b)} levels",
                     f"L = 2^B = 2^{{{b}}} = {int_tex(1 << b)} \\text{{ levels}}",
                 ),
-                Quantity(
-                    "k",
-                    b,
-                    f"k = B = {b} bits per pixel",
-                    f"k = B = {b} \\text{{ bits per pixel}}",
-                ),
+                worked("k", b, f"k = B = {b} \\text{{ bits per pixel}}"),
             ],
             [],
         )
@@ -143,10 +133,9 @@ def _depth_quantities(
         return (
             k,
             [
-                Quantity(
+                worked(
                     "k",
                     k,
-                    f"k = log2 L = log2 {int_text(L)} = {k} bits per pixel",
                     f"k = \\log_2 L = \\log_2 {int_tex(L)} = {k} \\text{{ bits per pixel}}",
                 )
             ],
@@ -161,10 +150,9 @@ def _depth_quantities(
     return (
         k,
         [
-            Quantity(
+            worked(
                 "k",
                 k,
-                f"k = ⌈log2 L⌉ = ⌈log2 {int_text(L)}⌉ = ⌈{log}⌉ = {k} bits per pixel",
                 f"k = \\lceil \\log_2 L \\rceil = \\lceil \\log_2 {int_tex(L)} \\rceil = "
                 f"\\lceil {log} \\rceil = {k} \\text{{ bits per pixel}}",
             )
@@ -201,7 +189,7 @@ def storage_solution(
     >>> sol = storage_solution(1024, 768, levels=256)
     >>> for q in sol.derived:
     ...     print(q.text)
-    k = log2 L = log2 256 = 8 bits per pixel
+    k = log₂ L = log₂ 256 = 8 bits per pixel
     b = M × N × k = 1024 × 768 × 8 = 6,291,456 bits
     bytes = b / 8 = 6,291,456 / 8 = 786,432 bytes
     >>> for row in sol.tables[0].rows():
@@ -219,32 +207,29 @@ def storage_solution(
     b = storage_bits(M, N, k, F)
     unit = "bit" if b == 1 else "bits"
     nbytes = Fraction(b, 8)
-    frame_t, frame_x = (" × F", f" × {int_text(F)}") if F > 1 else ("", "")
-    frame_tt, frame_tx = (r" \times F", f" \\times {int_tex(F)}") if F > 1 else ("", "")
+    frame_t, frame_x = (r" \times F", f" \\times {int_tex(F)}") if F > 1 else ("", "")
     given = [
-        Quantity("M", M, f"M = {int_text(M)}", f"M = {int_tex(M)}"),
-        Quantity("N", N, f"N = {int_text(N)}", f"N = {int_tex(N)}"),
+        worked("M", M, f"M = {int_tex(M)}"),
+        worked("N", N, f"N = {int_tex(N)}"),
     ]
     if levels is not None:
         L = int(levels)  # checked by _depth_quantities
-        given.append(Quantity("L", L, f"L = {int_text(L)}", f"L = {int_tex(L)}"))
+        given.append(worked("L", L, f"L = {int_tex(L)}"))
     if F > 1:
-        given.append(Quantity("F", F, f"F = {int_text(F)} frames", f"F = {F} \\text{{ frames}}"))
+        given.append(worked("F", F, f"F = {int_tex(F)} \\text{{ frames}}"))
     by = size_text(nbytes)
     derived = [
         *depth,
-        Quantity(
+        worked(
             "bits",
             b,
-            f"b = M × N × k{frame_t} = {int_text(M)} × {int_text(N)} × {k}{frame_x} = {int_text(b)} {unit}",
-            f"b = M \\times N \\times k{frame_tt} = {int_tex(M)} "
-            f"\\times {int_tex(N)} \\times {k}{frame_tx} = "
+            f"b = M \\times N \\times k{frame_t} = {int_tex(M)} "
+            f"\\times {int_tex(N)} \\times {k}{frame_x} = "
             f"{int_tex(b)} \\text{{ {unit}}}",
         ),
-        Quantity(
+        worked(
             "bytes",
             normalize(nbytes),
-            f"bytes = b / 8 = {int_text(b)} / 8 = {by} bytes",
             f"\\text{{bytes}} = b / 8 = {int_tex(b)} / 8 = {_tex(by)} \\text{{ bytes}}",
         ),
     ]
@@ -282,9 +267,9 @@ def storage_solution(
             Table(
                 "Size in each unit",
                 (
-                    Column("unit", "unit", r"\text{unit}"),
-                    Column("bytes_per_unit", "bytes per unit", r"\text{bytes per unit}"),
-                    Column("size", "size", r"\text{size}"),
+                    heading("unit", r"\text{unit}"),
+                    heading("bytes_per_unit", r"\text{bytes per unit}"),
+                    heading("size", r"\text{size}"),
                 ),
                 rows,
             ),
