@@ -7,11 +7,11 @@ itself: ``.to("markdown")``, ``.rows()``, ``.pixels()``, and a table in Jupyter)
 >>> import scanconv
 >>> sol = scanconv.line(2, 2, 10, 6, algo="bresenham")
 >>> [s.p for s in sol.steps()]
-[0, -8, 0, -8, 0, -8, 0, -8]
+[0, -8, 0, -8, 0, -8, 0, -8, 0]
 >>> list(sol.pixels())[:4]
 [(2, 2), (3, 3), (4, 3), (5, 4)]
 >>> scanconv.circle(5, method="midpoint").rows()[0]
-{'k': 0, 'p': -4, 'pixel': (1, 5), 'two_x': 2, 'two_y': 10}
+{'k': 0, 'x_k': 0, 'y_k': 5, 'p': -4, 'decision': 'E', 'pixel': (0, 5)}
 
 The algorithms themselves are generators of :class:`~scanconv.core.records.Step` records,
 under unambiguous names:
@@ -56,44 +56,26 @@ _LAZY: dict[str, tuple[str, str]] = {
     "line_solution": ("scanconv.answers.line", "line_solution"),
 }
 
-#: The API functions (one per command), from :mod:`scanconv._api`.
-API = (
-    "line",
-    "circle",
-    "ellipse",
-    "bezier",
-    "bezier_at",
-    "bspline",
-    "bspline_at",
-    "bspline_basis",
-    "parametric_circle",
-    "parametric_ellipse",
-    "parametric_parabola",
-    "parametric_line",
-    "parametric_custom",
-    "continuity",
-    "local_control",
-    "storage",
-    "quantize",
-    "sample",
-    "ramp",
-    "compare_lines",
-    "compare_circles",
-)
 
-__all__ = sorted([*_LAZY, *API, "raster", "__version__"])
+def _api_names() -> list[str]:
+    """The API functions (one per command), from :mod:`scanconv._api`."""
+    from . import _api
+
+    return [n for n in _api.__all__ if n[0].islower()]
 
 
 def __getattr__(name: str) -> Any:
     if name in _LAZY:
         module, attr = _LAZY[name]
         value = getattr(importlib.import_module(module), attr)
-    elif name in API:
+    elif name == "raster":
+        value = importlib.import_module("scanconv.algorithms.raster")
+    elif name == "__all__":
+        value = sorted([*_LAZY, *_api_names(), "raster", "__version__"])
+    elif not name.startswith("_") and name in _api_names():
         from .display import answering
 
         value = answering(name)
-    elif name == "raster":
-        value = importlib.import_module("scanconv.algorithms.raster")
     else:
         raise AttributeError(f"module 'scanconv' has no attribute {name!r}")
     globals()[name] = value
@@ -101,4 +83,4 @@ def __getattr__(name: str) -> Any:
 
 
 def __dir__() -> list[str]:
-    return __all__
+    return sorted([*_LAZY, *_api_names(), "raster", "__version__"])

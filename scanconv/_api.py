@@ -27,28 +27,42 @@ from enum import Enum
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
-from .algorithms.circles import CircleMethod, Rounding
+from .algorithms.circles import CircleMethod
+from .algorithms.clipping import LineClipMethod, PolygonClipMethod
+from .algorithms.conventions import P0, Convention, Layout, Loop, Rounding, Tie, Update
 from .algorithms.lines import LineAlgorithm
 from .core.checks import InputError
 from .core.numeric import Number, fmt_short, parse_number
 
 if TYPE_CHECKING:
+    from .algorithms.coverage import AAMethod
+    from .algorithms.polygon import FillRule
+    from .algorithms.seedfill import Order
     from .core.records import Solution
 
 __all__ = [
     "CircleMethod",
     "LineAlgorithm",
+    "LineClipMethod",
+    "PolygonClipMethod",
     "Rounding",
+    "antialias_circle",
+    "antialias_line",
+    "antialias_polygon",
     "bezier",
     "bezier_at",
     "bspline",
     "bspline_at",
     "bspline_basis",
     "circle",
+    "clip_line",
+    "clip_polygon",
     "compare_circles",
+    "compare_curves",
     "compare_lines",
     "continuity",
     "ellipse",
+    "fill",
     "line",
     "local_control",
     "parametric_circle",
@@ -56,10 +70,15 @@ __all__ = [
     "parametric_ellipse",
     "parametric_line",
     "parametric_parabola",
+    "pipeline_line",
+    "pipeline_polygon",
+    "polygon",
     "quantize",
     "ramp",
     "sample",
     "storage",
+    "transform",
+    "viewport",
 ]
 
 NumberLike = int | Fraction | float | Decimal | str
@@ -87,45 +106,103 @@ def line(
     x2: NumberLike,
     y2: NumberLike,
     algo: LineAlgorithm | str = "bresenham",
+    *,
+    rounding: Rounding | str | None = None,
+    tie: Tie | str | None = None,
+    convention: Convention | str | None = None,
+    layout: Layout | str = "notes",
+    derive: bool = False,
+    pseudocode: bool = False,
 ) -> Solution:
     """The line from ``(x1, y1)`` to ``(x2, y2)`` by ``algo`` (``scanconv line``).
+
+    ``rounding`` (dda, basic) and ``tie`` (bresenham) are conventions, ``convention`` a named
+    preset (``notes``, ``hearn-baker``, ``foley``, ``wikipedia``); ``layout`` the table's rows
+    (``notes`` or ``textbook``); ``derive`` and ``pseudocode`` add the theory.
 
     >>> list(line(0, 0, 3, 1).pixels())
     [(0, 0), (1, 0), (2, 1), (3, 1)]
     >>> [s.pixel for s in line("1/2", 0, 3.5, 1, algo=LineAlgorithm.dda).steps()]
     [(1, 0), (2, 0), (3, 1), (4, 1)]
+    >>> list(line(0, 0, 4, 2, tie="keep").pixels())
+    [(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)]
     """
     from .answers.line import line_solution
 
     coords = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
-    return line_solution(_choice(algo, "algo"), *coords)
+    return line_solution(
+        _choice(algo, "algo"),
+        *coords,
+        rounding=_maybe(rounding, "rounding"),
+        tie=_maybe(tie, "tie"),
+        convention=_maybe(convention, "convention"),
+        layout=_choice(layout, "layout"),
+        derive=derive,
+        pseudocode=pseudocode,
+        annotate=True,
+    )
 
 
 def circle(
     r: NumberLike,
     center: PointLike = (0, 0),
     method: CircleMethod | str = "midpoint",
-    rounding: Rounding | str = "half-up",
+    rounding: Rounding | str | None = None,
+    *,
+    tie: Tie | str | None = None,
+    p0: P0 | str | None = None,
+    loop: Loop | str | None = None,
+    update: Update | str | None = None,
+    convention: Convention | str | None = None,
+    layout: Layout | str = "notes",
+    derive: bool = False,
+    pseudocode: bool = False,
 ) -> Solution:
     """The circle of radius ``r`` about ``center`` by ``method`` (``scanconv circle``).
 
-    ``rounding`` is for the floating-point methods (polynomial, trig, symmetric-dda).
+    ``rounding`` is for the floating-point methods (polynomial, trig, symmetric-dda); ``tie``,
+    ``p0``, ``loop`` and ``update`` are the decision methods' conventions, ``convention`` a
+    named preset; ``layout``, ``derive`` and ``pseudocode`` as for :func:`line`.
 
-    >>> [s.pixel for s in circle(5).steps()]
+    >>> [s.pixel for s in circle(5, layout="textbook").steps()]
     [(1, 5), (2, 5), (3, 4), (4, 3)]
-    >>> circle(5, (10, 10), method=CircleMethod.trig, rounding="trunc").data
-    {'rounding': 'trunc'}
+    >>> [s.p for s in circle(5, method="general").steps()]
+    [0, -5, 0, 1]
+    >>> circle(5, (10, 10), method=CircleMethod.trig, rounding="trunc").data["rounding"]
+    'trunc'
     """
     from .answers.circle import circle_solution
 
     radius = _number(r, "r")
     xc, yc = _pair(center, "center")
     return circle_solution(
-        _choice(method, "method"), radius, xc, yc, rounding=_choice(rounding, "rounding")
+        _choice(method, "method"),
+        radius,
+        xc,
+        yc,
+        rounding=_maybe(rounding, "rounding"),
+        tie=_maybe(tie, "tie"),
+        p0=_maybe(p0, "p0"),
+        loop=_maybe(loop, "loop"),
+        update=_maybe(update, "update"),
+        convention=_maybe(convention, "convention"),
+        layout=_choice(layout, "layout"),
+        derive=derive,
+        pseudocode=pseudocode,
+        annotate=True,
     )
 
 
-def ellipse(rx: NumberLike, ry: NumberLike, center: PointLike = (0, 0)) -> Solution:
+def ellipse(
+    rx: NumberLike,
+    ry: NumberLike,
+    center: PointLike = (0, 0),
+    *,
+    loop: Loop | str | None = None,
+    convention: Convention | str | None = None,
+    derive: bool = False,
+    pseudocode: bool = False,
+) -> Solution:
     """The midpoint ellipse with semi-axes ``rx``, ``ry`` about ``center`` (``scanconv ellipse``).
 
     >>> sorted(ellipse(2, 1).pixels())
@@ -135,10 +212,22 @@ def ellipse(rx: NumberLike, ry: NumberLike, center: PointLike = (0, 0)) -> Solut
 
     a, b = _numbers(rx=rx, ry=ry)
     xc, yc = _pair(center, "center")
-    return ellipse_solution(a, b, xc, yc)
+    return ellipse_solution(
+        a,
+        b,
+        xc,
+        yc,
+        loop=_maybe(loop, "loop"),
+        convention=_maybe(convention, "convention"),
+        derive=derive,
+        pseudocode=pseudocode,
+        annotate=True,
+    )
 
 
-def compare_lines(x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike) -> Solution:
+def compare_lines(
+    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, theory: bool = False
+) -> Solution:
     """The basic method, DDA and Bresenham side by side (``scanconv compare line``).
 
     >>> len(list(compare_lines(2, 8, 10, 4).tables[0].rows()))  # x = 2 .. 10
@@ -146,10 +235,11 @@ def compare_lines(x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike
     """
     from .answers.compare import compare_lines as solution
 
-    return solution(*_numbers(x1=x1, y1=y1, x2=x2, y2=y2))
+    a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    return solution(a, b, c, d, theory=theory)
 
 
-def compare_circles(r: NumberLike) -> Solution:
+def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
     """Every circle method over the first octant (``scanconv compare circle``).
 
     >>> len(list(compare_circles(10).tables[0].rows()))
@@ -157,7 +247,18 @@ def compare_circles(r: NumberLike) -> Solution:
     """
     from .answers.compare import compare_circles as solution
 
-    return solution(_number(r, "r"))
+    return solution(_number(r, "r"), theory=theory)
+
+
+def compare_curves() -> Solution:
+    """Bezier vs B-spline: the points of the notes' comparison (``scanconv compare curves``).
+
+    >>> compare_curves().title
+    'Bezier vs B-spline curves'
+    """
+    from .answers.compare import compare_curves as solution
+
+    return solution()
 
 
 # --- image representation ---------------------------------------------------------------------
@@ -395,16 +496,36 @@ def bspline(
 
 
 def bspline_basis(
-    points: PointsLike,
+    points: PointsLike | None,
     degree: NumberLike = 3,
     knots: str | Sequence[NumberLike] = "open",
     samples: NumberLike | None = None,
 ) -> Solution:
     """Only the table of the basis values ``N_i,p(t)`` (``scanconv bspline --basis``).
 
+    Without control points (``points`` empty or ``None``) the degree and an explicit knot list
+    define the basis, tabulated over the whole knot range ``[u_0, u_m]``.
+
     >>> [c.key for c in bspline_basis([0, 0, 1, 2, 3, 3], 2).tables[0].columns][:3]
     ['k', 't', 'N0']
+    >>> len(list(bspline_basis(None, 2, [0, 0.25, 0.5, 0.75, 1]).tables[0].rows()))
+    9
     """
+    if not points:
+        from .answers.bspline import bspline_basis_knots_solution
+
+        spec = _knots(knots)
+        if isinstance(spec, str):
+            raise InputError(
+                "without control points the basis needs an explicit knot list "
+                f"(got {spec!r}: open and uniform are defined by the number of points)",
+                "knots",
+            )
+        return bspline_basis_knots_solution(
+            _whole(degree, "degree"),
+            spec,
+            None if samples is None else _whole(samples, "samples"),
+        )
     return _bspline(points, degree, knots, samples, basis_only=True)
 
 
@@ -641,6 +762,11 @@ def _size(value: str | int | tuple[int, int]) -> tuple[int, int]:
     return side, side
 
 
+def _maybe(value: Enum | str | None, param: str) -> str | None:
+    """:func:`_choice`, or ``None`` for a convention left to the preset or default."""
+    return None if value is None else _choice(value, param)
+
+
 def _choice(value: Enum | str, param: str) -> str:
     """A choice as the library's string (an enum member's value)."""
     if isinstance(value, Enum):
@@ -648,3 +774,273 @@ def _choice(value: Enum | str, param: str) -> str:
     if isinstance(value, str):
         return value
     raise InputError(f"{param} must be a string, got {value!r}", param)
+
+
+# --- the scan-conversion process: transformations, viewing, clipping ---------------------------
+
+
+def transform(
+    points: PointsLike, transforms: str | Sequence[str], inverse: bool = False
+) -> Solution:
+    """The composite of ``transforms`` applied to ``points`` (``scanconv transform``).
+
+    ``transforms`` is a string or a list of words, applied in order: ``"rotate 90 about 2 1,
+    translate 3 0"`` (see :mod:`scanconv.answers.transform`); ``inverse`` also shows M^-1.
+
+    >>> transform([(0, 0), (4, 0)], "rotate 90 about 2 1, translate 3 0").data["after"]
+    [[6, -1], [6, 3]]
+    """
+    from .answers.transform import transform_solution
+
+    return transform_solution(_flat(points, "points"), transforms, inverse_too=bool(inverse))
+
+
+def viewport(
+    window: Sequence[NumberLike], viewport: Sequence[NumberLike], points: PointsLike = ()
+) -> Solution:
+    """The window-to-viewport mapping of ``points`` (default: the window's corners)
+    (``scanconv viewport``).
+
+    >>> viewport((0, 0, 10, 10), (100, 100, 150, 200), [(5, 5)]).data["mapped"]
+    [[125, 150]]
+    """
+    from .answers.viewport import viewport_solution
+
+    return viewport_solution(
+        _flat(points, "points"), _rect(window, "window"), _rect(viewport, "viewport")
+    )
+
+
+def clip_line(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    window: Sequence[NumberLike],
+    method: LineClipMethod | str = LineClipMethod.cohen_sutherland,
+) -> Solution:
+    """The segment clipped against ``window`` (``scanconv clip line``).
+
+    >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8)).data["clipped"]
+    [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
+    """
+    from .answers.clip import clip_line_solution
+
+    a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    return clip_line_solution(a, b, c, d, _rect(window, "window"), _choice(method, "method"))
+
+
+def clip_polygon(
+    vertices: PointsLike,
+    window: Sequence[NumberLike],
+    method: PolygonClipMethod | str = PolygonClipMethod.sutherland_hodgman,
+) -> Solution:
+    """The polygon clipped against ``window`` by Sutherland-Hodgman (``scanconv clip polygon``).
+
+    >>> clip_polygon([(0, 0), (4, 0), (0, 4)], (1, 1, 3, 3)).data["clipped"]
+    [[1, 3], [1, 1], [3, 1]]
+    """
+    from .answers.clip_polygon import clip_polygon_solution
+
+    name = _choice(method, "method")
+    if name != PolygonClipMethod.sutherland_hodgman.value:
+        raise InputError(f"unknown polygon clipping method {name!r} (sutherland-hodgman)", "method")
+    return clip_polygon_solution(_flat(vertices, "vertices"), _rect(window, "window"))
+
+
+def pipeline_line(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    window: Sequence[NumberLike],
+    viewport: Sequence[NumberLike],
+    algo: LineAlgorithm | str = LineAlgorithm.bresenham,
+    clip: LineClipMethod | str = LineClipMethod.cohen_sutherland,
+) -> Solution:
+    """A world-coordinate line clipped, mapped, rounded and scan converted
+    (``scanconv pipeline line``).
+
+    >>> pipeline_line(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10)).data["rounded"]
+    [[0, 3], [20, 8]]
+    """
+    from .answers.pipeline import pipeline_line_solution
+
+    a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    return pipeline_line_solution(
+        a,
+        b,
+        c,
+        d,
+        _rect(window, "window"),
+        _rect(viewport, "viewport"),
+        algo=_choice(algo, "algo"),
+        clip=_choice(clip, "clip"),
+    )
+
+
+def pipeline_polygon(
+    vertices: PointsLike,
+    window: Sequence[NumberLike],
+    viewport: Sequence[NumberLike],
+    fill: bool = False,
+    rule: Enum | str = "even-odd",
+) -> Solution:
+    """A world-coordinate polygon clipped (Sutherland-Hodgman), mapped to the viewport, then
+    outlined or, with ``fill``, scan-line filled (``scanconv pipeline polygon``).
+
+    >>> pipeline_polygon([(-2, 0), (6, 0), (2, 6)], (0, 0, 4, 4), (0, 0, 8, 8)).data["device"][2]
+    [0, 6]
+    """
+    from .answers.pipeline import pipeline_polygon_solution
+
+    return pipeline_polygon_solution(
+        _flat(vertices, "vertices"),
+        _rect(window, "window"),
+        _rect(viewport, "viewport"),
+        fill=bool(fill),
+        rule=_choice(rule, "rule"),
+    )
+
+
+def _rect(values: Sequence[NumberLike], param: str) -> tuple[Number, ...]:
+    """A window or viewport: four numbers ``(xmin, ymin, xmax, ymax)``."""
+    if isinstance(values, str) or len(values) != 4:
+        raise InputError(f"{param} takes 4 numbers (xmin ymin xmax ymax), got {values!r}", param)
+    return tuple(_number(v, param) for v in values)
+
+
+def _flat(values: PointsLike, param: str) -> list[Number]:
+    """Points as pairs or flat, as a flat list of exact numbers (the library pairs them)."""
+    flat: list[Any] = []
+    for v in values:
+        if not isinstance(v, tuple | list):
+            flat.append(v)
+        elif len(v) == 2:
+            flat.extend(v)
+        else:
+            raise InputError(f"a point is a pair (x, y), got {v!r}", param)
+    return [_number(v, param) for v in flat]
+
+
+# --- filled areas and anti-aliasing ------------------------------------------------------------
+
+
+def polygon(vertices: PointsLike, rule: FillRule | str = "even-odd") -> Solution:
+    """The scan-line fill of the polygon ``vertices`` (``scanconv polygon``): the edge table,
+    the active edge table per scan line, the spans and the pixels.
+
+    >>> sol = polygon([(0, 0), (4, 0), (2, 3)])
+    >>> list(sol.pixels())
+    [(0, 0), (1, 0), (2, 0), (3, 0), (1, 1), (2, 1), (3, 1), (2, 2)]
+    """
+    from .answers.polygon import polygon_solution
+
+    return polygon_solution(_flat(vertices, "vertices"), _choice(rule, "rule"))
+
+
+def fill(
+    method: str,
+    seed: PointLike,
+    *,
+    vertices: PointsLike | None = None,
+    rows: str | Sequence[str] | None = None,
+    connectivity: NumberLike = 4,
+    order: Order | str = "stack",
+    span: bool = False,
+) -> Solution:
+    """A seed fill (``scanconv fill boundary``, ``scanconv fill flood``): ``method`` is
+    ``"boundary"`` or ``"flood"``, over the Bresenham outline of the polygon ``vertices`` or
+    over the grid ``rows`` (text, top row first: ``#`` boundary, ``.`` empty); ``span`` gives the
+    span (scan-line seed) fill.
+
+    >>> sorted(fill("flood", (1, 1), rows="####/#..#/####").pixels())
+    [(1, 1), (2, 1)]
+    """
+    from .answers.fill import seed_fill_solution
+
+    texts = None if rows is None else ([rows] if isinstance(rows, str) else list(rows))
+    sx, sy = _pair(seed, "seed")
+    return seed_fill_solution(
+        _choice(method, "method"),
+        (_whole(sx, "seed"), _whole(sy, "seed")),
+        vertices=None if vertices is None else _flat(vertices, "vertices"),
+        rows=texts,
+        connectivity=_whole(connectivity, "connectivity"),
+        order=_choice(order, "order"),
+        span=bool(span),
+    )
+
+
+def antialias_line(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    method: AAMethod | str = "area",
+    samples: NumberLike = 4,
+    levels: NumberLike = 8,
+) -> Solution:
+    """An anti-aliased line (``scanconv antialias line``): ``method`` ``"wu"`` (Xiaolin Wu's
+    algorithm), ``"area"`` or ``"supersample"`` (``samples`` x ``samples`` per pixel).
+
+    >>> [s.extra[4] for s in antialias_line(0, 0, 4, 1, method="wu").steps()]
+    [1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4), 1]
+    """
+    from .answers.antialias import antialias_solution
+
+    return antialias_solution(
+        "line",
+        _numbers(x1=x1, y1=y1, x2=x2, y2=y2),
+        method=_choice(method, "method"),
+        samples=_whole(samples, "samples"),
+        levels=_whole(levels, "levels"),
+    )
+
+
+def antialias_circle(
+    r: NumberLike,
+    center: PointLike = (0, 0),
+    method: AAMethod | str = "area",
+    samples: NumberLike = 4,
+    levels: NumberLike = 8,
+) -> Solution:
+    """An anti-aliased circle one pixel wide (``scanconv antialias circle``).
+
+    >>> round(sum(float(v) for _, v, *_ in antialias_circle(3).tables[0].rows()), 6)
+    18.849556
+    """
+    from .answers.antialias import antialias_solution
+
+    return antialias_solution(
+        "circle",
+        (_number(r, "r"), *_pair(center, "center")),
+        method=_choice(method, "method"),
+        samples=_whole(samples, "samples"),
+        levels=_whole(levels, "levels"),
+    )
+
+
+def antialias_polygon(
+    vertices: PointsLike,
+    method: AAMethod | str = "area",
+    samples: NumberLike = 4,
+    levels: NumberLike = 8,
+    rule: FillRule | str = "even-odd",
+) -> Solution:
+    """An anti-aliased polygon (``scanconv antialias polygon``): exact covered areas, or the
+    fraction of ``samples`` x ``samples`` samples inside.
+
+    >>> antialias_polygon([(0, 0), (2, 0), (2, 1), (0, 1)]).derived[-2].value
+    2
+    """
+    from .answers.antialias import antialias_solution
+
+    return antialias_solution(
+        "polygon",
+        _flat(vertices, "vertices"),
+        method=_choice(method, "method"),
+        samples=_whole(samples, "samples"),
+        levels=_whole(levels, "levels"),
+        rule_name=_choice(rule, "rule"),
+    )

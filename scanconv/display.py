@@ -13,11 +13,12 @@ the CLI, so the layers below never import a renderer.
 <Answer line/bresenham: Bresenham's line algorithm: (0, 0) to (3, 1)>
 >>> print(sol.to("csv"), end="")
 k,p,decision,x,y,p_next
-0,-1,E,1,0,1
-1,1,NE,2,1,-3
-2,-3,E,3,1,-1
+0,-1,E,0,0,1
+1,1,NE,1,0,-3
+2,-3,E,2,1,-1
+3,-1,,3,1,
 >>> sol.rows()[0]
-{'k': 0, 'p': -1, 'decision': 'E', 'pixel': (1, 0), 'p_next': 1}
+{'k': 0, 'p': -1, 'decision': 'E', 'pixel': (0, 0), 'p_next': 1}
 """
 
 from __future__ import annotations

@@ -376,3 +376,295 @@ VOCABULARY: dict[tuple[str, ...], Vocab] = {
         positional=COORD,
     ),
 }
+
+
+# For tests/cli_vocabulary.py, appended inside VOCABULARY (issue 18: transform, viewport, clip, pipeline).
+WINDOW = ("--window", "0", "0", "4", "4")
+VIEWPORT = ("--viewport", "0", "0", "8", "8")
+RECT_VALUES = ("0", "1", "2", "4", "10", "-2", "1/2")
+
+PROCESS_VOCABULARY = {
+    ("transform",): Vocab(
+        valid=(
+            (
+                "0",
+                "0",
+                "4",
+                "0",
+                "4",
+                "3",
+                "--rotate",
+                "90",
+                "--about",
+                "2",
+                "1",
+                "--translate",
+                "3",
+                "0",
+            ),
+        ),
+        numbers=((0, 1, 2, 3, 4, 5, 7, 9, 10, 12, 13),),
+        out_of_range=(
+            (("0", "0", "--translate", "1e10", "1"), "out of range"),
+            (("0", "0", *["--translate", "1", "1"] * 21), "at most 20 transformations"),
+        ),
+        too_few=(("0", "0", "--translate", "1"), "needs 2 numbers"),
+        too_many=((*TOO_MANY_POINTS, "--translate", "1", "1"), "at most 100 points"),
+        wrong_type=(("0", "0", "--rotate", "north"), "not an angle"),
+        positional=(
+            "0",
+            "1",
+            "-3",
+            "1/2",
+            "--rotate",
+            "90",
+            "pi/4",
+            "--about",
+            "--translate",
+            "--scale",
+            "2",
+            "--reflect",
+            "y=x",
+            "--shear",
+        ),
+    ),
+    ("viewport",): Vocab(
+        valid=(
+            (
+                "0",
+                "0",
+                "2",
+                "1",
+                "--window",
+                "0",
+                "0",
+                "4",
+                "4",
+                "--viewport",
+                "10",
+                "10",
+                "20",
+                "16",
+            ),
+        ),
+        numbers=((0, 1, 2, 3, 5, 6, 7, 8, 10, 11, 12, 13),),
+        out_of_range=(
+            (("--window", "0", "0", "1e10", "1", *VIEWPORT), "out of range"),
+            ((*WINDOW, "--viewport", "5", "5", "5", "9"), "xmin < xmax"),
+        ),
+        too_few=((*VIEWPORT, "--window", "0", "0", "4"), "requires 4 arguments"),
+        too_many=((*TOO_MANY_POINTS, *WINDOW, *VIEWPORT), "at most 100 points"),
+        wrong_type=(("0", "0", "1", *WINDOW, *VIEWPORT), "odd"),
+        small={"--window": RECT_VALUES, "--viewport": RECT_VALUES},
+        positional=COORD,
+    ),
+    ("clip", "line"): Vocab(
+        valid=(("7", "9", "11", "4", "--window", "4", "4", "10", "8"),),
+        numbers=((0, 1, 2, 3, 5, 6, 7, 8),),
+        out_of_range=(
+            (("0", "0", "1e10", "1", *WINDOW), "out of range"),
+            (("0", "0", "1", "1", "--window", "4", "4", "4", "8"), "xmin < xmax"),
+        ),
+        too_few=(("1", "2", "3", *WINDOW), "Missing argument"),
+        too_many=(("1", "2", "3", "4", "5", *WINDOW), "unexpected extra argument"),
+        wrong_type=(("1", "2", "3", "4", "--window", "0", "0", "4"), "requires 4 arguments"),
+        small={"--window": RECT_VALUES, "--method": ("cohen-sutherland", "liang-barsky")},
+        positional=COORD,
+    ),
+    ("clip", "polygon"): Vocab(
+        valid=(("100", "150", "200", "250", "300", "200", "--window", "150", "150", "200", "200"),),
+        numbers=((0, 1, 2, 3, 4, 5, 7, 8, 9, 10),),
+        out_of_range=((("0", "0", "1e10", "1", "2", "2", *WINDOW), "out of range"),),
+        too_few=(("0", "0", "1", "1", *WINDOW), "at least 3"),
+        too_many=((*TOO_MANY_POINTS, *WINDOW), "at most 100 polygon vertices"),
+        wrong_type=(("0", "0", "1", "1", "2", *WINDOW), "odd"),
+        small={"--window": RECT_VALUES, "--method": ("sutherland-hodgman",)},
+        positional=COORD,
+    ),
+    ("pipeline", "line"): Vocab(
+        valid=(
+            (
+                "-5",
+                "0",
+                "15",
+                "10",
+                "--window",
+                "0",
+                "0",
+                "10",
+                "10",
+                "--viewport",
+                "0",
+                "0",
+                "20",
+                "10",
+            ),
+        ),
+        numbers=((0, 1, 2, 3, 5, 6, 7, 8, 10, 11, 12, 13),),
+        out_of_range=(
+            (("0", "0", "1e10", "1", *WINDOW, *VIEWPORT), "out of range"),
+            (("0", "0", "1", "1", *WINDOW, "--viewport", "0", "0", "9", "0"), "ymin < ymax"),
+        ),
+        too_few=(("1", "2", "3", *WINDOW, *VIEWPORT), "Missing argument"),
+        too_many=(("1", "2", "3", "4", "5", *WINDOW, *VIEWPORT), "unexpected extra argument"),
+        wrong_type=(
+            ("1", "2", "3", "4", *WINDOW, "--viewport", "0", "0", "8"),
+            "requires 4 arguments",
+        ),
+        small={
+            "--window": RECT_VALUES,
+            "--viewport": RECT_VALUES,
+            "--algo": ("bresenham", "dda", "basic"),
+            "--clip": ("cohen-sutherland", "liang-barsky"),
+        },
+        positional=COORD,
+    ),
+    ("pipeline", "polygon"): Vocab(
+        valid=(("-2", "0", "6", "0", "2", "6", *WINDOW, *VIEWPORT, "--fill"),),
+        numbers=((0, 1, 2, 3, 4, 5, 7, 8, 9, 10, 12, 13, 14, 15),),
+        out_of_range=(
+            (("0", "0", "1e10", "1", "2", "2", *WINDOW, *VIEWPORT), "out of range"),
+            (
+                (
+                    "0",
+                    "0",
+                    "4",
+                    "0",
+                    "2",
+                    "4",
+                    *WINDOW,
+                    "--viewport",
+                    "0",
+                    "0",
+                    "1e9",
+                    "1e9",
+                    "--fill",
+                ),
+                "1,000,000",
+            ),
+            (
+                ("0", "0", "4", "0", "2", "4", *WINDOW, "--viewport", "0", "0", "1e9", "1e9"),
+                "1,000,000",
+            ),
+        ),
+        too_few=(("0", "0", "1", "1", *WINDOW, *VIEWPORT), "at least 3"),
+        too_many=((*TOO_MANY_POINTS, *WINDOW, *VIEWPORT), "at most 100 polygon vertices"),
+        wrong_type=(("0", "0", "1", "1", "2", *WINDOW, *VIEWPORT), "odd"),
+        small={
+            "--window": RECT_VALUES,
+            "--viewport": RECT_VALUES,
+            "--rule": ("even-odd", "nonzero"),
+        },
+        positional=COORD,
+    ),
+}
+VOCABULARY.update(PROCESS_VOCABULARY)
+
+# Polygon filling, seed fill and anti-aliasing (issue 17).
+
+TRIANGLE = ("0", "0", "7", "2", "4", "6")
+DIAMOND = ("2", "0", "4", "2", "2", "4", "0", "2")
+TOO_MANY_VERTICES = tuple(str(i % 7) for i in range(2002))  # 1001 vertices
+FILL_VOCABULARY = {
+    ("polygon",): Vocab(
+        valid=(TRIANGLE, (*TRIANGLE, "--rule", "nonzero")),
+        numbers=((0, 1, 2, 3, 4, 5), (0, 1, 2, 3, 4, 5)),
+        out_of_range=(
+            (("0", "0", "1e10", "1", "2", "3"), "out of range"),
+            (("0", "0", "1000", "0", "0", "1000"), "1,000,000"),
+            (("0", "0", "2", "2", "5", "5"), "degenerate"),
+        ),
+        too_few=(("0", "0", "4", "0"), "at least 3 vertices"),
+        too_many=(TOO_MANY_VERTICES, "at most 1000 polygon vertices"),
+        wrong_type=(("0", "0", "4", "0", "2"), "odd number"),
+        small={"--rule": ("even-odd", "nonzero")},
+        positional=("0", "1", "2", "5", "-3", "1/2", "2.5"),
+    ),
+    ("fill", "boundary"): Vocab(
+        valid=((*DIAMOND, "--seed", "2", "2"), ("--rows", "####/#..#/####", "--seed", "1", "1")),
+        numbers=((0, 1, 2, 3, 4, 5, 6, 7, 9, 10), (3, 4)),
+        out_of_range=(
+            (("--rows", "####/#..#/####", "--seed", "9", "9"), "outside the grid"),
+            (("--rows", "####/#..#/####", "--seed", "0", "0"), "on the boundary"),
+            (("--rows", "/".join(["." * 101] * 100), "--seed", "1", "1"), "10,000"),
+            ((*DIAMOND, "--seed", "2", "2", "--connectivity", "6"), "4 or 8"),
+        ),
+        too_few=(("--rows", "####/#..#/####", "--seed", "1"), "requires 2 arguments"),
+        too_many=(("0", "0", "4", "0", "--seed", "1", "1"), "at least 3 vertices"),
+        wrong_type=(("--rows", "####/#..#/####", "--seed", "1.5", "1"), "not an integer"),
+        small={
+            "--seed": ("0", "1", "2", "3"),
+            "--connectivity": ("4", "8"),
+            "--order": ("stack", "queue"),
+        },
+        positional=("0", "1", "2", "4", "5"),
+    ),
+    ("antialias", "line"): Vocab(
+        valid=(("0", "0", "8", "3"), ("0", "0", "8", "3", "--method", "wu", "--levels", "4")),
+        numbers=((0, 1, 2, 3), (0, 1, 2, 3, 7)),
+        out_of_range=(
+            (("0", "0", "1e10", "1"), "out of range"),
+            (("0", "0", "200", "60"), "10,000"),
+            (("0", "0", "8", "3", "--method", "supersample", "--samples", "17"), "at most 16"),
+            (("0", "0", "8", "3", "--levels", "1"), "at least 2"),
+        ),
+        too_few=(("1", "2", "3"), "Missing argument"),
+        too_many=(("1", "2", "3", "4", "5"), "unexpected extra argument"),
+        wrong_type=(("0", "0", "8.5", "3", "--method", "wu"), "integer"),
+        small={
+            "--method": ("area", "supersample", "wu"),
+            "--samples": SMALL_INT,
+            "--levels": ("2", "4", "8"),
+        },
+        positional=COORD,
+    ),
+    ("antialias", "circle"): Vocab(
+        valid=(("3",), ("3", "--center", "1", "1", "--method", "supersample", "--samples", "2")),
+        numbers=((0,), (0, 2, 3, 7)),
+        out_of_range=(
+            (("1e10",), "out of range"),
+            (("49",), "10,000"),
+            (("3", "--method", "wu"), "lines only"),
+        ),
+        too_few=((), "Missing argument"),
+        too_many=(("3", "4"), "unexpected extra argument"),
+        wrong_type=(("2.5",), "integer"),
+        small={
+            "--method": ("area", "supersample"),
+            "--samples": SMALL_INT,
+            "--levels": ("2", "4", "8"),
+        },
+        positional=("0", "1", "2", "3", "5"),
+    ),
+    ("antialias", "polygon"): Vocab(
+        valid=(TRIANGLE, (*TRIANGLE, "--method", "supersample", "--samples", "3")),
+        numbers=((0, 1, 2, 3, 4, 5), (0, 1, 2, 3, 4, 5, 9)),
+        out_of_range=(
+            (("0", "0", "1e10", "1", "2", "3"), "out of range"),
+            (("0", "0", "100", "0", "0", "99"), "10,000"),
+            ((*TRIANGLE, "--method", "supersample", "--samples", "17"), "at most 16"),
+        ),
+        too_few=(("0", "0", "4", "0"), "at least 3 vertices"),
+        too_many=(TOO_MANY_VERTICES, "at most 1000 polygon vertices"),
+        wrong_type=((*TRIANGLE, "--samples", "2.5"), "not an integer"),
+        small={
+            "--method": ("area", "supersample"),
+            "--samples": SMALL_INT,
+            "--rule": ("even-odd", "nonzero"),
+        },
+        positional=("0", "1", "2", "5", "-3", "1/2", "2.5"),
+    ),
+}
+FILL_VOCABULARY[("fill", "flood")] = FILL_VOCABULARY[("fill", "boundary")]
+VOCABULARY.update(FILL_VOCABULARY)
+
+#: Commands that take no value at all: nothing to make out of range or of the wrong type.
+ARGUMENTLESS = {("compare", "curves")}
+VOCABULARY[("compare", "curves")] = Vocab(
+    valid=((),),
+    numbers=((),),
+    out_of_range=(),
+    too_few=(("bezier",), "unexpected extra argument"),
+    too_many=(("1", "2"), "unexpected extra argument"),
+    wrong_type=(("--format", "docx"), "docx"),
+)

@@ -137,6 +137,158 @@ CASES: list[tuple[tuple[str, ...], tuple[str, ...], str, tuple[Any, ...], dict[s
     ),
 ]
 
+# Bezier vs B-spline: the comparison the notes ask for (issue 13).
+CASES += [(("compare", "curves"), (), "compare_curves", (), {})]
+
+# Transformation, viewport, clipping and the pipeline (issue 18).
+W4 = ("--window", "0", "0", "4", "4")
+CASES += [
+    (
+        ("transform",),
+        (
+            "0",
+            "0",
+            "4",
+            "0",
+            "4",
+            "3",
+            "--rotate",
+            "90",
+            "--about",
+            "2",
+            "1",
+            "--translate",
+            "3",
+            "0",
+            "--inverse",
+        ),
+        "transform",
+        ([(0, 0), (4, 0), (4, 3)], "rotate 90 about 2 1, translate 3 0"),
+        {"inverse": True},
+    ),
+    (
+        ("viewport",),
+        ("0", "0", "2", "1", "--window", "0", "0", "4", "4", "--viewport", "10", "10", "20", "16"),
+        "viewport",
+        ((0, 0, 4, 4), (10, 10, 20, 16), [0, 0, 2, 1]),
+        {},
+    ),
+    (
+        ("clip", "line"),
+        ("5", "20", "55", "90", "--window", "25", "30", "75", "80", "--method", "liang-barsky"),
+        "clip_line",
+        (5, 20, 55, 90, (25, 30, 75, 80)),
+        {"method": _api.LineClipMethod.liang_barsky},
+    ),
+    (
+        ("clip", "polygon"),
+        ("100", "150", "200", "250", "300", "200", "--window", "150", "150", "200", "200"),
+        "clip_polygon",
+        ([(100, 150), (200, 250), (300, 200)], (150, 150, 200, 200)),
+        {},
+    ),
+    (
+        ("pipeline", "line"),
+        (
+            "-5",
+            "0",
+            "15",
+            "10",
+            "--window",
+            "0",
+            "0",
+            "10",
+            "10",
+            "--viewport",
+            "0",
+            "0",
+            "20",
+            "10",
+            "--algo",
+            "dda",
+        ),
+        "pipeline_line",
+        (-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10)),
+        {"algo": "dda"},
+    ),
+    (
+        ("pipeline", "polygon"),
+        (
+            "-2",
+            "0",
+            "6",
+            "0",
+            "2",
+            "6",
+            *W4,
+            "--viewport",
+            "0",
+            "0",
+            "8",
+            "8",
+            "--fill",
+            "--rule",
+            "nonzero",
+        ),
+        "pipeline_polygon",
+        ([(-2, 0), (6, 0), (2, 6)], (0, 0, 4, 4), (0, 0, 8, 8)),
+        {"fill": True, "rule": "nonzero"},
+    ),
+]
+
+# Polygon filling, seed fill and anti-aliasing (issue 17).
+CASES += [
+    (
+        ("polygon",),
+        ("2", "3", "7", "1", "13", "5", "13", "11", "7", "7", "2", "9"),
+        "polygon",
+        ([(2, 3), (7, 1), (13, 5), (13, 11), (7, 7), (2, 9)],),
+        {},
+    ),
+    (
+        ("polygon",),
+        ("5", "0", "8", "9", "0", "3", "10", "3", "2", "9", "--rule", "nonzero"),
+        "polygon",
+        ([5, 0, 8, 9, 0, 3, 10, 3, 2, 9],),
+        {"rule": "nonzero"},
+    ),
+    (
+        ("fill", "boundary"),
+        ("2", "0", "4", "2", "2", "4", "0", "2", "--seed", "2", "2", "--connectivity", "8"),
+        "fill",
+        ("boundary", (2, 2)),
+        {"vertices": [(2, 0), (4, 2), (2, 4), (0, 2)], "connectivity": 8},
+    ),
+    (
+        ("fill", "flood"),
+        ("--rows", "#####/#...#/#.x.#/#####", "--seed", "1", "1", "--order", "queue", "--span"),
+        "fill",
+        ("flood", (1, 1)),
+        {"rows": ["#####", "#...#", "#.x.#", "#####"], "order": "queue", "span": True},
+    ),
+    (
+        ("antialias", "line"),
+        ("0", "0", "8", "3", "--method", "wu"),
+        "antialias_line",
+        (0, 0, 8, 3),
+        {"method": "wu"},
+    ),
+    (
+        ("antialias", "circle"),
+        ("3", "--center", "1", "1", "--method", "supersample", "--samples", "2"),
+        "antialias_circle",
+        (3, (1, 1)),
+        {"method": "supersample", "samples": 2},
+    ),
+    (
+        ("antialias", "polygon"),
+        ("0", "0", "7", "2", "4", "6", "--levels", "4"),
+        "antialias_polygon",
+        ([(0, 0), (7, 2), (4, 6)],),
+        {"levels": 4},
+    ),
+]
+
 
 def _json(solution: Any) -> str:
     chunks = render(solution, Format.json, Options())

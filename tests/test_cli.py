@@ -66,9 +66,9 @@ def _table_pixels(out: str, fmt: str) -> list[tuple[int, int]]:
 def test_every_format_and_algorithm(fmt, algo):
     """Each format, parsed, gives the solution's own pixels: JSON ``pixels`` and each step's
     ``pixel``, the CSV rows' x and y, the table rows and the list of pixels plotted."""
-    from scanconv.answers.line import line_solution
+    from scanconv import _api
 
-    solution = line_solution(algo, 2, 2, 10, 6)
+    solution = _api.line(2, 2, 10, 6, algo)  # what the command shows
     pixels = list(solution.pixels())
     steps = [s.pixel for s in solution.steps()]
     r = run("line", "2", "2", "10", "6", "--algo", algo, "--format", fmt)
@@ -84,7 +84,7 @@ def test_every_format_and_algorithm(fmt, algo):
         header, *rows = list(csv.reader(io.StringIO(r.out)))
         x, y = header.index("x"), header.index("y")  # the first x and y: the pixel's
         assert [(int(row[x]), int(row[y])) for row in rows] == steps
-        assert pixels[len(pixels) - len(rows) :] == steps  # bresenham plots the start first
+        assert pixels[len(pixels) - len(rows) :] == steps  # every row's pixel is plotted
     else:
         assert _plotted(r.out) == pixels
         assert _table_pixels(r.out, fmt) == steps
@@ -112,9 +112,10 @@ def test_json_shape():
     doc = json.loads(r.out)
     assert doc["primitive"] == "line" and doc["algorithm"] == "bresenham"
     assert doc["derived"]["p0"] == 0 and doc["given"]["P1"] == [2, 2]
-    assert doc["steps"][0] == {"k": 0, "p": 0, "decision": "NE", "pixel": [3, 3], "p_next": -8}
+    # the notes' layout (issue 13): row k plots (x_k, y_k), row 0 the start point
+    assert doc["steps"][0] == {"k": 0, "p": 0, "decision": "NE", "pixel": [2, 2], "p_next": -8}
     assert doc["pixels"][0] == [2, 2] and doc["pixels"][-1] == [10, 6]
-    assert len(doc["pixels"]) == len(doc["steps"]) + 1
+    assert [s["pixel"] for s in doc["steps"]] == doc["pixels"]
 
 
 def test_json_dda_has_no_p_and_numbers_are_numbers():
@@ -128,8 +129,8 @@ def test_json_dda_has_no_p_and_numbers_are_numbers():
 def test_csv_is_the_table_only():
     rows = list(csv.reader(io.StringIO(run(*LINE, "-f", "csv").out)))
     assert rows[0] == ["k", "p", "decision", "x", "y", "p_next"]
-    assert rows[1] == ["0", "0", "NE", "3", "3", "-8"]
-    assert len(rows) == 9
+    assert rows[1] == ["0", "0", "NE", "2", "2", "-8"]  # row 0: the start point
+    assert len(rows) == 10
 
 
 def test_markdown_table_and_math():
@@ -293,7 +294,8 @@ def test_negative_coordinates_are_arguments_not_options():
     r = run("line", "-2", "-3", "4", "5", "-f", "csv")
     assert r.code == 0
     rows = list(csv.DictReader(io.StringIO(r.out)))
-    assert (rows[-1]["x"], rows[-1]["y"]) == ("4", "5") and len(rows) == 8
+    assert (rows[0]["x"], rows[0]["y"]) == ("-2", "-3")
+    assert (rows[-1]["x"], rows[-1]["y"]) == ("4", "5") and len(rows) == 9
 
 
 def test_python_dash_m_and_version():
@@ -397,3 +399,77 @@ def test_shared_options_are_declared_once_and_added_by_answers():
     assert "svg" not in names["local-control"] and "origin" in names["local-control"]
     assert "Row 0 is the top" in (names["sample"]["origin"].help or "")
     assert list(names["line"])[:5] == ["x1", "y1", "x2", "y2", "algo"]
+
+
+# --- what students type ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("group", [(), ("parametric",), ("compare",), ("image",)])
+def test_a_group_without_a_command_prints_its_help(group: tuple[str, ...]) -> None:
+    r = run(*group)
+    assert r.code == 0 and r.err == ""
+    assert r.out.startswith("Usage: scanconv") and "\n\n" in r.out
+
+
+def test_help_groups_the_commands_by_topic_with_examples() -> None:
+    out = run("--help").out
+    for panel in ("Lines, circles and ellipses:", "Curves:", "Image representation:"):
+        assert panel in out
+    assert "Comparisons:" in out and "Examples:" in out
+    panels = out.split("Lines, circles and ellipses:")[1].split("Examples:")[0]
+    assert not re.search(r"\w\.\.\.?$", panels, re.M), "a command's sentence cut short"
+
+
+@pytest.mark.parametrize("points", [("2,2", "10,6"), ("(2,2)", "(10,6)"), ("(2, 2)", "(10, 6)")])
+def test_points_as_students_write_them(points: tuple[str, ...]) -> None:
+    base = run("line", "2", "2", "10", "6", "-f", "json").out
+    assert run("line", *points, "-f", "json").out == base
+
+
+def test_storage_takes_a_size_written_with_x() -> None:
+    base = run("storage", "1024", "768", "--levels", "256", "-f", "json").out
+    assert run("storage", "1024x768", "--levels", "256", "-f", "json").out == base
+
+
+@pytest.mark.parametrize(
+    ("short", "long"), [("md", "markdown"), ("tex", "latex"), ("txt", "plain")]
+)
+def test_format_short_names(short: str, long: str) -> None:
+    assert (
+        run("line", "2", "2", "10", "6", "-f", short).out
+        == run("line", "2", "2", "10", "6", "-f", long).out
+    )
+
+
+def test_parametric_circle_takes_the_radius_as_circle_does() -> None:
+    base = run("parametric", "circle", "--radius", "5", "-f", "json").out
+    assert run("parametric", "circle", "5", "-f", "json").out == base
+    assert_refused(run("parametric", "circle", "5", "--radius", "4"), "--radius 4")
+
+
+def test_an_unknown_flag_is_no_such_option() -> None:
+    assert_refused(run("line", "2", "2", "10", "6", "--bogus"), "No such option: --bogus")
+
+
+def test_a_close_method_name_is_suggested() -> None:
+    assert_refused(run("circle", "5", "--method", "dda"), "did you mean 'symmetric-dda'?")
+
+
+@pytest.mark.parametrize(
+    ("name", "start"),
+    [("a.tex", "% scanconv answer"), ("a.csv", "k,p,decision"), ("a.json", "{"), ("a.md", "## ")],
+)
+def test_output_format_from_the_extension(tmp_path: Path, name: str, start: str) -> None:
+    r = run("line", "2", "2", "10", "6", "-o", str(tmp_path / name))
+    assert r.code == 0, r.err
+    assert (tmp_path / name).read_text(encoding="utf-8").startswith(start)
+
+
+def test_output_extension_contradicting_format_is_refused(tmp_path: Path) -> None:
+    assert_refused(run("line", "2", "2", "10", "6", "-f", "json", "-o", str(tmp_path / "a.csv")))
+    assert not list(tmp_path.iterdir())
+
+
+def test_markdown_answers_appended_stay_apart() -> None:
+    out = run("line", "2", "2", "10", "6", "-f", "markdown").out
+    assert out.endswith("```\n\n")

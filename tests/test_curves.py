@@ -497,3 +497,30 @@ def test_bad_input_is_one_line_exit_2_nothing_on_stdout(case, command, words):
     import shlex
 
     assert_refused(run(*shlex.split(command), "--format", "plain"), words)
+
+
+# --- issue 13: the basis from a degree and knots alone ----------------------------------------
+
+
+def test_bspline_basis_from_degree_and_knots_alone():
+    from scanconv import _api
+
+    sol = _api.bspline_basis(None, 2, [0, "1/4", "1/2", "3/4", 1], 8)
+    rows = list(sol.tables[0].rows())
+    assert [r[1] for r in rows] == [Fraction(k, 8) for k in range(9)]  # the whole knot range
+    n0 = [r[2] for r in rows]
+    assert n0 == [0, Fraction(1, 8), Fraction(1, 2), Fraction(3, 4), Fraction(1, 2),
+                  Fraction(1, 8), 0, 0, 0]  # fmt: skip
+    assert rows[4][-1] == 1  # the domain [u_2, u_2] = {1/2}: the sum is 1 there
+    r = run("bspline", "--basis", "--degree", "2", "--knots", "0,.25,.5,.75,1", "-f", "json")
+    assert r.code == 0, r.err
+
+
+def test_bspline_basis_alone_needs_explicit_knots_and_the_curve_needs_points():
+    from .helpers import assert_refused
+
+    assert_refused(run("bspline", "--basis", "--degree", "2"), "--knots", "explicit knot list")
+    assert_refused(run("bspline", "--degree", "2"), "control points")
+    assert_refused(
+        run("bspline", "--basis", "--degree", "2", "--knots", "0,1,0.5,2"), "non-decreasing"
+    )

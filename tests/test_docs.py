@@ -53,3 +53,24 @@ def test_readme_python_examples_are_true():
         runner.run(test, clear_globs=False)
     result = runner.summarize(verbose=False)
     assert result.failed == 0 and result.attempted > 0
+
+
+EXAMPLES = re.findall(r"```text\n\$ scanconv (.*?)\n(.*?)```", README, flags=re.S)
+
+
+@pytest.mark.parametrize("command,shown", EXAMPLES, ids=[c for c, _ in EXAMPLES])
+def test_readme_outputs_are_true(command, shown):
+    """Every ``$ scanconv ...`` block of the README shows what the command prints today."""
+    import shlex
+
+    from .helpers import run
+
+    result = run(*shlex.split(command))
+    assert result.code == 0, result.err
+    assert result.out.rstrip() == shown.rstrip(), f"README: rerun `scanconv {command}`"
+
+
+def test_readme_has_a_cheat_sheet_of_exam_questions():
+    sheet = README.split("## Cheat sheet", 1)[1].split("\n## ", 1)[0]
+    rows = [r for r in sheet.splitlines() if r.startswith("| ") and "`scanconv" in r]
+    assert len(rows) >= 20

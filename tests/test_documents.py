@@ -53,10 +53,10 @@ def _solution(name: str) -> Solution:
     from fractions import Fraction
 
     args = CASES[name]
-    if args[0] == "line":
-        from scanconv.answers.line import line_solution
+    if args[0] == "line":  # through the API, as the command builds it (its defaults included)
+        from scanconv import _api
 
-        return line_solution(args[-1], *(Fraction(a) for a in args[1:5]))
+        return _api.line(*(Fraction(a) for a in args[1:5]), args[-1])
     if args[0] == "compare":
         from scanconv.answers.compare import compare_lines
 
@@ -179,7 +179,10 @@ def test_markdown_survives_exactly(name: str) -> None:
     solution = _solution(name)
     html, _ = _to_html(_markdown(name), "gfm")
     tables = ([solution.columns] if solution.columns else []) + [t.columns for t in solution.tables]
+    from scanconv.render.cells import note_segments
+
     formulas = len(solution.given) + len(solution.derived) + sum(len(c) for c in tables)
+    formulas += sum(math for n in solution.notes for math, _ in note_segments(n))  # $...$
     assert html.math == formulas
     heads = [len(t["head"]) for t in html.tables]
     assert heads == [len(c) for c in tables]
@@ -293,34 +296,41 @@ def test_latex_long_answer_breaks_pixels_and_pages(tmp_path: Path) -> None:
 
 def test_latex_wide_grid_is_set_smaller(tmp_path: Path) -> None:
     result = run("line", "0", "0", "24", "4", "--format", "latex")
-    assert "{\\scriptsize\n\\begin{verbatim}" in result.out or "{\\tiny\n" in result.out
+    assert "\\scriptsize\n\\begin{verbatim}" in result.out or "\\tiny\n" in result.out
     log = _compile(tmp_path, result.out)
     assert not [v for v in _overfull(log) if v > 1]
 
 
-# --- the terminal: --explain ----------------------------------------------------------------------
+# --- the terminal: the full answer by default, --brief for the answer alone ------------------------
 
 
-def test_rich_shows_the_answer_and_explain_adds_the_derivation() -> None:
+def test_rich_shows_the_derivation_unless_brief() -> None:
     from scanconv.answers.line import line_solution
+    from scanconv.render.cells import note_unicode
 
     solution = line_solution("bresenham", 2, 2, 10, 6)
-    plain = run("line", "2", "2", "10", "6", "--format", "rich")
-    explained = run("line", "2", "2", "10", "6", "--format", "rich", "--explain")
-    assert plain.code == explained.code == 0
-    for out in (plain.out, explained.out):
+    full = run("line", "2", "2", "10", "6", "--format", "rich")
+    brief = run("line", "2", "2", "10", "6", "--format", "rich", "--brief")
+    assert full.code == brief.code == 0
+    for out in (full.out, brief.out):
         assert solution.title in out and "Step table" in out and "Pixels plotted (9)" in out
-    assert "Working:" not in plain.out and "Given:" not in plain.out
-    for q in (*solution.given, *solution.derived):
-        assert q.text in explained.out and q.text not in plain.out
-    for note in solution.notes:
-        assert note in explained.out
+    assert "Working:" not in brief.out and "Given:" not in brief.out
+    for q in solution.derived:
+        assert q.text in full.out and q.text not in brief.out
+    assert "Notes:" in full.out and "Notes:" not in brief.out
+    assert note_unicode("$p_k < 0$") in full.out
+
+
+@pytest.mark.parametrize("fmt", ["rich", "markdown", "latex", "plain", "csv", "json"])
+def test_explain_is_a_no_op_kept_for_old_scripts(fmt: str) -> None:
+    base = run("line", "2", "2", "10", "6", "--format", fmt)
+    assert run("line", "2", "2", "10", "6", "--format", fmt, "--explain").out == base.out
 
 
 @pytest.mark.parametrize("fmt", ["markdown", "latex", "plain", "csv", "json"])
-def test_explain_leaves_the_documents_unchanged(fmt: str) -> None:
+def test_brief_leaves_the_documents_unchanged(fmt: str) -> None:
     base = run("line", "2", "2", "10", "6", "--format", fmt)
-    assert run("line", "2", "2", "10", "6", "--format", fmt, "--explain").out == base.out
+    assert run("line", "2", "2", "10", "6", "--format", fmt, "--brief").out == base.out
 
 
 def _leaves(command, prefix=()):
@@ -336,10 +346,33 @@ DRAWING = ("line", "circle", "ellipse", "bezier", "bspline", "continuity", "para
 
 
 @pytest.mark.parametrize("name", sorted(LEAVES))
-def test_every_command_takes_explain(name: str) -> None:
-    assert "explain" in {p.name for p in LEAVES[name].params}
+def test_every_command_takes_brief_and_explain(name: str) -> None:
+    assert {"brief", "explain"} <= {p.name for p in LEAVES[name].params}
 
 
 @pytest.mark.parametrize("name", sorted(n for n in LEAVES if n.split()[0] in DRAWING))
 def test_drawing_commands_take_svg_and_png(name: str) -> None:
     assert {"svg", "png"} <= {p.name for p in LEAVES[name].params}
+
+
+def test_every_golden_latex_answer_in_one_document_sets_cleanly(tmp_path: Path) -> None:
+    """All the golden LaTeX answers, one after another: no line past the margin (no overfull
+    box at all) and every grid kept on one page (each is set in a minipage)."""
+    from .test_golden import FILES, read_case
+
+    fragments = []
+    for path in [p for p in FILES if p.suffix == ".tex"]:
+        result = run(*read_case(path)[0])
+        assert result.code == 0, result.err
+        fragments.append(result.out)
+        grids = result.out.count("\\begin{verbatim}")
+        assert result.out.count("\\begin{minipage}{\\linewidth}") == grids, path.name
+    log = _compile(tmp_path, *fragments)
+    assert _overfull(log) == [], "overfull boxes"
+
+
+def test_latex_radius_20_grid_fits_the_margin(tmp_path: Path) -> None:
+    result = run("circle", "20", "--format", "latex")
+    assert "\\begin{minipage}" in result.out
+    log = _compile(tmp_path, result.out)
+    assert not _overfull(log)

@@ -272,7 +272,9 @@ DOCS = Path(__file__).resolve().parent.parent / "docs" / "figures"
 
 def test_readme_line_figure_is_current():
     shown = (DOCS / "line-bresenham-2-2-10-6.svg").read_text(encoding="utf-8")
-    assert shown == figure.svg(line_solution("bresenham", 2, 2, 10, 6)), (
+    from scanconv import _api
+
+    assert shown == figure.svg(_api.line(2, 2, 10, 6, "bresenham")), (  # what the command draws
         "regenerate: scanconv line 2 2 10 6 --svg docs/figures/line-bresenham-2-2-10-6.svg"
     )
 

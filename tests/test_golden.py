@@ -1,7 +1,8 @@
 """Golden files: one worked example per file under ``golden/<topic>/``.
 
 Line 1 of each file is the exact command (``$ scanconv ...``); everything after it is the exact
-stdout. ``pytest --update-golden`` rewrites the files from the current output and then fails,
+stdout. Terminal answers (``*.rich.txt``) are printed at 80 columns (``COLUMNS=80``), the
+width a person's terminal usually has; ``tests/test_terminal_width.py`` checks other widths. ``pytest --update-golden`` rewrites the files from the current output and then fails,
 so every change to expected output is reviewed in the diff.
 
 Besides byte equality, every case checks one invariant (black's habit of checking more than
@@ -30,6 +31,8 @@ IDS = [p.relative_to(GOLDEN).as_posix() for p in FILES]
 
 #: Options that take a value and do not change the answer's content (dropped for the JSON run).
 _OUTPUT_OPTIONS = {"-f", "--format", "-o", "--output", "--origin", "--svg", "--png"}
+#: Flags that change only how the answer is shown (dropped for the JSON run).
+_FLAGS = ("--explain", "--brief", "--exact", "--no-grid")
 _PAIR = re.compile(r"\((-?\d+), (-?\d+)\)")
 
 
@@ -40,8 +43,12 @@ def read_case(path: Path) -> tuple[list[str], str]:
 
 
 @pytest.mark.parametrize("path", FILES, ids=IDS)
-def test_golden(path: Path, request: pytest.FixtureRequest) -> None:
+def test_golden(
+    path: Path, request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch
+) -> None:
     args, expected = read_case(path)
+    if path.name.endswith(".rich.txt") or ".rich-" in path.name:
+        monkeypatch.setenv("COLUMNS", "80")
     result = run(*args)
     assert result.code == 0, result.err
     if request.config.getoption("--update-golden"):
@@ -61,7 +68,7 @@ def _as_json(args: list[str]) -> list[str]:
             skip = False
         elif a in _OUTPUT_OPTIONS:
             skip = True
-        elif a.split("=", 1)[0] in _OUTPUT_OPTIONS or a in ("--explain", "--no-grid"):
+        elif a.split("=", 1)[0] in _OUTPUT_OPTIONS or a in _FLAGS:
             pass
         else:
             out.append(a)

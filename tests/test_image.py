@@ -360,3 +360,28 @@ def test_every_format(args, fmt):
     if fmt == "csv":
         rows = list(csv.reader(io.StringIO(r.out)))
         assert len({len(row) for row in rows}) == 1 and len(rows) > 1
+
+
+# --- issue 13: frame-buffer depths in storage, quantize keeps its limit ----------------------
+
+
+@pytest.mark.parametrize("bits", [32, 48, 64])
+def test_storage_accepts_frame_buffer_depths(bits):
+    from scanconv import _api
+
+    sol = _api.storage(1024, 768, bits=bits)
+    q = {q.key: q.value for q in sol.derived}
+    assert q["k"] == bits and q["bits"] == 1024 * 768 * bits and q["bytes"] == 1024 * 96 * bits
+
+
+@pytest.mark.parametrize("bits", ["25", "31", "65"])
+def test_storage_refuses_other_depths_beyond_24(bits):
+    from .helpers import assert_refused, run
+
+    assert_refused(run("storage", "8", "8", "--bits", bits), "--bits", "at most 24", "32, 48 or 64")
+
+
+def test_quantize_keeps_its_own_limit():
+    from .helpers import assert_refused, run
+
+    assert_refused(run("quantize", "--bits", "32"), "--bits", "at most 24")

@@ -117,6 +117,56 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
         (["circle", "16384", "--method", "symmetric-dda"], "16383")
     ],
     "render.figure.MAX_CELLS": [(["line", "0", "0", "198", "0", "--svg", "FIGURE"], "201 x 3")],
+    "algorithms.polygon.MAX_VERTICES": [
+        (["polygon", *("0", "0") * 1001], "at most 1000 polygon vertices"),
+        (["antialias", "polygon", *("0", "0") * 1001], "at most 1000 polygon vertices"),
+    ],
+    "algorithms.polygon.MAX_FILL_CELLS": [
+        (["polygon", "0", "0", "1000", "0", "0", "1000"], "1,000,000 are filled"),
+    ],
+    "algorithms.seedfill.MAX_SEED_CELLS": [
+        (["fill", "flood", "--seed", "1", "1", "--rows", "/".join(["." * 101] * 100)], "10,000"),
+        (["fill", "boundary", "0", "0", "98", "0", "0", "98", "--seed", "1", "1"], "10,000"),
+    ],
+    "algorithms.coverage.MAX_SAMPLES": [
+        (
+            ["antialias", "polygon", "0", "0", "4", "0", "2", "3", "-m", "supersample", "-n", "17"],
+            "at most 16",
+        ),
+    ],
+    "algorithms.coverage.MAX_AA_CELLS": [
+        (["antialias", "circle", "49"], "10,000"),
+        (["antialias", "polygon", "0", "0", "100", "0", "0", "99"], "10,000"),
+    ],
+    "answers.shapes.MAX_POINTS": [
+        (["transform", *POINTS_101, "--translate", "1", "1"], "at most 100 points"),
+        (
+            [
+                "viewport",
+                *POINTS_101,
+                "--window",
+                "0",
+                "0",
+                "1",
+                "1",
+                "--viewport",
+                "0",
+                "0",
+                "2",
+                "2",
+            ],
+            "at most 100 points",
+        ),
+    ],
+    "answers.transform.MAX_TRANSFORMS": [
+        (["transform", "0", "0", *["--translate", "1", "1"] * 21], "at most 20 transformations"),
+    ],
+    "answers.clip_polygon.MAX_VERTICES": [
+        (
+            ["clip", "polygon", *POINTS_101, "--window", "0", "0", "5", "5"],
+            "at most 100 polygon vertices",
+        ),
+    ],
 }
 
 #: A limit that is not a refusal: the grid is left out with a note, and the answer is complete.

@@ -223,12 +223,21 @@ def _plain_headings(lines: list[str]) -> list[str]:
 
 
 def _markdown_headings(lines: list[str]) -> list[list[str]]:
-    """The ``$...$`` cells of the markdown tables' heading rows."""
-    return [
-        re.findall(r"\$(.*?)\$", lines[i])
-        for i in range(len(lines) - 1)
-        if lines[i].startswith("| ") and re.fullmatch(r"\|(:?-+:?\|)+", lines[i + 1])
-    ]
+    """The ``$...$`` cells of the markdown tables' heading rows; a wide table set in parts
+    ("part 2 of 2", the first column repeated) counts as the one table plain prints."""
+    heads: list[list[str]] = []
+    title = ""
+    for i in range(len(lines) - 1):
+        if lines[i].startswith("**"):
+            title = lines[i]
+        if lines[i].startswith("| ") and re.fullmatch(r"\|(:?-+:?\|)+", lines[i + 1]):
+            cells = re.findall(r"\$(.*?)\$", lines[i])
+            part = re.search(r"part (\d+) of \d+", title)
+            if part and part.group(1) != "1" and heads:
+                heads[-1].extend(cells[1:])
+            else:
+                heads.append(cells)
+    return heads
 
 
 def _said(tex: str) -> str:

@@ -31,15 +31,14 @@ from collections.abc import Callable, Iterable, Iterator
 from enum import Enum
 from fractions import Fraction
 
-from ..core.numeric import (
-    Number,
-    round_half_up,
-    round_trunc,
-)
+from ..core.numeric import Number
 from ..core.records import Move, Pixel, Step, new_step
+from .conventions import ROUNDINGS, Rounding, rounder
 
-ALIASES = {"general": "polynomial"}
-"""Other names accepted for a method (the notes call the polynomial method "general")."""
+__all__ = ["ROUNDINGS", "Rounding", "rounder"]
+
+ALIASES: dict[str, str] = {}
+"""Other names accepted for a method (none since ``general`` is the notes' own method)."""
 
 FLOAT_METHODS = ("polynomial", "trig", "symmetric-dda")
 """The methods that compute non-integer coordinates and so take a rounding rule."""
@@ -56,7 +55,9 @@ _PI_HI = _PI_LO + Fraction(1, 10**63)
 # --- the octant generators --------------------------------------------------------------------
 
 
-def midpoint(r: int) -> Iterator[Step]:
+def midpoint(
+    r: int, tie: str = "step", p0: str = "1-r", loop: str = "strict", update: str = "new"
+) -> Iterator[Step]:
     """The midpoint circle algorithm (Hearn & Baker), first octant from ``(0, r)``.
 
     Yields one step per unit of x; ``Step.pixel`` is ``(x_{k+1}, y_{k+1})``, ``Step.p`` is
@@ -92,10 +93,15 @@ def midpoint(r: int) -> Iterator[Step]:
     """
     # midpoint(10) -> p: -9 -6 -1 6 -3 8 5 ; points (1,10) (2,10) (3,10) (4,9) (5,9) (6,8) (7,7)
     # midpoint(5)  -> p: -4 -1 4 3 ; points (1,5) (2,5) (3,4) (4,3), the last past the diagonal
-    x, y, p, k = 0, r, 1 - r, 0
-    while x < y:
+    # The knobs: tie "keep" decides E on p <= 0; p0 "5/4-r" starts 1/4 higher (exact);
+    # loop "inclusive" runs while x <= y; update "old" writes the same increments with the old
+    # x (2x_k + 3, 2x_k - 2y_k + 5), so it changes the working only, never a value.
+    x, y, k = 0, r, 0
+    p: Number = 1 - r if p0 == "1-r" else Fraction(5, 4) - r
+    inclusive, keep = loop == "inclusive", tie == "keep"
+    while x < y or (inclusive and x == y):
         x += 1
-        if p < 0:
+        if p < 0 or (keep and p == 0):
             q, move = p + 2 * x + 1, Move.E
         else:
             y -= 1
@@ -104,7 +110,7 @@ def midpoint(r: int) -> Iterator[Step]:
         p, k = q, k + 1
 
 
-def bresenham(r: int) -> Iterator[Step]:
+def bresenham(r: int, tie: str = "step") -> Iterator[Step]:
     """Bresenham's circle algorithm with ``d0 = 3 - 2r``, first octant from ``(0, r)``.
 
     Yields one step per plotted point; ``Step.pixel`` is the point ``(x_k, y_k)`` plotted at
@@ -134,13 +140,53 @@ def bresenham(r: int) -> Iterator[Step]:
     """
     # bresenham(5) -> d: -7 -1 9 7 ; points (0,5) (1,5) (2,5) (3,4)
     x, y, d, k = 0, r, 3 - 2 * r, 0
+    t = 1 if tie == "keep" else 0  # tie "keep": d <= 0 chooses E
     while x <= y:
-        if d < 0:
+        if d < t:
             e, move, ny = d + 4 * x + 6, Move.E, y
         else:
             e, move, ny = d + 4 * (x - y) + 10, Move.SE, y - 1
         yield new_step(Step, (k, d, move, (x, y), ()))
         x, y, d, k = x + 1, ny, e, k + 1
+
+
+def general(r: int, tie: str = "step", loop: str = "strict") -> Iterator[Step]:
+    """The notes' general method, exactly as its algorithm box states it.
+
+    Each row is the current point ``(x_k, y_k)`` (row 0 is ``(0, r)``) with ``Step.p`` the p
+    there, ``Step.decision`` E or SE and ``Step.extra`` ``(x_k, y_k, next point)``; the last
+    row is the point the loop stops at, with its p and no decision (``extra[2]`` is ``None``).
+
+    Notes
+    -----
+    ``x = 0, y = r, p = 0``; while ``x < y``: if ``p < 0``: ``x = x + 1, p = p + 2x + 1``
+    (E); else ``x = x + 1, y = y - 1, p = p + 2x - 2y + 1`` (SE), with the new x and y. p is
+    x² + y² - r² at (0, r) only: the updates use the new x, so afterwards p is not the circle
+    function of the point, and deciding at the point rather than at the midpoint pulls the
+    octant inside the circle (see ``docs/errata.md``, E8). ``tie="keep"`` decides E on
+    ``p <= 0``; ``loop="inclusive"`` runs while ``x <= y``.
+
+    Examples
+    --------
+    >>> for s in general(5):
+    ...     print(s.k, s.pixel, s.p, s.decision and s.decision.value, s.extra[2])
+    0 (0, 5) 0 SE (1, 4)
+    1 (1, 4) -5 E (2, 4)
+    2 (2, 4) 0 SE (3, 3)
+    3 (3, 3) 1 None None
+    """
+    x, y, p, k = 0, r, 0, 0
+    inclusive, keep = loop == "inclusive", tie == "keep"
+    while x < y or (inclusive and x == y):
+        if p < 0 or (keep and p == 0):
+            nx, ny, move = x + 1, y, Move.E
+            q = p + 2 * nx + 1
+        else:
+            nx, ny, move = x + 1, y - 1, Move.SE
+            q = p + 2 * nx - 2 * ny + 1
+        yield new_step(Step, (k, p, move, (x, y), (x, y, (nx, ny))))
+        x, y, p, k = nx, ny, q, k + 1
+    yield new_step(Step, (k, p, None, (x, y), (x, y, None)))
 
 
 def polynomial(r: int, rounding: str = "half-up") -> Iterator[Step]:
@@ -317,15 +363,6 @@ def symmetric_dda(r: int, rounding: str = "half-up") -> Iterator[Step]:
 # --- exact helpers ----------------------------------------------------------------------------
 
 
-def rounder(rounding: str) -> Callable[[Number], int]:
-    try:
-        return ROUNDINGS[rounding]
-    except KeyError:
-        raise ValueError(
-            f"unknown rounding {rounding!r} (choose from {', '.join(ROUNDINGS)})"
-        ) from None
-
-
 def sqrt6(n: int) -> Fraction:
     """``sqrt(n)`` truncated to 6 decimals, exactly: ``isqrt(n·10¹²) / 10⁶``.
 
@@ -423,8 +460,8 @@ def symmetric_pixels(points: Iterable[Pixel], xc: int = 0, yc: int = 0) -> Itera
 
 
 class CircleMethod(str, Enum):
-    """The circle methods, by the names the API and the CLI (``--method``) take; ``general``
-    is the notes' name for ``polynomial`` (see :data:`ALIASES`)."""
+    """The circle methods, by the names the API and the CLI (``--method``) take: ``general`` is
+    the notes' decision method at the point (p0 = 0), ``polynomial`` the √ method."""
 
     midpoint = "midpoint"
     bresenham = "bresenham"
@@ -434,19 +471,5 @@ class CircleMethod(str, Enum):
     symmetric_dda = "symmetric-dda"
 
 
-class Rounding(str, Enum):
-    """How the floating-point methods (:data:`FLOAT_METHODS`) turn a coordinate into a pixel."""
-
-    half_up = "half-up"
-    trunc = "trunc"
-
-
 METHODS = tuple(m.value for m in CircleMethod if m.value not in ALIASES)
-"""The circle methods' names, without the aliases: midpoint, bresenham, polynomial, trig,
-symmetric-dda."""
-
-ROUNDINGS: dict[str, Callable[[Number], int]] = {
-    Rounding.half_up.value: round_half_up,
-    Rounding.trunc.value: round_trunc,
-}
-"""Rounding rules for :data:`FLOAT_METHODS`: ``floor(v + 1/2)`` or truncation toward zero."""
+"""The circle methods' names: midpoint, bresenham, polynomial, general, trig, symmetric-dda."""

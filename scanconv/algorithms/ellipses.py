@@ -32,7 +32,7 @@ def quarter(v: int) -> Number:
     return v >> 2 if v & 3 == 0 else Fraction(v, 4)
 
 
-def midpoint_ellipse(rx: int, ry: int) -> Iterator[Step]:
+def midpoint_ellipse(rx: int, ry: int, loop: str = "strict") -> Iterator[Step]:
     """The midpoint ellipse algorithm (Hearn & Baker), one quadrant from ``(0, ry)``.
 
     Yields the steps of region 1, then of region 2; ``Step.pixel`` is ``(x_{k+1}, y_{k+1})``,
@@ -60,6 +60,8 @@ def midpoint_ellipse(rx: int, ry: int) -> Iterator[Step]:
     y = 0 to x = rx as extra region-2 rows with decision E and no p (Zingl's "too early stop of
     flat ellipses"). Every quadrant therefore ends at ``(rx, 0)``. Both loops advance one
     coordinate per step, so the walk always ends after at most ``rx + ry`` steps.
+
+    ``loop="inclusive"`` runs region 1 while ``2ry²x <= 2rx²y`` (the ``<=`` some sources print).
 
     Exact arithmetic: the p values are multiples of 1/4 (kept as ``4p`` in integers).
 
@@ -90,7 +92,8 @@ def midpoint_ellipse(rx: int, ry: int) -> Iterator[Step]:
     tx, ty = 0, 2 * rx2 * ry  # 2ry²x and 2rx²y, kept incrementally
     p4 = 4 * ry2 - 4 * rx2 * ry + rx2  # 4·p1_0
     k = 0
-    while tx < ty:
+    inclusive = loop == "inclusive"
+    while tx < ty or (inclusive and tx == ty and y > 0):
         x += 1
         tx += 2 * ry2
         if p4 < 0:
@@ -127,7 +130,7 @@ needs the end of region 1 before the first line is printed, and finding it runs 
 (about rx²/sqrt(rx² + ry²) steps: well under a second at 10**6, hours at 10**9)."""
 
 
-def region1_end(rx: int, ry: int) -> Pixel:
+def region1_end(rx: int, ry: int, loop: str = "strict") -> Pixel:
     """The last point of region 1 (where region 2 starts), without building any steps.
 
     >>> region1_end(8, 6)
@@ -136,7 +139,8 @@ def region1_end(rx: int, ry: int) -> Pixel:
     rx2, ry2 = rx * rx, ry * ry
     x, y, tx, ty = 0, ry, 0, 2 * rx2 * ry
     p4 = 4 * ry2 - 4 * rx2 * ry + rx2
-    while tx < ty:
+    inclusive = loop == "inclusive"
+    while tx < ty or (inclusive and tx == ty and y > 0):
         x += 1
         tx += 2 * ry2
         if p4 < 0:

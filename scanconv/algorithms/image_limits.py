@@ -61,6 +61,34 @@ def check_bits(value: Number) -> int:
     return check_count(bits, "bits per pixel", 1, MAX_BITS, param="bits")
 
 
+FRAME_BUFFER_BITS = (32, 48, 64)
+"""Pixel depths of frame buffers that :func:`check_storage_bits` accepts beyond :data:`MAX_BITS`
+(RGBA 8 bits each, 16-bit RGB, 16-bit RGBA): storage exercises only, no level table."""
+
+
+def check_storage_bits(value: Number) -> int:
+    """Bits per pixel of a stored image: ``1 .. 24``, or a frame-buffer depth 32, 48 or 64.
+
+    >>> check_storage_bits(32), check_storage_bits(64)
+    (32, 64)
+    >>> check_storage_bits(25)
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: bits per pixel must be at most 24, or a frame-buffer depth of 32, 48 or 64, got 25
+    """
+    bits = check_whole(value, "bits per pixel", param="bits")
+    if bits in FRAME_BUFFER_BITS:
+        return bits
+    if bits > MAX_BITS:
+        raise InputError(
+            f"bits per pixel must be at most {MAX_BITS}, or a frame-buffer depth of "
+            f"{', '.join(map(str, FRAME_BUFFER_BITS[:-1]))} or {FRAME_BUFFER_BITS[-1]}, "
+            f"got {bits}",
+            "bits",
+        )
+    return check_count(bits, "bits per pixel", 1, MAX_BITS, param="bits")
+
+
 def check_cells(m: int, n: int) -> None:
     """Refuse an M × N matrix beyond :data:`MAX_CELLS`, before anything is allocated.
 

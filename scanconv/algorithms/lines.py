@@ -19,9 +19,10 @@ from ..core.numeric import (
     round_half_up,
 )
 from ..core.records import Move, Step, new_step
+from .conventions import rounder
 
 
-def bresenham(x1: int, y1: int, x2: int, y2: int) -> Iterator[Step]:
+def bresenham(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> Iterator[Step]:
     """Bresenham's line algorithm, textbook form, all octants.
 
     Yields one step per unit of the major axis; ``Step.pixel`` is ``(x_{k+1}, y_{k+1})`` and
@@ -41,7 +42,8 @@ def bresenham(x1: int, y1: int, x2: int, y2: int) -> Iterator[Step]:
       ``p_{k+1} = p_k + 2 Δminor - 2 Δmajor``
 
     A tie (``p_k = 0``, the ideal line exactly half-way between two pixels) steps the minor
-    axis. Integers only.
+    axis with ``tie="step"`` (the notes' and Hearn & Baker's ``if p < 0``) and keeps it with
+    ``tie="keep"`` (the widely copied ``if p <= 0``). Integers only.
 
     References: Bresenham, IBM Systems Journal 4(1), 1965; Hearn & Baker, *Computer Graphics*,
     section 3-5.
@@ -66,6 +68,7 @@ def bresenham(x1: int, y1: int, x2: int, y2: int) -> Iterator[Step]:
     x1, y1, x2, y2, steep, dmaj, dmin, s, stay, move = orient(x1, y1, x2, y2)
     inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
     x, y, p = x1, y1, 2 * dmin - dmaj
+    t = 1 if tie == "keep" else 0  # p <= 0 is p < 1: every p is an integer
     # The hot path of every long table (benchmarks/bench.py measures it): one loop per major
     # axis so no step tests `steep`, and the record constructor bound to local names.
     make, cls = new_step, Step
@@ -73,7 +76,7 @@ def bresenham(x1: int, y1: int, x2: int, y2: int) -> Iterator[Step]:
     if steep:
         for k in range(dmaj):
             y += 1
-            if p < 0:
+            if p < t:
                 yield make(cls, (k, p, stay, (x, y), (p := p + inc_keep,)))
             else:
                 x += s
@@ -81,11 +84,31 @@ def bresenham(x1: int, y1: int, x2: int, y2: int) -> Iterator[Step]:
         return
     for k in range(dmaj):
         x += 1
-        if p < 0:
+        if p < t:
             yield make(cls, (k, p, stay, (x, y), (p := p + inc_keep,)))
         else:
             y += s
             yield make(cls, (k, p, move, (x, y), (p := p + inc_step,)))
+
+
+def bresenham_notes(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> Iterator[Step]:
+    """:func:`bresenham` in the notes' row shape: row k plots ``(x_k, y_k)`` (row 0 the start
+    pixel) and shows the ``p_k`` and decision taken there and ``p_{k+1}``; a last row plots the
+    end pixel, with ``p`` and no decision (the loop has ended).
+
+    >>> for s in bresenham_notes(2, 2, 5, 3):
+    ...     print(s.k, s.p, s.decision and s.decision.value, s.pixel, s.extra[0])
+    0 -1 E (2, 2) 1
+    1 1 NE (3, 2) -3
+    2 -3 E (4, 3) -1
+    3 -1 None (5, 3) None
+    """
+    o = orient(x1, y1, x2, y2)
+    pixel, k, p = (o[0], o[1]), 0, 2 * o[6] - o[5]
+    for s in bresenham(x1, y1, x2, y2, tie):
+        yield Step(s.k, s.p, s.decision, pixel, s.extra)
+        pixel, k, p = s.pixel, s.k + 1, s.extra[0]
+    yield Step(k, p, None, pixel, (None,))
 
 
 def orient(x1: int, y1: int, x2: int, y2: int) -> tuple:
@@ -108,7 +131,9 @@ def orient(x1: int, y1: int, x2: int, y2: int) -> tuple:
     return x1, y1, x2, y2, False, dx, abs(dy), s, Move.E, Move.from_delta(1, s)
 
 
-def dda(x1: Number, y1: Number, x2: Number, y2: Number) -> Iterator[Step]:
+def dda(
+    x1: Number, y1: Number, x2: Number, y2: Number, rounding: str = "half-up"
+) -> Iterator[Step]:
     """The simple DDA, from P1 to P2 as given, with exact increments.
 
     ``Step.extra`` is ``(x_k, y_k, round_half_up(x_k), round_half_up(y_k))``; there are
@@ -137,12 +162,13 @@ def dda(x1: Number, y1: Number, x2: Number, y2: Number) -> Iterator[Step]:
     8 10.000 6.000 (10, 6)
     """
     # dda(2, 2, 10, 6) -> y: 2 2.5 3 3.5 4 4.5 5 5.5 6 ; rounded: 2 3 3 4 4 5 5 6 6
+    rnd = rounder(rounding)
     steps = dda_steps(x1, y1, x2, y2)
     xi, yi = dda_increments(x1, y1, x2, y2)
     for k in range(steps + 1):
         x = normalize(x1 + k * xi)  # exact: k * inc, not repeated addition
         y = normalize(y1 + k * yi)
-        px, py = round_half_up(x), round_half_up(y)
+        px, py = rnd(x), rnd(y)
         yield Step(k, None, None, (px, py), (x, y, px, py))
 
 
@@ -172,7 +198,9 @@ def dda_increments(x1: Number, y1: Number, x2: Number, y2: Number) -> tuple[Numb
     return normalize(Fraction(x2 - x1) / steps), normalize(Fraction(y2 - y1) / steps)
 
 
-def basic(x1: Number, y1: Number, x2: Number, y2: Number) -> Iterator[Step]:
+def basic(
+    x1: Number, y1: Number, x2: Number, y2: Number, rounding: str = "half-up"
+) -> Iterator[Step]:
     """The direct method: step the major axis by 1, solve the line equation, round.
 
     ``Step.extra`` is ``(major, minor_exact, minor_rounded)``: ``(x, y, round_half_up(y))``
@@ -200,6 +228,7 @@ def basic(x1: Number, y1: Number, x2: Number, y2: Number) -> Iterator[Step]:
     8 5.0 (8, 5)
     """
     # basic(2, 2, 8, 5) -> y: 2 2.5 3 3.5 4 4.5 5 ; rounded: 2 3 3 4 4 5 5
+    rnd = rounder(rounding)
     dx, dy = x2 - x1, y2 - y1
     steep = abs_value(dy) > abs_value(dx)
     a1, b1, a2, db, da = (y1, x1, y2, dx, dy) if steep else (x1, y1, x2, dy, dx)
@@ -208,7 +237,7 @@ def basic(x1: Number, y1: Number, x2: Number, y2: Number) -> Iterator[Step]:
     slope = Fraction(db) / da if da else Fraction(0)
     for k, a in enumerate(range(start, end + direction, direction)):
         b = normalize(b1 + slope * (a - a1))
-        rb = round_half_up(b)
+        rb = rnd(b)
         pixel = (rb, a) if steep else (a, rb)
         yield Step(k, None, None, pixel, (a, b, rb))
 

@@ -126,7 +126,7 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
             "row sum to 1.",
             ROUND_NOTE,
             JOIN_NOTE,
-            "The curve starts at P0, ends at Pn and lies in the convex hull of the control "
+            "The curve starts at $P_0$, ends at $P_n$ and lies in the convex hull of the control "
             "points (marked o in the grid).",
         ),
         marks=marks,

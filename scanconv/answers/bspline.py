@@ -4,9 +4,11 @@ the table of basis values and points (or of the basis alone), and the curve at o
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
+from fractions import Fraction
 from typing import Any, NamedTuple
 
 from ..algorithms.bspline import (
+    MAX_DEGREE,
     basis_dense,
     basis_levels,
     bspline,
@@ -309,4 +311,86 @@ def bspline_at_solution(
             "polyline": [(float(point[0]), float(point[1]))],
             "control": float_points(pts),
         },
+    )
+
+
+def bspline_basis_knots_solution(
+    degree: int, knots: Sequence[Number], samples: int | None = None
+) -> Solution:
+    """The basis functions ``N_{i,p}(t)`` of a degree and a knot vector alone (no control
+    points), tabulated over the whole knot range ``[u_0, u_m]``, as textbooks print them.
+
+    ``n + 1 = m - p`` functions; the rows sum to 1 only on the domain ``[u_p, u_{n+1}]``.
+
+    >>> from fractions import Fraction as F
+    >>> sol = bspline_basis_knots_solution(2, [0, F(1, 4), F(1, 2), F(3, 4), 1], 4)
+    >>> [tuple(str(v) for v in row[2:]) for row in sol.tables[0].rows()][1:4]
+    [('1/2', '0', '1/2'), ('1/2', '1/2', '1'), ('0', '1/2', '1/2')]
+    """
+    if not 1 <= degree <= MAX_DEGREE:
+        raise InputError(f"degree must satisfy 1 <= p <= {MAX_DEGREE}, got p = {degree}", "degree")
+    u = tuple(norm_value(Fraction(v)) for v in knots)
+    m = len(u) - 1
+    n = m - degree - 1
+    if n < 0:
+        raise InputError(
+            f"a degree-{degree} basis needs at least p + 2 = {degree + 2} knots, got {len(u)}",
+            "knots",
+        )
+    for i in range(m):
+        if u[i] > u[i + 1]:
+            raise InputError(
+                f"knot vector must be non-decreasing: u_{i} = {value_text(u[i])} > "
+                f"u_{i + 1} = {value_text(u[i + 1])}",
+                "knots",
+            )
+    if any(u.count(v) > degree + 1 for v in set(u)):
+        raise InputError(f"a knot may repeat at most p + 1 = {degree + 1} times", "knots")
+    t0, t1 = u[0], u[-1]
+    samples = 2 * m if samples is None else check_samples(samples)
+    check_weights(samples, n + 1)
+    ts = [norm_value(t0 + (t1 - t0) * Fraction(k, samples)) for k in range(samples + 1)]
+
+    def rows() -> Iterator[tuple[Any, ...]]:
+        for k, t in enumerate(ts):
+            w = basis_levels(u, degree, m - 1, t)[degree][: n + 1]
+            yield (k, t, *w, norm_value(sum(w)))
+
+    basis_cols = tuple(heading(f"N{i}", f"N_{{{i},{degree}}}", 3) for i in range(n + 1))
+    d0, d1 = domain(u, degree, n)
+    derived = (
+        worked("p", degree, f"p = {degree}"),
+        worked("knots", tuple(u), f"U = {knot_text(u)},\\ m = {m}"),
+        worked(
+            "n",
+            n,
+            f"n + 1 = m - p = {m} - {degree} = {n + 1} \\text{{ basis functions }} "
+            f"N_{{0,{degree}}} \\ldots N_{{{n},{degree}}}",
+        ),
+        worked(
+            "range",
+            (t0, t1),
+            f"t \\text{{ from }} u_0 = {value_text(t0)} \\text{{ to }} u_{{{m}}} = "
+            f"{value_text(t1)} \\text{{ in {samples} steps; the rows sum to 1 on the domain }} "
+            f"[u_{{{degree}}}, u_{{{n + 1}}}] = [{value_text(d0)}, {value_text(d1)}]",
+        ),
+    )
+    return Solution(
+        primitive="curve",
+        algorithm="bspline-basis",
+        title=f"B-spline basis functions of degree {degree} on the knots {knot_text(u)}",
+        given=(worked("p", degree, f"p = {degree}"),),
+        derived=derived[1:],
+        tables=(
+            Table(
+                f"Basis functions N_(i,{degree})(t) over the whole knot range",
+                (*K_T_COLUMNS, *basis_cols, heading("sum", r"\sum_i N_{i,p}", 3)),
+                rows,
+            ),
+        ),
+        notes=(
+            *_BSPLINE_NOTES,
+            "No control points: the table is the basis alone, over [u_0, u_m]; outside the "
+            "domain [u_p, u_(n+1)] fewer than p + 1 functions are non-zero and the sum is below 1.",
+        ),
     )

@@ -14,23 +14,37 @@ from ..algorithms.circles import (
     SDDA_MAX_RADIUS,
     SQRT_PLACES,
     bresenham,
+    general,
     images,
     midpoint,
     polynomial,
-    rounder,
     sqrt6,
     symmetric_dda,
     symmetric_pixels,
     trig,
     trig_last,
 )
+from ..algorithms.conventions import ROUNDING_TEXT, convention_note, resolve, rounder
 from ..core.checks import InputError, check_integer
 from ..core.numeric import (
     Number,
     fmt,
     fmt_value,
+    normalize,
 )
-from ..core.records import Column, Pixel, Quantity, Solution, Step, Table, heading, rule, worked
+from ..core.records import (
+    Column,
+    Move,
+    Pixel,
+    Quantity,
+    Solution,
+    Step,
+    Table,
+    heading,
+    rule,
+    worked,
+)
+from . import theory
 
 SYMMETRY_HEADS = (
     "(x_c+x, y_c+y)",
@@ -84,9 +98,30 @@ def _start(r: int) -> Quantity:
 
 
 def circle_solution(
-    method: str, r: Number, xc: Number = 0, yc: Number = 0, rounding: str = "half-up"
+    method: str,
+    r: Number,
+    xc: Number = 0,
+    yc: Number = 0,
+    rounding: str | None = None,
+    *,
+    tie: str | None = None,
+    p0: str | None = None,
+    loop: str | None = None,
+    update: str | None = None,
+    convention: str | None = None,
+    layout: str = "textbook",
+    derive: bool = False,
+    pseudocode: bool = False,
+    annotate: bool = False,
 ) -> Solution:
     """The worked solution of a circle with one of :data:`METHODS` (or an alias).
+
+    ``rounding``, ``tie``, ``p0``, ``loop`` and ``update`` are the conventions
+    (:mod:`scanconv.algorithms.conventions`; a knob that does not apply to the method is an
+    error), ``convention`` a named preset. ``layout="notes"`` prints the midpoint circle in the
+    notes' rows (k, x, y, p, decision, point: row 0 the start point); ``derive`` adds the
+    derivation, ``pseudocode`` the algorithm as a table, ``annotate`` the notes naming the
+    conventions and the course notes' errata.
 
     Raises ``ValueError`` for an unknown method or rounding rule, a negative or non-integer
     radius or centre, a rounding rule other than half-up with an integer method, and a radius
@@ -106,29 +141,45 @@ def circle_solution(
     if method not in METHODS:
         names = ", ".join((*METHODS, *ALIASES))
         raise InputError(f"unknown circle method {method!r} (choose from {names})", "method")
-    rounder(rounding)
+    if rounding is not None and method not in FLOAT_METHODS:
+        rounder(rounding)
+        if rounding != "half-up":
+            raise InputError(
+                f"a rounding rule applies only to {', '.join(FLOAT_METHODS)}; "
+                f"{method} uses integers only",
+                "rounding",
+            )
+        rounding = None
+    if layout not in ("notes", "textbook"):
+        raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
+    knobs = resolve(
+        "circle",
+        method,
+        convention,
+        {"rounding": rounding, "tie": tie, "p0": p0, "loop": loop, "update": update},
+    )
+    rounding = knobs.get("rounding", "half-up")
     ir = check_integer(r, "radius", negative=False)
     ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
-    if method not in FLOAT_METHODS and rounding != "half-up":
-        raise InputError(
-            f"a rounding rule applies only to {', '.join(FLOAT_METHODS)}; "
-            f"{method} uses integers only",
-            "rounding",
-        )
     if method == "symmetric-dda" and ir > SDDA_MAX_RADIUS:
         raise InputError(
             f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "
             f"the radius must be at most {SDDA_MAX_RADIUS} (got {ir})",
             "r",
         )
-    build = {
-        "midpoint": _midpoint_parts,
-        "bresenham": _bresenham_parts,
-        "polynomial": _polynomial_parts,
-        "trig": _trig_parts,
-        "symmetric-dda": _sdda_parts,
-    }[method]
-    title, derived, columns, extra_keys, steps, points, notes = build(ir, rounding)
+    if method == "midpoint":
+        parts = _midpoint_parts(ir, knobs, layout)
+    elif method == "general":
+        parts = _general_parts(ir, knobs)
+    elif method == "bresenham":
+        parts = _bresenham_parts(ir, knobs["tie"])
+    else:
+        parts = {
+            "polynomial": _polynomial_parts,
+            "trig": _trig_parts,
+            "symmetric-dda": _sdda_parts,
+        }[method](ir, rounding)
+    title, derived, columns, extra_keys, steps, points, notes = parts
     if method in FLOAT_METHODS:
         notes = (*notes, _rounding_note(rounding))
     notes = (
@@ -136,6 +187,20 @@ def circle_solution(
         "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
         "once, the first time it is plotted.",
     )
+    tables: tuple[Table, ...] = ()
+    if derive:
+        derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
+    if pseudocode:
+        code = theory.circle_code(method, knobs)
+        tables = (code,) if code is not None else ()
+    data: dict = {"rounding": rounding} if method in FLOAT_METHODS else {}
+    if annotate:
+        notes = (*notes, convention_note("circle", convention, knobs))
+        erratum = theory.circle_errata(method, ir)
+        if erratum:
+            notes = (*notes, erratum)
+        data = {**data, "conventions": knobs, "layout": layout}
+    pixels = _once_each if knobs.get("loop") == "inclusive" else _as_is
     return Solution(
         primitive="circle",
         algorithm=method,
@@ -145,20 +210,47 @@ def circle_solution(
         columns=columns,
         extra_keys=extra_keys,
         steps=steps,
-        pixels=lambda: symmetric_pixels(points(), ixc, iyc),
+        pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
         bbox=(ixc - ir, iyc - ir, ixc + ir, iyc + ir),
         notes=notes,
-        tables=(symmetry_table(points, images, ixc, iyc),),
+        tables=(symmetry_table(points, images, ixc, iyc), *tables),
         marks=((ixc, iyc),),
         geometry={"circle": (ixc, iyc, ir), "symmetry": 8, "center": (ixc, iyc)},
-        data={"rounding": rounding} if method in FLOAT_METHODS else {},
+        data=data,
+    )
+
+
+def _as_is(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
+    return pixels
+
+
+def _once_each(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
+    """Each pixel once: a loop run while x <= y can step past the diagonal and repeat the
+    images of an earlier point, which the previous-point check alone does not catch."""
+    seen: set[Pixel] = set()
+    for p in pixels:
+        if p not in seen:
+            seen.add(p)
+            yield p
+
+
+def _derivation(method: str, r: int, knobs: dict[str, str]) -> tuple[Quantity, ...]:
+    if method == "midpoint":
+        return theory.midpoint_circle_derivation(r, knobs["p0"])
+    if method == "general":
+        return theory.general_circle_derivation(r)
+    if method == "bresenham":
+        return theory.bresenham_circle_derivation(r)
+    return (
+        rule("d_f", r"x^2 + y^2 = r^2 \rightarrow y = \sqrt{r^2 - x^2}"),
+        rule(
+            "d_octant", r"\text{one octant from } (0, r) \text{ to } x = y, \text{ mirrored 8 ways}"
+        ),
     )
 
 
 def _rounding_note(rounding: str) -> str:
-    if rounding == "trunc":
-        return "Coordinates are truncated toward zero, like a C (int) cast."
-    return "Coordinates are rounded half up, floor(v + 1/2)."
+    return f"Coordinates are {ROUNDING_TEXT[rounding]}."
 
 
 _Parts = tuple[
@@ -176,56 +268,155 @@ def _pixels_of(gen: Callable[[], Iterator[Step]]) -> Callable[[], Iterator[Pixel
     return lambda: (s.pixel for s in gen())
 
 
-def _midpoint_parts(r: int, rounding: str) -> _Parts:
+def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> _Parts:
+    tie, p0s, loop, update = knobs["tie"], knobs["p0"], knobs["loop"], knobs["update"]
+    lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
+    if p0s == "5/4-r":
+        p0: Number = Fraction(5, 4) - r
+        p0_q = worked("p0", p0, f"p_0 = \\tfrac54 - r = \\tfrac54 - {r} = {fmt_value(p0)}")
+    else:
+        p0 = 1 - r
+        p0_q = worked("p0", p0, f"p_0 = 1 - r = 1 - {r} = {p0}")
+    if update == "old":
+        inc_e, inc_se = "2x_k + 3", "2x_k - 2y_k + 5"
+    else:
+        inc_e, inc_se = "2x_{k+1} + 1", "2x_{k+1} + 1 - 2y_{k+1}"
     derived = (
         _start(r),
-        worked("p0", 1 - r, f"p_0 = 1 - r = 1 - {r} = {1 - r}"),
+        p0_q,
         rule(
             "if_negative",
-            r"p_k < 0: \text{next point } (x_k + 1, y_k)\ (\text{E}),\ p_{k+1} = p_k + 2x_{k+1} + 1",
+            f"p_k {lt} 0: \\text{{next point }} (x_k + 1, y_k)\\ (\\text{{E}}),\\ "
+            f"p_{{k+1}} = p_k + {inc_e}",
         ),
         rule(
             "otherwise",
-            r"p_k \ge 0: \text{next point } (x_k + 1, y_k - 1)\ (\text{SE}),\ "
-            r"p_{k+1} = p_k + 2x_{k+1} + 1 - 2y_{k+1}",
+            f"p_k {ge} 0: \\text{{next point }} (x_k + 1, y_k - 1)\\ (\\text{{SE}}),\\ "
+            f"p_{{k+1}} = p_k + {inc_se}",
         ),
-        rule("loop", r"\text{continue while } x < y"),
+        rule(
+            "loop", r"\text{continue while } x " + (r"\le" if loop == "inclusive" else "<") + " y"
+        ),
     )
-    notes = [
-        f"The start point (0, {r}) is plotted before the first step.",
-        "p0 = 1 - r is 5/4 - r rounded to an integer; every p_k is an integer and the "
-        "decisions are those of 5/4 - r.",
-    ]
-    last = _last(midpoint(r))
+    if layout == "notes":
+        first = f"Row k plots (x_k, y_k) and decides on p_k; row 0 is the start point (0, {r})."
+    else:
+        first = f"The start point (0, {r}) is plotted before the first step."
+    notes = [first]
+    if p0s == "1-r":
+        notes.append(
+            "p0 = 1 - r is 5/4 - r rounded to an integer; every p_k is an integer and the "
+            "decisions are those of 5/4 - r."
+            if tie == "step"
+            else "p0 = 1 - r: every p_k is an integer; with p_k <= 0 keeping y, p_k = 0 "
+            "decides differently from 5/4 - r (which is then 1/4 > 0)."
+        )
+
+    def gen() -> Iterator[Step]:
+        return midpoint(r, tie, p0s, loop, update)
+
+    last = _last(gen())
     if last is not None and last[0] > last[1]:
         notes.append(
             f"The last point {last} lies past the diagonal; its 8 images are those of "
             f"({last[1]}, {last[0]}), already plotted."
         )
 
-    def steps() -> Iterator[Step]:
-        return midpoint(r)
+    if layout == "notes":
 
-    def points() -> Iterator[Pixel]:
-        yield (0, r)
-        for s in midpoint(r):
-            yield s.pixel
+        def steps() -> Iterator[Step]:
+            pt, k, p = (0, r), 0, p0
+            for st in gen():
+                yield Step(st.k, st.p, st.decision, pt, pt)
+                x, y = st.pixel
+                assert st.p is not None  # the midpoint circle decides every step
+                p = st.p + 2 * x + 1 - (2 * y if st.decision == Move.SE else 0)
+                pt, k = st.pixel, st.k + 1
+            yield Step(k, normalize(p), None, pt, pt)
+
+        def points() -> Iterator[Pixel]:
+            return (st.pixel for st in steps())
+
+        columns: tuple[Column, ...] = (
+            heading("k", "k"),
+            heading("x_k", "x_k"),
+            heading("y_k", "y_k"),
+            heading("p", "p_k"),
+            heading("decision", r"\text{decision}"),
+            heading("pixel", r"\text{plot } (x_k, y_k)"),
+        )
+        keys: tuple[str, ...] = ("x_k", "y_k")
+    else:
+
+        def steps() -> Iterator[Step]:
+            return gen()
+
+        def points() -> Iterator[Pixel]:
+            yield (0, r)
+            for st in gen():
+                yield st.pixel
+
+        columns = (
+            heading("k", "k"),
+            heading("p", "p_k"),
+            heading("pixel", "(x_{k+1}, y_{k+1})"),
+            heading("two_x", "2x_{k+1}"),
+            heading("two_y", "2y_{k+1}"),
+        )
+        keys = ("two_x", "two_y")
+    return ("Midpoint circle algorithm", derived, columns, keys, steps, points, tuple(notes))
+
+
+def _general_parts(r: int, knobs: dict[str, str]) -> _Parts:
+    tie, loop = knobs["tie"], knobs["loop"]
+    lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
+    derived = (
+        _start(r),
+        worked("p0", 0, f"p_0 = x^2 + y^2 - r^2 = 0^2 + {r}^2 - {r}^2 = 0 \\text{{ at }} (0, {r})"),
+        rule(
+            "if_negative",
+            f"p {lt} 0: \\text{{E}},\\ x = x + 1,\\ p = p + 2x + 1",
+        ),
+        rule(
+            "otherwise",
+            f"p {ge} 0: \\text{{SE}},\\ x = x + 1,\\ y = y - 1,\\ p = p + 2x - 2y + 1 "
+            r"\ (\text{the new } x, y)",
+        ),
+        rule(
+            "loop", r"\text{continue while } x " + (r"\le" if loop == "inclusive" else "<") + " y"
+        ),
+    )
+    notes = (
+        "The notes' general method, run as its algorithm box states it: p is decided at the "
+        "current point (p0 = 0 at (0, r)), not at the midpoint, which pulls the octant inside "
+        "the circle; the last row is the point where the loop stops.",
+        "p = x^2 + y^2 - r^2 holds at (0, r) only: the updates add 2x + 1 and 2x - 2y + 1 "
+        "with the new x and y, as the box prints them.",
+    )
+
+    def steps() -> Iterator[Step]:
+        return general(r, tie, loop)
 
     columns = (
         heading("k", "k"),
-        heading("p", "p_k"),
-        heading("pixel", "(x_{k+1}, y_{k+1})"),
-        heading("two_x", "2x_{k+1}"),
-        heading("two_y", "2y_{k+1}"),
+        heading("x_k", "x"),
+        heading("y_k", "y"),
+        heading("p", "p"),
+        heading("decision", r"\text{decision}"),
+        heading("next", r"\text{next } (x, y)"),
     )
+
+    def points() -> Iterator[Pixel]:
+        return (st.pixel for st in general(r, tie, loop))
+
     return (
-        "Midpoint circle algorithm",
+        "Circle by the notes' general method",
         derived,
         columns,
-        ("two_x", "two_y"),
+        ("x_k", "y_k", "next"),
         steps,
         points,
-        tuple(notes),
+        notes,
     )
 
 
@@ -239,15 +430,18 @@ def _last(steps: Iterator[Step]) -> Pixel | None:
     return last
 
 
-def _bresenham_parts(r: int, rounding: str) -> _Parts:
+def _bresenham_parts(r: int, tie: str) -> _Parts:
     d0 = 3 - 2 * r
+    lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
     derived = (
         _start(r),
         worked("d0", d0, f"d_0 = 3 - 2r = 3 - 2 \\cdot {r} = {d0}"),
-        rule("if_negative", r"d_k < 0: d_{k+1} = d_k + 4x_k + 6,\ y_{k+1} = y_k\ (\text{E})"),
+        rule(
+            "if_negative", f"d_k {lt} 0: " + r"d_{k+1} = d_k + 4x_k + 6,\ y_{k+1} = y_k\ (\text{E})"
+        ),
         rule(
             "otherwise",
-            r"d_k \ge 0: d_{k+1} = d_k + 4(x_k - y_k) + 10,\ y_{k+1} = y_k - 1\ (\text{SE})",
+            f"d_k {ge} 0: " + r"d_{k+1} = d_k + 4(x_k - y_k) + 10,\ y_{k+1} = y_k - 1\ (\text{SE})",
         ),
         rule("loop", r"x_{k+1} = x_k + 1;\ \text{plot } (x_k, y_k) \text{ while } x \le y"),
     )
@@ -260,7 +454,7 @@ def _bresenham_parts(r: int, rounding: str) -> _Parts:
     notes = ("Each row plots (x_k, y_k); d_k and the decision give the next point.",)
 
     def steps() -> Iterator[Step]:
-        return bresenham(r)
+        return bresenham(r, tie)
 
     return ("Bresenham's circle algorithm", derived, columns, (), steps, _pixels_of(steps), notes)
 
@@ -302,7 +496,7 @@ def _polynomial_parts(r: int, rounding: str) -> _Parts:
         return polynomial(r, rounding)
 
     return (
-        "Circle by the polynomial (general) method",
+        "Circle by the polynomial (square-root) method",
         derived,
         columns,
         ("y_sqrt", "round_y"),

@@ -19,7 +19,7 @@ from typing import Any
 
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt, fmt_short, normalize
-from ..core.records import Pixel, PixelFigure, Solution, Table, heading
+from ..core.records import Pixel, PixelFigure, Solution, Table, heading, rule
 
 LINE_METHODS = ("basic", "dda", "bresenham")
 """The line algorithms compared, in the order of the table's columns."""
@@ -130,7 +130,7 @@ MAX_RADIUS = 2000
 with exact checks, all run before the first row)."""
 
 
-def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
+def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool = False) -> Solution:
     """The basic method, the DDA and Bresenham's algorithm side by side for one line.
 
     Bresenham's algorithm needs integer end points; with fractional ones only the basic
@@ -223,7 +223,7 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
         given=sols["dda"].given,
         derived=derived,
         notes=tuple(notes),
-        tables=tuple(tables),
+        tables=(*tables, *_theory("line", theory)),
         figures=_disagreement_figure(all_pixels),
         geometry={"line": (x1, y1, x2, y2)},
         data={"methods": list(methods), "columns_differing": len(differing)},
@@ -334,7 +334,7 @@ def _disagreement_figure(pixels: dict[str, list[Pixel]]) -> tuple[PixelFigure, .
 # --- circles -------------------------------------------------------------------------------------
 
 
-def compare_circles(r: Number) -> Solution:
+def compare_circles(r: Number, theory: bool = False) -> Solution:
     """Every circle method side by side over the first octant, measured against the midpoint.
 
     The 8 images of a point ``(x, y)`` depend only on ``{|x|, |y|}``, so two methods plot the
@@ -416,7 +416,10 @@ def compare_circles(r: Number) -> Solution:
         given=sols["midpoint"].given[:1],
         derived=derived,
         notes=tuple(notes),
-        tables=(Table("First octant side by side (y for each x)", columns, rows),),
+        tables=(
+            Table("First octant side by side (y for each x)", columns, rows),
+            *_theory("circle", theory),
+        ),
         figures=_disagreement_figure({m: _plotted(sols[m]) for m in methods}),
         geometry={"circle": (0, 0, ir)},
         data={"methods": list(methods), "columns_differing": len(differing)},
@@ -493,3 +496,50 @@ def _octant_samples(sol: Solution, x: int) -> Iterator[tuple[Any, Any]]:
             continue
         sx, sy = s.extra[-2:]  # the methods' own (x, y) columns come last
         yield (sx, sy) if px <= py else (sy, sx)
+
+
+def _theory(kind: str, wanted: bool) -> tuple[Table, ...]:
+    """The points the notes' comparison questions expect, as a table (``theory=True``)."""
+    from . import theory as th
+
+    if not wanted:
+        return ()
+    if kind == "line":
+        return (
+            th.theory_table(
+                "Theory: DDA vs Bresenham", ("point", "DDA", "Bresenham"), th.LINE_THEORY
+            ),
+        )
+    return (
+        th.theory_table(
+            "Theory: general method vs Bresenham (midpoint)",
+            ("point", "general method", "Bresenham"),
+            th.CIRCLE_THEORY,
+        ),
+    )
+
+
+def compare_curves() -> Solution:
+    """The points the notes' Bezier vs B-spline comparison expects (a theory table only).
+
+    >>> len(list(compare_curves().tables[0].rows()))
+    5
+    """
+    from . import theory as th
+
+    return Solution(
+        primitive="curve",
+        algorithm="compare",
+        title="Bezier vs B-spline curves",
+        given=(rule("question", r"\text{Compare Bezier and B-spline curves}"),),
+        derived=(),
+        notes=(
+            "A clamped B-spline does pass through its first and last control points "
+            "(docs/errata.md, E4); the notes' 'does not pass' holds for unclamped knots.",
+        ),
+        tables=(
+            th.theory_table(
+                "Theory: Bezier vs B-spline", ("point", "Bezier", "B-spline"), th.CURVE_THEORY
+            ),
+        ),
+    )

@@ -87,8 +87,8 @@ def continuity_solution(
         )
     )
     notes = [
-        "A(t) has control points P_0 .. P_n, B(t) has Q_0 .. Q_m; each runs over 0 ≤ t ≤ 1 and "
-        "they join at A(1) and B(0).",
+        "$A(t)$ has control points $P_0 \\ldots P_n$, $B(t)$ has $Q_0 \\ldots Q_m$; each runs over "
+        "$0 \\le t \\le 1$ and they join at $A(1)$ and $B(0)$.",
         "C0: positions equal (position continuity); C1: first derivatives equal (tangent "
         "continuity); C2: second derivatives equal too (curvature continuity).",
     ]

@@ -7,11 +7,11 @@ from collections.abc import Iterator
 from fractions import Fraction
 from itertools import dropwhile, takewhile
 
+from ..algorithms.conventions import convention_note, resolve
 from ..algorithms.ellipses import (
     MAX_AXIS,
     images,
     midpoint_ellipse,
-    quadrant_points,
     quarter,
     region1_end,
     symmetric_pixels,
@@ -29,6 +29,7 @@ from ..core.records import (
     step_getter,
     worked,
 )
+from . import theory
 from .circle import symmetry_table
 
 # --- the Solution -----------------------------------------------------------------------------
@@ -47,8 +48,23 @@ def _region_columns(p: str) -> tuple[Column, ...]:
 _EXTRA = ("region", "two_ry2_x", "two_rx2_y")
 
 
-def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> Solution:
+def ellipse_solution(
+    rx: Number,
+    ry: Number,
+    xc: Number = 0,
+    yc: Number = 0,
+    *,
+    loop: str | None = None,
+    convention: str | None = None,
+    derive: bool = False,
+    pseudocode: bool = False,
+    annotate: bool = False,
+) -> Solution:
     """The worked solution of the midpoint ellipse with semi-axes ``rx``, ``ry``.
+
+    ``loop`` is the region-1 loop convention (``"strict"``: while 2ry²x < 2rx²y, or
+    ``"inclusive"``: <=), ``convention`` a named preset; ``derive`` adds the derivation,
+    ``pseudocode`` the algorithm as a table, ``annotate`` the note naming the conventions.
 
     Raises ``ValueError`` for a negative or non-integer semi-axis or centre. ``rx = ry = 0``
     plots the centre; one zero semi-axis gives the segment between the tips.
@@ -63,6 +79,8 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
     >>> sum(1 for _ in sol.pixels()), sol.bbox
     (40, (-8, -6, 8, 6))
     """
+    knobs = resolve("ellipse", "midpoint", convention, {"loop": loop})
+    loop = knobs["loop"]
     irx = check_integer(rx, "rx", negative=False)
     iry = check_integer(ry, "ry", negative=False)
     ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
@@ -73,7 +91,8 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
             "rx" if irx > MAX_AXIS else "ry",
         )
     rx2, ry2 = irx * irx, iry * iry
-    x0, y0 = region1_end(irx, iry)
+    cmp = r"\le" if loop == "inclusive" else "<"
+    x0, y0 = region1_end(irx, iry, loop)
     p1 = quarter(4 * ry2 - 4 * rx2 * iry + rx2)
     p2 = quarter(ry2 * (2 * x0 + 1) ** 2 + 4 * rx2 * (y0 - 1) ** 2 - 4 * rx2 * ry2)
     half = Fraction(2 * x0 + 1, 2)
@@ -91,7 +110,7 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
         worked(
             "region1",
             (2 * rx2 * iry,),
-            f"\\text{{region 1 from }} (0, {iry}) \\text{{ while }} 2r_y^2 x < 2r_x^2 y\\ "
+            f"\\text{{region 1 from }} (0, {iry}) \\text{{ while }} 2r_y^2 x {cmp} 2r_x^2 y\\ "
             f"(2r_x^2 y \\text{{ starts at }} {2 * rx2 * iry})",
         ),
         worked(
@@ -130,11 +149,18 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
         )
     notes.append("Each quadrant point is mirrored into 4 pixels; a pixel is listed once.")
 
+    if annotate:
+        notes.append(convention_note("ellipse", convention, knobs))
+    if derive:
+        derived = (*derived, theory.DERIVATION, *theory.ellipse_derivation(irx, iry))
+
     def steps() -> Iterator[Step]:
-        return midpoint_ellipse(irx, iry)
+        return midpoint_ellipse(irx, iry, loop)
 
     def points() -> Iterator[Pixel]:
-        return quadrant_points(irx, iry)
+        yield (0, iry)
+        for st in midpoint_ellipse(irx, iry, loop):
+            yield st.pixel
 
     columns = (heading("region", r"\text{region}"), *_region_columns("p"))
     get1 = step_getter(_region_columns("p1"), _EXTRA)
@@ -150,6 +176,7 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
         Table("Region 1 (slope magnitude below 1)", _region_columns("p1"), region1),
         Table("Region 2 (slope magnitude 1 or more)", _region_columns("p2"), region2),
         symmetry_table(points, images, ixc, iyc),
+        *((theory.ellipse_code(loop),) if pseudocode else ()),
     )
     return Solution(
         primitive="ellipse",
@@ -167,4 +194,5 @@ def ellipse_solution(rx: Number, ry: Number, xc: Number = 0, yc: Number = 0) -> 
         show_steps=False,
         marks=((ixc, iyc),),
         geometry={"ellipse": (ixc, iyc, irx, iry), "symmetry": 4, "center": (ixc, iyc)},
+        data={"conventions": knobs} if annotate else {},
     )

@@ -5,11 +5,13 @@ from __future__ import annotations
 from collections.abc import Iterator
 from fractions import Fraction
 
+from ..algorithms.conventions import ROUNDING_TEXT, convention_note, resolve
 from ..algorithms.lines import (
     ALGORITHMS,
     abs_value,
     basic,
     bresenham,
+    bresenham_notes,
     dda,
     dda_increments,
     dda_steps,
@@ -25,7 +27,8 @@ from ..core.numeric import (
     normalize,
     round_half_up,
 )
-from ..core.records import Pixel, Quantity, Solution, Step, heading, worked
+from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, worked
+from . import theory
 
 # --- Solutions: the exam answer around the steps -------------------------------------------
 
@@ -109,11 +112,32 @@ def _title(name: str, x1: Number, y1: Number, x2: Number, y2: Number) -> str:
     return f"{name}: ({fmt_short(x1)}, {fmt_short(y1)}) to ({fmt_short(x2)}, {fmt_short(y2)})"
 
 
-def line_solution(algo: str, x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
+def line_solution(
+    algo: str,
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    *,
+    rounding: str | None = None,
+    tie: str | None = None,
+    convention: str | None = None,
+    layout: str = "textbook",
+    derive: bool = False,
+    pseudocode: bool = False,
+    annotate: bool = False,
+) -> Solution:
     """The worked solution of a line with one of :data:`ALGORITHMS`.
 
-    Raises ``ValueError`` for an unknown algorithm or a non-integer end point with
-    ``bresenham``.
+    ``rounding`` (dda, basic) and ``tie`` (bresenham) are the conventions
+    (:mod:`scanconv.algorithms.conventions`), ``convention`` a named preset; ``layout`` is
+    ``"notes"`` (Bresenham: row k plots (x_k, y_k), row 0 the start pixel) or ``"textbook"``;
+    ``derive`` adds the derivation, ``pseudocode`` the algorithm as a table; ``annotate``
+    adds the notes naming the conventions used and the course notes' errata (the API's answers
+    have them; a pipeline stage that embeds a line leaves them out).
+
+    Raises ``ValueError`` for an unknown algorithm, a convention that does not apply to it, or
+    a non-integer end point with ``bresenham``.
 
     >>> sol = line_solution("bresenham", 2, 2, 10, 6)
     >>> for q in sol.derived[-3:]:
@@ -124,18 +148,84 @@ def line_solution(algo: str, x1: Number, y1: Number, x2: Number, y2: Number) -> 
     >>> list(sol.pixels())[:4]
     [(2, 2), (3, 3), (4, 3), (5, 4)]
     """
+    if algo not in ALGORITHMS:
+        raise InputError(
+            f"unknown line algorithm {algo!r} (choose from {', '.join(ALGORITHMS)})", "algo"
+        )
+    if layout not in ("notes", "textbook"):
+        raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
+    knobs = resolve("line", algo, convention, {"rounding": rounding, "tie": tie})
     if algo == "bresenham":
-        return _bresenham_solution(x1, y1, x2, y2)
-    if algo == "dda":
-        return _dda_solution(x1, y1, x2, y2)
-    if algo == "basic":
-        return _basic_solution(x1, y1, x2, y2)
-    raise InputError(
-        f"unknown line algorithm {algo!r} (choose from {', '.join(ALGORITHMS)})", "algo"
-    )
+        sol = _bresenham_solution(x1, y1, x2, y2, knobs["tie"], layout)
+    elif algo == "dda":
+        sol = _dda_solution(x1, y1, x2, y2, knobs["rounding"])
+    else:
+        sol = _basic_solution(x1, y1, x2, y2, knobs["rounding"])
+    if annotate:
+        ends = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
+        extra = [convention_note("line", convention, knobs)]
+        erratum = theory.line_errata(algo, ends)
+        if erratum:
+            extra.append(erratum)
+        sol.notes = (*sol.notes, *extra)
+        sol.data = {**sol.data, "conventions": knobs, "layout": layout}
+    if derive or pseudocode:
+        _theory(sol, algo, x1, y1, x2, y2, knobs, derive, pseudocode)
+    return sol
 
 
-def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
+def _theory(
+    sol: Solution,
+    algo: str,
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    knobs: dict[str, str],
+    derive: bool,
+    code: bool,
+) -> None:
+    """Add the derivation (derived items) and the pseudocode (a table) to ``sol``."""
+    dx, dy = normalize(x2 - x1), normalize(y2 - y1)
+    steep = abs_value(dy) > abs_value(dx)
+    sign = -1 if (dx > 0 > dy or dy > 0 > dx) else 1
+    tables: list[Table] = []
+    if algo == "bresenham":
+        sx, sy, _, _, steep, dmaj, dmin, sign, _, _ = orient(int(x1), int(y1), int(x2), int(y2))
+        if derive:
+            u0, v0 = (sy, sign * sx) if steep else (sx, sign * sy)
+            sol.derived = (
+                *sol.derived,
+                theory.DERIVATION,
+                *theory.bresenham_line_derivation(u0, v0, dmaj, dmin, steep, sign),
+            )
+        if code:
+            swapped = (sx, sy) != (int(x1), int(y1))
+            tables.append(theory.bresenham_line_code(steep, sign, swapped, knobs["tie"]))
+    elif algo == "dda":
+        if derive:
+            sol.derived = (
+                *sol.derived,
+                theory.DERIVATION,
+                *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2)),
+            )
+        if code:
+            tables.append(theory.dda_code(steep, sign, knobs["rounding"]))
+    else:
+        if derive:
+            sol.derived = (
+                *sol.derived,
+                theory.DERIVATION,
+                *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2))[:1],
+            )
+        if code:
+            tables.append(theory.basic_code(steep, knobs["rounding"]))
+    sol.tables = (*sol.tables, *tables)
+
+
+def _bresenham_solution(
+    x1: Number, y1: Number, x2: Number, y2: Number, tie: str = "step", layout: str = "textbook"
+) -> Solution:
     for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2")):
         if normalize(v) != int(v):
             raise InputError(
@@ -151,6 +241,7 @@ def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solut
     dmin_t = f"|\\Delta {mnr}|" if sign < 0 else f"\\Delta {mnr}"
     p0 = 2 * dmin - dmaj
     inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
+    lt, ge = ("\\le", ">") if tie == "keep" else ("<", "\\ge")
     derived = [
         _diff("x", sx, ex, "dx"),
         _diff("y", sy, ey, "dy"),
@@ -160,13 +251,13 @@ def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solut
         worked(
             "inc_keep",
             inc_keep,
-            f"2{dmin_t} = 2 \\cdot {dmin} = {inc_keep} \\quad (\\text{{added when }} p_k < 0)",
+            f"2{dmin_t} = 2 \\cdot {dmin} = {inc_keep} \\quad (\\text{{added when }} p_k {lt} 0)",
         ),
         worked(
             "inc_step",
             inc_step,
             f"2{dmin_t} - 2\\Delta {maj} = 2 \\cdot {dmin} - 2 \\cdot {dmaj} = {inc_step} "
-            f"\\quad (\\text{{added when }} p_k \\ge 0)",
+            f"\\quad (\\text{{added when }} p_k {ge} 0)",
         ),
     ]
     notes = [f"Start at ({sx}, {sy}), plotted before the first step."]
@@ -176,18 +267,31 @@ def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solut
             f"End points swapped so that {maj} increases along the walk: "
             f"(x1, y1) = ({sx}, {sy}), (x2, y2) = ({ex}, {ey}).",
         )
-    notes.append(
-        f"p_k < 0 chooses {stay}, p_k >= 0 chooses {move}; a tie (p_k = 0) steps {mnr} too."
-    )
+    if tie == "keep":
+        notes.append(
+            f"p_k <= 0 chooses {stay}, p_k > 0 chooses {move}; a tie (p_k = 0) keeps {mnr}."
+        )
+    else:
+        notes.append(
+            f"p_k < 0 chooses {stay}, p_k >= 0 chooses {move}; a tie (p_k = 0) steps {mnr} too."
+        )
+    if layout == "notes":
+        notes[notes.index(f"Start at ({sx}, {sy}), plotted before the first step.")] = (
+            f"Row k plots (x_k, y_k) and decides on p_k; row 0 is the start ({sx}, {sy}), the "
+            "last row the end point (no decision)."
+        )
 
     def steps() -> Iterator[Step]:
-        return bresenham(ix1, iy1, ix2, iy2)
+        if layout == "notes":
+            return bresenham_notes(ix1, iy1, ix2, iy2, tie)
+        return bresenham(ix1, iy1, ix2, iy2, tie)
 
     def pixels() -> Iterator[Pixel]:
         yield (sx, sy)
-        for s in bresenham(ix1, iy1, ix2, iy2):
+        for s in bresenham(ix1, iy1, ix2, iy2, tie):
             yield s.pixel
 
+    pixel_head = "(x_k, y_k)" if layout == "notes" else "(x_{k+1}, y_{k+1})"
     return Solution(
         primitive="line",
         algorithm="bresenham",
@@ -198,7 +302,7 @@ def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solut
             heading("k", "k"),
             heading("p", "p_k"),
             heading("decision", r"\text{decision}"),
-            heading("pixel", "(x_{k+1}, y_{k+1})"),
+            heading("pixel", pixel_head),
             heading("p_next", "p_{k+1}"),
         ),
         extra_keys=("p_next",),
@@ -210,7 +314,9 @@ def _bresenham_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solut
     )
 
 
-def _dda_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
+def _dda_solution(
+    x1: Number, y1: Number, x2: Number, y2: Number, rounding: str = "half-up"
+) -> Solution:
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
     steps_n = dda_steps(x1, y1, x2, y2)
     xi, yi = dda_increments(x1, y1, x2, y2)
@@ -240,7 +346,11 @@ def _dda_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
             )
     notes = (
         "x_{k+1} = x_k + x_inc and y_{k+1} = y_k + y_inc, computed exactly;"
-        " pixels are round half up, floor(v + 1/2).",
+        + (
+            " pixels are round half up, floor(v + 1/2)."
+            if rounding == "half-up"
+            else f" pixels are {ROUNDING_TEXT[rounding]}."
+        ),
     )
     return Solution(
         primitive="line",
@@ -257,15 +367,17 @@ def _dda_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
             heading("pixel", r"\text{pixel } (x, y)"),
         ),
         extra_keys=("x", "y", "round_x", "round_y"),
-        steps=lambda: dda(x1, y1, x2, y2),
-        pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2)),
+        steps=lambda: dda(x1, y1, x2, y2, rounding),
+        pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2, rounding)),
         bbox=_bbox((x1, y1), (x2, y2)),
         geometry={"line": (x1, y1, x2, y2)},
         notes=notes,
     )
 
 
-def _basic_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
+def _basic_solution(
+    x1: Number, y1: Number, x2: Number, y2: Number, rounding: str = "half-up"
+) -> Solution:
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
     steep = abs_value(dy) > abs_value(dx)
     derived = [
@@ -303,9 +415,9 @@ def _basic_solution(x1: Number, y1: Number, x2: Number, y2: Number) -> Solution:
             heading("pixel", r"\text{pixel } (x, y)"),
         ),
         extra_keys=(maj, mnr, f"round_{mnr}"),
-        steps=lambda: basic(x1, y1, x2, y2),
-        pixels=lambda: (s.pixel for s in basic(x1, y1, x2, y2)),
+        steps=lambda: basic(x1, y1, x2, y2, rounding),
+        pixels=lambda: (s.pixel for s in basic(x1, y1, x2, y2, rounding)),
         bbox=_bbox((x1, y1), (x2, y2)),
         geometry={"line": (x1, y1, x2, y2)},
-        notes=(f"Each {mnr} is computed exactly and rounded half up, floor(v + 1/2).",),
+        notes=(f"Each {mnr} is computed exactly and {ROUNDING_TEXT[rounding]}.",),
     )

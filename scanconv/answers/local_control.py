@@ -146,8 +146,8 @@ def local_control_solution(
         notes=(
             "Both curves use the same control points and the same number of samples; 'moved' "
             "compares the exact points before and after.",
-            "Bezier curves have global control (every weight is positive inside 0 < t < 1); "
-            "B-splines have local control (N_{i,p} vanishes outside [u_i, u_(i+p+1)]).",
+            "Bezier curves have global control (every weight is positive inside $0 < t < 1$); "
+            "B-splines have local control ($N_{i,p}$ vanishes outside $[u_i, u_{i+p+1}]$).",
             JOIN_NOTE,
         ),
         figures=figures,

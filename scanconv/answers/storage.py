@@ -8,7 +8,7 @@ import math
 from collections.abc import Iterator
 from fractions import Fraction
 
-from ..algorithms.image_limits import MAX_LEVELS, check_bits, check_levels
+from ..algorithms.image_limits import MAX_LEVELS, check_levels, check_storage_bits
 from ..algorithms.storage import UNITS, bits_per_pixel, sizes, storage_bits
 from ..core.checks import InputError, check_positive
 from ..core.numeric import Number, fmt, fmt_short, normalize
@@ -113,7 +113,7 @@ def _depth_quantities(
             [],
         )
     if bits is not None:
-        b = check_bits(bits)
+        b = check_storage_bits(bits)
         return (
             b,
             [

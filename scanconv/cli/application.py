@@ -7,9 +7,11 @@ the order of the command list of ``scanconv --help``).
 
 from __future__ import annotations
 
+import re
 from typing import Annotated, Any
 
 import typer
+from typer.core import TyperGroup
 
 from .. import __version__
 from .output import PROG
@@ -21,8 +23,65 @@ _SETTINGS: dict[str, Any] = {
     "context_settings": {"help_option_names": ["-h", "--help"]},
 }
 
+#: The panels of ``scanconv --help``: each command under the topic of the notes it answers.
+PANELS = (
+    ("Lines, circles and ellipses", ("line", "circle", "ellipse", "parametric")),
+    ("Curves", ("bezier", "bspline", "continuity", "local-control")),
+    ("Image representation", ("image", "storage", "quantize", "sample")),
+    ("Comparisons", ("compare",)),
+    (
+        "The process: clip, transform, fill, anti-alias",
+        ("clip", "transform", "viewport", "pipeline", "polygon", "fill", "antialias"),
+    ),
+)
+
+EXAMPLES = """\b
+Examples:
+  scanconv line 2 2 10 6 --algo bresenham      the worked answer on the terminal
+  scanconv line 2,2 10,6 -f md >> homework.md  append it to your Markdown homework
+  scanconv circle 8 -o circle.tex              LaTeX, the format taken from the name
+  scanconv ellipse 8 6 --brief                 tables, pixels and grid only
+  scanconv compare circle 10                   every circle method side by side
+  scanconv COMMAND --help                      the options of one command"""
+
+
+def _first_sentence(text: str) -> str:
+    """The first sentence of a command's help, whole (click would cut it at 45 characters).
+
+    >>> _first_sentence("Draw the line. Then more.")
+    'Draw the line.'
+    """
+    flat = " ".join(text.split("\n\n")[0].split())
+    end = re.search(r"(?<!\.)\.\s", flat)
+    return flat if end is None else flat[: end.start() + 1]
+
+
+class PanelGroup(TyperGroup):
+    """The root group, listing its commands in :data:`PANELS`, one full sentence each."""
+
+    def format_commands(self, ctx: Any, formatter: Any) -> None:
+        commands = {
+            name: cmd
+            for name in self.list_commands(ctx)
+            if (cmd := self.get_command(ctx, name)) is not None and not cmd.hidden
+        }
+        placed: set[str] = set()
+        for title, names in (*PANELS, ("Other commands", tuple(commands))):
+            rows = [
+                (n, _first_sentence(commands[n].help or commands[n].short_help or ""))
+                for n in names
+                if n in commands and n not in placed
+            ]
+            placed.update(n for n, _ in rows)
+            if rows:
+                with formatter.section(title):
+                    formatter.write_dl(rows)
+
+
 app = typer.Typer(
     name=PROG,
+    cls=PanelGroup,
+    epilog=EXAMPLES,
     help="Scan-conversion algorithms as exam-style worked solutions: the derivation, the step "
     "table, the pixels and a pixel grid. Coordinates are (x, y) with y up.",
     pretty_exceptions_enable=False,
@@ -45,6 +104,10 @@ parametric_app = _subapp(
     "parametric",
     "Parametric curves x(t), y(t): line, circle, ellipse, parabola or your own formulas.",
 )
+clip_app = _subapp("clip", "Clip a line or a polygon against a rectangular window.")
+pipeline_app = _subapp(
+    "pipeline", "The scan-conversion process end to end: clip, map to the viewport, scan convert."
+)
 
 
 def _version(value: bool) -> None:
@@ -64,4 +127,4 @@ def _root(
 
 
 # Register the commands (each module adds its own to ``app`` and the groups above).
-from . import lines, image, curves, circles, compare  # noqa: E402, F401, I001
+from . import lines, image, curves, circles, compare, process, fill  # noqa: E402, F401, I001

@@ -5,11 +5,18 @@ from __future__ import annotations
 from typing import Annotated
 
 from .. import _api as api
-from ..algorithms.circles import CircleMethod, Rounding
+from ..algorithms.circles import CircleMethod
+from ..algorithms.conventions import P0, Layout, Loop, Update
 from ..core.records import Solution
 from .application import app
 from .command import answers
+from .lines import CodeOpt, ConventionOpt, DeriveOpt, LayoutOpt, RoundingOpt, TieOpt
 from .options import NUMERIC_ARGS, Center, Num, choice
+
+LoopOpt = Annotated[
+    Loop | None,
+    choice("--loop", help="The octant (region-1) loop: strict (x < y) or inclusive (x <= y)."),
+]
 
 
 @app.command(context_settings=NUMERIC_ARGS)
@@ -18,29 +25,71 @@ def circle(
     r: Num,
     center: Center = None,
     method: Annotated[
-        CircleMethod, choice("--method", "-m", help="Circle method.")
-    ] = CircleMethod.midpoint,
-    rounding: Annotated[
-        Rounding,
+        CircleMethod,
         choice(
-            "--rounding",
-            help="polynomial, trig and symmetric-dda: round half up, floor(v + 1/2), or "
-            "truncate like a C (int) cast.",
+            "--method",
+            "-m",
+            help="Circle method: midpoint (the notes' Topic 9 'Bresenham', p0 = 1 - r), "
+            "bresenham (d0 = 3 - 2r), general (the notes' p0 = 0 at the point), polynomial "
+            "(square root), trig, symmetric-dda.",
         ),
-    ] = Rounding.half_up,
+    ] = CircleMethod.midpoint,
+    rounding: RoundingOpt = None,
+    tie: TieOpt = None,
+    p0: Annotated[
+        P0 | None, choice("--p0", help="midpoint: p0 printed as 1-r (integers) or 5/4-r.")
+    ] = None,
+    loop: LoopOpt = None,
+    update: Annotated[
+        Update | None,
+        choice("--update", help="midpoint: increments written with the new x or the old x."),
+    ] = None,
+    convention: ConventionOpt = None,
+    layout: LayoutOpt = Layout.notes,
+    derive: DeriveOpt = False,
+    pseudocode: CodeOpt = False,
 ) -> Solution:
     """Draw the circle of radius R: one octant's step table, the 8-way symmetry, the pixels.
 
     Example: scanconv circle 8 --center 10 10 --method bresenham
     """
-    return api.circle(r, center or (0, 0), method=method, rounding=rounding)
+    return api.circle(
+        r,
+        center or (0, 0),
+        method=method,
+        rounding=rounding,
+        tie=tie,
+        p0=p0,
+        loop=loop,
+        update=update,
+        convention=convention,
+        layout=layout,
+        derive=derive,
+        pseudocode=pseudocode,
+    )
 
 
 @app.command(context_settings=NUMERIC_ARGS)
 @answers(figures=True)
-def ellipse(rx: Num, ry: Num, center: Center = None) -> Solution:
+def ellipse(
+    rx: Num,
+    ry: Num,
+    center: Center = None,
+    loop: LoopOpt = None,
+    convention: ConventionOpt = None,
+    derive: DeriveOpt = False,
+    pseudocode: CodeOpt = False,
+) -> Solution:
     """Draw the ellipse with semi-axes RX, RY by the midpoint method (regions 1 and 2).
 
     Example: scanconv ellipse 8 6 --center 0 0
     """
-    return api.ellipse(rx, ry, center or (0, 0))
+    return api.ellipse(
+        rx,
+        ry,
+        center or (0, 0),
+        loop=loop,
+        convention=convention,
+        derive=derive,
+        pseudocode=pseudocode,
+    )

@@ -21,6 +21,8 @@ from typer.models import OptionInfo, ParameterInfo
 from ..core.records import Solution
 from ..render import Format
 from .options import (
+    BriefOpt,
+    ExactOpt,
     ExplainOpt,
     FormatOpt,
     GridOpt,
@@ -33,7 +35,7 @@ from .options import (
 )
 from .output import Output, emit, fail
 
-SHARED = ("fmt", "grid", "origin", "output", "explain", "svg", "png")
+SHARED = ("fmt", "grid", "origin", "output", "brief", "exact", "explain", "svg", "png")
 """The shared output options, in the order they are listed after a command's own."""
 
 ALIASES = {
@@ -59,6 +61,8 @@ def _shared(
     annotations: dict[str, tuple[Any, Any]] = {
         "fmt": (FormatOpt, Format.auto),
         "output": (OutputOpt, None),
+        "brief": (BriefOpt, False),
+        "exact": (ExactOpt, False),
         "explain": (ExplainOpt, False),
     }
     if grid:
@@ -79,7 +83,8 @@ def answers(
 ) -> Callable[[Callable[..., Solution]], Callable[..., None]]:
     """Make a function that returns a ``Solution`` into a command that writes it.
 
-    The command gets ``--format``, ``--output`` and ``--explain``; ``--grid/--no-grid`` and
+    The command gets ``--format``, ``--output``, ``--brief`` (and the hidden no-op
+    ``--explain``); ``--grid/--no-grid`` and
     ``--origin`` unless ``grid`` is false (``--origin`` also unless ``origin`` is false; the
     grid is the shaded picture with ``picture``); and ``--svg`` and ``--png`` with
     ``figures``. A shared option the function declares itself (``sample`` has its own

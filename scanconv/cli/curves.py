@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
+from ..core.checks import InputError
 from ..core.records import Solution
 from .application import app, parametric_app
 from .command import answers
@@ -17,12 +18,12 @@ from .options import (
     CurveCenter,
     Degree,
     Knots,
-    Num,
     Points,
     Samples,
     Segments,
     TRange,
     Vertex,
+    num_arg,
     num_option,
     number,
     segments,
@@ -34,16 +35,29 @@ from .options import (
 @parametric_app.command("circle", context_settings=NUMERIC_ARGS)
 @answers(figures=True)
 def parametric_circle(
+    r: Annotated[
+        Fraction | None,
+        typer.Argument(
+            parser=number, show_default=False, help="Radius r, as in circle (or --radius)."
+        ),
+    ] = None,
     center: CurveCenter = ORIGIN,
-    radius: Annotated[Fraction, num_option("--radius", "-r", help="Radius r.")] = Fraction(1),
+    radius: Annotated[
+        Fraction | None, num_option("--radius", "-r", help="Radius r (default 1).")
+    ] = None,
     t_range: TRange = None,
     samples: Samples = None,
 ) -> Solution:
     """x = xc + r cos t, y = yc + r sin t, 0 <= t <= 2 pi.
 
-    Example: scanconv parametric circle --center 0 0 --radius 5 --samples 16
+    Example: scanconv parametric circle 5 --center 0 0 --samples 16
     """
-    return api.parametric_circle(center, radius, t_range=t_range, samples=samples)
+    if r is not None and radius is not None and r != radius:
+        raise InputError(
+            f"unexpected extra argument {r}: the radius is already given by --radius {radius}"
+        )
+    chosen = r if r is not None else radius if radius is not None else Fraction(1)
+    return api.parametric_circle(center, chosen, t_range=t_range, samples=samples)
 
 
 @parametric_app.command("ellipse", context_settings=NUMERIC_ARGS)
@@ -80,7 +94,12 @@ def parametric_parabola(
 @parametric_app.command("line", context_settings=NUMERIC_ARGS)
 @answers(figures=True)
 def parametric_line(
-    x0: Num, y0: Num, x1: Num, y1: Num, t_range: TRange = None, samples: Samples = None
+    x0: Annotated[Fraction, num_arg("x of the start point P0.", "X0")],
+    y0: Annotated[Fraction, num_arg("y of the start point P0.", "Y0")],
+    x1: Annotated[Fraction, num_arg("x of the end point P1.", "X1")],
+    y1: Annotated[Fraction, num_arg("y of the end point P1.", "Y1")],
+    t_range: TRange = None,
+    samples: Samples = None,
 ) -> Solution:
     """x = x0 + t (x1 - x0), y = y0 + t (y1 - y0), 0 <= t <= 1.
 
@@ -137,7 +156,15 @@ def bezier(
 @app.command(context_settings=NUMERIC_ARGS)
 @answers(figures=True)
 def bspline(
-    points: Points,
+    points: Annotated[
+        list[Fraction] | None,
+        typer.Argument(
+            parser=number,
+            metavar="[X0 Y0 X1 Y1 ...]",
+            show_default=False,
+            help="Control points as x y pairs (none with --basis and an explicit --knots list).",
+        ),
+    ] = None,
     degree: Degree = 3,
     knots: Knots = "open",
     basis: Annotated[
@@ -149,11 +176,20 @@ def bspline(
     """B-spline of degree p (Cox-de Boor): basis values N_i,p(t) per t, the curve, pixels.
 
     Example: scanconv bspline 0 0 1 2 3 3 4 0 5 2 --degree 2 --knots open
+    (the basis alone: scanconv bspline --basis --degree 2 --knots 0,.25,.5,.75,1)
     """
+    if basis:
+        if t is not None:
+            return api.bspline_at(points or [], t, degree, knots)
+        return api.bspline_basis(points, degree, knots, samples)
+    if not points:
+        raise InputError(
+            "missing control points X0 Y0 X1 Y1 ... (only --basis takes a degree and a knot "
+            "list alone)",
+            "points",
+        )
     if t is not None:
         return api.bspline_at(points, t, degree, knots)
-    if basis:
-        return api.bspline_basis(points, degree, knots, samples)
     return api.bspline(points, degree, knots, samples)
 
 

@@ -20,6 +20,13 @@ from .application import app
 from .output import PROG, note
 
 _MINUS = "\u2212"
+_NUM = r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:/\d+)?"
+_POINT = re.compile(rf"^\(?\s*({_NUM})\s*,\s*({_NUM})\s*\)?$")
+_SIZE = re.compile(r"^(\d+)\s*[xX\u00d7]\s*(\d+)$")
+_FORMAT_NAMES = {"md": "markdown", "tex": "latex", "txt": "plain", "text": "plain"}
+#: Options whose value is text the library parses itself (never split as a point).
+_TEXT_OPTIONS = {"--knots", "--at", "--t-range", "--domain", "--size", "-o", "--output"}
+_TEXT_OPTIONS |= {"--svg", "--png", "--x", "--y", "--formula"}
 _NEG_NONFINITE = re.compile(r"-(inf|infinity|nan)$", re.IGNORECASE)
 
 
@@ -56,6 +63,53 @@ def _only(group: typer.Typer, argv: list[str]) -> typer.Typer:
     return one
 
 
+def students(argv: list[str]) -> list[str]:
+    """``argv`` with what students type made into what the commands take: a point written
+    ``2,2`` or ``(2, 2)`` is two numbers, ``storage 1024x768`` is two sizes, ``-f md`` is
+    markdown (``tex``: latex, ``txt``: plain).
+
+    >>> students(["line", "(2,2)", "10,6", "-f", "md"])
+    ['line', '2', '2', '10', '6', '-f', 'markdown']
+    >>> students(["storage", "1024x768", "--knots", "0,1"])
+    ['storage', '1024', '768', '--knots', '0,1']
+    """
+    out: list[str] = []
+    for i, a in enumerate(argv):
+        before = argv[i - 1] if i else ""
+        point = _POINT.match(a)
+        size = _SIZE.match(a)
+        if before in ("-f", "--format") and a.lower() in _FORMAT_NAMES:
+            out.append(_FORMAT_NAMES[a.lower()])
+        elif a.startswith("--format=") and a[9:].lower() in _FORMAT_NAMES:
+            out.append("--format=" + _FORMAT_NAMES[a[9:].lower()])
+        elif point and before not in _TEXT_OPTIONS:
+            out.extend(point.groups())
+        elif size and argv[:1] == ["storage"] and before not in _TEXT_OPTIONS:
+            out.extend(size.groups())
+        else:
+            out.append(a)
+    return out
+
+
+def _usage_message(err: Exception) -> str:
+    """click's message, in the words a student expects: an unknown flag is "No such option",
+    a choice close to a valid one names it."""
+    message = " ".join(err.format_message().split()).replace("Value error, ", "")  # type: ignore[attr-defined]
+    extra = re.match(r"Got unexpected extra argument(?:\(s\)|s)? \((-[^ )]*)[^)]*\)", message)
+    if extra:
+        return f"No such option: {extra.group(1)}"
+    choice = re.search(r"'([^']*)' is not one of ((?:'[^']*'(?:, )?)+)", message)
+    if choice:
+        import difflib
+
+        given, names = choice.group(1), re.findall(r"'([^']*)'", choice.group(2))
+        close = [n for n in names if given.lower() in n.lower()]
+        close = close or difflib.get_close_matches(given, names, n=1)
+        if close:
+            message = message.rstrip(".") + f"; did you mean '{close[0]}'?"
+    return message
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the CLI; return (and exit with) its status. Never shows a traceback for bad input."""
     from typer._click import exceptions as click_exc  # typer vendors click
@@ -66,7 +120,7 @@ def main(argv: list[str] | None = None) -> int:
         argv = sys.argv[1:]
     # "-inf"/"-nan" would be read as bundled short options (-i -n -f ...); keep them arguments
     # so the number parser names them.
-    argv = [_MINUS + a[1:] if _NEG_NONFINITE.match(a) else a for a in argv]
+    argv = [_MINUS + a[1:] if _NEG_NONFINITE.match(a) else a for a in students(argv)]
     command = _command_for(argv)
     code = 0
     previous_term = _catch_sigterm()
@@ -74,9 +128,11 @@ def main(argv: list[str] | None = None) -> int:
         result = command.main(args=argv, prog_name=PROG, standalone_mode=False)
         code = result if isinstance(result, int) else 0
         sys.stdout.flush()
+    except click_exc.NoArgsIsHelpError as err:  # ``scanconv``, ``scanconv parametric``
+        print(err.ctx.get_help() if err.ctx is not None else err.format_message())
+        code = 0
     except click_exc.UsageError as err:
-        message = " ".join(err.format_message().split()).replace("Value error, ", "")
-        note(f"error: {message}")
+        note(f"error: {_usage_message(err)}")
         code = 2
     except click_exc.ClickException as err:
         note(f"error: {' '.join(err.format_message().split())}")

@@ -15,22 +15,24 @@ from .options import (
     NUMERIC_ARGS,
     ColorModel,
     InputKind,
-    Num,
     Origin,
     Recon,
     Size,
     choice,
+    num_arg,
     num_option,
 )
 
-_BITS = num_option("--bits", help="Bits per pixel B (1-24).")
+_BITS = num_option("--bits", help="Bits per pixel B (1-24; storage also 32, 48, 64).")
 
 
 @app.command(context_settings=NUMERIC_ARGS)
 @answers(grid=False)
 def storage(
-    m: Num,
-    n: Num,
+    m: Annotated[
+        Fraction, num_arg("M, the first size (1024 in 1024 x 768; 1024x768 works too).", "M")
+    ],
+    n: Annotated[Fraction, num_arg("N, the second size (768 in 1024 x 768).", "N")],
     levels: Annotated[
         Fraction | None, num_option("--levels", "-L", help="Gray levels L (k = ceil(log2 L)).")
     ] = None,

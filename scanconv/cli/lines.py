@@ -4,12 +4,51 @@ from __future__ import annotations
 
 from typing import Annotated
 
+import typer
+
 from .. import _api as api
+from ..algorithms.conventions import Convention, Layout, Rounding, Tie
 from ..algorithms.lines import LineAlgorithm
 from ..core.records import Solution
 from .application import app
 from .command import answers
 from .options import NUMERIC_ARGS, Num, choice
+
+ConventionOpt = Annotated[
+    Convention | None,
+    choice(
+        "--convention",
+        help="A named preset of the conventions: notes (default), hearn-baker, foley, "
+        "wikipedia (lines only); single options override it.",
+    ),
+]
+LayoutOpt = Annotated[
+    Layout,
+    choice("--layout", help="Table rows as the notes print them, or the textbook's."),
+]
+DeriveOpt = Annotated[
+    bool, typer.Option("--derive", help="Add the derivation with this input's numbers.")
+]
+CodeOpt = Annotated[
+    bool,
+    typer.Option("--algorithm", help="Add the pseudocode of the variant used for this input."),
+]
+RoundingOpt = Annotated[
+    Rounding | None,
+    choice(
+        "--rounding",
+        help="How computed coordinates become pixels: half-up floor(v + 1/2), trunc, half-even "
+        "(Python round), c-cast (int)(v + 0.5), half-away (C round).",
+    ),
+]
+TieOpt = Annotated[
+    Tie | None,
+    choice(
+        "--tie",
+        help="A decision parameter of 0: step the minor coordinate (if p < 0 keep) or keep it "
+        "(if p <= 0 keep).",
+    ),
+]
 
 
 @app.command(context_settings=NUMERIC_ARGS)
@@ -22,9 +61,27 @@ def line(
     algo: Annotated[
         LineAlgorithm, choice("--algo", "-a", help="Line algorithm.")
     ] = LineAlgorithm.bresenham,
+    rounding: RoundingOpt = None,
+    tie: TieOpt = None,
+    convention: ConventionOpt = None,
+    layout: LayoutOpt = Layout.notes,
+    derive: DeriveOpt = False,
+    pseudocode: CodeOpt = False,
 ) -> Solution:
     """Draw the line from (X1, Y1) to (X2, Y2), with the step table of the chosen algorithm.
 
     Example: scanconv line 2 2 10 6 --algo bresenham --svg line.svg
     """
-    return api.line(x1, y1, x2, y2, algo=algo)
+    return api.line(
+        x1,
+        y1,
+        x2,
+        y2,
+        algo=algo,
+        rounding=rounding,
+        tie=tie,
+        convention=convention,
+        layout=layout,
+        derive=derive,
+        pseudocode=pseudocode,
+    )

@@ -8,7 +8,7 @@ refused before the command runs, naming its option. Formulas (``--at``, ``--t-ra
 itself; the API (:mod:`scanconv._api`) takes the same text.
 
 The output options every command shares (``--format``, ``--grid``, ``--origin``, ``--output``,
-``--explain``, ``--svg``, ``--png``) are declared at the end and added to each command by
+``--brief``, ``--svg``, ``--png``; ``--explain`` is kept, hidden, as a no-op) are declared at the end and added to each command by
 :func:`scanconv.cli.command.answers`.
 """
 
@@ -130,6 +130,12 @@ class Recon(str, Enum):
 Num = Annotated[Fraction, typer.Argument(parser=number, show_default=False)]
 """A positional exact number (integer, decimal or a/b); negative values are accepted."""
 
+
+def num_arg(help: str, metavar: str | None = None) -> Any:
+    """A positional exact number with its help (``scanconv storage --help`` lists it)."""
+    return typer.Argument(parser=number, show_default=False, help=help, metavar=metavar)
+
+
 Points = Annotated[
     list[Fraction],
     typer.Argument(parser=number, metavar="X0 Y0 X1 Y1 ...", help="Control points as x y pairs."),
@@ -227,12 +233,27 @@ OutputOpt = Annotated[
         dir_okay=False,
     ),
 ]
+ExactOpt = Annotated[
+    bool,
+    typer.Option(
+        "--exact",
+        help="Show the table's non-integer values as exact fractions (34/27) instead of "
+        "3 decimals.",
+    ),
+]
+BriefOpt = Annotated[
+    bool,
+    typer.Option(
+        "--brief",
+        help="On a terminal, leave the working out: just the tables, the pixels and the grid.",
+    ),
+]
 ExplainOpt = Annotated[
     bool,
     typer.Option(
         "--explain",
-        help="rich format: also show the derivation (given values, working with the numbers "
-        "substituted, notes). markdown, latex and plain always show it.",
+        hidden=True,
+        help="Accepted for old scripts; the working is always shown (see --brief).",
     ),
 ]
 SvgOpt = Annotated[

@@ -30,6 +30,8 @@ class Output(NamedTuple):
     origin: Origin = Origin.bottom_left
     output: Path | None = None
     explain: bool = False
+    brief: bool = False
+    exact: bool = False
     svg: Path | None = None
     png: Path | None = None
 
@@ -52,7 +54,7 @@ def fail(message: str, code: int = 2) -> NoReturn:
     raise typer.Exit(code)
 
 
-def _write(chunks: Iterable[Any], out: Any) -> None:
+def _write(chunks: Iterable[Any], out: Any, width: int | None = None) -> None:
     console = None
     for chunk in chunks:
         if isinstance(chunk, str):
@@ -64,7 +66,7 @@ def _write(chunks: Iterable[Any], out: Any) -> None:
             if console is None:
                 from rich.console import Console
 
-                console = Console(file=out, highlight=False, emoji=False, markup=False)
+                console = Console(file=out, highlight=False, emoji=False, markup=False, width=width)
                 console.on_broken_pipe = _broken_pipe  # type: ignore[method-assign]
             console.print(chunk)
 
@@ -82,19 +84,65 @@ def emit(solution: Solution, out: Output) -> None:
     cannot be drawn (a ``ValueError``, exit 2 by the caller) or written (exit 1) leaves stdout
     empty.
     """
+    out = out._replace(fmt=format_for_file(out.fmt, out.output))
     if out.svg is not None or out.png is not None:
         write_figures(solution, out.origin, out.svg, out.png)
     fmt = resolve(out.fmt, out.output is not None)
-    options = Options(grid=out.grid, origin=out.origin.value, explain=out.explain)
+    width = None
+    if fmt is Format.rich:
+        width = terminal_width(sys.stdout if out.output is None else None)
+    options = Options(
+        grid=out.grid, origin=out.origin.value, brief=out.brief, exact=out.exact, width=width
+    )
     chunks = render(solution, fmt, options)
     if out.output is None:
         try:
-            _write(chunks, sys.stdout)
+            _write(chunks, sys.stdout, width)
             sys.stdout.flush()
         except BrokenPipeError:
             _quiet_pipe()
         return
-    write_atomic(out.output, lambda f: _write(chunks, f))
+    write_atomic(out.output, lambda f: _write(chunks, f, width))
+
+
+def terminal_width(stream: Any) -> int:
+    """The width the rich format fits: the terminal's, or ``COLUMNS``, or 80 (rich's own
+    rule, so the answer and the console that prints it agree)."""
+    import io
+
+    from rich.console import Console
+
+    return Console(file=stream if stream is not None else io.StringIO()).width
+
+
+#: The format a file's extension names.
+EXTENSIONS = {
+    ".md": Format.markdown,
+    ".markdown": Format.markdown,
+    ".tex": Format.latex,
+    ".csv": Format.csv,
+    ".json": Format.json,
+    ".txt": Format.plain,
+}
+
+
+def format_for_file(fmt: Format, path: Path | None) -> Format:
+    """The format of ``-o path``: the one ``--format`` names, else the extension's
+    (``answer.tex``: latex, ``a.csv``: csv, ``a.json``: json, ``a.md``: markdown, ``a.txt``:
+    plain). A ``--format`` that contradicts a ``.tex``, ``.csv`` or ``.json`` file is refused
+    (exit 2, nothing written); ``.md`` and ``.txt`` files take any format.
+
+    >>> format_for_file(Format.auto, Path("answer.tex")).value
+    'latex'
+    >>> format_for_file(Format.csv, Path("notes.md")).value
+    'csv'
+    """
+    named = EXTENSIONS.get(path.suffix.lower()) if path is not None else None
+    if named is None or fmt is Format.auto:
+        return named or fmt
+    if fmt is not named and named in (Format.latex, Format.csv, Format.json):
+        fail(f"--output {path} is {named.value} by its extension, but --format is {fmt.value}")
+    return fmt
 
 
 def write_figures(solution: Solution, origin: Origin, svg: Path | None, png: Path | None) -> None:
@@ -109,7 +157,11 @@ def write_figures(solution: Solution, origin: Origin, svg: Path | None, png: Pat
         try:
             data = figure.to_png(fig)
         except ModuleNotFoundError:
-            fail("--png needs Pillow: pip install 'scanconv[png]' (or use --svg)", 1)
+            fail(
+                "--png needs Pillow: pip install 'scanconv[png]' (in a source checkout: "
+                "pip install -e '.[png]'), or use --svg",
+                1,
+            )
         write_atomic(png, lambda f: f.write(data), binary=True)
 
 

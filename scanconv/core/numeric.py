@@ -50,6 +50,34 @@ def round_trunc(v: Number | float) -> int:
     return int(v)
 
 
+def round_half_even(v: Number | float) -> int:
+    """Round to the nearest integer, halves to the even neighbour: Python's ``round()``.
+
+    >>> [round_half_even(Fraction(n, 2)) for n in (1, 3, 5, -1, -3)]
+    [0, 2, 2, 0, -2]
+    """
+    return round(Fraction(v))
+
+
+def round_c_cast(v: Number | float) -> int:
+    """C's ``(int)(a + 0.5)``: add a half, truncate toward zero (wrong below -1/2).
+
+    >>> [round_c_cast(Fraction(n, 2)) for n in (1, 3, -1, -3, -4)]
+    [1, 2, 0, -1, -1]
+    """
+    return int(Fraction(v) + Fraction(1, 2))
+
+
+def round_half_away(v: Number | float) -> int:
+    """Round to the nearest integer, halves away from zero: C's ``round()``.
+
+    >>> [round_half_away(Fraction(n, 2)) for n in (1, 3, -1, -3)]
+    [1, 2, -1, -2]
+    """
+    f = Fraction(v)
+    return round_half_up(f) if f >= 0 else -round_half_up(-f)
+
+
 def parse_number(text: str) -> Fraction:
     """Parse a decimal, integer or ``a/b`` literal exactly.
 

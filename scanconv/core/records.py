@@ -237,6 +237,10 @@ class Solution:
     same steps split up (the ellipse's two regions); csv and json still carry every step."""
     marks: tuple[Pixel, ...] = ()
     """Points drawn differently in the grid (control points, the centre)."""
+    marks_label: str | None = None
+    """What :attr:`marks` are, for the grid's legend (``"centre"``, ``"control point"``);
+    ``None``: the renderer works it out from :attr:`geometry` (``"marked point"`` if it
+    cannot)."""
     figures: tuple[Figure, ...] = ()
     """Extra figures drawn under the pixel grid (a shaded picture of an image matrix, the grids
     of a comparison): data only, drawn by :mod:`scanconv.render`."""

@@ -36,10 +36,20 @@ class Options:
     """Draw the text pixel grid (if it fits, see :mod:`scanconv.render.grid`)."""
     origin: str = "bottom-left"
     """``bottom-left`` (y up, as in the notes) or ``top-left`` (screen addressing, y down)."""
-    explain: bool = False
-    """``rich`` only: also show the derivation (given values, working with the numbers
-    substituted, notes). The document formats (markdown, latex, plain) always show it; the
-    terminal shows the answer (title, tables, pixels, grid) unless asked."""
+    explain: bool = True
+    """Kept for callers of the old option (:meth:`scanconv.display.Answer.to`); no effect:
+    every format shows the derivation unless :attr:`brief`."""
+    brief: bool = False
+    """``rich`` only: leave the derivation (given values, working with the numbers
+    substituted, notes) out. By default the terminal shows the full worked answer, as the
+    document formats (markdown, latex, plain) always do."""
+    exact: bool = False
+    """Table cells: exact values as fractions (``34/27``) instead of 3 decimals (the rule is
+    :func:`scanconv.render.cells.cell`'s). csv and json always carry the exact values."""
+    width: int | None = None
+    """``rich`` only: the terminal's width in columns; every line is made to fit it (wide
+    tables are split, pixel lists wrapped between pairs, a grid too wide is left out with a
+    hint). ``None``: 80."""
 
 
 @dataclass(frozen=True, slots=True)

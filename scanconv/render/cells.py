@@ -7,23 +7,33 @@ transliterated by :func:`ascii_text`; LaTeX gets math through :func:`tex_text`.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Iterator
 from enum import Enum
 from fractions import Fraction
 from typing import Any
 
 from ..core.numeric import fmt, fmt_pixel, json_number
-from ..core.records import Column
+from ..core.records import Column, Solution
+from ..core.working import tex_to_unicode
 
 
-def cell(value: Any, column: Column) -> str:
+def cell(value: Any, column: Column, exact: bool = False) -> str:
     """Display text of one cell (Unicode-free for every value scanconv produces).
+
+    The rule, in every text format: integers print as integers; other numbers to 3 decimals
+    (rounded half up), and a column the notes print with decimals (:attr:`Column.places`:
+    DDA's x_k and y_k, a curve's t) gives every value its decimals. The two coordinates of a
+    point are printed alike: ``(0.500, 1.000)``, never ``(0.500, 1)``. With ``exact``
+    (``--exact``) exact values print as fractions instead: ``1/2``, ``(34/27, 14/9)``.
 
     >>> from scanconv.core.records import Move
     >>> cell(Fraction(5, 2), Column("y", "y", "y", 3)), cell(Move.NE, Column("d", "d", "d"))
     ('2.500', 'NE')
     >>> cell((3, 4), Column("pixel", "", "")), cell(None, Column("p", "", ""))
     ('(3, 4)', '-')
+    >>> cell((Fraction(1, 2), 1), Column("P", "", "")), cell(Fraction(34, 27), Column("t", "", ""), True)
+    ('(0.500, 1.000)', '34/27')
     """
     if value is None:
         return "-"
@@ -31,6 +41,8 @@ def cell(value: Any, column: Column) -> str:
         return str(value.value)
     if isinstance(value, bool):
         return "yes" if value else "no"
+    if exact and isinstance(value, (int, Fraction)):
+        return str(value)
     if isinstance(value, (int, Fraction)):
         return fmt(value, column.places)
     if isinstance(value, float):
@@ -38,7 +50,10 @@ def cell(value: Any, column: Column) -> str:
     if isinstance(value, tuple):
         if len(value) == 2 and all(isinstance(v, int) for v in value):
             return fmt_pixel(value)  # type: ignore[arg-type]
-        return "(" + ", ".join(cell(v, column) for v in value) + ")"
+        if exact or all(isinstance(v, int) for v in value) or column.places is not None:
+            return "(" + ", ".join(cell(v, column, exact) for v in value) + ")"
+        decimals = column._replace(places=3)  # a point's coordinates alike
+        return "(" + ", ".join(cell(v, decimals) for v in value) + ")"
     return str(value)
 
 
@@ -86,3 +101,66 @@ def numeric_column(column: Column) -> bool:
 
 #: Keys of columns that hold words, not numbers (centred, never set in math mode).
 TEXT_KEYS = ("decision", "pixel", "method", "work", "arithmetic", "reason")
+
+
+def note_segments(note: str) -> list[tuple[bool, str]]:
+    """A note split into its text and its math: notes write formulas between ``$...$`` in
+    TeX (``"$p_k < 0$ chooses E"``), so each format can set them as math.
+
+    >>> note_segments("$p_k < 0$ chooses E")
+    [(True, 'p_k < 0'), (False, ' chooses E')]
+    >>> note_segments("costs $5 or more")  # an unpaired $ is text
+    [(False, 'costs $5 or more')]
+    """
+    parts = note.split("$")
+    if len(parts) % 2 == 0:  # an odd number of $: not markup
+        return [(False, note)]
+    return [(i % 2 == 1, part) for i, part in enumerate(parts) if part]
+
+
+def note_unicode(note: str) -> str:
+    """A note for the terminal and plain text: its ``$...$`` math in Unicode.
+
+    >>> note_unicode(r"$p_k < 0$ chooses E, $p_k \geq 0$ chooses NE")
+    'pₖ < 0 chooses E, pₖ ≥ 0 chooses NE'
+    """
+    return "".join(tex_to_unicode(t) if math else t for math, t in note_segments(note))
+
+
+_SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
+_BRACED_SUB = re.compile(r"_\{([^{}]*)\}|_([0-9a-z])(?![0-9a-z])")
+
+
+def unicode_heading(text: str) -> str:
+    """A column heading for the terminal, with no TeX left in it: subscripts the Unicode
+    derivation kept in TeX (``N_{0,2}``) become Unicode where every character has a
+    subscript form, ``N_(1,c)`` otherwise.
+
+    >>> unicode_heading("N_{0,2}(t)"), unicode_heading("(x_c+x, y_c+y)"), unicode_heading("pₖ")
+    ('N₀,₂(t)', '(x_c+x, y_c+y)', 'pₖ')
+    """
+
+    def sub(m: Any) -> str:
+        inner = m.group(1) if m.group(1) is not None else m.group(2)
+        if all(ch == "," or ch.translate(_SUB) != ch for ch in inner):
+            return inner.translate(_SUB)
+        return m.group(0) if m.group(2) is not None else f"_({inner})"
+
+    return _BRACED_SUB.sub(sub, text)
+
+
+def marks_label(solution: Solution) -> str:
+    """What the grid's ``o`` stands for: :attr:`Solution.marks_label`, or worked out from the
+    answer's geometry (a curve's control points, a circle's or ellipse's centre)."""
+    if solution.marks_label:
+        return solution.marks_label
+    geometry = solution.geometry
+    if geometry.get("control"):
+        return "control point"
+    if any(k in geometry for k in ("circle", "ellipse", "center")):
+        return "centre"
+    for note in solution.notes:  # "The centre is marked o in the grid."
+        said = re.search(r"\b[Tt]he (\w+) is marked o\b", note)
+        if said:
+            return said.group(1)
+    return "marked point"

@@ -21,7 +21,7 @@ import json
 from collections.abc import Iterator
 
 from ..core.records import Solution
-from .cells import json_value
+from .cells import json_value, note_unicode
 
 
 def render_csv(solution: Solution) -> Iterator[str]:
@@ -87,7 +87,7 @@ def render_json(solution: Solution) -> Iterator[str]:
         "given": {q.key: json_value(q.value) for q in solution.given},
         "derived": {q.key: json_value(q.value) for q in solution.derived},
         "working": [q.text for q in solution.derived],
-        "notes": list(solution.notes),
+        "notes": [note_unicode(n) for n in solution.notes],  # as "working": Unicode text
         "columns": [c.key for c in solution.columns],
     }
     head.update({k: json_value(v) for k, v in solution.data.items()})

@@ -25,8 +25,8 @@ pixel of step ``k`` as ``k + 1`` and the start pixel, plotted before the first s
 tables whose row ``k`` plots its own point (DDA, the basic method, curves) number it ``k``.
 With 4- or 8-way symmetry (``geometry["symmetry"]`` and ``geometry["center"]``) a step's point
 is relative to the centre, and every mirror image of it carries that step's number (the
-ellipse numbers each region's steps on their own, as its two tables do). A pixel reached by
-several steps keeps the first.
+ellipse's region 2 counts on from region 1, so no number is used twice). A curve's pixels are
+numbered in plotting order. A pixel reached by several steps keeps the first.
 """
 
 from __future__ import annotations
@@ -177,8 +177,26 @@ def label_offset(solution: Solution) -> int:
     return 0
 
 
+def numbering(solution: Solution) -> str:
+    """How :func:`step_labels` numbers the pixels: ``"row"`` (the table's k, or k + 1 when
+    its pixel column is ``(x_{k+1}, y_{k+1})``), ``"continued"`` (the table's k, but later
+    tables, the ellipse's region 2, carry on from the last number instead of starting again
+    at 0) or ``"order"`` (a curve: the plotting order, since several samples may land on one
+    pixel and the joining pixels have no sample).
+    """
+    if solution.geometry.get("polyline") and int(solution.geometry.get("symmetry", 1)) == 1:
+        return "order"
+    previous = -1
+    for step in solution.steps():
+        if step.k <= previous:
+            return "continued"
+        previous = step.k
+    return "row"
+
+
 def step_labels(solution: Solution) -> dict[Pixel, int]:
-    """The step number of every plotted pixel that has one (see the module's notes).
+    """The step number of every plotted pixel that has one (see the module's notes and
+    :func:`numbering`).
 
     >>> from scanconv.answers.line import line_solution
     >>> labels = step_labels(line_solution("bresenham", 2, 2, 10, 6))
@@ -188,14 +206,25 @@ def step_labels(solution: Solution) -> dict[Pixel, int]:
     8
     """
     plotted = set(solution.pixels()) if solution.pixels is not None else set()
+    labels: dict[Pixel, int] = {}
+    how = numbering(solution)
+    if how == "order" and solution.pixels is not None:
+        for i, p in enumerate(solution.pixels()):
+            labels.setdefault(p, i)
+        return labels
     offset = label_offset(solution)
     symmetry = int(solution.geometry.get("symmetry", 1))
     center = solution.geometry.get("center", (0, 0))
-    labels: dict[Pixel, int] = {}
+    shift, previous, last = 0, -1, -1
     for step in solution.steps():
+        if how == "continued" and step.k <= previous:
+            shift = last + 1 - step.k - offset
+        previous = step.k
+        number = step.k + offset + shift
+        last = max(last, number)
         for p in mirror_images(step.pixel, symmetry, center):
             if p in plotted:
-                labels.setdefault(p, step.k + offset)
+                labels.setdefault(p, number)
     if offset:
         for p in plotted:
             labels.setdefault(p, 0)
@@ -386,7 +415,15 @@ def _legend(fig: Figure, solution: Solution, bottom: float, numbered: bool) -> N
     """What the colours and numbers mean, wrapped to the figure's width."""
     parts = ["filled: plotted pixel"]
     if numbered:
-        parts.append("number: step i of pixel (x_i, y_i)")
+        how = numbering(solution)
+        if how == "order":
+            parts.append("number: plotting order")
+        elif label_offset(solution):
+            parts.append("number: k + 1 for row k; 0: start")
+        elif how == "continued":
+            parts.append("number: row k (region 2 counts on)")
+        else:
+            parts.append("number: row k of the step table")
     geometry = solution.geometry
     kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in geometry]
     if geometry.get("polyline"):

@@ -44,11 +44,16 @@ def render_grid(
     marks: Iterable[Pixel] = (),
     margin: int = MARGIN,
     legend: str | None = None,
+    mark_label: str = "marked point",
+    compact: bool = False,
 ) -> list[str]:
     """The grid as lines of text (no trailing newlines).
 
     ``legend`` replaces the key to the symbols (``# = plotted pixel...``) in the last line,
-    for figures whose ``#`` and ``o`` mean something else (``scanconv compare``).
+    for figures whose ``#`` and ``o`` mean something else (``scanconv compare``);
+    ``mark_label`` says what ``o`` is in the usual key (``centre``, ``control point``).
+    ``compact`` draws each cell one character wide and labels x every 5 columns, for a
+    narrow terminal (see :func:`width`).
 
     >>> print("\\n".join(render_grid([(0, 0), (1, 1), (2, 1)], (0, 0, 2, 1))))
      2 | .  .  .  .  .
@@ -63,7 +68,7 @@ def render_grid(
     x1, y1 = bbox[2] + margin, bbox[3] + margin
     plotted = {p for p in pixels if x0 <= p[0] <= x1 and y0 <= p[1] <= y1}
     marked = {p for p in marks if x0 <= p[0] <= x1 and y0 <= p[1] <= y1}
-    w = max(len(str(x)) for x in (x0, x1))
+    w = 1 if compact else max(len(str(x)) for x in (x0, x1))
     lw = max(len(str(y)) for y in (y0, y1))
     ys = range(y0, y1 + 1) if origin == "top-left" else range(y1, y0 - 1, -1)
     lines = []
@@ -82,12 +87,23 @@ def render_grid(
         lines.append(f"{str(y).rjust(lw)} | " + " ".join(cells).rstrip())
     ncols = x1 - x0 + 1
     lines.append(" " * lw + " +" + "-" * (ncols * (w + 1)))
-    labels = " ".join(str(x).ljust(w) for x in range(x0, x1 + 1)).rstrip()
+    if compact:
+        row = [" "] * (ncols * (w + 1) + 4)
+        end = -1
+        for i, x in enumerate(range(x0, x1 + 1)):
+            text = str(x)
+            start = i * (w + 1)
+            if x % 5 == 0 and start > end and start + len(text) <= ncols * (w + 1):
+                row[start : start + len(text)] = text
+                end = start + len(text)
+        labels = "".join(row).rstrip()
+    else:
+        labels = " ".join(str(x).ljust(w) for x in range(x0, x1 + 1)).rstrip()
     lines.append(" " * (lw + 3) + labels)
     if legend is None:
         legend = "# = plotted pixel"
         if marked:
-            legend += ", o = marked point, @ = both"
+            legend += f", o = {mark_label}, @ = both"
     direction = "y down (screen addressing)" if origin == "top-left" else "y up"
     lines.append(f"{legend}; x to the right, {direction}")
     return lines
@@ -113,3 +129,15 @@ def figure_grid(figure: PixelFigure, origin: str) -> list[str]:
     return lines + render_grid(
         figure.pixels, figure.bbox, origin=origin, marks=figure.marks, legend=figure.legend
     )
+
+
+def width(bbox: tuple[int, int, int, int], *, compact: bool = False, margin: int = MARGIN) -> int:
+    """Characters of the widest line of the grid of ``bbox`` (the legend aside).
+
+    >>> width((0, 0, 2, 1)), width((-12, -12, 12, 12)), width((-12, -12, 12, 12), compact=True)
+    (19, 113, 59)
+    """
+    x0, y0, x1, y1 = bbox[0] - margin, bbox[1] - margin, bbox[2] + margin, bbox[3] + margin
+    w = 1 if compact else max(len(str(x)) for x in (x0, x1))
+    lw = max(len(str(y)) for y in (y0, y1))
+    return lw + 2 + (x1 - x0 + 1) * (w + 1)

@@ -23,7 +23,7 @@ from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
 from ..core.working import tex_text
 from . import Notice, Options
-from .cells import numeric_column, wrap_items
+from .cells import note_segments, numeric_column, wrap_items
 from .text import Rows, all_tables, figure_lines, pixel_count
 
 
@@ -170,6 +170,30 @@ def grid_size(lines: Sequence[str]) -> str:
     return next((size for limit, size in _GRID_SIZES if width <= limit), "\\tiny")
 
 
+def _wrap_key(line: str, width: int = _GRID_SIZES[0][0]) -> list[str]:
+    """A figure's key (``shades: '@' = 0 (black), ...``) wrapped between its items, so a long
+    key does not shrink the whole picture to ``\\tiny``; drawing and axis lines are kept.
+
+    >>> _wrap_key("shades: 'a' = 0, 'b' = 1", 16)
+    ["shades: 'a' = 0,", "  'b' = 1"]
+    """
+    if len(line) <= width or "|" in line or " = " not in line:
+        return [line]
+    out = list(wrap_items(line.split("; "), width=width - 2, sep="; "))
+    if max(len(x) for x in out) > width - 2:
+        out = list(wrap_items(line.split(", "), width=width - 2))
+    return [out[0], *("  " + x for x in out[1:])]
+
+
+def note_tex(note: str) -> str:
+    """A note in LaTeX: its text escaped, its ``$...$`` formulas kept as math.
+
+    >>> note_tex("$p_k < 0$ chooses E; 50% of it")
+    '$p_k < 0$ chooses E; 50\\\\% of it'
+    """
+    return "".join(f"${t}$" if math else tex_text(t) for math, t in note_segments(note))
+
+
 def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]:
     """The worked solution as a LaTeX fragment."""
     yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable}\n"
@@ -182,10 +206,10 @@ def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]
             yield f"  \\item ${q.tex}$\n"
         yield "\\end{itemize}\n\n"
     for note in solution.notes:
-        yield f"\\noindent {tex_text(note)}\\par\n"
+        yield f"\\noindent {note_tex(note)}\\par\n"
     if solution.notes:
         yield "\n"
-    for title, cols, rows in all_tables(solution):
+    for title, cols, rows in all_tables(solution, options.exact):
         yield from _tables(title or "Step table", cols, rows)
     if solution.pixels is not None:
         yield f"\\paragraph{{Pixels plotted ({pixel_count(solution)})}}\n"
@@ -194,10 +218,15 @@ def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]
             yield line + "\n"
         yield "\\par}\n"
     lines, notices = figure_lines(solution, options)
+    if max((len(line) for line in lines), default=0) > _GRID_SIZES[-1][0]:
+        lines, notices = figure_lines(solution, options, compact=True)
     yield from notices
+    lines = [part for line in lines for part in _wrap_key(line)]
     if lines:
+        # In a minipage the grid is never split across a page (its axis on the next one).
         size = grid_size(lines)
-        yield "\n" + (f"{{{size}\n" if size else "") + "\\begin{verbatim}\n"
+        yield "\n\\noindent\\begin{minipage}{\\linewidth}\n" + (f"{size}\n" if size else "")
+        yield "\\begin{verbatim}\n"
         for line in lines:
             yield line + "\n"
-        yield "\\end{verbatim}\n" + ("}\n" if size else "")
+        yield "\\end{verbatim}\n\\end{minipage}\n"

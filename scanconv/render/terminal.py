@@ -1,8 +1,16 @@
-"""The ``rich`` format, for a terminal: the answer with colour and a boxed table.
+"""The ``rich`` format, for a terminal: the full worked answer, with colour, fitted to the width.
 
-By default the terminal shows the answer: the title, the tables, the pixels and the grid.
-``--explain`` (:attr:`Options.explain`) adds the derivation the documents always carry: the
-given values, the working with the numbers substituted, and the notes.
+The terminal shows what the documents show: the title, the given values, the working with
+the numbers substituted, the notes, the tables, the pixels and the grid. ``--brief``
+(:attr:`Options.brief`) leaves the derivation out.
+
+Every line fits :attr:`Options.width` (80 if unset):
+
+- a table wider than the terminal is split into parts that each repeat its first column;
+- text (the working, the notes, the pixel list) is wrapped between words, never inside a
+  coordinate pair ``(x, y)``;
+- a grid too wide is drawn with one-character cells, and if even that does not fit it is
+  left out with a notice on stderr saying how to see it.
 
 Returns rich renderables for the CLI's console to print. Text cells are ``Text`` objects, so
 pixel lists like ``[(1, 2)]`` are never read as markup or emoji.
@@ -10,77 +18,228 @@ pixel lists like ``[(1, 2)]`` are never read as markup or emoji.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator, Sequence
 from itertools import islice
 from typing import Any
 
 from rich import box
+from rich.cells import cell_len
 from rich.table import Table as RichTable
 from rich.text import Text
 
+from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
-from . import Options
-from .cells import numeric_column
-from .text import all_tables, figure_lines, pixel_count, pixel_lines
+from . import Notice, Options
+from . import grid as gridmod
+from .cells import marks_label, note_unicode, numeric_column, unicode_heading, wrap_items
+from .text import all_tables, figure_text, pixel_count
 
 CHUNK_ROWS = 1000
 """A long table is printed as several boxed tables of this many rows each."""
 
+DEFAULT_WIDTH = 80
+"""The width when none is known."""
 
-def _tables(title: str, columns: tuple[Column, ...], rows: Iterator[list[str]]) -> Iterator[Any]:
+
+def table_width(widths: Sequence[int]) -> int:
+    """Characters a table with columns of these content widths takes (``SIMPLE_HEAVY`` box:
+    one space of padding either side of each cell, one column between cells and at each edge).
+
+    >>> table_width([1, 6])
+    14
+    """
+    return sum(widths) + 3 * len(widths) + 1
+
+
+def column_parts(widths: Sequence[int], width: int) -> list[list[int]]:
+    """Split columns into parts that each fit ``width``, every part after the first repeating
+    column 0 (the step number or the point the row is about).
+
+    >>> column_parts([2, 10, 10, 10], 40)
+    [[0, 1, 2], [0, 3]]
+    >>> column_parts([2, 10], 80)
+    [[0, 1]]
+    """
+    parts: list[list[int]] = []
+    current = [0]
+    for i in range(1, len(widths)):
+        if len(current) > 1 and table_width([widths[j] for j in [*current, i]]) > width:
+            parts.append(current)
+            current = [0]
+        current.append(i)
+    parts.append(current)
+    return parts
+
+
+def wrap_text(text: str, width: int, indent: str = "", first: str = "") -> list[str]:
+    """``first`` + ``text`` wrapped to ``width`` at spaces outside brackets, so a pair
+    ``(2, 5)`` or an interval ``[0, 1]`` is never split; later lines start with ``indent``.
+
+    >>> wrap_text("Start at (2, 2), plotted before (3, 3).", 20, "  ")
+    ['Start at (2, 2),', '  plotted before', '  (3, 3).']
+    """
+    text = text.replace("' '", "'\0'")  # a quoted space (a shade's character) is one word
+    words: list[tuple[str, str]] = []  # (the spaces before it, the word)
+    depth, start, space = 0, 0, ""
+    for i, ch in enumerate(text):
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth = max(0, depth - 1)
+        elif ch == " " and depth == 0:
+            if i > start:
+                words.append((space, text[start:i]))
+                space = ""
+            space += " "
+            start = i + 1
+    if start < len(text):
+        words.append((space, text[start:]))
+    lines: list[str] = []
+    line = first
+    fresh = True
+    for space, word in words:
+        if not fresh and cell_len(line) + len(space) + cell_len(word) > width:
+            lines.append(line)
+            line, fresh = indent, True
+        line = line + word if fresh else f"{line}{space}{word}"
+        fresh = False
+    if line.strip() or not lines:
+        lines.append(line)
+    return [x.replace("\0", " ") for x in lines]
+
+
+def render_rich(solution: Solution, options: Options) -> Iterator[Any]:
+    """The worked solution as rich renderables, every line at most ``options.width`` wide."""
+    width = options.width or DEFAULT_WIDTH
+    for line in wrap_text(solution.title, width, "  "):
+        yield Text(line, style="bold underline")
+    yield Text("")
+    if not options.brief:
+        yield from _derivation(solution, width)
+    for title, cols, rows in all_tables(solution, options.exact):
+        yield from _tables(title or "Step table", tuple(cols), rows(), width)
+    if solution.pixels is not None:
+        yield Text(f"Pixels plotted ({pixel_count(solution)}):", style="bold")
+        for line in wrap_items((fmt_pixel(p) for p in solution.pixels()), width=width - 3):
+            yield Text("  " + line)
+        yield Text("")
+    yield from _figures(solution, options, width)
+
+
+def _derivation(solution: Solution, width: int) -> Iterator[Text]:
+    """The given values, the working and the notes, as the documents show them."""
+    if solution.given:
+        text = "Given: " + ", ".join(unicode_heading(q.text) for q in solution.given)
+        for i, line in enumerate(wrap_text(text, width, "  ")):
+            t = Text(line)
+            if i == 0:
+                t.stylize("bold", 0, len("Given:"))
+            yield t
+        yield Text("")
+    if solution.derived:
+        yield Text("Working:", style="bold")
+        for q in solution.derived:
+            for line in wrap_text(unicode_heading(q.text), width, "      ", "  "):
+                yield Text(line, style="cyan")
+        yield Text("")
+    if solution.notes:
+        yield Text("Notes:", style="bold")
+        for note in solution.notes:
+            for line in wrap_text(unicode_heading(note_unicode(note)), width, "    ", "  - "):
+                yield Text(line)
+        yield Text("")
+
+
+def _tables(
+    title: str, columns: tuple[Column, ...], rows: Iterator[list[str]], width: int
+) -> Iterator[Any]:
+    headers = [unicode_heading(c.text) for c in columns]
     first = True
     while True:
         chunk = list(islice(rows, CHUNK_ROWS))
         if not chunk and not first:
             return
-        t = RichTable(title=title if first else None, box=box.SIMPLE_HEAVY, show_header=first)
-        for c in columns:
-            t.add_column(
-                Text(c.text, style="bold"), justify="right" if numeric_column(c) else "center"
-            )
-        for r in chunk:
-            t.add_row(*(Text(x) for x in r))
-        yield t
+        widths = [
+            max([cell_len(h), *(cell_len(r[i]) for r in chunk)]) for i, h in enumerate(headers)
+        ]
+        parts = column_parts(widths, width)
+        for n, part in enumerate(parts):
+            if first:
+                label = title if len(parts) == 1 else f"{title} (part {n + 1} of {len(parts)})"
+                for line in wrap_text(label + ":", width, "  "):
+                    yield Text(line, style="bold")
+            t = RichTable(box=box.SIMPLE_HEAVY, show_header=first or len(parts) > 1)
+            for i in part:
+                t.add_column(
+                    Text(headers[i], style="bold"),
+                    justify="right" if numeric_column(columns[i]) else "center",
+                    no_wrap=True,
+                    min_width=widths[i],
+                )
+            for r in chunk:
+                t.add_row(*(Text(r[i]) for i in part))
+            yield t
         first = False
         if len(chunk) < CHUNK_ROWS:
             return
 
 
-def render_rich(solution: Solution, options: Options) -> Iterator[Any]:
-    """The worked solution as rich renderables."""
-    yield Text(solution.title, style="bold underline")
-    yield Text("")
-    if options.explain:
-        yield from _derivation(solution)
-    for title, cols, rows in all_tables(solution):
-        yield from _tables(title or "Step table", tuple(cols), rows())
-    if solution.pixels is not None:
-        yield Text(f"Pixels plotted ({pixel_count(solution)}):", style="bold")
-        for line in pixel_lines(solution):
-            yield Text("  " + line)
-    lines, notices = figure_lines(solution, options)
-    yield from notices
+def _figures(solution: Solution, options: Options, width: int) -> Iterator[Any]:
+    """The pixel grid and the answer's own figures, each fitted to ``width`` or left out
+    with a notice saying how to see it."""
+    drawn: list[list[str]] = []
+    if options.grid and solution.pixels is not None:
+        reason = gridmod.too_large(solution.bbox)
+        if reason:
+            yield Notice(reason)
+        else:
+            compact = gridmod.width(solution.bbox) > width
+            if compact and gridmod.width(solution.bbox, compact=True) > width:
+                yield Notice(
+                    f"grid left out: {gridmod.width(solution.bbox, compact=True)} characters "
+                    f"wide, the terminal has {width}; widen the terminal, see it with "
+                    "--format plain or --svg FILE, or leave it out with --no-grid"
+                )
+            else:
+                drawn.append(
+                    gridmod.render_grid(
+                        solution.pixels(),
+                        solution.bbox,
+                        origin=options.origin,
+                        marks=solution.marks,
+                        mark_label=marks_label(solution),
+                        compact=compact,
+                    )
+                )
+    if options.grid:
+        for figure in solution.figures:
+            lines = figure_text(figure, options.origin)
+            if not lines:
+                continue
+            drawing = [x for x in lines if "|" in x or x.lstrip().startswith("+")]
+            if max((cell_len(x) for x in drawing), default=0) > width:
+                yield Notice(
+                    f"a figure is left out: wider than the terminal's {width} columns; "
+                    "widen the terminal or see it with --format plain"
+                )
+                continue
+            drawn.append(lines)
+    for i, lines in enumerate(drawn):
+        if i:
+            yield Text("")
+        yield from _grid_text(lines, width)
+    if drawn:
+        yield Text("")
+
+
+def _grid_text(lines: Iterable[str], width: int) -> Iterator[Text]:
     for line in lines:
         if "|" not in line:
-            yield Text(line, style="dim")
+            for part in [line] if cell_len(line) <= width else wrap_text(line, width):
+                yield Text(part, style="dim")
         else:
             label, _, cells = line.partition("|")
             yield Text(label + "|").append_text(_cells(cells))
-    yield Text("")
-
-
-def _derivation(solution: Solution) -> Iterator[Text]:
-    """What ``--explain`` adds: the given values, the working and the notes, as in markdown."""
-    if solution.given:
-        given = Text("Given: ", style="bold")
-        given.append(", ".join(q.text for q in solution.given))
-        yield given
-    if solution.derived:
-        yield Text("Working:", style="bold")
-        for q in solution.derived:
-            yield Text("  " + q.text, style="cyan")
-    for note in solution.notes:
-        yield Text("  " + note, style="dim")
 
 
 def _cells(cells: str) -> Text:

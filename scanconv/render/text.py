@@ -19,7 +19,7 @@ from ..core.records import Column, Figure, ShadedMatrix, Solution, Table, step_g
 from ..core.working import ascii_text
 from . import Notice, Options
 from . import grid as gridmod
-from .cells import cell, numeric_column, wrap_items
+from .cells import cell, marks_label, note_unicode, numeric_column, wrap_items
 from .shade import matrix_lines
 
 BUFFER_ROWS = 1000
@@ -86,17 +86,19 @@ def table_lines(
         yield line(r)
 
 
-def step_rows(solution: Solution, columns: Sequence[Column]) -> Iterator[list[str]]:
+def step_rows(
+    solution: Solution, columns: Sequence[Column], exact: bool = False
+) -> Iterator[list[str]]:
     """Display cells of every step, in column order."""
     get = step_getter(columns, solution.extra_keys)
     for step in solution.steps():
-        yield [cell(v, c) for v, c in zip(get(step), columns, strict=True)]
+        yield [cell(v, c, exact) for v, c in zip(get(step), columns, strict=True)]
 
 
-def table_rows(table: Table) -> Iterator[list[str]]:
+def table_rows(table: Table, exact: bool = False) -> Iterator[list[str]]:
     """Display cells of a secondary table."""
     for row in table.rows():
-        yield [cell(v, c) for v, c in zip(row, table.columns, strict=True)]
+        yield [cell(v, c, exact) for v, c in zip(row, table.columns, strict=True)]
 
 
 def pixel_lines(solution: Solution) -> Iterator[str]:
@@ -111,8 +113,11 @@ def pixel_count(solution: Solution) -> int:
     return 0 if solution.pixels is None else sum(1 for _ in solution.pixels())
 
 
-def grid_block(solution: Solution, options: Options) -> Iterator[str | Notice]:
-    """The grid lines, or a :class:`Notice` saying why it was left out."""
+def grid_block(
+    solution: Solution, options: Options, *, compact: bool = False
+) -> Iterator[str | Notice]:
+    """The grid lines (one-character cells with ``compact``), or a :class:`Notice` saying
+    why it was left out."""
     if not options.grid or solution.pixels is None:
         return
     reason = gridmod.too_large(solution.bbox)
@@ -120,13 +125,20 @@ def grid_block(solution: Solution, options: Options) -> Iterator[str | Notice]:
         yield Notice(reason)
         return
     yield from gridmod.render_grid(
-        solution.pixels(), solution.bbox, origin=options.origin, marks=solution.marks
+        solution.pixels(),
+        solution.bbox,
+        origin=options.origin,
+        marks=solution.marks,
+        mark_label=marks_label(solution),
+        compact=compact,
     )
 
 
-def figure_lines(solution: Solution, options: Options) -> tuple[list[str], list[Notice]]:
+def figure_lines(
+    solution: Solution, options: Options, *, compact: bool = False
+) -> tuple[list[str], list[Notice]]:
     """The ASCII figures under the answer (the pixel grid, a custom figure) and notices."""
-    chunks = list(grid_block(solution, options))
+    chunks = list(grid_block(solution, options, compact=compact))
     lines = [c for c in chunks if isinstance(c, str)]
     if options.grid:
         for figure in solution.figures:
@@ -148,12 +160,39 @@ Rows = Callable[[], Iterator[list[str]]]
 """A factory of display rows: a fresh iterator on every call (a renderer may read them twice)."""
 
 
-def all_tables(solution: Solution) -> Iterator[tuple[str | None, Sequence[Column], Rows]]:
+def all_tables(
+    solution: Solution, exact: bool = False
+) -> Iterator[tuple[str | None, Sequence[Column], Rows]]:
     """``(title, columns, rows)`` of the step table (if any) and every secondary table."""
     if solution.columns and solution.show_steps:
-        yield None, solution.columns, partial(step_rows, solution, solution.columns)
+        yield None, solution.columns, partial(step_rows, solution, solution.columns, exact)
     for table in solution.tables:
-        yield table.title, table.columns, partial(table_rows, table)
+        yield table.title, table.columns, partial(table_rows, table, exact)
+
+
+SPLIT_COLUMNS = 9
+"""Markdown tables with this many columns or more are split when too wide for a page."""
+
+
+def _parts(
+    name: str, cols: Sequence[Column], rows: Rows, *, markdown: bool
+) -> Iterator[tuple[list[int], str, Iterator[list[str]]]]:
+    """The parts a table is set in: in markdown, a table too wide for a page (the circle's
+    9-column symmetry table, a B-spline's basis table) is split as LaTeX splits it, each part
+    repeating the first column; plain text keeps one table. Only tables of
+    :data:`SPLIT_COLUMNS` or more columns are split: narrower ones fit a page."""
+    every = list(range(len(cols)))
+    if not markdown or len(cols) < SPLIT_COLUMNS:
+        yield every, name, rows()
+        return
+    from .latex import split_columns  # the same page-width rule as the LaTeX answer
+
+    parts = [part for part, _ in split_columns(cols, list(islice(rows(), 100)))]
+    if len(parts) == 1:
+        yield every, name, rows()
+        return
+    for n, part in enumerate(parts, 1):
+        yield part, f"{name}, part {n} of {len(parts)}", ([r[i] for i in part] for r in rows())
 
 
 def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iterator[str | Notice]:
@@ -167,8 +206,8 @@ def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iter
             for q in solution.derived:
                 yield f"- ${q.tex}$\n"
             yield "\n"
-        for note in solution.notes:
-            yield f"> {note}\n"
+        for i, note in enumerate(solution.notes):
+            yield f"{'>' + chr(10) if i else ''}> {note}\n"
         if solution.notes:
             yield "\n"
     else:
@@ -184,20 +223,25 @@ def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iter
         if solution.notes:
             yield "Notes:\n"
             for note in solution.notes:
-                yield f"  - {ascii_text(note)}\n"
+                yield f"  - {ascii_text(note_unicode(note))}\n"
             yield "\n"
 
     def heading(col: Column) -> str:
         return f"${col.tex}$" if markdown else ascii_text(col.text)
 
-    for title, cols, rows in all_tables(solution):
+    for title, cols, rows in all_tables(solution, options.exact):
         name = title or "Step table"
-        yield f"**{name}:**\n\n" if markdown else f"{ascii_text(name)}:\n"
-        for line in table_lines(
-            [heading(c) for c in cols], [numeric_column(c) for c in cols], rows(), markdown=markdown
-        ):
-            yield line + "\n"
-        yield "\n"
+        for part, label, part_rows in _parts(name, cols, rows, markdown=markdown):
+            yield f"**{label}:**\n\n" if markdown else f"{ascii_text(label)}:\n"
+            part_cols = [cols[i] for i in part]
+            for line in table_lines(
+                [heading(c) for c in part_cols],
+                [numeric_column(c) for c in part_cols],
+                part_rows,
+                markdown=markdown,
+            ):
+                yield line + "\n"
+            yield "\n"
     if solution.pixels is not None:
         count = pixel_count(solution)
         yield f"**Pixels plotted ({count}):**\n\n" if markdown else f"Pixels plotted ({count}):\n"
@@ -211,3 +255,5 @@ def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iter
             yield line + "\n"
         if markdown:
             yield "```\n"
+    if markdown:
+        yield "\n"  # answers appended with >> stay apart

@@ -1,0 +1,270 @@
+"""Conventions: the named variant knobs of every algorithm, and presets of published sources.
+
+Textbooks state the same algorithms with small differences that change the printed table: how
+a DDA rounds, what a decision parameter of exactly 0 chooses, whether the midpoint circle
+starts from 5/4 - r or 1 - r, whether its loop runs while x < y or x <= y, and whether its
+increments are written with the new or the old x. Each is a :class:`Knob` here, with a name,
+its values, a default (the course notes' own rule) and the methods it applies to; a preset
+(:data:`PRESETS`) names the values one published source uses.
+
+>>> KNOBS["tie"].default, KNOBS["tie"].applies_to("line", "dda")
+('step', False)
+>>> resolve("circle", "midpoint", "foley", {"loop": None})
+{'tie': 'step', 'p0': '5/4-r', 'loop': 'strict', 'update': 'old'}
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from enum import Enum
+from typing import NamedTuple
+
+from ..core.checks import InputError
+from ..core.numeric import (
+    Number,
+    round_c_cast,
+    round_half_away,
+    round_half_even,
+    round_half_up,
+    round_trunc,
+)
+
+
+class Rounding(str, Enum):
+    """How a computed coordinate becomes a pixel coordinate."""
+
+    half_up = "half-up"
+    trunc = "trunc"
+    half_even = "half-even"
+    c_cast = "c-cast"
+    half_away = "half-away"
+
+
+ROUNDINGS: dict[str, Callable[[Number], int]] = {
+    Rounding.half_up.value: round_half_up,
+    Rounding.trunc.value: round_trunc,
+    Rounding.half_even.value: round_half_even,
+    Rounding.c_cast.value: round_c_cast,
+    Rounding.half_away.value: round_half_away,
+}
+"""The rounding rules by name: ``floor(v + 1/2)``, truncation toward zero, Python's
+``round()``, C's ``(int)(a + 0.5)`` and C's ``round()``."""
+
+ROUNDING_TEXT = {
+    "half-up": "rounded half up, floor(v + 1/2)",
+    "trunc": "truncated toward zero, like a C (int) cast",
+    "half-even": "rounded half to even, as Python's round() does",
+    "c-cast": "rounded as C's (int)(v + 0.5), which truncates toward zero after adding 1/2",
+    "half-away": "rounded half away from zero, as C's round() does",
+}
+"""How each rounding rule is described in an answer's notes."""
+
+
+def rounder(rounding: str) -> Callable[[Number], int]:
+    """The rounding function named ``rounding``.
+
+    >>> rounder("half-even")(2.5), rounder("half-up")(2.5)
+    (2, 3)
+    """
+    try:
+        return ROUNDINGS[rounding]
+    except KeyError:
+        raise InputError(
+            f"unknown rounding {rounding!r} (choose from {', '.join(ROUNDINGS)})", "rounding"
+        ) from None
+
+
+class Tie(str, Enum):
+    """What a decision parameter of exactly 0 chooses."""
+
+    step = "step"
+    keep = "keep"
+
+
+class P0(str, Enum):
+    """The midpoint circle's initial decision parameter as printed."""
+
+    integer = "1-r"
+    exact = "5/4-r"
+
+
+class Loop(str, Enum):
+    """Whether the octant (region-1) loop is strict (``x < y``) or inclusive (``x <= y``)."""
+
+    strict = "strict"
+    inclusive = "inclusive"
+
+
+class Update(str, Enum):
+    """Whether the midpoint circle's increments are written with the new or the old x."""
+
+    new = "new"
+    old = "old"
+
+
+class Layout(str, Enum):
+    """The step table's row shape: the notes' or the textbook's."""
+
+    notes = "notes"
+    textbook = "textbook"
+
+
+class Convention(str, Enum):
+    """The named presets (:data:`PRESETS`)."""
+
+    notes = "notes"
+    hearn_baker = "hearn-baker"
+    foley = "foley"
+    wikipedia = "wikipedia"
+
+
+class Knob(NamedTuple):
+    """One variant knob: its values (with what each means), default and methods."""
+
+    name: str
+    values: dict[str, str]
+    default: str
+    applies: tuple[str, ...]
+    """``"primitive/method"`` names the knob applies to."""
+
+    def applies_to(self, primitive: str, method: str) -> bool:
+        return f"{primitive}/{method}" in self.applies
+
+
+KNOBS: dict[str, Knob] = {
+    "rounding": Knob(
+        "rounding",
+        ROUNDING_TEXT,
+        "half-up",
+        (
+            "line/dda",
+            "line/basic",
+            "circle/polynomial",
+            "circle/trig",
+            "circle/symmetric-dda",
+        ),
+    ),
+    "tie": Knob(
+        "tie",
+        {
+            "step": "a decision parameter of 0 steps the minor coordinate (if p < 0 keep it)",
+            "keep": "a decision parameter of 0 keeps the minor coordinate (if p <= 0 keep it)",
+        },
+        "step",
+        ("line/bresenham", "circle/midpoint", "circle/general", "circle/bresenham"),
+    ),
+    "p0": Knob(
+        "p0",
+        {"1-r": "p0 = 1 - r, integers only", "5/4-r": "p0 = 5/4 - r, exact quarters"},
+        "1-r",
+        ("circle/midpoint",),
+    ),
+    "loop": Knob(
+        "loop",
+        {"strict": "loop while x < y", "inclusive": "loop while x <= y"},
+        "strict",
+        ("circle/midpoint", "circle/general", "ellipse/midpoint"),
+    ),
+    "update": Knob(
+        "update",
+        {
+            "new": "increments written with the new x: 2x_{k+1} + 1",
+            "old": "increments written with the old x: 2x_k + 3",
+        },
+        "new",
+        ("circle/midpoint",),
+    ),
+}
+"""Every knob, by name. The defaults are the course notes' own stated rules."""
+
+PRESETS: dict[str, dict[str, dict[str, str]]] = {
+    "notes": {
+        "line": {"rounding": "half-up", "tie": "step"},
+        "circle": {"rounding": "half-up", "tie": "step", "p0": "1-r", "loop": "strict"}
+        | {"update": "new"},
+        "ellipse": {"loop": "strict"},
+    },
+    "hearn-baker": {
+        "line": {"rounding": "c-cast", "tie": "step"},
+        "circle": {"rounding": "c-cast", "tie": "step", "p0": "1-r", "loop": "strict"}
+        | {"update": "new"},
+        "ellipse": {"loop": "strict"},
+    },
+    "foley": {
+        "line": {"rounding": "half-up", "tie": "keep"},
+        "circle": {"rounding": "half-up", "tie": "step", "p0": "5/4-r", "loop": "strict"}
+        | {"update": "old"},
+        "ellipse": {"loop": "strict"},
+    },
+    "wikipedia": {
+        "line": {"rounding": "half-up", "tie": "keep"},
+    },
+}
+"""The knob values each named source uses, per primitive (see ``docs/conventions.md``)."""
+
+SOURCES = {
+    "notes": "the course notes' stated algorithms",
+    "hearn-baker": "Hearn & Baker, Computer Graphics, C version (lineBres, lineDDA, circleMidpoint)",
+    "foley": "Foley, van Dam, Feiner & Hughes, Computer Graphics (MidpointLine, MidpointCircle)",
+    "wikipedia": "Wikipedia, Bresenham's line algorithm (plotLine: if D > 0 step y)",
+}
+"""What each preset's name stands for, as an answer's note says it."""
+
+
+def resolve(
+    primitive: str, method: str, convention: str | None, given: Mapping[str, str | None]
+) -> dict[str, str]:
+    """The knob values for one answer: an explicit value wins, then the preset's, then the
+    default; a knob given explicitly that does not apply to the method is an error.
+
+    >>> resolve("line", "bresenham", None, {"tie": "keep"})
+    {'tie': 'keep'}
+    >>> resolve("line", "dda", None, {"tie": "keep"})
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: the tie convention applies to line bresenham, circle midpoint, circle general, circle bresenham, not to line dda
+    """
+    if convention is not None and convention not in PRESETS:
+        raise InputError(
+            f"unknown convention {convention!r} (choose from {', '.join(PRESETS)})",
+            "convention",
+        )
+    presets = PRESETS[convention or "notes"]
+    if primitive not in presets:
+        raise InputError(
+            f"the {convention} convention names no {primitive} rules "
+            f"(it has: {', '.join(presets)})",
+            "convention",
+        )
+    preset = presets[primitive]
+    out: dict[str, str] = {}
+    for name, knob in KNOBS.items():
+        value = given.get(name)
+        if not knob.applies_to(primitive, method):
+            if value is not None:
+                where = ", ".join(a.replace("/", " ") for a in knob.applies)
+                raise InputError(
+                    f"the {name} convention applies to {where}, not to {primitive} {method}",
+                    name,
+                )
+            continue
+        value = value if value is not None else preset.get(name, knob.default)
+        if value not in knob.values:
+            raise InputError(
+                f"unknown {name} {value!r} (choose from {', '.join(knob.values)})", name
+            )
+        out[name] = value
+    return out
+
+
+def convention_note(primitive: str, convention: str | None, used: Mapping[str, str]) -> str:
+    """The one-line note that names the conventions an answer used.
+
+    >>> print(convention_note("line", None, {"tie": "keep"}))
+    Conventions (the notes' defaults): tie = keep (a decision parameter of 0 keeps the minor coordinate (if p <= 0 keep it)).
+    """
+    if not used:
+        return ""
+    where = f"preset {convention}: {SOURCES[convention]}" if convention else "the notes' defaults"
+    parts = "; ".join(f"{k} = {v} ({KNOBS[k].values[v]})" for k, v in used.items())
+    return f"Conventions ({where}): {parts}."

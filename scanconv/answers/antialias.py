@@ -1,0 +1,346 @@
+"""The worked answers of anti-aliasing: Xiaolin Wu's line (a step table of the two pixels and
+their intensities) and area sampling or supersampling of a line, a circle or a polygon (an
+intensity table and a shaded picture)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from fractions import Fraction
+from typing import Any
+
+from ..algorithms import coverage as cov
+from ..algorithms.image_limits import check_levels
+from ..algorithms.polygon import check_polygon, check_rule, vertices_from_coords
+from ..algorithms.wu import is_steep, wu
+from ..core.checks import InputError, check_integer
+from ..core.numeric import Number, fmt_exact, fmt_short, normalize
+from ..core.records import (
+    MAX_GRID_CELLS,
+    Pixel,
+    Quantity,
+    ShadedMatrix,
+    Solution,
+    Step,
+    Table,
+    heading,
+    rule,
+    worked,
+)
+
+SHADING = (
+    "The picture draws the intensity as ink on white: shade = L - 1 - level, so a fully "
+    "covered pixel is the darkest character."
+)
+
+
+def _level_rule(levels: int) -> Quantity:
+    """``level = ⌊I·7 + 1/2⌋ (L = 8)``: round half up of I (L - 1)."""
+    return worked(
+        "levels",
+        levels,
+        f"\\text{{level}} = \\lfloor I \\cdot (L - 1) + 1/2 \\rfloor = \\lfloor I \\cdot {levels - 1} "
+        f"+ 1/2 \\rfloor \\quad (L = {levels})",
+    )
+
+
+def _picture(values: dict[Pixel, int], levels: int) -> ShadedMatrix | None:
+    """The shaded picture of ``pixel -> level`` (ink: shade L - 1 - level), row 0 the top."""
+    if not values:
+        return None
+    xs, ys = [p[0] for p in values], [p[1] for p in values]
+    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+    if x1 - x0 + 1 > MAX_GRID_CELLS or y1 - y0 + 1 > MAX_GRID_CELLS:
+        return None
+    rows = tuple(
+        tuple(levels - 1 - values.get((x, y), 0) for x in range(x0, x1 + 1))
+        for y in range(y1, y0 - 1, -1)
+    )
+    return ShadedMatrix(rows, levels, x1 - x0 + 1)
+
+
+def _bbox(pixels: Sequence[Pixel]) -> tuple[int, int, int, int]:
+    if not pixels:
+        return (0, 0, 0, 0)
+    xs, ys = [p[0] for p in pixels], [p[1] for p in pixels]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8) -> Solution:
+    """Xiaolin Wu's anti-aliased line as a worked answer.
+
+    >>> sol = wu_solution(0, 0, 8, 3)
+    >>> [str(q.value) for q in sol.derived[:3]]
+    ['8', '3', '3/8']
+    >>> [s.extra[4:] for s in sol.steps()][1]
+    (Fraction(5, 8), Fraction(3, 8), (4, 3))
+    """
+    ix1, iy1, ix2, iy2 = (
+        check_integer(v, n) for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2"))
+    )
+    L = check_levels(levels)
+    steep = is_steep(ix1, iy1, ix2, iy2)
+    maj, mnr = ("y", "x") if steep else ("x", "y")
+    lower, upper = ("left", "right") if steep else ("lower", "upper")
+    (a1, b1), (a2, b2) = ((iy1, ix1), (iy2, ix2)) if steep else ((ix1, iy1), (ix2, iy2))
+    if a2 < a1:
+        a1, b1, a2, b2 = a2, b2, a1, b1
+    da, db = a2 - a1, b2 - b1
+    grad = normalize(Fraction(db, da)) if da else 0
+    derived = [
+        worked(f"d{maj}", da, f"\\Delta {maj} = {a2} - {_p(a1)} = {da}"),
+        worked(f"d{mnr}", db, f"\\Delta {mnr} = {b2} - {_p(b1)} = {db}"),
+        worked(
+            "gradient",
+            grad,
+            f"g = \\frac{{\\Delta {mnr}}}{{\\Delta {maj}}} = \\frac{{{db}}}{{{da}}} = {fmt_exact(grad)}"
+            if da
+            else r"g = 0 \text{ (a single point)}",
+        ),
+        rule(
+            "minor",
+            f"{mnr}_k = {mnr}_1 + g ({maj}_k - {maj}_1) = {b1} + {fmt_exact(grad)} ({maj}_k - {_p(a1)})",
+        ),
+        rule(
+            "split",
+            f"f = {mnr}_k - \\lfloor {mnr}_k \\rfloor,\\ I(\\text{{{lower}}}) = 1 - f,\\ "
+            f"I(\\text{{{upper}}}) = f",
+        ),
+        _level_rule(L),
+    ]
+    notes = [
+        "End points as in Wu (1991): integers, drawn at full intensity (f = 0 there, so the "
+        "second pixel of the first and last step has intensity 0).",
+        f"Each step's two intensities sum to 1: the line's ink is shared between the two "
+        f"pixels nearest to it along {mnr}, in proportion to its distance from each.",
+        "Wu keeps f as an integer error term of n bits and draws from both ends at once; the "
+        "table walks one way with f exact, and the levels are the intensities quantized.",
+        SHADING,
+    ]
+    if (a1, b1) != ((iy1, ix1) if steep else (ix1, iy1)):
+        notes.insert(0, f"End points swapped so that {maj} increases along the walk.")
+
+    def steps() -> Iterator[Step]:
+        for s in wu(ix1, iy1, ix2, iy2):
+            ia, ib = s.extra[4], s.extra[5]
+            levels_ab = (cov.quantize(ia, L), cov.quantize(ib, L))
+            yield Step(s.k, None, None, s.pixel, (*s.extra, levels_ab))
+
+    def pixels() -> Iterator[Pixel]:
+        for s in wu(ix1, iy1, ix2, iy2):
+            if s.extra[4]:
+                yield s.extra[2]
+            if s.extra[5]:
+                yield s.extra[3]
+
+    plotted = list(pixels()) if da < 4 * MAX_GRID_CELLS else []
+    values = {}
+    for s in steps() if plotted else ():
+        values[s.extra[2]] = s.extra[6][0]
+        values[s.extra[3]] = max(values.get(s.extra[3], 0), s.extra[6][1])
+    picture = _picture({p: v for p, v in values.items() if v}, L) if plotted else None
+    xs, ys = (ix1, ix2), (iy1, iy2)
+    return Solution(
+        primitive="line",
+        algorithm="wu",
+        title=f"Xiaolin Wu's anti-aliased line: ({ix1}, {iy1}) to ({ix2}, {iy2}), L = {L}",
+        given=(
+            worked("P1", (ix1, iy1), f"P_1 = ({ix1}, {iy1})"),
+            worked("P2", (ix2, iy2), f"P_2 = ({ix2}, {iy2})"),
+            worked("L", L, f"L = {L} \\text{{ levels}}"),
+        ),
+        derived=tuple(derived),
+        columns=(
+            heading("k", "k"),
+            heading(maj, f"{maj}_k"),
+            heading(mnr, f"{mnr}_k \\text{{ (exact)}}", 3),
+            heading("pixel_a", f"\\text{{{lower} pixel}}"),
+            heading("pixel_b", f"\\text{{{upper} pixel}}"),
+            heading("i_a", f"I(\\text{{{lower}}})", 3),
+            heading("i_b", f"I(\\text{{{upper}}})", 3),
+            heading("levels", f"\\text{{levels ({lower}, {upper})}}"),
+        ),
+        extra_keys=(maj, mnr, "pixel_a", "pixel_b", "i_a", "i_b", "levels"),
+        steps=steps,
+        pixels=pixels,
+        bbox=(min(xs), min(ys), max(xs) + (1 if steep else 0), max(ys) + (0 if steep else 1)),
+        notes=tuple(notes),
+        figures=(picture,) if picture else (),
+        geometry={"line": (ix1, iy1, ix2, iy2)},
+    )
+
+
+def _p(v: Number) -> str:
+    s = fmt_short(v)
+    return f"({s})" if s.startswith("-") else s
+
+
+def antialias_solution(
+    shape: str,
+    params: Sequence[Number],
+    *,
+    method: str = "area",
+    samples: int = 4,
+    levels: int = 8,
+    rule_name: str = "even-odd",
+) -> Solution:
+    """Area sampling (``method="area"``) or ``samples x samples`` supersampling of a
+    ``line`` (``x1 y1 x2 y2``), a ``circle`` (``r [xc yc]``) or a ``polygon`` (``x1 y1 ...``);
+    ``method="wu"``: Wu's line (:func:`wu_solution`).
+
+    >>> sol = antialias_solution("polygon", [0, 0, 2, 0, 2, 1, 0, 1])
+    >>> [q.text for q in sol.derived][-2]
+    'sum of I = 2 = the exact area of the shape'
+    """
+    L = check_levels(levels)
+    if method == "wu":
+        if shape != "line":
+            raise InputError(f"wu draws lines only, not a {shape}", "method")
+        if len(params) != 4:
+            raise InputError(f"a line needs x1 y1 x2 y2, got {len(params)} numbers", "line")
+        x1, y1, x2, y2 = params
+        return wu_solution(x1, y1, x2, y2, levels=L)
+    if method not in ("area", "supersample"):
+        raise InputError(f"unknown method {method!r} (choose from area, supersample, wu)", "method")
+    n = cov.check_samples(samples) if method == "supersample" else 1
+    check_rule(rule_name)
+    derived: list[Quantity] = []
+    notes: list[str] = []
+    exact_total: Number | None = None
+    geometry: dict[str, Any] = {}
+    if shape in ("line", "polygon"):
+        if shape == "line":
+            if len(params) != 4:
+                raise InputError(f"a line needs x1 y1 x2 y2, got {len(params)} numbers", "line")
+            x1, y1, x2, y2 = (normalize(v) for v in params)
+            pts = cov.line_strip(x1, y1, x2, y2)
+            minor = "y" if abs(Fraction(y2 - y1)) <= abs(Fraction(x2 - x1)) else "x"
+            derived.append(
+                worked(
+                    "strip",
+                    pts,
+                    "\\text{line one pixel wide along } "
+                    + minor
+                    + ": "
+                    + ", ".join(f"({fmt_short(x)}, {fmt_short(y)})" for x, y in pts),
+                )
+            )
+            notes.append(
+                f"The line is the parallelogram one pixel thick along {minor}, from end point to "
+                "end point: exact, and each column along the line is covered by 1 in total."
+            )
+            title = f"line ({fmt_short(x1)}, {fmt_short(y1)}) to ({fmt_short(x2)}, {fmt_short(y2)})"
+            geometry["line"] = (x1, y1, x2, y2)
+        else:
+            pts, _ = check_polygon(vertices_from_coords(params))
+            title = f"polygon of {len(pts)} vertices ({rule_name} rule)"
+            geometry["polyline"] = [(float(x), float(y)) for x, y in (*pts, pts[0])]
+        if method == "area":
+            values: dict[Pixel, Any] = dict(cov.area_coverage(pts, rule_name))
+            exact_total = cov.region_area(pts, rule_name)
+        else:
+            values = dict(cov.supersample_coverage(pts, n, rule_name))
+    elif shape == "circle":
+        if len(params) not in (1, 3):
+            raise InputError(f"a circle needs r [xc yc], got {len(params)} numbers", "circle")
+        r = check_integer(params[0], "radius", negative=False)
+        xc, yc = (
+            (check_integer(v, n_) for v, n_ in zip(params[1:], ("xc", "yc"), strict=False))
+            if len(params) == 3
+            else (0, 0)
+        )
+        title = f"circle r = {r}, centre ({xc}, {yc}), one pixel wide"
+        derived.append(
+            rule(
+                "ring",
+                f"\\text{{ring: }} {r} - 1/2 \\le d \\le {r} + 1/2 \\text{{ around }} ({xc}, {yc})",
+            )
+        )
+        geometry["circle"] = (xc, yc, r)
+        if method == "area":
+            values = dict(cov.ring_area(r, xc, yc))
+            notes.append(
+                "A circle's covered areas involve arcsin: they are computed in floating point "
+                "from the closed form (the ring's total is π((r + 1/2)² - (r - 1/2)²) = 2π·r)."
+            )
+        else:
+            values = dict(cov.ring_supersample(r, n, xc, yc))
+    else:
+        raise InputError(f"unknown shape {shape!r} (choose from line, circle, polygon)", "shape")
+    if method == "area":
+        derived.append(
+            rule(
+                "intensity",
+                r"I(i, j) = \text{area of the shape inside } [i - 1/2, i + 1/2] \times [j - 1/2, j + 1/2]",
+            )
+        )
+    else:
+        derived.append(
+            rule(
+                "samples",
+                f"{n} \\times {n} = {n * n} \\text{{ samples per pixel, at }} (i - 1/2 + (2a + 1)/{2 * n},\\ "
+                f"j - 1/2 + (2b + 1)/{2 * n}),\\ a, b = 0 \\ldots {n - 1}",
+            )
+        )
+        derived.append(rule("intensity", f"I = \\text{{samples inside}} / {n * n}"))
+        if shape != "circle":
+            notes.append(
+                "A sample is inside by the scan-line fill's rules (half-open spans and edges)."
+            )
+    total: Number | float = (
+        normalize(sum(values.values(), Fraction(0)))
+        if not any(isinstance(v, float) for v in values.values())
+        else sum(float(v) for v in values.values())
+    )
+    if isinstance(total, float):
+        derived.append(worked("total", total, f"\\text{{sum of }} I \\approx {total:.3f}"))
+    else:
+        text = f"\\text{{sum of }} I = {fmt_short(total)}"
+        if exact_total is not None:
+            if total == exact_total:
+                text += " = \\text{the exact area of the shape}"
+            else:
+                text += f" \\ne {fmt_short(exact_total)} = \\text{{the exact area of the shape}}"
+        derived.append(worked("total", total, text))
+    derived.append(_level_rule(L))
+    notes.append(SHADING)
+    levels_of = {p: cov.quantize(v, L) for p, v in values.items()}
+    order = list(values)
+
+    def rows() -> Iterator[tuple[Any, ...]]:
+        for p in order:
+            v = values[p]
+            exact = "-" if isinstance(v, float) else fmt_exact(v)
+            yield (p, v, exact, levels_of[p])
+
+    picture = _picture({p: lv for p, lv in levels_of.items() if lv}, L)
+    name = "Unweighted area sampling" if method == "area" else f"Supersampling {n} x {n}"
+    return Solution(
+        primitive=shape,
+        algorithm=method,
+        title=f"{name}: {title}, L = {L}",
+        given=(
+            Quantity("shape", shape, f"shape: {title}", f"\\text{{shape: {title}}}"),
+            Quantity(
+                "method", method, f"method: {name.lower()}", f"\\text{{method: {name.lower()}}}"
+            ),
+            worked("L", L, f"L = {L} \\text{{ levels}}"),
+        ),
+        derived=tuple(derived),
+        notes=tuple(notes),
+        tables=(
+            Table(
+                "Intensities (pixels with I > 0, bottom row first)",
+                (
+                    heading("pixel", r"\text{pixel } (i, j)"),
+                    heading("intensity", "I", 3),
+                    heading("exact", r"I \text{ (exact)}"),
+                    heading("level", r"\text{level}"),
+                ),
+                rows,
+            ),
+        ),
+        pixels=lambda: iter(order),
+        bbox=_bbox(order),
+        figures=(picture,) if picture else (),
+        geometry=geometry,
+    )

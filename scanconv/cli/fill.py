@@ -1,0 +1,216 @@
+"""The notes' other primitives: ``polygon`` (scan-line fill), ``fill boundary`` and
+``fill flood`` (seed fills), ``antialias line``, ``antialias circle`` and
+``antialias polygon``."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Annotated
+
+import typer
+
+from .. import _api as api
+from ..algorithms.coverage import AAMethod
+from ..algorithms.polygon import FillRule
+from ..algorithms.seedfill import Order
+from ..core.records import Solution
+from .application import _subapp, app
+from .command import answers
+from .options import NUMERIC_ARGS, Center, Num, choice, integer, number
+
+fill_app = _subapp(
+    "fill", "Seed fills from a pixel: boundary fill and flood fill, 4- or 8-connected."
+)
+antialias_app = _subapp(
+    "antialias", "Anti-aliasing: Wu's line, unweighted area sampling and supersampling."
+)
+
+Vertices = Annotated[
+    list[Fraction],
+    typer.Argument(
+        parser=number,
+        metavar="X1 Y1 X2 Y2 X3 Y3 ...",
+        help="The polygon's vertices, in order.",
+        show_default=False,
+    ),
+]
+Rule = Annotated[
+    FillRule, choice("--rule", help="Fill rule: even-odd (alternate) or nonzero winding.")
+]
+Levels = Annotated[
+    int,
+    typer.Option(
+        "--levels", "-L", parser=integer, help="Intensity levels L (level = round(I (L - 1)))."
+    ),
+]
+Samples = Annotated[
+    int,
+    typer.Option(
+        "--samples", "-n", parser=integer, help="Supersampling: N x N samples per pixel (1-16)."
+    ),
+]
+Method = Annotated[
+    AAMethod,
+    choice(
+        "--method",
+        "-m",
+        help="area: exact covered area; supersample: N x N samples; wu: Wu's line (lines only).",
+    ),
+]
+
+
+@app.command(context_settings=NUMERIC_ARGS)
+@answers()
+def polygon(vertices: Vertices, rule: Rule = FillRule.even_odd) -> Solution:
+    """Scan-line polygon fill: the edge table, then per scan line the active edge table, the
+    intersections, the spans and pixels filled (pixel centres; half-open spans and edges).
+
+    Example: scanconv polygon 2 3 7 1 13 5 13 11 7 7 2 9
+    """
+    return api.polygon(vertices, rule=rule)
+
+
+def _seed_fill(
+    method: str,
+    vertices: list[Fraction] | None,
+    seed: tuple[int, int],
+    rows: str | None,
+    connectivity: int,
+    order: Order,
+    span: bool,
+) -> Solution:
+    return api.fill(
+        method,
+        seed,
+        vertices=vertices or None,
+        rows=rows,
+        connectivity=connectivity,
+        order=order,
+        span=span,
+    )
+
+
+OptVertices = Annotated[
+    list[Fraction] | None,
+    typer.Argument(
+        parser=number,
+        metavar="[X1 Y1 X2 Y2 X3 Y3 ...]",
+        help="A polygon whose Bresenham outline is the boundary (or give --rows).",
+        show_default=False,
+    ),
+]
+Seed = Annotated[
+    tuple[int, int],
+    typer.Option("--seed", "-s", parser=integer, metavar="X Y", help="The seed pixel."),
+]
+Rows = Annotated[
+    str | None,
+    typer.Option(
+        "--rows",
+        "-r",
+        metavar="ROWS",
+        help="The grid as text rows, top row first, separated by '/': '#' boundary, '.' "
+        "empty, '*' fill colour, other letters other colours; the bottom row is y = 0.",
+        show_default=False,
+    ),
+]
+Connectivity = Annotated[
+    int,
+    typer.Option("--connectivity", "-k", parser=integer, help="Neighbours: 4 or 8."),
+]
+OrderOpt = Annotated[
+    Order, choice("--order", help="stack: last in first out; queue: first in first out.")
+]
+Span = Annotated[
+    bool,
+    typer.Option("--span", help="The span (scan-line seed) fill: a whole run per seed."),
+]
+
+
+@fill_app.command("boundary", context_settings=NUMERIC_ARGS)
+@answers()
+def fill_boundary(
+    seed: Seed,
+    vertices: OptVertices = None,
+    rows: Rows = None,
+    connectivity: Connectivity = 4,
+    order: OrderOpt = Order.stack,
+    span: Span = False,
+) -> Solution:
+    """Boundary fill from a seed: fill every pixel that is neither the boundary nor filled,
+    with the trace of the stack or queue and the filled grid.
+
+    Example: scanconv fill boundary 4 1 7 4 4 7 1 4 --seed 4 4 --connectivity 8
+    """
+    return _seed_fill("boundary", vertices, seed, rows, connectivity, order, span)
+
+
+@fill_app.command("flood", context_settings=NUMERIC_ARGS)
+@answers()
+def fill_flood(
+    seed: Seed,
+    vertices: OptVertices = None,
+    rows: Rows = None,
+    connectivity: Connectivity = 4,
+    order: OrderOpt = Order.stack,
+    span: Span = False,
+) -> Solution:
+    """Flood fill from a seed: replace the seed's colour in its connected region, with the
+    trace of the stack or queue and the filled grid.
+
+    Example: scanconv fill flood --rows '#####/#...#/#.x.#/#####' --seed 1 1
+    """
+    return _seed_fill("flood", vertices, seed, rows, connectivity, order, span)
+
+
+@antialias_app.command("line", context_settings=NUMERIC_ARGS)
+@answers()
+def antialias_line(
+    x1: Num,
+    y1: Num,
+    x2: Num,
+    y2: Num,
+    method: Method = AAMethod.area,
+    samples: Samples = 4,
+    levels: Levels = 8,
+) -> Solution:
+    """An anti-aliased line: Wu's algorithm (the two pixels of each step and their
+    intensities), or a one-pixel-wide line by area sampling or supersampling.
+
+    Example: scanconv antialias line 0 0 8 3 --method wu
+    """
+    return api.antialias_line(x1, y1, x2, y2, method=method, samples=samples, levels=levels)
+
+
+@antialias_app.command("circle", context_settings=NUMERIC_ARGS)
+@answers()
+def antialias_circle(
+    r: Num,
+    center: Center = None,
+    method: Method = AAMethod.area,
+    samples: Samples = 4,
+    levels: Levels = 8,
+) -> Solution:
+    """An anti-aliased circle one pixel wide (the ring r - 1/2 <= d <= r + 1/2): each pixel's
+    covered area, or the fraction of its N x N samples inside.
+
+    Example: scanconv antialias circle 5 --method supersample --samples 4
+    """
+    return api.antialias_circle(r, center or (0, 0), method=method, samples=samples, levels=levels)
+
+
+@antialias_app.command("polygon", context_settings=NUMERIC_ARGS)
+@answers()
+def antialias_polygon(
+    vertices: Vertices,
+    method: Method = AAMethod.area,
+    samples: Samples = 4,
+    levels: Levels = 8,
+    rule: Rule = FillRule.even_odd,
+) -> Solution:
+    """An anti-aliased polygon: each pixel's exactly covered area, or the fraction of its
+    N x N samples inside.
+
+    Example: scanconv antialias polygon 0 0 7 2 4 6
+    """
+    return api.antialias_polygon(vertices, method=method, samples=samples, levels=levels, rule=rule)

@@ -1,0 +1,252 @@
+"""The scan-conversion process around scan conversion: ``transform``, ``viewport``,
+``clip line``, ``clip polygon`` and ``pipeline line``."""
+
+from __future__ import annotations
+
+from enum import Enum
+from fractions import Fraction
+from typing import Annotated
+
+import typer
+from typer._click.exceptions import NoSuchOption  # typer vendors click
+
+from .. import _api as api
+from ..algorithms.clipping import LineClipMethod, PolygonClipMethod
+from ..algorithms.lines import LineAlgorithm
+from ..core.numeric import parse_number
+from ..core.records import Solution
+from .application import app, clip_app, pipeline_app
+from .command import answers
+from .options import NUMERIC_ARGS, Num, number
+
+Rect = tuple[Fraction, Fraction, Fraction, Fraction]
+
+Window = Annotated[
+    Rect,
+    typer.Option(
+        "--window",
+        "-w",
+        parser=number,
+        metavar="XMIN YMIN XMAX YMAX",
+        show_default=False,
+        help="The clipping window in world coordinates (closed: its edges are inside).",
+    ),
+]
+Viewport = Annotated[
+    Rect,
+    typer.Option(
+        "--viewport",
+        parser=number,
+        metavar="XMIN YMIN XMAX YMAX",
+        show_default=False,
+        help="The viewport in device coordinates.",
+    ),
+]
+
+TRANSFORM_HELP = """Compose 2D transformations (homogeneous coordinates, column vectors) and
+apply them to the points X1 Y1 X2 Y2 ..., in the order given.
+
+Transformations, composed left to right:
+--translate TX TY; --scale S [SY]; --rotate ANGLE; --shear SHX SHY (each of these three may be
+followed by --about X Y); --reflect x-axis|y-axis|origin|y=x|y=-x; --reflect line X1 Y1 X2 Y2.
+ANGLE is in degrees (90, -30) or radians (pi/4, 3pi/2, 1.2rad); multiples of 15 degrees are
+exact (sqrt(2)/2), other angles are rounded to 6 decimals.
+
+Example: scanconv transform 0 0 4 0 4 3 --rotate 90 --about 2 1 --translate 3 0
+"""
+
+
+class FillRule(str, Enum):
+    """The scan-line fill rules of ``pipeline polygon --fill``."""
+
+    even_odd = "even-odd"
+    nonzero = "nonzero"
+
+
+def _is_number(word: str) -> bool:
+    try:
+        parse_number(word)
+    except ValueError:
+        return False
+    return True
+
+
+#: The transformation words of ``transform``, spelled as options (with their ``--``).
+WORDS = {"--translate", "--scale", "--rotate", "--reflect", "--shear", "--about", "--points"}
+
+
+def _check_word(word: str) -> None:
+    """Refuse an empty word (as every number parser does) and an unknown option (``-Z``,
+    ``--bogus``) the way click would; negative numbers and angles (``-pi/2``) are values."""
+    if not word.strip():
+        number(word)  # raises: empty value where a number is expected
+    if not word.startswith("-") or word.split("=", 1)[0] in WORDS or _is_number(word):
+        return
+    from ..answers.transform import parse_angle  # here: only a run of transform needs it
+
+    try:
+        parse_angle(word)
+    except ValueError:
+        raise NoSuchOption(word.split("=", 1)[0]) from None
+
+
+def split_words(words: list[str]) -> tuple[list[Fraction], list[str]]:
+    """The points (the numbers before the first transformation, or after ``--points``) and
+    the transformation words, in order.
+
+    >>> split_words(["0", "0", "4", "0", "--rotate", "90", "--about", "2", "1"])
+    ([Fraction(0, 1), Fraction(0, 1), Fraction(4, 1), Fraction(0, 1)], ['--rotate', '90', '--about', '2', '1'])
+    """
+    points: list[Fraction] = []
+    ops: list[str] = []
+    taking = True
+    for word in words:
+        _check_word(word)
+        if word == "--points":
+            taking = True
+        elif taking and _is_number(word):
+            points.append(number(word))
+        else:
+            taking = False
+            ops.append(word)
+    return points, ops
+
+
+@app.command(context_settings=NUMERIC_ARGS, help=TRANSFORM_HELP)
+@answers()
+def transform(
+    words: Annotated[
+        list[str],
+        typer.Argument(
+            metavar="X1 Y1 ... --TRANSFORMATION ARGS ...",
+            help="The points, then the transformations in the order they are applied.",
+            show_default=False,
+        ),
+    ],
+    inverse: Annotated[
+        bool,
+        typer.Option("--inverse", help="Also show the inverse of the composite matrix."),
+    ] = False,
+) -> Solution:
+    points, ops = split_words(words)
+    return api.transform(points, ops, inverse=inverse)
+
+
+@app.command(context_settings=NUMERIC_ARGS)
+@answers()
+def viewport(
+    window: Window,
+    viewport: Viewport,
+    points: Annotated[
+        list[Fraction] | None,
+        typer.Argument(
+            parser=number,
+            metavar="[X1 Y1 ...]",
+            help="World points to map (default: the window's four corners).",
+            show_default=False,
+        ),
+    ] = None,
+) -> Solution:
+    """Window-to-viewport mapping: sx, sy, tx, ty with the numbers substituted, the composite
+    matrix, each point mapped, and the distortion when sx != sy.
+
+    Example: scanconv viewport 0 0 2 1 --window 0 0 4 4 --viewport 10 10 20 16
+    """
+    return api.viewport(window, viewport, points or [])
+
+
+@clip_app.command("line", context_settings=NUMERIC_ARGS)
+@answers()
+def clip_line(
+    x1: Num,
+    y1: Num,
+    x2: Num,
+    y2: Num,
+    window: Window,
+    method: Annotated[
+        LineClipMethod,
+        typer.Option("--method", "-m", case_sensitive=False, help="Line clipping method."),
+    ] = LineClipMethod.cohen_sutherland,
+) -> Solution:
+    """Clip the segment (X1, Y1)-(X2, Y2) against the window: region codes (T B R L) and one
+    row per iteration (Cohen-Sutherland), or the p_k, q_k table and u1, u2 (Liang-Barsky).
+
+    Example: scanconv clip line 7 9 11 4 --window 4 4 10 8 --method cohen-sutherland
+    """
+    return api.clip_line(x1, y1, x2, y2, window, method=method)
+
+
+@clip_app.command("polygon", context_settings=NUMERIC_ARGS)
+@answers()
+def clip_polygon(
+    vertices: Annotated[
+        list[Fraction],
+        typer.Argument(
+            parser=number, metavar="X1 Y1 X2 Y2 X3 Y3 ...", help="The polygon's vertices."
+        ),
+    ],
+    window: Window,
+    method: Annotated[
+        PolygonClipMethod,
+        typer.Option("--method", "-m", case_sensitive=False, help="Polygon clipping method."),
+    ] = PolygonClipMethod.sutherland_hodgman,
+) -> Solution:
+    """Clip a polygon against the window edge by edge (left, right, bottom, top): one table per
+    edge, the clipped polygon, and the degenerate edges a concave polygon leaves.
+
+    Example: scanconv clip polygon 100 150 200 250 300 200 --window 150 150 200 200
+    """
+    return api.clip_polygon(vertices, window, method=method)
+
+
+@pipeline_app.command("line", context_settings=NUMERIC_ARGS)
+@answers()
+def pipeline_line(
+    x1: Num,
+    y1: Num,
+    x2: Num,
+    y2: Num,
+    window: Window,
+    viewport: Viewport,
+    algo: Annotated[
+        LineAlgorithm,
+        typer.Option("--algo", "-a", case_sensitive=False, help="Line algorithm."),
+    ] = LineAlgorithm.bresenham,
+    clip: Annotated[
+        LineClipMethod,
+        typer.Option("--clip", case_sensitive=False, help="Line clipping method."),
+    ] = LineClipMethod.cohen_sutherland,
+) -> Solution:
+    """A world-coordinate line through the whole process: clip against the window, map to the
+    viewport, round the end points, scan convert, and show the frame buffer.
+
+    Example: scanconv pipeline line -5 0 15 10 --window 0 0 10 10 --viewport 0 0 20 10
+    """
+    return api.pipeline_line(x1, y1, x2, y2, window, viewport, algo=algo, clip=clip)
+
+
+@pipeline_app.command("polygon", context_settings=NUMERIC_ARGS)
+@answers()
+def pipeline_polygon(
+    vertices: Annotated[
+        list[Fraction],
+        typer.Argument(
+            parser=number, metavar="X1 Y1 X2 Y2 X3 Y3 ...", help="The polygon's world vertices."
+        ),
+    ],
+    window: Window,
+    viewport: Viewport,
+    fill: Annotated[
+        bool,
+        typer.Option("--fill/--outline", help="Scan-line fill the polygon, or draw its edges."),
+    ] = False,
+    rule: Annotated[
+        FillRule, typer.Option("--rule", case_sensitive=False, help="Fill rule (with --fill).")
+    ] = FillRule.even_odd,
+) -> Solution:
+    """A world-coordinate polygon through the process: Sutherland-Hodgman against the window,
+    the vertices mapped to the viewport, then its edges (Bresenham) or its scan-line fill.
+
+    Example: scanconv pipeline polygon -2 0 6 0 2 6 --window 0 0 4 4 --viewport 0 0 8 8 --fill
+    """
+    return api.pipeline_polygon(vertices, window, viewport, fill=fill, rule=rule)

@@ -1,0 +1,234 @@
+"""Issue 13: the named conventions (knobs and presets), the notes' layout, and the notes' own
+computational examples run by their stated algorithms."""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from scanconv import _api as api
+from scanconv.algorithms import circles, ellipses, lines
+from scanconv.algorithms.conventions import KNOBS, PRESETS, ROUNDINGS, resolve
+from scanconv.core.checks import InputError
+
+from .helpers import assert_refused, run
+
+coord = st.integers(-40, 40)
+
+# --- each knob changes only what it should ----------------------------------------------------
+
+
+@given(coord, coord, coord, coord)
+def test_line_tie_changes_pixels_only_where_p_is_zero(x1, y1, x2, y2):
+    step = list(lines.bresenham(x1, y1, x2, y2, "step"))
+    keep = list(lines.bresenham(x1, y1, x2, y2, "keep"))
+    assert len(step) == len(keep)
+    first = next((i for i, (a, b) in enumerate(zip(step, keep, strict=True)) if a != b), None)
+    if first is None:
+        assert all(s.p != 0 for s in step)
+    else:  # the walks agree up to the first tie, which the two rules decide differently
+        assert step[first].p == keep[first].p == 0
+        assert step[first].decision != keep[first].decision
+    if step:
+        assert step[-1].pixel == keep[-1].pixel  # both end on the end point
+
+
+@given(st.integers(0, 300))
+def test_circle_tie_changes_points_only_where_p_is_zero(r):
+    for gen in (circles.midpoint, circles.bresenham, circles.general):
+        step, keep = list(gen(r, "step")), list(gen(r, "keep"))
+        first = next((i for i, (a, b) in enumerate(zip(step, keep, strict=False)) if a != b), None)
+        if first is None:
+            assert len(step) == len(keep)
+            assert all(s.p != 0 for s in step if s.decision is not None)
+        else:
+            assert step[first].p == keep[first].p == 0
+
+
+@given(st.integers(0, 500))
+def test_p0_five_quarters_decides_as_one_minus_r_with_strict_ties(r):
+    a = list(circles.midpoint(r, p0="1-r"))
+    b = list(circles.midpoint(r, p0="5/4-r"))
+    assert [s.pixel for s in a] == [s.pixel for s in b]
+    assert all(sb.p - sa.p == Fraction(1, 4) for sa, sb in zip(a, b, strict=True))
+
+
+@given(st.integers(0, 500))
+def test_update_changes_the_working_only(r):
+    assert list(circles.midpoint(r, update="old")) == list(circles.midpoint(r, update="new"))
+    new = api.circle(r, update="new")
+    old = api.circle(r, update="old")
+    assert list(new.pixels()) == list(old.pixels())
+    assert [q.tex for q in new.derived] != [q.tex for q in old.derived]
+
+
+@given(st.integers(0, 300))
+def test_inclusive_loop_only_extends_the_strict_walk(r):
+    for gen in (circles.midpoint, circles.general):
+        strict = list(gen(r, loop="strict"))
+        inclusive = list(gen(r, loop="inclusive"))
+        if gen is circles.general:  # its last row is the stop point, with no decision
+            strict = strict[:-1]
+        assert inclusive[: len(strict)] == strict
+    sol = api.circle(r, loop="inclusive")
+    px = list(sol.pixels())
+    assert len(px) == len(set(px))
+
+
+@given(st.integers(0, 40), st.integers(0, 40))
+def test_ellipse_loop_changes_region_one_only_on_an_equal_boundary(rx, ry):
+    strict = list(ellipses.midpoint_ellipse(rx, ry, "strict"))
+    inclusive = list(ellipses.midpoint_ellipse(rx, ry, "inclusive"))
+    region1 = [s for s in strict if s.extra[0] == 1]
+    # the loop test is made after each step, on 2ry²x and 2rx²y as the step leaves them
+    tx, ty = (region1[-1].extra[1], region1[-1].extra[2]) if region1 else (0, 2 * rx * rx * ry)
+    if strict != inclusive:
+        assert tx == ty and ry > 0
+    assert ellipses.region1_end(rx, ry, "inclusive") == (
+        next((s.pixel for s in reversed(inclusive) if s.extra[0] == 1), (0, ry))
+    )
+
+
+halves = st.fractions(min_value=-30, max_value=30, max_denominator=4)
+
+
+@given(halves, halves, halves, halves, st.sampled_from(sorted(ROUNDINGS)))
+def test_dda_rounding_changes_pixels_only_at_halves_or_negatives(x1, y1, x2, y2, rounding):
+    base = list(lines.dda(x1, y1, x2, y2))
+    other = list(lines.dda(x1, y1, x2, y2, rounding))
+    for a, b in zip(base, other, strict=True):
+        assert a.extra[:2] == b.extra[:2]  # the exact values never change
+        for v, pa, pb in zip(a.extra[:2], a.pixel, b.pixel, strict=True):
+            if pa != pb:
+                frac = Fraction(v) - int(Fraction(v))
+                assert frac.denominator == 2 or v < 0 or rounding == "trunc"
+
+
+# --- presets -------------------------------------------------------------------------------
+
+
+def test_every_preset_sets_only_knobs_that_exist():
+    for preset in PRESETS.values():
+        for knobs in preset.values():
+            for name, value in knobs.items():
+                assert value in KNOBS[name].values
+
+
+def test_presets_reproduce_their_sources_tables():
+    # Hearn & Baker, the midpoint circle, r = 10: p_k = -9, -6, -1, 6, -3, 8, 5
+    hb = api.circle(10, convention="hearn-baker", layout="textbook")
+    assert [s.p for s in hb.steps()] == [-9, -6, -1, 6, -3, 8, 5]
+    # Foley: p0 = 5/4 - r, increments with the old x; the same decisions
+    fo = api.circle(10, convention="foley", layout="textbook")
+    assert [s.p - Fraction(1, 4) for s in fo.steps()] == [-9, -6, -1, 6, -3, 8, 5]
+    assert any("2x_k + 3" in q.tex for q in fo.derived)
+    # The widely copied "if D > 0 step y" (Wikipedia, Foley's MidpointLine): ties keep y
+    wk = api.line(0, 0, 4, 2, convention="wikipedia")
+    assert list(wk.pixels()) == [(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)]
+    nt = api.line(0, 0, 4, 2, convention="notes")
+    assert list(nt.pixels()) == [(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)]
+
+
+def test_an_explicit_knob_overrides_the_preset():
+    assert resolve("line", "bresenham", "wikipedia", {"tie": "step"}) == {"tie": "step"}
+
+
+def test_answers_state_their_conventions_in_every_format():
+    for fmt in ("plain", "markdown", "latex", "json", "rich"):
+        r = run("line", "2", "2", "10", "6", "--convention", "foley", "-f", fmt)
+        assert r.code == 0 and "foley" in r.out.lower() and "tie" in r.out, fmt
+
+
+# --- the notes' layout ---------------------------------------------------------------------
+
+
+def test_notes_layout_keeps_every_value_and_pixel():
+    a = json.loads(run("line", "2", "8", "10", "4", "-f", "json").out)
+    b = json.loads(run("line", "2", "8", "10", "4", "--layout", "textbook", "-f", "json").out)
+    assert a["pixels"] == b["pixels"]
+    assert [s["p"] for s in a["steps"][:-1]] == [s["p"] for s in b["steps"]]
+    assert [s["pixel"] for s in a["steps"]] == a["pixels"]  # row 0 is the start pixel
+
+
+# --- the notes' computational examples, by their stated algorithms -------------------------
+
+
+def test_notes_bresenham_line_2_2_10_6():
+    sol = api.line(2, 2, 10, 6, convention="notes")
+    rows = [(s.k, s.p, s.decision and s.decision.value, s.pixel) for s in sol.steps()]
+    assert rows[0] == (0, 0, "NE", (2, 2)) and rows[-1] == (8, 0, None, (10, 6))
+    assert [r[1] for r in rows] == [0, -8, 0, -8, 0, -8, 0, -8, 0]
+    assert any("E1" in n for n in sol.notes)
+
+
+def test_notes_dda_2_2_10_6_is_the_notes_table():
+    sol = api.line(2, 2, 10, 6, algo="dda", convention="notes")
+    ys = [s.extra[1] for s in sol.steps()]
+    assert ys == [2, Fraction(5, 2), 3, Fraction(7, 2), 4, Fraction(9, 2), 5, Fraction(11, 2), 6]
+    assert [s.pixel for s in sol.steps()] == [
+        (2, 2), (3, 3), (4, 3), (5, 4), (6, 4), (7, 5), (8, 5), (9, 6), (10, 6),
+    ]  # fmt: skip
+
+
+def test_notes_dda_2_2_5_10_and_basic_2_2_8_5():
+    dda = api.line(2, 2, 5, 10, algo="dda", convention="notes")
+    assert list(dda.pixels())[-1] == (5, 10) and any("E2" in n for n in dda.notes)
+    basic = api.line(2, 2, 8, 5, algo="basic", convention="notes")
+    assert list(basic.pixels()) == [(2, 2), (3, 3), (4, 3), (5, 4), (6, 4), (7, 5), (8, 5)]
+
+
+def test_notes_general_method_r5():
+    sol = api.circle(5, method="general", convention="notes")
+    steps = list(sol.steps())
+    assert [s.p for s in steps] == [0, -5, 0, 1]
+    assert [s.pixel for s in steps] == [(0, 5), (1, 4), (2, 4), (3, 3)]
+    assert any("E8" in n for n in sol.notes)
+
+
+def test_notes_topic9_circle_r5():
+    sol = api.circle(5, method="midpoint", convention="notes")
+    steps = list(sol.steps())
+    assert [s.p for s in steps] == [-4, -1, 4, 3, 6]
+    assert [s.pixel for s in steps] == [(0, 5), (1, 5), (2, 5), (3, 4), (4, 3)]
+    assert any("E10" in n for n in sol.notes)
+    b = api.circle(5, method="bresenham")
+    assert any("'midpoint'" in n for n in b.notes)  # says how to get the notes' p0 = 1 - r
+
+
+# --- bad combinations -----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (("line", "0", "0", "5", "2", "--algo", "dda", "--tie", "keep"), ("--tie", "dda")),
+        (("line", "0", "0", "5", "2", "--rounding", "half-even"), ("--rounding", "bresenham")),
+        (("circle", "5", "-m", "bresenham", "--p0", "5/4-r"), ("--p0",)),
+        (("circle", "5", "-m", "trig", "--tie", "keep"), ("--tie", "trig")),
+        (("circle", "5", "-m", "general", "--update", "old"), ("--update",)),
+        (("circle", "5", "-m", "midpoint", "--rounding", "trunc"), ("--rounding",)),
+        (("circle", "5", "--convention", "wikipedia"), ("--convention",)),
+        (("ellipse", "8", "6", "--convention", "wikipedia"), ("--convention",)),
+        (("circle", "5", "--layout", "sideways"), ("--layout",)),
+    ],
+)
+def test_bad_combinations_are_one_line_errors(args, words):
+    assert_refused(run(*args), *words)
+
+
+def test_library_refuses_a_knob_that_does_not_apply():
+    with pytest.raises(InputError) as err:
+        api.line(0, 0, 3, 1, algo="basic", tie="keep")
+    assert err.value.param == "tie"
+
+
+def test_ellipse_inclusive_loop_example():
+    # rx = ry = 3: region 1 ends on 2ry²x = 2rx²y exactly, where <= takes one more step
+    strict = list(ellipses.midpoint_ellipse(3, 3, "strict"))
+    inclusive = list(ellipses.midpoint_ellipse(3, 3, "inclusive"))
+    assert strict != inclusive
+    assert sum(s.extra[0] == 1 for s in inclusive) == sum(s.extra[0] == 1 for s in strict) + 1
