@@ -121,7 +121,7 @@ def note_segments(note: str) -> list[tuple[bool, str]]:
 def note_unicode(note: str) -> str:
     """A note for the terminal and plain text: its ``$...$`` math in Unicode.
 
-    >>> note_unicode(r"$p_k < 0$ chooses E, $p_k \geq 0$ chooses NE")
+    >>> note_unicode(r"$p_k < 0$ chooses E, $p_k \\geq 0$ chooses NE")
     'pₖ < 0 chooses E, pₖ ≥ 0 chooses NE'
     """
     return "".join(tex_to_unicode(t) if math else t for math, t in note_segments(note))
