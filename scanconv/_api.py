@@ -27,17 +27,24 @@ from enum import Enum
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
-from .algorithms.circles import CircleMethod
-from .algorithms.clipping import LineClipMethod, PolygonClipMethod
-from .algorithms.conventions import P0, Convention, Layout, Loop, Rounding, Tie, Update
-from .algorithms.lines import LineAlgorithm
+from .algorithms.choices import (
+    P0,
+    CircleMethod,
+    Convention,
+    Layout,
+    LineAlgorithm,
+    LineClipMethod,
+    Loop,
+    PolygonClipMethod,
+    Rounding,
+    Tie,
+    Update,
+)
 from .core.checks import InputError
 from .core.numeric import Number, fmt_short, parse_number
 
 if TYPE_CHECKING:
-    from .algorithms.coverage import AAMethod
-    from .algorithms.polygon import FillRule
-    from .algorithms.seedfill import Order
+    from .algorithms.choices import AAMethod, FillRule, Order
     from .core.records import Solution
 
 __all__ = [

@@ -28,11 +28,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Iterable, Iterator
-from enum import Enum
 from fractions import Fraction
 
 from ..core.numeric import Number
 from ..core.records import Move, Pixel, Step, new_step
+from .choices import CircleMethod
 from .conventions import ROUNDINGS, Rounding, rounder
 
 __all__ = ["ROUNDINGS", "Rounding", "rounder"]
@@ -457,18 +457,6 @@ def symmetric_pixels(points: Iterable[Pixel], xc: int = 0, yc: int = 0) -> Itera
                     yield p
         else:
             yield from images(x, y, xc, yc)
-
-
-class CircleMethod(str, Enum):
-    """The circle methods, by the names the API and the CLI (``--method``) take: ``general`` is
-    the notes' decision method at the point (p0 = 0), ``polynomial`` the √ method."""
-
-    midpoint = "midpoint"
-    bresenham = "bresenham"
-    polynomial = "polynomial"
-    general = "general"
-    trig = "trig"
-    symmetric_dda = "symmetric-dda"
 
 
 METHODS = tuple(m.value for m in CircleMethod if m.value not in ALIASES)

@@ -39,19 +39,6 @@ class Edge(str, Enum):
 EDGES = (Edge.LEFT, Edge.RIGHT, Edge.BOTTOM, Edge.TOP)
 
 
-class LineClipMethod(str, Enum):
-    """The line clipping methods, by the names the API and the CLI (``--method``) take."""
-
-    cohen_sutherland = "cohen-sutherland"
-    liang_barsky = "liang-barsky"
-
-
-class PolygonClipMethod(str, Enum):
-    """The polygon clipping methods (one, named for symmetry with the line methods)."""
-
-    sutherland_hodgman = "sutherland-hodgman"
-
-
 def region_code(point: Point, window: Rect) -> int:
     """The 4-bit region code: bit 1 left (x < xmin), bit 2 right (x > xmax), bit 3 below
     (y < ymin), bit 4 above (y > ymax); written TBRL, most significant bit first.

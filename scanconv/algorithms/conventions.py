@@ -16,7 +16,6 @@ its values, a default (the course notes' own rule) and the methods it applies to
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from enum import Enum
 from typing import NamedTuple
 
 from ..core.checks import InputError
@@ -28,17 +27,7 @@ from ..core.numeric import (
     round_half_up,
     round_trunc,
 )
-
-
-class Rounding(str, Enum):
-    """How a computed coordinate becomes a pixel coordinate."""
-
-    half_up = "half-up"
-    trunc = "trunc"
-    half_even = "half-even"
-    c_cast = "c-cast"
-    half_away = "half-away"
-
+from .choices import Rounding
 
 ROUNDINGS: dict[str, Callable[[Number], int]] = {
     Rounding.half_up.value: round_half_up,
@@ -72,50 +61,6 @@ def rounder(rounding: str) -> Callable[[Number], int]:
         raise InputError(
             f"unknown rounding {rounding!r} (choose from {', '.join(ROUNDINGS)})", "rounding"
         ) from None
-
-
-class Tie(str, Enum):
-    """What a decision parameter of exactly 0 chooses."""
-
-    step = "step"
-    keep = "keep"
-
-
-class P0(str, Enum):
-    """The midpoint circle's initial decision parameter as printed."""
-
-    integer = "1-r"
-    exact = "5/4-r"
-
-
-class Loop(str, Enum):
-    """Whether the octant (region-1) loop is strict (``x < y``) or inclusive (``x <= y``)."""
-
-    strict = "strict"
-    inclusive = "inclusive"
-
-
-class Update(str, Enum):
-    """Whether the midpoint circle's increments are written with the new or the old x."""
-
-    new = "new"
-    old = "old"
-
-
-class Layout(str, Enum):
-    """The step table's row shape: the notes' or the textbook's."""
-
-    notes = "notes"
-    textbook = "textbook"
-
-
-class Convention(str, Enum):
-    """The named presets (:data:`PRESETS`)."""
-
-    notes = "notes"
-    hearn_baker = "hearn-baker"
-    foley = "foley"
-    wikipedia = "wikipedia"
 
 
 class Knob(NamedTuple):

@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from enum import Enum
 from fractions import Fraction
 from itertools import pairwise
 
@@ -38,16 +37,6 @@ from ..core.checks import InputError, check_count
 from ..core.numeric import Number, normalize, round_half_up
 from ..core.records import Pixel
 from .polygon import Edge, Point, check_polygon, check_rule, edge_table, spans_at
-
-
-class AAMethod(str, Enum):
-    """Anti-aliasing methods, by the names the API and the CLI (``--method``) take; ``wu`` is
-    for lines only (:mod:`scanconv.algorithms.wu`)."""
-
-    area = "area"
-    supersample = "supersample"
-    wu = "wu"
-
 
 MAX_SAMPLES = 16
 """Largest N of N x N supersampling (256 samples per pixel)."""

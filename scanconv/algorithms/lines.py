@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from enum import Enum
 from fractions import Fraction
 
 from ..core.numeric import (
@@ -19,6 +18,7 @@ from ..core.numeric import (
     round_half_up,
 )
 from ..core.records import Move, Step, new_step
+from .choices import LineAlgorithm
 from .conventions import rounder
 
 
@@ -240,14 +240,6 @@ def basic(
         rb = rnd(b)
         pixel = (rb, a) if steep else (a, rb)
         yield Step(k, None, None, pixel, (a, b, rb))
-
-
-class LineAlgorithm(str, Enum):
-    """The line algorithms, by the names the API and the CLI (``--algo``) take."""
-
-    bresenham = "bresenham"
-    dda = "dda"
-    basic = "basic"
 
 
 ALGORITHMS = tuple(a.value for a in LineAlgorithm)

@@ -35,24 +35,17 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Sequence
-from enum import Enum
 from fractions import Fraction
 from typing import NamedTuple
 
 from ..core.checks import InputError
 from ..core.numeric import Number, normalize, round_half_up
 from ..core.records import Pixel
+from .choices import FillRule
 from .lines import bresenham, orient
 
 Point = tuple[Number, Number]
 """A vertex ``(x, y)``, exact."""
-
-
-class FillRule(str, Enum):
-    """The fill rules, by the names the API and the CLI (``--rule``) take."""
-
-    even_odd = "even-odd"
-    nonzero = "nonzero"
 
 
 RULES = tuple(r.value for r in FillRule)

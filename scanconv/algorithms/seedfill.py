@@ -32,12 +32,12 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
-from enum import Enum
 from itertools import islice
 from typing import NamedTuple
 
 from ..core.checks import InputError
 from ..core.records import Pixel
+from .choices import Order
 
 EMPTY, BOUNDARY, FILLED = 0, 1, 2
 """The colours every grid knows: background, boundary and the fill colour."""
@@ -50,14 +50,6 @@ SHOWN = 6
 
 FOUR = ((1, 0), (-1, 0), (0, 1), (0, -1))
 EIGHT = (*FOUR, (1, 1), (-1, 1), (-1, -1), (1, -1))
-
-
-class Order(str, Enum):
-    """How the pending pixels are taken: last in first out (the recursion's order) or first
-    in first out (breadth first)."""
-
-    stack = "stack"
-    queue = "queue"
 
 
 METHODS = ("boundary", "flood")

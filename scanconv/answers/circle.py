@@ -299,17 +299,19 @@ def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> _Parts:
         ),
     )
     if layout == "notes":
-        first = f"Row k plots (x_k, y_k) and decides on p_k; row 0 is the start point (0, {r})."
+        first = (
+            f"Row $k$ plots $(x_k, y_k)$ and decides on $p_k$; row 0 is the start point $(0, {r})$."
+        )
     else:
-        first = f"The start point (0, {r}) is plotted before the first step."
+        first = f"The start point $(0, {r})$ is plotted before the first step."
     notes = [first]
     if p0s == "1-r":
         notes.append(
-            "p0 = 1 - r is 5/4 - r rounded to an integer; every p_k is an integer and the "
-            "decisions are those of 5/4 - r."
+            "$p_0 = 1 - r$ is $5/4 - r$ rounded to an integer; every $p_k$ is an integer and the "
+            "decisions are those of $5/4 - r$."
             if tie == "step"
-            else "p0 = 1 - r: every p_k is an integer; with p_k <= 0 keeping y, p_k = 0 "
-            "decides differently from 5/4 - r (which is then 1/4 > 0)."
+            else "$p_0 = 1 - r$: every $p_k$ is an integer; with $p_k \\le 0$ keeping $y$, $p_k = 0$ "
+            "decides differently from $5/4 - r$ (which is then $1/4 > 0$)."
         )
 
     def gen() -> Iterator[Step]:

@@ -11,12 +11,12 @@ from collections.abc import Sequence
 from fractions import Fraction
 from typing import Any
 
+from ..algorithms.choices import LineClipMethod
 from ..algorithms.clipping import (
     EDGES,
     CSResult,
     Edge,
     LBResult,
-    LineClipMethod,
     Point,
     Rect,
     boundary,

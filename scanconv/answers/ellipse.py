@@ -136,11 +136,12 @@ def ellipse_solution(
     if y0 == 0:  # region 1 ended on the x axis: region 2 has no steps, p2_0 is not used
         derived = derived[:-1]
     notes = [
-        "Region 1: p1_k < 0 -> (x+1, y), p1_{k+1} = p1_k + 2ry²x_{k+1} + ry²; "
-        "else (x+1, y-1), p1_{k+1} = p1_k + 2ry²x_{k+1} - 2rx²y_{k+1} + ry².",
-        "Region 2: p2_k > 0 -> (x, y-1), p2_{k+1} = p2_k - 2rx²y_{k+1} + rx²; "
-        "else (x+1, y-1), p2_{k+1} = p2_k + 2ry²x_{k+1} - 2rx²y_{k+1} + rx²; until y = 0.",
-        f"The start point (0, {iry}) is plotted before the first step.",
+        "Region 1: $p1_k < 0 \\to (x+1, y)$, $p1_{k+1} = p1_k + 2r_y^2 x_{k+1} + r_y^2$; "
+        "else $(x+1, y-1)$, $p1_{k+1} = p1_k + 2r_y^2 x_{k+1} - 2r_x^2 y_{k+1} + r_y^2$.",
+        "Region 2: $p2_k > 0 \\to (x, y-1)$, $p2_{k+1} = p2_k - 2r_x^2 y_{k+1} + r_x^2$; "
+        "else $(x+1, y-1)$, $p2_{k+1} = p2_k + 2r_y^2 x_{k+1} - 2r_x^2 y_{k+1} + r_x^2$; "
+        "until $y = 0$.",
+        f"The start point $(0, {iry})$ is plotted before the first step.",
     ]
     if y0 == 0 and x0 < irx:
         notes.append(

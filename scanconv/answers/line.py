@@ -27,7 +27,7 @@ from ..core.numeric import (
     normalize,
     round_half_up,
 )
-from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, worked
+from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, rule, worked
 from . import theory
 
 # --- Solutions: the exam answer around the steps -------------------------------------------
@@ -260,25 +260,30 @@ def _bresenham_solution(
             f"\\quad (\\text{{added when }} p_k {ge} 0)",
         ),
     ]
-    notes = [f"Start at ({sx}, {sy}), plotted before the first step."]
-    if swapped:
-        notes.insert(
+    if swapped:  # said first, so that every line below uses the swapped names
+        derived.insert(
             0,
-            f"End points swapped so that {maj} increases along the walk: "
-            f"(x1, y1) = ({sx}, {sy}), (x2, y2) = ({ex}, {ey}).",
+            rule(
+                "swap",
+                f"\\text{{swap the end points so that }} {maj} \\text{{ increases: }} "
+                f"(x_1, y_1) = ({sx}, {sy}), \\ (x_2, y_2) = ({ex}, {ey})",
+            ),
         )
+    notes = [f"Start at $({sx}, {sy})$, plotted before the first step."]
     if tie == "keep":
         notes.append(
-            f"p_k <= 0 chooses {stay}, p_k > 0 chooses {move}; a tie (p_k = 0) keeps {mnr}."
+            f"$p_k \\le 0$ chooses {stay}, $p_k > 0$ chooses {move}; a tie ($p_k = 0$) keeps "
+            f"${mnr}$."
         )
     else:
         notes.append(
-            f"p_k < 0 chooses {stay}, p_k >= 0 chooses {move}; a tie (p_k = 0) steps {mnr} too."
+            f"$p_k < 0$ chooses {stay}, $p_k \\ge 0$ chooses {move}; a tie ($p_k = 0$) steps "
+            f"${mnr}$ too."
         )
     if layout == "notes":
-        notes[notes.index(f"Start at ({sx}, {sy}), plotted before the first step.")] = (
-            f"Row k plots (x_k, y_k) and decides on p_k; row 0 is the start ({sx}, {sy}), the "
-            "last row the end point (no decision)."
+        notes[0] = (
+            f"Row $k$ plots $(x_k, y_k)$ and decides on $p_k$; row 0 is the start $({sx}, {sy})$, "
+            "the last row the end point (no decision)."
         )
 
     def steps() -> Iterator[Step]:

@@ -5,8 +5,7 @@ from __future__ import annotations
 from typing import Annotated
 
 from .. import _api as api
-from ..algorithms.circles import CircleMethod
-from ..algorithms.conventions import P0, Layout, Loop, Update
+from ..algorithms.choices import P0, CircleMethod, Layout, Loop, Update
 from ..core.records import Solution
 from .application import app
 from .command import answers

@@ -10,9 +10,7 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.coverage import AAMethod
-from ..algorithms.polygon import FillRule
-from ..algorithms.seedfill import Order
+from ..algorithms.choices import AAMethod, FillRule, Order
 from ..core.records import Solution
 from .application import _subapp, app
 from .command import answers

@@ -7,8 +7,7 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.conventions import Convention, Layout, Rounding, Tie
-from ..algorithms.lines import LineAlgorithm
+from ..algorithms.choices import Convention, Layout, LineAlgorithm, Rounding, Tie
 from ..core.records import Solution
 from .application import app
 from .command import answers

@@ -11,8 +11,7 @@ import typer
 from typer._click.exceptions import NoSuchOption  # typer vendors click
 
 from .. import _api as api
-from ..algorithms.clipping import LineClipMethod, PolygonClipMethod
-from ..algorithms.lines import LineAlgorithm
+from ..algorithms.choices import LineAlgorithm, LineClipMethod, PolygonClipMethod
 from ..core.numeric import parse_number
 from ..core.records import Solution
 from .application import app, clip_app, pipeline_app
