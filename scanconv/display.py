@@ -62,7 +62,6 @@ class Answer(Solution):
         *,
         grid: bool = True,
         origin: str = "bottom-left",
-        explain: bool = True,
     ) -> str:
         """The answer as text in ``fmt`` (``markdown``, ``latex``, ``plain``, ``csv``,
         ``json``): the same text ``scanconv ... --format fmt`` prints."""
@@ -75,7 +74,7 @@ class Answer(Solution):
             raise ValueError(f"unknown format {fmt!r} (choose from {names})") from None
         if chosen in (Format.auto, Format.rich):
             raise ValueError("the rich format is for a terminal: use markdown or plain")
-        options = Options(grid=grid, origin=origin, explain=explain)
+        options = Options(grid=grid, origin=origin)
         return "".join(c for c in render(self, chosen, options) if not isinstance(c, Notice))
 
     def grid(self, origin: str = "bottom-left") -> str:

@@ -34,7 +34,7 @@ def test_jupyter_shows_the_markdown_answer():
     shown = sol._repr_markdown_()
     assert shown == sol.to("markdown")
     assert shown.startswith("## Bresenham's line algorithm: (2, 2) to (10, 6)")
-    assert "| $k$ |" in shown and "$p_0 = 2\\Delta y - \\Delta x" in shown
+    assert "$k$ |" in shown and "$p_0 = 2\\Delta y - \\Delta x" in shown
 
 
 def test_rows_are_the_step_table_with_exact_values():

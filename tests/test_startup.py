@@ -40,12 +40,17 @@ def loaded_after(*args: str) -> set[str]:
     return set(filter(None, names.split(",")))
 
 
-@pytest.mark.parametrize("fmt", ["plain", "markdown", "csv", "json", "latex"])
+@pytest.mark.parametrize("fmt", ["plain", "csv", "json", "latex"])
 def test_text_formats_load_no_numpy_rich_tabulate_or_pydantic(fmt):
     """pydantic would come with typer 0.29, which pyproject.toml excludes for its start-up."""
     assert (
         loaded_after("line", "2", "2", "10", "6", "--algo", "bresenham", "--format", fmt) == set()
     )
+
+
+def test_only_markdown_loads_tabulate():
+    """tabulate pads the Markdown tables; its import (importlib.metadata) is paid there only."""
+    assert loaded_after("line", "2", "2", "10", "6", "--format", "markdown") == {"tabulate"}
 
 
 def test_rich_format_loads_rich():

@@ -7,7 +7,18 @@ by topic in :mod:`.lines`, :mod:`.circles`, :mod:`.curves`, :mod:`.image` and :m
 each a thin mapping from flags to a :mod:`scanconv._api` function.
 """
 
-from .application import app
+from typing import Any
+
 from .entry import main
 
 __all__ = ["app", "main"]
+
+
+def __getattr__(name: str) -> Any:
+    """``scanconv.cli.app``: the typer app with every command registered (``main`` registers
+    only the command it runs)."""
+    if name == "app":
+        from .application import register
+
+        return register()
+    raise AttributeError(f"module 'scanconv.cli' has no attribute {name!r}")

@@ -126,5 +126,46 @@ def _root(
     """Scan-conversion algorithms as exam-style worked solutions."""
 
 
-# Register the commands (each module adds its own to ``app`` and the groups above).
-from . import lines, image, curves, circles, compare, process, fill  # noqa: E402, F401, I001
+#: The command modules, in the order of ``scanconv --help``; each registers its commands on
+#: ``app`` and the groups above when it is imported.
+TOPIC_MODULES = ("lines", "image", "curves", "circles", "compare", "process", "fill")
+
+#: Which module defines each top-level command or group.
+TOPIC_OF = {
+    "line": "lines",
+    "image": "image",
+    "storage": "image",
+    "quantize": "image",
+    "sample": "image",
+    "parametric": "curves",
+    "bezier": "curves",
+    "bspline": "curves",
+    "continuity": "curves",
+    "local-control": "curves",
+    "circle": "circles",
+    "ellipse": "circles",
+    "compare": "compare",
+    "clip": "process",
+    "transform": "process",
+    "viewport": "process",
+    "pipeline": "process",
+    "polygon": "fill",
+    "fill": "fill",
+    "antialias": "fill",
+}
+
+
+def register(argv: list[str] | None = None) -> typer.Typer:
+    """Import the command modules ``argv`` needs and return :data:`app`: only the one that
+    defines ``argv[0]`` (start-up time: a run loads no other command's options), every one
+    for help, ``--version`` or a name that is not a command (``None``: every one).
+
+    >>> register(["line", "2", "2", "10", "6"]) is app
+    True
+    """
+    import importlib
+
+    named = TOPIC_OF.get(argv[0]) if argv else None
+    for module in TOPIC_MODULES if named is None else (named,):
+        importlib.import_module(f"{__package__}.{module}")
+    return app

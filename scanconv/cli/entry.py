@@ -16,18 +16,19 @@ from typing import Any, NoReturn
 import typer
 
 from . import output
-from .application import app
+from .application import register
 from .output import PROG, note
 
 _MINUS = "\u2212"
 _NUM = r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:/\d+)?"
-_POINT = re.compile(rf"^\(?\s*({_NUM})\s*,\s*({_NUM})\s*\)?$")
-_SIZE = re.compile(r"^(\d+)\s*[xX\u00d7]\s*(\d+)$")
+# patterns, compiled by re on first use: a plain run never needs them (start-up time)
+_POINT = rf"^\(?\s*({_NUM})\s*,\s*({_NUM})\s*\)?$"
+_SIZE = r"^(\d+)\s*[xX\u00d7]\s*(\d+)$"
 _FORMAT_NAMES = {"md": "markdown", "tex": "latex", "txt": "plain", "text": "plain"}
 #: Options whose value is text the library parses itself (never split as a point).
 _TEXT_OPTIONS = {"--knots", "--at", "--t-range", "--domain", "--size", "-o", "--output"}
 _TEXT_OPTIONS |= {"--svg", "--png", "--x", "--y", "--formula"}
-_NEG_NONFINITE = re.compile(r"-(inf|infinity|nan)$", re.IGNORECASE)
+_NONFINITE = ("-inf", "-infinity", "-nan")
 
 
 def _command_for(argv: list[str]) -> Any:
@@ -39,7 +40,7 @@ def _command_for(argv: list[str]) -> Any:
     one, with the same callbacks and settings, so its parsing, help and errors are unchanged;
     anything else (``--help``, ``--version``, an unknown name) gets the whole group.
     """
-    return typer.main.get_command(_only(app, argv))
+    return typer.main.get_command(_only(register(argv), argv))
 
 
 def _only(group: typer.Typer, argv: list[str]) -> typer.Typer:
@@ -76,8 +77,9 @@ def students(argv: list[str]) -> list[str]:
     out: list[str] = []
     for i, a in enumerate(argv):
         before = argv[i - 1] if i else ""
-        point = _POINT.match(a)
-        size = _SIZE.match(a)
+        # the patterns only where they can match: plain numbers and flags skip the regex engine
+        point = re.match(_POINT, a) if "," in a else None
+        size = re.match(_SIZE, a) if argv[:1] == ["storage"] and a[-1:].isdigit() else None
         if before in ("-f", "--format") and a.lower() in _FORMAT_NAMES:
             out.append(_FORMAT_NAMES[a.lower()])
         elif a.startswith("--format=") and a[9:].lower() in _FORMAT_NAMES:
@@ -120,7 +122,7 @@ def main(argv: list[str] | None = None) -> int:
         argv = sys.argv[1:]
     # "-inf"/"-nan" would be read as bundled short options (-i -n -f ...); keep them arguments
     # so the number parser names them.
-    argv = [_MINUS + a[1:] if _NEG_NONFINITE.match(a) else a for a in students(argv)]
+    argv = [_MINUS + a[1:] if a.lower() in _NONFINITE else a for a in students(argv)]
     command = _command_for(argv)
     code = 0
     previous_term = _catch_sigterm()

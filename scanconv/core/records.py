@@ -164,8 +164,7 @@ MAX_GRID_CELLS = 100
 larger one is left out with a note."""
 
 
-@dataclass(frozen=True, slots=True)
-class PixelFigure:
+class PixelFigure(NamedTuple):
     """A text grid of two pixel sets, drawn under the answer by :mod:`scanconv.render`: ``#``
     where :attr:`pixels` has a pixel, ``o`` where :attr:`marks` has one, ``@`` where both do."""
 
@@ -182,8 +181,7 @@ class PixelFigure:
     untitled one is left out silently."""
 
 
-@dataclass(frozen=True, slots=True)
-class ShadedMatrix:
+class ShadedMatrix(NamedTuple):
     """A matrix of gray levels, drawn as a shaded text picture (level 0 black)."""
 
     rows: tuple[tuple[int, ...], ...]

@@ -9,9 +9,8 @@ prints, and rich is imported only by the ``rich`` renderer.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 from enum import Enum
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..core.records import Solution
 
@@ -28,17 +27,14 @@ class Format(str, Enum):
     plain = "plain"
 
 
-@dataclass(frozen=True, slots=True)
-class Options:
-    """Rendering options shared by every format."""
+class Options(NamedTuple):
+    """Rendering options shared by every format (a NamedTuple: cheaper to define than a
+    dataclass, and start-up time counts)."""
 
     grid: bool = True
     """Draw the text pixel grid (if it fits, see :mod:`scanconv.render.grid`)."""
     origin: str = "bottom-left"
     """``bottom-left`` (y up, as in the notes) or ``top-left`` (screen addressing, y down)."""
-    explain: bool = True
-    """Kept for callers of the old option (:meth:`scanconv.display.Answer.to`); no effect:
-    every format shows the derivation unless :attr:`brief`."""
     brief: bool = False
     """``rich`` only: leave the derivation (given values, working with the numbers
     substituted, notes) out. By default the terminal shows the full worked answer, as the
@@ -52,8 +48,7 @@ class Options:
     hint). ``None``: 80."""
 
 
-@dataclass(frozen=True, slots=True)
-class Notice:
+class Notice(NamedTuple):
     """A one-line message for stderr (for example why the grid was left out)."""
 
     message: str

@@ -36,9 +36,9 @@ def table_lines(
     """Lines of a text table; padded if short, streamed if long.
 
     >>> print("\\n".join(table_lines(["k", "pixel"], [True, False], [["0", "(1, 2)"]], markdown=True)))
-    |   k | pixel  |
-    |----:|:------:|
-    |   0 | (1, 2) |
+    |   k |  pixel  |
+    |----:|:-------:|
+    |   0 | (1, 2)  |
     >>> print("\\n".join(table_lines(["k", "pixel"], [True, False], [["0", "(1, 2)"]], markdown=False)))
     k   pixel
     -  ------
@@ -47,6 +47,9 @@ def table_lines(
     it = iter(rows)
     head = list(islice(it, BUFFER_ROWS + 1))
     streaming = len(head) > BUFFER_ROWS
+    if markdown and not streaming:
+        yield from _tabulated(headers, right, head)
+        return
     widths = [len(h) for h in headers]
     for r in head:
         for i, c in enumerate(r):
@@ -84,6 +87,35 @@ def table_lines(
         yield line(r)
     for r in it:
         yield line(r)
+
+
+def _tabulated(
+    headers: Sequence[str], right: Sequence[bool], rows: list[Sequence[str]]
+) -> Iterator[str]:
+    """A padded Markdown pipe table, by tabulate: numbers right-aligned, the rest centred,
+    every cell kept exactly as written (``disable_numparse``: ``2.500`` stays ``2.500``).
+
+    tabulate is imported here, not at the top: it costs about 35 ms (it imports
+    ``importlib.metadata``), which only a Markdown answer pays, never the terminal or ``plain``.
+
+    >>> print("\\n".join(_tabulated(["k", "pixel"], [True, False], [["0", "(1, 2)"]])))
+    |   k |  pixel  |
+    |----:|:-------:|
+    |   0 | (1, 2)  |
+    """
+    from tabulate import tabulate
+
+    def escape(cells: Sequence[str]) -> list[str]:
+        return [c.replace("|", "\\|") for c in cells]
+
+    table = tabulate(
+        [escape(r) for r in rows],
+        headers=escape(headers),
+        tablefmt="pipe",
+        disable_numparse=True,
+        colalign=["right" if r else "center" for r in right],
+    )
+    yield from table.splitlines()
 
 
 def step_rows(
