@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Annotated
 
 from .. import _api as api
@@ -10,7 +11,7 @@ from ..core.records import Solution
 from .application import app
 from .command import answers
 from .lines import CodeOpt, ConventionOpt, DeriveOpt, LayoutOpt, RoundingOpt, TieOpt
-from .options import NUMERIC_ARGS, Center, Num, choice
+from .options import NUMERIC_ARGS, Center, choice, num_arg
 
 LoopOpt = Annotated[
     Loop | None,
@@ -21,7 +22,7 @@ LoopOpt = Annotated[
 @app.command(context_settings=NUMERIC_ARGS)
 @answers(figures=True)
 def circle(
-    r: Num,
+    r: Annotated[Fraction, num_arg("The radius r (a whole number).", "R")],
     center: Center = None,
     method: Annotated[
         CircleMethod,
@@ -71,8 +72,8 @@ def circle(
 @app.command(context_settings=NUMERIC_ARGS)
 @answers(figures=True)
 def ellipse(
-    rx: Num,
-    ry: Num,
+    rx: Annotated[Fraction, num_arg("The semi-axis rx along x (a whole number).", "RX")],
+    ry: Annotated[Fraction, num_arg("The semi-axis ry along y (a whole number).", "RY")],
     center: Center = None,
     loop: LoopOpt = None,
     convention: ConventionOpt = None,

@@ -4,6 +4,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from fractions import Fraction
 from typing import Annotated
 
@@ -14,7 +15,7 @@ from ..algorithms.choices import AAMethod, FillRule, Order
 from ..core.records import Solution
 from .application import _subapp, app
 from .command import answers
-from .options import NUMERIC_ARGS, Center, Num, choice, integer, number
+from .options import NUMERIC_ARGS, Center, Num, Vertices, choice, integer, number
 
 fill_app = _subapp(
     "fill", "Seed fills from a pixel: boundary fill and flood fill, 4- or 8-connected."
@@ -23,15 +24,6 @@ antialias_app = _subapp(
     "antialias", "Anti-aliasing: Wu's line, unweighted area sampling and supersampling."
 )
 
-Vertices = Annotated[
-    list[Fraction],
-    typer.Argument(
-        parser=number,
-        metavar="X1 Y1 X2 Y2 X3 Y3 ...",
-        help="The polygon's vertices, in order.",
-        show_default=False,
-    ),
-]
 Rule = Annotated[
     FillRule, choice("--rule", help="Fill rule: even-odd (alternate) or nonzero winding.")
 ]
@@ -125,40 +117,50 @@ Span = Annotated[
 ]
 
 
-@fill_app.command("boundary", context_settings=NUMERIC_ARGS)
-@answers()
-def fill_boundary(
-    seed: Seed,
-    vertices: OptVertices = None,
-    rows: Rows = None,
-    connectivity: Connectivity = 4,
-    order: OrderOpt = Order.stack,
-    span: Span = False,
-) -> Solution:
-    """Boundary fill from a seed: fill every pixel that is neither the boundary nor filled,
+def _seed_command(kind: str, doc: str) -> Callable[..., Solution]:
+    """The ``fill boundary`` or ``fill flood`` command: both take the same options."""
+
+    def command(
+        seed: Seed,
+        vertices: OptVertices = None,
+        rows: Rows = None,
+        connectivity: Connectivity = 4,
+        order: OrderOpt = Order.stack,
+        span: Span = False,
+    ) -> Solution:
+        return _seed_fill(kind, vertices, seed, rows, connectivity, order, span)
+
+    command.__name__ = command.__qualname__ = f"fill_{kind}"
+    command.__doc__ = doc
+    return command
+
+
+fill_boundary = fill_app.command("boundary", context_settings=NUMERIC_ARGS)(
+    answers()(
+        _seed_command(
+            "boundary",
+            """Boundary fill from a seed: fill every pixel that is neither the boundary nor filled,
     with the trace of the stack or queue and the filled grid.
 
     Example: scanconv fill boundary 4 1 7 4 4 7 1 4 --seed 4 4 --connectivity 8
-    """
-    return _seed_fill("boundary", vertices, seed, rows, connectivity, order, span)
 
-
-@fill_app.command("flood", context_settings=NUMERIC_ARGS)
-@answers()
-def fill_flood(
-    seed: Seed,
-    vertices: OptVertices = None,
-    rows: Rows = None,
-    connectivity: Connectivity = 4,
-    order: OrderOpt = Order.stack,
-    span: Span = False,
-) -> Solution:
-    """Flood fill from a seed: replace the seed's colour in its connected region, with the
+    """,
+        )
+    )
+)
+fill_flood = fill_app.command("flood", context_settings=NUMERIC_ARGS)(
+    answers()(
+        _seed_command(
+            "flood",
+            """Flood fill from a seed: replace the seed's colour in its connected region, with the
     trace of the stack or queue and the filled grid.
 
     Example: scanconv fill flood --rows '#####/#...#/#.x.#/#####' --seed 1 1
-    """
-    return _seed_fill("flood", vertices, seed, rows, connectivity, order, span)
+
+    """,
+        )
+    )
+)
 
 
 @antialias_app.command("line", context_settings=NUMERIC_ARGS)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Annotated
 
 import typer
@@ -11,7 +12,7 @@ from ..algorithms.choices import Convention, Layout, LineAlgorithm, Rounding, Ti
 from ..core.records import Solution
 from .application import app
 from .command import answers
-from .options import NUMERIC_ARGS, Num, choice
+from .options import NUMERIC_ARGS, choice, num_arg
 
 ConventionOpt = Annotated[
     Convention | None,
@@ -53,10 +54,10 @@ TieOpt = Annotated[
 @app.command(context_settings=NUMERIC_ARGS)
 @answers(figures=True)
 def line(
-    x1: Num,
-    y1: Num,
-    x2: Num,
-    y2: Num,
+    x1: Annotated[Fraction, num_arg("x of the first end point P1.", "X1")],
+    y1: Annotated[Fraction, num_arg("y of the first end point P1.", "Y1")],
+    x2: Annotated[Fraction, num_arg("x of the second end point P2.", "X2")],
+    y2: Annotated[Fraction, num_arg("y of the second end point P2.", "Y2")],
     algo: Annotated[
         LineAlgorithm, choice("--algo", "-a", help="Line algorithm.")
     ] = LineAlgorithm.bresenham,

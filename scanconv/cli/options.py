@@ -273,3 +273,14 @@ PngOpt = Annotated[
         dir_okay=False,
     ),
 ]
+
+Vertices = Annotated[
+    list[Fraction],
+    typer.Argument(
+        parser=number,
+        metavar="X1 Y1 X2 Y2 X3 Y3 ...",
+        help="The polygon's vertices, in order.",
+        show_default=False,
+    ),
+]
+"""The vertices of a polygon, as numbers X1 Y1 X2 Y2 ... (``2,2`` and ``(2, 2)`` too)."""

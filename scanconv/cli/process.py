@@ -16,7 +16,7 @@ from ..core.numeric import parse_number
 from ..core.records import Solution
 from .application import app, clip_app, pipeline_app
 from .command import answers
-from .options import NUMERIC_ARGS, Num, number
+from .options import NUMERIC_ARGS, Num, Vertices, number
 
 Rect = tuple[Fraction, Fraction, Fraction, Fraction]
 
@@ -178,12 +178,7 @@ def clip_line(
 @clip_app.command("polygon", context_settings=NUMERIC_ARGS)
 @answers()
 def clip_polygon(
-    vertices: Annotated[
-        list[Fraction],
-        typer.Argument(
-            parser=number, metavar="X1 Y1 X2 Y2 X3 Y3 ...", help="The polygon's vertices."
-        ),
-    ],
+    vertices: Vertices,
     window: Window,
     method: Annotated[
         PolygonClipMethod,
@@ -227,12 +222,7 @@ def pipeline_line(
 @pipeline_app.command("polygon", context_settings=NUMERIC_ARGS)
 @answers()
 def pipeline_polygon(
-    vertices: Annotated[
-        list[Fraction],
-        typer.Argument(
-            parser=number, metavar="X1 Y1 X2 Y2 X3 Y3 ...", help="The polygon's world vertices."
-        ),
-    ],
+    vertices: Vertices,
     window: Window,
     viewport: Viewport,
     fill: Annotated[
