@@ -32,6 +32,8 @@ from scanconv.answers.antialias import antialias_solution, wu_solution
 from scanconv.core.checks import InputError
 from scanconv.render import Format, render
 
+from .helpers import run
+
 coord = st.integers(-12, 12)
 
 
@@ -283,3 +285,18 @@ def test_the_limits_at_their_edge():
     assert MAX_AA_CELLS == 100 * 100
     assert len(supersample_coverage([(0, 0), (1, 0), (1, 1)], MAX_SAMPLES)) == 3
     assert np.isclose(sum(ring_area(48).values()), 2 * math.pi * 48)  # 99 x 99 cells
+
+
+def test_line_algo_wu_is_the_antialias_answer():
+    """``scanconv line ... --algo wu`` (the issue's spelling) prints exactly the Wu answer of
+    ``antialias line --method wu``; the derivation and the pipeline refuse it by name."""
+    via_line = run("line", "0", "0", "8", "3", "--algo", "wu", "-f", "json")
+    via_aa = run("antialias", "line", "0", "0", "8", "3", "--method", "wu", "-f", "json")
+    assert via_line.code == via_aa.code == 0 and via_line.out == via_aa.out
+    refused = run("line", "0", "0", "8", "3", "--algo", "wu", "--derive")
+    assert refused.code == 2 and "not wu" in refused.err and refused.out == ""
+    wu_pipe = run(
+        "pipeline", "line", "0", "0", "8", "3", "--window", "0", "0", "10", "10",
+        "--viewport", "0", "0", "10", "10", "--algo", "wu",
+    )  # fmt: skip
+    assert wu_pipe.code == 2 and "not wu" in wu_pipe.err

@@ -199,7 +199,7 @@ BAD = [
     (["line", "1", "2", "3"], "Missing argument"),
     (["line", "1", "2", "3", "4", "5"], "unexpected extra argument"),
     (["line", "2.5", "2", "3", "4", "--algo", "bresenham"], "integer end points"),
-    (["line", "1", "2", "3", "4", "--algo", "wu"], "'wu' is not one of"),
+    (["line", "1", "2", "3", "4", "--algo", "xiaolin"], "'xiaolin' is not one of"),
     (["line", "1", "2", "3", "4", "--format", "html"], "'html' is not one of"),
     (["line", "1", "2", "3", "4", "--origin", "middle"], "'middle' is not one of"),
     (["line", "1", "2", "3", "4", "--bogus"], "--bogus"),

@@ -265,3 +265,10 @@ def test_the_limits_at_their_edge():
         fill_pixels([(0, 0), (4, 0), (2, 3)], "odd")
     with pytest.raises(InputError, match="floats"):
         raster_fill.polygon([0.5, 4, 2], [0, 0, 3])
+
+
+def test_the_bulk_fill_and_wu_line_are_part_of_scanconv_raster():
+    from scanconv import raster
+    from scanconv.algorithms import raster_fill
+
+    assert raster.polygon is raster_fill.polygon and raster.line_aa is raster_fill.line_aa

@@ -17,6 +17,8 @@ class LineAlgorithm(str, Enum):
     bresenham = "bresenham"
     dda = "dda"
     basic = "basic"
+    wu = "wu"
+    """Xiaolin Wu's anti-aliased line (the table of :mod:`scanconv.answers.antialias`)."""
 
 
 class CircleMethod(str, Enum):

@@ -54,6 +54,8 @@ from ..core.checks import check_integer
 from ..core.numeric import COORD_LIMIT, Number, as_int, fmt_exact, normalize, round_half_up
 from . import circles
 from .lines import dda_increments, dda_steps, orient
+from .raster_fill import line_aa as line_aa  # the bulk Wu line and fill: scanconv.raster too
+from .raster_fill import polygon as polygon
 
 Coords = tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]
 """``(xs, ys)``: two 1-D int64 arrays of equal length."""

@@ -155,6 +155,15 @@ def line_solution(
     if layout not in ("notes", "textbook"):
         raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
     knobs = resolve("line", algo, convention, {"rounding": rounding, "tie": tie})
+    if algo == "wu":  # anti-aliased: two pixels per step with their intensities, no conventions
+        if derive or pseudocode:
+            raise InputError(
+                "the derivation and the pseudocode cover bresenham, dda and basic, not wu",
+                "derive" if derive else "pseudocode",
+            )
+        from .antialias import wu_solution
+
+        return wu_solution(x1, y1, x2, y2)
     if algo == "bresenham":
         sol = _bresenham_solution(x1, y1, x2, y2, knobs["tie"], layout)
     elif algo == "dda":

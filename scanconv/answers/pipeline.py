@@ -129,6 +129,8 @@ def pipeline_line_solution(
     rounded = [(round_half_up(q[0]), round_half_up(q[1])) for q in dev]
     derived += [_round_work(n, q, r) for n, q, r in zip(("Q1", "Q2"), dev, rounded, strict=True)]
     (a, b), (c, d) = rounded
+    if algo == "wu":
+        raise InputError("the pipeline scan converts with bresenham, dda or basic, not wu", "algo")
     line = line_solution(algo, a, b, c, d)
     derived.append(_stage(f"4. scan convert ({line.title})"))
     derived += [q._replace(key=f"line_{q.key}") for q in line.derived]
