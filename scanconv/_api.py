@@ -28,23 +28,24 @@ from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from .algorithms.choices import (
-    P0,
-    CircleMethod,
     Convention,
     Layout,
     LineAlgorithm,
-    LineClipMethod,
-    Loop,
-    PolygonClipMethod,
     Rounding,
     Tie,
-    Update,
 )
 from .core.checks import InputError
 from .core.numeric import Number, fmt_short, parse_number
 
 if TYPE_CHECKING:
-    from .algorithms.choices import AAMethod, FillRule, Order
+    from .algorithms.circle_choices import P0, CircleMethod, Loop, Update
+    from .algorithms.process_choices import (
+        AAMethod,
+        FillRule,
+        LineClipMethod,
+        Order,
+        PolygonClipMethod,
+    )
     from .core.records import Solution
 
 __all__ = [
@@ -175,7 +176,7 @@ def circle(
     [(1, 5), (2, 5), (3, 4), (4, 3)]
     >>> [s.p for s in circle(5, method="general").steps()]
     [0, -5, 0, 1]
-    >>> circle(5, (10, 10), method=CircleMethod.trig, rounding="trunc").data["rounding"]
+    >>> circle(5, (10, 10), method="trig", rounding="trunc").data["rounding"]
     'trunc'
     """
     from .answers.circle import circle_solution
@@ -824,7 +825,7 @@ def clip_line(
     x2: NumberLike,
     y2: NumberLike,
     window: Sequence[NumberLike],
-    method: LineClipMethod | str = LineClipMethod.cohen_sutherland,
+    method: LineClipMethod | str = "cohen-sutherland",
 ) -> Solution:
     """The segment clipped against ``window`` (``scanconv clip line``).
 
@@ -840,7 +841,7 @@ def clip_line(
 def clip_polygon(
     vertices: PointsLike,
     window: Sequence[NumberLike],
-    method: PolygonClipMethod | str = PolygonClipMethod.sutherland_hodgman,
+    method: PolygonClipMethod | str = "sutherland-hodgman",
 ) -> Solution:
     """The polygon clipped against ``window`` by Sutherland-Hodgman (``scanconv clip polygon``).
 
@@ -850,7 +851,7 @@ def clip_polygon(
     from .answers.clip_polygon import clip_polygon_solution
 
     name = _choice(method, "method")
-    if name != PolygonClipMethod.sutherland_hodgman.value:
+    if name != "sutherland-hodgman":
         raise InputError(f"unknown polygon clipping method {name!r} (sutherland-hodgman)", "method")
     return clip_polygon_solution(_flat(vertices, "vertices"), _rect(window, "window"))
 
@@ -863,7 +864,7 @@ def pipeline_line(
     window: Sequence[NumberLike],
     viewport: Sequence[NumberLike],
     algo: LineAlgorithm | str = LineAlgorithm.bresenham,
-    clip: LineClipMethod | str = LineClipMethod.cohen_sutherland,
+    clip: LineClipMethod | str = "cohen-sutherland",
 ) -> Solution:
     """A world-coordinate line clipped, mapped, rounded and scan converted
     (``scanconv pipeline line``).
@@ -1051,3 +1052,16 @@ def antialias_polygon(
         levels=_whole(levels, "levels"),
         rule_name=_choice(rule, "rule"),
     )
+
+
+def __getattr__(name: str) -> Any:
+    """The circle, clipping and filling choices, loaded on first use (start-up time)."""
+    if name in ("LineClipMethod", "PolygonClipMethod", "AAMethod", "FillRule", "Order"):
+        from .algorithms import process_choices
+
+        return getattr(process_choices, name)
+    if name in ("CircleMethod", "P0", "Loop", "Update"):
+        from .algorithms import circle_choices
+
+        return getattr(circle_choices, name)
+    raise AttributeError(f"module 'scanconv._api' has no attribute {name!r}")

@@ -32,7 +32,7 @@ from fractions import Fraction
 
 from ..core.numeric import Number
 from ..core.records import Move, Pixel, Step, new_step
-from .choices import CircleMethod
+from .circle_choices import CircleMethod
 from .conventions import ROUNDINGS, Rounding, rounder
 
 __all__ = ["ROUNDINGS", "Rounding", "rounder"]

@@ -41,8 +41,8 @@ from typing import NamedTuple
 from ..core.checks import InputError
 from ..core.numeric import Number, normalize, round_half_up
 from ..core.records import Pixel
-from .choices import FillRule
 from .lines import bresenham, orient
+from .process_choices import FillRule
 
 Point = tuple[Number, Number]
 """A vertex ``(x, y)``, exact."""

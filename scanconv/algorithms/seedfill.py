@@ -37,7 +37,7 @@ from typing import NamedTuple
 
 from ..core.checks import InputError
 from ..core.records import Pixel
-from .choices import Order
+from .process_choices import Order
 
 EMPTY, BOUNDARY, FILLED = 0, 1, 2
 """The colours every grid knows: background, boundary and the fill colour."""

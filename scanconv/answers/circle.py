@@ -44,7 +44,7 @@ from ..core.records import (
     rule,
     worked,
 )
-from . import theory
+from .errata import circle_errata
 
 SYMMETRY_HEADS = (
     "(x_c+x, y_c+y)",
@@ -137,6 +137,7 @@ def circle_solution(
     >>> sum(1 for _ in sol.pixels()), sol.bbox
     (28, (5, 5, 15, 15))
     """
+
     method = ALIASES.get(method, method)
     if method not in METHODS:
         names = ", ".join((*METHODS, *ALIASES))
@@ -188,6 +189,8 @@ def circle_solution(
         "once, the first time it is plotted.",
     )
     tables: tuple[Table, ...] = ()
+    if derive or pseudocode:
+        from . import theory  # here: only --derive and --algorithm need it
     if derive:
         derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
     if pseudocode:
@@ -196,7 +199,7 @@ def circle_solution(
     data: dict = {"rounding": rounding} if method in FLOAT_METHODS else {}
     if annotate:
         notes = (*notes, convention_note("circle", convention, knobs))
-        erratum = theory.circle_errata(method, ir)
+        erratum = circle_errata(method, ir)
         if erratum:
             notes = (*notes, erratum)
         data = {**data, "conventions": knobs, "layout": layout}
@@ -235,6 +238,8 @@ def _once_each(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
 
 
 def _derivation(method: str, r: int, knobs: dict[str, str]) -> tuple[Quantity, ...]:
+    from . import theory  # here: only --derive and --algorithm need it
+
     if method == "midpoint":
         return theory.midpoint_circle_derivation(r, knobs["p0"])
     if method == "general":

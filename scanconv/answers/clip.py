@@ -11,7 +11,6 @@ from collections.abc import Sequence
 from fractions import Fraction
 from typing import Any
 
-from ..algorithms.choices import LineClipMethod
 from ..algorithms.clipping import (
     EDGES,
     CSResult,
@@ -23,6 +22,7 @@ from ..algorithms.clipping import (
     cohen_sutherland,
     liang_barsky,
 )
+from ..algorithms.process_choices import LineClipMethod
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt_paren, fmt_short, normalize
 from ..core.records import Column, Quantity, Solution, Table

@@ -29,7 +29,6 @@ from ..core.records import (
     step_getter,
     worked,
 )
-from . import theory
 from .circle import symmetry_table
 
 # --- the Solution -----------------------------------------------------------------------------
@@ -79,6 +78,7 @@ def ellipse_solution(
     >>> sum(1 for _ in sol.pixels()), sol.bbox
     (40, (-8, -6, 8, 6))
     """
+
     knobs = resolve("ellipse", "midpoint", convention, {"loop": loop})
     loop = knobs["loop"]
     irx = check_integer(rx, "rx", negative=False)
@@ -152,6 +152,8 @@ def ellipse_solution(
 
     if annotate:
         notes.append(convention_note("ellipse", convention, knobs))
+    if derive or pseudocode:
+        from . import theory  # here: only --derive and --algorithm need it
     if derive:
         derived = (*derived, theory.DERIVATION, *theory.ellipse_derivation(irx, iry))
 

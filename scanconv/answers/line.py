@@ -28,7 +28,7 @@ from ..core.numeric import (
     round_half_up,
 )
 from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, rule, worked
-from . import theory
+from .errata import line_errata
 
 # --- Solutions: the exam answer around the steps -------------------------------------------
 
@@ -173,7 +173,7 @@ def line_solution(
     if annotate:
         ends = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
         extra = [convention_note("line", convention, knobs)]
-        erratum = theory.line_errata(algo, ends)
+        erratum = line_errata(algo, ends)
         if erratum:
             extra.append(erratum)
         sol.notes = (*sol.notes, *extra)
@@ -195,6 +195,8 @@ def _theory(
     code: bool,
 ) -> None:
     """Add the derivation (derived items) and the pseudocode (a table) to ``sol``."""
+    from . import theory  # here: only --derive and --algorithm need it
+
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
     steep = abs_value(dy) > abs_value(dx)
     sign = -1 if (dx > 0 > dy or dy > 0 > dx) else 1

@@ -6,7 +6,8 @@ from fractions import Fraction
 from typing import Annotated
 
 from .. import _api as api
-from ..algorithms.choices import P0, CircleMethod, Layout, Loop, Update
+from ..algorithms.choices import Layout
+from ..algorithms.circle_choices import P0, CircleMethod, Loop, Update
 from ..core.records import Solution
 from .application import app
 from .command import answers

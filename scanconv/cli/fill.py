@@ -11,7 +11,7 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.choices import AAMethod, FillRule, Order
+from ..algorithms.process_choices import AAMethod, FillRule, Order
 from ..core.records import Solution
 from .application import _subapp, app
 from .command import answers

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from enum import Enum
 from fractions import Fraction
 from typing import Annotated
 
@@ -13,15 +14,33 @@ from .application import app, image_app
 from .command import answers
 from .options import (
     NUMERIC_ARGS,
-    ColorModel,
-    InputKind,
     Origin,
-    Recon,
     Size,
     choice,
     num_arg,
     num_option,
 )
+
+
+class ColorModel(str, Enum):
+    """Colour pixel formats of ``storage --color``."""
+
+    rgb24 = "rgb24"
+
+
+class InputKind(str, Enum):
+    """What the input range of ``quantize --range`` holds."""
+
+    integer = "integer"
+    real = "real"
+
+
+class Recon(str, Enum):
+    """Reconstruction value of a quantization level."""
+
+    mid = "midpoint"
+    low = "lower"  # not ``lower``: that name is str.lower
+
 
 _BITS = num_option("--bits", help="Bits per pixel B (1-24; storage also 32, 48, 64).")
 

@@ -105,26 +105,6 @@ class Origin(str, Enum):
     top_left = "top-left"
 
 
-class ColorModel(str, Enum):
-    """Colour pixel formats of ``storage --color``."""
-
-    rgb24 = "rgb24"
-
-
-class InputKind(str, Enum):
-    """What the input range of ``quantize --range`` holds."""
-
-    integer = "integer"
-    real = "real"
-
-
-class Recon(str, Enum):
-    """Reconstruction value of a quantization level."""
-
-    mid = "midpoint"
-    low = "lower"  # not ``lower``: that name is str.lower
-
-
 # --- values -----------------------------------------------------------------------------------
 
 Num = Annotated[Fraction, typer.Argument(parser=number, show_default=False)]

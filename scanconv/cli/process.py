@@ -11,7 +11,8 @@ import typer
 from typer._click.exceptions import NoSuchOption  # typer vendors click
 
 from .. import _api as api
-from ..algorithms.choices import LineAlgorithm, LineClipMethod, PolygonClipMethod
+from ..algorithms.choices import LineAlgorithm
+from ..algorithms.process_choices import LineClipMethod, PolygonClipMethod
 from ..core.numeric import parse_number
 from ..core.records import Solution
 from .application import app, clip_app, pipeline_app

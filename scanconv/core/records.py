@@ -147,8 +147,7 @@ def heading(key: str, tex: str, places: int | None = None) -> Column:
     return Column(key, tex_to_unicode(tex), tex, places)
 
 
-@dataclass(slots=True)
-class Table:
+class Table(NamedTuple):
     """A secondary table shown after the step table (for example the 8-way symmetry table)."""
 
     title: str

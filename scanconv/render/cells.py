@@ -128,7 +128,7 @@ def note_unicode(note: str) -> str:
 
 
 _SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
-_BRACED_SUB = re.compile(r"_\{([^{}]*)\}|_([0-9a-z])(?![0-9a-z])")
+_BRACED_SUB = r"_\{([^{}]*)\}|_([0-9a-z])(?![0-9a-z])"  # compiled by re on first use
 
 
 def unicode_heading(text: str) -> str:
@@ -146,7 +146,9 @@ def unicode_heading(text: str) -> str:
             return inner.translate(_SUB)
         return m.group(0) if m.group(2) is not None else f"_({inner})"
 
-    return _BRACED_SUB.sub(sub, text)
+    if "_" not in text:  # most headings: no pattern to run (start-up time)
+        return text
+    return re.sub(_BRACED_SUB, sub, text)
 
 
 def marks_label(solution: Solution) -> str:

@@ -1,0 +1,43 @@
+"""The named choices of clipping, filling and anti-aliasing, apart from the line and circle
+choices of :mod:`.choices` so that those commands load none of these at start-up."""
+
+from __future__ import annotations
+
+from enum import Enum
+
+
+class LineClipMethod(str, Enum):
+    """The line clipping methods, by the names the API and the CLI (``--method``) take."""
+
+    cohen_sutherland = "cohen-sutherland"
+    liang_barsky = "liang-barsky"
+
+
+class PolygonClipMethod(str, Enum):
+    """The polygon clipping methods (one, named for symmetry with the line methods)."""
+
+    sutherland_hodgman = "sutherland-hodgman"
+
+
+class AAMethod(str, Enum):
+    """Anti-aliasing methods, by the names the API and the CLI (``--method``) take; ``wu`` is
+    for lines only (:mod:`scanconv.algorithms.wu`)."""
+
+    area = "area"
+    supersample = "supersample"
+    wu = "wu"
+
+
+class FillRule(str, Enum):
+    """The fill rules, by the names the API and the CLI (``--rule``) take."""
+
+    even_odd = "even-odd"
+    nonzero = "nonzero"
+
+
+class Order(str, Enum):
+    """How the pending pixels are taken: last in first out (the recursion's order) or first
+    in first out (breadth first)."""
+
+    stack = "stack"
+    queue = "queue"
