@@ -54,6 +54,28 @@ def fail(message: str, code: int = 2) -> NoReturn:
     raise typer.Exit(code)
 
 
+#: The flags that show what a :class:`~scanconv.render.Notice` says was left out.
+_WAYS = {"plain": "--format plain", "svg": "--svg FILE"}
+
+
+def notice_text(notice: Notice) -> str:
+    """A notice in the CLI's words: its message, then how to see what it left out.
+
+    >>> notice_text(Notice("a figure is left out", ("plain",)))
+    'a figure is left out; widen the terminal or see it with --format plain'
+    >>> notice_text(Notice("grid left out", ("plain", "svg", "no-grid")))
+    'grid left out; widen the terminal, see it with --format plain or --svg FILE, or leave it out with --no-grid'
+    """
+    if not notice.ways:
+        return notice.message
+    see = " or ".join(_WAYS[w] for w in notice.ways if w in _WAYS)
+    steps = ["widen the terminal", f"see it with {see}"]
+    if "no-grid" in notice.ways:
+        steps.append("leave it out with --no-grid")
+    words = " or ".join(steps) if len(steps) == 2 else ", ".join(steps[:-1]) + ", or " + steps[-1]
+    return f"{notice.message}; {words}"
+
+
 def _write(chunks: Iterable[Any], out: Any, width: int | None = None) -> None:
     console = None
     for chunk in chunks:
@@ -61,7 +83,7 @@ def _write(chunks: Iterable[Any], out: Any, width: int | None = None) -> None:
             out.write(chunk)
         elif isinstance(chunk, Notice):
             out.flush()
-            note(chunk.message)
+            note(notice_text(chunk))
         else:
             if console is None:
                 from rich.console import Console

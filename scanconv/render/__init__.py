@@ -52,6 +52,9 @@ class Notice(NamedTuple):
     """A one-line message for stderr (for example why the grid was left out)."""
 
     message: str
+    ways: tuple[str, ...] = ()
+    """How else to see what was left out, by name (``"plain"``: another format, ``"svg"``: a
+    figure file, ``"no-grid"``: leave it out); the CLI words them with its own flags."""
 
 
 Chunk = Any  # str | Notice | a rich renderable

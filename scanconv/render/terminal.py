@@ -197,8 +197,8 @@ def _figures(solution: Solution, options: Options, width: int) -> Iterator[Any]:
             if compact and gridmod.width(solution.bbox, compact=True) > width:
                 yield Notice(
                     f"grid left out: {gridmod.width(solution.bbox, compact=True)} characters "
-                    f"wide, the terminal has {width}; widen the terminal, see it with "
-                    "--format plain or --svg FILE, or leave it out with --no-grid"
+                    f"wide, the terminal has {width}",
+                    ("plain", "svg", "no-grid"),
                 )
             else:
                 drawn.append(
@@ -219,8 +219,8 @@ def _figures(solution: Solution, options: Options, width: int) -> Iterator[Any]:
             drawing = [x for x in lines if "|" in x or x.lstrip().startswith("+")]
             if max((cell_len(x) for x in drawing), default=0) > width:
                 yield Notice(
-                    f"a figure is left out: wider than the terminal's {width} columns; "
-                    "widen the terminal or see it with --format plain"
+                    f"a figure is left out: wider than the terminal's {width} columns",
+                    ("plain",),
                 )
                 continue
             drawn.append(lines)
