@@ -27,26 +27,26 @@ from enum import Enum
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
-from .algorithms.choices import (
+from ..algorithms.choices import (
     Convention,
     Layout,
     LineAlgorithm,
     Rounding,
     Tie,
 )
-from .core.checks import InputError
-from .core.numeric import Number, fmt_short, parse_number
+from ..core.checks import InputError
+from ..core.numeric import Number, fmt_short, parse_number
 
 if TYPE_CHECKING:
-    from .algorithms.circle_choices import P0, CircleMethod, Loop, Update
-    from .algorithms.process_choices import (
+    from ..algorithms.circle_choices import P0, CircleMethod, Loop, Update
+    from ..algorithms.process_choices import (
         AAMethod,
         FillRule,
         LineClipMethod,
         Order,
         PolygonClipMethod,
     )
-    from .core.records import Solution
+    from ..core.records import Solution
 
 __all__ = [
     "CircleMethod",
@@ -135,7 +135,7 @@ def line(
     >>> list(line(0, 0, 4, 2, tie="keep").pixels())
     [(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)]
     """
-    from .answers.line import line_solution
+    from ..answers.line import line_solution
 
     coords = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return line_solution(
@@ -179,7 +179,7 @@ def circle(
     >>> circle(5, (10, 10), method="trig", rounding="trunc").data["rounding"]
     'trunc'
     """
-    from .answers.circle import circle_solution
+    from ..answers.circle import circle_solution
 
     radius = _number(r, "r")
     xc, yc = _pair(center, "center")
@@ -216,7 +216,7 @@ def ellipse(
     >>> sorted(ellipse(2, 1).pixels())
     [(-2, 0), (-1, -1), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 1), (2, 0)]
     """
-    from .answers.ellipse import ellipse_solution
+    from ..answers.ellipse import ellipse_solution
 
     a, b = _numbers(rx=rx, ry=ry)
     xc, yc = _pair(center, "center")
@@ -241,7 +241,7 @@ def compare_lines(
     >>> len(list(compare_lines(2, 8, 10, 4).tables[0].rows()))  # x = 2 .. 10
     9
     """
-    from .answers.compare import compare_lines as solution
+    from ..answers.compare import compare_lines as solution
 
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return solution(a, b, c, d, theory=theory)
@@ -253,7 +253,7 @@ def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
     >>> len(list(compare_circles(10).tables[0].rows()))
     8
     """
-    from .answers.compare import compare_circles as solution
+    from ..answers.compare import compare_circles as solution
 
     return solution(_number(r, "r"), theory=theory)
 
@@ -264,7 +264,7 @@ def compare_curves() -> Solution:
     >>> compare_curves().title
     'Bezier vs B-spline curves'
     """
-    from .answers.compare import compare_curves as solution
+    from ..answers.compare import compare_curves as solution
 
     return solution()
 
@@ -288,7 +288,7 @@ def storage(
     >>> storage(1024, 768, levels=256).data["sizes"]["KiB"]
     Fraction(768, 1)
     """
-    from .answers.storage import storage_solution
+    from ..answers.storage import storage_solution
 
     return storage_solution(
         *_numbers(m=m, n=n),
@@ -314,7 +314,7 @@ def quantize(
     >>> [row[-1] for row in quantize(2, (0, 255)).tables[0].rows()]
     [32, 96, 160, 224]
     """
-    from .answers.quantize import quantize_solution
+    from ..answers.quantize import quantize_solution
 
     return quantize_solution(
         _number(bits, "bits"),
@@ -340,8 +340,8 @@ def sample(
     >>> next(iter(sample("x + y", "8x8", 8).tables[0].rows()))
     (0, 4, 4, 5, 5, 6, 6, 7, 7)
     """
-    from .algorithms.sample import sample_levels
-    from .answers.sample import sample_solution
+    from ..algorithms.sample import sample_levels
+    from ..answers.sample import sample_solution
 
     m, n = _size(size)
     sampled = sample_levels(
@@ -362,7 +362,7 @@ def ramp(size: str | int | tuple[int, int] = "8", levels: NumberLike = 8) -> Sol
     >>> next(iter(ramp(8, 8).tables[0].rows()))
     (0, 0, 1, 2, 3, 4, 5, 6, 7)
     """
-    from .answers.ramp import ramp_solution
+    from ..answers.ramp import ramp_solution
 
     m, n = _size(size)
     return ramp_solution(m, n, _number(levels, "levels"))
@@ -468,8 +468,8 @@ def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
     >>> list(bezier([(0, 0), (1, 2), (3, 3), (4, 0)], 8).pixels())
     [(0, 0), (0, 1), (1, 1), (1, 2), (2, 2), (3, 2), (4, 1), (4, 0)]
     """
-    from .algorithms.curve_limits import DEFAULT_SAMPLES
-    from .answers.bezier import bezier_solution
+    from ..algorithms.curve_limits import DEFAULT_SAMPLES
+    from ..answers.bezier import bezier_solution
 
     pts = _points(points)
     return bezier_solution(pts, _whole(DEFAULT_SAMPLES if samples is None else samples, "samples"))
@@ -481,7 +481,7 @@ def bezier_at(points: PointsLike, t: FormulaLike) -> Solution:
     >>> list(bezier_at([0, 0, 1, 2, 3, 3, 4, 0], "1/2").pixels())  # B(1/2) = (2, 1.875)
     [(2, 2)]
     """
-    from .answers.bezier import bezier_at_solution
+    from ..answers.bezier import bezier_at_solution
 
     pts = _points(points)
     return bezier_at_solution(pts, _formula(t, "t"))
@@ -520,7 +520,7 @@ def bspline_basis(
     9
     """
     if not points:
-        from .answers.bspline import bspline_basis_knots_solution
+        from ..answers.bspline import bspline_basis_knots_solution
 
         spec = _knots(knots)
         if isinstance(spec, str):
@@ -549,7 +549,7 @@ def bspline_at(
     >>> list(bspline_at(pts, 1.5, 2).pixels())  # C(1.5) = (2.875, 2.5)
     [(3, 3)]
     """
-    from .answers.bspline import bspline_at_solution
+    from ..answers.bspline import bspline_at_solution
 
     pts = _points(points)
     spec = _knots(knots)
@@ -564,8 +564,8 @@ def continuity(
     >>> continuity([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)]).data["continuity"]
     'C1'
     """
-    from .algorithms.curve_limits import DEFAULT_SAMPLES
-    from .answers.continuity import continuity_solution
+    from ..algorithms.curve_limits import DEFAULT_SAMPLES
+    from ..answers.continuity import continuity_solution
 
     a, b = _points(first, "first"), _points(second, "second")
     steps = _whole(DEFAULT_SAMPLES if samples is None else samples, "samples")
@@ -588,8 +588,8 @@ def local_control(
     >>> sol.data["bezier_samples_moved"], sol.data["bspline_samples_moved"]
     (8, 2)
     """
-    from .algorithms.curve_limits import DEFAULT_SAMPLES
-    from .answers.local_control import local_control_solution
+    from ..algorithms.curve_limits import DEFAULT_SAMPLES
+    from ..answers.local_control import local_control_solution
 
     pts = _points(points)
     spec = _knots(knots)
@@ -609,7 +609,7 @@ def _parametric(
     samples: NumberLike | None,
     **given: Any,
 ) -> Solution:
-    from .answers.parametric import parametric_solution
+    from ..answers.parametric import parametric_solution
 
     return parametric_solution(
         kind,
@@ -627,7 +627,7 @@ def _bspline(
     *,
     basis_only: bool,
 ) -> Solution:
-    from .answers.bspline import bspline_solution
+    from ..answers.bspline import bspline_solution
 
     pts = _points(points)
     spec = _knots(knots)
@@ -688,7 +688,7 @@ def _formula(value: FormulaLike, param: str) -> Any:
     """A value of a parameter such as ``t``: a number, or a constant expression (exact when it
     is rational; ``"pi/4"`` is a float)."""
     if isinstance(value, str):
-        from .core.expr import parse_exact
+        from ..core.expr import parse_exact
 
         try:
             parsed: Any = parse_exact(value)
@@ -705,7 +705,7 @@ def _formulas(values: Sequence[FormulaLike], param: str, count: int) -> tuple[An
     """``domain`` and ``value_range`` of :func:`sample`: numbers or constant expressions."""
     if isinstance(values, str) or len(values) != count:
         raise InputError(f"{param} takes {count} values, got {values!r}", param)
-    from .core.expr import parse_exact
+    from ..core.expr import parse_exact
 
     out = []
     for v in values:
@@ -726,7 +726,7 @@ def _bounds(values: TRangeLike) -> tuple[Any, Any]:
 
 def _points(values: PointsLike, param: str = "points") -> list[Any]:
     """Control points, as pairs or flat, as the library's exact pairs."""
-    from .algorithms.curve_limits import pairs
+    from ..algorithms.curve_limits import pairs
 
     flat: list[Any] = []
     for v in values:
@@ -747,7 +747,7 @@ def _points(values: PointsLike, param: str = "points") -> list[Any]:
 def _knots(value: str | Sequence[NumberLike]) -> str | tuple[Number, ...]:
     if not isinstance(value, str):
         return tuple(_number(v, "knots") for v in value)
-    from .algorithms.bspline import parse_knots
+    from ..algorithms.bspline import parse_knots
 
     try:
         return parse_knots(value)
@@ -757,7 +757,7 @@ def _knots(value: str | Sequence[NumberLike]) -> str | tuple[Number, ...]:
 
 def _size(value: str | int | tuple[int, int]) -> tuple[int, int]:
     if isinstance(value, str):
-        from .algorithms.image_limits import parse_size
+        from ..algorithms.image_limits import parse_size
 
         try:
             return parse_size(value)
@@ -798,7 +798,7 @@ def transform(
     >>> transform([(0, 0), (4, 0)], "rotate 90 about 2 1, translate 3 0").data["after"]
     [[6, -1], [6, 3]]
     """
-    from .answers.transform import transform_solution
+    from ..answers.transform import transform_solution
 
     return transform_solution(_flat(points, "points"), transforms, inverse_too=bool(inverse))
 
@@ -812,7 +812,7 @@ def viewport(
     >>> viewport((0, 0, 10, 10), (100, 100, 150, 200), [(5, 5)]).data["mapped"]
     [[125, 150]]
     """
-    from .answers.viewport import viewport_solution
+    from ..answers.viewport import viewport_solution
 
     return viewport_solution(
         _flat(points, "points"), _rect(window, "window"), _rect(viewport, "viewport")
@@ -832,7 +832,7 @@ def clip_line(
     >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8)).data["clipped"]
     [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
     """
-    from .answers.clip import clip_line_solution
+    from ..answers.clip import clip_line_solution
 
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return clip_line_solution(a, b, c, d, _rect(window, "window"), _choice(method, "method"))
@@ -848,7 +848,7 @@ def clip_polygon(
     >>> clip_polygon([(0, 0), (4, 0), (0, 4)], (1, 1, 3, 3)).data["clipped"]
     [[1, 3], [1, 1], [3, 1]]
     """
-    from .answers.clip_polygon import clip_polygon_solution
+    from ..answers.clip_polygon import clip_polygon_solution
 
     name = _choice(method, "method")
     if name != "sutherland-hodgman":
@@ -872,7 +872,7 @@ def pipeline_line(
     >>> pipeline_line(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10)).data["rounded"]
     [[0, 3], [20, 8]]
     """
-    from .answers.pipeline import pipeline_line_solution
+    from ..answers.pipeline import pipeline_line_solution
 
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return pipeline_line_solution(
@@ -900,7 +900,7 @@ def pipeline_polygon(
     >>> pipeline_polygon([(-2, 0), (6, 0), (2, 6)], (0, 0, 4, 4), (0, 0, 8, 8)).data["device"][2]
     [0, 6]
     """
-    from .answers.pipeline import pipeline_polygon_solution
+    from ..answers.pipeline import pipeline_polygon_solution
 
     return pipeline_polygon_solution(
         _flat(vertices, "vertices"),
@@ -942,7 +942,7 @@ def polygon(vertices: PointsLike, rule: FillRule | str = "even-odd") -> Solution
     >>> list(sol.pixels())
     [(0, 0), (1, 0), (2, 0), (3, 0), (1, 1), (2, 1), (3, 1), (2, 2)]
     """
-    from .answers.polygon import polygon_solution
+    from ..answers.polygon import polygon_solution
 
     return polygon_solution(_flat(vertices, "vertices"), _choice(rule, "rule"))
 
@@ -965,7 +965,7 @@ def fill(
     >>> sorted(fill("flood", (1, 1), rows="####/#..#/####").pixels())
     [(1, 1), (2, 1)]
     """
-    from .answers.fill import seed_fill_solution
+    from ..answers.fill import seed_fill_solution
 
     texts = None if rows is None else ([rows] if isinstance(rows, str) else list(rows))
     sx, sy = _pair(seed, "seed")
@@ -995,7 +995,7 @@ def antialias_line(
     >>> [s.extra[4] for s in antialias_line(0, 0, 4, 1, method="wu").steps()]
     [1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4), 1]
     """
-    from .answers.antialias import antialias_solution
+    from ..answers.antialias import antialias_solution
 
     return antialias_solution(
         "line",
@@ -1018,7 +1018,7 @@ def antialias_circle(
     >>> round(sum(float(v) for _, v, *_ in antialias_circle(3).tables[0].rows()), 6)
     18.849556
     """
-    from .answers.antialias import antialias_solution
+    from ..answers.antialias import antialias_solution
 
     return antialias_solution(
         "circle",
@@ -1042,7 +1042,7 @@ def antialias_polygon(
     >>> antialias_polygon([(0, 0), (2, 0), (2, 1), (0, 1)]).derived[-2].value
     2
     """
-    from .answers.antialias import antialias_solution
+    from ..answers.antialias import antialias_solution
 
     return antialias_solution(
         "polygon",
@@ -1054,14 +1054,26 @@ def antialias_polygon(
     )
 
 
+#: API functions defined in this package's submodules, by name -> submodule; loaded on first
+#: use (start-up time). One line per function, grouped by submodule.
+SUBMODULE_OF: dict[str, str] = {}
+
+__all__ += sorted(SUBMODULE_OF)
+
+
 def __getattr__(name: str) -> Any:
-    """The circle, clipping and filling choices, loaded on first use (start-up time)."""
+    """The circle, clipping and filling choices and the submodules' functions, loaded on first
+    use (start-up time)."""
+    if name in SUBMODULE_OF:
+        import importlib
+
+        return getattr(importlib.import_module(f"{__name__}.{SUBMODULE_OF[name]}"), name)
     if name in ("LineClipMethod", "PolygonClipMethod", "AAMethod", "FillRule", "Order"):
-        from .algorithms import process_choices
+        from ..algorithms import process_choices
 
         return getattr(process_choices, name)
     if name in ("CircleMethod", "P0", "Loop", "Update"):
-        from .algorithms import circle_choices
+        from ..algorithms import circle_choices
 
         return getattr(circle_choices, name)
     raise AttributeError(f"module 'scanconv._api' has no attribute {name!r}")
