@@ -355,3 +355,145 @@ def test_png_draws_the_same_shapes():
     for cls in ("pixel", "ideal", "control"):
         paint = figure.PAINT[cls]
         assert rgb_of(paint.fill or paint.stroke or "") in colours, cls
+
+
+# --- polygons, seed fills and anti-aliasing (issue 17): outline and grey levels ---------------
+
+
+def _cells(root: ET.Element, cls: str, fig: figure.Figure, sol: Solution) -> dict:
+    """``pixel -> rect`` for the cells of class ``cls`` (bottom-left origin)."""
+    x0, _, _, y1 = figure.extent(sol, sol.pixels())
+    out = {}
+    for rect in _by_class(root, cls):
+        x = round((float(rect.get("x", "0")) - figure.PAD_LEFT) / figure.CELL) + x0
+        y = y1 - round((float(rect.get("y", "0")) - figure.PAD_TOP) / figure.CELL)
+        out[(x, y)] = rect
+    return out
+
+
+def _json(*args: str) -> dict:
+    import json
+
+    result = run(*args, "--format", "json")
+    assert result.code == 0, result.err
+    return json.loads(result.out)
+
+
+def test_polygon_figure_draws_the_fill_and_the_outline_distinguishably():
+    from scanconv.algorithms.polygon import outline_pixels
+    from scanconv.answers.polygon import polygon_solution
+
+    pts = [(0, 0), (8, 2), (5, 7)]
+    sol = polygon_solution([0, 0, 8, 2, 5, 7], "even-odd")
+    fig = figure.build(sol)
+    root = _parse(figure.to_svg(fig))
+    filled = set(_cells(root, "pixel", fig, sol))
+    assert filled == set(sol.pixels())
+    outline = set(outline_pixels(pts))
+    alone = set(_cells(root, "outline", fig, sol))
+    both = set(_cells(root, "on-outline", fig, sol))
+    # an outline pixel that is also filled is drawn both ways; one that is not, as outline only
+    assert alone == outline - filled and both == outline & filled
+    assert alone and both
+    assert len(_by_class(root, "ideal")) == 1
+    assert not _by_class(root, "step")
+    assert "orange: outline pixel" in figure.to_svg(fig)
+
+
+def _levels_from_json(data: dict) -> dict:
+    """``pixel -> level`` as the JSON answer states it (table rows, or Wu's steps)."""
+    levels: dict = {}
+    for table in data.get("tables") or []:
+        cols = table["columns"]
+        for row in table["rows"]:
+            levels[tuple(row[cols.index("pixel")])] = row[cols.index("level")]
+    for step in data.get("steps") or []:
+        a, b = step["levels"]
+        levels[tuple(step["pixel_a"])] = a
+        levels[tuple(step["pixel_b"])] = max(levels.get(tuple(step["pixel_b"]), 0), b)
+    return levels
+
+
+@pytest.mark.parametrize(
+    ("args", "api"),
+    [
+        (("antialias", "line", "0", "0", "9", "4"), ("antialias_line", (0, 0, 9, 4), {})),
+        (("antialias", "circle", "4", "--levels", "4"), ("antialias_circle", (4,), {"levels": 4})),
+        (
+            ("antialias", "polygon", "0", "0", "6", "1", "3", "5", "--method", "supersample"),
+            ("antialias_polygon", ([0, 0, 6, 1, 3, 5],), {"method": "supersample"}),
+        ),
+        (("line", "0", "0", "9", "4", "--algo", "wu"), ("line", (0, 0, 9, 4), {"algo": "wu"})),
+        (
+            ("antialias", "line", "3", "7", "0", "0", "--method", "wu", "--levels", "16"),
+            ("antialias_line", (3, 7, 0, 0), {"method": "wu", "levels": 16}),
+        ),
+    ],
+)
+def test_anti_aliased_figures_show_each_pixel_in_its_grey_level(tmp_path: Path, args, api):
+    """Every drawn cell is in the grey of the level the answer's JSON gives its pixel."""
+    import scanconv
+
+    data = _json(*args)
+    levels_of = _levels_from_json(data)
+    L = data["given"]["L"]
+    svg_path = tmp_path / "f.svg"
+    assert run(*args, "--svg", str(svg_path)).code == 0
+    root = _parse(svg_path.read_text(encoding="utf-8"))
+    name, pos, kw = api
+    sol = getattr(scanconv, name)(*pos, **kw)
+    fig = figure.build(sol)
+    shades = _cells(root, "shade", fig, sol)
+    assert set(shades) == {tuple(p) for p in data["pixels"]}
+    assert not _by_class(root, "pixel")
+    for pixel, rect in shades.items():
+        assert rect.get("style") == f"fill:{figure.grey_of(levels_of[pixel], L)}", pixel
+    darkest = max(levels_of.values())
+    assert any(r.get("style") == f"fill:{figure.grey_of(darkest, L)}" for r in shades.values())
+
+
+def test_grey_levels_run_from_white_to_black_in_equal_steps():
+    greys = [int(figure.grey_of(v, 6)[1:3], 16) for v in range(6)]
+    assert greys == [255, 204, 153, 102, 51, 0]
+    assert figure.grey_of(0, 2) == "#ffffff" and figure.grey_of(1, 2) == "#000000"
+
+
+def test_seed_fill_figure_numbers_pixels_in_fill_order_and_draws_the_boundary(tmp_path: Path):
+    import scanconv
+
+    args = ("fill", "flood", "0", "0", "8", "0", "8", "6", "0", "6", "--seed", "3", "3")
+    data = _json(*args)
+    order = [tuple(p) for p in data["pixels"]]
+    sol = scanconv.fill("flood", (3, 3), vertices=[0, 0, 8, 0, 8, 6, 0, 6])
+    labels = figure.step_labels(sol)
+    assert [labels[p] for p in order] == list(range(len(order)))
+    assert labels[(3, 3)] == 0
+    fig = figure.build(sol)
+    root = _parse(figure.to_svg(fig))
+    boundary = set(_cells(root, "outline", fig, sol))
+    assert boundary == {tuple(p) for p in data["boundary"]}
+    assert boundary.isdisjoint(order)
+    png = tmp_path / "fill.png"
+    assert run(*args, "--png", str(png)).code == 0
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_png_paints_a_shaded_cell_in_its_grey():
+    import io
+
+    from PIL import Image
+
+    import scanconv
+
+    fig = figure.build(scanconv.antialias_line(0, 0, 5, 2))
+    shades = [s for s in fig.shapes if s.cls == "shade"]
+    assert shades
+    img = Image.open(io.BytesIO(figure.to_png(fig, scale=1))).convert("RGB")
+    for s in shades:
+        want = int((s.fill or "")[1:3], 16)
+        inset = (6, figure.CELL - 6)
+        probes = [
+            img.getpixel((int(s.at[0] + dx), int(s.at[1] + dy))) for dx in inset for dy in inset
+        ]
+        # the ideal line crosses some corners; the cell's own grey shows in the others
+        assert any(r == g == b and abs(r - want) <= 2 for r, g, b in probes), (s, probes)

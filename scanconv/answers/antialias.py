@@ -165,7 +165,10 @@ def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8)
         bbox=(min(xs), min(ys), max(xs) + (1 if steep else 0), max(ys) + (0 if steep else 1)),
         notes=tuple(notes),
         figures=(picture,) if picture else (),
-        geometry={"line": (ix1, iy1, ix2, iy2)},
+        geometry={
+            "line": (ix1, iy1, ix2, iy2),
+            **({"shades": values, "levels": L, "numbering": "none"} if values else {}),
+        },
     )
 
 
@@ -234,6 +237,7 @@ def antialias_solution(
             pts, _ = check_polygon(vertices_from_coords(params))
             title = f"polygon of {len(pts)} vertices ({rule_name} rule)"
             geometry["polyline"] = [(float(x), float(y)) for x, y in (*pts, pts[0])]
+            geometry["polyline_name"] = "polygon"
         if method == "area":
             values: dict[Pixel, Any] = dict(cov.area_coverage(pts, rule_name))
             exact_total = cov.region_area(pts, rule_name)
@@ -342,5 +346,5 @@ def antialias_solution(
         pixels=lambda: iter(order),
         bbox=_bbox(order),
         figures=(picture,) if picture else (),
-        geometry=geometry,
+        geometry={**geometry, "shades": levels_of, "levels": L, "numbering": "none"},
     )

@@ -330,5 +330,11 @@ def seed_fill_solution(
         bbox=bbox,
         marks=(),
         figures=figures,
+        geometry={
+            "outline": figures[0].marks if figures else (),
+            "outline_name": "boundary pixel (or another colour)",
+            "numbering": "order",
+            "order_name": "fill order (0: the seed)",
+        },
         data={"boundary": [list(p) for p in sorted(boundary_px)]},
     )

@@ -303,7 +303,13 @@ def polygon_solution(coords: Sequence[Number], rule_name: str = "even-odd") -> S
         pixels=pixels,
         bbox=bbox,
         figures=figures,
-        geometry={"polyline": [(float(x), float(y)) for x, y in (*pts, pts[0])]},
+        geometry={
+            "polyline": [(float(x), float(y)) for x, y in (*pts, pts[0])],
+            "outline": tuple(outline_pixels(pts)) if figures else (),
+            "outline_name": "outline pixel (Bresenham edges)",
+            "polyline_name": "polygon",
+            "numbering": "none",
+        },
         data={
             "vertices": [list(p) for p in pts],
             "edge_table": [

@@ -50,7 +50,7 @@ Method = Annotated[
 
 
 @app.command(context_settings=NUMERIC_ARGS)
-@answers()
+@answers(figures=True)
 def polygon(vertices: Vertices, rule: Rule = FillRule.even_odd) -> Solution:
     """Scan-line polygon fill: the edge table, then per scan line the active edge table, the
     intersections, the spans and pixels filled (pixel centres; half-open spans and edges).
@@ -136,7 +136,7 @@ def _seed_command(kind: str, doc: str) -> Callable[..., Solution]:
 
 
 fill_boundary = fill_app.command("boundary", context_settings=NUMERIC_ARGS)(
-    answers()(
+    answers(figures=True)(
         _seed_command(
             "boundary",
             """Boundary fill from a seed: fill every pixel that is neither the boundary nor filled,
@@ -149,7 +149,7 @@ fill_boundary = fill_app.command("boundary", context_settings=NUMERIC_ARGS)(
     )
 )
 fill_flood = fill_app.command("flood", context_settings=NUMERIC_ARGS)(
-    answers()(
+    answers(figures=True)(
         _seed_command(
             "flood",
             """Flood fill from a seed: replace the seed's colour in its connected region, with the
@@ -164,7 +164,7 @@ fill_flood = fill_app.command("flood", context_settings=NUMERIC_ARGS)(
 
 
 @antialias_app.command("line", context_settings=NUMERIC_ARGS)
-@answers()
+@answers(figures=True)
 def antialias_line(
     x1: Num,
     y1: Num,
@@ -183,7 +183,7 @@ def antialias_line(
 
 
 @antialias_app.command("circle", context_settings=NUMERIC_ARGS)
-@answers()
+@answers(figures=True)
 def antialias_circle(
     r: Num,
     center: Center = None,
@@ -200,7 +200,7 @@ def antialias_circle(
 
 
 @antialias_app.command("polygon", context_settings=NUMERIC_ARGS)
-@answers()
+@answers(figures=True)
 def antialias_polygon(
     vertices: Vertices,
     method: Method = AAMethod.area,

@@ -13,6 +13,11 @@ What the figure shows:
 * the ideal primitive from :attr:`Solution.geometry` drawn over the pixels: ``line``,
   ``circle``, ``ellipse``, ``polyline`` (a sampled curve) and, for Bezier and B-spline curves,
   the ``control`` polygon with its points;
+* grey levels: with ``geometry["shades"]`` (pixel -> level, ``geometry["levels"]`` = L) each
+  of those pixels is filled in its grey, level L - 1 black (the shading of the text picture),
+  for the anti-aliased answers;
+* the outline: ``geometry["outline"]`` (pixels, named by ``geometry["outline_name"]``) drawn
+  dark, under the filled pixels' outlines: a polygon's Bresenham edges, a seed fill's boundary;
 * the marked points (:attr:`Solution.marks`: the centre, ...) as small crosses;
 * the axes: every column and row labelled with its x and y (every 2nd, 5th, ... when the
   numbers would collide), y growing upward as in the notes, or downward with
@@ -68,6 +73,9 @@ class Paint(NamedTuple):
 PAINT = {
     "cell": Paint(None, "#c8c8c8", 1),
     "pixel": Paint("#9ec5e8", "#3a6ea5", 1),
+    "shade": Paint("#808080", "#3a6ea5", 1),
+    "outline": Paint("#f4b183", "#8c4a12", 1),
+    "on-outline": Paint(None, "#8c4a12", 3),
     "axis": Paint(None, "#333333", 1.5),
     "ideal": Paint(None, "#d62728", 2),
     "control": Paint(None, "#2ca02c", 1.5, (6, 4)),
@@ -81,9 +89,30 @@ PAINT = {
 """Colours and strokes by CSS class; text strokes are a halo painted under the glyphs."""
 
 
-def _css() -> str:
+_ALWAYS = frozenset(
+    (
+        "cell",
+        "pixel",
+        "axis",
+        "ideal",
+        "control",
+        "control-point",
+        "mark",
+        "step",
+        "tick",
+        "title",
+        "legend",
+    )
+)
+"""The classes whose rules every figure carries (those of the first figures, kept stable)."""
+
+
+def _css(used: set[str]) -> str:
+    """The style rules of the classes in ``used`` (in :data:`PAINT`'s order)."""
     rules = []
     for cls, p in PAINT.items():
+        if cls not in used and cls not in _ALWAYS:
+            continue
         decl = [f"fill:{p.fill or 'none'}"]
         if p.stroke:
             decl += [f"stroke:{p.stroke}", f"stroke-width:{_num(p.width)}"]
@@ -117,6 +146,8 @@ class Shape:
     """The font size of a ``text`` shape."""
     anchor: str = "start"
     """``start``, ``middle`` or ``end``: which point of a ``text`` shape is at ``at``."""
+    fill: str | None = None
+    """A ``rect``'s own fill colour (a grey level), over its class's."""
 
 
 @dataclass(slots=True)
@@ -184,6 +215,8 @@ def numbering(solution: Solution) -> str:
     at 0) or ``"order"`` (a curve: the plotting order, since several samples may land on one
     pixel and the joining pixels have no sample).
     """
+    if "numbering" in solution.geometry:
+        return str(solution.geometry["numbering"])
     if solution.geometry.get("polyline") and int(solution.geometry.get("symmetry", 1)) == 1:
         return "order"
     previous = -1
@@ -208,6 +241,8 @@ def step_labels(solution: Solution) -> dict[Pixel, int]:
     plotted = set(solution.pixels()) if solution.pixels is not None else set()
     labels: dict[Pixel, int] = {}
     how = numbering(solution)
+    if how == "none":
+        return labels
     if how == "order" and solution.pixels is not None:
         for i, p in enumerate(solution.pixels()):
             labels.setdefault(p, i)
@@ -263,7 +298,7 @@ def extent(solution: Solution, pixels: Iterable[Pixel]) -> tuple[int, int, int, 
     for x, y in pixels:
         xs.append(x)
         ys.append(y)
-    for x, y in solution.marks:
+    for x, y in (*solution.marks, *solution.geometry.get("outline", ())):
         xs.append(x)
         ys.append(y)
     for fx, fy in _points(solution.geometry):
@@ -334,8 +369,22 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
     add = fig.shapes.append
     add(Shape("text", "title", (8, 22), solution.title, 14))
     half = -0.5 if f.top_left else 0.5
+    shades = solution.geometry.get("shades", {})
+    outline = list(dict.fromkeys(solution.geometry.get("outline", ())))
+    plotted = set(pixels)
+    for x, y in outline:
+        if (x, y) not in plotted:
+            add(Shape("rect", "outline", (f.px(x - 0.5), f.py(y + half))))
     for x, y in pixels:
-        add(Shape("rect", "pixel", (f.px(x - 0.5), f.py(y + half))))
+        corner = (f.px(x - 0.5), f.py(y + half))
+        if (x, y) in shades:
+            grey = grey_of(shades[(x, y)], int(solution.geometry["levels"]))
+            add(Shape("rect", "shade", corner, fill=grey))
+        else:
+            add(Shape("rect", "pixel", corner))
+    for x, y in outline:
+        if (x, y) in plotted:
+            add(Shape("rect", "on-outline", (f.px(x - 0.5), f.py(y + half))))
     for j in range(cols + 1):
         add(Shape("line", "cell", (f.left + j * CELL, f.top, f.left + j * CELL, f.bottom)))
     for j in range(rows + 1):
@@ -361,6 +410,19 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
     _axes(fig, f)
     _legend(fig, solution, f.bottom, numbered=bool(labels))
     return fig
+
+
+def grey_of(level: int, levels: int) -> str:
+    """The colour of grey ``level`` of ``levels``: level L - 1 is black (full intensity),
+    level 0 white, the steps between equal (rounded half up to 0..255).
+
+    >>> grey_of(0, 8), grey_of(7, 8), grey_of(3, 4), grey_of(1, 2)
+    ('#ffffff', '#000000', '#000000', '#000000')
+    >>> grey_of(1, 4)
+    '#aaaaaa'
+    """
+    v = round_half_up(Fraction(255 * (levels - 1 - level), max(levels - 1, 1)))
+    return f"#{v:02x}{v:02x}{v:02x}"
 
 
 def _marks(solution: Solution) -> list[Pixel]:
@@ -413,21 +475,27 @@ def _axes(fig: Figure, f: _Frame) -> None:
 
 def _legend(fig: Figure, solution: Solution, bottom: float, numbered: bool) -> None:
     """What the colours and numbers mean, wrapped to the figure's width."""
-    parts = ["filled: plotted pixel"]
+    geometry = solution.geometry
+    if "shades" in geometry:
+        levels = int(geometry["levels"])
+        parts = [f"grey: intensity level 0..{levels - 1} (black = {levels - 1})"]
+    else:
+        parts = ["filled: plotted pixel"]
+    if geometry.get("outline"):
+        parts.append(f"orange: {geometry.get('outline_name', 'outline')}")
     if numbered:
         how = numbering(solution)
         if how == "order":
-            parts.append("number: plotting order")
+            parts.append(f"number: {geometry.get('order_name', 'plotting order')}")
         elif label_offset(solution):
             parts.append("number: k + 1 for row k; 0: start")
         elif how == "continued":
             parts.append("number: row k (region 2 counts on)")
         else:
             parts.append("number: row k of the step table")
-    geometry = solution.geometry
     kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in geometry]
     if geometry.get("polyline"):
-        kinds.append("curve")
+        kinds.append(str(geometry.get("polyline_name", "curve")))
     if kinds:
         parts.append(f"red: ideal {' and '.join(kinds)}")
     if geometry.get("control"):
@@ -464,7 +532,8 @@ def _svg_element(s: Shape) -> str:
         return f'<polyline class="{s.cls}" points="{pts}"/>'
     attrs = "".join(f' {k}="{_num(v)}"' for k, v in zip(_SVG_ATTRS[s.kind], s.at, strict=True))
     if s.kind == "rect":
-        return f'<rect class="{s.cls}"{attrs} width="{CELL}" height="{CELL}"/>'
+        fill = f' style="fill:{s.fill}"' if s.fill else ""
+        return f'<rect class="{s.cls}"{attrs} width="{CELL}" height="{CELL}"{fill}/>'
     if s.kind == "text":
         attrs += f' font-size="{_num(s.size)}"'
         if s.anchor != "start":
@@ -489,7 +558,7 @@ def to_svg(fig: Figure) -> str:
         f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" '
         'font-family="DejaVu Sans, Helvetica, Arial, sans-serif">',
         f"<title>{escape(fig.title)}</title>",
-        f"<style>\n{_css()}\n</style>",
+        f"<style>\n{_css({s.cls for s in fig.shapes})}\n</style>",
         '<rect width="100%" height="100%" fill="#fff"/>',
     ]
     out.extend(_svg_element(s) for s in fig.shapes)
@@ -563,7 +632,7 @@ def to_png(fig: Figure, scale: int = 2) -> bytes:
             )
         elif s.kind == "rect":
             box = [at[0], at[1], at[0] + CELL * k, at[1] + CELL * k]
-            draw.rectangle(box, fill=paint.fill, outline=paint.stroke, width=width)
+            draw.rectangle(box, fill=s.fill or paint.fill, outline=paint.stroke, width=width)
         elif s.kind in ("circle", "ellipse"):
             rx, ry = (at[2], at[2]) if s.kind == "circle" else (at[2], at[3])
             box = [at[0] - rx, at[1] - ry, at[0] + rx, at[1] + ry]
