@@ -134,7 +134,10 @@ def test_presets_reproduce_their_sources_tables():
 
 
 def test_an_explicit_knob_overrides_the_preset():
-    assert resolve("line", "bresenham", "wikipedia", {"tie": "step"}) == {"tie": "step"}
+    assert resolve("line", "bresenham", "wikipedia", {"tie": "step"}) == {
+        "tie": "step",
+        "start": "swap",
+    }
 
 
 def test_answers_state_their_conventions_in_every_format():
@@ -232,3 +235,118 @@ def test_ellipse_inclusive_loop_example():
     inclusive = list(ellipses.midpoint_ellipse(3, 3, "inclusive"))
     assert strict != inclusive
     assert sum(s.extra[0] == 1 for s in inclusive) == sum(s.extra[0] == 1 for s in strict) + 1
+
+
+# --- which end point is plotted first (start), the ellipse's tie and p0 ------------------------
+
+
+def _mirror(points, steep):
+    return [(x, -y) if steep else (-x, y) for x, y in points]
+
+
+@given(coord, coord, coord, coord, st.sampled_from(["step", "keep"]))
+def test_start_given_walks_from_p1_as_the_mirrored_swap_walk(x1, y1, x2, y2, tie):
+    """Walking from P1 with the major coordinate decreasing is the swap walk of the mirrored
+    line, mirrored back: the same decisions, a tie seen from P1's side."""
+    steep = abs(y2 - y1) > abs(x2 - x1)
+    given_walk = list(api.line(x1, y1, x2, y2, tie=tie, start="given").pixels())
+    assert given_walk[0] == (x1, y1) and given_walk[-1] == (x2, y2)
+    if (y2 - y1 if steep else x2 - x1) >= 0:  # nothing to swap: the two starts agree
+        assert given_walk == list(api.line(x1, y1, x2, y2, tie=tie).pixels())
+        return
+    (a1, b1), (a2, b2) = _mirror([(x1, y1), (x2, y2)], steep)
+    mirrored = list(api.line(a1, b1, a2, b2, tie=tie, start="swap").pixels())
+    assert given_walk == _mirror(mirrored, steep)
+
+
+@given(coord, coord, coord, coord)
+def test_start_changes_bresenham_pixels_only_where_a_tie_is_met(x1, y1, x2, y2):
+    swap = api.line(x1, y1, x2, y2, start="swap")
+    given_walk = api.line(x1, y1, x2, y2, start="given")
+    if all(s.p != 0 for s in swap.steps() if s.decision is not None):
+        assert set(swap.pixels()) == set(given_walk.pixels())
+
+
+@given(halves, halves, halves, halves)
+def test_dda_start_changes_pixels_only_at_halves(x1, y1, x2, y2):
+    given_walk = api.line(x1, y1, x2, y2, algo="dda", start="given")
+    swap = api.line(x1, y1, x2, y2, algo="dda", start="swap")
+    values = [v for s in given_walk.steps() for v in s.extra[:2]]
+    if all(Fraction(v).denominator != 2 for v in values):
+        assert set(given_walk.pixels()) == set(swap.pixels())
+    assert len(list(given_walk.pixels())) == len(list(swap.pixels()))
+
+
+def test_start_examples_by_hand():
+    # (4, 2) to (0, 0): p = 0, -4, 0, -4. Swapped, the ties step y on the way up from (0, 0);
+    # walked from (4, 2), they step y on the way down.
+    assert list(api.line(4, 2, 0, 0).pixels()) == [(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)]
+    assert list(api.line(4, 2, 0, 0, start="given").pixels()) == [
+        (4, 2),
+        (3, 1),
+        (2, 1),
+        (1, 0),
+        (0, 0),
+    ]
+    # the DDA from (5, 1) to (0, 0): y = 1, 0.8, ..., 0 from P1; 0, 0.2, ... from P2
+    dda_given = [s.pixel for s in api.line(5, 1, 0, 0, algo="dda").steps()]
+    dda_swap = [s.pixel for s in api.line(5, 1, 0, 0, algo="dda", start="swap").steps()]
+    assert dda_given == [(5, 1), (4, 1), (3, 1), (2, 0), (1, 0), (0, 0)]
+    assert dda_swap == [(0, 0), (1, 0), (2, 0), (3, 1), (4, 1), (5, 1)]
+    import scanconv
+
+    text = scanconv.line(5, 1, 0, 0, algo="dda", start="swap").to("plain")
+    assert "swap the end points so that x increases" in text
+    assert "start = swap" in text
+
+
+def test_ellipse_exact_quarters_meet_no_tie_on_small_ellipses():
+    """Why the ellipse's tie knob matters only with p0 = rounded: with exact quarters no
+    decision parameter of these ellipses is 0, so the two tie rules agree."""
+    for rx in range(1, 25):
+        for ry in range(1, 25):
+            sol = api.ellipse(rx, ry)
+            assert all(s.p != 0 for s in sol.steps())
+            assert list(sol.pixels()) == list(api.ellipse(rx, ry, tie="keep").pixels())
+
+
+def test_ellipse_rounded_p0_and_tie_by_hand():
+    # rx = 3, ry = 2: p1_0 = 4 - 18 + 9/4 = -11.75, rounded -12; E to (1, 2), p = -12 + 8 + 4
+    # = 0: a tie. step: SE to (2, 1), p = 0 + 16 - 18 + 4 = 2; keep: E to (2, 2), p = 20.
+    step = [(s.p, s.decision.value, s.pixel) for s in api.ellipse(3, 2, p0="rounded").steps()]
+    keep = [
+        (s.p, s.decision.value, s.pixel)
+        for s in api.ellipse(3, 2, p0="rounded", tie="keep").steps()
+    ]
+    assert step[:2] == [(-12, "E", (1, 2)), (0, "SE", (2, 1))]
+    assert keep[:2] == [(-12, "E", (1, 2)), (0, "E", (2, 2))]
+    import scanconv
+
+    text = scanconv.ellipse(3, 2, p0="rounded").to("plain")
+    assert "-11.75 -> -12 (rounded)" in text
+
+
+@given(st.integers(1, 30), st.integers(1, 30))
+def test_ellipse_tie_changes_the_walk_only_from_its_first_tie(rx, ry):
+    step = list(api.ellipse(rx, ry, p0="rounded").steps())
+    keep = list(api.ellipse(rx, ry, p0="rounded", tie="keep").steps())
+    first = next((i for i, s in enumerate(step) if s.p == 0), None)
+    if first is None:
+        assert [s.pixel for s in step] == [s.pixel for s in keep]
+    else:
+        assert [s.pixel for s in step[:first]] == [s.pixel for s in keep[:first]]
+
+
+def test_hearn_baker_ellipse_example_is_the_same_exact_or_rounded():
+    """Hearn & Baker's example (rx = 8, ry = 6) has integer p values, so their rounding
+    changes nothing: p1 = -332, -224, -44, 208, -108, 288, 244; p2 = -23, 361, 297."""
+    hb = [s.p for s in api.ellipse(8, 6, convention="hearn-baker").steps()]
+    assert hb == [-332, -224, -44, 208, -108, 288, 244, -23, 361, 297]
+    assert hb == [s.p for s in api.ellipse(8, 6).steps()]
+
+
+def test_ellipse_p0_values_are_checked_per_method():
+    with pytest.raises(ValueError, match="choose from exact, rounded"):
+        api.ellipse(3, 2, p0="1-r")
+    with pytest.raises(ValueError, match="choose from 1-r, 5/4-r"):
+        api.circle(5, method="midpoint", p0="rounded")

@@ -32,6 +32,7 @@ from ..algorithms.choices import (
     Layout,
     LineAlgorithm,
     Rounding,
+    Start,
     Tie,
 )
 from ..core.checks import InputError
@@ -117,6 +118,7 @@ def line(
     *,
     rounding: Rounding | str | None = None,
     tie: Tie | str | None = None,
+    start: Start | str | None = None,
     convention: Convention | str | None = None,
     layout: Layout | str = "notes",
     derive: bool = False,
@@ -124,12 +126,15 @@ def line(
 ) -> Solution:
     """The line from ``(x1, y1)`` to ``(x2, y2)`` by ``algo`` (``scanconv line``).
 
-    ``rounding`` (dda, basic) and ``tie`` (bresenham) are conventions, ``convention`` a named
+    ``rounding`` (dda, basic), ``tie`` (bresenham) and ``start`` (bresenham, dda: which end
+    point is plotted first, ``"swap"`` or ``"given"``) are conventions, ``convention`` a named
     preset (``notes``, ``hearn-baker``, ``foley``, ``wikipedia``); ``layout`` the table's rows
     (``notes`` or ``textbook``); ``derive`` and ``pseudocode`` add the theory.
 
     >>> list(line(0, 0, 3, 1).pixels())
     [(0, 0), (1, 0), (2, 1), (3, 1)]
+    >>> list(line(4, 2, 0, 0).pixels()), list(line(4, 2, 0, 0, start="given").pixels())
+    ([(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)], [(4, 2), (3, 1), (2, 1), (1, 0), (0, 0)])
     >>> [s.pixel for s in line("1/2", 0, 3.5, 1, algo=LineAlgorithm.dda).steps()]
     [(1, 0), (2, 0), (3, 1), (4, 1)]
     >>> list(line(0, 0, 4, 2, tie="keep").pixels())
@@ -143,6 +148,7 @@ def line(
         *coords,
         rounding=_maybe(rounding, "rounding"),
         tie=_maybe(tie, "tie"),
+        start=_maybe(start, "start"),
         convention=_maybe(convention, "convention"),
         layout=_choice(layout, "layout"),
         derive=derive,
@@ -207,11 +213,17 @@ def ellipse(
     center: PointLike = (0, 0),
     *,
     loop: Loop | str | None = None,
+    tie: Tie | str | None = None,
+    p0: str | None = None,
     convention: Convention | str | None = None,
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:
     """The midpoint ellipse with semi-axes ``rx``, ``ry`` about ``center`` (``scanconv ellipse``).
+
+    ``loop`` (region 1: ``strict`` or ``inclusive``), ``tie`` (``step``: p = 0 chooses SE in
+    both regions; ``keep``: E in region 1, S in region 2) and ``p0`` (``exact``, or
+    ``rounded`` as Hearn & Baker's C code) are conventions.
 
     >>> sorted(ellipse(2, 1).pixels())
     [(-2, 0), (-1, -1), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 1), (2, 0)]
@@ -226,6 +238,8 @@ def ellipse(
         xc,
         yc,
         loop=_maybe(loop, "loop"),
+        tie=_maybe(tie, "tie"),
+        p0=_maybe(p0, "p0"),
         convention=_maybe(convention, "convention"),
         derive=derive,
         pseudocode=pseudocode,

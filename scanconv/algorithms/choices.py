@@ -38,6 +38,13 @@ class Tie(str, Enum):
     keep = "keep"
 
 
+class Start(str, Enum):
+    """Which end point a line's walk starts from."""
+
+    swap = "swap"
+    given = "given"
+
+
 class Layout(str, Enum):
     """The step table's row shape: the notes' or the textbook's."""
 

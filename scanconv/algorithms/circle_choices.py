@@ -25,6 +25,13 @@ class P0(str, Enum):
     exact = "5/4-r"
 
 
+class EllipseP0(str, Enum):
+    """How the midpoint ellipse takes each region's first decision parameter."""
+
+    exact = "exact"
+    rounded = "rounded"
+
+
 class Loop(str, Enum):
     """Whether the octant (region-1) loop is strict (``x < y``) or inclusive (``x <= y``)."""
 

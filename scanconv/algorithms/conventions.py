@@ -71,9 +71,29 @@ class Knob(NamedTuple):
     default: str
     applies: tuple[str, ...]
     """``"primitive/method"`` names the knob applies to."""
+    per_method: tuple[tuple[str, str], ...] = ()
+    """``("primitive/method", value)`` pairs whose default is not :attr:`default`."""
+    values_for: tuple[tuple[str, tuple[str, ...]], ...] = ()
+    """``("primitive/method", values)``: the only values a method takes (default: all)."""
+
+    def choices_for(self, primitive: str, method: str) -> tuple[str, ...]:
+        """The values one method takes.
+
+        >>> KNOBS["p0"].choices_for("ellipse", "midpoint")
+        ('exact', 'rounded')
+        """
+        return dict(self.values_for).get(f"{primitive}/{method}", tuple(self.values))
 
     def applies_to(self, primitive: str, method: str) -> bool:
         return f"{primitive}/{method}" in self.applies
+
+    def default_for(self, primitive: str, method: str) -> str:
+        """The default for one method.
+
+        >>> KNOBS["start"].default_for("line", "dda"), KNOBS["start"].default_for("line", "bresenham")
+        ('given', 'swap')
+        """
+        return dict(self.per_method).get(f"{primitive}/{method}", self.default)
 
 
 KNOBS: dict[str, Knob] = {
@@ -96,19 +116,43 @@ KNOBS: dict[str, Knob] = {
             "keep": "a decision parameter of 0 keeps the minor coordinate (if p <= 0 keep it)",
         },
         "step",
-        ("line/bresenham", "circle/midpoint", "circle/general", "circle/bresenham"),
+        (
+            "line/bresenham",
+            "circle/midpoint",
+            "circle/general",
+            "circle/bresenham",
+            "ellipse/midpoint",
+        ),
     ),
     "p0": Knob(
         "p0",
-        {"1-r": "p0 = 1 - r, integers only", "5/4-r": "p0 = 5/4 - r, exact quarters"},
+        {
+            "1-r": "p0 = 1 - r, integers only",
+            "5/4-r": "p0 = 5/4 - r, exact quarters",
+            "exact": "p1_0 and p2_0 exact, in quarters",
+            "rounded": "p1_0 and p2_0 rounded to the nearest integer (half up), integers only",
+        },
         "1-r",
-        ("circle/midpoint",),
+        ("circle/midpoint", "ellipse/midpoint"),
+        (("ellipse/midpoint", "exact"),),
+        (("circle/midpoint", ("1-r", "5/4-r")), ("ellipse/midpoint", ("exact", "rounded"))),
     ),
     "loop": Knob(
         "loop",
         {"strict": "loop while x < y", "inclusive": "loop while x <= y"},
         "strict",
         ("circle/midpoint", "circle/general", "ellipse/midpoint"),
+    ),
+    "start": Knob(
+        "start",
+        {
+            "swap": "the walk starts at the end point with the smaller major coordinate, "
+            "the end points swapped if needed",
+            "given": "the walk starts at the first end point given and steps toward the second",
+        },
+        "swap",
+        ("line/bresenham", "line/dda"),
+        (("line/dda", "given"),),
     ),
     "update": Knob(
         "update",
@@ -127,13 +171,13 @@ PRESETS: dict[str, dict[str, dict[str, str]]] = {
         "line": {"rounding": "half-up", "tie": "step"},
         "circle": {"rounding": "half-up", "tie": "step", "p0": "1-r", "loop": "strict"}
         | {"update": "new"},
-        "ellipse": {"loop": "strict"},
+        "ellipse": {"loop": "strict", "tie": "step", "p0": "exact"},
     },
     "hearn-baker": {
         "line": {"rounding": "c-cast", "tie": "step"},
         "circle": {"rounding": "c-cast", "tie": "step", "p0": "1-r", "loop": "strict"}
         | {"update": "new"},
-        "ellipse": {"loop": "strict"},
+        "ellipse": {"loop": "strict", "tie": "step", "p0": "rounded"},
     },
     "foley": {
         "line": {"rounding": "half-up", "tie": "keep"},
@@ -163,11 +207,11 @@ def resolve(
     default; a knob given explicitly that does not apply to the method is an error.
 
     >>> resolve("line", "bresenham", None, {"tie": "keep"})
-    {'tie': 'keep'}
+    {'tie': 'keep', 'start': 'swap'}
     >>> resolve("line", "dda", None, {"tie": "keep"})
     Traceback (most recent call last):
     ...
-    scanconv.core.checks.InputError: the tie convention applies to line bresenham, circle midpoint, circle general, circle bresenham, not to line dda
+    scanconv.core.checks.InputError: the tie convention applies to line bresenham, circle midpoint, circle general, circle bresenham, ellipse midpoint, not to line dda
     """
     if convention is not None and convention not in PRESETS:
         raise InputError(
@@ -193,10 +237,15 @@ def resolve(
                     name,
                 )
             continue
-        value = value if value is not None else preset.get(name, knob.default)
-        if value not in knob.values:
+        value = (
+            value if value is not None else preset.get(name, knob.default_for(primitive, method))
+        )
+        choices = knob.choices_for(primitive, method)
+        if value not in choices:
             raise InputError(
-                f"unknown {name} {value!r} (choose from {', '.join(knob.values)})", name
+                f"unknown {name} {value!r} for {primitive} {method} "
+                f"(choose from {', '.join(choices)})",
+                name,
             )
         out[name] = value
     return out

@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 from fractions import Fraction
 
-from ..core.numeric import Number
+from ..core.numeric import Number, round_half_up
 from ..core.records import (
     Move,
     Pixel,
@@ -32,7 +32,9 @@ def quarter(v: int) -> Number:
     return v >> 2 if v & 3 == 0 else Fraction(v, 4)
 
 
-def midpoint_ellipse(rx: int, ry: int, loop: str = "strict") -> Iterator[Step]:
+def midpoint_ellipse(
+    rx: int, ry: int, loop: str = "strict", tie: str = "step", p0: str = "exact"
+) -> Iterator[Step]:
     """The midpoint ellipse algorithm (Hearn & Baker), one quadrant from ``(0, ry)``.
 
     Yields the steps of region 1, then of region 2; ``Step.pixel`` is ``(x_{k+1}, y_{k+1})``,
@@ -62,6 +64,16 @@ def midpoint_ellipse(rx: int, ry: int, loop: str = "strict") -> Iterator[Step]:
     coordinate per step, so the walk always ends after at most ``rx + ry`` steps.
 
     ``loop="inclusive"`` runs region 1 while ``2ry²x <= 2rx²y`` (the ``<=`` some sources print).
+    ``tie="keep"``: a decision parameter of exactly 0 keeps the minor coordinate instead (region
+    1: ``p1_k <= 0`` chooses E; region 2: ``p2_k >= 0`` chooses S). ``p0="rounded"`` starts
+    each region from its p rounded to the nearest integer, half up, as Hearn & Baker's C code
+    rounds it (``ROUND(...)``); the increments are integers, so every p is then an integer
+    and ties can occur (with the exact quarters they practically never do).
+
+    >>> [s.p for s in midpoint_ellipse(3, 2, p0="rounded")]
+    [-12, 0, 2]
+    >>> [str(s.p) for s in midpoint_ellipse(3, 2)]
+    ['-47/4', '1/4', '9/4']
 
     Exact arithmetic: the p values are multiples of 1/4 (kept as ``4p`` in integers).
 
@@ -90,13 +102,14 @@ def midpoint_ellipse(rx: int, ry: int, loop: str = "strict") -> Iterator[Step]:
     rx2, ry2 = rx * rx, ry * ry
     x, y = 0, ry
     tx, ty = 0, 2 * rx2 * ry  # 2ry²x and 2rx²y, kept incrementally
-    p4 = 4 * ry2 - 4 * rx2 * ry + rx2  # 4·p1_0
+    p4 = start4(4 * ry2 - 4 * rx2 * ry + rx2, p0)  # 4·p1_0
     k = 0
     inclusive = loop == "inclusive"
+    t1, t2 = (1, -1) if tie == "keep" else (0, 0)  # p <= 0 is 4p < 1; p >= 0 is 4p > -1
     while tx < ty or (inclusive and tx == ty and y > 0):
         x += 1
         tx += 2 * ry2
-        if p4 < 0:
+        if p4 < t1:
             q4, move = p4 + 4 * (tx + ry2), Move.E
         else:
             y -= 1
@@ -104,12 +117,12 @@ def midpoint_ellipse(rx: int, ry: int, loop: str = "strict") -> Iterator[Step]:
             q4, move = p4 + 4 * (tx - ty + ry2), Move.SE
         yield new_step(Step, (k, quarter(p4), move, (x, y), (1, tx, ty)))
         p4, k = q4, k + 1
-    p4 = ry2 * (2 * x + 1) ** 2 + 4 * rx2 * (y - 1) ** 2 - 4 * rx2 * ry2  # 4·p2_0
+    p4 = start4(ry2 * (2 * x + 1) ** 2 + 4 * rx2 * (y - 1) ** 2 - 4 * rx2 * ry2, p0)  # 4·p2_0
     k = 0
     while y > 0:
         y -= 1
         ty -= 2 * rx2
-        if p4 > 0:
+        if p4 > t2:
             q4, move = p4 + 4 * (rx2 - ty), Move.S
         else:
             x += 1
@@ -130,7 +143,19 @@ needs the end of region 1 before the first line is printed, and finding it runs 
 (about rx²/sqrt(rx² + ry²) steps: well under a second at 10**6, hours at 10**9)."""
 
 
-def region1_end(rx: int, ry: int, loop: str = "strict") -> Pixel:
+def start4(p4: int, p0: str) -> int:
+    """``4p`` of a region's first p: as computed (``"exact"``), or with p rounded to the nearest integer,
+    ``floor(p + 1/2)`` (``"rounded"``).
+
+    >>> start4(-47, "exact"), start4(-47, "rounded"), start4(-45, "rounded")
+    (-47, -48, -44)
+    """
+    return p4 if p0 == "exact" else 4 * round_half_up(Fraction(p4, 4))
+
+
+def region1_end(
+    rx: int, ry: int, loop: str = "strict", tie: str = "step", p0: str = "exact"
+) -> Pixel:
     """The last point of region 1 (where region 2 starts), without building any steps.
 
     >>> region1_end(8, 6)
@@ -138,12 +163,13 @@ def region1_end(rx: int, ry: int, loop: str = "strict") -> Pixel:
     """
     rx2, ry2 = rx * rx, ry * ry
     x, y, tx, ty = 0, ry, 0, 2 * rx2 * ry
-    p4 = 4 * ry2 - 4 * rx2 * ry + rx2
+    p4 = start4(4 * ry2 - 4 * rx2 * ry + rx2, p0)
     inclusive = loop == "inclusive"
+    t1 = 1 if tie == "keep" else 0
     while tx < ty or (inclusive and tx == ty and y > 0):
         x += 1
         tx += 2 * ry2
-        if p4 < 0:
+        if p4 < t1:
             p4 += 4 * (tx + ry2)
         else:
             y -= 1

@@ -22,7 +22,9 @@ from .choices import LineAlgorithm
 from .conventions import rounder
 
 
-def bresenham(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> Iterator[Step]:
+def bresenham(
+    x1: int, y1: int, x2: int, y2: int, tie: str = "step", start: str = "swap"
+) -> Iterator[Step]:
     """Bresenham's line algorithm, textbook form, all octants.
 
     Yields one step per unit of the major axis; ``Step.pixel`` is ``(x_{k+1}, y_{k+1})`` and
@@ -45,6 +47,10 @@ def bresenham(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> Iterator
     axis with ``tie="step"`` (the notes' and Hearn & Baker's ``if p < 0``) and keeps it with
     ``tie="keep"`` (the widely copied ``if p <= 0``). Integers only.
 
+    ``start="given"`` walks from P1 as given instead, the major coordinate decreasing when P2
+    has the smaller one (Wikipedia's all-octant ``plotLine``): the same p values, so the same
+    pixels except where a tie is met walking the other way. See :func:`bresenham_from_p1`.
+
     References: Bresenham, IBM Systems Journal 4(1), 1965; Hearn & Baker, *Computer Graphics*,
     section 3-5.
 
@@ -65,6 +71,9 @@ def bresenham(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> Iterator
     """
     # bresenham(2, 2, 10, 6) -> p: 0 -8 0 -8 0 -8 0 -8 ; pixels (3,3) (4,3) (5,4) ... (10,6)
     # bresenham(2, 2, 5, 10) -> steep: p: -2 4 -6 0 -10 -4 2 -8 ; moves N/NE
+    if start == "given" and (y2 - y1 if abs(y2 - y1) > abs(x2 - x1) else x2 - x1) < 0:
+        yield from bresenham_from_p1(x1, y1, x2, y2, tie)
+        return
     x1, y1, x2, y2, steep, dmaj, dmin, s, stay, move = orient(x1, y1, x2, y2)
     inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
     x, y, p = x1, y1, 2 * dmin - dmaj
@@ -91,7 +100,49 @@ def bresenham(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> Iterator
             yield make(cls, (k, p, move, (x, y), (p := p + inc_step,)))
 
 
-def bresenham_notes(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> Iterator[Step]:
+def bresenham_from_p1(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> Iterator[Step]:
+    """Bresenham's line walked from P1 when the major coordinate decreases to P2 (no swap).
+
+    The decision is the same as :func:`bresenham`'s (``p0 = 2 Δminor - Δmajor``, the same two
+    increments); the major coordinate steps by -1 and the minor one toward P2. A tie now keeps
+    or steps the minor coordinate as seen from P1, so the pixels can differ from the swapped
+    walk's exactly where p = 0.
+
+    >>> [(s.p, s.decision.value, s.pixel) for s in bresenham_from_p1(4, 2, 0, 0)]
+    [(0, 'SW', (3, 1)), (-4, 'W', (2, 1)), (0, 'SW', (1, 0)), (-4, 'W', (0, 0))]
+    >>> [s.pixel for s in bresenham(4, 2, 0, 0)]
+    [(1, 1), (2, 1), (3, 2), (4, 2)]
+    """
+    dx, dy = x2 - x1, y2 - y1
+    steep = abs(dy) > abs(dx)
+    dmaj, dmin = (abs(dy), abs(dx)) if steep else (abs(dx), abs(dy))
+    if steep:
+        s = 1 if dx >= 0 else -1
+        stay, move = Move.from_delta(0, -1), Move.from_delta(s, -1)
+    else:
+        s = 1 if dy >= 0 else -1
+        stay, move = Move.from_delta(-1, 0), Move.from_delta(-1, s)
+    inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
+    x, y, p = x1, y1, 2 * dmin - dmaj
+    t = 1 if tie == "keep" else 0
+    for k in range(dmaj):
+        if steep:
+            y -= 1
+        else:
+            x -= 1
+        if p < t:
+            yield Step(k, p, stay, (x, y), (p := p + inc_keep,))
+        else:
+            if steep:
+                x += s
+            else:
+                y += s
+            yield Step(k, p, move, (x, y), (p := p + inc_step,))
+
+
+def bresenham_notes(
+    x1: int, y1: int, x2: int, y2: int, tie: str = "step", start: str = "swap"
+) -> Iterator[Step]:
     """:func:`bresenham` in the notes' row shape: row k plots ``(x_k, y_k)`` (row 0 the start
     pixel) and shows the ``p_k`` and decision taken there and ``p_{k+1}``; a last row plots the
     end pixel, with ``p`` and no decision (the loop has ended).
@@ -105,7 +156,9 @@ def bresenham_notes(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> It
     """
     o = orient(x1, y1, x2, y2)
     pixel, k, p = (o[0], o[1]), 0, 2 * o[6] - o[5]
-    for s in bresenham(x1, y1, x2, y2, tie):
+    if start == "given":
+        pixel = (x1, y1)
+    for s in bresenham(x1, y1, x2, y2, tie, start):
         yield Step(s.k, s.p, s.decision, pixel, s.extra)
         pixel, k, p = s.pixel, s.k + 1, s.extra[0]
     yield Step(k, p, None, pixel, (None,))

@@ -17,7 +17,7 @@ from ..algorithms.ellipses import (
     symmetric_pixels,
 )
 from ..core.checks import InputError, check_integer
-from ..core.numeric import Number, fmt_paren, fmt_short
+from ..core.numeric import Number, fmt_paren, fmt_short, normalize, round_half_up
 from ..core.records import (
     Column,
     Pixel,
@@ -54,6 +54,8 @@ def ellipse_solution(
     yc: Number = 0,
     *,
     loop: str | None = None,
+    tie: str | None = None,
+    p0: str | None = None,
     convention: str | None = None,
     derive: bool = False,
     pseudocode: bool = False,
@@ -62,7 +64,10 @@ def ellipse_solution(
     """The worked solution of the midpoint ellipse with semi-axes ``rx``, ``ry``.
 
     ``loop`` is the region-1 loop convention (``"strict"``: while 2ry²x < 2rx²y, or
-    ``"inclusive"``: <=), ``convention`` a named preset; ``derive`` adds the derivation,
+    ``"inclusive"``: <=), ``tie`` what p = 0 chooses (``"step"``: SE in both regions, or
+    ``"keep"``: E in region 1 and S in region 2), ``p0`` how each region's first p is taken
+    (``"exact"`` quarters, or ``"rounded"`` as Hearn & Baker's C code), ``convention`` a named
+    preset; ``derive`` adds the derivation,
     ``pseudocode`` the algorithm as a table, ``annotate`` the note naming the conventions.
 
     Raises ``ValueError`` for a negative or non-integer semi-axis or centre. ``rx = ry = 0``
@@ -79,8 +84,8 @@ def ellipse_solution(
     (40, (-8, -6, 8, 6))
     """
 
-    knobs = resolve("ellipse", "midpoint", convention, {"loop": loop})
-    loop = knobs["loop"]
+    knobs = resolve("ellipse", "midpoint", convention, {"loop": loop, "tie": tie, "p0": p0})
+    loop, tie, p0s = knobs["loop"], knobs["tie"], knobs["p0"]
     irx = check_integer(rx, "rx", negative=False)
     iry = check_integer(ry, "ry", negative=False)
     ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
@@ -92,9 +97,16 @@ def ellipse_solution(
         )
     rx2, ry2 = irx * irx, iry * iry
     cmp = r"\le" if loop == "inclusive" else "<"
-    x0, y0 = region1_end(irx, iry, loop)
+    x0, y0 = region1_end(irx, iry, loop, tie, p0s)
     p1 = quarter(4 * ry2 - 4 * rx2 * iry + rx2)
     p2 = quarter(ry2 * (2 * x0 + 1) ** 2 + 4 * rx2 * (y0 - 1) ** 2 - 4 * rx2 * ry2)
+
+    def rounded(v: Number) -> str:
+        """``= v`` and, with ``p0 = rounded``, the integer it starts from."""
+        if p0s == "exact" or normalize(v) == int(v):
+            return fmt_short(v)
+        return f"{fmt_short(v)} \\to {round_half_up(v)} \\text{{ (rounded)}}"
+
     half = Fraction(2 * x0 + 1, 2)
     given = (
         worked("rx", irx, f"r_x = {irx}"),
@@ -115,9 +127,9 @@ def ellipse_solution(
         ),
         worked(
             "p1_0",
-            p1,
+            p1 if p0s == "exact" else round_half_up(p1),
             f"p1_0 = r_y^2 - r_x^2 \\cdot r_y + \\tfrac{{r_x^2}}{{4}} = {ry2} - {rx2} \\cdot {iry} + "
-            f"\\tfrac{{{rx2}}}{{4}} = {fmt_short(p1)}",
+            f"\\tfrac{{{rx2}}}{{4}} = {rounded(p1)}",
         ),
         worked(
             "region2_start",
@@ -127,18 +139,21 @@ def ellipse_solution(
         ),
         worked(
             "p2_0",
-            p2,
+            p2 if p0s == "exact" else round_half_up(p2),
             f"p2_0 = r_y^2(x_0 + \\tfrac12)^2 + r_x^2(y_0 - 1)^2 - r_x^2 r_y^2 = "
             f"{ry2} \\cdot {fmt_short(half)}^2 + {rx2} \\cdot {fmt_paren(y0 - 1)}^2 - "
-            f"{rx2} \\cdot {ry2} = {fmt_short(p2)}",
+            f"{rx2} \\cdot {ry2} = {rounded(p2)}",
         ),
     )
     if y0 == 0:  # region 1 ended on the x axis: region 2 has no steps, p2_0 is not used
         derived = derived[:-1]
+    lt1, gt2 = (r"\le", r"\ge") if tie == "keep" else ("<", ">")
     notes = [
-        "Region 1: $p1_k < 0 \\to (x+1, y)$, $p1_{k+1} = p1_k + 2r_y^2 x_{k+1} + r_y^2$; "
+        f"Region 1: $p1_k {lt1} 0 \\to (x+1, y)$, "
+        "$p1_{k+1} = p1_k + 2r_y^2 x_{k+1} + r_y^2$; "
         "else $(x+1, y-1)$, $p1_{k+1} = p1_k + 2r_y^2 x_{k+1} - 2r_x^2 y_{k+1} + r_y^2$.",
-        "Region 2: $p2_k > 0 \\to (x, y-1)$, $p2_{k+1} = p2_k - 2r_x^2 y_{k+1} + r_x^2$; "
+        f"Region 2: $p2_k {gt2} 0 \\to (x, y-1)$, "
+        "$p2_{k+1} = p2_k - 2r_x^2 y_{k+1} + r_x^2$; "
         "else $(x+1, y-1)$, $p2_{k+1} = p2_k + 2r_y^2 x_{k+1} - 2r_x^2 y_{k+1} + r_x^2$; "
         "until $y = 0$.",
         f"The start point $(0, {iry})$ is plotted before the first step.",
@@ -158,11 +173,11 @@ def ellipse_solution(
         derived = (*derived, theory.DERIVATION, *theory.ellipse_derivation(irx, iry))
 
     def steps() -> Iterator[Step]:
-        return midpoint_ellipse(irx, iry, loop)
+        return midpoint_ellipse(irx, iry, loop, tie, p0s)
 
     def points() -> Iterator[Pixel]:
         yield (0, iry)
-        for st in midpoint_ellipse(irx, iry, loop):
+        for st in midpoint_ellipse(irx, iry, loop, tie, p0s):
             yield st.pixel
 
     columns = (heading("region", r"\text{region}"), *_region_columns("p"))
@@ -179,7 +194,7 @@ def ellipse_solution(
         Table("Region 1 (slope magnitude below 1)", _region_columns("p1"), region1),
         Table("Region 2 (slope magnitude 1 or more)", _region_columns("p2"), region2),
         symmetry_table(points, images, ixc, iyc),
-        *((theory.ellipse_code(loop),) if pseudocode else ()),
+        *((theory.ellipse_code(loop, tie),) if pseudocode else ()),
     )
     return Solution(
         primitive="ellipse",

@@ -27,7 +27,7 @@ from ..core.numeric import (
     normalize,
     round_half_up,
 )
-from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, rule, worked
+from ..core.records import Move, Pixel, Quantity, Solution, Step, Table, heading, rule, worked
 from .errata import line_errata
 
 # --- Solutions: the exam answer around the steps -------------------------------------------
@@ -121,6 +121,7 @@ def line_solution(
     *,
     rounding: str | None = None,
     tie: str | None = None,
+    start: str | None = None,
     convention: str | None = None,
     layout: str = "textbook",
     derive: bool = False,
@@ -129,7 +130,8 @@ def line_solution(
 ) -> Solution:
     """The worked solution of a line with one of :data:`ALGORITHMS`.
 
-    ``rounding`` (dda, basic) and ``tie`` (bresenham) are the conventions
+    ``rounding`` (dda, basic), ``tie`` (bresenham) and ``start`` (bresenham, dda: ``"swap"``
+    to walk from the end with the smaller major coordinate, ``"given"`` from P1) are the conventions
     (:mod:`scanconv.algorithms.conventions`), ``convention`` a named preset; ``layout`` is
     ``"notes"`` (Bresenham: row k plots (x_k, y_k), row 0 the start pixel) or ``"textbook"``;
     ``derive`` adds the derivation, ``pseudocode`` the algorithm as a table; ``annotate``
@@ -154,7 +156,7 @@ def line_solution(
         )
     if layout not in ("notes", "textbook"):
         raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
-    knobs = resolve("line", algo, convention, {"rounding": rounding, "tie": tie})
+    knobs = resolve("line", algo, convention, {"rounding": rounding, "tie": tie, "start": start})
     if algo == "wu":  # anti-aliased: two pixels per step with their intensities, no conventions
         if derive or pseudocode:
             raise InputError(
@@ -165,9 +167,9 @@ def line_solution(
 
         return wu_solution(x1, y1, x2, y2)
     if algo == "bresenham":
-        sol = _bresenham_solution(x1, y1, x2, y2, knobs["tie"], layout)
+        sol = _bresenham_solution(x1, y1, x2, y2, knobs["tie"], layout, knobs["start"])
     elif algo == "dda":
-        sol = _dda_solution(x1, y1, x2, y2, knobs["rounding"])
+        sol = _dda_solution(x1, y1, x2, y2, knobs["rounding"], knobs["start"])
     else:
         sol = _basic_solution(x1, y1, x2, y2, knobs["rounding"])
     if annotate:
@@ -212,7 +214,8 @@ def _theory(
             )
         if code:
             swapped = (sx, sy) != (int(x1), int(y1))
-            tables.append(theory.bresenham_line_code(steep, sign, swapped, knobs["tie"]))
+            backward = swapped and knobs.get("start") == "given"
+            tables.append(theory.bresenham_line_code(steep, sign, swapped, knobs["tie"], backward))
     elif algo == "dda":
         if derive:
             sol.derived = (
@@ -221,7 +224,8 @@ def _theory(
                 *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2)),
             )
         if code:
-            tables.append(theory.dda_code(steep, sign, knobs["rounding"]))
+            swapped = knobs.get("start") == "swap" and (dy if steep else dx) < 0
+            tables.append(theory.dda_code(steep, sign, knobs["rounding"], swapped))
     else:
         if derive:
             sol.derived = (
@@ -235,7 +239,13 @@ def _theory(
 
 
 def _bresenham_solution(
-    x1: Number, y1: Number, x2: Number, y2: Number, tie: str = "step", layout: str = "textbook"
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    tie: str = "step",
+    layout: str = "textbook",
+    start: str = "swap",
 ) -> Solution:
     for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2")):
         if normalize(v) != int(v):
@@ -247,9 +257,19 @@ def _bresenham_solution(
     ix1, iy1, ix2, iy2 = int(x1), int(y1), int(x2), int(y2)
     sx, sy, ex, ey, steep, dmaj, dmin, sign, stay, move = orient(ix1, iy1, ix2, iy2)
     swapped = (sx, sy) != (ix1, iy1)
+    backward = swapped and start == "given"  # walk from P1, the major coordinate decreasing
+    if backward:
+        sx, sy, ex, ey = ix1, iy1, ix2, iy2
+        sign = -sign
+        stay, move = (
+            Move.from_delta(0, -1) if steep else Move.from_delta(-1, 0),
+            Move.from_delta(sign, -1) if steep else Move.from_delta(-1, sign),
+        )
+        swapped = False
     dx, dy = ex - sx, ey - sy  # after the swap, as the working is written
     maj, mnr = ("y", "x") if steep else ("x", "y")
     dmin_t = f"|\\Delta {mnr}|" if sign < 0 else f"\\Delta {mnr}"
+    dmaj_t = f"|\\Delta {maj}|" if backward else f"\\Delta {maj}"
     p0 = 2 * dmin - dmaj
     inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
     lt, ge = ("\\le", ">") if tie == "keep" else ("<", "\\ge")
@@ -258,7 +278,7 @@ def _bresenham_solution(
         _diff("y", sy, ey, "dy"),
         _slope(dx, dy),
         _major(dx, dy),
-        worked("p0", p0, f"p_0 = 2{dmin_t} - \\Delta {maj} = 2 \\cdot {dmin} - {dmaj} = {p0}"),
+        worked("p0", p0, f"p_0 = 2{dmin_t} - {dmaj_t} = 2 \\cdot {dmin} - {dmaj} = {p0}"),
         worked(
             "inc_keep",
             inc_keep,
@@ -267,7 +287,7 @@ def _bresenham_solution(
         worked(
             "inc_step",
             inc_step,
-            f"2{dmin_t} - 2\\Delta {maj} = 2 \\cdot {dmin} - 2 \\cdot {dmaj} = {inc_step} "
+            f"2{dmin_t} - 2{dmaj_t} = 2 \\cdot {dmin} - 2 \\cdot {dmaj} = {inc_step} "
             f"\\quad (\\text{{added when }} p_k {ge} 0)",
         ),
     ]
@@ -281,6 +301,11 @@ def _bresenham_solution(
             ),
         )
     notes = [f"Start at $({sx}, {sy})$, plotted before the first step."]
+    if backward:
+        notes.append(
+            f"Walked from $P_1$ as given, ${maj}$ decreasing by 1 each step (no swap); the "
+            "decisions are the swapped walk's, but a tie is now seen from the other end."
+        )
     if tie == "keep":
         notes.append(
             f"$p_k \\le 0$ chooses {stay}, $p_k > 0$ chooses {move}; a tie ($p_k = 0$) keeps "
@@ -299,12 +324,12 @@ def _bresenham_solution(
 
     def steps() -> Iterator[Step]:
         if layout == "notes":
-            return bresenham_notes(ix1, iy1, ix2, iy2, tie)
-        return bresenham(ix1, iy1, ix2, iy2, tie)
+            return bresenham_notes(ix1, iy1, ix2, iy2, tie, start)
+        return bresenham(ix1, iy1, ix2, iy2, tie, start)
 
     def pixels() -> Iterator[Pixel]:
         yield (sx, sy)
-        for s in bresenham(ix1, iy1, ix2, iy2, tie):
+        for s in bresenham(ix1, iy1, ix2, iy2, tie, start):
             yield s.pixel
 
     pixel_head = "(x_k, y_k)" if layout == "notes" else "(x_{k+1}, y_{k+1})"
@@ -331,9 +356,20 @@ def _bresenham_solution(
 
 
 def _dda_solution(
-    x1: Number, y1: Number, x2: Number, y2: Number, rounding: str = "half-up"
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    rounding: str = "half-up",
+    start: str = "given",
 ) -> Solution:
+    asked = (x1, y1, x2, y2)
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
+    steep = abs_value(dy) > abs_value(dx)
+    swapped = start == "swap" and (dy if steep else dx) < 0
+    if swapped:  # walk from the end with the smaller major coordinate
+        x1, y1, x2, y2 = x2, y2, x1, y1
+        dx, dy = -dx, -dy
     steps_n = dda_steps(x1, y1, x2, y2)
     xi, yi = dda_increments(x1, y1, x2, y2)
     longest = max(abs_value(dx), abs_value(dy))
@@ -360,6 +396,17 @@ def _dda_solution(
                     f"\\frac{{{fmt_short(d)}}}{{{steps_n}}} = " + _tex_value(inc),
                 )
             )
+    if swapped:  # said first, so that every line below uses the swapped names
+        maj = "y" if steep else "x"
+        derived.insert(
+            0,
+            rule(
+                "swap",
+                f"\\text{{swap the end points so that }} {maj} \\text{{ increases: }} "
+                f"(x_1, y_1) = ({fmt_short(x1)}, {fmt_short(y1)}), \\ "
+                f"(x_2, y_2) = ({fmt_short(x2)}, {fmt_short(y2)})",
+            ),
+        )
     notes = (
         "x_{k+1} = x_k + x_inc and y_{k+1} = y_k + y_inc, computed exactly;"
         + (
@@ -371,8 +418,8 @@ def _dda_solution(
     return Solution(
         primitive="line",
         algorithm="dda",
-        title=_title("Simple DDA line algorithm", x1, y1, x2, y2),
-        given=_given(x1, y1, x2, y2),
+        title=_title("Simple DDA line algorithm", *asked),
+        given=_given(*asked),
         derived=tuple(derived),
         columns=(
             heading("k", "k"),

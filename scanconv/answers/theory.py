@@ -41,26 +41,37 @@ def pseudocode(title: str, lines: list[str]) -> Table:
     )
 
 
-def bresenham_line_code(steep: bool, sign: int, swapped: bool, tie: str) -> Table:
-    """Bresenham's line for this input's octant."""
+def bresenham_line_code(
+    steep: bool, sign: int, swapped: bool, tie: str, backward: bool = False
+) -> Table:
+    """Bresenham's line for this input's octant (``backward``: walked from P1 as given, the
+    major coordinate decreasing, instead of ``swapped``)."""
     maj, mnr = ("y", "x") if steep else ("x", "y")
+    slope = sign
+    if backward:  # the minor step's sign as seen walking from P1
+        sign = -sign
     d_min = f"|d{mnr}|" if sign < 0 else f"d{mnr}"
+    d_maj = f"|d{maj}|" if backward else f"d{maj}"
     cmp = "<=" if tie == "keep" else "<"
     step = f"{mnr} = {mnr} - 1" if sign < 0 else f"{mnr} = {mnr} + 1"
     lines = [
-        *(["swap the end points so that " + maj + " increases"] if swapped else []),
-        f"d{maj} = {maj}2 - {maj}1;  "
+        *(
+            ["swap the end points so that " + maj + " increases"]
+            if swapped and not backward
+            else []
+        ),
+        (f"|d{maj}| = |{maj}2 - {maj}1|;  " if backward else f"d{maj} = {maj}2 - {maj}1;  ")
         + (f"|d{mnr}| = |{mnr}2 - {mnr}1|" if sign < 0 else f"d{mnr} = {mnr}2 - {mnr}1"),
-        f"p = 2*{d_min} - d{maj}",
+        f"p = 2*{d_min} - {d_maj}",
         "x = x1;  y = y1;  plot(x, y)",
-        f"repeat d{maj} times:",
-        f"    {maj} = {maj} + 1",
+        f"repeat {d_maj} times:",
+        f"    {maj} = {maj} - 1" if backward else f"    {maj} = {maj} + 1",
         f"    if p {cmp} 0:  p = p + 2*{d_min}",
-        f"    else:  {step};  p = p + 2*{d_min} - 2*d{maj}",
+        f"    else:  {step};  p = p + 2*{d_min} - 2*{d_maj}",
         "    plot(x, y)",
         "end repeat",
     ]
-    return pseudocode(_code_title("Bresenham's line", steep, sign), lines)
+    return pseudocode(_code_title("Bresenham's line", steep, slope), lines)
 
 
 def _code_title(name: str, steep: bool, sign: int) -> str:
@@ -69,10 +80,13 @@ def _code_title(name: str, steep: bool, sign: int) -> str:
     return f"Algorithm: {name} ({axis}, {slope})"
 
 
-def dda_code(steep: bool, sign: int, rounding: str) -> Table:
-    """The simple DDA for this input's major axis."""
+def dda_code(steep: bool, sign: int, rounding: str, swapped: bool = False) -> Table:
+    """The simple DDA for this input's major axis (``swapped``: the end points were swapped
+    so that the major coordinate increases)."""
     rnd = {"trunc": "trunc", "c-cast": "(int)(v + 0.5) of"}.get(rounding, f"round ({rounding})")
+    maj = "y" if steep else "x"
     lines = [
+        *([f"swap the end points so that {maj} increases"] if swapped else []),
         "dx = x2 - x1;  dy = y2 - y1",
         "steps = max(|dx|, |dy|)" + ("   (= |dy|: y is the major axis)" if steep else ""),
         "x_inc = dx / steps;  y_inc = dy / steps",
@@ -170,19 +184,20 @@ def circle_code(method: str, knobs: dict[str, str]) -> Table | None:
     return None
 
 
-def ellipse_code(loop: str) -> Table:
+def ellipse_code(loop: str, tie: str = "step") -> Table:
     cmp = "<=" if loop == "inclusive" else "<"
+    lt1, gt2 = ("<=", ">=") if tie == "keep" else ("<", ">")
     lines = [
         "x = 0;  y = ry;  p1 = ry^2 - rx^2*ry + rx^2/4",
         f"while 2*ry^2*x {cmp} 2*rx^2*y:          (region 1)",
         "    x = x + 1",
-        "    if p1 < 0:  p1 = p1 + 2*ry^2*x + ry^2",
+        f"    if p1 {lt1} 0:  p1 = p1 + 2*ry^2*x + ry^2",
         "    else:  y = y - 1;  p1 = p1 + 2*ry^2*x - 2*rx^2*y + ry^2",
         "    plot the 4 symmetric points of (x, y)",
         "p2 = ry^2*(x + 1/2)^2 + rx^2*(y - 1)^2 - rx^2*ry^2",
         "while y > 0:                              (region 2)",
         "    y = y - 1",
-        "    if p2 > 0:  p2 = p2 - 2*rx^2*y + rx^2",
+        f"    if p2 {gt2} 0:  p2 = p2 - 2*rx^2*y + rx^2",
         "    else:  x = x + 1;  p2 = p2 + 2*ry^2*x - 2*rx^2*y + rx^2",
         "    plot the 4 symmetric points of (x, y)",
     ]

@@ -7,7 +7,7 @@ from typing import Annotated
 
 from .. import _api as api
 from ..algorithms.choices import Layout
-from ..algorithms.circle_choices import P0, CircleMethod, Loop, Update
+from ..algorithms.circle_choices import P0, CircleMethod, EllipseP0, Loop, Update
 from ..core.records import Solution
 from .application import app
 from .command import answers
@@ -77,6 +77,15 @@ def ellipse(
     ry: Annotated[Fraction, num_arg("The semi-axis ry along y (a whole number).", "RY")],
     center: Center = None,
     loop: LoopOpt = None,
+    tie: TieOpt = None,
+    p0: Annotated[
+        EllipseP0 | None,
+        choice(
+            "--p0",
+            help="Each region's first p: exact (quarters) or rounded to the nearest integer, "
+            "as Hearn & Baker's code does.",
+        ),
+    ] = None,
     convention: ConventionOpt = None,
     derive: DeriveOpt = False,
     pseudocode: CodeOpt = False,
@@ -90,6 +99,8 @@ def ellipse(
         ry,
         center or (0, 0),
         loop=loop,
+        tie=tie,
+        p0=p0,
         convention=convention,
         derive=derive,
         pseudocode=pseudocode,

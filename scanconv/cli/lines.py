@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.choices import Convention, Layout, LineAlgorithm, Rounding, Tie
+from ..algorithms.choices import Convention, Layout, LineAlgorithm, Rounding, Start, Tie
 from ..core.records import Solution
 from .application import app
 from .command import answers
@@ -49,6 +49,14 @@ TieOpt = Annotated[
         "(if p <= 0 keep).",
     ),
 ]
+StartOpt = Annotated[
+    Start | None,
+    choice(
+        "--start",
+        help="Which point is plotted first: swap (the end with the smaller major coordinate; "
+        "Bresenham's default) or given (P1, stepping toward P2; the DDA's default).",
+    ),
+]
 
 
 @app.command(context_settings=NUMERIC_ARGS)
@@ -63,6 +71,7 @@ def line(
     ] = LineAlgorithm.bresenham,
     rounding: RoundingOpt = None,
     tie: TieOpt = None,
+    start: StartOpt = None,
     convention: ConventionOpt = None,
     layout: LayoutOpt = Layout.notes,
     derive: DeriveOpt = False,
@@ -80,6 +89,7 @@ def line(
         algo=algo,
         rounding=rounding,
         tie=tie,
+        start=start,
         convention=convention,
         layout=layout,
         derive=derive,
