@@ -311,19 +311,22 @@ def test_ellipse_exact_quarters_meet_no_tie_on_small_ellipses():
 
 
 def test_ellipse_rounded_p0_and_tie_by_hand():
-    # rx = 3, ry = 2: p1_0 = 4 - 18 + 9/4 = -11.75, rounded -12; E to (1, 2), p = -12 + 8 + 4
-    # = 0: a tie. step: SE to (2, 1), p = 0 + 16 - 18 + 4 = 2; keep: E to (2, 2), p = 20.
-    step = [(s.p, s.decision.value, s.pixel) for s in api.ellipse(3, 2, p0="rounded").steps()]
-    keep = [
-        (s.p, s.decision.value, s.pixel)
-        for s in api.ellipse(3, 2, p0="rounded", tie="keep").steps()
-    ]
-    assert step[:2] == [(-12, "E", (1, 2)), (0, "SE", (2, 1))]
-    assert keep[:2] == [(-12, "E", (1, 2)), (0, "E", (2, 2))]
+    # rx = 6, ry = 5, rounded as Hearn & Baker's code: p1_0 = 25 - 180 + 9 = -146, and
+    # int(-146 + 0.5) = int(-145.5) = -145 (C truncates toward zero). Region 1 ends at (5, 3);
+    # p2_0 = 25 * 5.5^2 + 36 * 2^2 - 900 = 0.25, int(0.75) = 0: a tie. step: SE to (6, 2);
+    # keep: S to (5, 2).
+    step = list(api.ellipse(6, 5, p0="rounded").steps())
+    keep = list(api.ellipse(6, 5, p0="rounded", tie="keep").steps())
+    assert step[0].p == -145
+    r2_step = [(s.p, s.decision.value, s.pixel) for s in step if s.extra[0] == 2]
+    r2_keep = [(s.p, s.decision.value, s.pixel) for s in keep if s.extra[0] == 2]
+    assert r2_step[0] == (0, "SE", (6, 2))
+    assert r2_keep[0] == (0, "S", (5, 2))
     import scanconv
 
-    text = scanconv.ellipse(3, 2, p0="rounded").to("plain")
-    assert "-11.75 -> -12 (rounded)" in text
+    text = scanconv.ellipse(6, 5, p0="rounded").to("plain")
+    assert "= 0.25 -> 0 (rounded)" in text
+    assert "= -146 -> -145 (rounded)" in text
 
 
 @given(st.integers(1, 30), st.integers(1, 30))
@@ -337,12 +340,14 @@ def test_ellipse_tie_changes_the_walk_only_from_its_first_tie(rx, ry):
         assert [s.pixel for s in step[:first]] == [s.pixel for s in keep[:first]]
 
 
-def test_hearn_baker_ellipse_example_is_the_same_exact_or_rounded():
-    """Hearn & Baker's example (rx = 8, ry = 6) has integer p values, so their rounding
-    changes nothing: p1 = -332, -224, -44, 208, -108, 288, 244; p2 = -23, 361, 297."""
+def test_hearn_baker_ellipse_example_is_exact_not_their_codes_rounding():
+    """Hearn & Baker's printed example (rx = 8, ry = 6) has p1 = -332, -224, -44, 208, -108,
+    288, 244 and p2 = -23, 361, 297: the exact values, which the preset prints. Their C code's
+    round(a) = int(a + 0.5) would start from int(-331.5) = -331 (``--p0 rounded``)."""
     hb = [s.p for s in api.ellipse(8, 6, convention="hearn-baker").steps()]
     assert hb == [-332, -224, -44, 208, -108, 288, 244, -23, 361, 297]
-    assert hb == [s.p for s in api.ellipse(8, 6).steps()]
+    code = [s.p for s in api.ellipse(8, 6, p0="rounded").steps()]
+    assert code == [-331, -223, -43, 209, -107, 289, 245, -22, 362, 298]
 
 
 def test_ellipse_p0_values_are_checked_per_method():

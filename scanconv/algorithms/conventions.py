@@ -130,7 +130,7 @@ KNOBS: dict[str, Knob] = {
             "1-r": "p0 = 1 - r, integers only",
             "5/4-r": "p0 = 5/4 - r, exact quarters",
             "exact": "p1_0 and p2_0 exact, in quarters",
-            "rounded": "p1_0 and p2_0 rounded to the nearest integer (half up), integers only",
+            "rounded": "p1_0 and p2_0 rounded as Hearn & Baker's code, int(p + 0.5), integers only",
         },
         "1-r",
         ("circle/midpoint", "ellipse/midpoint"),
@@ -177,7 +177,7 @@ PRESETS: dict[str, dict[str, dict[str, str]]] = {
         "line": {"rounding": "c-cast", "tie": "step"},
         "circle": {"rounding": "c-cast", "tie": "step", "p0": "1-r", "loop": "strict"}
         | {"update": "new"},
-        "ellipse": {"loop": "strict", "tie": "step", "p0": "rounded"},
+        "ellipse": {"loop": "strict", "tie": "step", "p0": "exact"},
     },
     "foley": {
         "line": {"rounding": "half-up", "tie": "keep"},

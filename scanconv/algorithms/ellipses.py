@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 from fractions import Fraction
 
-from ..core.numeric import Number, round_half_up
+from ..core.numeric import Number, round_c_cast
 from ..core.records import (
     Move,
     Pixel,
@@ -66,12 +66,12 @@ def midpoint_ellipse(
     ``loop="inclusive"`` runs region 1 while ``2ry²x <= 2rx²y`` (the ``<=`` some sources print).
     ``tie="keep"``: a decision parameter of exactly 0 keeps the minor coordinate instead (region
     1: ``p1_k <= 0`` chooses E; region 2: ``p2_k >= 0`` chooses S). ``p0="rounded"`` starts
-    each region from its p rounded to the nearest integer, half up, as Hearn & Baker's C code
-    rounds it (``ROUND(...)``); the increments are integers, so every p is then an integer
+    each region from its p rounded as Hearn & Baker's C code does (``round(a) = int(a + 0.5)``,
+    which truncates toward zero: -332 becomes -331); the increments are integers, so every p is then an integer
     and ties can occur (with the exact quarters they practically never do).
 
     >>> [s.p for s in midpoint_ellipse(3, 2, p0="rounded")]
-    [-12, 0, 2]
+    [-11, 1, 3]
     >>> [str(s.p) for s in midpoint_ellipse(3, 2)]
     ['-47/4', '1/4', '9/4']
 
@@ -144,13 +144,13 @@ needs the end of region 1 before the first line is printed, and finding it runs 
 
 
 def start4(p4: int, p0: str) -> int:
-    """``4p`` of a region's first p: as computed (``"exact"``), or with p rounded to the nearest integer,
-    ``floor(p + 1/2)`` (``"rounded"``).
+    """``4p`` of a region's first p: as computed (``"exact"``), or with p rounded as C's
+    ``(int)(p + 0.5)`` (``"rounded"``, truncating toward zero after adding 1/2).
 
     >>> start4(-47, "exact"), start4(-47, "rounded"), start4(-45, "rounded")
-    (-47, -48, -44)
+    (-47, -44, -40)
     """
-    return p4 if p0 == "exact" else 4 * round_half_up(Fraction(p4, 4))
+    return p4 if p0 == "exact" else 4 * round_c_cast(Fraction(p4, 4))
 
 
 def region1_end(

@@ -17,7 +17,7 @@ from ..algorithms.ellipses import (
     symmetric_pixels,
 )
 from ..core.checks import InputError, check_integer
-from ..core.numeric import Number, fmt_paren, fmt_short, normalize, round_half_up
+from ..core.numeric import Number, fmt_paren, fmt_short, round_c_cast
 from ..core.records import (
     Column,
     Pixel,
@@ -103,9 +103,9 @@ def ellipse_solution(
 
     def rounded(v: Number) -> str:
         """``= v`` and, with ``p0 = rounded``, the integer it starts from."""
-        if p0s == "exact" or normalize(v) == int(v):
+        if p0s == "exact" or round_c_cast(v) == v:
             return fmt_short(v)
-        return f"{fmt_short(v)} \\to {round_half_up(v)} \\text{{ (rounded)}}"
+        return f"{fmt_short(v)} \\to {round_c_cast(v)} \\text{{ (rounded)}}"
 
     half = Fraction(2 * x0 + 1, 2)
     given = (
@@ -127,7 +127,7 @@ def ellipse_solution(
         ),
         worked(
             "p1_0",
-            p1 if p0s == "exact" else round_half_up(p1),
+            p1 if p0s == "exact" else round_c_cast(p1),
             f"p1_0 = r_y^2 - r_x^2 \\cdot r_y + \\tfrac{{r_x^2}}{{4}} = {ry2} - {rx2} \\cdot {iry} + "
             f"\\tfrac{{{rx2}}}{{4}} = {rounded(p1)}",
         ),
@@ -139,7 +139,7 @@ def ellipse_solution(
         ),
         worked(
             "p2_0",
-            p2 if p0s == "exact" else round_half_up(p2),
+            p2 if p0s == "exact" else round_c_cast(p2),
             f"p2_0 = r_y^2(x_0 + \\tfrac12)^2 + r_x^2(y_0 - 1)^2 - r_x^2 r_y^2 = "
             f"{ry2} \\cdot {fmt_short(half)}^2 + {rx2} \\cdot {fmt_paren(y0 - 1)}^2 - "
             f"{rx2} \\cdot {ry2} = {rounded(p2)}",

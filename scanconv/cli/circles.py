@@ -82,8 +82,8 @@ def ellipse(
         EllipseP0 | None,
         choice(
             "--p0",
-            help="Each region's first p: exact (quarters) or rounded to the nearest integer, "
-            "as Hearn & Baker's code does.",
+            help="Each region's first p: exact (quarters) or rounded as Hearn & Baker's code does, "
+            "int(p + 0.5).",
         ),
     ] = None,
     convention: ConventionOpt = None,
