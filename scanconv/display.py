@@ -23,9 +23,7 @@ k,p,decision,x,y,p_next
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 from .core.records import Solution, step_getter
@@ -34,19 +32,23 @@ Recipe = tuple[str, tuple[Any, ...], tuple[tuple[str, Any], ...]]
 """How an answer was asked for: the API function's name, its positional and keyword arguments."""
 
 
-@dataclass(slots=True, repr=False)
 class Answer(Solution):
     """A :class:`~scanconv.core.records.Solution` with ways to show itself (see the module)."""
 
-    recipe: Recipe | None = None
+    __slots__ = ("recipe",)
+
+    recipe: Recipe | None
     """The API call that made it, so that it pickles (steps and pixels are generator
     factories, rebuilt by calling the API again: the algorithms are deterministic)."""
+
+    def __init__(self, *args: Any, recipe: Recipe | None = None, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.recipe = recipe
 
     @classmethod
     def of(cls, solution: Solution, recipe: Recipe | None = None) -> Answer:
         """``solution`` as an Answer (the same fields, nothing computed)."""
-        fields = {f.name: getattr(solution, f.name) for f in dataclasses.fields(Solution)}
-        return cls(**fields, recipe=recipe)
+        return cls(**solution.fields(), recipe=recipe)
 
     def __repr__(self) -> str:
         return f"<Answer {self.primitive}/{self.algorithm}: {self.title}>"

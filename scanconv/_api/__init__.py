@@ -21,8 +21,8 @@ The library modules are imported inside the functions: importing this module sta
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Sequence
-from decimal import Decimal
 from enum import Enum
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
@@ -39,6 +39,8 @@ from ..core.checks import InputError
 from ..core.numeric import Number, fmt_short, parse_number
 
 if TYPE_CHECKING:
+    from decimal import Decimal
+
     from ..algorithms.circle_choices import P0, CircleMethod, Loop, Update
     from ..algorithms.process_choices import (
         AAMethod,
@@ -90,8 +92,11 @@ __all__ = [
     "viewport",
 ]
 
-NumberLike = int | Fraction | float | Decimal | str
-"""What a number parameter takes."""
+if TYPE_CHECKING:
+    NumberLike = int | Fraction | float | Decimal | str
+else:  # decimal is imported only by callers that pass a Decimal (start-up time)
+    NumberLike = int | Fraction | float | str
+"""What a number parameter takes: an int, Fraction, float, decimal.Decimal or string."""
 
 PointLike = tuple[NumberLike, NumberLike]
 """A point ``(x, y)``."""
@@ -662,8 +667,11 @@ def _number(value: NumberLike, param: str) -> Number:
     :func:`~scanconv.core.numeric.parse_number` (a float as the decimal it prints as)."""
     if isinstance(value, int | Fraction) and not isinstance(value, bool):
         return value
-    if isinstance(value, float | Decimal):
-        text = repr(value) if isinstance(value, float) else str(value)
+    decimal = sys.modules.get("decimal")  # a Decimal exists only if its module is loaded
+    if isinstance(value, float):
+        text = repr(value)
+    elif decimal is not None and isinstance(value, decimal.Decimal):
+        text = str(value)
     elif isinstance(value, str):
         text = value
     else:

@@ -13,7 +13,6 @@ column headings, the plotted pixels) without ever formatting or printing anythin
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any, NamedTuple
 
@@ -195,14 +194,44 @@ Figure = PixelFigure | ShadedMatrix
 """What an answer asks :mod:`scanconv.render` to draw under it, besides its own pixel grid."""
 
 
-@dataclass(slots=True)
+def _no_steps() -> Iterator[Step]:
+    return iter(())
+
+
 class Solution:
     """A worked solution: everything a renderer needs, computed lazily and exactly.
 
     ``steps()`` and ``pixels()`` return fresh generators on every call: a renderer that needs
     both (table, pixel list and grid) simply calls them again instead of keeping a list, so
     streaming output stays in constant memory.
+
+    A plain class with slots rather than a dataclass: building a dataclass (and importing
+    :mod:`dataclasses`) costs about 2 ms of every run's start-up. Its fields are
+    :data:`FIELDS`, in the order of the constructor's parameters; two solutions are equal
+    when all their fields are.
     """
+
+    FIELDS = (
+        "primitive",
+        "algorithm",
+        "title",
+        "given",
+        "derived",
+        "columns",
+        "extra_keys",
+        "steps",
+        "pixels",
+        "bbox",
+        "notes",
+        "tables",
+        "show_steps",
+        "marks",
+        "marks_label",
+        "figures",
+        "geometry",
+        "data",
+    )
+    __slots__ = FIELDS
 
     primitive: str
     """``"line"``, ``"circle"``, ...: the JSON ``primitive`` field."""
@@ -214,42 +243,97 @@ class Solution:
     """The problem's input, as the answer states it."""
     derived: tuple[Quantity, ...]
     """Derived values with their working, in the order an answer writes them."""
-    columns: tuple[Column, ...] = ()
+    columns: tuple[Column, ...]
     """The step table's columns, in the notes' order; empty: the answer has no step table."""
-    extra_keys: tuple[str, ...] = ()
+    extra_keys: tuple[str, ...]
     """Names of the values in :attr:`Step.extra`, in order."""
-    steps: Callable[[], Iterator[Step]] = lambda: iter(())
+    steps: Callable[[], Iterator[Step]]
     """A fresh generator of the step records."""
-    pixels: Callable[[], Iterator[Pixel]] | None = None
+    pixels: Callable[[], Iterator[Pixel]] | None
     """A fresh generator of every plotted pixel, once each, in plotting order; ``None``: the
     answer plots nothing (no pixel list, no grid)."""
-    bbox: tuple[int, int, int, int] = (0, 0, 0, 0)
+    bbox: tuple[int, int, int, int]
     """``(xmin, ymin, xmax, ymax)`` of the plotted pixels, known without running the steps."""
-    notes: tuple[str, ...] = ()
+    notes: tuple[str, ...]
     """Remarks shown under the derivation (swapped end points, tie rules, ...)."""
-    tables: tuple[Table, ...] = ()
+    tables: tuple[Table, ...]
     """Secondary tables shown after the step table."""
-    show_steps: bool = True
+    show_steps: bool
     """``False``: the text formats leave the step table out because :attr:`tables` show the
     same steps split up (the ellipse's two regions); csv and json still carry every step."""
-    marks: tuple[Pixel, ...] = ()
+    marks: tuple[Pixel, ...]
     """Points drawn differently in the grid (control points, the centre)."""
-    marks_label: str | None = None
+    marks_label: str | None
     """What :attr:`marks` are, for the grid's legend (``"centre"``, ``"control point"``);
     ``None``: the renderer works it out from :attr:`geometry` (``"marked point"`` if it
     cannot)."""
-    figures: tuple[Figure, ...] = ()
+    figures: tuple[Figure, ...]
     """Extra figures drawn under the pixel grid (a shaded picture of an image matrix, the grids
     of a comparison): data only, drawn by :mod:`scanconv.render`."""
-    geometry: dict[str, Any] = field(default_factory=dict)
+    geometry: dict[str, Any]
     """The ideal primitive, for figures drawn over the pixels. Keys (all optional):
     ``line``: ``(x1, y1, x2, y2)``; ``circle``: ``(xc, yc, r)``; ``ellipse``:
     ``(xc, yc, rx, ry)``; ``polyline``: the sampled ideal curve as ``[(x, y), ...]`` floats;
     ``control``: control points ``[(x, y), ...]``; ``symmetry``: 1, 4 or 8 with ``center``:
     ``(xc, yc)``, saying how each step's point is mirrored into plotted pixels (with 4 or 8,
     ``Step.pixel`` is the point relative to the centre, as the circle tables print it)."""
-    data: dict[str, Any] = field(default_factory=dict)
+    data: dict[str, Any]
     """Extra JSON fields (exact values for tools), merged into the top-level object."""
+
+    def __init__(
+        self,
+        primitive: str,
+        algorithm: str,
+        title: str,
+        given: tuple[Quantity, ...],
+        derived: tuple[Quantity, ...],
+        columns: tuple[Column, ...] = (),
+        extra_keys: tuple[str, ...] = (),
+        steps: Callable[[], Iterator[Step]] = _no_steps,
+        pixels: Callable[[], Iterator[Pixel]] | None = None,
+        bbox: tuple[int, int, int, int] = (0, 0, 0, 0),
+        notes: tuple[str, ...] = (),
+        tables: tuple[Table, ...] = (),
+        show_steps: bool = True,
+        marks: tuple[Pixel, ...] = (),
+        marks_label: str | None = None,
+        figures: tuple[Figure, ...] = (),
+        geometry: dict[str, Any] | None = None,
+        data: dict[str, Any] | None = None,
+    ) -> None:
+        self.primitive = primitive
+        self.algorithm = algorithm
+        self.title = title
+        self.given = given
+        self.derived = derived
+        self.columns = columns
+        self.extra_keys = extra_keys
+        self.steps = steps
+        self.pixels = pixels
+        self.bbox = bbox
+        self.notes = notes
+        self.tables = tables
+        self.show_steps = show_steps
+        self.marks = marks
+        self.marks_label = marks_label
+        self.figures = figures
+        self.geometry = {} if geometry is None else geometry
+        self.data = {} if data is None else data
+
+    def fields(self) -> dict[str, Any]:
+        """Every field by name (what a subclass copies to wrap a solution)."""
+        return {name: getattr(self, name) for name in Solution.FIELDS}
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Solution):
+            return NotImplemented
+        return self.fields() == other.fields()
+
+    __hash__ = None  # type: ignore[assignment]  # mutable, as a dataclass with eq is
+
+    def __repr__(self) -> str:
+        inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in Solution.FIELDS)
+        return f"{type(self).__name__}({inner})"
 
     @property
     def has_p(self) -> bool:
