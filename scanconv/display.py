@@ -104,6 +104,13 @@ class Answer(Solution):
     def _repr_markdown_(self) -> str:
         return self.to("markdown")
 
+    def _repr_html_(self) -> str:
+        """The interactive step-through page as a notebook fragment: its own unique id, its
+        style scoped to it, its keys bound to it (see :func:`scanconv.render.html.notebook_html`)."""
+        from .render.html import notebook_html
+
+        return notebook_html(self)
+
 
 def answering(name: str) -> Callable[..., Answer]:
     """The API function ``name`` of :mod:`scanconv._api`, returning an :class:`Answer` that

@@ -668,3 +668,92 @@ VOCABULARY[("compare", "curves")] = Vocab(
     too_many=(("1", "2"), "unexpected extra argument"),
     wrong_type=(("--format", "docx"), "docx"),
 )
+VOCABULARY[("color",)] = Vocab(
+    valid=(("rgb", "51", "102", "153"), ("hsv", "210", "2/3", "0.6", "--to", "rgb", "cmy")),
+    numbers=((1, 2, 3), (1, 2, 3)),
+    out_of_range=(
+        (("rgb", "51", "102", "256"), "out of range"),
+        (("hsv", "360", "1", "1"), "out of range"),
+        (("rgb", "1", "2", "3", "--bits", "17"), "1..16"),
+    ),
+    too_few=(("rgb", "1", "2"), "takes 3 values"),
+    too_many=(("rgb", "1", "2", "3", "4"), "takes 3 values"),
+    wrong_type=(("rgb", "1.5", "2", "3"), "must be an integer"),
+    small={"--to": ("cmy", "hsv", "hsi", "grey", "rgb"), "--bits": ("1", "4", "8")},
+    positional=("rgb", "hsv", "0", "1", "1/2", "255", "120"),
+)
+
+# Teacher tools (issue 15): sheet takes a question file (golden/teach/*.questions), practice
+# numbers only.
+TEACH = Path(__file__).resolve().parent.parent / "golden" / "teach"
+QUESTIONS = str(TEACH / "short.questions")
+VOCABULARY[("sheet",)] = Vocab(
+    valid=((QUESTIONS,), (QUESTIONS, "--worksheet", "--format", "latex")),
+    numbers=((0,), (0,)),
+    out_of_range=(((str(TEACH / "out-of-range.questions"),), "out of range"),),
+    too_few=((), "Missing argument"),
+    too_many=((QUESTIONS, QUESTIONS), "unexpected extra argument"),
+    wrong_type=((str(TEACH),), "is a directory"),
+    small={"--format": ("markdown", "latex", "html", "json", "plain")},
+    positional=(QUESTIONS, "-", "missing.questions"),
+)
+VOCABULARY[("practice",)] = Vocab(
+    valid=(("--count", "2", "--seed", "1"), ("--topic", "line", "-n", "3", "--seed", "5")),
+    numbers=((1, 3), (3, 5)),
+    out_of_range=((("--count", "201", "--seed", "1"), "1 to 200"), (("--seed", "-1"), "--seed")),
+    too_few=(("--count",), "requires an argument"),
+    too_many=(("--seed", "1", "2"), "unexpected extra argument"),
+    wrong_type=(("--count", "2.5", "--seed", "1"), "not an integer"),
+    small={
+        "--count": ("1", "2", "3"),
+        "--seed": ("0", "1", "7"),
+        "--topic": ("line", "circle", "storage"),
+        "--difficulty": ("easy", "exam", "hard"),
+    },
+)
+ARGUMENTLESS.add(("theory",))  # a topic name, no number
+VOCABULARY[("theory",)] = Vocab(
+    valid=(("raster-display",), ("symmetry",)),
+    numbers=((), ()),
+    out_of_range=((("nope",), "unknown theory topic"),),
+    too_few=(("--format", "plain"), "Missing argument"),
+    too_many=(("symmetry", "dda"), "unexpected extra argument"),
+    wrong_type=(("3",), "unknown theory topic"),
+    positional=("raster-display", "dda", "symmetry", "nope", "3"),
+)
+
+# check (issue 15): a student's table, then -- and the question; the numbers are the question's.
+CHECK_DATA = Path(__file__).resolve().parent / "data" / "check"
+STUDENT = str(CHECK_DATA / "slip.csv")
+VOCABULARY[("check",)] = Vocab(
+    valid=(
+        (STUDENT, "--", "line", "2", "2", "10", "6"),
+        (str(CHECK_DATA / "old-x.md"), "--", "circle", "10", "--center", "1", "2"),
+    ),
+    numbers=((3, 4, 5, 6), (3, 5, 6)),
+    out_of_range=(
+        ((STUDENT, "--", "line", "0", "0", "1e10", "1"), "out of range"),
+        ((str(CHECK_DATA / "too-many-rows.csv"), "--", "line", "2", "2", "10", "6"), "rows"),
+    ),
+    too_few=((), "Missing argument"),
+    too_many=((STUDENT, "--", "line", "1", "2", "3", "4", "5"), "unexpected extra argument"),
+    wrong_type=((STUDENT, "--", "line", "2.5", "2", "3", "4"), "integer end points"),
+    small={"--format": ("markdown", "plain", "json", "csv")},
+    positional=(STUDENT, "--", "line", "circle", "0", "2", "10", "-3"),
+)
+ARGUMENTLESS.add(("exam",))  # a section name, no number
+VOCABULARY[("exam",)] = Vocab(
+    valid=(("--contents",), ("--section", "2", "--format", "plain")),
+    numbers=((), ()),
+    out_of_range=((("--section", "8"), "is not a section"),),
+    too_few=(("--section",), "requires an argument"),
+    too_many=(("extra",), "unexpected extra argument"),
+    wrong_type=(("--section", "nope"), "is not a section"),
+    small={"--section": ("1", "dda", "14", "circle")},
+)
+
+#: Commands that write a whole document (a sheet of answers, a practice set, the exam book)
+#: rather than one answer: they have no API function returning one Solution, no terminal
+#: layout of their own (``--format rich``) and no ``--brief``/``--explain`` (which shape one
+#: answer); their documents are tested by their own tests (pdflatex, pandoc, Chromium).
+DOCUMENTS = {("sheet",), ("practice",), ("exam",)}

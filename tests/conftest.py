@@ -20,7 +20,7 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 #: Whole files that are slow (large-input sweeps, subprocess-heavy) or need external programs.
 SLOW_FILES = {"test_raster.py", "test_limits.py", "test_fuzz.py", "test_golden_flag.py"}
-EXTERNAL_FILES = {"test_documents.py"}
+EXTERNAL_FILES = {"test_documents.py", "test_browser.py"}
 #: Single slow tests elsewhere: radius sweeps and huge inputs.
 SLOW_TESTS = {
     "test_midpoint_equals_bresenham_and_the_nearest_pixel_definition",

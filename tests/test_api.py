@@ -9,6 +9,7 @@ at the end.
 from __future__ import annotations
 
 from fractions import Fraction
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -17,8 +18,10 @@ from scanconv import _api
 from scanconv.core.checks import InputError
 from scanconv.render import Format, Options, render
 
-from .cli_vocabulary import commands
+from .cli_vocabulary import DOCUMENTS, commands
 from .helpers import run
+
+STUDENT = str(Path(__file__).resolve().parent / "data" / "check" / "slip.csv")
 
 P4 = [(0, 0), (1, 2), (3, 3), (4, 0)]
 P5 = [*P4, (5, 2)]
@@ -290,6 +293,34 @@ CASES += [
 ]
 
 
+# Colour conversions and the theory answers (issue 22).
+CASES += [
+    (
+        ("color",),
+        ("rgb", "51", "102", "153", "--to", "cmy", "hsv", "hsi"),
+        "color",
+        ("rgb", 51, 102, 153),
+        {"to": ["cmy", "hsv", "hsi"]},
+    ),
+    (
+        ("color",),
+        ("hsv", "210", "2/3", "0.6", "--to", "rgb"),
+        "color",
+        ("hsv", 210, "2/3", 0.6),
+        {"to": "rgb"},
+    ),
+    (("theory",), ("symmetry",), "theory", ("symmetry",), {}),
+    # issue 15: marking a student's table (the question as scanconv's own arguments)
+    (
+        ("check",),
+        (STUDENT, "--", "line", "2", "2", "10", "6"),
+        "check",
+        (STUDENT, "line 2 2 10 6"),
+        {},
+    ),
+]
+
+
 def _json(solution: Any) -> str:
     chunks = render(solution, Format.json, Options())
     return "".join(c for c in chunks if isinstance(c, str))
@@ -307,7 +338,7 @@ def test_the_api_and_the_cli_give_the_same_answer(path, argv, name, args, kwargs
 
 
 def test_every_command_and_every_function_has_a_case():
-    paths = {path for path, _ in commands()}
+    paths = {path for path, _ in commands()} - DOCUMENTS
     assert paths == {path for path, *_ in CASES}
     functions = {n for n in _api.__all__ if n[0].islower()}
     assert functions == {name for _, _, name, _, _ in CASES}

@@ -61,7 +61,7 @@ def test_writes_the_file_complete_and_leaves_nothing_else(path, option, tmp_path
     assert r.code == 0, r.err
     data = target.read_bytes()
     if option == "--output":
-        assert r.out == "" and data.startswith(b"## ")
+        assert r.out == "" and data.startswith((b"## ", b"# "))  # an answer, or a sheet's title
     else:
         assert r.out.startswith("## ")  # the answer still goes to stdout
         assert data.startswith(b"\x89PNG" if option == "--png" else (b"<?xml", b"<svg"))
@@ -198,7 +198,7 @@ def test_a_signal_while_writing_leaves_the_old_file_whole(sig, status, tmp_path)
             "line",
             "0",
             "0",
-            "100000000",
+            "1999999",
             "1",
             "-f",
             "csv",

@@ -17,6 +17,7 @@ from __future__ import annotations
 import contextlib
 import os
 import re
+import time
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -28,9 +29,32 @@ from hypothesis import strategies as st
 from .cli_vocabulary import VOCABULARY, Vocab, choices, commands, file_options, options
 from .helpers import run
 
-COMMANDS = [(path, command) for path, command in commands() if path in VOCABULARY]
+COMMANDS = commands()  # every registered command, including those added since
 EXAMPLES = int(os.environ.get("SCANCONV_FUZZ_EXAMPLES", "300"))
-PER_COMMAND = max(1, EXAMPLES // max(1, len(COMMANDS)))
+MIN_PER_COMMAND = 30
+"""The budget: at least this many examples for each command, however many there are. With
+the boundary values below, 30 examples catch a validator fault injected into any one command
+(see ``test_every_command_is_fuzzed_from_its_vocabulary``)."""
+PER_COMMAND = max(MIN_PER_COMMAND, EXAMPLES // max(1, len(COMMANDS)))
+SECONDS_PER_EXAMPLE = 30.0
+"""A fuzzed run is small by construction; one that takes longer has escaped a work budget."""
+
+#: A command the vocabulary does not know yet: fuzzed from its options and junk alone.
+UNKNOWN = Vocab(
+    valid=((),),
+    numbers=((),),
+    out_of_range=(),
+    too_few=((), ""),
+    too_many=((), ""),
+    wrong_type=((), ""),
+)
+
+#: Values at the edges every validator draws: zero, one, signs, halves, the magnitude limit.
+BOUNDARY = (
+    *("0", "1", "-1", "2", "-2", "3", "1/2", "-1/2", "0.5", "1e-9", "-0", "0/1"),
+    *("1000000000", "-1000000000", "1000000001", "999999999.5", "4096", "4097", "100001"),
+    *("16777216", "16777217", "24", "25", "100", "101", "10000", "10001", "2000", "2001"),
+)
 
 #: Junk that means something to a parser: dashes, non-finite and out-of-range numbers, unicode
 #: look-alikes, separators, option-looking tokens.
@@ -93,10 +117,19 @@ def _piece(command: Any, vocab: Vocab) -> st.SearchStrategy[list[str]]:
 
 @st.composite
 def _argv(draw: Any, command: Any, vocab: Vocab) -> list[str]:
-    argv = list(draw(st.sampled_from(vocab.valid)))
+    which = draw(st.integers(0, len(vocab.valid) - 1))
+    argv = list(vocab.valid[which])
+    numbers = [
+        i for i in (vocab.numbers[which] if which < len(vocab.numbers) else ()) if i < len(argv)
+    ]
     for _ in range(draw(st.integers(0, 4))):
-        action = draw(st.sampled_from(("insert", "replace", "drop", "append")))
-        if action in ("insert", "append") or not argv:
+        action = draw(st.sampled_from(("insert", "replace", "drop", "append", "edge", "edge")))
+        live = [i for i in numbers if i < len(argv)]  # (drops may have shortened argv)
+        if action == "edge" and live:  # a number of a valid call at a validator's edge
+            argv[draw(st.sampled_from(live))] = draw(st.sampled_from(BOUNDARY))
+        elif action == "edge":
+            continue
+        elif action in ("insert", "append") or not argv:
             where = len(argv) if action == "append" else draw(st.integers(0, len(argv)))
             argv[where:where] = draw(_piece(command, vocab))
         elif action == "replace":
@@ -139,10 +172,18 @@ def _inside(directory: Path) -> Iterator[None]:
         os.chdir(old)
 
 
+def test_every_command_is_fuzzed_from_its_vocabulary():
+    """A command added without an entry in tests/cli_vocabulary.py is still fuzzed (from its
+    options and junk), but only its vocabulary's valid calls reach its validators' edges."""
+    missing = [" ".join(path) for path, _ in COMMANDS if path not in VOCABULARY]
+    assert not missing, f"add these commands to tests/cli_vocabulary.py VOCABULARY: {missing}"
+    assert {path for path, _ in COMMANDS} >= set(VOCABULARY) - {("check", "batch")}
+
+
 @pytest.mark.parametrize("path", [p for p, _ in COMMANDS], ids=" ".join)
 def test_random_argument_vectors_never_escape_main(path, tmp_path_factory):
     command = dict(COMMANDS)[path]
-    vocab = VOCABULARY[path]
+    vocab = VOCABULARY.get(path, UNKNOWN)
     files = set(file_options(command))
     directory = tmp_path_factory.mktemp("fuzz")
 
@@ -154,8 +195,11 @@ def test_random_argument_vectors_never_escape_main(path, tmp_path_factory):
     @given(argv=_argv(command, vocab), tag=st.integers(0, 2))
     def check(argv: list[str], tag: int) -> None:
         argv = _place_files(argv, files, directory, tag)
+        start = time.perf_counter()
         with _inside(directory):
             r = run(*path, *argv)  # an exception escaping main fails the test here
+        elapsed = time.perf_counter() - start
+        assert elapsed < SECONDS_PER_EXAMPLE, (argv, f"{elapsed:.1f} s")
         assert "Traceback" not in r.err, (argv, r.err)
         assert r.code in (0, 1, 2), (argv, r.code, r.err)
         if r.code in (1, 2):
@@ -164,6 +208,51 @@ def test_random_argument_vectors_never_escape_main(path, tmp_path_factory):
             assert r.out == "", (argv, r.out[:300], r.err)
 
     check()
+
+
+#: The small edges of the edge sweep: a valid call stays quick with any of them in any slot.
+EDGES = ("0", "-1", "1", "2", "1/2", "-1/2", "0.5", "7", "16", "101", "-0")
+MAX_SWEEP = 200
+"""The sweep's budget per command: at most this many runs (a seeded sample if there are more)."""
+
+
+def _sweep(path: tuple[str, ...]) -> list[list[str]]:
+    import random
+
+    vocab = VOCABULARY.get(path)
+    if vocab is None:
+        return []
+    argvs = [
+        [*valid[:slot], edge, *valid[slot + 1 :]]
+        for valid, slots in zip(vocab.valid, vocab.numbers, strict=False)
+        for slot in slots
+        if slot < len(valid)
+        for edge in EDGES
+        if edge != valid[slot]
+    ]
+    if len(argvs) > MAX_SWEEP:
+        argvs = random.Random(" ".join(path)).sample(argvs, MAX_SWEEP)
+    return argvs
+
+
+@pytest.mark.parametrize("path", [p for p, _ in COMMANDS], ids=" ".join)
+def test_each_number_of_a_valid_call_at_each_edge_never_escapes_main(path, tmp_path):
+    """Every number slot of every valid call, one at a time, at each small edge: what reaches
+    a command's validators without junk around it. An exception a validator lets escape (an
+    ``IndexError`` for an index one beyond the points, a ``ZeroDivisionError`` for a zero
+    step) fails here."""
+    for argv in _sweep(path):
+        start = time.perf_counter()
+        with _inside(tmp_path):
+            r = run(*path, *argv)
+        elapsed = time.perf_counter() - start
+        assert elapsed < SECONDS_PER_EXAMPLE, (argv, f"{elapsed:.1f} s")
+        assert "Traceback" not in r.err, (argv, r.err)
+        assert r.code in (0, 1, 2), (argv, r.code, r.err)
+        if r.code in (1, 2):
+            assert r.err.startswith("scanconv: error: ") and r.err.count("\n") == 1, (argv, r.err)
+        if r.code == 2:
+            assert r.out == "", (argv, r.out[:300], r.err)
 
 
 NAMES = sorted({part for path, _ in COMMANDS for part in path})

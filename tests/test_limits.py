@@ -17,6 +17,7 @@ import resource
 import select
 import subprocess
 import sys
+import tempfile
 import time
 import tracemalloc
 from fractions import Fraction
@@ -35,14 +36,36 @@ DOC = (ROOT / "docs" / "limits.md").read_text(encoding="utf-8")
 ROW = re.compile(r"^\| [^|]+ \| `([^`]+)` \| `([\w.]+)\.(\w+)` \|", re.M)
 DOCUMENTED = {f"{m}.{n}": value for value, m, n in ROW.findall(DOC)}
 
-#: Constants whose names look like limits but bound no input.
-NOT_INPUT_LIMITS = {"algorithms.raster._INT64_MAX"}
+#: Constants whose names look like limits but bound no input: the HTML page's display caps
+#: (how much of a long answer the page draws and steps through; the page says when it shows
+#: part, and docs/html.md lists them).
+NOT_INPUT_LIMITS = {
+    "algorithms.raster._INT64_MAX",
+    "render.html.MAX_PIXEL_LIST",
+    "render.html.MAX_TABLE_CELLS",
+    "render.html.MAX_TABLE_COLUMNS",
+    "render.stepgrid.MAX_FIGURE_CELLS",
+    "render.stepper.MAX_PIXELS",
+    "render.stepper.MAX_STEPS",
+    "render.stepper.MAX_TABLE_ROWS",
+}
 
+SHEETS = ROOT / "tests" / "data" / "sheet"  # question files beyond the sheet's limits
+BIG_SHEET = Path(tempfile.gettempdir()) / "scanconv-test-sheet-over-1e6-bytes.txt"
+if not BIG_SHEET.exists() or BIG_SHEET.stat().st_size <= 10**6:
+    BIG_SHEET.write_text("# a comment line to pad the file\n" * 31_300, encoding="utf-8")
+
+CHECK = ROOT / "tests" / "data" / "check"  # student tables for scanconv check
 POINTS_101 = [str(i % 7) for i in range(202)]
 POINTS_12 = [str(i % 5) for i in range(24)]
 
 #: For each limit: command lines just beyond it, with a word the one-line refusal must contain.
 BEYOND: dict[str, list[tuple[list[str], str]]] = {
+    "answers.color.MAX_BITS": [(["color", "rgb", "1", "2", "3", "--bits", "17"], "1..16")],
+    "answers.practice.MAX_COUNT": [(["practice", "--count", "201", "--seed", "1"], "200")],
+    "cli.sheet.MAX_FILE_BYTES": [(["sheet", str(BIG_SHEET)], "1,000,000 bytes")],
+    "cli.sheet.MAX_QUESTIONS": [(["sheet", str(SHEETS / "too-many-questions.txt")], "1000")],
+    "cli.sheet.MAX_ROWS": [(["sheet", str(SHEETS / "too-long-answer.txt")], "10,000")],
     "core.numeric.COORD_LIMIT": [
         (["line", "0", "0", "1000000001", "0"], "1e+09"),
         (["circle", "1000000001"], "1e+09"),
@@ -161,6 +184,16 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "answers.transform.MAX_TRANSFORMS": [
         (["transform", "0", "0", *["--translate", "1", "1"] * 21], "at most 20 transformations"),
     ],
+    # scanconv check (issue 15): a student's file, and the question it is marked against
+    "core.student_table.MAX_TABLE_BYTES": [
+        (["check", str(CHECK / "too-large.csv"), "--", "line", "2", "2", "10", "6"], "bytes")
+    ],
+    "core.student_table.MAX_TABLE_ROWS": [
+        (["check", str(CHECK / "too-many-rows.csv"), "--", "line", "2", "2", "10", "6"], "5000")
+    ],
+    "answers.marking.MAX_QUESTION_ROWS": [
+        (["check", str(CHECK / "slip.csv"), "--", "line", "0", "0", "10001", "0"], "10000")
+    ],
     "answers.clip_polygon.MAX_VERTICES": [
         (
             ["clip", "polygon", *POINTS_101, "--window", "0", "0", "5", "5"],
@@ -239,9 +272,10 @@ def test_just_beyond_the_limit_is_refused_at_once(name, args, word, monkeypatch,
     def allocation_reached(*a, **k):
         raise AssertionError("numpy allocated before the input was refused")
 
-    # A parametric curve's pixel path is known only from its samples: evaluating them (in
-    # chunks of 4096) is the work that finds it; the pixels and the figure are never reached.
-    if not (name == "algorithms.curve_limits.MAX_CURVE_PIXELS" and args[0] == "parametric"):
+    # A parametric curve's pixel path is known only from its samples: one vectorised float64
+    # pass over them (algorithms.parametric.check_float_path) runs before any exact work, so
+    # numpy allocates the samples' arrays; the pixels and the figure are never reached.
+    if args[0] != "parametric":
         for fn in ALLOCATORS:
             monkeypatch.setattr(np, fn, allocation_reached)
     tracemalloc.start()
@@ -326,6 +360,8 @@ LARGEST = [
     ["continuity", *POINTS_100[:100], ":", *POINTS_100[100:], "-n", "999", "-f", "json"],
     ["parametric", "circle", "--radius", MAX_COORD, "-n", "100000", "-f", "csv"],
     ["parametric", "custom", "--x", "t", "--y", "t", "-n", "100000", "-f", "csv"],
+    ["check", str(CHECK / "slip.csv"), "--", "line", "0", "0", "9999", "1", "-f", "csv"],
+    ["check", str(CHECK / "slip.csv"), "--", "circle", MAX_COORD, "-f", "csv"],
 ]
 
 
@@ -355,3 +391,21 @@ def test_the_largest_accepted_input_answers_at_once_in_bounded_memory(args):
         assert first == b"" and stderr.count("\n") == 1, stderr
         return
     assert first, f"no output within 10 s (exit {proc.returncode}): {stderr[-500:]}"
+
+
+# --- the per-format work budgets ----------------------------------------------------------------
+
+BUDGET_ROW = re.compile(r"^\| (\w+) \| `([^`]+)` \| (?:`([^`]+)`|none) \|", re.M)
+
+
+def test_the_per_format_budgets_are_the_constants():
+    from scanconv.render import Format
+    from scanconv.render.budget import MATRIX_CELLS, TABLE_ROWS
+
+    section = DOC.split("## Work budgets of the output formats", 1)[1].split("\n## ", 1)[0]
+    rows = {fmt: (cells, table) for fmt, cells, table in BUDGET_ROW.findall(section)}
+    assert set(rows) == {f.value for f in MATRIX_CELLS}, rows
+    for fmt, (cells, table) in rows.items():
+        assert parse_exact(cells) == MATRIX_CELLS[Format(fmt)], fmt
+        documented_rows = parse_exact(table.replace("_", "")) if table else None
+        assert documented_rows == TABLE_ROWS.get(Format(fmt)), fmt

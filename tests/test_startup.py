@@ -21,7 +21,7 @@ PROBE = """
 import sys
 from scanconv.cli import main
 code = main({args!r})
-heavy = {{"numpy", "rich", "tabulate", "pydantic"}}
+heavy = {{"numpy", "rich", "tabulate", "pydantic", "latex2mathml"}}
 loaded = sorted({{m.split(".")[0] for m in sys.modules}} & heavy)
 print("LOADED", ",".join(loaded), code, file=sys.stderr)
 """
@@ -51,6 +51,11 @@ def test_text_formats_load_no_numpy_rich_tabulate_or_pydantic(fmt):
 def test_only_markdown_loads_tabulate():
     """tabulate pads the Markdown tables; its import (importlib.metadata) is paid there only."""
     assert loaded_after("line", "2", "2", "10", "6", "--format", "markdown") == {"tabulate"}
+
+
+def test_only_html_loads_latex2mathml():
+    """latex2mathml (about 55 ms: importlib.metadata) is imported by the html format only."""
+    assert loaded_after("line", "2", "2", "10", "6", "--format", "html") == {"latex2mathml"}
 
 
 def test_rich_format_loads_rich():

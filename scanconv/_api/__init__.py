@@ -1077,8 +1077,14 @@ def antialias_polygon(
 
 
 #: API functions defined in this package's submodules, by name -> submodule; loaded on first
-#: use (start-up time). One line per function, grouped by submodule.
-SUBMODULE_OF: dict[str, str] = {}
+#: use (start-up time). One line per function, grouped by submodule. A submodule is never named
+#: after a function it holds: importing ``scanconv._api.color`` would bind the module, not the
+#: function, to ``_api.color`` (hence ``color_theory`` and ``marking``).
+SUBMODULE_OF: dict[str, str] = {
+    "color": "color_theory",
+    "check": "marking",
+    "theory": "color_theory",
+}
 
 __all__ += sorted(SUBMODULE_OF)
 

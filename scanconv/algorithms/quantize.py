@@ -4,6 +4,7 @@ value (:class:`Quantizer`), and the smallest integer type that holds the levels.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING
@@ -155,6 +156,44 @@ class Quantizer:
             normalize(self.lo + k * Fraction(self.step)),
             normalize(self.lo + (k + 1) * Fraction(self.step)),
         )
+
+    def cells(self) -> Iterator[tuple[Number, Number, Number]]:
+        """``(*interval(k), reconstruction(k))`` of every level ``k = 0 .. L - 1``, in order.
+
+        The same exact values as :meth:`interval` and :meth:`reconstruction`, computed with
+        integers over one common denominator (a table of 2^24 levels builds no fraction for
+        an integral value).
+
+        >>> list(Quantizer.make(0, 255, 4).cells())
+        [(0, 63, 32), (64, 127, 96), (128, 191, 160), (192, 255, 224)]
+        >>> list(Quantizer.make(0, 1, 2, integer=False).cells())
+        [(0, Fraction(1, 2), Fraction(1, 4)), (Fraction(1, 2), 1, Fraction(3, 4))]
+        """
+        L = self.levels
+        lo, width = Fraction(self.lo), Fraction(self.width)
+        # every value is lo + m·W/(2L) for an integer m: over D = 2L·den(lo)·den(W) it is an
+        # integer numerator P + m·S
+        D = 2 * L * lo.denominator * width.denominator
+        P = lo.numerator * (D // lo.denominator)
+        S = width.numerator * (D // width.denominator) // (2 * L)
+        half = 1 if self.recon == "midpoint" else 0
+
+        def exact(n: int) -> Number:
+            q, r = divmod(n, D)
+            return q if r == 0 else Fraction(n, D)
+
+        if self.integer:
+            first, W = int(self.lo), int(self.width)
+            for k in range(L):
+                last = int(self.lo) + -(-(k + 1) * W // L) - 1
+                yield first, last, exact(P + (2 * k + half) * S)
+                first = last + 1
+        else:
+            start = exact(P)
+            for k in range(L):
+                end = exact(P + 2 * (k + 1) * S)
+                yield start, end, exact(P + (2 * k + half) * S)
+                start = end
 
     def reconstruction(self, k: int) -> Number:
         """The value level ``k`` stands for (the midpoint or lower end of its cell).

@@ -12,10 +12,10 @@ import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..core.checks import InputError, check_positive
-from ..core.numeric import Number, fmt, fmt_short
+from ..core.numeric import Number, fmt, fmt_short, normalize
 from .image_limits import check_cells, check_levels
 from .quantize import Quantizer, level_dtype
 
@@ -24,6 +24,17 @@ if TYPE_CHECKING:
 
 BLOCK_SAMPLES = 1 << 20
 """Samples of f evaluated at once (8 MiB of float64 per temporary array)."""
+
+EXACT_CHECK_WORK = 2 * 10**6
+"""Most exact work spent on the cells whose float64 level could be wrong: cells checked ×
+the size of f (:attr:`~scanconv.core.expr.Expr.size`). About 2 µs an operation: a second or two
+at most. A matrix with more such cells keeps its float64 levels, and says so
+(:attr:`Sampled.unchecked`)."""
+
+RELATIVE_ERROR = 1e-9
+"""How far (relative to the largest |f|) a float64 sample of f may be from the exact value;
+a cell whose level could change within it is recomputed exactly. float64 carries about 16
+digits, so this leaves 7 for the rounding of the formula's own operations."""
 
 ORIGINS = ("bottom-left", "top-left")
 """Where row 0 of a sampled image lies: y up (the default) or y down (screen addressing)."""
@@ -44,10 +55,10 @@ class Sampled:
     """The sample y of each row, top to bottom."""
     quantizer: Quantizer | None
     """The quantizer of the f range; ``None`` when f is constant (every sample level 0)."""
-    f_min: float
-    """The smallest sample of f."""
-    f_max: float
-    """The largest sample of f."""
+    f_min: Number | float
+    """The smallest sample of f (exact when f and the domain are rational)."""
+    f_max: Number | float
+    """The largest sample of f (exact when f and the domain are rational)."""
     clipped: int
     """Samples outside a given range, clamped to level 0 or L - 1."""
     expr: str
@@ -60,6 +71,12 @@ class Sampled:
     """``bottom-left`` (y up) or ``top-left`` (y down)."""
     L: int
     """The number of levels."""
+    checked: int = 0
+    """Cells whose float64 level lay within rounding error of a level boundary (or whose
+    value was near f's minimum or maximum), recomputed exactly."""
+    unchecked: int = 0
+    """Cells near a boundary left in float64 because checking them exactly was beyond
+    :data:`EXACT_CHECK_WORK` (0 when every level is exact or f is not rational)."""
 
 
 def _shown(v: Number | float) -> str:
@@ -153,11 +170,16 @@ def sample_levels(
     lo_f, hi_f = math.inf, -math.inf
     for _, block in blocks():
         lo_f, hi_f = min(lo_f, float(block.min())), max(hi_f, float(block.max()))
+    exact = _Exact.of(f, (x0, x1, y0, y1), (M, N), origin, value_range, lo_f, hi_f)
+    f_min: Number | float = lo_f
+    f_max: Number | float = hi_f
+    if exact is not None:
+        f_min, f_max = exact.extremes(blocks(), lo_f, hi_f)
     out = np.zeros((M, N), dtype=level_dtype(L))
     if value_range is not None:
         q: Quantizer | None = Quantizer.make(*value_range, L, integer=False)
-    elif hi_f > lo_f:
-        q = Quantizer.make(lo_f, hi_f, L, integer=False)
+    elif f_max > f_min:
+        q = Quantizer.make(f_min, f_max, L, integer=False)
     else:
         q = None
     clipped = 0
@@ -167,17 +189,123 @@ def sample_levels(
             if value_range is not None:
                 clipped += int(np.count_nonzero((block < lo) | (block > hi)))
             out[start : start + block.shape[0]] = q.levels_of(block)
+            if exact is not None:
+                exact.collect_near(start, block, q)
+        if exact is not None:
+            clipped += exact.fix_levels(out, q, value_range is not None)
     return Sampled(
         levels=out,
         x=xs,
         y=ys,
         quantizer=q,
-        f_min=lo_f,
-        f_max=hi_f,
+        f_min=f_min,
+        f_max=f_max,
         clipped=clipped,
         expr=expr,
         domain=(x0, x1, y0, y1),
         range_given=value_range is not None,
         origin=origin,
         L=L,
+        checked=0 if exact is None else exact.checked,
+        unchecked=0 if exact is None else exact.unchecked,
     )
+
+
+class _Exact:
+    """The exact recomputation of the cells whose float64 level is in doubt.
+
+    f is evaluated in float64 over the whole grid (numpy, fast); where f is rational and the
+    domain exact, every cell whose float value lies within :data:`RELATIVE_ERROR` of a level
+    boundary, of the minimum or of the maximum is evaluated again exactly (``Expr.exact``) and
+    its level taken from the exact value, so the matrix is what exact arithmetic gives, at
+    the cost of a few exact evaluations (none for most formulas).
+    """
+
+    def __init__(
+        self, f: Any, x0: Number, dx: Fraction, yt: Number, dy: Fraction, tol: float, cap: int
+    ) -> None:
+        self.f, self.x0, self.dx, self.yt, self.dy = f, x0, dx, yt, dy
+        self.tol, self.cap = tol, cap
+        self.near: list[tuple[np.ndarray, np.ndarray]] = []
+        self.count = 0
+        self.checked = 0
+        self.unchecked = 0
+
+    @classmethod
+    def of(
+        cls,
+        f: Any,
+        domain: Domain,
+        shape: tuple[int, int],
+        origin: str,
+        value_range: tuple[Number | float, Number | float] | None,
+        lo_f: float,
+        hi_f: float,
+    ) -> _Exact | None:
+        if not f.rational or any(isinstance(v, float) for v in domain) or lo_f == hi_f:
+            return None  # (a constant f has level 0 everywhere: nothing to check)
+        if value_range is not None and any(isinstance(v, float) for v in value_range):
+            return None
+        x0, x1, y0, y1 = (Fraction(v) for v in domain)  # exact: no float among them
+        M, N = shape
+        dx = (x1 - x0) / (N - 1) if N > 1 else Fraction(0)
+        dy = (y1 - y0) / (M - 1) if M > 1 else Fraction(0)
+        yt, dy = (y0, dy) if origin == "top-left" else (y1, -dy)
+        scale = max(abs(lo_f), abs(hi_f), 1.0)
+        return cls(f, x0, dx, yt, dy, RELATIVE_ERROR * scale, EXACT_CHECK_WORK // f.size)
+
+    def value(self, i: int, j: int) -> Fraction:
+        return self.f.exact(x=self.x0 + j * self.dx, y=self.yt + i * self.dy)
+
+    def extremes(
+        self, blocks: Iterator[tuple[int, np.ndarray]], lo_f: float, hi_f: float
+    ) -> tuple[Number | float, Number | float]:
+        """The exact minimum and maximum of f, from the cells within tolerance of the float
+        ones (the floats, if there are too many such cells)."""
+        import numpy as np
+
+        cells: list[tuple[int, int]] = []
+        for start, block in blocks:
+            near = np.argwhere((block <= lo_f + self.tol) | (block >= hi_f - self.tol))
+            if len(cells) + len(near) > self.cap:
+                self.unchecked = len(cells) + len(near)  # the levels stay float64
+                return lo_f, hi_f
+            cells.extend((start + int(i), int(j)) for i, j in near)
+        values = [self.value(i, j) for i, j in cells]
+        self.cap -= len(cells)
+        self.checked = len(cells)
+        return normalize(min(values)), normalize(max(values))
+
+    def collect_near(self, start: int, block: np.ndarray, q: Quantizer) -> None:
+        """Remember the cells of ``block`` within tolerance of a level boundary, with their
+        float values."""
+        import numpy as np
+
+        if self.unchecked:
+            return
+        scale = q.levels / float(q.width)
+        k = (block - float(q.lo)) * scale
+        near = np.argwhere(np.abs(k - np.rint(k)) <= self.tol * scale)
+        self.count += len(near)
+        if self.count <= self.cap:
+            values = block[near[:, 0], near[:, 1]]
+            near[:, 0] += start
+            self.near.append((near, values))
+
+    def fix_levels(self, out: np.ndarray, q: Quantizer, given: bool) -> int:
+        """Set the remembered cells' levels exactly; return the change in the clipped count
+        (``given``: the range was given, so samples outside it are counted)."""
+        near, self.near = self.near, []
+        if self.unchecked or self.count > self.cap:
+            self.unchecked = self.unchecked or self.count
+            return 0
+        lo, hi = float(q.lo), float(q.hi)
+        change = 0
+        for cells, values in near:
+            for (i, j), v_float in zip(cells.tolist(), values.tolist(), strict=True):
+                v = self.value(i, j)
+                out[i, j] = q.level(v)
+                if given:
+                    change += int(not q.lo <= v <= q.hi) - int(not lo <= v_float <= hi)
+        self.checked += self.count
+        return change

@@ -408,9 +408,9 @@ def _dda_solution(
             ),
         )
     notes = (
-        "x_{k+1} = x_k + x_inc and y_{k+1} = y_k + y_inc, computed exactly;"
+        "$x_{k+1} = x_k + x_{inc}$ and $y_{k+1} = y_k + y_{inc}$, computed exactly;"
         + (
-            " pixels are round half up, floor(v + 1/2)."
+            r" pixels are round half up, $\lfloor v + 1/2 \rfloor$."
             if rounding == "half-up"
             else f" pixels are {ROUNDING_TEXT[rounding]}."
         ),

@@ -14,7 +14,7 @@ from fractions import Fraction
 from typing import NamedTuple
 
 from ..algorithms.curve_limits import DEFAULT_SAMPLES, Point, Value, check_samples, exact_point
-from ..algorithms.parametric import parametric
+from ..algorithms.parametric import check_float_path, exact_values, float_reason, parametric
 from ..algorithms.sampling import curve_pixel, curve_pixels, dense_ts, path_bbox, polyline
 from ..core.checks import InputError
 from ..core.expr import Expr, compile_expr, parse_exact
@@ -318,6 +318,7 @@ def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples
 
     # One pass evaluates every sample: a domain error, an out-of-range point or a pixel path
     # that is too long is reported here, before any output, and gives the bounding box.
+    check_float_path(fx, fy, t0, t1, samples)  # a path certainly too long: refused at once
     bbox = path_bbox(steps(), marks)
     try:
         ts = dense_ts(t0, t1, samples)
@@ -329,11 +330,12 @@ def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples
         _formula("y(t)", spec.y_work),
         step_quantity(t0, t1, samples, lo.tex, hi.tex),
     ]
-    exact = not (isinstance(t0, float) or isinstance(t1, float)) and fx.rational and fy.rational
+    exact = exact_values(fx, fy, t0, t1, samples)
     notes = [
         "x(t) and y(t) are computed exactly (fractions) at each t_k."
         if exact
-        else "x(t) and y(t) are computed in floating point and shown to 3 decimals.",
+        else "x(t) and y(t) are computed in floating point and shown to 3 decimals."
+        + float_reason(fx, fy, t0, t1, samples),
         ROUND_NOTE if exact else FLOAT_ROUND_NOTE,
         JOIN_NOTE,
     ]

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from fractions import Fraction
+from itertools import chain
 
 from ..algorithms.image_limits import check_bits
 from ..algorithms.quantize import Quantizer
@@ -78,11 +79,52 @@ def quantization_rows(bits: int, quantizer: Quantizer | None = None) -> Iterator
     """
     levels = 1 << bits
     # quantization_rows(3) -> (0, '000', 'Black'), (1, '001', 'Very Dark Gray'), ... (7, '111', 'White')
-    for k in range(levels):
-        row: tuple = (k, format(k, f"0{bits}b"), gray_name(k, levels))
-        if quantizer is not None:
-            row = (*row, *quantizer.interval(k), quantizer.reconstruction(k))
-        yield row
+    # 2^24 rows at most: the columns are made by C-level map/zip over shared prefixes, the
+    # values those of gray_name and format(k, "0{bits}b") (tests/test_quantize_fast.py)
+    rows = zip(range(levels), _codes(bits), _gray_names(levels), strict=True)
+    if quantizer is None:
+        return rows
+    return map(tuple.__add__, rows, quantizer.cells())
+
+
+def _codes(bits: int) -> Iterator[str]:
+    """``format(k, f"0{bits}b")`` for ``k = 0 .. 2**bits - 1``: a prefix of the high bits
+    before each of the 2^12 low-bit suffixes.
+
+    >>> list(_codes(2)), list(_codes(14))[4097]
+    (['00', '01', '10', '11'], '01000000000001')
+    """
+    low = min(bits, 12)
+    suffixes = [format(j, f"0{low}b") for j in range(1 << low)]
+    if low == bits:
+        return iter(suffixes)
+    high = bits - low
+    return chain.from_iterable(
+        map(format(h, f"0{high}b").__add__, suffixes) for h in range(1 << high)
+    )
+
+
+def _gray_names(levels: int) -> Iterator[str]:
+    """:func:`gray_name` of ``k = 0 .. levels - 1``, levels a power of two: decimal ``k`` as
+    a prefix of its thousands before each of the suffixes ``000/L-1 .. 999/L-1``.
+
+    >>> list(_gray_names(4)), list(_gray_names(4096))[1000:1002]
+    (['Black', 'Dark Gray', 'Light Gray', 'White'], ['Gray 1000/4095', 'Gray 1001/4095'])
+    """
+    names = GRAY_NAMES.get(bits_per_pixel(levels))
+    if names is not None and len(names) == levels:
+        return iter(names)
+    last = levels - 1
+    tail = f"/{last}"
+    blocks = last // 1000  # thousands 1 .. blocks - 1 are whole
+    suffixes = [f"{j:03d}{tail}" for j in range(1000 if blocks else 0)]
+    return chain(
+        ("Black",),
+        map(f"Gray {{}}{tail}".format, range(1, min(last, 1000))),
+        chain.from_iterable(map(f"Gray {h}".__add__, suffixes) for h in range(1, blocks)),
+        map(f"Gray {{}}{tail}".format, range(max(blocks * 1000, 1000), last)),
+        ("White",),
+    )
 
 
 def quantize_solution(

@@ -119,6 +119,11 @@ def sample_solution(s: Sampled) -> Solution:
                 f"{s.clipped:,} samples lie outside [{_show(q.lo)}, {_show(q.hi)}] and are "
                 "clamped to level 0 or L − 1."
             )
+    if s.unchecked:
+        notes.append(
+            f"{s.unchecked:,} samples lie within float64 rounding of a level boundary and keep "
+            "their float64 level (checking that many exactly is beyond the work budget)."
+        )
     if q is None:
         notes.append(f"f is constant ({_show(s.f_min)}) on the grid: every sample is level 0.")
     else:

@@ -29,10 +29,12 @@ PANELS = (
     ("Curves", ("bezier", "bspline", "continuity", "local-control")),
     ("Image representation", ("image", "storage", "quantize", "sample")),
     ("Comparisons", ("compare",)),
+    ("Teaching", ("sheet", "practice", "check")),
     (
         "The process: clip, transform, fill, anti-alias",
         ("clip", "transform", "viewport", "pipeline", "polygon", "fill", "antialias"),
     ),
+    ("Theory and exam", ("color", "theory", "exam")),
 )
 
 EXAMPLES = """\b
@@ -128,7 +130,20 @@ def _root(
 
 #: The command modules, in the order of ``scanconv --help``; each registers its commands on
 #: ``app`` and the groups above when it is imported.
-TOPIC_MODULES = ("lines", "image", "curves", "circles", "compare", "process", "fill")
+TOPIC_MODULES: tuple[str, ...] = (
+    "lines",
+    "image",
+    "curves",
+    "circles",
+    "compare",
+    "process",
+    "fill",
+    "color",
+    "theory",
+    "exam",
+)
+TOPIC_MODULES += ("sheet", "practice")  # teacher tools (issue 15)
+TOPIC_MODULES += ("check",)  # marking a student's table (issue 15)
 
 #: Which module defines each top-level command or group.
 TOPIC_OF = {
@@ -152,6 +167,12 @@ TOPIC_OF = {
     "polygon": "fill",
     "fill": "fill",
     "antialias": "fill",
+    "sheet": "sheet",
+    "check": "check",
+    "practice": "practice",
+    "color": "color",
+    "theory": "theory",
+    "exam": "exam",
 }
 
 

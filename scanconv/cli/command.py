@@ -20,6 +20,7 @@ from typer.models import OptionInfo, ParameterInfo
 
 from ..core.records import Solution
 from ..render import Format
+from .budget import check as check_budget
 from .options import (
     BriefOpt,
     ExactOpt,
@@ -143,6 +144,7 @@ class Command:
         for name in values.keys() - own.keys():
             del kwargs[name]
         try:
+            check_budget(self.__name__, kwargs, Output(**values))  # before any work
             emit(self.__wrapped__(**kwargs), Output(**values))
         except ValueError as err:  # InputError included
             fail(error_message(err, self.parameters))

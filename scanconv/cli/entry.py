@@ -11,7 +11,7 @@ import copy
 import re
 import signal
 import sys
-from typing import Any, NoReturn
+from typing import Any
 
 import typer
 
@@ -125,7 +125,7 @@ def main(argv: list[str] | None = None) -> int:
     argv = [_MINUS + a[1:] if a.lower() in _NONFINITE else a for a in students(argv)]
     command = _command_for(argv)
     code = 0
-    previous_term = _catch_sigterm()
+    restore_signals = output.catch_signals()
     try:
         result = command.main(args=argv, prog_name=PROG, standalone_mode=False)
         code = result if isinstance(result, int) else 0
@@ -143,6 +143,9 @@ def main(argv: list[str] | None = None) -> int:
         code = 130
     except typer.Exit as err:
         code = err.exit_code
+    except output.Interrupted as err:  # SIGINT, SIGTERM: one line, 130 or 143
+        note(str(err))
+        code = int(err.code or 1)
     except SystemExit as err:
         code = err.code if isinstance(err.code, int) else 1
     except KeyboardInterrupt:
@@ -162,23 +165,9 @@ def main(argv: list[str] | None = None) -> int:
         note("error: out of memory (see docs/limits.md for the input limits)")
         code = 1
     finally:
-        _restore_sigterm(previous_term)
+        restore_signals()
     return code
 
 
-def _catch_sigterm() -> Any:
-    """Turn SIGTERM into ``SystemExit(143)`` so a file being written is cleaned up (its
-    temporary is removed; the target is untouched). Returns the handler to restore."""
-    try:
-        return signal.signal(signal.SIGTERM, _terminate)
-    except ValueError:  # not the main thread: leave signals alone
-        return None
-
-
-def _terminate(signum: int, frame: Any) -> NoReturn:
-    raise SystemExit(128 + signum)
-
-
-def _restore_sigterm(handler: Any) -> None:
-    if handler is not None:
-        signal.signal(signal.SIGTERM, handler)
+_terminate = output.on_signal
+"""The handler of SIGINT and SIGTERM during a run (:func:`scanconv.cli.output.on_signal`)."""

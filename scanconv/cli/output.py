@@ -76,6 +76,60 @@ def notice_text(notice: Notice) -> str:
     return f"{notice.message}; {words}"
 
 
+class Interrupted(SystemExit):
+    """A run stopped by a signal: ``code`` is 130 for SIGINT (Ctrl-C), 143 for SIGTERM.
+
+    A ``SystemExit``, so nothing on the way out (click turns a ``KeyboardInterrupt`` into an
+    abort with an empty line on stderr) mistakes it for an error; every ``try`` that writes a
+    file removes its temporary on the way (:func:`write_atomic`).
+    """
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(128 + signum)
+        self.signum = signum
+
+    def __str__(self) -> str:
+        import signal
+
+        name = signal.Signals(self.signum).name
+        return f"{'interrupted' if name == 'SIGINT' else 'terminated'} ({name})"
+
+
+_signalled = False
+
+
+def on_signal(signum: int, frame: Any) -> None:
+    """The handler of SIGINT and SIGTERM during a run: the first raises :class:`Interrupted`;
+    any later one (Ctrl-C pressed twice) is ignored, so that the clean-up it started (removing
+    a temporary file, the one-line message) is not cut short."""
+    global _signalled
+    if _signalled:
+        return
+    _signalled = True
+    raise Interrupted(signum)
+
+
+def catch_signals() -> Callable[[], None]:
+    """Install :func:`on_signal` for SIGINT and SIGTERM; return what restores the previous
+    handlers. Outside the main thread signals are left alone."""
+    import signal
+
+    global _signalled
+    _signalled = False
+    previous: dict[int, Any] = {}
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        try:
+            previous[sig] = signal.signal(sig, on_signal)
+        except ValueError:  # not the main thread
+            break
+
+    def restore() -> None:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler if handler is not None else signal.SIG_DFL)
+
+    return restore
+
+
 def _write(chunks: Iterable[Any], out: Any, width: int | None = None) -> None:
     console = None
     for chunk in chunks:
@@ -145,14 +199,17 @@ EXTENSIONS = {
     ".csv": Format.csv,
     ".json": Format.json,
     ".txt": Format.plain,
+    ".html": Format.html,
+    ".htm": Format.html,
 }
 
 
 def format_for_file(fmt: Format, path: Path | None) -> Format:
     """The format of ``-o path``: the one ``--format`` names, else the extension's
     (``answer.tex``: latex, ``a.csv``: csv, ``a.json``: json, ``a.md``: markdown, ``a.txt``:
-    plain). A ``--format`` that contradicts a ``.tex``, ``.csv`` or ``.json`` file is refused
-    (exit 2, nothing written); ``.md`` and ``.txt`` files take any format.
+    plain, ``a.html``: html). A ``--format`` that contradicts a ``.tex``, ``.csv``, ``.json`` or
+    ``.html`` file is refused (exit 2, nothing written); ``.md`` and ``.txt`` files take any
+    format.
 
     >>> format_for_file(Format.auto, Path("answer.tex")).value
     'latex'
@@ -162,7 +219,7 @@ def format_for_file(fmt: Format, path: Path | None) -> Format:
     named = EXTENSIONS.get(path.suffix.lower()) if path is not None else None
     if named is None or fmt is Format.auto:
         return named or fmt
-    if fmt is not named and named in (Format.latex, Format.csv, Format.json):
+    if fmt is not named and named in (Format.latex, Format.csv, Format.json, Format.html):
         fail(f"--output {path} is {named.value} by its extension, but --format is {fmt.value}")
     return fmt
 
@@ -211,11 +268,14 @@ def write_atomic(path: Path, fill: Callable[[IO[Any]], object], *, binary: bool 
         return
     target = Path(os.path.realpath(path))  # through a symlink: replace its target, keep the link
     directory = target.parent
+    blocked = _block_signals()  # a signal between creating the temporary and naming it: later
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
     except OSError as err:
+        _unblock_signals(blocked)
         fail(f"cannot write {path}: {err.strerror or err}", 1)
     try:
+        _unblock_signals(blocked)  # one that came meanwhile is raised here, inside the clean-up
         with (
             os.fdopen(fd, "wb") if binary else os.fdopen(fd, "w", encoding="utf-8", newline="\n")
         ) as f:
@@ -228,6 +288,19 @@ def write_atomic(path: Path, fill: Callable[[IO[Any]], object], *, binary: bool 
     except BaseException:
         _unlink(tmp)
         raise
+
+
+def _block_signals() -> Any:
+    """Hold SIGINT and SIGTERM back (they stay pending); returns the mask to restore."""
+    import signal
+
+    return signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+
+
+def _unblock_signals(mask: Any) -> None:
+    import signal
+
+    signal.pthread_sigmask(signal.SIG_SETMASK, mask)
 
 
 def _umask() -> int:

@@ -184,9 +184,9 @@ class Expr:
     ValueError: expression 'log(t)' is undefined or infinite at t = -1
     """
 
-    __slots__ = ("_root", "rational", "text", "variables")
+    __slots__ = ("_root", "rational", "size", "text", "variables")
 
-    def __init__(self, text: str, variables: tuple[str, ...], root: _Node) -> None:
+    def __init__(self, text: str, variables: tuple[str, ...], root: _Node, size: int = 1) -> None:
         self.text = text
         """The expression as given."""
         self.variables = variables
@@ -194,6 +194,9 @@ class Expr:
         self.rational = root.rational
         """True if :meth:`exact` can evaluate it (rational operations only)."""
         self._root = root
+        self.size = size
+        """Operations, names and numbers in the parsed formula: the work of one evaluation
+        (``x*y + 1``: 5)."""
 
     def __repr__(self) -> str:
         return f"Expr({self.text!r}, {self.variables!r})"
@@ -296,7 +299,8 @@ def compile_expr(text: str, variables: tuple[str, ...]) -> Expr:
         raise ValueError(f"expression {shown} is too deeply nested") from None
     _check_depth(tree, shown)
     root = _Compiler(variables, shown).node(tree.body)
-    return Expr(text, tuple(variables), root)
+    size = sum(1 for n in ast.walk(tree.body) if isinstance(n, ast.expr))
+    return Expr(text, tuple(variables), root, size)
 
 
 def _check_depth(tree: ast.AST, shown: str) -> None:

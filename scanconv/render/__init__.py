@@ -25,6 +25,7 @@ class Format(str, Enum):
     csv = "csv"
     json = "json"
     plain = "plain"
+    html = "html"
 
 
 class Options(NamedTuple):
@@ -86,6 +87,10 @@ def render(solution: Solution, fmt: Format, options: Options | None = None) -> I
         from .latex import render_latex
 
         return render_latex(solution, options)
+    if fmt is Format.html:
+        from .html import render_html
+
+        return render_html(solution, options)
     if fmt is Format.rich:
         from .terminal import render_rich
 

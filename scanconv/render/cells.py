@@ -64,6 +64,8 @@ def json_value(value: Any) -> Any:
     >>> json_value((Fraction(1, 2), 3)), json_value(Move.SE), json_value(None)
     ([0.5, 3], 'SE', None)
     """
+    if type(value) is int:  # the common value, first (a matrix row is thousands of them)
+        return value
     if isinstance(value, Enum):
         return value.value
     if value is None or isinstance(value, (bool, str)):

@@ -19,6 +19,7 @@ import csv
 import io
 import json
 from collections.abc import Iterator
+from itertools import chain, islice
 
 from ..core.records import Solution
 from .cells import json_value, note_unicode
@@ -62,15 +63,54 @@ def _table_csv(solution: Solution) -> Iterator[str]:
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow([c.key for c in table.columns])
-    for row in table.rows():
-        writer.writerow([_csv_cell(v) for v in row])
-        yield buf.getvalue()
-        buf.seek(0)
-        buf.truncate()
     yield buf.getvalue()
+    rows = iter(table.rows())
+    while batch := list(islice(rows, _BATCH)):  # 2**24 rows at most: written in batches
+        text = _plain_csv(batch)
+        if text is None:
+            buf.seek(0)
+            buf.truncate()
+            writer.writerows([_csv_cell(v) for v in row] for row in batch)
+            text = buf.getvalue()
+        yield text
+
+
+_BATCH = 4096
+"""Rows of a secondary table rendered at once (``csv``, ``json``)."""
+
+_PLAIN = {int, str}
+"""Cell types that csv and json write as they are (no conversion, see :func:`_csv_cell`)."""
+
+
+def _plain(rows: list[tuple]) -> bool:
+    """Whether every cell of ``rows`` is an ``int`` or a ``str`` (not a bool, not an enum)."""
+    return {*map(type, chain.from_iterable(rows))} <= _PLAIN
+
+
+def _plain_csv(rows: list[tuple]) -> str | None:
+    r"""The text ``csv.writer`` writes for ``rows`` (equal lengths >= 2, int and str cells, no
+    text that needs quoting), formatted at once; ``None`` otherwise.
+
+    >>> _plain_csv([(1, "a b"), (2, "c")]), _plain_csv([(1, "a,b")]), _plain_csv([("x",)])
+    ('1,a b\n2,c\n', None, None)
+    """
+    width = len(rows[0])
+    if width < 2 or {*map(len, rows)} != {width} or not _plain(rows):
+        return None
+    text = (("%s," * (width - 1) + "%s\n") * len(rows)) % tuple(chain.from_iterable(rows))
+    if (
+        text.count(",") != (width - 1) * len(rows)
+        or text.count("\n") != len(rows)
+        or '"' in text
+        or "\r" in text
+    ):
+        return None  # a text cell with a comma, quote or line break: csv.writer quotes it
+    return text
 
 
 def _csv_cell(v: object) -> object:
+    if type(v) is int or type(v) is str:  # the common cells first (16,777,216 in a matrix)
+        return v
     j = json_value(v)
     if isinstance(j, list):
         return " ".join(str(x) for x in j)
@@ -128,7 +168,14 @@ def _tables_json(solution: Solution) -> Iterator[str]:
         title = d(t.title, ensure_ascii=False)
         columns = d([c.key for c in t.columns], ensure_ascii=False)
         yield f'{", " if n else ""}{{"title": {title}, "columns": {columns}, "rows": ['
-        for i, row in enumerate(t.rows()):
-            yield (", " if i else "") + d([json_value(v) for v in row], ensure_ascii=False)
+        encode = json.JSONEncoder(ensure_ascii=False).encode  # once: 2**24 rows at most
+        rows, sep = iter(t.rows()), ""
+        while batch := list(islice(rows, _BATCH)):
+            if _plain(batch):  # json_value leaves int and str as they are: one encode
+                text = encode(batch)[1:-1]
+            else:
+                text = ", ".join(encode([json_value(v) for v in row]) for row in batch)
+            yield sep + text
+            sep = ", "
         yield "]}"
     yield "]"

@@ -227,10 +227,29 @@ def _parts(
         yield part, f"{name}, part {n} of {len(parts)}", ([r[i] for i in part] for r in rows())
 
 
+_MD_INLINE = None
+
+
+def md_heading(text: str) -> str:
+    """A title made literal in a Markdown heading: the characters that would start emphasis,
+    code, a link, raw HTML or a table cell are backslash-escaped (a formula such as
+    ``t**2+t**3`` in a title stays a formula).
+
+    >>> print(md_heading("x(t) = t**2+t**3 <b>"))
+    x(t) = t\\*\\*2+t\\*\\*3 \\<b\\>
+    """
+    import re
+
+    global _MD_INLINE
+    if _MD_INLINE is None:
+        _MD_INLINE = re.compile(r"([\\`*_\[\]<>~|])")
+    return _MD_INLINE.sub(r"\\\1", text)
+
+
 def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iterator[str | Notice]:
     """Markdown or plain text, one line per chunk."""
     if markdown:
-        yield f"## {solution.title}\n\n"
+        yield f"## {md_heading(solution.title)}\n\n"
         if solution.given:
             yield "**Given:** " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
         if solution.derived:

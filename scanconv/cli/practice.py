@@ -1,0 +1,200 @@
+"""``scanconv practice``: seeded practice questions, as a worksheet and its answer key.
+
+The questions come from :func:`scanconv.answers.practice.practice` and are run through
+``sheet`` (:mod:`scanconv.cli.sheet`): the worksheet goes to stdout (or ``-o FILE``, or
+``--pdf FILE``), the key to ``--key FILE`` and the question file itself to ``--questions
+FILE``, so the teacher can hand out one, keep the other, and edit and re-run the questions::
+
+    scanconv practice --topic line --count 8 --seed 7 -o worksheet.md --key key.md
+    scanconv practice --seed 7 --pdf worksheet.pdf --key key.pdf --questions questions.txt
+
+Everything is worked out and rendered before the first file is written.
+"""
+
+from __future__ import annotations
+
+from enum import Enum
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from .application import app
+from .options import integer
+from .output import fail, note, write_atomic
+from .sheet import (
+    SHEET_EXTENSIONS,
+    SheetFormat,
+    SheetFormatOpt,
+    SheetOutputOpt,
+    answer_questions,
+    read_questions,
+    sheet_format,
+    write_document,
+    write_pdf,
+)
+
+
+class Topic(str, Enum):
+    """What the practice questions are about."""
+
+    line = "line"
+    circle = "circle"
+    ellipse = "ellipse"
+    bezier = "bezier"
+    bspline = "bspline"
+    storage = "storage"
+    quantize = "quantize"
+    all = "all"
+
+
+class Difficulty(str, Enum):
+    """How hard the questions are."""
+
+    easy = "easy"
+    exam = "exam"
+    hard = "hard"
+
+
+SEED_RANGE = 10**9
+"""Seeds run 0 .. 10**9 (the command line's number limit, ``core.numeric.COORD_LIMIT``)."""
+
+_HELP = (
+    "Practice questions from a seed (the same seed, the same questions): a worksheet on "
+    "stdout or -o FILE, its answer key with --key FILE.\n\n"
+    "Every octant, steep and negative slopes, right-to-left end points, ties and centres "
+    "away from the origin come up by construction (docs/teaching.md). The --key file's format "
+    "is taken from its extension (.md, .tex, .html, .json, .txt, .pdf).\n\n"
+    "Example: scanconv practice --topic line --count 8 --seed 7 -o worksheet.md --key key.md"
+)
+
+
+@app.command(help=_HELP)
+def practice(
+    topic: Annotated[
+        Topic, typer.Option("--topic", "-t", case_sensitive=False, help="The topic.")
+    ] = Topic.all,
+    count: Annotated[
+        int, typer.Option("--count", "-n", parser=integer, help="How many questions (1-200).")
+    ] = 10,
+    seed: Annotated[
+        int | None,
+        typer.Option(
+            "--seed",
+            parser=integer,
+            help="The seed (default: a new one, printed on stderr).",
+            show_default=False,
+        ),
+    ] = None,
+    difficulty: Annotated[
+        Difficulty,
+        typer.Option(
+            "--difficulty",
+            "-d",
+            case_sensitive=False,
+            help="easy (3-6 steps), exam (the notes' 14-mark questions: 6-12 steps, small "
+            "integers) or hard (13-20 steps, negative coordinates).",
+        ),
+    ] = Difficulty.exam,
+    fmt: SheetFormatOpt = SheetFormat.auto,
+    output: SheetOutputOpt = None,
+    key: Annotated[
+        str | None,
+        typer.Option(
+            "--key",
+            metavar="FILE",
+            help="Write the answer key to FILE (.md, .tex, .html, .json, .txt or .pdf).",
+            show_default=False,
+        ),
+    ] = None,
+    questions: Annotated[
+        str | None,
+        typer.Option(
+            "--questions",
+            metavar="FILE",
+            help="Write the question file to FILE (edit it and run scanconv sheet FILE).",
+            show_default=False,
+        ),
+    ] = None,
+    standalone: Annotated[
+        bool, typer.Option("--standalone", help="LaTeX: complete documents.")
+    ] = False,
+    pdf: Annotated[
+        str | None,
+        typer.Option(
+            "--pdf",
+            metavar="FILE",
+            help="Also typeset the worksheet as a PDF into FILE (needs pdflatex).",
+            show_default=False,
+        ),
+    ] = None,
+) -> None:
+    """Practice questions from a seed, as a worksheet and its answer key."""
+    from ..answers.practice import MAX_COUNT, question_file
+    from ..answers.practice import practice as generate
+    from ..render.sheet import sheet_document
+
+    for name, value in (("--key", key), ("--questions", questions), ("--pdf", pdf)):
+        if value == "":
+            fail(f"{name} needs a file name")
+    if not 1 <= count <= MAX_COUNT:  # checked before a seed is chosen and announced
+        fail(f"--count must be 1 to {MAX_COUNT} (got {count})")
+    if seed is None:
+        import secrets
+
+        seed = secrets.randbelow(1_000_000)
+        note(f"seed {seed} (give --seed {seed} for the same questions)")
+    elif not 0 <= seed <= SEED_RANGE:
+        fail(f"--seed must be 0 to {SEED_RANGE:,} (got {seed})")
+    try:
+        chosen = generate(topic.value, count, seed, difficulty.value)
+        title = f"Practice: {topic.value}, {difficulty.value}, seed {seed}"
+        text = question_file(chosen, title)
+        sheet = read_questions(text, "practice")
+        answered = answer_questions(sheet.questions, "practice")
+        name = sheet_format(fmt, output)
+        worksheet = sheet_document(sheet, answered, "worksheet", name, standalone=standalone)
+        worksheet_tex = None
+        if pdf is not None:
+            worksheet_tex = sheet_document(sheet, answered, "worksheet", "latex", standalone=True)
+        key_text = None
+        if key is not None:
+            key_fmt = _key_format(key)
+            as_pdf = key_fmt == "pdf"
+            key_text = sheet_document(
+                sheet,
+                answered,
+                "key",
+                "latex" if as_pdf else key_fmt,
+                standalone=standalone or as_pdf,
+            )
+    except ValueError as err:
+        fail(" ".join(str(err).split()))
+    if worksheet_tex is not None and pdf is not None:
+        write_pdf(worksheet_tex, Path(pdf))
+    if key is not None and key_text is not None:
+        if key.lower().endswith(".pdf"):
+            write_pdf(key_text, Path(key))
+        else:
+            write_atomic(Path(key), lambda f: f.write(key_text))
+    if questions is not None:
+        write_atomic(Path(questions), lambda f: f.write(text))
+    if output is None and pdf is not None and fmt is SheetFormat.auto:
+        return  # only the PDF of the worksheet was asked for
+    write_document(worksheet, output)
+
+
+def _key_format(path: str) -> str:
+    """The format of the ``--key`` file, by its extension (markdown if it has none).
+
+    >>> _key_format("key.tex"), _key_format("KEY.PDF"), _key_format("key")
+    ('latex', 'pdf', 'markdown')
+    """
+    suffix = Path(path).suffix.lower()
+    if suffix == ".pdf":
+        return "pdf"
+    if suffix and suffix not in SHEET_EXTENSIONS:
+        raise ValueError(
+            f"--key {path}: unknown extension {suffix} (.md, .tex, .json, .html, .txt, .pdf)"
+        )
+    return SHEET_EXTENSIONS.get(suffix, "markdown")

@@ -1,0 +1,418 @@
+"""A student's step table, read from CSV, a Markdown pipe table or JSON, forgivingly.
+
+A teacher hands scanconv the table a student wrote; this module turns it into rows of exact
+values, matching the columns by their headings and the cells by their values, however they
+were typed:
+
+* headings: case, spaces, TeX (``$p_k$``, ``(x_{k+1}, y_{k+1})``), Unicode subscripts
+  (``pₖ``) and common names (``p``, ``pk``, ``d_k``, ``pixel``, ``plot``, ``(x, y)``,
+  ``x`` and ``y`` in two columns, ``round(x)``) all map to a few canonical fields;
+* cells: ``2.5`` is ``2.500``, ``5/2`` is 2.5, ``(3,3)`` is ``(3, 3)`` and ``3 3``, the
+  Unicode minus ``−`` is a minus, an empty cell or a dash is "no value".
+
+Nothing in a cell is ever evaluated: numbers go through
+:func:`~scanconv.core.numeric.parse_number`, which accepts only literals.
+
+The canonical fields (:data:`FIELDS`) are ``k``, ``p`` (the decision parameter a row decides
+on), ``p_next``, ``x`` and ``y`` (two coordinate columns), ``xy`` (a coordinate pair column),
+``px``/``py``/``pxy`` (columns named as rounded or plotted: ``round(x)``, ``plot``, ``pixel``),
+``region`` and ``decision``. Which of them is the pixel and which an exact coordinate is for
+the marking to decide (a DDA table has both).
+
+Bad input raises :class:`~scanconv.core.checks.InputError` with one line that names the file
+and, where there is one, the line (``alice.csv, line 4: 'abc' is not a number``).
+
+>>> t = parse_text("k,p_k,(x_{k+1}, y_{k+1})\\n0,0,(3,3)\\n1,−8,\\"(4, 3)\\"\\n", "a.csv")
+>>> t.fields, t.after, [r.cells["p"].value for r in t.rows], t.rows[1].cells["xy"]
+(('k', 'p', 'xy'), True, [Fraction(0, 1), Fraction(-8, 1)], (Cell(value=Fraction(4, 1), places=0), Cell(value=Fraction(3, 1), places=0)))
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import re
+from fractions import Fraction
+from pathlib import Path
+from typing import Any, NamedTuple
+
+from .checks import InputError
+from .numeric import parse_number
+
+MAX_TABLE_BYTES = 2**18
+"""Largest student file read (256 KiB): a 1,000-row table of a dozen columns is under 60 KiB."""
+
+MAX_TABLE_ROWS = 5000
+"""Most rows of a student table: more than any hand-written table, and enough to mark a long
+line's or a large circle's table written by a student's own program."""
+
+FIELDS = ("k", "p", "p_next", "decision", "x", "y", "xy", "px", "py", "pxy", "region")
+"""The canonical fields, in the order a table lists them."""
+
+_SUBSCRIPTS = str.maketrans(
+    {
+        "ₖ": "k",
+        "₊": "+",
+        "₋": "-",
+        "₀": "0",
+        "₁": "1",
+        "₂": "2",
+        "ₙ": "n",
+        "ᵢ": "i",
+        "\u2212": "-",
+        "²": "2",
+    }
+)
+_DROP = re.compile(r"[\s$\\{}_*`'\"]")
+_NAMES = {
+    "k": ("k", "step", "i", "n", "#", "no", "no.", "row", "iteration", "stepk", "kstep"),
+    "p": ("p", "pk", "p(k)", "d", "dk", "p1k", "p2k", "p1", "p2", "decisionparameter", "pi"),
+    "p_next": ("pk+1", "p(k+1)", "pnext", "nextp", "dk+1", "p1k+1", "p2k+1", "newp", "nextpk+1"),
+    "decision": ("decision", "move", "choice", "direction", "dir", "step?"),
+    "x": ("x", "xk", "xk+1", "xi", "x(k)", "x(k+1)", "newx", "nextx"),
+    "y": ("y", "yk", "yk+1", "yi", "y(k)", "y(k+1)", "newy", "nexty"),
+    "region": ("region", "reg", "r"),
+}
+_ROUNDED = ("round", "plot", "pixel", "int", "rnd")
+_LOOKUP = {name: field for field, names in _NAMES.items() for name in names}
+
+
+class Cell(NamedTuple):
+    """One number as the student wrote it: its exact value and how many decimals it had."""
+
+    value: Fraction
+    places: int
+
+
+Value = Cell | tuple[Cell, Cell] | None
+"""A cell: a number, a coordinate pair, or nothing (an empty cell or a dash)."""
+
+
+class Row(NamedTuple):
+    """One row of the student's table: where it is in the file, and its cells by field."""
+
+    where: str
+    """``line 4`` (CSV, Markdown) or ``row 3`` (JSON), for messages."""
+    cells: dict[str, Value]
+
+
+class StudentTable(NamedTuple):
+    """A student's table with its columns mapped to :data:`FIELDS`."""
+
+    name: str
+    """The file's name, for messages."""
+    fields: tuple[str, ...]
+    """The fields the table has, in its column order."""
+    after: bool
+    """A heading says ``k+1`` next to the coordinates: each row plots ``(x_{k+1}, y_{k+1})``."""
+    rows: tuple[Row, ...]
+    ignored: tuple[str, ...] = ()
+    """Headings that map to no field (``2ry²x``): read, never marked."""
+
+
+def field_of(heading: str) -> tuple[str | None, bool]:
+    """The canonical field a column heading names, and whether it says ``k+1``.
+
+    >>> field_of("$p_{k+1}$"), field_of("(x_{k+1}, y_{k+1})"), field_of("Round(X)")
+    (('p_next', False), ('xy', True), ('px', False))
+    >>> field_of("Pixel"), field_of(" X k "), field_of("2ry²x")
+    (('pxy', False), ('x', False), (None, False))
+    """
+    h = _DROP.sub("", heading.translate(_SUBSCRIPTS).lower())
+    after = "k+1" in h and h not in ("pk+1", "p(k+1)", "dk+1", "p1k+1", "p2k+1")
+    if h in _LOOKUP:
+        return _LOOKUP[h], after and _LOOKUP[h] in ("x", "y")
+    rounded = any(w in h for w in _ROUNDED)
+    if (h.startswith("(") and "x" in h and "y" in h and "," in h) or h in ("point", "points"):
+        return ("pxy" if rounded else "xy"), after
+    if h in ("pixel", "pixels", "plot", "plotted", "pixeltoplot", "pixelplotted"):
+        return "pxy", False
+    bare = re.sub(r"round|plot(ted)?|pixel|int|rnd|[()\[\]]", "", h)
+    if rounded and bare in ("x", "xk", "xk+1"):
+        return "px", after
+    if rounded and bare in ("y", "yk", "yk+1"):
+        return "py", after
+    if rounded and bare in ("x,y", "xk,yk", "(x,y)"):
+        return "pxy", after
+    return None, False
+
+
+def read_table(path: Path) -> StudentTable:
+    """Read and parse the student file at ``path`` (see :func:`parse_text`)."""
+    name = path.name
+    try:
+        size = os.stat(path).st_size
+        if not path.is_file():
+            raise InputError(f"{name}: not a regular file", "answer")
+        if size > MAX_TABLE_BYTES:
+            raise InputError(
+                f"{name}: {size} bytes, larger than a student table can be "
+                f"(at most {MAX_TABLE_BYTES} bytes)",
+                "answer",
+            )
+        with open(path, "rb") as f:
+            data = f.read(MAX_TABLE_BYTES + 1)
+    except OSError as err:
+        raise InputError(f"{name}: cannot read: {err.strerror or err}", "answer") from None
+    return parse_bytes(data, name, path.suffix.lower())
+
+
+def parse_bytes(data: bytes, name: str, suffix: str = "") -> StudentTable:
+    """Decode a student file (UTF-8, with or without a byte-order mark) and parse it.
+
+    >>> parse_bytes(b"\\x00\\x01", "a.csv")
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: a.csv: a binary file, not a table
+    """
+    if len(data) > MAX_TABLE_BYTES:
+        raise InputError(f"{name}: larger than {MAX_TABLE_BYTES} bytes", "answer")
+    if b"\x00" in data[:8192]:
+        raise InputError(f"{name}: a binary file, not a table", "answer")
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        line = data[: err.start].count(b"\n") + 1
+        byte = data[err.start]
+        raise InputError(
+            f"{name}, line {line}: not UTF-8 text (byte 0x{byte:02x}); save the file as UTF-8",
+            "answer",
+        ) from None
+    return parse_text(text, name, suffix)
+
+
+def parse_text(text: str, name: str, suffix: str = "") -> StudentTable:
+    """Parse a table: JSON, a Markdown pipe table or CSV (by ``suffix``, else by its look)."""
+    if not text.strip():
+        raise InputError(f"{name}: the file is empty", "answer")
+    start = text.lstrip()[:1]
+    if suffix == ".json" or (suffix not in (".csv", ".md", ".markdown") and start in "[{"):
+        headers, rows = _json_rows(text, name)
+    elif suffix in (".md", ".markdown") or (
+        suffix != ".csv" and any(ln.lstrip().startswith("|") for ln in text.splitlines())
+    ):
+        headers, rows = _markdown_rows(text, name)
+    else:
+        headers, rows = _csv_rows(text, name)
+    return _build(name, headers, rows)
+
+
+# --- the three formats ------------------------------------------------------------------------
+
+
+RawRow = tuple[str, list[Any]]
+
+
+def _csv_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
+    lines = text.splitlines()
+    first = next((ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#")), "")
+    delimiter = ","
+    if "," not in first:
+        delimiter = "\t" if "\t" in first else ";" if ";" in first else ","
+    headers: list[str] | None = None
+    rows: list[RawRow] = []
+    try:
+        reader = csv.reader(lines, delimiter=delimiter)
+        for number, cells in enumerate(reader, 1):
+            if not any(c.strip() for c in cells) or cells[0].lstrip().startswith("#"):
+                continue
+            cells = _rejoin(cells, delimiter)
+            if headers is None:
+                headers = cells
+                continue
+            rows.append((f"line {number}", cells))
+            _check_rows(rows, name)
+    except csv.Error as err:
+        raise InputError(f"{name}: not a CSV table ({err})", "answer") from None
+    return headers or [], rows
+
+
+def _rejoin(cells: list[str], delimiter: str) -> list[str]:
+    """Join the cells an unquoted pair was split into: ``(3``, `` 3)`` is ``(3, 3)``.
+
+    >>> _rejoin(["0", "(x_{k+1}", " y_{k+1})", "(3", "3)"], ",")
+    ['0', '(x_{k+1}, y_{k+1})', '(3,3)']
+    """
+    out: list[str] = []
+    open_ = False
+    for c in cells:
+        if open_:
+            out[-1] += delimiter + c
+        else:
+            out.append(c)
+        s = out[-1].strip()
+        open_ = s.startswith(("(", "[")) and not s.endswith((")", "]"))
+    return out
+
+
+def _markdown_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
+    headers: list[str] | None = None
+    rows: list[RawRow] = []
+    block: list[tuple[int, list[str]]] = []
+
+    def flush() -> None:
+        nonlocal headers
+        if not block:
+            return
+        if len(block) < 2 or not all(re.fullmatch(r":?-+:?", c.strip()) for c in block[1][1]):
+            raise InputError(
+                f"{name}, line {block[0][0]}: a pipe table needs a heading row and a "
+                "|---| separator row",
+                "answer",
+            )
+        heads = block[0][1]
+        if headers is None:
+            headers = heads
+        elif [field_of(h)[0] for h in heads] != [field_of(h)[0] for h in headers]:
+            raise InputError(
+                f"{name}, line {block[0][0]}: a second table with other columns than the first",
+                "answer",
+            )
+        rows.extend((f"line {n}", cells) for n, cells in block[2:])
+        _check_rows(rows, name)
+        block.clear()
+
+    for number, line in enumerate(text.splitlines(), 1):
+        s = line.strip()
+        if s.startswith("|"):
+            body = s[1:-1] if s.endswith("|") and len(s) > 1 else s[1:]
+            block.append((number, [c.strip() for c in re.split(r"(?<!\\)\|", body)]))
+        else:
+            flush()
+    flush()
+    if headers is None:
+        raise InputError(f"{name}: no pipe table found", "answer")
+    return headers, rows
+
+
+def _json_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as err:
+        raise InputError(
+            f"{name}, line {err.lineno}: not valid JSON ({err.msg})", "answer"
+        ) from None
+    except RecursionError:
+        raise InputError(f"{name}: JSON nested too deeply", "answer") from None
+    if isinstance(data, dict):
+        data = data.get("steps", data.get("rows"))
+    if not isinstance(data, list) or not all(isinstance(r, dict) for r in data):
+        raise InputError(
+            f'{name}: JSON must be a list of row objects, or scanconv\'s own JSON with "steps"',
+            "answer",
+        )
+    headers: list[str] = []
+    for r in data:
+        headers.extend(k for k in r if k not in headers)
+    rows: list[RawRow] = []
+    for i, r in enumerate(data, 1):
+        rows.append((f"row {i}", [r.get(h) for h in headers]))
+        _check_rows(rows, name)
+    return headers, rows
+
+
+def _check_rows(rows: list[RawRow], name: str) -> None:
+    if len(rows) > MAX_TABLE_ROWS:
+        raise InputError(
+            f"{name}: more than {MAX_TABLE_ROWS} rows (at most {MAX_TABLE_ROWS})", "answer"
+        )
+
+
+# --- columns and cells ------------------------------------------------------------------------
+
+
+def _build(name: str, headers: list[str], raw: list[RawRow]) -> StudentTable:
+    if not headers or not any(str(h).strip() for h in headers):
+        raise InputError(f"{name}: no heading row", "answer")
+    mapped: list[str | None] = []
+    after = False
+    ignored: list[str] = []
+    seen: dict[str, str] = {}
+    for h in headers:
+        heading = str(h)
+        field, says_after = field_of(heading)
+        after = after or says_after
+        if field is not None and field in seen:
+            raise InputError(
+                f"{name}: two columns are both read as {field}: {seen[field]!r} and {heading!r}",
+                "answer",
+            )
+        if field is None:
+            if heading.strip():
+                ignored.append(heading.strip())
+        else:
+            seen[field] = heading
+        mapped.append(field)
+    fields = tuple(f for f in mapped if f is not None)
+    for a, b in (("x", "y"), ("px", "py")):
+        if (a in fields) != (b in fields):
+            have, lack = (a, b) if a in fields else (b, a)
+            raise InputError(f"{name}: a column {seen[have]!r} but no column for {lack}", "answer")
+    if not {"x", "xy", "px", "pxy"} & set(fields):
+        raise InputError(
+            f"{name}: no column for the pixels (expected (x, y), x and y, pixel or plot; "
+            f"found {', '.join(repr(str(h)) for h in headers)})",
+            "answer",
+        )
+    if not raw:
+        raise InputError(f"{name}: the table has a heading but no rows", "answer")
+    rows = []
+    width = len(headers)
+    for where, cells in raw:
+        extra = cells[width:]
+        if len(cells) < width or any(str(c).strip() for c in extra if c is not None):
+            raise InputError(
+                f"{name}, {where}: {len(cells)} cells where the heading has {width} columns",
+                "answer",
+            )
+        values: dict[str, Value] = {}
+        for field, text in zip(mapped, cells, strict=False):
+            if field is not None and field not in ("decision", "k"):
+                values[field] = _value(text, field, name, where)
+        rows.append(Row(where, values))
+    return StudentTable(name, fields, after, tuple(rows), tuple(ignored))
+
+
+_EMPTY = ("", "-", "\u2013", "\u2014", "none", "null", "n/a", "na")
+_PAIR = re.compile(r"[(\[]?\s*([^,;\s()\[\]]+)\s*[,;\s]\s*([^,;\s()\[\]]+)\s*[)\]]?")
+
+
+def _value(raw: Any, field: str, name: str, where: str) -> Value:
+    """One cell as a :data:`Value`.
+
+    >>> _value("(3,3)", "xy", "a", "line 2") == _value("3, 3", "xy", "a", "line 2")
+    True
+    >>> _value("2.500", "p", "a", "line 2"), _value("\\u22125/2", "p", "a", "line 2").value
+    (Cell(value=Fraction(5, 2), places=3), Fraction(-5, 2))
+    """
+    pair = field in ("xy", "pxy")
+    if raw is None:
+        return None
+    if isinstance(raw, bool):
+        raise InputError(f"{name}, {where}: {raw!r} is not a number", "answer")
+    if isinstance(raw, list):
+        if not pair or len(raw) != 2:
+            raise InputError(f"{name}, {where}: {raw!r} is not a number", "answer")
+        return (_number(raw[0], name, where), _number(raw[1], name, where))
+    text = str(raw).strip().strip("$*`").strip()
+    if text.lower() in _EMPTY:
+        return None
+    if pair:
+        m = _PAIR.fullmatch(text)
+        if m is None:
+            raise InputError(f"{name}, {where}: {text[:40]!r} is not a pixel like (3, 4)", "answer")
+        return (_number(m.group(1), name, where), _number(m.group(2), name, where))
+    return _number(text, name, where)
+
+
+def _number(raw: Any, name: str, where: str) -> Cell:
+    if isinstance(raw, (int, float)) and not isinstance(raw, bool):
+        raw = repr(raw)
+    text = str(raw).strip().strip("$*`").strip().replace("\u2212", "-")
+    try:
+        value = parse_number(text)
+    except ValueError as err:
+        raise InputError(f"{name}, {where}: {err}", "answer") from None
+    places = len(text.split(".", 1)[1]) if "." in text and "e" not in text.lower() else 0
+    return Cell(value, places)

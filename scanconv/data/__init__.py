@@ -1,0 +1,1 @@
+"""Data shipped with scanconv: the exam book's question file (``exam.txt``)."""

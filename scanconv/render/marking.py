@@ -1,0 +1,62 @@
+"""The score sheet of ``scanconv check --batch``: one CSV row per student file.
+
+Every text cell that a spreadsheet would read as a formula (starting with ``=``, ``+``, ``-``,
+``@``, a tab or a carriage return: a student's file name can be anything) is prefixed with
+``'``, the usual neutralisation; numbers stay numbers.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from collections.abc import Iterable, Iterator
+
+HEADER = ("name", "score", "out_of", "first_error", "diagnosis")
+
+_FORMULA = ("=", "+", "-", "@", "\t", "\r")
+
+
+def neutral(text: str) -> str:
+    """A text cell a spreadsheet shows as text, never runs.
+
+    >>> neutral("=HYPERLINK(1)"), neutral("-2"), neutral("alice.csv")
+    ("'=HYPERLINK(1)", "'-2", 'alice.csv')
+    """
+    text = " ".join(text.splitlines()) if "\n" in text or "\r" in text[1:] else text
+    return "'" + text if text.startswith(_FORMULA) else text
+
+
+def batch_csv(rows: Iterable[tuple[str, int, int, str, str]]) -> Iterator[str]:
+    """The score sheet, header first.
+
+    >>> print("".join(batch_csv([("=bob.csv", 8, 9, "Row 2: ...", "")])), end="")
+    name,score,out_of,first_error,diagnosis
+    '=bob.csv,8,9,Row 2: ...,
+    """
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(HEADER)
+    for name, score, total, first, diagnosis in rows:
+        writer.writerow((neutral(name), score, total, neutral(first), neutral(diagnosis)))
+        yield buf.getvalue()
+        buf.seek(0)
+        buf.truncate()
+    yield buf.getvalue()
+
+
+def batch_json(rows: Iterable[tuple[str, int, int, str, str]], question: str) -> Iterator[str]:
+    """The score sheet as one JSON object: the question and a row object per student.
+
+    >>> print("".join(batch_json([("a.csv", 9, 9, "", "")], "line 2 2 10 6")), end="")
+    {"question": "line 2 2 10 6", "students": [
+      {"name": "a.csv", "score": 9, "out_of": 9, "first_error": "", "diagnosis": ""}
+    ]}
+    """
+    yield f'{{"question": {json.dumps(question, ensure_ascii=False)}, "students": ['
+    first = True
+    for row in rows:
+        obj = dict(zip(HEADER, row, strict=True))
+        yield ("\n  " if first else ",\n  ") + json.dumps(obj, ensure_ascii=False)
+        first = False
+    yield "\n]}\n"

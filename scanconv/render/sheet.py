@@ -1,0 +1,628 @@
+"""Sheets: many answers in one document, as an answer key or as a worksheet for students.
+
+:func:`sheet_document` renders a whole sheet in memory (so nothing is written when a question
+turns out bad) in ``markdown``, ``plain``, ``latex`` (a fragment, or a complete document with
+``standalone``: a page per question), ``json`` and ``html``. A key is each question's number,
+marks, wording and command line, then its full worked answer, as the single-answer renderers
+write it. A worksheet is the question in words, the given values and, for each table of the
+answer, an empty table with the answer's columns and number of rows (the ``k`` column, which
+only numbers the rows, filled in); nothing of the answer itself.
+
+The records :class:`Question`, :class:`Sheet` and :class:`Answered` are what
+:mod:`scanconv.cli.sheet` reads a question file into. Text from the question file (the title,
+sections, wording, command lines) is escaped for every format.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import shlex
+from collections.abc import Iterator, Sequence
+from typing import NamedTuple
+
+from ..core.records import Column, Solution
+from ..core.working import ascii_text, tex_text
+from . import Notice, Options
+from .cells import numeric_column
+
+
+class Question(NamedTuple):
+    """One question of a sheet."""
+
+    number: int
+    """1, 2, ...: the question's number on the sheet."""
+    line: int
+    """The line of the question file it is written on (1-based)."""
+    argv: tuple[str, ...]
+    """The command line, without ``scanconv``: ``("line", "2", "2", "10", "6")``."""
+    marks: int | None = None
+    """The marks it carries (``[4]``), or ``None``."""
+    wording: str = ""
+    """The question in words (the ``>`` lines before it), or ``""``: worded from the answer."""
+    section: str = ""
+    """The ``section:`` it is under, or ``""``."""
+
+    @property
+    def command(self) -> str:
+        """The command line as a person types it (quoted where needed).
+
+        >>> Question(1, 1, ("sample", "x + y", "--size", "4")).command
+        "scanconv sample 'x + y' --size 4"
+        """
+        return shlex.join(("scanconv", *self.argv))
+
+
+class Sheet(NamedTuple):
+    """A parsed question file."""
+
+    title: str
+    questions: tuple[Question, ...]
+    source: str = "QUESTIONS"
+    """The file's name, for messages."""
+
+    @property
+    def total_marks(self) -> int | None:
+        """The sum of the marks, if any question carries marks.
+
+        >>> Sheet("", (Question(1, 1, ("x",), 4), Question(2, 2, ("y",)))).total_marks
+        4
+        """
+        marks = [q.marks for q in self.questions if q.marks is not None]
+        return sum(marks) if marks else None
+
+
+class Answered(NamedTuple):
+    """A question, its answer and how the answer is shown."""
+
+    question: Question
+    solution: Solution
+    options: Options
+
+
+KINDS = ("key", "worksheet")
+FORMATS = ("markdown", "plain", "latex", "json", "html")
+
+
+def sheet_document(
+    sheet: Sheet,
+    answered: Sequence[Answered],
+    kind: str = "key",
+    fmt: str = "markdown",
+    *,
+    standalone: bool = False,
+    notices: list[str] | None = None,
+) -> str:
+    """The whole sheet as one string. A ``ValueError`` raised while an answer is worked out
+    names the question's line (``SOURCE:LINE: ...``). Notices (a grid left out) are added to
+    ``notices``, prefixed with the question's number.
+    """
+    if kind not in KINDS:
+        raise ValueError(f"unknown sheet kind {kind!r}: key or worksheet")
+    if fmt == "json":
+        return _json(sheet, answered, kind)
+    if fmt == "html":
+        return _html(sheet, answered, kind, notices)
+    if fmt == "latex":
+        writer = _latex
+    elif fmt in ("markdown", "plain"):
+        writer = _markdown if fmt == "markdown" else _plain
+    else:
+        raise ValueError(f"unknown sheet format {fmt!r}: one of {', '.join(FORMATS)}")
+    out: list[str] = []
+    for chunk in writer(sheet, answered, kind, standalone):
+        if isinstance(chunk, Notice):
+            if notices is not None:
+                notices.append(chunk.message)
+        else:
+            out.append(chunk)
+    return "".join(out)
+
+
+class _Guard:
+    """Names the question whose answer failed while it was rendered."""
+
+    def __init__(self, sheet: Sheet, question: Question) -> None:
+        self.where = f"{sheet.source}:{question.line}"
+        self.number = question.number
+
+    def __enter__(self) -> _Guard:
+        return self
+
+    def __exit__(self, kind: object, err: BaseException | None, tb: object) -> None:
+        if isinstance(err, ValueError) and not str(err).startswith(self.where):
+            raise ValueError(f"{self.where}: {' '.join(str(err).split())}") from None
+
+
+def _answer_chunks(a: Answered, fmt: str) -> Iterator[str | Notice]:
+    from . import Format, render
+
+    for chunk in render(a.solution, Format(fmt), a.options):
+        if isinstance(chunk, Notice):
+            yield Notice(f"question {a.question.number}: {chunk.message}", chunk.ways)
+        else:
+            yield chunk
+
+
+def _marks(marks: int | None) -> str:
+    if marks is None:
+        return ""
+    return f" ({marks} mark{'' if marks == 1 else 's'})"
+
+
+def _intro(sheet: Sheet, kind: str) -> str:
+    """The line under the title: how many questions and marks.
+
+    >>> _intro(Sheet("", (Question(1, 1, ("x",), 4),)), "key")
+    'Answer key: 1 question, 4 marks.'
+    """
+    n = len(sheet.questions)
+    total = sheet.total_marks
+    what = "Answer key" if kind == "key" else "Worksheet"
+    marks = "" if total is None else f", {total} mark{'' if total == 1 else 's'}"
+    return f"{what}: {n} question{'' if n == 1 else 's'}{marks}."
+
+
+def wording(a: Answered) -> str:
+    """The question in words: the file's ``>`` wording, else the answer's title and what to
+    do."""
+    if a.question.wording:
+        return a.question.wording
+    tables = bool(_blank_tables(a.solution, count=False))
+    todo = "Show your working and complete the table" if tables else "Show your working"
+    title = a.solution.title.rstrip(".")
+    return f"{title}. {todo}{'s' if len(_blank_tables(a.solution, False)) > 1 else ''}."
+
+
+class Blank(NamedTuple):
+    """An empty table of a worksheet: the answer's columns and its number of rows."""
+
+    title: str
+    columns: tuple[Column, ...]
+    rows: int
+    widths: tuple[int, ...]
+    """The widest answer cell of each column, in characters (the space to leave)."""
+    labels: tuple[str, ...] = ()
+    """The first column's cells when they only number or name the rows (:data:`LABELS`)."""
+    sample: tuple[tuple[str, ...], ...] = ()
+    """The first rows of the answer's table, to split a wide table as the key splits it
+    (never shown)."""
+
+
+LABELS = frozenset({"k", "r", "i", "decimal", "unit", "method"})
+"""Keys of a first column that only numbers or names the rows (the step ``k``, de Casteljau's
+level ``r``, an image's row ``i``, a quantization level's number, a storage unit): a worksheet fills it in."""
+
+
+def _blank_tables(solution: Solution, count: bool = True) -> list[Blank]:
+    """The tables of the answer, emptied: title, columns, row count and cell widths."""
+    from .text import all_tables
+
+    out = []
+    for title, columns, rows in all_tables(solution):
+        n = 0
+        widths = [len(c.text) for c in columns]
+        labels: list[str] = []
+        sample: list[tuple[str, ...]] = []
+        numbered = bool(columns) and columns[0].key in LABELS
+        if count:
+            for row in rows():
+                n += 1
+                widths = [max(w, len(c)) for w, c in zip(widths, row, strict=True)]
+                if numbered:
+                    labels.append(row[0])
+                if n <= 100:
+                    sample.append(tuple(row))
+        out.append(
+            Blank(
+                title or "Step table",
+                tuple(columns),
+                n,
+                tuple(widths),
+                tuple(labels),
+                tuple(sample),
+            )
+        )
+    return out
+
+
+def _blank_rows(blank: Blank) -> Iterator[list[str]]:
+    """The rows of an empty table: the row labels filled in (:data:`LABELS`), the rest empty."""
+    for i in range(blank.rows):
+        yield [
+            blank.labels[i] if j == 0 and blank.labels else "" for j in range(len(blank.columns))
+        ]
+
+
+# --- markdown and plain -------------------------------------------------------------------------
+
+_MD_SPECIAL = re.compile(r"([\\`*_{}\[\]<>#|$~^&])")
+
+
+def md_text(text: str) -> str:
+    """User text made literal in Markdown (pandoc's and GitHub's): every character that could
+    start markup, math, a table cell or raw HTML is backslash-escaped.
+
+    >>> md_text("A | B <script> *x* $1")
+    'A \\\\| B \\\\<script\\\\> \\\\*x\\\\* \\\\$1'
+    """
+    return _MD_SPECIAL.sub(r"\\\1", " ".join(text.split()))
+
+
+def md_code(text: str) -> str:
+    """``text`` as an inline code span, fenced with more backticks than it holds.
+
+    >>> md_code("a ` b")
+    '`` a ` b ``'
+    """
+    runs = [len(r) for r in re.findall(r"`+", text)]
+    fence = "`" * (max(runs, default=0) + 1)
+    pad = " " if runs or text.startswith("`") else ""
+    return f"{fence}{pad}{text}{pad}{fence}"
+
+
+def _levels(sheet: Sheet) -> tuple[int, int]:
+    """The heading level of a section and of a question (questions under sections go one
+    deeper)."""
+    sections = any(q.section for q in sheet.questions)
+    return 2, 3 if sections else 2
+
+
+def _parts(blank: Blank) -> list[tuple[list[int], str]]:
+    """The column indexes and the label of each part a Markdown table is set in: split as the
+    key's Markdown table is (:func:`scanconv.render.text._parts`), when wide."""
+    from .latex import split_columns
+    from .text import SPLIT_COLUMNS
+
+    every = list(range(len(blank.columns)))
+    if len(blank.columns) < SPLIT_COLUMNS:
+        return [(every, blank.title)]
+    parts = [part for part, _ in split_columns(blank.columns, [list(r) for r in blank.sample])]
+    if len(parts) == 1:
+        return [(every, blank.title)]
+    return [(p, f"{blank.title}, part {n} of {len(parts)}") for n, p in enumerate(parts, 1)]
+
+
+def _markdown(
+    sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
+) -> Iterator[str | Notice]:
+    from .text import table_lines
+
+    section_level, level = _levels(sheet)
+    if sheet.title:
+        yield f"# {md_text(sheet.title)}\n\n{_intro(sheet, kind)}\n\n"
+    section = ""
+    for a in answered:
+        q = a.question
+        with _Guard(sheet, q):
+            if q.section and q.section != section:
+                section = q.section
+                yield f"{'#' * section_level} {md_text(section)}\n\n"
+            yield f"{'#' * level} Question {q.number}{_marks(q.marks)}\n\n"
+            if kind == "key":
+                if q.wording:
+                    yield f"> {md_text(q.wording)}\n\n"
+                yield md_code(q.command) + "\n\n"
+                first = True
+                for chunk in _answer_chunks(a, "markdown"):
+                    if first and isinstance(chunk, str) and chunk.startswith("## "):
+                        chunk = "#" * (level + 1) + chunk[2:]
+                    first = False
+                    yield chunk
+                continue
+            yield md_text(wording(a)) + "\n\n"
+            if a.solution.given:
+                given = ", ".join(f"${g.tex}$" for g in a.solution.given)
+                yield f"**Given:** {given}\n\n"
+            for blank in _blank_tables(a.solution):
+                for part, label in _parts(blank):
+                    yield f"**{md_text(label)}:**\n\n"
+                    cells = (
+                        [r[i] or " " * max(3, blank.widths[i]) for i in part]
+                        for r in _blank_rows(blank)
+                    )
+                    for line in table_lines(
+                        [f"${blank.columns[i].tex}$" for i in part],
+                        [numeric_column(blank.columns[i]) for i in part],
+                        cells,
+                        markdown=True,
+                    ):
+                        yield line + "\n"
+                    yield "\n"
+            if not _blank_tables(a.solution, count=False):
+                yield "**Answer:**\n\n" + "&nbsp;\n\n" * 6
+
+
+def _plain(
+    sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
+) -> Iterator[str | Notice]:
+    from .text import table_lines
+
+    if sheet.title:
+        title = ascii_text(" ".join(sheet.title.split()))
+        yield f"{title}\n{'#' * len(title)}\n\n{_intro(sheet, kind)}\n\n"
+    section = ""
+    for a in answered:
+        q = a.question
+        with _Guard(sheet, q):
+            if q.section and q.section != section:
+                section = q.section
+                yield f"{ascii_text(section)}\n{'*' * len(ascii_text(section))}\n\n"
+            head = f"Question {q.number}{_marks(q.marks)}"
+            yield f"{head}\n{'-' * len(head)}\n\n"
+            if kind == "key":
+                if q.wording:
+                    yield ascii_text(q.wording) + "\n\n"
+                yield f"$ {ascii_text(q.command)}\n\n"
+                yield from _answer_chunks(a, "plain")
+                yield "\n"
+                continue
+            yield ascii_text(wording(a)) + "\n\n"
+            if a.solution.given:
+                given = ", ".join(ascii_text(g.text) for g in a.solution.given)
+                yield f"Given: {given}\n\n"
+            for blank in _blank_tables(a.solution):
+                yield f"{ascii_text(blank.title)}:\n"
+                cells = ([c or "_" * max(3, w) for c, w in zip(r, blank.widths, strict=True)]
+                         for r in _blank_rows(blank))  # fmt: skip
+                for line in table_lines(
+                    [ascii_text(c.text) for c in blank.columns],
+                    [numeric_column(c) for c in blank.columns],
+                    cells,
+                    markdown=False,
+                ):
+                    yield line + "\n"
+                yield "\n"
+            if not _blank_tables(a.solution, count=False):
+                yield "Answer:\n" + "\n" * 6
+
+
+# --- latex ------------------------------------------------------------------------------------
+
+PREAMBLE = r"""\documentclass[a4paper]{article}
+\usepackage[margin=25mm]{geometry}
+\usepackage{booktabs,amsmath,longtable,array}
+\setlength{\parindent}{0pt}
+\emergencystretch=3em
+\tolerance=2000
+\begin{document}
+"""
+
+
+def _tex_command(command: str) -> str:
+    r"""A command line in typewriter type, breakable at its spaces.
+
+    >>> _tex_command("scanconv sample 'x_1 % 2'")
+    "{\\raggedright\\ttfamily scanconv sample 'x\\_1 \\% 2'\\par}"
+    """
+    return "{\\raggedright\\ttfamily " + tex_text(command) + "\\par}"
+
+
+def _latex(
+    sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
+) -> Iterator[str | Notice]:
+    if standalone:
+        yield PREAMBLE
+    else:
+        yield "% scanconv sheet; needs \\usepackage{booktabs,amsmath,longtable,array}\n"
+    if sheet.title:
+        yield f"\\section*{{\\raggedright {tex_text(' '.join(sheet.title.split()))}}}\n"
+        yield f"{_intro(sheet, kind)}\n\n"
+    section = ""
+    for n, a in enumerate(answered):
+        q = a.question
+        with _Guard(sheet, q):
+            if n:
+                yield "\n\\clearpage\n"
+            if q.section and q.section != section:
+                section = q.section
+                yield f"\\section*{{\\raggedright {tex_text(section)}}}\n"
+            yield f"\\subsection*{{Question {q.number}{_marks(q.marks)}}}\n"
+            if kind == "key":
+                if q.wording:
+                    yield f"\\emph{{{tex_text(q.wording)}}}\\par\\medskip\n"
+                yield _tex_command(q.command) + "\n\n"
+                for chunk in _answer_chunks(a, "latex"):
+                    if isinstance(chunk, str) and chunk.startswith("% scanconv answer"):
+                        continue
+                    if isinstance(chunk, str) and chunk.startswith("\\subsection*{"):
+                        chunk = "\\subsubsection*{" + chunk[len("\\subsection*{") :]
+                    yield chunk
+                continue
+            yield tex_text(wording(a)) + "\\par\\medskip\n"
+            if a.solution.given:
+                given = ", ".join(f"${g.tex}$" for g in a.solution.given)
+                yield f"\\paragraph{{Given}} {given}\n\n"
+            blanks = _blank_tables(a.solution)
+            for blank in blanks:
+                yield from _latex_blank(blank)
+            if not blanks:
+                yield "\\paragraph{Answer}\\mbox{}\\\\[1ex]\n\\vspace*{12\\baselineskip}\n"
+    if standalone:
+        yield "\\end{document}\n"
+
+
+def _tex_label(text: str) -> str:
+    r"""A row label in LaTeX: a number in math, a word as text.
+
+    >>> _tex_label("-3"), _tex_label("KB_2")
+    ('$-3$', 'KB\\_2')
+    """
+    if text[:1].isdigit() or text[:1] in ("-", "("):
+        return f"${text}$"
+    return tex_text(text)
+
+
+def _room(chars: int) -> int:
+    """The width of an empty cell, in digits: handwriting takes more room than type.
+
+    >>> _room(1), _room(10)
+    (5, 15)
+    """
+    return max(5, chars + (chars + 1) // 2)
+
+
+def _latex_blank(blank: Blank) -> Iterator[str]:
+    """An empty table, ruled for writing in: each column as wide as its widest answer cell
+    (and a little more), split into parts of columns as the key's table is when too wide."""
+    from .latex import split_columns
+
+    room = [_room(w) for w in blank.widths]
+    sample = [["0" * (r + 2) for r in room]]  # the space to write in, the rules
+    parts = split_columns(blank.columns, sample)
+    for n, (part, (size, tight)) in enumerate(parts, 1):
+        label = blank.title if len(parts) == 1 else f"{blank.title}, part {n} of {len(parts)}"
+        yield f"\\paragraph{{{tex_text(label)}}}\\mbox{{}}\\\\[1ex]\n"
+        cols = [blank.columns[i] for i in part]
+        widths = [room[i] for i in part]
+        group = bool(size or tight)
+        if group:
+            yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
+        spec = "|" + "|".join("c" for _ in cols) + "|"
+        yield f"\\begin{{longtable}}{{{spec}}}\n\\hline\n"
+        yield " & ".join(f"${c.tex}$" for c in cols) + " \\\\\n\\hline\n\\endhead\n"
+        for row in _blank_rows(blank):
+            cells = [
+                "\\rlap{" + _tex_label(row[i]) + f"}}\\hphantom{{{'0' * w}}}"
+                if j == 0 and row[i]
+                else f"\\rule[-2.5mm]{{0pt}}{{8mm}}\\hphantom{{{'0' * w}}}"
+                for j, (i, w) in enumerate(zip(part, widths, strict=True))
+            ]
+            yield " & ".join(cells) + " \\\\\n\\hline\n"
+        yield "\\end{longtable}\n" + ("}\n" if group else "")
+
+
+# --- json ---------------------------------------------------------------------------------------
+
+
+def _json(sheet: Sheet, answered: Sequence[Answered], kind: str) -> str:
+    """One JSON object: the sheet's title, kind and total marks, and its questions."""
+    from .data import render_json
+
+    questions = []
+    for a in answered:
+        q = a.question
+        with _Guard(sheet, q):
+            entry: dict[str, object] = {
+                "number": q.number,
+                "line": q.line,
+                "marks": q.marks,
+                "section": q.section or None,
+                "question": wording(a),
+            }
+            if kind == "key":
+                entry["command"] = q.command
+                entry["answer"] = json.loads("".join(render_json(a.solution)))
+            else:
+                entry["given"] = [g.text for g in a.solution.given]
+                entry["tables"] = [
+                    {"title": b.title, "columns": [c.key for c in b.columns], "rows": b.rows}
+                    for b in _blank_tables(a.solution)
+                ]
+            questions.append(entry)
+    document = {
+        "title": sheet.title or None,
+        "kind": kind,
+        "total_marks": sheet.total_marks,
+        "questions": questions,
+    }
+    return json.dumps(document, ensure_ascii=False, indent=1) + "\n"
+
+
+# --- html ---------------------------------------------------------------------------------------
+
+_SHEET_CSS = """\
+.sc-sheet{font-family:"DejaVu Sans",system-ui,sans-serif;color:#1b1b1b;line-height:1.45}
+.sc-sheet h1{font-size:1.6em;margin:.2em 0 .3em 0}
+.sc-sheet h2.sc-section{font-size:1.35em;margin:1.2em 0 .4em 0}
+.sc-sheet h2.sc-q,.sc-sheet h3.sc-q{font-size:1.2em;margin:1.2em 0 .3em 0}
+.sc-sheet .sc-wording{font-style:italic}
+.sc-sheet code{font-family:"DejaVu Sans Mono",monospace;background:#f4f4f4;padding:0 .25em}
+.sc-sheet table.sc-blank{border-collapse:collapse;margin:.4em 0 1em 0}
+.sc-sheet table.sc-blank th,.sc-sheet table.sc-blank td{border:1px solid #555;\
+padding:.2em .5em;height:1.9em;text-align:center}
+.sc-sheet .sc-answer-space{height:12em;border:1px dashed #999;margin:.4em 0 1em 0}
+@media print{.sc-sheet>.sc-question~.sc-question{break-before:page}}
+"""
+
+
+def _html(sheet: Sheet, answered: Sequence[Answered], kind: str, notices: list[str] | None) -> str:
+    """The sheet as one self-contained HTML page: every text from the question file and every
+    value escaped; a page break before each question when printed. The key's answers are the
+    stepping answers of :mod:`scanconv.render.html` (each with its own stepper)."""
+    from html import escape
+
+    title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
+    style = f"<style>\n{_SHEET_CSS}</style>\n"
+    if kind == "key":
+        from .html import answer_section, page_head
+        from .page_assets import JS
+
+        head = page_head(title).replace("</head>", style + "</head>", 1)
+    else:
+        head = (
+            '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
+            '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
+            f"<title>{escape(title)}</title>\n{style}</head>\n"
+        )
+    parts = [head, '<body>\n<main class="sc-sheet">\n']
+    if sheet.title:
+        parts.append(f"<h1>{escape(title)}</h1>\n")
+    parts.append(f"<p>{escape(_intro(sheet, kind))}</p>\n")
+    section = ""
+    level = 3 if any(q.section for q in sheet.questions) else 2
+    for a in answered:
+        q = a.question
+        with _Guard(sheet, q):
+            if q.section and q.section != section:
+                section = q.section
+                parts.append(f'<h2 class="sc-section">{escape(section)}</h2>\n')
+            parts.append('<section class="sc-question">\n')
+            marks = escape(_marks(q.marks))
+            parts.append(f'<h{level} class="sc-q">Question {q.number}{marks}</h{level}>\n')
+            if kind == "key":
+                if q.wording:
+                    parts.append(f'<p class="sc-wording">{escape(q.wording)}</p>\n')
+                parts.append(f"<p><code>{escape(q.command)}</code></p>\n")
+                found: list[str] = []
+                parts.append(
+                    answer_section(
+                        a.solution, f"sc{q.number}", a.options, level=level + 1, notices=found
+                    )
+                )
+                parts.append("\n")
+                if notices is not None:
+                    notices.extend(f"question {q.number}: {n}" for n in found)
+            else:
+                parts.append(f'<p class="sc-wording">{escape(wording(a))}</p>\n')
+                parts.extend(_html_blank(a))
+            parts.append("</section>\n")
+    parts.append("</main>\n")
+    if kind == "key":
+        parts.append(f"<script>{JS}</script>\n")
+    parts.append("</body>\n</html>\n")
+    return "".join(parts)
+
+
+def _html_blank(a: Answered) -> Iterator[str]:
+    """A worksheet question's given values and empty tables, in HTML."""
+    from html import escape
+
+    if a.solution.given:
+        given = ", ".join(escape(g.text) for g in a.solution.given)
+        yield f"<p><strong>Given:</strong> {given}</p>\n"
+    blanks = _blank_tables(a.solution)
+    for blank in blanks:
+        yield f"<p><strong>{escape(blank.title)}:</strong></p>\n"
+        yield '<table class="sc-blank">\n<thead><tr>'
+        yield "".join(f"<th>{escape(c.text)}</th>" for c in blank.columns)
+        yield "</tr></thead>\n<tbody>\n"
+        for row in _blank_rows(blank):
+            cells = (
+                f'<td style="min-width:{_room(w) * 0.6:.1f}em">{escape(c)}</td>'
+                for c, w in zip(row, blank.widths, strict=True)
+            )
+            yield "<tr>" + "".join(cells) + "</tr>\n"
+        yield "</tbody>\n</table>\n"
+    if not blanks:
+        yield '<p><strong>Answer:</strong></p>\n<div class="sc-answer-space"></div>\n'
