@@ -48,26 +48,6 @@ STATE = """(root) => {
 }"""
 
 
-@pytest.fixture(scope="session")
-def browser() -> Iterator[Any]:
-    if CHROMIUM is None:
-        pytest.skip(
-            "no chromium on PATH: the browser tests need Debian's chromium package "
-            "(apt-get install chromium; .ci/run installs it)"
-        )
-    sync_api = pytest.importorskip(
-        "playwright.sync_api", reason="playwright is not installed: pip install -e '.[test]'"
-    )
-    with sync_api.sync_playwright() as p:
-        b = p.chromium.launch(
-            executable_path=CHROMIUM,
-            headless=True,
-            args=["--host-resolver-rules=MAP * ~NOTFOUND"],  # nothing could be fetched anyway
-        )
-        yield b
-        b.close()
-
-
 class Opened:
     """A page open in the browser, with every request and console message it caused."""
 

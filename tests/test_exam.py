@@ -100,6 +100,17 @@ def test_the_markdown_book_opens_with_its_contents() -> None:
     assert head.index("## Contents") < len(head)
 
 
+def test_the_html_book_links_its_contents_to_every_question() -> None:
+    r = run("exam", "--section", "4", "-f", "html")
+    assert r.code == 0, r.err
+    nav = r.out.split('<nav class="sc-contents"', 1)[1].split("</nav>", 1)[0]
+    links = re.findall(r'href="#(q\d+)"', nav)
+    numbers = [q.number for q in exam_sheet("4").questions]
+    assert links == [f"q{n}" for n in numbers]
+    for target in links:  # every link lands on that question's answer, after the contents
+        assert r.out.index(f'id="{target}"') > r.out.index("</nav>")
+
+
 def test_the_json_book_has_question_section_and_answer() -> None:
     book = json.loads(run("exam", "--format", "json").out)
     assert len(book["questions"]) == 37

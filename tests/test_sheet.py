@@ -394,50 +394,40 @@ def test_the_html_key_holds_each_answers_section_and_escapes_user_text(tmp_path:
 
 
 @pytest.mark.external
-def test_the_html_key_steps_each_answer_on_its_own_in_chromium(tmp_path: Path) -> None:
-    sync_api = pytest.importorskip("playwright.sync_api")
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
-    if not chromium:
-        pytest.skip("chromium not installed")
+def test_the_html_key_steps_each_answer_on_its_own_in_chromium(tmp_path: Path, browser) -> None:
     page_file = tmp_path / "k.html"
     assert run("sheet", str(UNIT2), "-f", "html", "-o", str(page_file)).code == 0
-    with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=chromium)
-        page = browser.new_page(viewport={"width": 1300, "height": 1000})
-        errors: list[str] = []
-        page.on("pageerror", lambda e: errors.append(str(e)))
-        page.goto(page_file.as_uri())
-        sections = page.locator("section.scanconv").count()
-        page.locator("#sc2").click()
-        page.keyboard.press("ArrowRight")
-        page.keyboard.press("ArrowRight")
-        positions = [page.get_attribute(f"#sc{i}", "data-pos") for i in (1, 2)]
-        page.screenshot(path=str(tmp_path / "k.png"))
-        browser.close()
+    # the session's browser (tests/conftest.py)
+    page = browser.new_page(viewport={"width": 1300, "height": 1000})
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(page_file.as_uri())
+    sections = page.locator("section.scanconv").count()
+    page.locator("#sc2").click()
+    page.keyboard.press("ArrowRight")
+    page.keyboard.press("ArrowRight")
+    positions = [page.get_attribute(f"#sc{i}", "data-pos") for i in (1, 2)]
+    page.screenshot(path=str(tmp_path / "k.png"))
+    page.close()
     assert sections == 5 and not errors
     assert positions == ["0", "2"]
 
 
 @pytest.mark.external
-def test_the_html_worksheet_in_chromium(tmp_path: Path) -> None:
-    sync_api = pytest.importorskip("playwright.sync_api")
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
-    if not chromium:
-        pytest.skip("chromium not installed")
+def test_the_html_worksheet_in_chromium(tmp_path: Path, browser) -> None:
     page_file = tmp_path / "w.html"
     path = _file(tmp_path, f"title: {HOSTILE}\n[2] line 2 2 10 6\n")
     assert run("sheet", str(path), "--worksheet", "-o", str(page_file)).code == 0
-    with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=chromium)
-        page = browser.new_page(viewport={"width": 900, "height": 1000})
-        dialogs: list[str] = []
-        page.on("dialog", lambda d: (dialogs.append(d.message), d.dismiss()))
-        page.goto(page_file.as_uri())
-        rows = page.locator("table.sc-blank tbody tr").count()
-        heading = page.locator("h1").inner_text()
-        width = page.evaluate("document.documentElement.scrollWidth")
-        page.screenshot(path=str(tmp_path / "w.png"))
-        browser.close()
+    # the session's browser (tests/conftest.py)
+    page = browser.new_page(viewport={"width": 900, "height": 1000})
+    dialogs: list[str] = []
+    page.on("dialog", lambda d: (dialogs.append(d.message), d.dismiss()))
+    page.goto(page_file.as_uri())
+    rows = page.locator("table.sc-blank tbody tr").count()
+    heading = page.locator("h1").inner_text()
+    width = page.evaluate("document.documentElement.scrollWidth")
+    page.screenshot(path=str(tmp_path / "w.png"))
+    page.close()
     assert rows == 9 and not dialogs
     assert heading == " ".join(HOSTILE.split())
     assert width <= 900  # nothing runs off the side

@@ -101,6 +101,33 @@ def _contents(answered: list, fmt: str) -> str:
     return "\n".join(lines) + "\n\n"
 
 
+def _html_contents(document: str, answered: list) -> str:
+    """The HTML book with a linked table of contents after its introduction (each question's
+    section has the id ``q<number>``)."""
+    from html import escape
+
+    items: list[str] = ['<nav class="sc-contents" aria-label="contents">', "<h2>Contents</h2>"]
+    section = None
+    for a in answered:
+        q = a.question
+        if q.section != section:
+            if section is not None:
+                items.append("</ol></li>")
+            section = q.section
+            items.append(f"<li>{escape(section or '')}<ol>" if section else "<li><ol>")
+        text = escape(" ".join(q.wording.split()) or q.command)
+        items.append(f'<li value="{q.number}"><a href="#q{q.number}">{text}</a></li>')
+    if section is not None or answered:
+        items.append("</ol></li>")
+    nav = "\n".join([items[0], items[1], "<ul>", *items[2:], "</ul>", "</nav>"]) + "\n"
+    start = document.find('<main class="sc-sheet">')
+    at = document.find("</p>\n", start)
+    if start < 0 or at < 0:
+        return document
+    at += len("</p>\n")
+    return document[:at] + nav + document[at:]
+
+
 _SECTION = re.compile(r"\\section\*\{\\raggedright (.*)\}")
 _QUESTION = re.compile(r"\\subsection\*\{Question (\d+)\b.*")
 
@@ -109,6 +136,8 @@ def _with_contents(document: str, answered: list, fmt: str, title: bool) -> str:
     """``document`` (a whole sheet) with its table of contents: in markdown and plain after
     the title and the count of questions, in LaTeX ``\\tableofcontents`` and a contents line
     for every section and question (pdflatex twice fills it in)."""
+    if fmt == "html":
+        return _html_contents(document, answered)
     lines = document.split("\n")
     if fmt in ("markdown", "plain"):
         at = next((i for i, line in enumerate(lines) if line.startswith("Answer key")), -1)

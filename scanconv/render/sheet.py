@@ -577,7 +577,7 @@ def _html(sheet: Sheet, answered: Sequence[Answered], kind: str, notices: list[s
             if q.section and q.section != section:
                 section = q.section
                 parts.append(f'<h2 class="sc-section">{escape(section)}</h2>\n')
-            parts.append('<section class="sc-question">\n')
+            parts.append(f'<section class="sc-question" id="q{q.number}">\n')
             marks = escape(_marks(q.marks))
             parts.append(f'<h{level} class="sc-q">Question {q.number}{marks}</h{level}>\n')
             if kind == "key":
