@@ -113,15 +113,7 @@ def bresenham_from_p1(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> 
     >>> [s.pixel for s in bresenham(4, 2, 0, 0)]
     [(1, 1), (2, 1), (3, 2), (4, 2)]
     """
-    dx, dy = x2 - x1, y2 - y1
-    steep = abs(dy) > abs(dx)
-    dmaj, dmin = (abs(dy), abs(dx)) if steep else (abs(dx), abs(dy))
-    if steep:
-        s = 1 if dx >= 0 else -1
-        stay, move = Move.from_delta(0, -1), Move.from_delta(s, -1)
-    else:
-        s = 1 if dy >= 0 else -1
-        stay, move = Move.from_delta(-1, 0), Move.from_delta(-1, s)
+    steep, dmaj, dmin, s, stay, move = orient_from_p1(x1, y1, x2, y2)
     inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
     x, y, p = x1, y1, 2 * dmin - dmaj
     t = 1 if tie == "keep" else 0
@@ -138,6 +130,25 @@ def bresenham_from_p1(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> 
             else:
                 y += s
             yield Step(k, p, move, (x, y), (p := p + inc_step,))
+
+
+def orient_from_p1(x1: int, y1: int, x2: int, y2: int) -> tuple:
+    """:func:`orient` for a walk from P1 with the major coordinate decreasing (no swap).
+
+    Returns ``(steep, dmaj, dmin, s, stay, move)``: ``s`` the sign of the minor step toward P2,
+    ``stay`` the move when p_k < 0, ``move`` the move when p_k >= 0.
+
+    >>> orient_from_p1(4, 2, 0, 0)[3:]
+    (-1, <Move.W: 'W'>, <Move.SW: 'SW'>)
+    """
+    dx, dy = x2 - x1, y2 - y1
+    steep = abs(dy) > abs(dx)
+    dmaj, dmin = (abs(dy), abs(dx)) if steep else (abs(dx), abs(dy))
+    if steep:
+        s = 1 if dx >= 0 else -1
+        return True, dmaj, dmin, s, Move.from_delta(0, -1), Move.from_delta(s, -1)
+    s = 1 if dy >= 0 else -1
+    return False, dmaj, dmin, s, Move.from_delta(-1, 0), Move.from_delta(-1, s)
 
 
 def bresenham_notes(

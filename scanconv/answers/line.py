@@ -16,6 +16,7 @@ from ..algorithms.lines import (
     dda_increments,
     dda_steps,
     orient,
+    orient_from_p1,
 )
 from ..core.checks import InputError
 from ..core.numeric import (
@@ -27,7 +28,7 @@ from ..core.numeric import (
     normalize,
     round_half_up,
 )
-from ..core.records import Move, Pixel, Quantity, Solution, Step, Table, heading, rule, worked
+from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, rule, worked
 from .errata import line_errata
 
 # --- Solutions: the exam answer around the steps -------------------------------------------
@@ -260,11 +261,7 @@ def _bresenham_solution(
     backward = swapped and start == "given"  # walk from P1, the major coordinate decreasing
     if backward:
         sx, sy, ex, ey = ix1, iy1, ix2, iy2
-        sign = -sign
-        stay, move = (
-            Move.from_delta(0, -1) if steep else Move.from_delta(-1, 0),
-            Move.from_delta(sign, -1) if steep else Move.from_delta(-1, sign),
-        )
+        _, _, _, sign, stay, move = orient_from_p1(ix1, iy1, ix2, iy2)
         swapped = False
     dx, dy = ex - sx, ey - sy  # after the swap, as the working is written
     maj, mnr = ("y", "x") if steep else ("x", "y")

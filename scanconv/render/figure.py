@@ -227,6 +227,23 @@ def numbering(solution: Solution) -> str:
     return "row"
 
 
+def numbering_legend(solution: Solution) -> str:
+    """What the numbers in the pixels mean (the legend of the figure and of the HTML grid).
+
+    >>> from scanconv.answers.line import line_solution
+    >>> numbering_legend(line_solution("bresenham", 2, 2, 10, 6))
+    'number: k + 1 for row k; 0: start'
+    """
+    how = numbering(solution)
+    if how == "order":
+        return f"number: {solution.geometry.get('order_name', 'plotting order')}"
+    if label_offset(solution):
+        return "number: k + 1 for row k; 0: start"
+    if how == "continued":
+        return "number: row k (region 2 counts on)"
+    return "number: row k of the step table"
+
+
 def step_labels(solution: Solution) -> dict[Pixel, int]:
     """The step number of every plotted pixel that has one (see the module's notes and
     :func:`numbering`).
@@ -484,15 +501,7 @@ def _legend(fig: Figure, solution: Solution, bottom: float, numbered: bool) -> N
     if geometry.get("outline"):
         parts.append(f"orange: {geometry.get('outline_name', 'outline')}")
     if numbered:
-        how = numbering(solution)
-        if how == "order":
-            parts.append(f"number: {geometry.get('order_name', 'plotting order')}")
-        elif label_offset(solution):
-            parts.append("number: k + 1 for row k; 0: start")
-        elif how == "continued":
-            parts.append("number: row k (region 2 counts on)")
-        else:
-            parts.append("number: row k of the step table")
+        parts.append(numbering_legend(solution))
     kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in geometry]
     if geometry.get("polyline"):
         kinds.append(str(geometry.get("polyline_name", "curve")))

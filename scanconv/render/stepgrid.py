@@ -13,7 +13,7 @@ from ..core.numeric import round_half_up
 from ..core.records import PixelFigure, ShadedMatrix, Solution
 from . import Options
 from .cells import marks_label
-from .figure import CELL, extent, grey_of, label_offset, numbering, step_labels
+from .figure import CELL, extent, grey_of, numbering_legend, step_labels
 from .mathml import esc
 from .stepper import Stepping
 
@@ -286,15 +286,7 @@ def legend(solution: Solution, st: Stepping, numbered: bool) -> str:
     if solution.marks and not geometry.get("control"):
         parts.append(f"\u00d7 {esc(marks_label(solution))}")
     if numbered:
-        how = numbering(solution)
-        if how == "order":
-            parts.append(f"number: {esc(str(geometry.get('order_name', 'plotting order')))}")
-        elif label_offset(solution):
-            parts.append("number: k + 1 for row k; 0: start")
-        elif how == "continued":
-            parts.append("number: row k (region 2 counts on)")
-        else:
-            parts.append("number: row k of the step table")
+        parts.append(esc(numbering_legend(solution)))
     return '<p class="sc-legend">' + "".join(f"<span>{p}</span>" for p in parts) + "</p>"
 
 

@@ -34,9 +34,7 @@ def topic(name: str) -> Topic:
     """The topic called ``name``, or :class:`InputError` listing the names."""
     found = {t.name: t for t in topics()}
     if name not in found:
-        raise InputError(
-            f"unknown theory topic {name!r} (scanconv theory --list names them)", "topic"
-        )
+        raise InputError(f"unknown theory topic {name!r} (choose from {', '.join(found)})", "topic")
     return found[name]
 
 
