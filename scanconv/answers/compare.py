@@ -20,23 +20,16 @@ from typing import Any
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt, fmt_short, normalize
 from ..core.records import Pixel, PixelFigure, Solution, Table, heading, rule
+from .methods import METHODS, compared
 
-LINE_METHODS = ("basic", "dda", "bresenham")
-"""The line algorithms compared, in the order of the table's columns."""
+LINE_METHODS = compared("line")
+"""The line algorithms compared, in the order of the table's columns (their records' order)."""
 
-CIRCLE_METHODS = ("midpoint", "bresenham", "polynomial", "trig", "symmetric-dda")
+CIRCLE_METHODS = compared("circle")
 """The circle methods compared; the first is the reference the others are measured against."""
 
-NAMES = {
-    "basic": "basic",
-    "dda": "DDA",
-    "bresenham": "Bresenham",
-    "midpoint": "midpoint",
-    "polynomial": "polynomial",
-    "trig": "trig",
-    "symmetric-dda": "sym. DDA",
-}
-"""Display names of the methods (table headings)."""
+NAMES = {m.name: m.short for m in METHODS.values() if m.command in ("line", "circle") and m.short}
+"""Display names of the methods (table headings), from their records."""
 
 SHORT = {"bresenham": "Bresenham", "polynomial": "poly", "trig": "trig", "symmetric-dda": "SDDA"}
 """Names of the circle methods in reason tags (``trig off``, ``SDDA twice``)."""

@@ -30,6 +30,7 @@ from ..core.numeric import (
 )
 from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, rule, worked
 from .errata import line_errata
+from .methods import method
 
 # --- Solutions: the exam answer around the steps -------------------------------------------
 
@@ -167,12 +168,7 @@ def line_solution(
         from .antialias import wu_solution
 
         return wu_solution(x1, y1, x2, y2)
-    if algo == "bresenham":
-        sol = _bresenham_solution(x1, y1, x2, y2, knobs["tie"], layout, knobs["start"])
-    elif algo == "dda":
-        sol = _dda_solution(x1, y1, x2, y2, knobs["rounding"], knobs["start"])
-    else:
-        sol = _basic_solution(x1, y1, x2, y2, knobs["rounding"])
+    sol = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)
     if annotate:
         ends = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
         extra = [convention_note("line", convention, knobs)]
@@ -227,7 +223,7 @@ def _theory(
         if code:
             swapped = knobs.get("start") == "swap" and (dy if steep else dx) < 0
             tables.append(theory.dda_code(steep, sign, knobs["rounding"], swapped))
-    else:
+    elif algo == "basic":
         if derive:
             sol.derived = (
                 *sol.derived,
@@ -236,6 +232,8 @@ def _theory(
             )
         if code:
             tables.append(theory.basic_code(steep, knobs["rounding"]))
+    else:  # a method whose record names no derivation (wu) is refused before this
+        method("line", algo).load("derivation" if derive else "pseudocode")
     sol.tables = (*sol.tables, *tables)
 
 
@@ -481,3 +479,27 @@ def _basic_solution(
         geometry={"line": (x1, y1, x2, y2)},
         notes=(f"Each {mnr} is computed exactly and {ROUNDING_TEXT[rounding]}.",),
     )
+
+
+# --- The answer builders the method records name (one signature for every line method) -----
+
+
+def bresenham_answer(
+    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
+) -> Solution:
+    """Bresenham's line (record ``line/bresenham``) with its conventions ``knobs``."""
+    return _bresenham_solution(x1, y1, x2, y2, knobs["tie"], layout, knobs["start"])
+
+
+def dda_answer(
+    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
+) -> Solution:
+    """The DDA (record ``line/dda``); it has one layout."""
+    return _dda_solution(x1, y1, x2, y2, knobs["rounding"], knobs["start"])
+
+
+def basic_answer(
+    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
+) -> Solution:
+    """The basic line algorithm (record ``line/basic``); it has one layout."""
+    return _basic_solution(x1, y1, x2, y2, knobs["rounding"])

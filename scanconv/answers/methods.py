@@ -1,0 +1,368 @@
+"""One declaration per method: the method records.
+
+Every method of every command is one :class:`Method` record in :data:`METHODS`, keyed
+``"command/method"``. A record holds or names (as ``"module:attribute"``, imported on first
+use by :meth:`Method.load`, so that reading the table costs no start-up time):
+
+- ``answer``: the function that builds the worked answer;
+- ``generator``: the step generator (an algorithm yielding one step record at a time);
+- ``derivation`` and ``pseudocode``: the ``--derive`` and ``--algorithm`` pieces;
+- ``model``: the marking model (follow-through marking from any state);
+- ``raster``: the bulk rasterizer of :mod:`scanconv.raster`;
+- ``row_cost``: the relative CPU cost of one table row (Bresenham's line is 1), which the work
+  budget multiplies by the number of rows;
+- ``knobs``: the conventions that apply (read from
+  :data:`scanconv.algorithms.conventions.KNOBS`, where each knob lists its methods).
+
+A piece a method does not have is ``None`` with its reason in ``missing``, so that
+``tests/test_methods.py`` can walk every record and fail on a piece that is neither there nor
+explained. Asking for a method that has no record raises :class:`InputError` (never a silent
+fall-through to another method):
+
+>>> method("line", "dda").title
+'DDA line algorithm'
+>>> method("line", "midpoint-x")
+Traceback (most recent call last):
+...
+scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from basic, dda, bresenham, wu)
+>>> method("circle", "midpoint").knobs
+('tie', 'p0', 'loop', 'update')
+>>> methods_of("ellipse")
+('midpoint',)
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import Any, NamedTuple
+
+from ..core.checks import InputError
+
+PIECES = ("answer", "generator", "derivation", "pseudocode", "model", "raster")
+"""The named pieces of a record, each ``"module:attribute"`` or ``None`` (with a reason)."""
+
+_A = "scanconv.answers."
+_G = "scanconv.algorithms."
+
+
+class Method(NamedTuple):
+    """One method of one command, with every piece the layers need (module docstring)."""
+
+    command: str
+    """The command (``line``, ``circle``, ``antialias``, ...)."""
+    name: str
+    """The method's name as ``--algo``/``--method`` and the API's ``method=`` take it."""
+    title: str
+    """The notes' name for it (what an answer, a practice question and the marking say)."""
+    answer: str
+    generator: str | None = None
+    derivation: str | None = None
+    pseudocode: str | None = None
+    model: str | None = None
+    raster: str | None = None
+    row_cost: float = 1.0
+    missing: tuple[tuple[str, str], ...] = ()
+    """``(piece, reason)`` for every piece that is ``None``."""
+    short: str = ""
+    """The name in a comparison table's heading (``compare``); empty: not compared."""
+
+    @property
+    def key(self) -> str:
+        return f"{self.command}/{self.name}"
+
+    @property
+    def knobs(self) -> tuple[str, ...]:
+        """The conventions that apply to this method, by knob name."""
+        from ..algorithms.conventions import KNOBS
+
+        return tuple(n for n, k in KNOBS.items() if k.applies_to(self.command, self.name))
+
+    def reason(self, piece: str) -> str | None:
+        """Why ``piece`` is absent (``None`` when it is there or unexplained)."""
+        return dict(self.missing).get(piece)
+
+    def load(self, piece: str) -> Any:
+        """The object a piece names, imported now; :class:`InputError` if the method has none.
+
+        >>> method("line", "bresenham").load("generator").__name__
+        'bresenham'
+        """
+        ref = getattr(self, piece)
+        if ref is None:
+            why = self.reason(piece) or "not available"
+            raise InputError(f"{self.command} {self.name} has no {piece}: {why}", "method")
+        module, _, attr = ref.partition(":")
+        return getattr(importlib.import_module(module), attr)
+
+
+_NO_DERIVATION = "the notes derive no decision parameter for it"
+_NO_MODEL = "marked on its pixels and values only (no decision parameter to follow through)"
+_NO_RASTER = "no bulk form: the answer is the computation itself"
+
+_LINE = (
+    Method(
+        "line",
+        "basic",
+        "basic line algorithm (y = mx + c)",
+        _A + "line:basic_answer",
+        _G + "lines:basic",
+        _A + "theory:dda_derivation",
+        _A + "theory:basic_code",
+        None,
+        _G + "raster:line",
+        1.2,
+        (("model", _NO_MODEL),),
+        "basic",
+    ),
+    Method(
+        "line",
+        "dda",
+        "DDA line algorithm",
+        _A + "line:dda_answer",
+        _G + "lines:dda",
+        _A + "theory:dda_derivation",
+        _A + "theory:dda_code",
+        _A + "models:DDALine",
+        _G + "raster:line",
+        1.2,
+        (),
+        "DDA",
+    ),
+    Method(
+        "line",
+        "bresenham",
+        "Bresenham's line algorithm",
+        _A + "line:bresenham_answer",
+        _G + "lines:bresenham",
+        _A + "theory:bresenham_line_derivation",
+        _A + "theory:bresenham_line_code",
+        _A + "models:BresenhamLine",
+        _G + "raster:line",
+        1.0,
+        (),
+        "Bresenham",
+    ),
+    Method(
+        "line",
+        "wu",
+        "Xiaolin Wu's anti-aliased line",
+        _A + "antialias:wu_solution",
+        _G + "wu:wu",
+        None,
+        None,
+        None,
+        "scanconv.raster:line_aa",
+        10.0,
+        (
+            ("derivation", "the notes give Wu's line without a derivation"),
+            ("pseudocode", "the notes give Wu's line without pseudocode"),
+            ("model", "an intensity table: marked on its pixels only"),
+        ),
+    ),
+)
+
+_CIRCLE_TITLES = {
+    "midpoint": "midpoint circle algorithm (the notes' Bresenham's circle, p0 = 1 - r)",
+    "bresenham": "Bresenham's circle algorithm (d0 = 3 - 2r)",
+    "polynomial": "polynomial method (y = sqrt(r^2 - x^2))",
+    "general": "general method of circle drawing",
+    "trig": "trigonometric method (x = r cos t, y = r sin t)",
+    "symmetric-dda": "symmetric DDA circle",
+}
+_CIRCLE_MODELS = {
+    "midpoint": "MidpointCircle",
+    "bresenham": "BresenhamCircle",
+    "general": "GeneralCircle",
+}
+_CIRCLE_COSTS = {"symmetric-dda": 6.0, "trig": 3.0, "polynomial": 2.0}
+_CIRCLE_SHORT = {
+    "midpoint": "midpoint",
+    "bresenham": "Bresenham",
+    "polynomial": "polynomial",
+    "trig": "trig",
+    "symmetric-dda": "sym. DDA",
+}
+
+
+def _circle(name: str) -> Method:
+    gen = name.replace("-", "_")
+    derivation = {
+        "midpoint": "midpoint_circle_derivation",
+        "general": "general_circle_derivation",
+        "bresenham": "bresenham_circle_derivation",
+    }.get(name)
+    model = _CIRCLE_MODELS.get(name)
+    missing = []
+    if derivation is None:
+        missing.append(("derivation", "computed from the circle's equation, nothing to derive"))
+    if model is None:
+        missing.append(("model", _NO_MODEL))
+    return Method(
+        "circle",
+        name,
+        _CIRCLE_TITLES[name],
+        _A + "circle:circle_solution",
+        _G + f"circles:{gen}",
+        None if derivation is None else _A + f"theory:{derivation}",
+        _A + "theory:circle_code",
+        None if model is None else _A + f"models:{model}",
+        _G + "raster:circle" if name == "midpoint" else None,
+        _CIRCLE_COSTS.get(name, 1.0),
+        (
+            *missing,
+            *(() if name == "midpoint" else (("raster", "raster.circle is the midpoint circle"),)),
+        ),
+        _CIRCLE_SHORT.get(name, ""),
+    )
+
+
+_CIRCLE = tuple(_circle(n) for n in _CIRCLE_TITLES)
+
+_ELLIPSE = (
+    Method(
+        "ellipse",
+        "midpoint",
+        "midpoint ellipse algorithm",
+        _A + "ellipse:ellipse_solution",
+        _G + "ellipses:midpoint_ellipse",
+        _A + "theory:ellipse_derivation",
+        _A + "theory:ellipse_code",
+        _A + "models:MidpointEllipse",
+        _G + "raster:ellipse",
+        1.5,
+    ),
+)
+
+
+def _plain(
+    command: str,
+    name: str,
+    title: str,
+    answer: str,
+    generator: str | None,
+    *,
+    raster: str | None = None,
+    row_cost: float = 1.0,
+    no_generator: str = "",
+) -> Method:
+    """A method with no derivation, pseudocode or marking model (each said why)."""
+    missing = [
+        ("derivation", _NO_DERIVATION),
+        ("pseudocode", "the notes give it as prose steps, shown in the working"),
+        ("model", _NO_MODEL),
+    ]
+    if raster is None:
+        missing.append(("raster", _NO_RASTER))
+    if generator is None:
+        missing.append(("generator", no_generator))
+    return Method(
+        command,
+        name,
+        title,
+        answer,
+        generator,
+        None,
+        None,
+        None,
+        raster,
+        row_cost,
+        tuple(missing),
+    )
+
+
+_CURVES = (
+    _plain("bezier", "bernstein", "Bezier curve (Bernstein form)", _A + "bezier:bezier_solution",
+           _G + "bezier:bezier"),
+    _plain("bezier", "de-casteljau", "de Casteljau's construction",
+           _A + "bezier:bezier_at_solution", _G + "bezier:de_casteljau"),
+    _plain("bspline", "cox-de-boor", "B-spline curve (Cox-de Boor)",
+           _A + "bspline:bspline_solution", _G + "bspline:bspline", row_cost=3.0),
+    _plain("continuity", "bezier-joins", "continuity of joined Bezier segments",
+           _A + "continuity:continuity_solution", _G + "bezier:bezier"),
+    _plain("local-control", "bezier-vs-bspline", "local control: Bezier against B-spline",
+           _A + "local_control:local_control_solution", _G + "bspline:bspline", row_cost=3.0),
+    *(
+        _plain("parametric", kind, f"parametric {kind}", _A + "parametric:parametric_solution",
+               _G + "parametric:parametric", row_cost=2.0)
+        for kind in ("line", "circle", "ellipse", "parabola", "custom")
+    ),
+)  # fmt: skip
+
+_PROCESS = (
+    _plain("polygon", "scan-line", "scan-line polygon fill", _A + "polygon:polygon_solution",
+           _G + "polygon:scanline_fill", raster="scanconv.raster:polygon", row_cost=2.0),
+    _plain("fill", "boundary", "boundary fill", _A + "fill:seed_fill_solution",
+           _G + "seedfill:seed_fill"),
+    _plain("fill", "flood", "flood fill", _A + "fill:seed_fill_solution", _G + "seedfill:seed_fill"),
+    _plain("antialias", "area", "area sampling", _A + "antialias:antialias_solution",
+           _G + "coverage:area_coverage", row_cost=4.0),
+    _plain("antialias", "supersample", "supersampling", _A + "antialias:antialias_solution",
+           _G + "coverage:supersample_coverage", row_cost=4.0),
+    _plain("antialias", "wu", "Xiaolin Wu's anti-aliased line", _A + "antialias:antialias_solution",
+           _G + "wu:wu", raster="scanconv.raster:line_aa", row_cost=10.0),
+    _plain("clip", "cohen-sutherland", "Cohen-Sutherland line clipping",
+           _A + "clip:clip_line_solution", _G + "clipping:cohen_sutherland"),
+    _plain("clip", "liang-barsky", "Liang-Barsky line clipping", _A + "clip:clip_line_solution",
+           _G + "clipping:liang_barsky"),
+    _plain("clip", "sutherland-hodgman", "Sutherland-Hodgman polygon clipping",
+           _A + "clip_polygon:clip_polygon_solution", None,
+           no_generator="the answer builds its four passes directly"),
+    _plain("transform", "composite", "composite 2D transformation",
+           _A + "transform:transform_solution", _G + "transform:compose"),
+    _plain("viewport", "window-to-viewport", "window-to-viewport mapping",
+           _A + "viewport:viewport_solution", _G + "transform:map_to_viewport"),
+    _plain("pipeline", "line", "the scan-conversion process for a line",
+           _A + "pipeline:pipeline_line_solution", None, row_cost=1.5,
+           no_generator="clips, maps and then runs the line's own method"),
+    _plain("pipeline", "polygon", "the scan-conversion process for a polygon",
+           _A + "pipeline:pipeline_polygon_solution", None, row_cost=2.0,
+           no_generator="clips, maps and then fills with the polygon's own method"),
+)  # fmt: skip
+
+_IMAGE = (
+    _plain("sample", "uniform", "sampling and quantization", _A + "sample:sample_solution",
+           _G + "sample:sample_levels"),
+    _plain("quantize", "uniform", "uniform quantization", _A + "quantize:quantize_solution", None,
+           no_generator="one closed-form row per level"),
+    _plain("image", "ramp", "the notes' grayscale ramp", _A + "ramp:ramp_solution",
+           _G + "ramp:ramp"),
+    _plain("storage", "formula", "storage requirement", _A + "storage:storage_solution",
+           _G + "storage:storage_bits"),
+    *(
+        _plain("color", model, f"{model.upper()} colour model", _A + "color:color_solution",
+               None, no_generator="a conversion, worked in one table")
+        for model in ("rgb", "cmy", "hsv", "hsi", "grey")
+    ),
+)  # fmt: skip
+
+METHODS: dict[str, Method] = {
+    m.key: m for m in (*_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE)
+}
+"""Every method record, by ``"command/method"``."""
+
+
+def methods_of(command: str) -> tuple[str, ...]:
+    """The method names of ``command``, in declaration order."""
+    return tuple(m.name for m in METHODS.values() if m.command == command)
+
+
+def compared(command: str) -> tuple[str, ...]:
+    """The methods ``scanconv compare`` sets side by side, in column order.
+
+    >>> compared("line")
+    ('basic', 'dda', 'bresenham')
+    """
+    return tuple(m.name for m in METHODS.values() if m.command == command and m.short)
+
+
+def method(command: str, name: str) -> Method:
+    """The record of ``command``'s method ``name``; :class:`InputError` if there is none."""
+    record = METHODS.get(f"{command}/{name}")
+    if record is None:
+        names = methods_of(command)
+        if not names:
+            raise InputError(f"unknown command {command!r}", "command")
+        raise InputError(
+            f"unknown {command} method {name!r} (choose from {', '.join(names)})", "method"
+        )
+    return record
