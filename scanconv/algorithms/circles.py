@@ -32,8 +32,9 @@ from fractions import Fraction
 
 from ..core.numeric import Number
 from ..core.records import Move, Pixel, Step, new_step
+from .choices import Rounding
 from .circle_choices import CircleMethod
-from .conventions import ROUNDINGS, Rounding, rounder
+from .conventions import ROUNDINGS, rounder
 
 __all__ = ["ROUNDINGS", "Rounding", "rounder"]
 

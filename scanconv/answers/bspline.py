@@ -8,7 +8,6 @@ from fractions import Fraction
 from typing import Any, NamedTuple
 
 from ..algorithms.bspline import (
-    MAX_DEGREE,
     basis_dense,
     basis_levels,
     bspline,
@@ -18,6 +17,7 @@ from ..algorithms.bspline import (
     span,
 )
 from ..algorithms.curve_limits import (
+    MAX_DEGREE,
     Point,
     Value,
     check_exact,
