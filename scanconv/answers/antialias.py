@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 from fractions import Fraction
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..algorithms import coverage as cov
 from ..algorithms.image_limits import check_levels
@@ -177,6 +177,148 @@ def _p(v: Number) -> str:
     return f"({s})" if s.startswith("-") else s
 
 
+class _Region(NamedTuple):
+    """A shape to sample: its title, pixel values, exact area (if known) and its working."""
+
+    title: str
+    values: dict[Pixel, Any]
+    exact_total: Number | None
+    derived: list[Quantity]
+    notes: list[str]
+    geometry: dict[str, Any]
+
+
+def _line_params(params: Sequence[Number]) -> tuple[Number, Number, Number, Number]:
+    if len(params) != 4:
+        raise InputError(f"a line needs x1 y1 x2 y2, got {len(params)} numbers", "line")
+    x1, y1, x2, y2 = (normalize(v) for v in params)
+    return x1, y1, x2, y2
+
+
+def _coverage(
+    pts: Sequence[tuple[Number, Number]], method: str, n: int, rule_name: str
+) -> tuple[dict[Pixel, Any], Number | None]:
+    if method == "area":
+        return dict(cov.area_coverage(pts, rule_name)), cov.region_area(pts, rule_name)
+    return dict(cov.supersample_coverage(pts, n, rule_name)), None
+
+
+def _line_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
+    x1, y1, x2, y2 = _line_params(params)
+    pts = cov.line_strip(x1, y1, x2, y2)
+    minor = "y" if abs(Fraction(y2 - y1)) <= abs(Fraction(x2 - x1)) else "x"
+    strip = worked(
+        "strip",
+        pts,
+        "\\text{line one pixel wide along } "
+        + minor
+        + ": "
+        + ", ".join(f"({fmt_short(x)}, {fmt_short(y)})" for x, y in pts),
+    )
+    note = (
+        f"The line is the parallelogram one pixel thick along {minor}, from end point to "
+        "end point: exact, and each column along the line is covered by 1 in total."
+    )
+    title = f"line ({fmt_short(x1)}, {fmt_short(y1)}) to ({fmt_short(x2)}, {fmt_short(y2)})"
+    values, exact = _coverage(pts, method, n, rule_name)
+    return _Region(title, values, exact, [strip], [note], {"line": (x1, y1, x2, y2)})
+
+
+def _polygon_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
+    pts, _ = check_polygon(vertices_from_coords(params))
+    geometry = {
+        "polyline": [(float(x), float(y)) for x, y in (*pts, pts[0])],
+        "polyline_name": "polygon",
+    }
+    values, exact = _coverage(pts, method, n, rule_name)
+    title = f"polygon of {len(pts)} vertices ({rule_name} rule)"
+    return _Region(title, values, exact, [], [], geometry)
+
+
+def _circle_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
+    if len(params) not in (1, 3):
+        raise InputError(f"a circle needs r [xc yc], got {len(params)} numbers", "circle")
+    r = check_integer(params[0], "radius", negative=False)
+    xc, yc = (
+        (check_integer(v, n_) for v, n_ in zip(params[1:], ("xc", "yc"), strict=False))
+        if len(params) == 3
+        else (0, 0)
+    )
+    ring = rule(
+        "ring",
+        f"\\text{{ring: }} {r} - 1/2 \\le d \\le {r} + 1/2 \\text{{ around }} ({xc}, {yc})",
+    )
+    notes = []
+    values: dict[Pixel, Any]
+    if method == "area":
+        values = dict(cov.ring_area(r, xc, yc))
+        notes.append(
+            "A circle's covered areas involve arcsin: they are computed in floating point "
+            "from the closed form (the ring's total is π((r + 1/2)² - (r - 1/2)²) = 2π·r)."
+        )
+    else:
+        values = dict(cov.ring_supersample(r, n, xc, yc))
+    title = f"circle r = {r}, centre ({xc}, {yc}), one pixel wide"
+    return _Region(title, values, None, [ring], notes, {"circle": (xc, yc, r)})
+
+
+_REGIONS = {"line": _line_region, "polygon": _polygon_region, "circle": _circle_region}
+
+
+def _sampling_rules(method: str, n: int) -> list[Quantity]:
+    if method == "area":
+        return [
+            rule(
+                "intensity",
+                r"I(i, j) = \text{area of the shape inside } [i - 1/2, i + 1/2] \times [j - 1/2, j + 1/2]",
+            )
+        ]
+    return [
+        rule(
+            "samples",
+            f"{n} \\times {n} = {n * n} \\text{{ samples per pixel, at }} (i - 1/2 + (2a + 1)/{2 * n},\\ "
+            f"j - 1/2 + (2b + 1)/{2 * n}),\\ a, b = 0 \\ldots {n - 1}",
+        ),
+        rule("intensity", f"I = \\text{{samples inside}} / {n * n}"),
+    ]
+
+
+def _total(values: dict[Pixel, Any], exact_total: Number | None) -> Quantity:
+    """The sum of the intensities, against the shape's exact area when that is known."""
+    if any(isinstance(v, float) for v in values.values()):
+        total = sum(float(v) for v in values.values())
+        return worked("total", total, f"\\text{{sum of }} I \\approx {total:.3f}")
+    exact_sum = normalize(sum(values.values(), Fraction(0)))
+    text = f"\\text{{sum of }} I = {fmt_short(exact_sum)}"
+    if exact_total is not None:
+        if exact_sum == exact_total:
+            text += " = \\text{the exact area of the shape}"
+        else:
+            text += f" \\ne {fmt_short(exact_total)} = \\text{{the exact area of the shape}}"
+    return worked("total", exact_sum, text)
+
+
+def _intensity_table(
+    order: list[Pixel], values: dict[Pixel, Any], levels_of: dict[Pixel, int]
+) -> Table:
+    def rows() -> Iterator[tuple[Any, ...]]:
+        for p in order:
+            v = values[p]
+            exact = "-" if isinstance(v, float) else fmt_exact(v)
+            yield (p, v, exact, levels_of[p])
+
+    return Table(
+        "Intensities (pixels with I > 0, bottom row first)",
+        (
+            heading("pixel", r"\text{pixel } (i, j)"),
+            heading("intensity", "I", 3),
+            heading("exact", r"I \text{ (exact)}"),
+            heading("level", r"\text{level}"),
+        ),
+        rows,
+    )
+
+
 def antialias_solution(
     shape: str,
     params: Sequence[Number],
@@ -198,124 +340,25 @@ def antialias_solution(
     if method == "wu":
         if shape != "line":
             raise InputError(f"wu draws lines only, not a {shape}", "method")
-        if len(params) != 4:
-            raise InputError(f"a line needs x1 y1 x2 y2, got {len(params)} numbers", "line")
-        x1, y1, x2, y2 = params
-        return wu_solution(x1, y1, x2, y2, levels=L)
+        return wu_solution(*_line_params(params), levels=L)
     if method not in ("area", "supersample"):
         raise InputError(f"unknown method {method!r} (choose from area, supersample, wu)", "method")
     n = cov.check_samples(samples) if method == "supersample" else 1
     check_rule(rule_name)
-    derived: list[Quantity] = []
-    notes: list[str] = []
-    exact_total: Number | None = None
-    geometry: dict[str, Any] = {}
-    if shape in ("line", "polygon"):
-        if shape == "line":
-            if len(params) != 4:
-                raise InputError(f"a line needs x1 y1 x2 y2, got {len(params)} numbers", "line")
-            x1, y1, x2, y2 = (normalize(v) for v in params)
-            pts = cov.line_strip(x1, y1, x2, y2)
-            minor = "y" if abs(Fraction(y2 - y1)) <= abs(Fraction(x2 - x1)) else "x"
-            derived.append(
-                worked(
-                    "strip",
-                    pts,
-                    "\\text{line one pixel wide along } "
-                    + minor
-                    + ": "
-                    + ", ".join(f"({fmt_short(x)}, {fmt_short(y)})" for x, y in pts),
-                )
-            )
-            notes.append(
-                f"The line is the parallelogram one pixel thick along {minor}, from end point to "
-                "end point: exact, and each column along the line is covered by 1 in total."
-            )
-            title = f"line ({fmt_short(x1)}, {fmt_short(y1)}) to ({fmt_short(x2)}, {fmt_short(y2)})"
-            geometry["line"] = (x1, y1, x2, y2)
-        else:
-            pts, _ = check_polygon(vertices_from_coords(params))
-            title = f"polygon of {len(pts)} vertices ({rule_name} rule)"
-            geometry["polyline"] = [(float(x), float(y)) for x, y in (*pts, pts[0])]
-            geometry["polyline_name"] = "polygon"
-        if method == "area":
-            values: dict[Pixel, Any] = dict(cov.area_coverage(pts, rule_name))
-            exact_total = cov.region_area(pts, rule_name)
-        else:
-            values = dict(cov.supersample_coverage(pts, n, rule_name))
-    elif shape == "circle":
-        if len(params) not in (1, 3):
-            raise InputError(f"a circle needs r [xc yc], got {len(params)} numbers", "circle")
-        r = check_integer(params[0], "radius", negative=False)
-        xc, yc = (
-            (check_integer(v, n_) for v, n_ in zip(params[1:], ("xc", "yc"), strict=False))
-            if len(params) == 3
-            else (0, 0)
-        )
-        title = f"circle r = {r}, centre ({xc}, {yc}), one pixel wide"
-        derived.append(
-            rule(
-                "ring",
-                f"\\text{{ring: }} {r} - 1/2 \\le d \\le {r} + 1/2 \\text{{ around }} ({xc}, {yc})",
-            )
-        )
-        geometry["circle"] = (xc, yc, r)
-        if method == "area":
-            values = dict(cov.ring_area(r, xc, yc))
-            notes.append(
-                "A circle's covered areas involve arcsin: they are computed in floating point "
-                "from the closed form (the ring's total is π((r + 1/2)² - (r - 1/2)²) = 2π·r)."
-            )
-        else:
-            values = dict(cov.ring_supersample(r, n, xc, yc))
-    else:
+    if shape not in _REGIONS:
         raise InputError(f"unknown shape {shape!r} (choose from line, circle, polygon)", "shape")
-    if method == "area":
-        derived.append(
-            rule(
-                "intensity",
-                r"I(i, j) = \text{area of the shape inside } [i - 1/2, i + 1/2] \times [j - 1/2, j + 1/2]",
-            )
+    region = _REGIONS[shape](params, method, n, rule_name)
+    values, title = region.values, region.title
+    derived = [*region.derived, *_sampling_rules(method, n)]
+    notes = list(region.notes)
+    if method != "area" and shape != "circle":
+        notes.append(
+            "A sample is inside by the scan-line fill's rules (half-open spans and edges)."
         )
-    else:
-        derived.append(
-            rule(
-                "samples",
-                f"{n} \\times {n} = {n * n} \\text{{ samples per pixel, at }} (i - 1/2 + (2a + 1)/{2 * n},\\ "
-                f"j - 1/2 + (2b + 1)/{2 * n}),\\ a, b = 0 \\ldots {n - 1}",
-            )
-        )
-        derived.append(rule("intensity", f"I = \\text{{samples inside}} / {n * n}"))
-        if shape != "circle":
-            notes.append(
-                "A sample is inside by the scan-line fill's rules (half-open spans and edges)."
-            )
-    total: Number | float = (
-        normalize(sum(values.values(), Fraction(0)))
-        if not any(isinstance(v, float) for v in values.values())
-        else sum(float(v) for v in values.values())
-    )
-    if isinstance(total, float):
-        derived.append(worked("total", total, f"\\text{{sum of }} I \\approx {total:.3f}"))
-    else:
-        text = f"\\text{{sum of }} I = {fmt_short(total)}"
-        if exact_total is not None:
-            if total == exact_total:
-                text += " = \\text{the exact area of the shape}"
-            else:
-                text += f" \\ne {fmt_short(exact_total)} = \\text{{the exact area of the shape}}"
-        derived.append(worked("total", total, text))
-    derived.append(_level_rule(L))
+    derived += [_total(values, region.exact_total), _level_rule(L)]
     notes.append(SHADING)
     levels_of = {p: cov.quantize(v, L) for p, v in values.items()}
     order = list(values)
-
-    def rows() -> Iterator[tuple[Any, ...]]:
-        for p in order:
-            v = values[p]
-            exact = "-" if isinstance(v, float) else fmt_exact(v)
-            yield (p, v, exact, levels_of[p])
-
     picture = _picture({p: lv for p, lv in levels_of.items() if lv}, L)
     name = "Unweighted area sampling" if method == "area" else f"Supersampling {n} x {n}"
     return Solution(
@@ -331,20 +374,9 @@ def antialias_solution(
         ),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=(
-            Table(
-                "Intensities (pixels with I > 0, bottom row first)",
-                (
-                    heading("pixel", r"\text{pixel } (i, j)"),
-                    heading("intensity", "I", 3),
-                    heading("exact", r"I \text{ (exact)}"),
-                    heading("level", r"\text{level}"),
-                ),
-                rows,
-            ),
-        ),
+        tables=(_intensity_table(order, values, levels_of),),
         pixels=lambda: iter(order),
         bbox=_bbox(order),
         figures=(picture,) if picture else (),
-        geometry={**geometry, "shades": levels_of, "levels": L, "numbering": "none"},
+        geometry={**region.geometry, "shades": levels_of, "levels": L, "numbering": "none"},
     )
