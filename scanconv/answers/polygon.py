@@ -4,7 +4,7 @@ removed), the conventions stated as notes, and the outline drawn with the fill."
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from fractions import Fraction
 from typing import Any
 
@@ -164,6 +164,54 @@ def _scan_row(s: ScanLine, labels: dict[int, str], edges: dict[int, Edge], nonze
     )
 
 
+def _polygon_notes(
+    pts: Sequence[Point], rule_name: str, kind: str, horizontal: list[str], dropped: int
+) -> list[str]:
+    """The notes: the pixel, vertex and fill rules, and what was dropped or crosses."""
+    notes = [PIXEL_RULE, VERTEX_RULE, RULE_TEXT[rule_name]]
+    if horizontal:
+        notes.append(
+            "Horizontal edges dropped (their neighbours bound the spans): "
+            + ", ".join(horizontal)
+            + "."
+        )
+    if dropped:
+        notes.append(
+            f"{dropped} repeated vertex (consecutive, or the first repeated last) dropped."
+        )
+    if kind == "self-intersecting":
+        notes.append(
+            "The polygon crosses itself: even-odd leaves the parts covered twice empty, "
+            "nonzero fills them when both windings agree."
+        )
+    if any(normalize(c) != round_half_up(c) for p in pts for c in p):
+        notes.append("The outline joins the vertices rounded half up (Bresenham needs integers).")
+    return notes
+
+
+def _rounded_bbox(pts: Sequence[Point]) -> tuple[int, int, int, int]:
+    rounded = [(round_half_up(x), round_half_up(y)) for x, y in pts]
+    xs, ys = [p[0] for p in rounded], [p[1] for p in rounded]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _polygon_figures(
+    pts: Sequence[Point], bbox: tuple[int, int, int, int], pixels: Callable[[], Iterator[Pixel]]
+) -> tuple[PixelFigure, ...]:
+    """The outline and the fill, when they fit a figure."""
+    if bbox[2] - bbox[0] + 3 > MAX_GRID_CELLS or bbox[3] - bbox[1] + 3 > MAX_GRID_CELLS:
+        return ()
+    return (
+        PixelFigure(
+            tuple(pixels()),
+            tuple(outline_pixels(pts)),
+            bbox,
+            legend="# = filled, o = outline (Bresenham edges) not filled, @ = outline and filled",
+            title="Outline and fill:",
+        ),
+    )
+
+
 def polygon_solution(coords: Sequence[Number], rule_name: str = "even-odd") -> Solution:
     """The scan-line fill of the polygon ``x1 y1 x2 y2 ...`` as a worked answer.
 
@@ -201,25 +249,7 @@ def polygon_solution(coords: Sequence[Number], rule_name: str = "even-odd") -> S
         rule("x_next", r"x_{k+1} = x_k + 1/m \text{ (each active edge, to the next scan line)}"),
         Quantity("shape", kind, f"the polygon is {kind}", f"\\text{{the polygon is {kind}}}"),
     ]
-    notes = [PIXEL_RULE, VERTEX_RULE, RULE_TEXT[rule_name]]
-    if horizontal:
-        notes.append(
-            "Horizontal edges dropped (their neighbours bound the spans): "
-            + ", ".join(edge_label[i] for i in horizontal)
-            + "."
-        )
-    if dropped:
-        notes.append(
-            f"{dropped} repeated vertex (consecutive, or the first repeated last) dropped."
-        )
-    if kind == "self-intersecting":
-        notes.append(
-            "The polygon crosses itself: even-odd leaves the parts covered twice empty, "
-            "nonzero fills them when both windings agree."
-        )
-    fractional = any(normalize(c) != round_half_up(c) for p in pts for c in p)
-    if fractional:
-        notes.append("The outline joins the vertices rounded half up (Bresenham needs integers).")
+    notes = _polygon_notes(pts, rule_name, kind, [edge_label[i] for i in horizontal], dropped)
 
     def et_rows() -> Iterator[tuple[Any, ...]]:
         for e in edges:
@@ -245,24 +275,8 @@ def polygon_solution(coords: Sequence[Number], rule_name: str = "even-odd") -> S
                 for x in range(f, last_x + 1):
                     yield (x, s.y)
 
-    rounded = [(round_half_up(x), round_half_up(y)) for x, y in pts]
-    bbox = (
-        min(p[0] for p in rounded),
-        min(p[1] for p in rounded),
-        max(p[0] for p in rounded),
-        max(p[1] for p in rounded),
-    )
-    figures: tuple[PixelFigure, ...] = ()
-    if bbox[2] - bbox[0] + 3 <= MAX_GRID_CELLS and bbox[3] - bbox[1] + 3 <= MAX_GRID_CELLS:
-        figures = (
-            PixelFigure(
-                tuple(pixels()),
-                tuple(outline_pixels(pts)),
-                bbox,
-                legend="# = filled, o = outline (Bresenham edges) not filled, @ = outline and filled",
-                title="Outline and fill:",
-            ),
-        )
+    bbox = _rounded_bbox(pts)
+    figures = _polygon_figures(pts, bbox, pixels)
     shown = (
         ", ".join(f"{labels_v[i]}{pt(p)}" for i, p in enumerate(pts)) if n <= 8 else f"{n} vertices"
     )
