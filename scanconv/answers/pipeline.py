@@ -10,7 +10,7 @@ the question gives.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
 from ..algorithms.lines import ALGORITHMS
@@ -199,6 +199,50 @@ def _fill_rows(vertices: Sequence[tuple[Number, Number]], rule: str) -> Iterator
         )
 
 
+def _fill_stage(
+    dev: list[tuple[Number, Number]], rule: str, tables: list[Table], notes: list[str]
+) -> Callable[[], Iterator[Pixel]] | None:
+    """Stage 3 with ``fill``: the scan-line fill of the exact device polygon (its table and
+    note added), or ``None`` (noted) when the clipped polygon has no area."""
+    from ..algorithms.polygon import check_polygon, fill_pixels
+
+    try:
+        pts, _ = check_polygon(dev)
+    except InputError as err:
+        if "degenerate" not in str(err):
+            raise
+        notes.append(
+            "The clipped polygon has no area (it only touches the window): nothing is filled."
+        )
+        return None
+    tables.append(
+        Table(f"Stage 3, scan-line fill ({rule})", _FILL_COLUMNS, lambda: _fill_rows(pts, rule))
+    )
+    notes.append(
+        "A pixel is filled when its centre is inside: a span [xa, xb) fills ceil(xa) .. ceil(xb) - 1, and an edge counts on the scan lines y_min <= y < y_max (so shared edges are filled once)."
+    )
+    return lambda: iter(fill_pixels(pts, rule))
+
+
+def _outline_stage(
+    dev: list[tuple[Number, Number]], rounded: list[tuple[int, int]]
+) -> Callable[[], Iterator[Pixel]]:
+    """Stage 3 without ``fill``: the edges by Bresenham between the rounded vertices."""
+    from ..algorithms.polygon import MAX_FILL_CELLS, outline_pixels
+
+    length = sum(
+        max(abs(rounded[i][0] - rounded[i - 1][0]), abs(rounded[i][1] - rounded[i - 1][1]))
+        for i in range(len(rounded))
+    )
+    if length > MAX_FILL_CELLS:
+        raise InputError(
+            f"the outline in the viewport has about {length:,} pixels; at most "
+            f"{MAX_FILL_CELLS:,} are drawn",
+            "viewport",
+        )
+    return lambda: iter(outline_pixels(dev))
+
+
 def pipeline_polygon_solution(
     coords: Sequence[Number],
     window: Sequence[Number],
@@ -218,13 +262,7 @@ def pipeline_polygon_solution(
     >>> len(list(sol.pixels()))
     63
     """
-    from ..algorithms.polygon import (
-        MAX_FILL_CELLS,
-        RULES,
-        check_polygon,
-        fill_pixels,
-        outline_pixels,
-    )
+    from ..algorithms.polygon import RULES
 
     w = check_rect(window, "window", "window")
     v = check_rect(viewport, "viewport", "viewport")
@@ -278,41 +316,16 @@ def pipeline_polygon_solution(
     data["device"] = [list(p) for p in dev]
     rounded = [(round_half_up(x), round_half_up(y)) for x, y in dev]
     frame = tuple(round_half_up(c) for c in v)
-    box = (min(frame[0], *(p[0] for p in rounded)), min(frame[1], *(p[1] for p in rounded)),
-           max(frame[2], *(p[0] for p in rounded)), max(frame[3], *(p[1] for p in rounded)))  # fmt: skip
-    pixels: Any
+    xs, ys = [p[0] for p in rounded], [p[1] for p in rounded]
+    box = (min(frame[0], *xs), min(frame[1], *ys), max(frame[2], *xs), max(frame[3], *ys))
     if fill:
         derived.append(_stage(f"3. scan-line fill ({rule}), the device vertices kept exact"))
-        try:
-            pts, _ = check_polygon(dev)
-        except InputError as err:
-            if "degenerate" not in str(err):
-                raise
-            notes.append(
-                "The clipped polygon has no area (it only touches the window): nothing is filled."
-            )
+        pixels = _fill_stage(dev, rule, tables, notes)
+        if pixels is None:
             return answer()
-        tables.append(
-            Table(f"Stage 3, scan-line fill ({rule})", _FILL_COLUMNS, lambda: _fill_rows(pts, rule))
-        )
-        notes.append(
-            "A pixel is filled when its centre is inside: a span [xa, xb) fills ceil(xa) .. ceil(xb) - 1, and an edge counts on the scan lines y_min <= y < y_max (so shared edges are filled once)."
-        )
-        pixels = lambda: iter(fill_pixels(pts, rule))  # noqa: E731
     else:
         derived.append(_stage("3. draw the edges: Bresenham between the vertices rounded half up"))
-        n = len(rounded)
-        length = sum(
-            max(abs(rounded[i][0] - rounded[i - 1][0]), abs(rounded[i][1] - rounded[i - 1][1]))
-            for i in range(n)
-        )
-        if length > MAX_FILL_CELLS:
-            raise InputError(
-                f"the outline in the viewport has about {length:,} pixels; at most "
-                f"{MAX_FILL_CELLS:,} are drawn",
-                "viewport",
-            )
-        pixels = lambda: iter(outline_pixels(dev))  # noqa: E731
+        pixels = _outline_stage(dev, rounded)
     marks: tuple[Pixel, ...] = tuple(rect_outline(frame)) if fits(box) else ()  # type: ignore[arg-type]
     if marks:
         notes.append("In the grid, o marks the viewport's edge and # the pixels (@ both).")
