@@ -3,7 +3,6 @@ the pixels."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 
@@ -12,23 +11,16 @@ from ..algorithms.circles import (
     FLOAT_METHODS,
     METHODS,
     SDDA_MAX_RADIUS,
-    SQRT_PLACES,
     bresenham,
     general,
     images,
     midpoint,
-    polynomial,
-    sqrt6,
-    symmetric_dda,
     symmetric_pixels,
-    trig,
-    trig_last,
 )
 from ..algorithms.conventions import ROUNDING_TEXT, convention_note, resolve, rounder
 from ..core.checks import InputError, check_integer
 from ..core.numeric import (
     Number,
-    fmt,
     fmt_value,
     normalize,
 )
@@ -44,6 +36,7 @@ from ..core.records import (
     rule,
     worked,
 )
+from .circle_float import Parts, pixels_of, polynomial_parts, sdda_parts, trig_parts
 from .errata import circle_errata
 
 SYMMETRY_HEADS = (
@@ -97,6 +90,39 @@ def _start(r: int) -> Quantity:
     return worked("start", (0, r), f"\\text{{start }} (x_0, y_0) = (0, r) = (0, {r})")
 
 
+def _circle_method(method: str, rounding: str | None, layout: str) -> tuple[str, str | None]:
+    """The method's name (an alias resolved) and its rounding rule, checked."""
+    method = ALIASES.get(method, method)
+    if method not in METHODS:
+        names = ", ".join((*METHODS, *ALIASES))
+        raise InputError(f"unknown circle method {method!r} (choose from {names})", "method")
+    if rounding is not None and method not in FLOAT_METHODS:
+        rounder(rounding)
+        if rounding != "half-up":
+            raise InputError(
+                f"a rounding rule applies only to {', '.join(FLOAT_METHODS)}; "
+                f"{method} uses integers only",
+                "rounding",
+            )
+        rounding = None
+    if layout not in ("notes", "textbook"):
+        raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
+    return method, rounding
+
+
+def _circle_numbers(method: str, r: Number, xc: Number, yc: Number) -> tuple[int, int, int]:
+    """The radius and the centre as integers, checked (the symmetric DDA's radius bounded)."""
+    ir = check_integer(r, "radius", negative=False)
+    ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
+    if method == "symmetric-dda" and ir > SDDA_MAX_RADIUS:
+        raise InputError(
+            f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "
+            f"the radius must be at most {SDDA_MAX_RADIUS} (got {ir})",
+            "r",
+        )
+    return ir, ixc, iyc
+
+
 def circle_solution(
     method: str,
     r: Number,
@@ -138,21 +164,7 @@ def circle_solution(
     (28, (5, 5, 15, 15))
     """
 
-    method = ALIASES.get(method, method)
-    if method not in METHODS:
-        names = ", ".join((*METHODS, *ALIASES))
-        raise InputError(f"unknown circle method {method!r} (choose from {names})", "method")
-    if rounding is not None and method not in FLOAT_METHODS:
-        rounder(rounding)
-        if rounding != "half-up":
-            raise InputError(
-                f"a rounding rule applies only to {', '.join(FLOAT_METHODS)}; "
-                f"{method} uses integers only",
-                "rounding",
-            )
-        rounding = None
-    if layout not in ("notes", "textbook"):
-        raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
+    method, rounding = _circle_method(method, rounding, layout)
     knobs = resolve(
         "circle",
         method,
@@ -160,14 +172,7 @@ def circle_solution(
         {"rounding": rounding, "tie": tie, "p0": p0, "loop": loop, "update": update},
     )
     rounding = knobs.get("rounding", "half-up")
-    ir = check_integer(r, "radius", negative=False)
-    ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
-    if method == "symmetric-dda" and ir > SDDA_MAX_RADIUS:
-        raise InputError(
-            f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "
-            f"the radius must be at most {SDDA_MAX_RADIUS} (got {ir})",
-            "r",
-        )
+    ir, ixc, iyc = _circle_numbers(method, r, xc, yc)
     if method == "midpoint":
         parts = _midpoint_parts(ir, knobs, layout)
     elif method == "general":
@@ -176,9 +181,9 @@ def circle_solution(
         parts = _bresenham_parts(ir, knobs["tie"])
     else:
         parts = {
-            "polynomial": _polynomial_parts,
-            "trig": _trig_parts,
-            "symmetric-dda": _sdda_parts,
+            "polynomial": polynomial_parts,
+            "trig": trig_parts,
+            "symmetric-dda": sdda_parts,
         }[method](ir, rounding)
     title, derived, columns, extra_keys, steps, points, notes = parts
     if method in FLOAT_METHODS:
@@ -258,22 +263,7 @@ def _rounding_note(rounding: str) -> str:
     return f"Coordinates are {ROUNDING_TEXT[rounding]}."
 
 
-_Parts = tuple[
-    str,
-    tuple[Quantity, ...],
-    tuple[Column, ...],
-    tuple[str, ...],
-    Callable[[], Iterator[Step]],
-    Callable[[], Iterator[Pixel]],
-    tuple[str, ...],
-]
-
-
-def _pixels_of(gen: Callable[[], Iterator[Step]]) -> Callable[[], Iterator[Pixel]]:
-    return lambda: (s.pixel for s in gen())
-
-
-def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> _Parts:
+def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> Parts:
     tie, p0s, loop, update = knobs["tie"], knobs["p0"], knobs["loop"], knobs["update"]
     lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
     if p0s == "5/4-r":
@@ -374,7 +364,7 @@ def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> _Parts:
     return ("Midpoint circle algorithm", derived, columns, keys, steps, points, tuple(notes))
 
 
-def _general_parts(r: int, knobs: dict[str, str]) -> _Parts:
+def _general_parts(r: int, knobs: dict[str, str]) -> Parts:
     tie, loop = knobs["tie"], knobs["loop"]
     lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
     derived = (
@@ -437,7 +427,7 @@ def _last(steps: Iterator[Step]) -> Pixel | None:
     return last
 
 
-def _bresenham_parts(r: int, tie: str) -> _Parts:
+def _bresenham_parts(r: int, tie: str) -> Parts:
     d0 = 3 - 2 * r
     lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
     derived = (
@@ -463,155 +453,4 @@ def _bresenham_parts(r: int, tie: str) -> _Parts:
     def steps() -> Iterator[Step]:
         return bresenham(r, tie)
 
-    return ("Bresenham's circle algorithm", derived, columns, (), steps, _pixels_of(steps), notes)
-
-
-def _rounded_name(rounding: str, v: str) -> str:
-    """``\\operatorname{round}(v)`` or ``\\operatorname{trunc}(v)``."""
-    name = "trunc" if rounding == "trunc" else "round"
-    return f"\\operatorname{{{name}}}({v})"
-
-
-def _polynomial_parts(r: int, rounding: str) -> _Parts:
-    rnd = rounder(rounding)
-    xmax = math.isqrt(r * r // 2)  # the last x with x <= y exactly; one more may qualify
-    if xmax < r and rnd(sqrt6(r * r - (xmax + 1) ** 2)) >= xmax + 1:
-        xmax += 1
-    bound = Fraction(math.isqrt(r * r * SQRT_PLACES * SQRT_PLACES // 2), SQRT_PLACES)
-    rounded = _rounded_name(rounding, "y")
-    derived = (
-        worked("equation", r * r, f"y = \\sqrt{{r^2 - x^2}} = \\sqrt{{{r * r} - x^2}}"),
-        worked(
-            "x_last",
-            xmax,
-            f"x = 0, 1, \\ldots \\text{{ while }} x \\le {rounded}\\ (\\text{{the plotted point stays "
-            f"on or above the diagonal; }} r/\\sqrt{{2}} = {fmt(bound, 3)}): x = 0 \\ldots {xmax}",
-        ),
-    )
-    columns = (
-        heading("k", "x"),
-        heading("y_sqrt", r"y = \sqrt{r^2 - x^2}", 3),
-        heading("round_y", rounded),
-        heading("pixel", r"\text{point } (x, y)"),
-    )
-    notes = (
-        "y is computed exactly from integer square roots (shown to 3 decimals), "
-        "so the rounding never depends on floating-point error.",
-    )
-
-    def steps() -> Iterator[Step]:
-        return polynomial(r, rounding)
-
-    return (
-        "Circle by the polynomial (square-root) method",
-        derived,
-        columns,
-        ("y_sqrt", "round_y"),
-        steps,
-        _pixels_of(steps),
-        notes,
-    )
-
-
-_ZERO = rule("zero", r"r = 0:\ \text{only the centre is plotted}")
-
-
-def _trig_parts(r: int, rounding: str) -> _Parts:
-    if r == 0:
-        derived: tuple[Quantity, ...] = (_ZERO,)
-    else:
-        kmax = trig_last(r, rounding)
-        dtheta = Fraction(1, r)
-        derived = (
-            worked(
-                "dtheta",
-                dtheta,
-                f"\\Delta\\theta = 1/r = 1/{r} \\text{{ rad}} = "
-                + fmt_value(dtheta).replace("≈", "\\approx")
-                + f" \\text{{ rad}} = {fmt(180 / (math.pi * r), 3)}^\\circ",
-            ),
-            worked(
-                "k_last",
-                kmax,
-                f"\\theta_k = 90^\\circ - k \\cdot \\Delta\\theta \\text{{ from }} 90^\\circ "
-                f"\\text{{ towards }} 45^\\circ\\ (\\pi \\cdot r/4 = {fmt(math.pi * r / 4, 3)} "
-                f"\\text{{ steps}}),\\ \\text{{while }} {_rounded_name(rounding, 'x')} \\le "
-                f"{_rounded_name(rounding, 'y')}: k = 0 \\ldots {kmax}",
-            ),
-            rule("equation", r"x = r \cos\theta_k,\ y = r \sin\theta_k"),
-        )
-    columns = (
-        heading("k", "k"),
-        heading("theta_deg", r"\theta_k\ (\text{deg})", 3),
-        heading("theta_rad", r"\theta_k\ (\text{rad})", 3),
-        heading("x_cos", r"x = r \cos\theta", 3),
-        heading("y_sin", r"y = r \sin\theta", 3),
-        heading("pixel", r"\text{point}"),
-    )
-    notes = ("cos and sin are computed in floating point (shown to 3 decimals).",)
-
-    def steps() -> Iterator[Step]:
-        return trig(r, rounding)
-
-    return (
-        "Circle by the parametric (trigonometric) method",
-        derived,
-        columns,
-        ("theta_deg", "theta_rad", "x_cos", "y_sin"),
-        steps,
-        _pixels_of(steps),
-        notes,
-    )
-
-
-def _sdda_parts(r: int, rounding: str) -> _Parts:
-    name, yname = _rounded_name(rounding, "x_k"), _rounded_name(rounding, "y_k")
-    if r == 0:
-        derived: tuple[Quantity, ...] = (_ZERO,)
-    else:
-        n = r.bit_length()
-        eps = Fraction(1, 2**n)
-        lo, hi = 2 ** (n - 1), 2**n
-        derived = (
-            worked(
-                "n",
-                n,
-                f"2^{{n-1}} \\le r < 2^n: 2^{{{n - 1}}} = {lo} \\le {r} < {hi} = 2^{{{n}}}, "
-                f"\\text{{ so }} n = {n}",
-            ),
-            worked(
-                "epsilon",
-                eps,
-                f"\\varepsilon = 2^{{-n}} = 2^{{-{n}}} = "
-                + fmt_value(eps).replace("≈", "\\approx"),
-            ),
-            rule(
-                "update",
-                r"x_{k+1} = x_k + \varepsilon \cdot y_k,\ y_{k+1} = y_k - \varepsilon \cdot x_{k+1}"
-                r"\ (\text{the new } x)",
-            ),
-            rule(
-                "loop",
-                f"\\text{{from }} (x_0, y_0) = (0, {r}) \\text{{ while }} {name} \\le {yname}",
-            ),
-        )
-    columns = (
-        heading("k", "k"),
-        heading("x_k", "x_k", 3),
-        heading("y_k", "y_k", 3),
-        heading("pixel", f"({name}, {yname})"),
-    )
-    notes = ("x_k and y_k are exact fractions (shown to 3 decimals).",)
-
-    def steps() -> Iterator[Step]:
-        return symmetric_dda(r, rounding)
-
-    return (
-        "Circle by the symmetric DDA",
-        derived,
-        columns,
-        ("x_k", "y_k"),
-        steps,
-        _pixels_of(steps),
-        notes,
-    )
+    return ("Bresenham's circle algorithm", derived, columns, (), steps, pixels_of(steps), notes)
