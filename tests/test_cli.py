@@ -304,7 +304,7 @@ def test_python_dash_m_and_version():
     assert run_process("line", "--help").out.startswith("Usage: scanconv line")
 
 
-@pytest.mark.parametrize("fmt", FORMATS)
+@pytest.mark.parametrize("fmt", (*FORMATS, "html"))
 def test_typer_cli_runner_every_format(fmt):
     from typer.testing import CliRunner
 

@@ -335,4 +335,4 @@ def basic(
 
 
 ALGORITHMS = tuple(a.value for a in LineAlgorithm)
-"""The line algorithms' names: ``("bresenham", "dda", "basic")``."""
+"""The line algorithms' names: ``("bresenham", "dda", "basic", "wu")``."""

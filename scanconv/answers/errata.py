@@ -78,5 +78,3 @@ def circle_errata(method: str, r: int) -> str | None:
         )
     return None
 
-
-# --- pseudocode -------------------------------------------------------------------------------

@@ -122,21 +122,6 @@ def as_int(value: Number, what: str) -> int:
     return value
 
 
-def check_between(value: int, what: str, lo: int, hi: int) -> int:
-    """Return ``value`` if ``lo <= value <= hi``, else a ``ValueError`` naming the bound.
-
-    >>> check_between(25, "bits per pixel", 1, 24)
-    Traceback (most recent call last):
-    ...
-    ValueError: bits per pixel must be at most 24, got 25
-    """
-    if value < lo:
-        raise ValueError(f"{what} must be at least {lo}, got {value}")
-    if value > hi:
-        raise ValueError(f"{what} must be at most {hi}, got {value}")
-    return value
-
-
 def normalize(value: Number) -> Number:
     """Integral fractions become ``int`` so they print and serialize as integers."""
     if isinstance(value, Fraction) and value.denominator == 1:
