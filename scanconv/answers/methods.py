@@ -341,6 +341,17 @@ METHODS: dict[str, Method] = {
 """Every method record, by ``"command/method"``."""
 
 
+DOCUMENTS = {
+    "compare": "sets the records of one command's methods side by side",
+    "sheet": "a list of questions, each answered by its command's method",
+    "practice": "seeded questions over the methods' records",
+    "check": "marks a student's table against a method's answer",
+    "theory": "the notes' written answers (answers/topics: one Topic record each)",
+    "exam": "the notes' exam as a sheet",
+}
+"""The commands that have no method of their own: they assemble other answers."""
+
+
 def methods_of(command: str) -> tuple[str, ...]:
     """The method names of ``command``, in declaration order."""
     return tuple(m.name for m in METHODS.values() if m.command == command)
