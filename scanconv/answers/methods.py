@@ -335,8 +335,19 @@ _IMAGE = (
     ),
 )  # fmt: skip
 
+_DITHER = (
+    _plain("dither", "threshold", "thresholding", _A + "dither:threshold_solution",
+           _G + "dither:threshold"),
+    _plain("dither", "ordered", "ordered dither (Bayer matrix)", _A + "dither:ordered_solution",
+           _G + "dither:ordered"),
+    _plain("dither", "floyd-steinberg", "Floyd-Steinberg error diffusion",
+           _A + "dither:diffusion_solution", _G + "dither:error_diffusion", row_cost=2.0),
+    _plain("dither", "pattern", "halftone patterns", _A + "dither:pattern_solution", None,
+           no_generator="one pattern per level, from the Bayer matrix"),
+)  # fmt: skip
+
 METHODS: dict[str, Method] = {
-    m.key: m for m in (*_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE)
+    m.key: m for m in (*_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER)
 }
 """Every method record, by ``"command/method"``."""
 
