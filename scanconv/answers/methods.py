@@ -346,8 +346,15 @@ _DITHER = (
            no_generator="one pattern per level, from the Bayer matrix"),
 )  # fmt: skip
 
+_INSIDE = tuple(
+    _plain("inside", rule_name, f"inside-outside test ({title})", _A + "inside:inside_solution",
+           _G + "inside:edge_tests")
+    for rule_name, title in (("even-odd", "even-odd rule"), ("nonzero", "nonzero winding rule"))
+)  # fmt: skip
+
 METHODS: dict[str, Method] = {
-    m.key: m for m in (*_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER)
+    m.key: m
+    for m in (*_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE)
 }
 """Every method record, by ``"command/method"``."""
 
