@@ -352,10 +352,19 @@ _INSIDE = tuple(
     for rule_name, title in (("even-odd", "even-odd rule"), ("nonzero", "nonzero winding rule"))
 )  # fmt: skip
 
+_FRAMEBUFFER = (
+    _plain("framebuffer", "arithmetic", "frame-buffer arithmetic",
+           _A + "framebuffer:framebuffer_solution", None,
+           no_generator="arithmetic, worked in one pass"),
+)  # fmt: skip
+
 METHODS: dict[str, Method] = {
     m.key: m
-    for m in (*_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE)
-}
+    for m in (
+        *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE,
+        *_FRAMEBUFFER,
+    )
+}  # fmt: skip
 """Every method record, by ``"command/method"``."""
 
 
