@@ -358,11 +358,20 @@ _FRAMEBUFFER = (
            no_generator="arithmetic, worked in one pass"),
 )  # fmt: skip
 
+_ATTRIBUTES = (
+    _plain("linestyle", "mask", "line style from a pixel mask",
+           _A + "attributes:line_style_solution", _G + "attributes:styled"),
+    _plain("thickline", "replication", "thick line by pixel replication",
+           _A + "attributes:thick_line_solution", _G + "attributes:thick"),
+    _plain("thickline", "brush", "thick line by a rectangular brush",
+           _A + "attributes:thick_line_solution", _G + "attributes:thick"),
+)  # fmt: skip
+
 METHODS: dict[str, Method] = {
     m.key: m
     for m in (
         *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE,
-        *_FRAMEBUFFER,
+        *_FRAMEBUFFER, *_ATTRIBUTES,
     )
 }  # fmt: skip
 """Every method record, by ``"command/method"``."""
