@@ -232,6 +232,9 @@ def _theory(
             )
         if code:
             tables.append(theory.basic_code(steep, knobs["rounding"]))
+    elif algo == "midpoint":  # its answer always derives d; it has no pseudocode of its own
+        if code:
+            method("line", algo).load("pseudocode")
     else:  # a method whose record names no derivation (wu) is refused before this
         method("line", algo).load("derivation" if derive else "pseudocode")
     sol.tables = (*sol.tables, *tables)

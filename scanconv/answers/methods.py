@@ -24,7 +24,7 @@ fall-through to another method):
 >>> method("line", "midpoint-x")
 Traceback (most recent call last):
 ...
-scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from basic, dda, bresenham, wu)
+scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from basic, dda, bresenham, midpoint, wu)
 >>> method("circle", "midpoint").knobs
 ('tie', 'p0', 'loop', 'update')
 >>> methods_of("ellipse")
@@ -141,6 +141,22 @@ _LINE = (
         1.0,
         (),
         "Bresenham",
+    ),
+    Method(
+        "line",
+        "midpoint",
+        "midpoint line algorithm",
+        _A + "midpoint_line:midpoint_answer",
+        _G + "midpoint_line:midpoint_line",
+        _A + "midpoint_line:derivation",
+        None,
+        _A + "models:BresenhamLine",
+        None,
+        1.0,
+        (
+            ("pseudocode", "Bresenham's loop with d for p (the bresenham method's pseudocode)"),
+            ("raster", "raster.line's bresenham gives the same pixels (the default tie)"),
+        ),
     ),
     Method(
         "line",
