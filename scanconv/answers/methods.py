@@ -320,6 +320,8 @@ _PROCESS = (
            _A + "clip:clip_line_solution", _G + "clipping:cohen_sutherland"),
     _plain("clip", "liang-barsky", "Liang-Barsky line clipping", _A + "clip:clip_line_solution",
            _G + "clipping:liang_barsky"),
+    _plain("clip", "cyrus-beck", "Cyrus-Beck line clipping (any convex window)",
+           _A + "cyrus_beck:cyrus_beck_solution", _G + "cyrus_beck:cyrus_beck"),
     _plain("clip", "sutherland-hodgman", "Sutherland-Hodgman polygon clipping",
            _A + "clip_polygon:clip_polygon_solution", None,
            no_generator="the answer builds its four passes directly"),
