@@ -65,4 +65,4 @@ def test_rounded_midpoints_keep_only_points_inside(p1, p2, how) -> None:
 def test_answer() -> None:
     sol = midpoint_clip_solution(-4, 2, 4, 2, [0, 0, 8, 8])
     assert sol.data["pieces"] == 7
-    assert [r[5] for r in sol.tables[0].rows()][0] == "split"
+    assert next(r[5] for r in sol.tables[0].rows()) == "split"
