@@ -389,11 +389,21 @@ _ATTRIBUTES = (
            _A + "attributes:thick_line_solution", _G + "attributes:thick"),
 )  # fmt: skip
 
+_CHARACTERS = (
+    _plain("characters", "bitmap", "bitmap character generation",
+           _A + "characters:bitmap_solution", _G + "characters:draw_bitmap"),
+    _plain("characters", "stroke", "stroke character generation",
+           _A + "characters:stroke_solution", _G + "characters:draw_strokes"),
+    _plain("characters", "storage", "bitmap font storage",
+           _A + "characters:font_storage_solution", None,
+           no_generator="arithmetic, worked in one pass"),
+)  # fmt: skip
+
 METHODS: dict[str, Method] = {
     m.key: m
     for m in (
         *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE,
-        *_FRAMEBUFFER, *_ATTRIBUTES,
+        *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS,
     )
 }  # fmt: skip
 """Every method record, by ``"command/method"``."""
