@@ -164,6 +164,16 @@ KNOBS: dict[str, Knob] = {
         "integer",
         ("line/midpoint",),
     ),
+    "xstep": Knob(
+        "xstep",
+        {
+            "last": "d updated with the old x and y, then x += 1 (Bresenham's algorithm)",
+            "first": "x += 1 first, then d updated with the new x and y (the widely copied "
+            "code: d += 4x + 6; its increments are 4 larger and its points can differ)",
+        },
+        "last",
+        ("circle/bresenham",),
+    ),
     "update": Knob(
         "update",
         {

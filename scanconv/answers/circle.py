@@ -134,6 +134,7 @@ def circle_solution(
     p0: str | None = None,
     loop: str | None = None,
     update: str | None = None,
+    xstep: str | None = None,
     convention: str | None = None,
     layout: str = "textbook",
     derive: bool = False,
@@ -169,7 +170,14 @@ def circle_solution(
         "circle",
         method,
         convention,
-        {"rounding": rounding, "tie": tie, "p0": p0, "loop": loop, "update": update},
+        {
+            "rounding": rounding,
+            "tie": tie,
+            "p0": p0,
+            "loop": loop,
+            "update": update,
+            "xstep": xstep,
+        },
     )
     rounding = knobs.get("rounding", "half-up")
     ir, ixc, iyc = _circle_numbers(method, r, xc, yc)
@@ -178,7 +186,7 @@ def circle_solution(
     elif method == "general":
         parts = _general_parts(ir, knobs)
     elif method == "bresenham":
-        parts = _bresenham_parts(ir, knobs["tie"])
+        parts = _bresenham_parts(ir, knobs["tie"], knobs["xstep"])
     else:
         parts = {
             "polynomial": polynomial_parts,
@@ -427,18 +435,20 @@ def _last(steps: Iterator[Step]) -> Pixel | None:
     return last
 
 
-def _bresenham_parts(r: int, tie: str) -> Parts:
+def _bresenham_parts(r: int, tie: str, xstep: str = "last") -> Parts:
     d0 = 3 - 2 * r
     lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
+    x, xy = ("x_{k+1}", "x_{k+1} - y_{k+1}") if xstep == "first" else ("x_k", "x_k - y_k")
     derived = (
         _start(r),
         worked("d0", d0, f"d_0 = 3 - 2r = 3 - 2 \\cdot {r} = {d0}"),
         rule(
-            "if_negative", f"d_k {lt} 0: " + r"d_{k+1} = d_k + 4x_k + 6,\ y_{k+1} = y_k\ (\text{E})"
+            "if_negative",
+            f"d_k {lt} 0: d_{{k+1}} = d_k + 4{x} + 6," + r"\ y_{k+1} = y_k\ (\text{E})",
         ),
         rule(
             "otherwise",
-            f"d_k {ge} 0: " + r"d_{k+1} = d_k + 4(x_k - y_k) + 10,\ y_{k+1} = y_k - 1\ (\text{SE})",
+            f"d_k {ge} 0: d_{{k+1}} = d_k + 4({xy}) + 10," + r"\ y_{k+1} = y_k - 1\ (\text{SE})",
         ),
         rule("loop", r"x_{k+1} = x_k + 1;\ \text{plot } (x_k, y_k) \text{ while } x \le y"),
     )
@@ -448,9 +458,18 @@ def _bresenham_parts(r: int, tie: str) -> Parts:
         heading("decision", r"\text{decision}"),
         heading("pixel", "(x_k, y_k)"),
     )
-    notes = ("Each row plots (x_k, y_k); d_k and the decision give the next point.",)
+    notes: tuple[str, ...] = (
+        "Each row plots (x_k, y_k); d_k and the decision give the next point.",
+    )
+
+    if xstep == "first":
+        notes = (
+            *notes,
+            "x is stepped before d is updated (the widely copied code): its increments are 4 "
+            "larger than Bresenham's, so its d values, and some of its points, differ.",
+        )
 
     def steps() -> Iterator[Step]:
-        return bresenham(r, tie)
+        return bresenham(r, tie, xstep)
 
     return ("Bresenham's circle algorithm", derived, columns, (), steps, pixels_of(steps), notes)
