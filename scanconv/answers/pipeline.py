@@ -115,6 +115,25 @@ def _scan_stage(
     return line
 
 
+def _line_given(
+    p1: tuple[Number, Number], p2: tuple[Number, Number], w: Rect, v: Rect
+) -> tuple[Quantity, ...]:
+    return (
+        Quantity("P1", list(p1), f"P1 = {pt(p1)}", f"P_1 = {pt(p1)}"),
+        Quantity("P2", list(p2), f"P2 = {pt(p2)}", f"P_2 = {pt(p2)}"),
+        rect_quantity("window", w, "w"),
+        rect_quantity("viewport", v, "v"),
+    )
+
+
+def _rounding_stage(dev: list[tuple[Number, Number]], derived: list[Quantity]) -> list[Pixel]:
+    """Stage 3: the device end points rounded half up (their working added)."""
+    derived.append(_stage("3. round the end points"))
+    rounded = [(round_half_up(q[0]), round_half_up(q[1])) for q in dev]
+    derived += [_round_work(n, q, r) for n, q, r in zip(("Q1", "Q2"), dev, rounded, strict=True)]
+    return rounded
+
+
 def _union_box(
     frame: tuple[int, int, int, int], bbox: tuple[int, int, int, int]
 ) -> tuple[int, int, int, int]:
@@ -154,12 +173,7 @@ def pipeline_line_solution(
     derived += clip_work
     tables = [Table(f"Stage 1, clipping: {t.title}", t.columns, t.rows) for t in clip_tables]
     notes = list(_LINE_NOTES)
-    given = (
-        Quantity("P1", list(p1), f"P1 = {pt(p1)}", f"P_1 = {pt(p1)}"),
-        Quantity("P2", list(p2), f"P2 = {pt(p2)}", f"P_2 = {pt(p2)}"),
-        rect_quantity("window", w, "w"),
-        rect_quantity("viewport", v, "v"),
-    )
+    given = _line_given(p1, p2, w, v)
     title = f"Scan-conversion pipeline: line {pt(p1)} to {pt(p2)}, window {rect_text(w)}, viewport {rect_text(v)}"
     data: dict = {"clipped": None, "device": None, "rounded": None}
     if seg is None:
@@ -176,9 +190,7 @@ def pipeline_line_solution(
     derived.append(_clipped_quantity(seg))
     dev = _to_device(seg, ("P1'", "P2'"), w, v, derived, tables)
     derived += _device_quantities(dev)
-    derived.append(_stage("3. round the end points"))
-    rounded = [(round_half_up(q[0]), round_half_up(q[1])) for q in dev]
-    derived += [_round_work(n, q, r) for n, q, r in zip(("Q1", "Q2"), dev, rounded, strict=True)]
+    rounded = _rounding_stage(dev, derived)
     line = _scan_stage(algo, rounded, derived, tables)
     notes += list(line.notes)
     frame = (round_half_up(v[0]), round_half_up(v[1]), round_half_up(v[2]), round_half_up(v[3]))
