@@ -4,7 +4,7 @@ intensity table and a shaded picture)."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
 from typing import Any, NamedTuple
 
@@ -16,6 +16,7 @@ from ..core.checks import InputError, check_integer
 from ..core.numeric import Number, fmt_exact, fmt_short, normalize
 from ..core.records import (
     MAX_GRID_CELLS,
+    Column,
     Pixel,
     Quantity,
     ShadedMatrix,
@@ -65,30 +66,41 @@ def _bbox(pixels: Sequence[Pixel]) -> tuple[int, int, int, int]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8) -> Solution:
-    """Xiaolin Wu's anti-aliased line as a worked answer.
+class _WuWalk(NamedTuple):
+    """Wu's walk along the major coordinate ``a`` (the minor one ``b``), from (a1, b1) to
+    (a2, b2) with a increasing."""
 
-    >>> sol = wu_solution(0, 0, 8, 3)
-    >>> [str(q.value) for q in sol.derived[:3]]
-    ['8', '3', '3/8']
-    >>> [s.extra[4:] for s in sol.steps()][1]
-    (Fraction(5, 8), Fraction(3, 8), (4, 3))
-    """
-    ix1, iy1, ix2, iy2 = (
-        check_integer(v, n) for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2"))
-    )
-    L = check_levels(levels)
+    steep: bool
+    maj: str
+    mnr: str
+    lower: str
+    upper: str
+    a1: int
+    b1: int
+    a2: int
+    b2: int
+    swapped: bool
+
+
+def _wu_walk(ix1: int, iy1: int, ix2: int, iy2: int) -> _WuWalk:
     steep = is_steep(ix1, iy1, ix2, iy2)
     maj, mnr = ("y", "x") if steep else ("x", "y")
     lower, upper = ("left", "right") if steep else ("lower", "upper")
     (a1, b1), (a2, b2) = ((iy1, ix1), (iy2, ix2)) if steep else ((ix1, iy1), (ix2, iy2))
-    if a2 < a1:
+    swapped = a2 < a1
+    if swapped:
         a1, b1, a2, b2 = a2, b2, a1, b1
-    da, db = a2 - a1, b2 - b1
+    return _WuWalk(steep, maj, mnr, lower, upper, a1, b1, a2, b2, swapped)
+
+
+def _wu_derived(w: _WuWalk, levels: int) -> tuple[Quantity, ...]:
+    """Δ along both coordinates, the gradient, the minor coordinate and the split."""
+    maj, mnr, a1, b1 = w.maj, w.mnr, w.a1, w.b1
+    da, db = w.a2 - a1, w.b2 - b1
     grad = normalize(Fraction(db, da)) if da else 0
-    derived = [
-        worked(f"d{maj}", da, f"\\Delta {maj} = {a2} - {_p(a1)} = {da}"),
-        worked(f"d{mnr}", db, f"\\Delta {mnr} = {b2} - {_p(b1)} = {db}"),
+    return (
+        worked(f"d{maj}", da, f"\\Delta {maj} = {w.a2} - {_p(a1)} = {da}"),
+        worked(f"d{mnr}", db, f"\\Delta {mnr} = {w.b2} - {_p(b1)} = {db}"),
         worked(
             "gradient",
             grad,
@@ -102,22 +114,63 @@ def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8)
         ),
         rule(
             "split",
-            f"f = {mnr}_k - \\lfloor {mnr}_k \\rfloor,\\ I(\\text{{{lower}}}) = 1 - f,\\ "
-            f"I(\\text{{{upper}}}) = f",
+            f"f = {mnr}_k - \\lfloor {mnr}_k \\rfloor,\\ I(\\text{{{w.lower}}}) = 1 - f,\\ "
+            f"I(\\text{{{w.upper}}}) = f",
         ),
-        _level_rule(L),
-    ]
-    notes = [
+        _level_rule(levels),
+    )
+
+
+def _wu_notes(w: _WuWalk) -> tuple[str, ...]:
+    return (
+        *((f"End points swapped so that {w.maj} increases along the walk.",) if w.swapped else ()),
         "End points as in Wu (1991): integers, drawn at full intensity (f = 0 there, so the "
         "second pixel of the first and last step has intensity 0).",
         f"Each step's two intensities sum to 1: the line's ink is shared between the two "
-        f"pixels nearest to it along {mnr}, in proportion to its distance from each.",
+        f"pixels nearest to it along {w.mnr}, in proportion to its distance from each.",
         "Wu keeps f as an integer error term of n bits and draws from both ends at once; the "
         "table walks one way with f exact, and the levels are the intensities quantized.",
         SHADING,
-    ]
-    if (a1, b1) != ((iy1, ix1) if steep else (ix1, iy1)):
-        notes.insert(0, f"End points swapped so that {maj} increases along the walk.")
+    )
+
+
+def _wu_columns(w: _WuWalk) -> tuple[Column, ...]:
+    lower, upper = w.lower, w.upper
+    return (
+        heading("k", "k"),
+        heading(w.maj, f"{w.maj}_k"),
+        heading(w.mnr, f"{w.mnr}_k \\text{{ (exact)}}", 3),
+        heading("pixel_a", f"\\text{{{lower} pixel}}"),
+        heading("pixel_b", f"\\text{{{upper} pixel}}"),
+        heading("i_a", f"I(\\text{{{lower}}})", 3),
+        heading("i_b", f"I(\\text{{{upper}}})", 3),
+        heading("levels", f"\\text{{levels ({lower}, {upper})}}"),
+    )
+
+
+def _wu_shades(steps: Iterable[Step]) -> dict[Pixel, int]:
+    """Each pixel's level (a pixel both steps share keeps the larger)."""
+    values: dict[Pixel, int] = {}
+    for s in steps:
+        values[s.extra[2]] = s.extra[6][0]
+        values[s.extra[3]] = max(values.get(s.extra[3], 0), s.extra[6][1])
+    return values
+
+
+def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8) -> Solution:
+    """Xiaolin Wu's anti-aliased line as a worked answer.
+
+    >>> sol = wu_solution(0, 0, 8, 3)
+    >>> [str(q.value) for q in sol.derived[:3]]
+    ['8', '3', '3/8']
+    >>> [s.extra[4:] for s in sol.steps()][1]
+    (Fraction(5, 8), Fraction(3, 8), (4, 3))
+    """
+    ix1, iy1, ix2, iy2 = (
+        check_integer(v, n) for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2"))
+    )
+    L = check_levels(levels)
+    w = _wu_walk(ix1, iy1, ix2, iy2)
 
     def steps() -> Iterator[Step]:
         for s in wu(ix1, iy1, ix2, iy2):
@@ -132,11 +185,8 @@ def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8)
             if s.extra[5]:
                 yield s.extra[3]
 
-    plotted = list(pixels()) if da < 4 * MAX_GRID_CELLS else []
-    values = {}
-    for s in steps() if plotted else ():
-        values[s.extra[2]] = s.extra[6][0]
-        values[s.extra[3]] = max(values.get(s.extra[3], 0), s.extra[6][1])
+    plotted = list(pixels()) if w.a2 - w.a1 < 4 * MAX_GRID_CELLS else []
+    values = _wu_shades(steps()) if plotted else {}
     picture = _picture({p: v for p, v in values.items() if v}, L) if plotted else None
     xs, ys = (ix1, ix2), (iy1, iy2)
     return Solution(
@@ -148,22 +198,13 @@ def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8)
             worked("P2", (ix2, iy2), f"P_2 = ({ix2}, {iy2})"),
             worked("L", L, f"L = {L} \\text{{ levels}}"),
         ),
-        derived=tuple(derived),
-        columns=(
-            heading("k", "k"),
-            heading(maj, f"{maj}_k"),
-            heading(mnr, f"{mnr}_k \\text{{ (exact)}}", 3),
-            heading("pixel_a", f"\\text{{{lower} pixel}}"),
-            heading("pixel_b", f"\\text{{{upper} pixel}}"),
-            heading("i_a", f"I(\\text{{{lower}}})", 3),
-            heading("i_b", f"I(\\text{{{upper}}})", 3),
-            heading("levels", f"\\text{{levels ({lower}, {upper})}}"),
-        ),
-        extra_keys=(maj, mnr, "pixel_a", "pixel_b", "i_a", "i_b", "levels"),
+        derived=_wu_derived(w, L),
+        columns=_wu_columns(w),
+        extra_keys=(w.maj, w.mnr, "pixel_a", "pixel_b", "i_a", "i_b", "levels"),
         steps=steps,
         pixels=pixels,
-        bbox=(min(xs), min(ys), max(xs) + (1 if steep else 0), max(ys) + (0 if steep else 1)),
-        notes=tuple(notes),
+        bbox=(min(xs), min(ys), max(xs) + (1 if w.steep else 0), max(ys) + (0 if w.steep else 1)),
+        notes=_wu_notes(w),
         figures=(picture,) if picture else (),
         geometry={
             "line": (ix1, iy1, ix2, iy2),

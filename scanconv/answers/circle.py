@@ -25,7 +25,6 @@ from ..core.numeric import (
     normalize,
 )
 from ..core.records import (
-    Column,
     Move,
     Pixel,
     Quantity,
@@ -271,20 +270,21 @@ def _rounding_note(rounding: str) -> str:
     return f"Coordinates are {ROUNDING_TEXT[rounding]}."
 
 
-def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> Parts:
-    tie, p0s, loop, update = knobs["tie"], knobs["p0"], knobs["loop"], knobs["update"]
+def _midpoint_derived(r: int, knobs: dict[str, str]) -> tuple[Number, tuple[Quantity, ...]]:
+    """p₀ and the working: the start, p₀, what each sign of p chooses and the loop."""
+    tie, loop = knobs["tie"], knobs["loop"]
     lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
-    if p0s == "5/4-r":
+    if knobs["p0"] == "5/4-r":
         p0: Number = Fraction(5, 4) - r
         p0_q = worked("p0", p0, f"p_0 = \\tfrac54 - r = \\tfrac54 - {r} = {fmt_value(p0)}")
     else:
         p0 = 1 - r
         p0_q = worked("p0", p0, f"p_0 = 1 - r = 1 - {r} = {p0}")
-    if update == "old":
+    if knobs["update"] == "old":
         inc_e, inc_se = "2x_k + 3", "2x_k - 2y_k + 5"
     else:
         inc_e, inc_se = "2x_{k+1} + 1", "2x_{k+1} + 1 - 2y_{k+1}"
-    derived = (
+    return p0, (
         _start(r),
         p0_q,
         rule(
@@ -301,6 +301,12 @@ def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> Parts:
             "loop", r"\text{continue while } x " + (r"\le" if loop == "inclusive" else "<") + " y"
         ),
     )
+
+
+def _midpoint_notes(
+    r: int, knobs: dict[str, str], layout: str, last: Pixel | None
+) -> tuple[str, ...]:
+    """Where the table starts, what p₀ = 1 - r decides and a last point past the diagonal."""
     if layout == "notes":
         first = (
             f"Row $k$ plots $(x_k, y_k)$ and decides on $p_k$; row 0 is the start point $(0, {r})$."
@@ -308,68 +314,91 @@ def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> Parts:
     else:
         first = f"The start point $(0, {r})$ is plotted before the first step."
     notes = [first]
-    if p0s == "1-r":
+    if knobs["p0"] == "1-r":
         notes.append(
             "$p_0 = 1 - r$ is $5/4 - r$ rounded to an integer; every $p_k$ is an integer and the "
             "decisions are those of $5/4 - r$."
-            if tie == "step"
+            if knobs["tie"] == "step"
             else "$p_0 = 1 - r$: every $p_k$ is an integer; with $p_k \\le 0$ keeping $y$, $p_k = 0$ "
             "decides differently from $5/4 - r$ (which is then $1/4 > 0$)."
         )
-
-    def gen() -> Iterator[Step]:
-        return midpoint(r, tie, p0s, loop, update)
-
-    last = _last(gen())
     if last is not None and last[0] > last[1]:
         notes.append(
             f"The last point {last} lies past the diagonal; its 8 images are those of "
             f"({last[1]}, {last[0]}), already plotted."
         )
+    return tuple(notes)
 
+
+_MIDPOINT_NOTES_COLUMNS = (
+    heading("k", "k"),
+    heading("x_k", "x_k"),
+    heading("y_k", "y_k"),
+    heading("p", "p_k"),
+    heading("decision", r"\text{decision}"),
+    heading("pixel", r"\text{plot } (x_k, y_k)"),
+)
+_MIDPOINT_COLUMNS = (
+    heading("k", "k"),
+    heading("p", "p_k"),
+    heading("pixel", "(x_{k+1}, y_{k+1})"),
+    heading("two_x", "2x_{k+1}"),
+    heading("two_y", "2y_{k+1}"),
+)
+
+
+def _notes_rows(r: int, p0: Number, gen: Callable[[], Iterator[Step]]) -> Iterator[Step]:
+    """The notes' layout: row k plots (x_k, y_k) and decides on p_k; a last row without a
+    decision."""
+    pt, k, p = (0, r), 0, p0
+    for st in gen():
+        yield Step(st.k, st.p, st.decision, pt, pt)
+        x, y = st.pixel
+        assert st.p is not None  # the midpoint circle decides every step
+        p = st.p + 2 * x + 1 - (2 * y if st.decision == Move.SE else 0)
+        pt, k = st.pixel, st.k + 1
+    yield Step(k, normalize(p), None, pt, pt)
+
+
+def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> Parts:
+    p0, derived = _midpoint_derived(r, knobs)
+
+    def gen() -> Iterator[Step]:
+        return midpoint(r, knobs["tie"], knobs["p0"], knobs["loop"], knobs["update"])
+
+    notes = _midpoint_notes(r, knobs, layout, _last(gen()))
     if layout == "notes":
 
         def steps() -> Iterator[Step]:
-            pt, k, p = (0, r), 0, p0
-            for st in gen():
-                yield Step(st.k, st.p, st.decision, pt, pt)
-                x, y = st.pixel
-                assert st.p is not None  # the midpoint circle decides every step
-                p = st.p + 2 * x + 1 - (2 * y if st.decision == Move.SE else 0)
-                pt, k = st.pixel, st.k + 1
-            yield Step(k, normalize(p), None, pt, pt)
+            return _notes_rows(r, p0, gen)
 
         def points() -> Iterator[Pixel]:
             return (st.pixel for st in steps())
 
-        columns: tuple[Column, ...] = (
-            heading("k", "k"),
-            heading("x_k", "x_k"),
-            heading("y_k", "y_k"),
-            heading("p", "p_k"),
-            heading("decision", r"\text{decision}"),
-            heading("pixel", r"\text{plot } (x_k, y_k)"),
+        return (
+            "Midpoint circle algorithm",
+            derived,
+            _MIDPOINT_NOTES_COLUMNS,
+            ("x_k", "y_k"),
+            steps,
+            points,
+            notes,
         )
-        keys: tuple[str, ...] = ("x_k", "y_k")
-    else:
 
-        def steps() -> Iterator[Step]:
-            return gen()
+    def textbook_points() -> Iterator[Pixel]:
+        yield (0, r)
+        for st in gen():
+            yield st.pixel
 
-        def points() -> Iterator[Pixel]:
-            yield (0, r)
-            for st in gen():
-                yield st.pixel
-
-        columns = (
-            heading("k", "k"),
-            heading("p", "p_k"),
-            heading("pixel", "(x_{k+1}, y_{k+1})"),
-            heading("two_x", "2x_{k+1}"),
-            heading("two_y", "2y_{k+1}"),
-        )
-        keys = ("two_x", "two_y")
-    return ("Midpoint circle algorithm", derived, columns, keys, steps, points, tuple(notes))
+    return (
+        "Midpoint circle algorithm",
+        derived,
+        _MIDPOINT_COLUMNS,
+        ("two_x", "two_y"),
+        gen,
+        textbook_points,
+        notes,
+    )
 
 
 def _general_parts(r: int, knobs: dict[str, str]) -> Parts:
