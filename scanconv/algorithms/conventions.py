@@ -167,9 +167,8 @@ KNOBS: dict[str, Knob] = {
     "xstep": Knob(
         "xstep",
         {
-            "last": "d updated with the old x and y, then x += 1 (Bresenham's algorithm)",
-            "first": "x += 1 first, then d updated with the new x and y (the widely copied "
-            "code: d += 4x + 6; its increments are 4 larger and its points can differ)",
+            "last": "d updated with the old x and y, then x += 1",
+            "first": "x += 1 first, d updated with the new x and y, as widely copied code does",
         },
         "last",
         ("circle/bresenham",),
