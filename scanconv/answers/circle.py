@@ -122,6 +122,37 @@ def _circle_numbers(method: str, r: Number, xc: Number, yc: Number) -> tuple[int
     return ir, ixc, iyc
 
 
+def _parts(method: str, ir: int, knobs: dict[str, str], layout: str) -> Parts:
+    """The method's octant table and working (one branch per method, none to fall into)."""
+    if method == "midpoint":
+        return _midpoint_parts(ir, knobs, layout)
+    if method == "general":
+        return _general_parts(ir, knobs)
+    if method == "bresenham":
+        return _bresenham_parts(ir, knobs["tie"], knobs["xstep"])
+    float_parts = {"polynomial": polynomial_parts, "trig": trig_parts, "symmetric-dda": sdda_parts}
+    return float_parts[method](ir, knobs.get("rounding", "half-up"))
+
+
+def _theory(
+    method: str,
+    ir: int,
+    knobs: dict[str, str],
+    derived: tuple[Quantity, ...],
+    derive: bool,
+    pseudocode: bool,
+) -> tuple[tuple[Quantity, ...], tuple[Table, ...]]:
+    """The working with ``--derive``'s derivation added, and ``--algorithm``'s table."""
+    if not (derive or pseudocode):
+        return derived, ()
+    from . import theory  # here: only --derive and --algorithm need it
+
+    if derive:
+        derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
+    code = theory.circle_code(method, knobs) if pseudocode else None
+    return derived, (code,) if code is not None else ()
+
+
 def circle_solution(
     method: str,
     r: Number,
@@ -180,19 +211,7 @@ def circle_solution(
     )
     rounding = knobs.get("rounding", "half-up")
     ir, ixc, iyc = _circle_numbers(method, r, xc, yc)
-    if method == "midpoint":
-        parts = _midpoint_parts(ir, knobs, layout)
-    elif method == "general":
-        parts = _general_parts(ir, knobs)
-    elif method == "bresenham":
-        parts = _bresenham_parts(ir, knobs["tie"], knobs["xstep"])
-    else:
-        parts = {
-            "polynomial": polynomial_parts,
-            "trig": trig_parts,
-            "symmetric-dda": sdda_parts,
-        }[method](ir, rounding)
-    title, derived, columns, extra_keys, steps, points, notes = parts
+    title, derived, columns, extra_keys, steps, points, notes = _parts(method, ir, knobs, layout)
     if method in FLOAT_METHODS:
         notes = (*notes, _rounding_note(rounding))
     notes = (
@@ -200,14 +219,7 @@ def circle_solution(
         "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
         "once, the first time it is plotted.",
     )
-    tables: tuple[Table, ...] = ()
-    if derive or pseudocode:
-        from . import theory  # here: only --derive and --algorithm need it
-    if derive:
-        derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
-    if pseudocode:
-        code = theory.circle_code(method, knobs)
-        tables = (code,) if code is not None else ()
+    derived, tables = _theory(method, ir, knobs, derived, derive, pseudocode)
     data: dict = {"rounding": rounding} if method in FLOAT_METHODS else {}
     if annotate:
         notes = (*notes, convention_note("circle", convention, knobs))

@@ -97,6 +97,42 @@ def _points(coords: Sequence[Number]) -> tuple[io.Point, ...]:
     return pts
 
 
+_INSIDE_RULES = (
+    rule("ray", r"\text{ray from } P \text{ toward } +x"),
+    rule(
+        "straddle",
+        r"\text{an edge counts when one end has } y > y_P \text{ and the other } y \le y_P",
+    ),
+    rule("x", r"x = x_a + (y_P - y_a)(x_b - x_a) / (y_b - y_a)"),
+    rule("even_odd", r"\text{even-odd: inside when the number of crossings is odd}"),
+    rule("nonzero", r"\text{nonzero: winding} = \sum (+1 \text{ up}, -1 \text{ down}) \ne 0"),
+)
+_INSIDE_NOTES = (
+    "A ray through a vertex: each edge counts only when one end is strictly above the ray "
+    "(half-open), so the vertex counts once where the boundary passes through and not at "
+    "all where it only touches; horizontal edges never count.",
+    "On a simple polygon the two rules agree; they differ where a self-intersecting "
+    "polygon winds twice (even-odd: outside, nonzero: inside).",
+)
+
+
+def _points_figure(
+    pts: Sequence[io.Point], tested: Sequence[io.Point], verdicts: Sequence[io.Verdict]
+) -> tuple[PixelFigure, ...]:
+    """The points tested, inside and outside, when they are integers and fit a grid."""
+    xs = [p[0] for p in (*pts, *tested)]
+    ys = [p[1] for p in (*pts, *tested)]
+    bbox = (int(min(xs)) - 1, int(min(ys)) - 1, int(max(xs)) + 1, int(max(ys)) + 1)
+    whole = all(p[0] == int(p[0]) and p[1] == int(p[1]) for p in tested)
+    if not whole or bbox[2] - bbox[0] >= 60 or bbox[3] - bbox[1] >= 60:
+        return ()
+    ins = tuple((int(p[0]), int(p[1])) for p, v in zip(tested, verdicts, strict=True) if v.nonzero)
+    outs = tuple(
+        (int(p[0]), int(p[1])) for p, v in zip(tested, verdicts, strict=True) if not v.nonzero
+    )
+    return (PixelFigure(ins, outs, bbox, "# = inside (nonzero), o = outside", "The points:"),)
+
+
 def inside_solution(
     vertices: Sequence[Number],
     points: Sequence[Number],
@@ -121,39 +157,13 @@ def inside_solution(
         *(worked(_label(i), p, f"{_label(i)} = {_pt(p)}") for i, p in enumerate(pts)),
         *(worked(f"P{i}", p, f"P_{{{i}}} = {_pt(p)}") for i, p in enumerate(tested, 1)),
     )
-    derived = [
-        rule("ray", r"\text{ray from } P \text{ toward } +x"),
-        rule(
-            "straddle",
-            r"\text{an edge counts when one end has } y > y_P \text{ and the other } y \le y_P",
-        ),
-        rule("x", r"x = x_a + (y_P - y_a)(x_b - x_a) / (y_b - y_a)"),
-        rule("even_odd", r"\text{even-odd: inside when the number of crossings is odd}"),
-        rule(
-            "nonzero",
-            r"\text{nonzero: winding} = \sum (+1 \text{ up}, -1 \text{ down}) \ne 0",
-        ),
-    ]
-    notes = [
-        "A ray through a vertex: each edge counts only when one end is strictly above the ray "
-        "(half-open), so the vertex counts once where the boundary passes through and not at "
-        "all where it only touches; horizontal edges never count.",
+    derived = _INSIDE_RULES
+    notes = (
+        *_INSIDE_NOTES[:1],
         f"A point on the boundary is {boundary} (found exactly before counting).",
-        "On a simple polygon the two rules agree; they differ where a self-intersecting "
-        "polygon winds twice (even-odd: outside, nonzero: inside).",
-    ]
-    xs = [p[0] for p in (*pts, *tested)]
-    ys = [p[1] for p in (*pts, *tested)]
-    bbox = (int(min(xs)) - 1, int(min(ys)) - 1, int(max(xs)) + 1, int(max(ys)) + 1)
-    figure = PixelFigure(
-        tuple((int(p[0]), int(p[1])) for p, v in zip(tested, verdicts, strict=True) if v.nonzero),
-        tuple(
-            (int(p[0]), int(p[1])) for p, v in zip(tested, verdicts, strict=True) if not v.nonzero
-        ),
-        bbox,
-        legend="# = inside (nonzero), o = outside",
-        title="The points:",
+        *_INSIDE_NOTES[1:],
     )
+    figures = _points_figure(pts, tested, verdicts)
     return Solution(
         primitive="inside",
         algorithm=rule_name,
@@ -165,11 +175,7 @@ def inside_solution(
             *(_edge_table(pts, p, i) for i, p in enumerate(tested, 1)),
             _verdicts_table(verdicts, rule_name, n),
         ),
-        figures=(figure,)
-        if all(p[0] == int(p[0]) and p[1] == int(p[1]) for p in tested)
-        and bbox[2] - bbox[0] < 60
-        and bbox[3] - bbox[1] < 60
-        else (),
+        figures=figures,
         geometry={
             "polyline": [(float(x), float(y)) for x, y in (*pts, pts[0])],
             "polyline_name": "polygon",
