@@ -66,3 +66,39 @@ def connected(pixels: Set[Pixel]) -> bool:
                 seen.add(q)
                 todo.append(q)
     return len(seen) == len(pixels)
+
+
+HANG_SECONDS = 60
+"""A run that takes longer than this has escaped a work budget (every allowed input ends
+within a minute, docs/limits.md): the guard of :func:`run_limited`, not a speed test."""
+
+
+class Overtime(BaseException):
+    """Raised by :func:`run_limited`'s alarm inside a run: a ``BaseException``, so that no
+    ``except Exception`` in the code under test swallows it."""
+
+
+def run_limited(*args: str, seconds: float = HANG_SECONDS) -> Result:
+    """:func:`run` with a hard limit: a run still going after ``seconds`` fails the test with
+    its command line instead of hanging the suite. An alarm interrupts Python code; a
+    ``faulthandler`` watchdog at twice the limit ends the process (dumping every thread's
+    stack) if the run is stuck where the alarm cannot reach it."""
+    import faulthandler
+    import signal
+
+    def overtime(signum: int, frame: object) -> None:
+        raise Overtime
+
+    previous = signal.signal(signal.SIGALRM, overtime)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    faulthandler.dump_traceback_later(2 * seconds, exit=True)
+    try:
+        return run(*args)
+    except Overtime:
+        import pytest
+
+        pytest.fail(f"scanconv {' '.join(args)!r} ran over {seconds:g} s: a hole in a budget")
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        faulthandler.cancel_dump_traceback_later()
+        signal.signal(signal.SIGALRM, previous)

@@ -27,6 +27,8 @@ import pytest
 
 from .helpers import run
 
+pytestmark = pytest.mark.external  # chromium (external tests are slow too: conftest)
+
 CHROMIUM = shutil.which("chromium")
 LOCAL = ("file:", "data:", "blob:", "about:")
 

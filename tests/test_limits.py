@@ -31,6 +31,8 @@ from scanconv.core.expr import parse_exact
 
 from .helpers import assert_refused, run
 
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parent.parent
 DOC = (ROOT / "docs" / "limits.md").read_text(encoding="utf-8")
 ROW = re.compile(r"^\| [^|]+ \| `([^`]+)` \| `([\w.]+)\.(\w+)` \|", re.M)
