@@ -257,9 +257,7 @@ def main() -> None:
         cells = [f"{t['scanconv'] * 1e3:.1f} ms"]
         for other in OTHERS:
             cells.append(
-                f"{t[other] * 1e3:.1f} ms ({t[other] / t['scanconv']:.2f})"
-                if other in t
-                else "n/a"
+                f"{t[other] * 1e3:.1f} ms ({t[other] / t['scanconv']:.2f})" if other in t else "n/a"
             )
         n = args.count if name != "polygon" else max(1, args.count // 10)
         print(f"| {label}, {n} | {' | '.join(cells)} | {', '.join(same)} |")
