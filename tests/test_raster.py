@@ -21,6 +21,8 @@ from scanconv.answers.circle import circle_solution
 from scanconv.answers.ellipse import ellipse_solution
 from scanconv.answers.line import line_solution
 
+pytestmark = pytest.mark.slow
+
 coord = st.integers(min_value=-60, max_value=60)
 far = st.integers(min_value=-(10**9), max_value=10**9)
 short = st.integers(min_value=-300, max_value=300)

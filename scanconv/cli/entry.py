@@ -113,10 +113,16 @@ def _usage_message(err: Exception) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the CLI; return (and exit with) its status. Never shows a traceback for bad input."""
+    """Run the CLI; return (and exit with) its status. Never shows a traceback for bad input.
+
+    Run as the program (``argv`` None: the arguments are ``sys.argv``), it turns SIGINT and
+    SIGTERM into a one-line exit 130 or 143 (:func:`scanconv.cli.output.catch_signals`);
+    called in-process with ``argv`` it leaves the caller's signal handlers alone, so that a
+    SIGTERM to a test runner still ends it."""
     from typer._click import exceptions as click_exc  # typer vendors click
 
-    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:  # started in the background by a shell
+    as_program = argv is None
+    if as_program and signal.getsignal(signal.SIGINT) is signal.SIG_IGN:  # a shell's background
         signal.signal(signal.SIGINT, signal.default_int_handler)
     if argv is None:
         argv = sys.argv[1:]
@@ -125,7 +131,7 @@ def main(argv: list[str] | None = None) -> int:
     argv = [_MINUS + a[1:] if a.lower() in _NONFINITE else a for a in students(argv)]
     command = _command_for(argv)
     code = 0
-    restore_signals = output.catch_signals()
+    restore_signals = output.catch_signals() if as_program else _nothing
     try:
         result = command.main(args=argv, prog_name=PROG, standalone_mode=False)
         code = result if isinstance(result, int) else 0
@@ -167,6 +173,10 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         restore_signals()
     return code
+
+
+def _nothing() -> None:
+    """Nothing to restore: an in-process run installs no signal handler."""
 
 
 _terminate = output.on_signal
