@@ -87,10 +87,14 @@ def _agrees(model: Model, states: list[State], solution: Solution) -> bool:
 # --- follow-through ---------------------------------------------------------------------------
 
 
-def expect(model: Model, base: State, got: Got, marked: set[str]) -> Expected | None:
+def expect(
+    model: Model, base: State, got: Got, marked: set[str], own_p: bool = True
+) -> Expected | None:
     """What the student's step ``got`` should hold, judged from ``base`` (the state their own
-    previous step reached); ``None``: the method's loop has already ended there."""
-    p_used = got.p.value if ("p" in marked and got.p is not None) else base.p
+    previous step reached); ``None``: the method's loop has already ended there. The decision
+    is taken on the student's own p (``own_p``), or on the right one (a p miscopied after
+    deciding)."""
+    p_used = got.p.value if (own_p and "p" in marked and got.p is not None) else base.p
     s = base._replace(p=p_used)
     rule_move = model.decide(s)
     by_rule = model.step(s, rule_move)
@@ -145,8 +149,8 @@ def _judged(
 ) -> Expected | None:
     """The step from the base that explains the student's step best (fewest wrong fields)."""
     best: tuple[int, Expected] | None = None
-    for b in bases:
-        e = expect(model, b, got, marked)
+    for b, own_p in itertools.product(bases, (True, False)):
+        e = expect(model, b, got, marked, own_p)
         if e is not None:
             n = len(wrong_fields(got, e, marked, last))
             if best is None or n < best[0]:

@@ -280,8 +280,8 @@ def _rejoin(cells: list[str], delimiter: str) -> list[str]:
             out[-1] += delimiter + c
         else:
             out.append(c)
-        s = out[-1].strip()
-        open_ = s.startswith(("(", "[")) and not s.endswith((")", "]"))
+        s = out[-1]
+        open_ = s.count("(") + s.count("[") > s.count(")") + s.count("]")
     return out
 
 

@@ -1,0 +1,501 @@
+"""Marking you can trust (issue 28): any layout, any heading, scanconv's own tables; one slip
+costs one step.
+
+Every student table here was written by hand from the mistake it shows, and its score worked
+out by hand in the comment above it (never by running scanconv). A step is p_k, the decision
+and the point it reaches; a question is out of the steps it asks for: 8 for the line (2, 2) to
+(10, 6), whose states are (2,2) p 0, NE (3,3) -8, E (4,3) 0, NE (5,4) -8, E (6,4) 0,
+NE (7,5) -8, E (8,5) 0, NE (9,6) -8, E (10,6) 0.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import shlex
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from scanconv import _api as api
+from scanconv.answers.marking import mark
+from scanconv.core.checks import InputError
+from scanconv.core.student_table import parse_text
+from scanconv.render import Format, Options, render
+
+from .helpers import assert_refused, run
+
+LINE = ("line", "2", "2", "10", "6")
+GOLDEN = Path(__file__).resolve().parent.parent / "golden"
+
+
+def check_text(tmp_path: Path, name: str, text: str, *question: str) -> dict:
+    (tmp_path / name).write_text(text, encoding="utf-8")
+    r = run("check", str(tmp_path / name), "--", *question, "-f", "json")
+    assert r.code == 0, r.err
+    return json.loads(r.out)
+
+
+def scored(result: dict) -> list[str]:
+    return [row[4] for row in result["tables"][0]["rows"] if row[4] != "given (not scored)"]
+
+
+def md(text: str) -> str:
+    """A CSV table written again as a Markdown pipe table (the same cells)."""
+    rows = list(csv.reader(io.StringIO(text)))
+    lines = ["| " + " | ".join(rows[0]) + " |", "|" + "---|" * len(rows[0])]
+    lines += ["| " + " | ".join(r) + " |" for r in rows[1:]]
+    return "Worked answer:\n\n" + "\n".join(lines) + "\n"
+
+
+def both(name: str, text: str) -> list[tuple[str, str]]:
+    return [(f"{name}.csv", text), (f"{name}.md", md(text))]
+
+
+def line_of(name: str, csv_line: int) -> int:
+    """The file line of a CSV line in the same table written by :func:`md` (3 lines later)."""
+    return csv_line + (3 if name.endswith(".md") else 0)
+
+
+# --- 1. the layout is found by the best follow-through score ----------------------------------
+
+# The textbook layout (row k: p_k and the point it reaches), p_3 miscopied as 8 for -8 while
+# the point (6, 4) was decided on the true -8: step 4 is wrong (p; and from p = 8 the rule
+# would go NE to (6, 5)); step 5 (p 0, (7, 5)) is the answer's own. 7 of 8.
+TEXTBOOK_MISCOPY = """k,p_k,"(x_{k+1}, y_{k+1})"
+0,0,"(3, 3)"
+1,-8,"(4, 3)"
+2,0,"(5, 4)"
+3,8,"(6, 4)"
+4,0,"(7, 5)"
+5,-8,"(8, 5)"
+6,0,"(9, 6)"
+7,-8,"(10, 6)"
+"""
+
+
+@pytest.mark.parametrize(("name", "text"), both("textbook-miscopy", TEXTBOOK_MISCOPY))
+def test_a_miscopied_p_in_the_textbook_layout_costs_one_step(tmp_path, name, text):
+    result = check_text(tmp_path, name, text, *LINE)
+    assert (result["score"], result["out_of"]) == (7, 8)
+    assert scored(result) == ["right"] * 3 + ["wrong"] + ["right"] * 4
+    assert result["first_error"] == (
+        f"Row 4 (line {line_of(name, 5)}): p should be -8, not 8 (the step from (4, 3) with p = 0)."
+    )
+
+
+# --- 2. follow-through charges each slip once --------------------------------------------------
+
+# Alice, the notes' layout: at k = 4, (6, 4) with p = 0, she chose E (p >= 0 is NE) and wrote
+# p_5 = 0 + 2dy = 8, then carried on by the rule from her own values: 8 >= 0 NE (8, 5) with
+# 8 - 8 = 0, 0 NE (9, 6) -8, -8 E (10, 6) 0. Step 5 is wrong once (the decision; her point
+# (7, 4) and p_5 = 8 follow from her E); step 6 follows from her (7, 4) p = 8. 7 of 8.
+TIE_NOTES = """k,p_k,Decision,"Pixel Plotted (x, y)",Next p_{k+1}
+0,0,NE,"(2, 2)",-8
+1,-8,E,"(3, 3)",0
+2,0,NE,"(4, 3)",-8
+3,-8,E,"(5, 4)",0
+4,0,E,"(6, 4)",8
+5,8,NE,"(7, 4)",0
+6,0,NE,"(8, 5)",-8
+7,-8,E,"(9, 6)",0
+8,0,,"(10, 6)",
+"""
+
+# The same slip in the textbook layout: row k holds p_k, the decision, (x_{k+1}, y_{k+1}) and
+# p_{k+1}; row 4 is the slip, from (6, 4) with p = 0. 7 of 8.
+TIE_TEXTBOOK = """k,p_k,decision,"(x_{k+1}, y_{k+1})",p_{k+1}
+0,0,NE,"(3, 3)",-8
+1,-8,E,"(4, 3)",0
+2,0,NE,"(5, 4)",-8
+3,-8,E,"(6, 4)",0
+4,0,E,"(7, 4)",8
+5,8,NE,"(8, 5)",0
+6,0,NE,"(9, 6)",-8
+7,-8,E,"(10, 6)",0
+"""
+
+
+@pytest.mark.parametrize(
+    ("name", "text", "line"),
+    [(n, t, 6) for n, t in both("tie-notes", TIE_NOTES)]
+    + [(n, t, 6) for n, t in both("tie-textbook", TIE_TEXTBOOK)],
+)
+def test_a_wrong_decision_at_a_tie_costs_one_step_and_is_named(tmp_path, name, text, line):
+    result = check_text(tmp_path, name, text, *LINE)
+    assert (result["score"], result["out_of"]) == (7, 8)
+    assert scored(result) == ["right"] * 4 + ["wrong", "right (follow-through)"] + ["right"] * 2
+    assert result["first_error"] == (
+        f"Row 5 (line {line_of(name, line)}): the decision should be NE, not E "
+        "(at (6, 4) with p = 0, p >= 0 chooses NE)."
+    )
+    assert "decision" in result["marked"]
+    row5 = result["tables"][0]["rows"][5 if name.startswith("tie-notes") else 4]
+    assert "p = 0, E," in row5[2] and "p = 0, NE," in row5[3]
+
+
+# Without a decision column the slip shows in the point: step 5 (7, 4) for (7, 5), named with
+# the state and the rule; p_5 = 8 follows from her own E. 7 of 8.
+TIE_NO_DECISION = """k,p,x,y
+0,0,2,2
+1,-8,3,3
+2,0,4,3
+3,-8,5,4
+4,0,6,4
+5,8,7,4
+6,0,8,5
+7,-8,9,6
+8,0,10,6
+"""
+
+
+def test_a_tie_slip_without_a_decision_column_is_named_at_its_state(tmp_path):
+    result = check_text(tmp_path, "tie.csv", TIE_NO_DECISION, *LINE)
+    assert (result["score"], result["out_of"]) == (7, 8)
+    assert result["first_error"] == (
+        "Row 5 (line 7): the pixel should be (7, 5), not (7, 4) "
+        "(at (6, 4) with p = 0, p >= 0 chooses NE)."
+    )
+
+
+# A decision that disagrees with the student's own p: at (5, 4) p = -8 written NE, the point
+# (6, 5) and p_4 = -8 - 8 = -16 follow from that NE; then -16 E (7, 5) -8, E (8, 5) 0,
+# NE (9, 6) -8, E (10, 6) 0 -- all from her own values. Step 4 wrong once: 7 of 8.
+DECISION_AGAINST_P = """k,p_k,decision,"(x_k, y_k)"
+0,0,NE,"(2, 2)"
+1,-8,E,"(3, 3)"
+2,0,NE,"(4, 3)"
+3,-8,NE,"(5, 4)"
+4,-16,E,"(6, 5)"
+5,-8,E,"(7, 5)"
+6,0,NE,"(8, 5)"
+7,-8,E,"(9, 6)"
+8,0,,"(10, 6)"
+"""
+
+
+def test_a_decision_against_the_students_own_p_is_wrong_once(tmp_path):
+    result = check_text(tmp_path, "against.csv", DECISION_AGAINST_P, *LINE)
+    assert (result["score"], result["out_of"]) == (7, 8)
+    assert scored(result)[3] == "wrong" and scored(result)[4] == "right (follow-through)"
+    assert (
+        "the decision should be E, not NE (at (5, 4) with p = -8, p < 0 chooses E)"
+        in (result["first_error"])
+    )
+
+
+# --- 3. one denominator -------------------------------------------------------------------------
+
+RIGHT_NOTES = TIE_NOTES.replace('4,0,E,"(6, 4)",8', '4,0,NE,"(6, 4)",-8').replace(
+    '5,8,NE,"(7, 4)",0', '5,-8,E,"(7, 5)",0'
+)
+
+
+def test_the_same_answer_is_out_of_the_same_steps_in_every_layout(tmp_path):
+    notes = (
+        "k,p,(x_k, y_k)\n0,0,(2 2)\n1,-8,(3 3)\n2,0,(4 3)\n3,-8,(5 4)\n4,0,(6 4)\n"
+        "5,-8,(7 5)\n6,0,(8 5)\n7,-8,(9 6)\n8,0,(10 6)\n"
+    )
+    textbook = TIE_TEXTBOOK.replace('4,0,E,"(7, 4)",8', '4,0,NE,"(7, 5)",-8').replace(
+        '5,8,NE,"(8, 5)",0', '5,-8,E,"(8, 5)",0'
+    )
+    for name, text in (("n.csv", notes), ("t.csv", textbook)):
+        result = check_text(tmp_path, name, text, *LINE)
+        assert (result["score"], result["out_of"]) == (8, 8), name
+    # the start row is shown and said to be unscored
+    result = check_text(tmp_path, "n.csv", notes, *LINE)
+    assert result["tables"][0]["rows"][0][4] == "given (not scored)"
+    assert any("shown, not scored" in n for n in result["notes"])
+
+
+# --- 5. the notes' names and headings ------------------------------------------------------------
+
+# The notes' Topic 9 ("Bresenham's circle", p0 = 1 - r) for r = 8, in the notes' own heading:
+# -7 E (1,8) -7 + 3 = -4, E (2,8) -4 + 5 = 1, SE (3,7) 1 + 6 - 14 + 1 = -6, E (4,7) -6 + 9 = 3,
+# SE (5,6) 3 + 10 - 12 + 1 = 2, SE (6,5) 2 + 12 - 10 + 1 = 5. Against d0 = 3 - 2r the pixels
+# are Bresenham's (0,8) (1,8) (2,8) (3,7) (4,7) (5,6): its 5 steps, all right: 5 of 5.
+NOTES_TOPIC9 = """k,x,y,p,Plot Point (one octant)
+0,0,8,-7,"(0,8)"
+1,1,8,-4,"(1,8)"
+2,2,8,1,"(2,8)"
+3,3,7,-6,"(3,7)"
+4,4,7,3,"(4,7)"
+5,5,6,2,"(5,6)"
+6,6,5,5,"(6,5)"
+"""
+
+# The reverse: d0 = 3 - 2r = -13, -13 + 6 = -7, -7 + 4 + 6 = 3, 3 + 4(2 - 8) + 10 = -11,
+# -11 + 12 + 6 = 7, 7 + 4(4 - 7) + 10 = 5, against the midpoint question (6 steps, to (6, 5)):
+# its 5 points are right, (6, 5) is missing: 5 of 6.
+BRESENHAM_D = """k,d_k,"(x_k, y_k)"
+0,-13,"(0, 8)"
+1,-7,"(1, 8)"
+2,3,"(2, 8)"
+3,-11,"(3, 7)"
+4,7,"(4, 7)"
+5,5,"(5, 6)"
+"""
+
+
+@pytest.mark.parametrize(
+    ("name", "text", "question", "marks"),
+    [
+        (n, t, ("circle", "8", "--method", "bresenham"), (5, 5))
+        for n, t in both("topic9", NOTES_TOPIC9)
+    ]
+    + [(n, t, ("circle", "8"), (5, 6)) for n, t in both("d", BRESENHAM_D)],
+)
+def test_the_other_circle_form_is_diagnosed_and_its_pixels_marked(
+    tmp_path, name, text, question, marks
+):
+    result = check_text(tmp_path, name, text, *question)
+    assert (result["score"], result["out_of"]) == marks
+    assert "the other circle form" in result["diagnosis"]
+    assert "p" not in result["marked"] and "pixel" in result["marked"]
+
+
+def test_practice_words_circles_by_the_notes_names():
+    import random
+
+    from scanconv.answers.practice import _CIRCLE_NAMES, _circle
+
+    assert "p0 = 1 - r" in _CIRCLE_NAMES["midpoint"]
+    assert "d0 = 3 - 2r" in _CIRCLE_NAMES["bresenham"]
+    for method in ("midpoint", "bresenham"):
+        q = _circle(random.Random(1), "easy", (method, False))
+        assert q.argv[3] == method and _CIRCLE_NAMES[method] in q.wording
+
+
+@pytest.mark.parametrize(
+    "heading",
+    [
+        "k,p_k,Decision,Pixel Plotted (x y),Next p_{k+1}",
+        "k,p_k,Decision,(x y),Next p_{k+1}",
+        "k,p_k,decision,Pixel Plotted (x, y),p_{k+1}",
+    ],
+)
+def test_the_notes_own_headings_are_read(tmp_path, heading):
+    body = RIGHT_NOTES.split("\n", 1)[1]
+    result = check_text(tmp_path, "h.csv", heading + "\n" + body, *LINE)
+    assert (result["score"], result["out_of"]) == (8, 8)
+
+
+def test_headings_with_k_plus_1_and_units_are_read(tmp_path):
+    # the textbook layout in two columns x_k+1, y_k+1 with units: 8 of 8
+    text = "k,p_k,x_k+1 (px),y_k+1 (px)\n" + "".join(
+        f"{k},{p},{x},{y}\n"
+        for k, p, x, y in [
+            (0, 0, 3, 3),
+            (1, -8, 4, 3),
+            (2, 0, 5, 4),
+            (3, -8, 6, 4),
+            (4, 0, 7, 5),
+            (5, -8, 8, 5),
+            (6, 0, 9, 6),
+            (7, -8, 10, 6),
+        ]
+    )
+    result = check_text(tmp_path, "units.csv", text, *LINE)
+    assert (result["score"], result["out_of"]) == (8, 8)
+
+
+def test_a_heading_it_cannot_read_is_one_line_naming_the_columns(tmp_path):
+    (tmp_path / "odd.csv").write_text("step,value,where\n0,0,here\n")
+    r = run("check", str(tmp_path / "odd.csv"), "--", *LINE)
+    assert_refused(r, "odd.csv", "'step', 'value', 'where'", "(x, y)", "Pixel Plotted (x, y)")
+
+
+# --- 6. diagnoses ---------------------------------------------------------------------------------
+
+# r = 5 centred at (10, 10), the octant written with the centre added: (0,5) -4, (1,5) -1,
+# (2,5) 4, (3,4) 3, (4,3) 6 as (10,15) (11,15) (12,15) (13,14) (14,13): right points, 4 of 4.
+ABSOLUTE = """k,p,x,y
+0,-4,10,15
+1,-1,11,15
+2,4,12,15
+3,3,13,14
+4,6,14,13
+"""
+
+# r = 5, x and y exchanged: (5,0) (5,1) (5,2) (4,3) (3,4) with the right p: every point
+# wrong, 0 of 4.
+SWAPPED = """k,p,x,y
+0,-4,5,0
+1,-1,5,1
+2,4,5,2
+3,3,4,3
+4,6,3,4
+"""
+
+# The DDA (2,2)-(10,6) in the notes' own DDA heading, y = 2 + k/2 rounded by truncation:
+# 2.5 -> 2, 3.5 -> 3, 4.5 -> 4, 5.5 -> 5: steps 1, 3, 5, 7 wrong, 4 of 8.
+DDA_TRUNC = """k,x_k (Calculated),y_k (Calculated),round(x_k),round(y_k)
+0,2,2,2,2
+1,3,2.5,3,2
+2,4,3,4,3
+3,5,3.5,5,3
+4,6,4,6,4
+5,7,4.5,7,4
+6,8,5,8,5
+7,9,5.5,9,5
+8,10,6,10,6
+"""
+
+# Half to even: 2.5 -> 2, 3.5 -> 4, 4.5 -> 4, 5.5 -> 6: steps 1 and 5 wrong, 6 of 8.
+DDA_EVEN = DDA_TRUNC.replace("3,5,3.5,5,3", "3,5,3.5,5,4").replace("7,9,5.5,9,5", "7,9,5.5,9,6")
+
+# The end point left out: 7 steps, the 8th missing: 7 of 8. Written twice: 8 right, one row
+# past the end: 7 of 8.
+ENDLESS = 'k,p_k,"(x_k, y_k)"\n' + "".join(
+    f'{k},{p},"({x}, {y})"\n'
+    for k, p, x, y in [
+        (0, 0, 2, 2),
+        (1, -8, 3, 3),
+        (2, 0, 4, 3),
+        (3, -8, 5, 4),
+        (4, 0, 6, 4),
+        (5, -8, 7, 5),
+        (6, 0, 8, 5),
+        (7, -8, 9, 6),
+    ]
+)
+TWICE = ENDLESS + '8,0,"(10, 6)"\n9,,"(10, 6)"\n'
+
+DIAGNOSES = [
+    (
+        ("circle", "5", "--center", "10", "10"),
+        ABSOLUTE,
+        (4, 4),
+        "absolute pixels, the centre (10, 10)",
+    ),
+    (("circle", "5"), SWAPPED, (0, 4), "x and y exchanged"),
+    ((*LINE, "--algo", "dda"), DDA_TRUNC, (4, 8), "rounding = trunc"),
+    ((*LINE, "--algo", "dda"), DDA_EVEN, (6, 8), "half to even"),
+    (LINE, ENDLESS, (7, 8), "the end point (10, 6) is omitted"),
+    (LINE, TWICE, (7, 8), "the end point (10, 6) twice"),
+]
+
+
+@pytest.mark.parametrize(
+    ("question", "text", "marks", "words", "fmt"),
+    [(*d, fmt) for d in DIAGNOSES for fmt in ("csv", "md")],
+    ids=lambda v: str(v)[:30],
+)
+def test_each_common_mistake_is_diagnosed(tmp_path, question, text, marks, words, fmt):
+    result = check_text(tmp_path, f"t.{fmt}", text if fmt == "csv" else md(text), *question)
+    assert (result["score"], result["out_of"]) == marks
+    assert words in result["diagnosis"], result["diagnosis"]
+
+
+def test_the_batch_csv_gives_each_file_its_single_run_score(tmp_path):
+    folder = tmp_path / "class"
+    folder.mkdir()
+    tables = {
+        "miscopy.csv": TEXTBOOK_MISCOPY,
+        "tie.csv": TIE_NOTES,
+        "trunc.csv": DDA_TRUNC,
+        "end.md": md(ENDLESS),
+    }
+    for name, text in tables.items():
+        (folder / name).write_text(text)
+    r = run("check", "--batch", str(folder), "--", *LINE)
+    assert r.code == 0, r.err
+    batch = {row["name"]: row for row in csv.DictReader(io.StringIO(r.out))}
+    for name in tables:
+        single = json.loads(run("check", str(folder / name), "--", *LINE, "-f", "json").out)
+        row = batch[name]
+        assert (int(row["score"]), int(row["out_of"])) == (single["score"], single["out_of"])
+        assert row["first_error"] == single["first_error"]
+
+
+# --- 4. round trip: scanconv's own tables get full marks -----------------------------------------
+
+FORMATS = {Format.csv: ".csv", Format.markdown: ".md", Format.json: ".json", Format.plain: ".txt"}
+
+
+def _text(solution, fmt: Format) -> str:
+    return "".join(c for c in render(solution, fmt, Options()) if isinstance(c, str))
+
+
+_point = st.tuples(st.integers(-15, 15), st.integers(-15, 15))
+
+
+@st.composite
+def questions(draw):
+    kind = draw(st.sampled_from(["line", "circle", "ellipse"]))
+    layout = draw(st.sampled_from(["notes", "textbook"]))
+    if kind == "line":
+        a, b = draw(_point), draw(_point.filter(lambda p: True))
+        if a == b:
+            b = (b[0] + 1, b[1])
+        algo = draw(st.sampled_from(["bresenham", "dda", "basic"]))
+        return api.line(*a, *b, algo=algo, layout=layout)
+    if kind == "circle":
+        method = draw(
+            st.sampled_from(
+                ["midpoint", "bresenham", "general", "polynomial", "trig", "symmetric-dda"]
+            )
+        )
+        r = draw(st.integers(2, 14))
+        return api.circle(r, draw(_point), method=method, layout=layout)
+    return api.ellipse(draw(st.integers(1, 10)), draw(st.integers(1, 10)))
+
+
+@settings(max_examples=150, deadline=None)
+@given(questions(), st.sampled_from(list(FORMATS)), st.booleans())
+def test_scanconv_own_table_gets_full_marks(solution, fmt, named):
+    text = _text(solution, fmt)
+    suffix = FORMATS[fmt] if named else ""
+    m = mark(parse_text(text, "own" + suffix, suffix), solution)
+    assert (m.right, m.first_error) == (m.total, ""), (solution.title, fmt)
+
+
+# --- every CSV scanconv writes has unique column names -------------------------------------------
+
+
+def _unique(header: list[str]) -> bool:
+    return len(header) == len(set(header))
+
+
+@pytest.mark.parametrize("path", sorted(GOLDEN.rglob("*.csv")), ids=lambda p: p.name)
+def test_every_golden_csv_has_unique_column_names(path):
+    first, _, body = path.read_text(encoding="utf-8").partition("\n")
+    header = next(csv.reader(io.StringIO(body)))
+    assert _unique(header), header
+
+
+COMMANDS = [
+    "line 2 2 10 6 --algo dda",
+    "line 2 2 10 6 --algo basic",
+    "line 2 2 10 6 --algo wu",
+    "line 2 2 10 6 --layout textbook",
+    *(
+        f"circle 8 --method {m}"
+        for m in ("midpoint", "bresenham", "general", "polynomial", "trig", "symmetric-dda")
+    ),
+    "circle 8 --layout textbook",
+    "ellipse 8 6",
+    "bezier 0 0 1 2 3 3 4 0",
+    "parametric circle 5",
+]
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_every_command_csv_has_unique_column_names(command):
+    r = run(*shlex.split(command), "-f", "csv")
+    assert r.code == 0, r.err
+    assert _unique(next(csv.reader(io.StringIO(r.out))))
+
+
+@settings(max_examples=30, deadline=None)
+@given(questions())
+def test_every_step_table_csv_has_unique_column_names(solution):
+    assert _unique(next(csv.reader(io.StringIO(_text(solution, Format.csv)))))
+
+
+def test_a_table_of_two_different_columns_read_alike_is_refused():
+    with pytest.raises(InputError, match="both read as x"):
+        parse_text("x,x_k,y\n1,2,3\n", "two.csv")
