@@ -444,8 +444,26 @@ def questions(draw):
     return api.ellipse(draw(st.integers(1, 10)), draw(st.integers(1, 10)))
 
 
+@st.composite
+def other_questions(draw):
+    """The other commands with a step table (marked without follow-through)."""
+    kind = draw(st.sampled_from(["wu", "bezier", "bspline", "parametric", "pipeline"]))
+    a, b = draw(_point), draw(_point)
+    if kind == "wu":
+        return api.line(*a, a[0] + draw(st.integers(1, 12)), b[1], algo="wu")
+    points = [a, b, draw(_point), draw(_point)]
+    if kind == "bezier":
+        return api.bezier(points, samples=draw(st.integers(2, 12)))
+    if kind == "bspline":
+        return api.bspline([*points, draw(_point)])
+    if kind == "parametric":
+        return api.parametric_line(*a, *b, samples=draw(st.integers(2, 12)))
+    b = (a[0] + draw(st.integers(1, 20)), b[1])  # a line with steps, inside the window
+    return api.pipeline_line(*a, *b, window=(-40, -40, 40, 40), viewport=(0, 0, 80, 80))
+
+
 @settings(max_examples=150, deadline=None)
-@given(questions(), st.sampled_from(list(FORMATS)), st.booleans())
+@given(questions() | other_questions(), st.sampled_from(list(FORMATS)), st.booleans())
 def test_scanconv_own_table_gets_full_marks(solution, fmt, named):
     text = _text(solution, fmt)
     suffix = FORMATS[fmt] if named else ""

@@ -95,7 +95,7 @@ _QUALIFIER = re.compile(
     r"|px|pixels|pixel units|in pixels|units|integer|int)\)"
 )
 _PAIR_HEAD = re.compile(r"\(?x(k\+1|k|i)?[,;]?y(k\+1|k|i)?\)?")
-_PIXEL_WORDS = re.compile(r"(pixels?|plotted|plot|points?|at|to|the|chosen)*")
+_PIXEL_WORDS = re.compile(r"(pixels?|plotted|plot|points?|at|to|the|chosen|lower|left)*")
 _ROUNDED = ("round", "plot", "pixel", "int", "rnd")
 _LOOKUP = {name: field for field, names in _NAMES.items() for name in names}
 
@@ -227,11 +227,13 @@ def parse_text(text: str, name: str, suffix: str = "") -> StudentTable:
     if suffix == ".json" or (suffix not in (".csv", ".md", ".markdown") and start in "[{"):
         headers, rows = _json_rows(text, name)
     elif suffix in (".md", ".markdown") or (
-        suffix != ".csv" and any(ln.lstrip().startswith("|") for ln in text.splitlines())
+        suffix not in (".csv", ".tsv", ".txt") and _SEPARATOR.search(text)
     ):
         headers, rows = _markdown_rows(text, name)
     elif suffix not in (".csv", ".tsv") and _RULE.search(text):
         headers, rows = _plain_rows(text, name)
+    elif suffix not in (".csv", ".tsv", ".txt") and re.search(r"^\s*\|", text, re.M):
+        headers, rows = _markdown_rows(text, name)
     else:
         headers, rows = _csv_rows(text, name)
     return _build(name, headers, rows)
@@ -286,49 +288,65 @@ def _rejoin(cells: list[str], delimiter: str) -> list[str]:
 
 
 def _markdown_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
-    headers: list[str] | None = None
-    rows: list[RawRow] = []
+    """The pipe tables of a Markdown text (fenced code skipped), as :func:`_choose` picks."""
+    tables: list[tuple[list[str], list[RawRow]]] = []
     block: list[tuple[int, list[str]]] = []
-    skipped: list[list[str]] = []
+    bad: list[int] = []
 
     def flush() -> None:
-        nonlocal headers
         if not block:
             return
-        if len(block) < 2 or not all(re.fullmatch(r":?-+:?", c.strip()) for c in block[1][1]):
-            raise InputError(
-                f"{name}, line {block[0][0]}: a pipe table needs a heading row and a "
-                "|---| separator row",
-                "answer",
-            )
-        heads = block[0][1]
-        fields = [field_of(h)[0] for h in heads]
-        if headers is None and not _PIXEL_FIELDS & set(fields):
-            skipped.append(heads)  # not a step table (no pixels): a later table may be
-        elif headers is None or fields == [field_of(h)[0] for h in headers]:
-            headers = headers or heads
-            rows.extend((f"line {n}", cells) for n, cells in block[2:])
-            _check_rows(rows, name)
-        # else another table (scanconv's symmetry table): only the step table is marked
+        if len(block) >= 2 and all(re.fullmatch(r":?-+:?", c.strip()) for c in block[1][1]):
+            tables.append((block[0][1], [(f"line {n}", cells) for n, cells in block[2:]]))
+        else:
+            bad.append(block[0][0])
         block.clear()
 
+    fence = False
     for number, line in enumerate(text.splitlines(), 1):
         s = line.strip()
-        if s.startswith("|"):
+        if s.startswith(("```", "~~~")):
+            flush()
+            fence = not fence
+        elif s.startswith("|") and not fence:
             body = s[1:-1] if s.endswith("|") and len(s) > 1 else s[1:]
             block.append((number, [c.strip() for c in re.split(r"(?<!\\)\|", body)]))
         else:
             flush()
     flush()
-    if headers is None and skipped:
-        return skipped[0], []
-    if headers is None:
+    if not tables and bad:
+        raise InputError(
+            f"{name}, line {bad[0]}: a pipe table needs a heading row and a |---| separator row",
+            "answer",
+        )
+    if not tables:
         raise InputError(f"{name}: no pipe table found", "answer")
+    return _choose(tables, name)
+
+
+def _choose(
+    tables: list[tuple[list[str], list[RawRow]]], name: str
+) -> tuple[list[str], list[RawRow]]:
+    """The step table among a document's tables: the one with pixels that names the most
+    known columns (the first on a tie), and the rows of the later tables with the same columns
+    (an ellipse's region 2); tables of other columns (a symmetry table) are left out."""
+    known = [[field_of(str(h))[0] for h in heads] for heads, _ in tables]
+    steps = [i for i, f in enumerate(known) if _PIXEL_FIELDS & set(f)]
+    if not steps:
+        return tables[0]
+    best = max(steps, key=lambda i: (len({f for f in known[i] if f}), -i))
+    headers, rows = tables[best][0], list(tables[best][1])
+    for i in range(best + 1, len(tables)):
+        if known[i] == known[best]:
+            rows += tables[i][1]
+            _check_rows(rows, name)
     return headers, rows
 
 
 _RULE = re.compile(r"^ *-+(?: {2,}-+)+ *$", re.MULTILINE)
 """The rule under a plain-text table's heading: runs of dashes, one per column."""
+_SEPARATOR = re.compile(r"^\s*\|?\s*:?-+:?\s*\|", re.MULTILINE)
+"""A Markdown table's separator row (``|---|:--:|``)."""
 _TOKEN = re.compile(r"\S+(?: \S+)*")
 
 
@@ -353,16 +371,7 @@ def _plain_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
             _check_rows(rows, name)
         tables.append((_spread(lines[i - 1], spans), rows))
     assert tables  # the caller found a rule
-    step = [t for t in tables if _PIXEL_FIELDS & {field_of(h)[0] for h in t[0]}]
-    if not step:
-        return tables[0]
-    headers, rows = step[0][0], list(step[0][1])
-    fields = [field_of(h)[0] for h in headers]
-    for more, more_rows in step[1:]:  # the ellipse's region 2: the same columns again
-        if [field_of(h)[0] for h in more] == fields:
-            rows += more_rows
-            _check_rows(rows, name)
-    return headers, rows
+    return _choose(tables, name)
 
 
 def _spread(line: str, spans: list[tuple[int, int]]) -> list[str]:
