@@ -283,6 +283,20 @@ def test_the_notes_own_headings_are_read(tmp_path, heading):
     assert (result["score"], result["out_of"]) == (8, 8)
 
 
+# The notes' own tables, copied as they are printed (tab-separated, the notes' headings). The
+# DDA for (2, 2) to (10, 6) is right: 8 of 8. The Bresenham table is the notes' p0 = -28 one
+# (errata E1): its whole table is named.
+NOTES_DDA_TSV = "k\tx_k (Calculated)\ty_k (Calculated)\t$\\text{round}(x_k)$\t$\\text{round}(y_k)$\tPixel (x, y)\n0\t2.000\t2.000\t2\t2\t(2, 2)\n1\t3.000\t2.500\t3\t3\t(3, 3)\n2\t4.000\t3.000\t4\t3\t(4, 3)\n3\t5.000\t3.500\t5\t4\t(5, 4)\n4\t6.000\t4.000\t6\t4\t(6, 4)\n5\t7.000\t4.500\t7\t5\t(7, 5)\n6\t8.000\t5.000\t8\t5\t(8, 5)\n7\t9.000\t5.500\t9\t6\t(9, 6)\n8\t10.000\t6.000\t10\t6\t(10, 6)\n"
+NOTES_E1_TSV = "k\tp_k\tDecision\tPixel Plotted (x, y)\tNext p_{k+1}\n0\t-28\tE\t(2, 2)\t-20\n1\t-20\tE\t(3, 2)\t-12\n2\t-12\tE\t(4, 2)\t-4\n3\t-4\tE\t(5, 2)\t4\n4\t4\tNE\t(6, 3)\t-20\n5\t-20\tE\t(7, 3)\t-12\n6\t-12\tE\t(8, 3)\t-4\n7\t-4\tE\t(9, 3)\t4\n8\t4\tNE\t(10, 4)\t-20\n"
+
+
+def test_the_notes_own_tables_are_read_as_printed(tmp_path):
+    result = check_text(tmp_path, "dda.tsv", NOTES_DDA_TSV, *LINE, "--algo", "dda")
+    assert (result["score"], result["out_of"]) == (8, 8)
+    result = check_text(tmp_path, "e1.txt", NOTES_E1_TSV, *LINE)
+    assert "the table the course notes print" in result["diagnosis"]
+
+
 def test_headings_with_k_plus_1_and_units_are_read(tmp_path):
     # the textbook layout in two columns x_k+1, y_k+1 with units: 8 of 8
     text = "k,p_k,x_k+1 (px),y_k+1 (px)\n" + "".join(

@@ -248,9 +248,8 @@ RawRow = tuple[str, list[Any]]
 def _csv_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
     lines = text.splitlines()
     first = next((ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#")), "")
-    delimiter = ","
-    if "," not in first:
-        delimiter = "\t" if "\t" in first else ";" if ";" in first else ","
+    # a tab first: the notes' tables are tab-separated with commas inside "(x, y)"
+    delimiter = "\t" if "\t" in first else "," if "," in first else ";" if ";" in first else ","
     headers: list[str] | None = None
     rows: list[RawRow] = []
     try:
