@@ -531,3 +531,11 @@ def test_every_step_table_csv_has_unique_column_names(solution):
 def test_a_table_of_two_different_columns_read_alike_is_refused():
     with pytest.raises(InputError, match="both read as x"):
         parse_text("x,x_k,y\n1,2,3\n", "two.csv")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("solution", [api.circle(7000), api.ellipse(1200, 1200)], ids=["c", "e"])
+def test_large_tables_of_scanconv_are_marked_in_full(solution):
+    # attack report D17: the circle's CSV was refused (x twice), the ellipse's p beyond 10^9
+    m = mark(parse_text(_text(solution, Format.csv), "big.csv", ".csv"), solution)
+    assert (m.right, m.first_error) == (m.total, "") and m.total > 1000

@@ -155,6 +155,8 @@ def _judged(
             n = len(wrong_fields(got, e, marked, last))
             if best is None or n < best[0]:
                 best = (n, e)
+            if n == 0:
+                break
     return None if best is None else best[1]
 
 
@@ -168,16 +170,17 @@ def _follow(
     error = False
     for i, got in enumerate(steps):
         last = i == len(steps) - 1
-        exp = _judged(model, bases, got, marked, last)
         own = answer[i] if i < len(answer) else None
-        if own is not None and (exp is None or not _wrong(got, own, marked, last)):
+        if own is not None and not _wrong(got, own, marked, last):
             exp = own  # the answer's own step is right whatever came before
-            from_answer = True
-        elif exp is None:
+        else:
+            exp = _judged(model, bases, got, marked, last) or own
+        from_answer = exp is own
+        if exp is None:
             verdicts.append(Verdict(i + 1, got.where, got, None, "extra"))
             error = True
             continue
-        else:
+        if not from_answer:
             exp = exp._replace(prev=prev)
             from_answer = not error
         wrong = wrong_fields(got, exp, marked, last)
@@ -253,6 +256,8 @@ def _best(
         key = score(verdicts, len(answer))
         if best is None or key > best[0]:
             best = (key, n, lay, verdicts, start)
+        if all(v.mark.startswith("right") for v in verdicts):
+            break  # every step right: no reading does better
     assert best is not None
     return best[2], best[3], best[4]
 

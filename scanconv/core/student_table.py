@@ -43,6 +43,10 @@ from .numeric import parse_number
 MAX_TABLE_BYTES = 2**18
 """Largest student file read (256 KiB): a 1,000-row table of a dozen columns is under 60 KiB."""
 
+CELL_LIMIT = 10**24
+"""Largest magnitude of a student's number: a decision parameter of a large ellipse passes
+10^9 (1,726,200,000 for rx = ry = 1200), far below this."""
+
 MAX_TABLE_ROWS = 5000
 """Most rows of a student table: more than any hand-written table, and enough to mark a long
 line's or a large circle's table written by a student's own program."""
@@ -541,7 +545,7 @@ def _number(raw: Any, name: str, where: str) -> Cell:
         raw = repr(raw)
     text = str(raw).strip().strip("$*`").strip().replace("\u2212", "-")
     try:
-        value = parse_number(text)
+        value = parse_number(text, CELL_LIMIT)
     except ValueError as err:
         raise InputError(f"{name}, {where}: {err}", "answer") from None
     places = len(text.split(".", 1)[1]) if "." in text and "e" not in text.lower() else 0
