@@ -171,9 +171,8 @@ def _follow(
     for i, got in enumerate(steps):
         last = i == len(steps) - 1
         own = answer[i] if i < len(answer) else None
-        if own is not None and not _wrong(got, own, marked, last):
-            exp = own  # the answer's own step is right whatever came before
-        else:
+        exp: Expected | None = own  # the answer's own step is right whatever came before
+        if own is None or _wrong(got, own, marked, last):
             exp = _judged(model, bases, got, marked, last) or own
         from_answer = exp is own
         if exp is None:
