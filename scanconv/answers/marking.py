@@ -36,7 +36,6 @@ from .marking_rows import (
     Layout,
     Marking,
     Verdict,
-    as_got,
     exact_of,
     pixel_of,
     steps_of,
@@ -51,10 +50,13 @@ __all__ = [
     "Marking",
     "Verdict",
     "batch_solution",
+    "expect",
     "mark",
     "marking_solution",
     "model_for",
+    "reached",
     "safe_text",
+    "score",
 ]
 
 MAX_QUESTION_ROWS = 10**4
@@ -365,6 +367,3 @@ def _marking(
         fields,
         skipped,
     )
-
-
-__all__ += ["as_got", "expect", "reached", "score"]

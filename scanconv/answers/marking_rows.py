@@ -251,13 +251,3 @@ def wrong_fields(got: Got, exp: Expected, marked: set[str], last: bool) -> tuple
     ):
         wrong.append("p_next")
     return tuple(wrong)
-
-
-def as_got(e: Expected) -> Got:
-    """An expected step written as a student's (to run follow-through on past the table)."""
-
-    def c(v: Number | None) -> Cell | None:
-        return None if v is None else Cell(Fraction(v), 0)
-
-    exact = (c(e.exact[0]), c(e.exact[1])) if e.exact else None
-    return Got("-", c(e.p), e.decision, (c(e.point[0]), c(e.point[1])), exact, c(e.p_next), "-")
