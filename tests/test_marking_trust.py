@@ -539,3 +539,85 @@ def test_large_tables_of_scanconv_are_marked_in_full(solution):
     # attack report D17: the circle's CSV was refused (x twice), the ellipse's p beyond 10^9
     m = mark(parse_text(_text(solution, Format.csv), "big.csv", ".csv"), solution)
     assert (m.right, m.first_error) == (m.total, "") and m.total > 1000
+
+
+# --- the step models from any state, by any move -------------------------------------------------
+
+
+def test_each_model_steps_by_a_given_move_and_names_its_rule():
+    from scanconv.answers.models import (
+        BresenhamCircle,
+        BresenhamLine,
+        MidpointCircle,
+        MidpointEllipse,
+        State,
+        UnswappedLine,
+    )
+
+    line = BresenhamLine(2, 2, 10, 6, tie="keep")
+    s = State((6, 4), 0, k=4)
+    # tie = keep: p <= 0 keeps y (E): 0 + 2dy = 8; the move NE taken anyway: 0 + 8 - 16 = -8
+    assert line.decide(s) == "E" and line.rule(s) == "p <= 0 chooses E"
+    assert line.step(s, "NE") == State((7, 5), -8, k=5)
+    assert line.step(s, "SE") is None and line.step(s._replace(p=None), "E") is None
+    assert BresenhamLine(2, 2, 10, 6).rule(State((2, 2), 3)) == "p >= 0 chooses NE"
+    # not swapped, (10, 6) to (2, 2): dx = -8, dy = -4; E adds 2dy = -8
+    assert UnswappedLine(10, 6, 2, 2).step(State((10, 6), 0), "E") == State((11, 6), -8, k=1)
+    assert UnswappedLine(10, 6, 2, 2).step(State((10, 6), 0), "SE") is None
+    # circles: a move that is not E or SE, or no p, is no step
+    for model in (MidpointCircle(5), BresenhamCircle(5)):
+        assert model.step(State((0, 5), -4), "NE") is None
+        assert (
+            model.step(State((0, 5), None), "E") is None and model.rule(State((0, 5), None)) == ""
+        )
+    assert BresenhamCircle(5).rule(State((0, 5), -7)) == "d < 0 chooses E"
+    # the ellipse 8 x 6: region 2 from (7, 3) with p2 = -23 <= 0 goes SE; tie = keep at 0 is S
+    e = MidpointEllipse(8, 6, tie="keep")
+    r2 = State((7, 3), -23, region=2, k=7)
+    assert e.decide(r2) == "SE" and e.rule(r2) == "p2 < 0 chooses SE"
+    assert e.rule(r2._replace(p=0)) == "p2 >= 0 chooses S"
+    assert MidpointEllipse(8, 6).rule(r2) == "p2 <= 0 chooses SE"
+    assert e.at((7, 2), r2) == r2._replace(point=(7, 2))
+    assert e.step(r2, "E") is None and e.step(r2._replace(p=None), "S") is None
+    assert e.step(State((0, 6), None, region=1), "E") is None
+    assert e.rule(State((0, 6), None, region=1)) == ""
+
+
+@pytest.mark.parametrize(
+    ("heading", "field"),
+    [
+        ("x (rounded)", "px"),
+        ("y (Rounded)", "py"),
+        ("round (x, y)", "pxy"),
+        ("Pixel Plotted (x y)", "pxy"),
+        ("x_k+1 (px)", "x"),
+        ("Next (x, y)", None),
+        ("(x_c+x, y_c+y)", None),
+        ("Update p", "p_next"),
+        ("Choose", "decision"),
+    ],
+)
+def test_the_notes_headings_map_to_fields(heading, field):
+    from scanconv.core.student_table import field_of
+
+    assert field_of(heading)[0] == field
+
+
+def test_odd_tables_are_read_or_refused_in_one_line():
+    # a document whose pipe tables have no pixels: the first is named in the refusal
+    with pytest.raises(InputError, match="no column for the pixels among the columns 'a', 'b'"):
+        parse_text("| a | b |\n|---|---|\n| 1 | 2 |\n\n| c |\n|---|\n| 3 |\n", "t.md", ".md")
+    # pipe rows without a separator, no suffix: refused, naming the line
+    with pytest.raises(InputError, match="line 1: a pipe table needs"):
+        parse_text("| k | (x, y) |\n| 0 | (2, 2) |\n", "t")
+    # x next to round(y): the pixel is (x, round(y)); a pixel of 2.5 is no pixel
+    t = parse_text("x,y_sqrt,round(y)\n0,5,5\n1,4.899,5\n2,4.583,2.5\n", "p.csv")
+    m = mark(t, api.circle(5, method="polynomial"))
+    assert [v.mark for v in m.verdicts][:3] == ["right", "right", "wrong"]
+
+
+def test_a_circle_with_a_blank_point_is_marked_and_the_centre_tried(tmp_path):
+    # r = 5 at (10, 10), absolute points with one blank: the blank step is wrong, 3 of 4
+    text = ABSOLUTE.replace("2,4,12,15", "2,4,,")
+    result = check_text(tmp_path, "blank.csv", text, "circle", "5", "--center", "10", "10")
+    assert (result["score"], result["out_of"]) == (3, 4)

@@ -137,11 +137,14 @@ class BresenhamLine(Model):
         return State(self.first, self.p0())
 
     def _moves(self) -> tuple[str, str]:
-        out = []
-        for minor in (0, self.s):
-            d = (minor, self.dir) if self.steep else (self.dir, minor)
-            out.append(Move.from_delta(*d).value)
-        return out[0], out[1]
+        """The two moves: the major step alone, and with the minor step."""
+        if not hasattr(self, "_pair"):
+            out = []
+            for minor in (0, self.s):
+                d = (minor, self.dir) if self.steep else (self.dir, minor)
+                out.append(Move.from_delta(*d).value)
+            self._pair = (out[0], out[1])
+        return self._pair
 
     def moves(self, s: State) -> tuple[str, ...]:
         return self._moves()
@@ -197,8 +200,7 @@ class UnswappedLine(BresenhamLine):
         return 2 * self.smin - self.smaj
 
     def _moves(self) -> tuple[str, str]:
-        d0, d1 = ((0, 1), (1, 1)) if self.steep else ((1, 0), (1, 1))
-        return Move.from_delta(*d0).value, Move.from_delta(*d1).value
+        return ("N", "NE") if self.steep else ("E", "NE")
 
     def step(self, s: State, move: str | None) -> State | None:
         if s.p is None or move not in self._moves():
