@@ -621,3 +621,31 @@ def test_a_circle_with_a_blank_point_is_marked_and_the_centre_tried(tmp_path):
     text = ABSOLUTE.replace("2,4,12,15", "2,4,,")
     result = check_text(tmp_path, "blank.csv", text, "circle", "5", "--center", "10", "10")
     assert (result["score"], result["out_of"]) == (3, 4)
+
+
+# A table typed in a text file, columns lined up with spaces, in the notes' layout with the
+# notes' heading: the line (2, 2) to (10, 6) all right, 8 of 8; the same with single spaces.
+SPACED = """k   p_k   Pixel Plotted (x, y)
+0   0     (2, 2)
+1   -8    (3, 3)
+2   0     (4, 3)
+3   -8    (5, 4)
+4   0     (6, 4)
+5   -8    (7, 5)
+6   0     (8, 5)
+7   -8    (9, 6)
+8   0     (10, 6)
+"""
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        SPACED,
+        "k p x y\n0 0 2 2\n1 -8 3 3\n2 0 4 3\n3 -8 5 4\n"
+        "4 0 6 4\n5 -8 7 5\n6 0 8 5\n7 -8 9 6\n8 0 10 6\n",
+    ],
+)
+def test_a_table_lined_up_with_spaces_is_read(tmp_path, text):
+    result = check_text(tmp_path, "typed.txt", text, *LINE)
+    assert (result["score"], result["out_of"]) == (8, 8)

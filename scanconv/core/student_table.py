@@ -253,11 +253,12 @@ def _csv_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
     lines = text.splitlines()
     first = next((ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#")), "")
     # a tab first: the notes' tables are tab-separated with commas inside "(x, y)"
-    delimiter = "\t" if "\t" in first else "," if "," in first else ";" if ";" in first else ","
+    bare = re.sub(r"[(\[][^)\]]*[)\]]", "", first)  # the commas of "(x, y)" part nothing
+    delimiter = "\t" if "\t" in bare else "," if "," in bare else ";" if ";" in bare else " "
     headers: list[str] | None = None
     rows: list[RawRow] = []
     try:
-        reader = csv.reader(lines, delimiter=delimiter)
+        reader = csv.reader(lines, delimiter=delimiter) if delimiter != " " else _spaced(lines)
         for number, cells in enumerate(reader, 1):
             if not any(c.strip() for c in cells) or cells[0].lstrip().startswith("#"):
                 continue
@@ -270,6 +271,20 @@ def _csv_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
     except csv.Error as err:
         raise InputError(f"{name}: not a CSV table ({err})", "answer") from None
     return headers or [], rows
+
+
+def _spaced(lines: list[str]) -> list[list[str]]:
+    """Columns lined up with spaces (a table typed in a text file): two or more spaces part
+    the cells if the heading has them, else any space does.
+
+    >>> _spaced(["k  p_k  (x, y)", "0    0  (2, 2)"])
+    [['k', 'p_k', '(x, y)'], ['0', '0', '(2, 2)']]
+    """
+    first = next((ln for ln in lines if ln.strip()), "")
+    wide = re.search(r"\S {2,}\S", first.strip()) is not None
+    return [
+        re.split(r" {2,}" if wide else r"\s+", ln.strip()) if ln.strip() else [] for ln in lines
+    ]
 
 
 def _rejoin(cells: list[str], delimiter: str) -> list[str]:
