@@ -508,18 +508,24 @@ def _text(cells: list[Any], i: int) -> str:
     return " ".join(str(cells[i]).split()) if i < len(cells) and cells[i] is not None else ""
 
 
-_MOVE = re.compile(r"(NE|NW|SE|SW|N|E|S|W)\b")
+_MOVE = re.compile(r"\b(NE|NW|SE|SW|N|E|S|W)\b")
 
 
 def move_of(raw: Any) -> str | None:
-    """A decision cell as a move: ``NE``, ``E (keep y)``, ``se`` (``None``: not a move).
+    """A decision cell as a move: ``NE``, ``E (keep y)``, ``p < 0: E``, ``se`` (``None``: no
+    move named).
 
-    >>> move_of(" ne "), move_of("E (x + 1)"), move_of("-"), move_of("keep")
-    ('NE', 'E', None, None)
+    >>> move_of(" ne "), move_of("E (x + 1)"), move_of("p < 0 -> E"), move_of("-")
+    ('NE', 'E', 'E', None)
+    >>> move_of("keep"), move_of("n/a")
+    (None, None)
     """
     if raw is None or isinstance(raw, (bool, int, float, list, dict)):
         return None
-    m = _MOVE.match(str(raw).strip().strip("$*`").strip().upper())
+    text = str(raw).strip().strip("$*`").strip()
+    if text.lower() in _EMPTY:
+        return None
+    m = _MOVE.search(text.upper())
     return m.group(1) if m else None
 
 
