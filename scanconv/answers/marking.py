@@ -347,7 +347,7 @@ def _marking(
     lay: Layout,
     start: Got | None,
 ) -> Marking:
-    fields = tuple(f for f in ("pixel", "exact", "p", "decision", "p_next") if f in marked)
+    fields = tuple(f for f in ("p", "decision", "pixel", "exact", "p_next") if f in marked)
     first = next((v for v in verdicts if not v.mark.startswith("right")), None)
     skipped = ""
     shown = list(verdicts)

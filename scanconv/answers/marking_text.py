@@ -50,7 +50,9 @@ def got_text(got: Got | None, fields: Sequence[str]) -> str:
 
 
 def expected_text(exp: Expected | None, fields: Sequence[str]) -> str:
-    """An expected step in the same words (``-`` where there is no value)."""
+    """An expected step in the same words (``-`` where there is no value): the decision the
+    rule takes, the point and the next p it reaches (a point or next p that follows from the
+    student's own wrong decision is not marked wrong again, see :func:`..marking.expect`)."""
     if exp is None:
         return "-"
 
@@ -63,12 +65,13 @@ def expected_text(exp: Expected | None, fields: Sequence[str]) -> str:
             parts.append(f"p = {n(exp.p)}")
         elif f == "decision":
             parts.append(exp.decision or "-")
-        elif f == "pixel":
-            parts.append(f"({exp.point[0]}, {exp.point[1]})")
+        elif f == "pixel":  # the point the rule's decision reaches
+            pt = exp.ruled.point if exp.ruled is not None else exp.point
+            parts.append(f"({pt[0]}, {pt[1]})")
         elif f == "exact" and exp.exact is not None:
             parts.append(f"x = {n(exp.exact[0])}, y = {n(exp.exact[1])}")
         elif f == "p_next":
-            parts.append(f"next p = {n(exp.p_next)}")
+            parts.append(f"next p = {n(exp.ruled.p if exp.ruled is not None else exp.p_next)}")
     return ", ".join(parts)
 
 
@@ -113,8 +116,9 @@ def explain(v: Verdict, fields: Sequence[str]) -> str:
     if v.mark == "extra" or v.expected is None:
         return f"{at} is one row too many: the algorithm has already stopped."
     parts = []
+    judged = v.expected._replace(ruled=None)  # the values the step was judged against
     for w in v.wrong:
-        want, have = expected_text(v.expected, (w,)), got_text(v.got, (w,))
+        want, have = expected_text(judged, (w,)), got_text(v.got, (w,))
         if w in ("p", "p_next"):
             want, have = _value(want), _value(have)
         parts.append(f"{NAMES[w]} should be {want}, not {have}")
