@@ -82,7 +82,8 @@ def test_every_format_and_algorithm(fmt, algo):
         assert [tuple(s["pixel"]) for s in doc["steps"]] == steps
     elif fmt == "csv":
         header, *rows = list(csv.reader(io.StringIO(r.out)))
-        x, y = header.index("x"), header.index("y")  # the first x and y: the pixel's
+        px, py = ("plot_x", "plot_y") if "plot_x" in header else ("x", "y")  # the pixel's
+        x, y = header.index(px), header.index(py)
         assert [(int(row[x]), int(row[y])) for row in rows] == steps
         assert pixels[len(pixels) - len(rows) :] == steps  # every row's pixel is plotted
     else:

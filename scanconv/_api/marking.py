@@ -22,7 +22,7 @@ def check(answer: str | os.PathLike[str], question: str | Sequence[str] | Soluti
 
     >>> m = check("tests/data/check/slip.csv", "line 2 2 10 6")
     >>> m.data["score"], m.data["out_of"]
-    (8, 9)
+    (7, 8)
     """
     from ..answers.marking import mark, marking_solution
     from ..core.records import Solution

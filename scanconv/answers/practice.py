@@ -167,6 +167,14 @@ def _centre(rng: random.Random, difficulty: str) -> tuple[int, int]:
     return xc, yc
 
 
+#: Each circle method as the course notes name it: the notes' Topic 9 "Bresenham's circle" is
+#: p0 = 1 - r (scanconv's midpoint method); Bresenham's own form d0 = 3 - 2r is named by its p0.
+_CIRCLE_NAMES = {
+    "midpoint": "Bresenham's circle algorithm (the notes' form, p0 = 1 - r)",
+    "bresenham": "Bresenham's circle algorithm in the form d0 = 3 - 2r",
+}
+
+
 def _circle(rng: random.Random, difficulty: str, kind: tuple[str, bool]) -> PracticeQuestion:
     method, away = kind
     r = rng.randrange(_RADIUS[difficulty][0], _RADIUS[difficulty][1] + 1)
@@ -178,9 +186,7 @@ def _circle(rng: random.Random, difficulty: str, kind: tuple[str, bool]) -> Prac
         argv += ["--center", str(xc), str(yc)]
         where = f"centred at ({xc}, {yc})"
         features.add("centre away")
-    name = (
-        "the midpoint circle algorithm" if method == "midpoint" else "Bresenham's circle algorithm"
-    )
+    name = _CIRCLE_NAMES[method]
     return PracticeQuestion(
         "circle",
         tuple(argv),
