@@ -41,3 +41,17 @@ def test_the_default_is_bresenhams_own() -> None:
     sol = circle_solution("bresenham", 10)
     assert [s.p for s in sol.steps()][:4] == [-17, -11, -1, 13]
     assert "4x_{k+1}" in circle_solution("bresenham", 10, xstep="first").derived[2].tex
+
+
+@pytest.mark.parametrize("r", [5, 10, 13, 37])
+@pytest.mark.parametrize("tie", ["step", "keep"])
+def test_the_marking_model_follows_the_x_first_generator(r: int, tie: str) -> None:
+    from scanconv.answers.models import BresenhamCircle
+
+    m = BresenhamCircle(r, tie, "first")
+    s = m.start()
+    got = [(s.p, s.point)]
+    while (t := m.step(s, m.decide(s))) is not None and not m.done(s, t):
+        got.append((t.p, t.point))
+        s = t
+    assert got == [(x.p, x.pixel) for x in bresenham(r, tie, "first")]

@@ -78,7 +78,8 @@ def model_for(solution: Solution, knobs: dict[str, str] | None = None) -> Model 
     if prim == "line" and "P1" in g and "P2" in g:
         (x1, y1), (x2, y2) = g["P1"], g["P2"]
         ends = _ends(solution)
-        if algo == "bresenham" and ends is not None:
+        if algo in ("bresenham", "midpoint") and ends is not None and k.get("scale") != "half":
+            # the midpoint line's d is Bresenham's p (its record names the same model)
             m = BresenhamLine(*ends, k.get("tie", "step"), k.get("start", "swap"))
         elif algo == "dda":
             m = DDALine(x1, y1, x2, y2, k.get("rounding", "half-up"), k.get("start", "given"))
@@ -87,7 +88,7 @@ def model_for(solution: Solution, knobs: dict[str, str] | None = None) -> Model 
         if algo == "midpoint":
             m = MidpointCircle(r, k.get("tie", "step"), k.get("p0", "1-r"), k.get("loop", "strict"))
         elif algo == "bresenham":
-            m = BresenhamCircle(r, k.get("tie", "step"))
+            m = BresenhamCircle(r, k.get("tie", "step"), k.get("xstep", "last"))
         elif algo == "general":
             m = GeneralCircle(r, k.get("tie", "step"), k.get("loop", "strict"))
     elif prim == "ellipse" and algo == "midpoint" and "rx" in g:

@@ -311,8 +311,11 @@ class OldXMidpoint(MidpointCircle):
 class BresenhamCircle(Model):
     """Bresenham's circle, d0 = 3 - 2r, as in :func:`scanconv.algorithms.circles.bresenham`."""
 
-    def __init__(self, r: int, tie: str = "step") -> None:
+    def __init__(self, r: int, tie: str = "step", xstep: str = "last") -> None:
         self.r, self.t = r, 1 if tie == "keep" else 0
+        # x (and y) stepped before d is updated: 4(x + 1) and 4((x + 1) - (y - 1)), so the
+        # increments are 4 (E) and 8 (SE) larger than Bresenham's own
+        self.extra_e, self.extra_se = (4, 8) if xstep == "first" else (0, 0)
 
     def start(self) -> State:
         return State((0, self.r), 3 - 2 * self.r)
@@ -336,9 +339,9 @@ class BresenhamCircle(Model):
             return None
         x, y = s.point
         if move == "E":
-            e, ny = s.p + 4 * x + 6, y
+            e, ny = s.p + 4 * x + 6 + self.extra_e, y
         else:
-            e, ny = s.p + 4 * (x - y) + 10, y - 1
+            e, ny = s.p + 4 * (x - y) + 10 + self.extra_se, y - 1
         return State((x + 1, ny), e, k=s.k + 1)
 
 
