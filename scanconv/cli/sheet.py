@@ -16,25 +16,15 @@ The API (what other commands, the exam book and the tests build on)::
         (:mod:`scanconv.render.sheet`) the whole key or worksheet, rendered in memory, so a bad
         question never leaves a partial file.
 
-The question file, one question per line, written as scanconv's own arguments::
-
-    title: Unit 2 test: scan conversion        (optional, once)
-    section: Lines                             (optional: a heading for the questions after it)
-    # a comment; blank lines are ignored
-    > Draw the line from (2, 2) to (10, 6) with the DDA algorithm.   (optional wording)
-    [4] line 2 2 10 6 --algo dda               ([N] or [N marks]: the marks, optional)
-    circle 8 --center 2 3   # a comment after a question
-
-Words are split as a shell splits them (quote a formula: ``sample 'x + y' --size 4``), and ``#``
-starts a comment where a shell's does (at the start of a word, outside quotes). A question may
-carry the options that change how its answer is shown (``--no-grid``, ``--brief``, ``--exact``,
-``--origin``); the format and the output file are the sheet's.
+The question file (one question per line, written as scanconv's own arguments) is read by
+:mod:`scanconv.questions.files`. A question may carry the options that change how its answer
+is shown (``--no-grid``, ``--brief``, ``--exact``, ``--origin``); the format and the output
+file are the sheet's.
 """
 
 from __future__ import annotations
 
 import copy
-import re
 from collections.abc import Iterable
 from enum import Enum
 from pathlib import Path
@@ -42,165 +32,27 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from ..questions.files import (
+    MAX_FILE_BYTES,
+    MAX_QUESTIONS,
+    MAX_ROWS,
+    QuestionError,
+    read_file,
+    read_questions,
+    strip_comment,
+)
 from ..render import Options
 from ..render.sheet import Answered, Question, Sheet
 from .application import app, register
 from .command import Command, error_message
-from .output import PROG, fail, note, write_atomic
+from .output import PROG, Pending, check_paths, fail, note, write_all, write_atomic
 
 if TYPE_CHECKING:
     from ..core.records import Solution
 
 __all__ = ["Answered", "Question", "QuestionError", "Sheet", "answer", "answer_questions"]
-__all__ += ["read_file", "read_questions", "sheet"]
-
-MAX_QUESTIONS = 1000
-"""The most questions one sheet takes (a 200-question key is the benchmark)."""
-MAX_FILE_BYTES = 1_000_000
-"""The largest question file read."""
-MAX_ROWS = 10_000
-"""The most rows of any one table of a question's answer (a sheet is built in memory)."""
-
-
-class QuestionError(ValueError):
-    """A bad line of a question file: ``str()`` is ``SOURCE:LINE: message``."""
-
-    def __init__(self, source: str, line: int, message: str) -> None:
-        super().__init__(f"{source}:{line}: {message}")
-        self.source, self.line, self.message = source, line, message
-
-
-# --- reading --------------------------------------------------------------------------------
-
-_MARKS = re.compile(r"^\[\s*(\d{1,4})\s*(?:marks?)?\s*\]\s*", re.IGNORECASE)
-_KEYWORD = re.compile(r"^(title|section)\s*:\s*(.*)$", re.IGNORECASE)
-
-
-def strip_comment(line: str) -> str:
-    """``line`` without its comment: ``#`` at the start of a word, outside quotes, as in a
-    shell.
-
-    >>> strip_comment("fill flood --rows '#..#' --seed 1 1  # the notes' example")
-    "fill flood --rows '#..#' --seed 1 1  "
-    >>> strip_comment("line 2 2#3")
-    'line 2 2#3'
-    """
-    quote = ""
-    escaped = False
-    for i, ch in enumerate(line):
-        if escaped:
-            escaped = False
-        elif ch == "\\" and quote != "'":
-            escaped = True
-        elif quote:
-            if ch == quote:
-                quote = ""
-        elif ch in "'\"":
-            quote = ch
-        elif ch == "#" and (i == 0 or line[i - 1].isspace()):
-            return line[:i]
-    return line
-
-
-def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
-    """Parse a question file (the syntax is in this module's docstring).
-
-    >>> sheet = read_questions("title: Test\\n# c\\n[4] line 2 2 10 6 --algo dda\\ncircle 8\\n")
-    >>> sheet.title, [(q.number, q.line, q.marks, q.argv[0]) for q in sheet.questions]
-    ('Test', [(1, 3, 4, 'line'), (2, 4, None, 'circle')])
-    >>> read_questions("line 2 2 'x")
-    Traceback (most recent call last):
-    ...
-    scanconv.cli.sheet.QuestionError: QUESTIONS:1: unbalanced quotes: No closing quotation
-
-    Control characters (a terminal escape sequence) become U+FFFD, so no output echoes them:
-
-    >>> read_questions("title: A\\x1b[31mB\\nline 0 0 1 1").title
-    'A\\ufffd[31mB'
-    """
-    import shlex
-
-    title = ""
-    section = ""
-    wording: list[str] = []
-    questions: list[Question] = []
-    import re
-
-    control = re.compile("[\x01-\x08\x0b-\x1f\x7f-\x9f]")  # ESC, BEL, ...: never echoed
-    for number, raw in enumerate(text.splitlines(), 1):
-        stripped = control.sub("\ufffd", raw).strip()
-        if not stripped or stripped.startswith("#"):
-            continue
-        if stripped.startswith(">"):
-            wording.append(stripped[1:].strip())
-            continue
-        keyword = _KEYWORD.match(stripped)
-        if keyword:
-            name, value = keyword.group(1).lower(), " ".join(keyword.group(2).split())
-            if not value:
-                raise QuestionError(source, number, f"'{name}:' needs a text after it")
-            if name == "title":
-                if title:
-                    raise QuestionError(source, number, "a second title line (one per sheet)")
-                title = value
-            else:
-                section = value
-            continue
-        marks = None
-        found = _MARKS.match(stripped)
-        if found:
-            marks = int(found.group(1))
-            stripped = stripped[found.end() :]
-        elif stripped.startswith("["):
-            raise QuestionError(
-                source, number, "marks are written [N] or [N marks] before the question, e.g. [4]"
-            )
-        try:
-            argv = tuple(shlex.split(strip_comment(stripped)))
-        except ValueError as err:
-            raise QuestionError(source, number, f"unbalanced quotes: {err}") from None
-        if not argv:
-            raise QuestionError(source, number, "marks without a question")
-        if len(questions) == MAX_QUESTIONS:
-            raise QuestionError(source, number, f"at most {MAX_QUESTIONS} questions in one sheet")
-        questions.append(
-            Question(len(questions) + 1, number, argv, marks, " ".join(wording), section)
-        )
-        wording = []
-    if wording:
-        raise QuestionError(source, number, "'>' wording without a question after it")
-    return Sheet(title, tuple(questions), source)
-
-
-def read_file(path: str) -> Sheet:
-    """Read and parse the question file ``path`` (``-``: standard input); a file that cannot
-    be read is a ``ValueError`` naming it."""
-    import sys
-
-    if path == "":
-        raise ValueError("QUESTIONS is empty (''): give the name of a question file")
-    try:
-        if path == "-":
-            text = sys.stdin.read(MAX_FILE_BYTES + 1)
-        else:
-            with open(path, "rb") as f:
-                data = f.read(MAX_FILE_BYTES + 1)
-            if b"\x00" in data:
-                raise ValueError(f"{path} is not a text file (it holds NUL bytes)")
-            text = data.decode("utf-8")
-    except UnicodeDecodeError:
-        raise ValueError(f"{path} is not UTF-8 text") from None
-    except IsADirectoryError:
-        raise ValueError(f"{path!r} is a directory, not a question file") from None
-    except OSError as err:
-        raise ValueError(f"cannot read {path!r}: {err.strerror or err}") from None
-    if len(text) > MAX_FILE_BYTES:
-        raise ValueError(f"{path} is larger than {MAX_FILE_BYTES:,} bytes")
-    sheet = read_questions(text, "<stdin>" if path == "-" else path)
-    if not sheet.questions:
-        raise ValueError(f"{path} holds no question (one per line: line 2 2 10 6 --algo dda)")
-    return sheet
-
+__all__ += ["read_file", "read_questions", "sheet", "strip_comment"]
+__all__ += ["MAX_FILE_BYTES", "MAX_QUESTIONS", "MAX_ROWS"]
 
 # --- answering ------------------------------------------------------------------------------
 
@@ -362,7 +214,7 @@ def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -
     >>> answer_questions(sheet.questions, sheet.source)
     Traceback (most recent call last):
     ...
-    scanconv.cli.sheet.QuestionError: q.txt:3: radius must be an integer, got 0.500
+    scanconv.questions.files.QuestionError: q.txt:3: radius must be an integer, got 0.500
     """
     out = []
     for q in questions:
@@ -474,9 +326,26 @@ def write_document(text: str, output: Path | None) -> None:
     write_atomic(output, lambda f: f.write(text))
 
 
+def text_file(path: str | Path, text: str) -> Pending:
+    """``text`` to be written to ``path`` by :func:`~scanconv.cli.output.write_all`."""
+    return Path(path), lambda f: f.write(text), False
+
+
+def pdf_file(path: str | Path, latex: str) -> Pending:
+    """The PDF of ``latex`` (typeset now) to be written to ``path`` by
+    :func:`~scanconv.cli.output.write_all`."""
+    data = typeset(latex)
+    return Path(path), lambda f: f.write(data), True
+
+
 def write_pdf(latex: str, path: Path) -> None:
-    """Compile ``latex`` (a complete document) with pdflatex in a temporary directory and
-    move the PDF to ``path`` atomically. No pdflatex, or a failed run: one line, exit 1."""
+    """Compile ``latex`` and write the PDF to ``path`` atomically (:func:`typeset`)."""
+    write_all([pdf_file(path, latex)])
+
+
+def typeset(latex: str) -> bytes:
+    """The PDF of ``latex`` (a complete document), compiled with pdflatex in a temporary
+    directory. No pdflatex, or a failed run: one line, exit 1."""
     import os
     import shutil
     import subprocess
@@ -507,8 +376,7 @@ def write_pdf(latex: str, path: Path) -> None:
                 fail(f"--pdf: pdflatex failed: {first.lstrip('! ')}", 1)
             if b"Rerun" not in (Path(tmp) / "sheet.log").read_bytes():
                 break
-        data = (Path(tmp) / "sheet.pdf").read_bytes()
-    write_atomic(path, lambda f: f.write(data), binary=True)
+        return (Path(tmp) / "sheet.pdf").read_bytes()
 
 
 _HELP = (
@@ -560,9 +428,10 @@ def sheet(
     from ..render.sheet import sheet_document
 
     kind = "worksheet" if worksheet else "key"
+    if pdf == "":
+        fail("--pdf needs a file name")
+    check_paths([("QUESTIONS", questions)], [("--output", output), ("--pdf", pdf)])
     try:
-        if pdf == "":
-            raise ValueError("--pdf needs a file name")
         name = sheet_format(fmt, output)
         sheet, answered = build(questions)
         notices: list[str] = []
@@ -580,10 +449,12 @@ def sheet(
 def write_outputs(
     text: str, output: Path | None, latex: str | None, pdf: str | None, *, quiet: bool
 ) -> None:
-    """The PDF first (so a failure to typeset leaves stdout empty), then the document: to
-    ``output``, or to stdout unless only the PDF was asked for (``quiet``: no --format)."""
-    if latex is not None and pdf is not None:
-        write_pdf(latex, Path(pdf))
-        if output is None and quiet:
-            return
-    write_document(text, output)
+    """The PDF and the document's file, all or none (so a failure to typeset or to write
+    leaves stdout empty and no file), then the document to stdout unless it went to
+    ``output`` or only the PDF was asked for (``quiet``: no --format)."""
+    files = [pdf_file(pdf, latex)] if latex is not None and pdf is not None else []
+    if output is not None:
+        files.append(text_file(output, text))
+    write_all(files)
+    if output is None and not (files and quiet):
+        write_document(text, None)

@@ -1,0 +1,216 @@
+"""Question files read as an editor reads them, and outputs that never destroy an input or
+leave part of a set (attack report D5, D6, D11, D12, D13, D15)."""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import stat
+from pathlib import Path
+
+import pytest
+
+from scanconv.questions.files import QuestionError, read_questions, split_lines
+
+from .helpers import assert_refused, run
+
+QUESTIONS = "title: T\nline 2 2 10 6\n"
+
+
+def _file(tmp_path: Path, text: str | bytes, name: str = "q.txt") -> Path:
+    path = tmp_path / name
+    if isinstance(text, bytes):
+        path.write_bytes(text)
+    else:
+        path.write_text(text, encoding="utf-8", newline="")
+    return path
+
+
+# --- D11: lines end at \n, \r\n and \r only --------------------------------------------------
+
+
+@pytest.mark.parametrize("sep", ["\u2028", "\u2029", "\x85", "\x0c", "\x0b", "\x1c", "\x1e"])
+def test_other_line_separators_smuggle_no_question(sep: str) -> None:
+    sheet = read_questions(f"title: Unit 2{sep}line 0 0 5 1\n> Draw it{sep}circle 3\ncircle 2\n")
+    assert [q.argv for q in sheet.questions] == [("circle", "2")]
+    assert sheet.title == "Unit 2\ufffdline 0 0 5 1"
+    assert sheet.questions[0].wording == "Draw it\ufffdcircle 3"
+    assert sheet.questions[0].line == 3
+
+
+@pytest.mark.parametrize("end", ["\n", "\r\n", "\r"])
+def test_line_numbers_agree_with_an_editor(end: str) -> None:
+    lines = ["title: a\x0cb", "", "line 2 2 10 6\u2028x", "circle 3", "[x] circle 4"]
+    with pytest.raises(QuestionError) as err:
+        read_questions(end.join(lines) + end, "q.txt")
+    assert err.value.line == 5 and str(err.value).startswith("q.txt:5: marks are written")
+    sheet = read_questions(end.join(lines[:4]) + end)
+    assert [(q.line, q.argv) for q in sheet.questions] == [
+        (3, ("line", "2", "2", "10", "6\ufffdx")),
+        (4, ("circle", "3")),
+    ]
+
+
+def test_a_form_feed_in_a_title_is_not_a_new_line(tmp_path: Path) -> None:
+    r = run("sheet", str(_file(tmp_path, "title: a\x0cb\nline 2 2 10 6\n")), "-f", "json")
+    assert r.code == 0, r.err
+    assert json.loads(r.out)["title"] == "a\ufffdb"
+    assert json.loads(r.out)["questions"][0]["line"] == 2
+
+
+def test_split_lines_only_at_line_ends() -> None:
+    assert split_lines("a\r\nb\rc\u2028d\x85e\n\nf") == ["a", "b", "c\u2028d\x85e", "", "f"]
+
+
+# --- D12, D13: a BOM; standard input read as strictly as a file ------------------------------
+
+
+def test_a_utf8_bom_is_accepted(tmp_path: Path) -> None:
+    path = _file(tmp_path, b"\xef\xbb\xbf" + QUESTIONS.encode())
+    r = run("sheet", str(path), "-f", "json")
+    assert r.code == 0, r.err
+    assert '"title": "T"' in r.out
+
+
+class _Stdin(io.TextIOWrapper):
+    """Standard input holding ``data`` (bytes underneath, as a real one)."""
+
+    def __init__(self, data: bytes) -> None:
+        super().__init__(io.BytesIO(data), encoding="utf-8", errors="surrogateescape")
+
+
+@pytest.mark.parametrize(
+    ("data", "word"),
+    [(b"title: caf\xe9\nline 2 2 10 6\n", "not UTF-8"), (b"line 2 2 10 6\x00\n", "NUL")],
+)
+def test_stdin_refuses_what_a_file_refuses(
+    data: bytes, word: str, monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    monkeypatch.setattr("sys.stdin", _Stdin(data))
+    assert_refused(run("sheet", "-", "-f", "json"), "<stdin>", word)
+    assert_refused(run("sheet", str(_file(tmp_path, data))), word)
+
+
+def test_stdin_with_a_bom_is_read(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr("sys.stdin", _Stdin(b"\xef\xbb\xbf" + QUESTIONS.encode()))
+    r = run("sheet", "-", "-f", "json")
+    assert r.code == 0, r.err
+
+
+# --- D5: an output naming an input or another output ----------------------------------------
+
+
+def test_sheet_output_onto_its_question_file_is_refused(tmp_path: Path) -> None:
+    path = _file(tmp_path, QUESTIONS)
+    for args in (["-o", str(path)], ["--pdf", str(path)], ["-o", "q.txt"]):
+        cwd = os.getcwd()
+        os.chdir(tmp_path)
+        try:
+            assert_refused(run("sheet", "q.txt", *args), "the same file as QUESTIONS")
+        finally:
+            os.chdir(cwd)
+        assert path.read_text(encoding="utf-8") == QUESTIONS
+
+
+def test_sheet_output_through_a_symlink_to_its_question_file_is_refused(tmp_path: Path) -> None:
+    path = _file(tmp_path, QUESTIONS)
+    (tmp_path / "key.md").symlink_to(path)
+    assert_refused(run("sheet", str(path), "-o", str(tmp_path / "key.md")), "same file")
+    assert path.read_text(encoding="utf-8") == QUESTIONS
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["--key", "k.md", "-o", "k.md"],
+        ["--questions", "x.txt", "--key", "x.txt"],
+        ["--pdf", "w.pdf", "--key", "w.pdf"],
+        ["--questions", "x.txt", "-o", "./x.txt"],
+    ],
+)
+def test_practice_outputs_naming_one_file_are_refused(
+    args: list[str], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "k.md").write_text("the old key", encoding="utf-8")
+    assert_refused(run("practice", "--seed", "3", *args), "the same file as")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["k.md"]
+    assert (tmp_path / "k.md").read_text(encoding="utf-8") == "the old key"
+
+
+# --- D15: a directory as an output -----------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["sheet", "Q", "--pdf", "D"],
+        ["sheet", "Q", "-o", "D"],
+        ["practice", "--seed", "1", "--key", "D"],
+        ["practice", "--seed", "1", "--questions", "D"],
+        ["practice", "--seed", "1", "--pdf", "D"],
+        ["practice", "--seed", "1", "-o", "D"],
+        ["exam", "-o", "D"],
+    ],
+)
+def test_a_directory_output_is_refused_before_any_work(
+    args: list[str], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv("PATH", str(tmp_path / "nowhere"))  # no pdflatex: refused before it
+    question = _file(tmp_path, QUESTIONS)
+    folder = tmp_path / "out"
+    folder.mkdir()
+    argv = [str(question) if a == "Q" else str(folder) if a == "D" else a for a in args]
+    assert_refused(run(*argv), "directory")
+    assert list(folder.iterdir()) == []
+
+
+# --- D6: several outputs, all or none --------------------------------------------------------
+
+
+@pytest.fixture
+def fake_pdflatex(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A ``pdflatex`` on PATH that writes a small PDF (the real one is not needed here)."""
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir()
+    exe = bin_dir / "pdflatex"
+    exe.write_text("#!/bin/sh\nprintf '%%PDF-1.4\\n' > sheet.pdf\n: > sheet.log\n")
+    exe.chmod(exe.stat().st_mode | stat.S_IEXEC)
+    monkeypatch.setenv("PATH", f"{bin_dir}{os.pathsep}{os.environ['PATH']}")
+
+
+@pytest.mark.usefixtures("fake_pdflatex")
+def test_sheet_pdf_and_output_are_written_together_or_not_at_all(tmp_path: Path) -> None:
+    question = _file(tmp_path, QUESTIONS)
+    pdf = tmp_path / "a.pdf"
+    r = run("sheet", str(question), "--pdf", str(pdf), "-o", str(tmp_path / "missing" / "x.md"))
+    assert r.code == 1 and r.out == "" and r.err.startswith("scanconv: error: cannot write")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bin", "q.txt"]
+    r = run("sheet", str(question), "--pdf", str(pdf), "-o", str(tmp_path / "x.md"))
+    assert r.code == 0, r.err
+    assert pdf.read_bytes().startswith(b"%PDF") and (tmp_path / "x.md").exists()
+
+
+@pytest.mark.usefixtures("fake_pdflatex")
+def test_practice_writes_every_file_or_none(tmp_path: Path) -> None:
+    out = [
+        "--key",
+        str(tmp_path / "k.pdf"),
+        "--questions",
+        str(tmp_path / "qs.txt"),
+        "--pdf",
+        str(tmp_path / "w.pdf"),
+    ]
+    r = run("practice", "--seed", "3", *out, "-o", str(tmp_path / "missing" / "w.md"))
+    assert r.code == 1 and r.err.startswith("scanconv: error: cannot write"), r.err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bin"]
+    r = run("practice", "--seed", "3", *out, "-o", str(tmp_path / "w.md"))
+    assert r.code == 0, r.err
+    assert sorted(p.name for p in tmp_path.iterdir()) == [
+        "bin",
+        "k.pdf",
+        "qs.txt",
+        "w.md",
+        "w.pdf",
+    ]
