@@ -54,6 +54,8 @@ _LAZY: dict[str, tuple[str, str]] = {
     "dda": ("scanconv.algorithms.lines", "dda"),
     "basic": ("scanconv.algorithms.lines", "basic"),
     "line_solution": ("scanconv.answers.line", "line_solution"),
+    # the question language: scanconv's own arguments as a question
+    "check": ("scanconv.questions", "check"),
 }
 
 

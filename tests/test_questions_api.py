@@ -3,10 +3,13 @@ leave part of a set (attack report D5, D6, D11, D12, D13, D15)."""
 
 from __future__ import annotations
 
+import inspect
 import io
 import json
 import os
 import stat
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -214,3 +217,155 @@ def test_practice_writes_every_file_or_none(tmp_path: Path) -> None:
         "w.md",
         "w.pdf",
     ]
+
+
+# --- the question language in the library (issue 26, item 4) --------------------------------
+
+#: Questions, right and wrong, that the library must read exactly as the command line does.
+PARITY = [
+    "line 2 2 10 6 --algo dda",
+    "line (2,2) 10,6 -a BRESENHAM --tie keep",
+    "line -3 -2 4 5 --start given",
+    "line 1/2 0 7/2 1 -adda",
+    "circle 5 -c1 2 --method=bresenham",
+    "circle 8 --p0 5/4-r --loop inclusive",
+    "ellipse 8 6 -c 1 1 --derive",
+    "storage 1024x768 --levels 256",
+    "quantize --bits 2 --input real --recon lower",
+    "sample 'x+y' --size 4x4 -L 4 --domain 0 1 0 1",
+    "image ramp --size 4 --levels 4",
+    "bezier 0 0 1 2 3 3 --at 1/2",
+    "bspline 0 0 1 2 3 3 4 0 -p 2 --knots uniform",
+    "bspline --basis --degree 2 --knots 0,0,0,1,1,1",
+    "continuity 0 0 1 1 2 0 : 2 0 3 -1 4 0",
+    "local-control 0 0 1 2 3 3 4 0 5 1 --move 2 3 4 -p 2",
+    "parametric circle --radius 3 -n 4",
+    "parametric ellipse --a 3 --b 2 --t-range 0 pi",
+    "parametric custom --x t --y 't*t' --samples 3",
+    "compare circle 5",
+    "transform 1 1 2 2 --translate 1 1 --rotate 90",
+    "viewport -w 0 0 10 10 --viewport 0 0 100 100 5 5",
+    "clip line 0 0 10 10 -w 2 2 8 8 -m liang-barsky",
+    "pipeline polygon 0 0 4 0 2 3 -w 0 0 4 4 --viewport 0 0 8 8 --outline",
+    "fill flood --rows '#####/#...#/#####' --seed 2 1 --connectivity 8",
+    "antialias circle 3 -c 1 1",
+    "color rgb 255 0 0 --to hsv --to cmy",
+    "color hsv 210 2/3 0.6 --to rgb",
+    "theory symmetry",
+    # refused: each message as the command line words it
+    "circle 2.5",
+    "line 1 2 3",
+    "line 0 0 1e10 1",
+    "line 2 2 10 6 --algo zzz",
+    "line 2 2 10 6 --algo=",
+    "line 2 2 10 6 --bogus",
+    "line --bogus 2 2 10 6",
+    "line 2 2 10 6 -x",
+    "line 2 2 10 6 -- 7",
+    "line 2 2 10 6 --derive=1",
+    "line 2 2 10 6 -a",
+    "line x 2 10 6 --algo q",
+    "circle -inf",
+    "circle 5 --center 1",
+    "circle 5 --center 1 b",
+    "circle 5 6",
+    "bspline 0 0 1 2 3 3 --degree 5",
+    "bezier 0 0 1 1 -n 2.5",
+    "quantize",
+    "quantize --bits 3 --recon low",
+    "fill flood",
+    "fill flood --seed 1.5 2 --rows '...'",
+    "image ramp --siz 4",
+    "image ramp --origin top-left",
+    "compare curves 3",
+    "clip line 0 0 1 1 -w 0 0 1",
+    "clip polygon 0 0 1 0 1 1 -w 0 0 1 1 -m x",
+    "color rgb x y z",
+    "color rgb 1 2 3 --to",
+    "transform 1 1 --bogus 3",
+    "continuity 0 0 1 1 2 0 2 0 3 -1 4 0",
+    "theory bogus",
+    "lin 2 2 10 6",
+]
+
+
+def _library(question: str) -> tuple[int, str]:
+    from scanconv.questions import parse, solve
+    from scanconv.render import Format, Options, render
+
+    try:
+        solution = solve(parse(question))
+    except ValueError as err:
+        return 2, f"scanconv: error: {err}\n"
+    return 0, "".join(c for c in render(solution, Format.json, Options()) if isinstance(c, str))
+
+
+@pytest.mark.parametrize("question", PARITY)
+def test_the_library_reads_a_question_as_the_command_line_does(question: str) -> None:
+    import shlex
+
+    argv = shlex.split(question)
+    cli = run(*argv)
+    if cli.code == 0:
+        cli = run(*argv, "--format", "json")
+    code, text = _library(question)
+    expected = cli.out if cli.code == 0 else cli.err
+    if question.startswith("lin "):  # the sheet's word for an unknown command, with a hint
+        expected = "scanconv: error: No such command 'lin'; did you mean 'line'?\n"
+    assert (code, text) == (cli.code, expected)
+
+
+def test_the_grammar_is_the_command_lines_declarations() -> None:
+    from scanconv.cli.command import SHARED as CLI_SHARED
+    from scanconv.cli.grammar import declared
+    from scanconv.questions.grammar_table import NOT_QUESTIONS, SHARED, SPECS
+
+    specs, others = declared()
+    assert SPECS == specs, (
+        "run: python -m scanconv.cli.grammar > scanconv/questions/grammar_table.py"
+    )
+    assert NOT_QUESTIONS == others and SHARED == CLI_SHARED
+    assert len(SPECS) >= 33
+
+
+def test_every_command_of_the_grammar_has_an_answer() -> None:
+    from scanconv.questions.commands import BODIES
+    from scanconv.questions.grammar_table import SPECS
+
+    assert {spec.function for spec in SPECS.values()} == set(BODIES)
+    for spec in SPECS.values():
+        inspect.signature(BODIES[spec.function]).bind(**dict.fromkeys(spec.own))  # takes them all
+
+
+def test_questions_are_answered_without_the_command_line() -> None:
+    code = (
+        "import sys, scanconv\n"
+        "from scanconv import questions\n"
+        "assert questions.answer('line 2 2 10 6 --algo dda').algorithm == 'dda'\n"
+        "assert questions.answer(['circle', '5', '--no-grid']).primitive == 'circle'\n"
+        "m = scanconv.check('tests/data/check/slip.csv', 'line 2 2 10 6')\n"
+        "assert m.data['score'] == 8\n"
+        "s = questions.read_questions('[2] line 2 2 10 6\\ncircle 5 --origin top-left\\n')\n"
+        "lines = [questions.parse(q.argv) for q in s.questions]\n"
+        "assert [questions.shown_with(x).origin for x in lines] == ['bottom-left', 'top-left']\n"
+        "try:\n"
+        "    questions.answer('line 2 2 10')\n"
+        "except questions.UsageError as err:\n"
+        "    assert str(err) == \"Missing argument 'Y2'.\"\n"
+        "bad = sorted(m for m in sys.modules if m.split('.')[0] in ('typer', 'click')\n"
+        "             or m.startswith('scanconv.cli'))\n"
+        "print(bad)\n"
+    )
+    root = Path(__file__).resolve().parent.parent
+    done = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=root, timeout=120
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == "[]\n"
+
+
+def test_a_theory_question_without_a_topic_is_one_short_line(tmp_path: Path) -> None:
+    r = run("sheet", str(_file(tmp_path, "theory\n")))
+    assert_refused(r, "q.txt:1: Missing argument 'TOPIC'.")
+    r = run("sheet", str(_file(tmp_path, "theory --list\n")))
+    assert_refused(r, "q.txt:1: --list is not a question")

@@ -1079,10 +1079,10 @@ def antialias_polygon(
 #: API functions defined in this package's submodules, by name -> submodule; loaded on first
 #: use (start-up time). One line per function, grouped by submodule. A submodule is never named
 #: after a function it holds: importing ``scanconv._api.color`` would bind the module, not the
-#: function, to ``_api.color`` (hence ``color_theory`` and ``marking``).
+#: function, to ``_api.color`` (hence ``color_theory``). ``check``, which takes a question in
+#: scanconv's own words, is :func:`scanconv.questions.check`, a layer above.
 SUBMODULE_OF: dict[str, str] = {
     "color": "color_theory",
-    "check": "marking",
     "theory": "color_theory",
 }
 

@@ -6,12 +6,11 @@ The API (what other commands, the exam book and the tests build on)::
         Parse a question file (below). A malformed line raises QuestionError, whose text is
         "SOURCE:LINE: message".
     answer_questions(questions) -> list[Answered]
-        Run each question's command line in this process, through the same click command
-        objects (and so the same parsing, defaults and messages) as ``scanconv ...`` itself,
-        and return (question, Solution, render Options) triples. Any scanconv command line is
-        a question: a topic added later (``theory``, ``color``) needs nothing here. The first
-        bad question raises QuestionError with its line and the error scanconv would give for
-        that command line.
+        Answer each question's command line in this process with the library's question
+        language (:mod:`scanconv.questions`: the same words, defaults and messages as
+        ``scanconv ...`` itself, without the command line's parser), and return (question,
+        Solution, render Options) triples. The first bad question raises QuestionError with
+        its line and the error scanconv would give for that command line.
     sheet_document(sheet, answered, kind, fmt, standalone=False) -> str
         (:mod:`scanconv.render.sheet`) the whole key or worksheet, rendered in memory, so a bad
         question never leaves a partial file.
@@ -24,14 +23,14 @@ file are the sheet's.
 
 from __future__ import annotations
 
-import copy
 from collections.abc import Iterable
 from enum import Enum
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
+from ..questions import parse, shown_with, solve
 from ..questions.files import (
     MAX_FILE_BYTES,
     MAX_QUESTIONS,
@@ -43,9 +42,8 @@ from ..questions.files import (
 )
 from ..render import Options
 from ..render.sheet import Answered, Question, Sheet
-from .application import app, register
-from .command import Command, error_message
-from .output import PROG, Pending, check_paths, fail, note, write_all, write_atomic
+from .application import app
+from .output import Pending, check_paths, fail, note, write_all, write_atomic
 
 if TYPE_CHECKING:
     from ..core.records import Solution
@@ -57,111 +55,10 @@ __all__ += ["MAX_FILE_BYTES", "MAX_QUESTIONS", "MAX_ROWS"]
 # --- answering ------------------------------------------------------------------------------
 
 
-class _Capture(Command):
-    """A command that returns its answer instead of writing it: the same signature (so click
-    parses a question exactly as ``scanconv`` would), the shared display options kept."""
-
-    def __call__(self, **kwargs: Any) -> Any:
-        import inspect
-
-        own = inspect.signature(self.__wrapped__).parameters
-        shown = {k: kwargs.pop(k) for k in ("grid", "origin", "brief", "exact") if k in kwargs}
-        for name in ("output", "svg", "png"):
-            if kwargs.pop(name, None) is not None:
-                raise ValueError(
-                    f"--{name} in a question: the sheet writes one document (give it -o)"
-                )
-        fmt = kwargs.pop("fmt", None)
-        if fmt is not None and getattr(fmt, "value", fmt) != "auto":
-            raise ValueError("--format in a question: the sheet's --format applies to every answer")
-        kwargs.pop("explain", None)
-        for name in ("grid", "origin", "brief", "exact"):  # declared by the command itself
-            if name in own and name in shown:
-                kwargs[name] = shown[name]
-        try:
-            solution = self.__wrapped__(**kwargs)
-        except ValueError as err:
-            raise _Refused(error_message(err, self.parameters)) from None
-        origin = shown.get("origin")
-        options = Options(
-            grid=shown.get("grid", True),
-            origin=getattr(origin, "value", origin) or "bottom-left",
-            brief=shown.get("brief", False),
-            exact=shown.get("exact", False),
-        )
-        return solution, options
-
-
-class _Refused(Exception):
-    """Bad input found by the library, already worded as scanconv words it."""
-
-
-def _capture_info(info: Any) -> Any:
-    """The command ``info`` with a callback that returns the answer instead of writing it;
-    a command that gives no answer (``sheet`` itself, ``check``) is refused."""
-    callback = info.callback
-    if not isinstance(callback, Command):
-        raise _Refused(f"'{_command_name(info)}' cannot be a question of a sheet")
-    new = copy.copy(info)
-    new.callback = _Capture(callback.__wrapped__, callback._shared)
-    return new
-
-
-def _command_name(info: Any) -> str:
-    return info.name or typer.main.get_command_name(info.callback.__name__)
-
-
-def _capturing(group: typer.Typer, argv: tuple[str, ...]) -> tuple[typer.Typer, tuple[str, ...]]:
-    """A copy of ``group`` holding only the command ``argv`` names, which returns its answer;
-    with the names of the command's path. An unknown name is a ``_Refused``."""
-    name = argv[0] if argv else ""
-    for info in group.registered_commands:
-        if info.callback is not None and _command_name(info) == name:
-            one = copy.copy(group)
-            one.registered_commands, one.registered_groups = [_capture_info(info)], []
-            return one, (name,)
-    for sub in group.registered_groups:
-        if sub.name == name and sub.typer_instance is not None:
-            if len(argv) < 2 or argv[1].startswith("-"):
-                names = sorted(_command_name(c) for c in sub.typer_instance.registered_commands)
-                raise _Refused(f"'{name}' needs one of its commands: {', '.join(names)}")
-            inner, path = _capturing(sub.typer_instance, argv[1:])
-            sub = copy.copy(sub)
-            sub.typer_instance = inner
-            one = copy.copy(group)
-            one.registered_commands, one.registered_groups = [], [sub]
-            return one, (name, *path)
-    known = [_command_name(c) for c in group.registered_commands if c.callback is not None]
-    known += [g.name for g in group.registered_groups if g.name]
-    import difflib
-
-    close = difflib.get_close_matches(name, known, n=1)
-    hint = f"; did you mean '{close[0]}'?" if close else ""
-    raise _Refused(f"No such command '{name}'{hint}")
-
-
-_COMMANDS: dict[tuple[str, ...], Any] = {}
-"""Click commands already built, by command path: a sheet of 200 lines builds each once."""
-
-_NOT_QUESTIONS = {"--help", "-h", "--version"}
-
-
-def _click_command(argv: tuple[str, ...]) -> Any:
-    top = argv[0] if argv else ""
-    if not top or top.startswith("-"):
-        raise _Refused("a question starts with a command name (line, circle, ...)")
-    if top in ("sheet", "practice", "check", "exam"):
-        raise _Refused(f"'{top}' cannot be a question of a sheet")
-    key = argv[:2]
-    if key not in _COMMANDS and argv[:1] not in _COMMANDS:
-        group, path = _capturing(register(list(argv)), argv)
-        _COMMANDS[path] = typer.main.get_command(group)
-    return _COMMANDS.get(key) or _COMMANDS[argv[:1]]
-
-
 def answer(argv: Iterable[str]) -> tuple[Solution, Options]:
-    """The answer of one command line, as ``scanconv ARGV`` would give it (in this process):
-    ``(solution, options)``. Bad input is a ``ValueError`` worded as scanconv words it.
+    """The answer of one command line, as ``scanconv ARGV`` would give it, computed by the
+    library (:mod:`scanconv.questions`): ``(solution, options)``. Bad input is a
+    ``ValueError`` worded as scanconv words it.
 
     >>> solution, options = answer(["line", "2", "2", "10", "6", "--algo", "dda", "--no-grid"])
     >>> solution.algorithm, options.grid
@@ -169,41 +66,13 @@ def answer(argv: Iterable[str]) -> tuple[Solution, Options]:
     >>> answer(["line", "2", "2", "10"])
     Traceback (most recent call last):
     ...
-    ValueError: Missing argument 'Y2'.
+    scanconv.questions.words.UsageError: Missing argument 'Y2'.
     """
-    import contextlib
-    import io
-    import sys
-
-    from typer._click import exceptions as click_exc  # typer vendors click
-
-    from .entry import _MINUS, _NONFINITE, _usage_message, students
-
-    args = [_MINUS + a[1:] if a.lower() in _NONFINITE else a for a in students(list(argv))]
-    bad = next((a for a in args if a in _NOT_QUESTIONS), None)
-    said = io.StringIO()
-    try:
-        if bad is not None:
-            raise _Refused(f"{bad} is not a question")
-        command = _click_command(tuple(args))
-        with contextlib.redirect_stderr(said):  # what a command's own fail() says
-            with command.make_context(PROG, args) as ctx:
-                result = command.invoke(ctx)
-    except _Refused as err:
-        raise ValueError(str(err)) from None
-    except click_exc.UsageError as err:
-        raise ValueError(_usage_message(err)) from None
-    except click_exc.ClickException as err:
-        raise ValueError(" ".join(err.format_message().split())) from None
-    except (typer.Exit, typer.Abort):
-        lines = said.getvalue().splitlines()
-        message = lines[-1].split("error: ", 1)[-1] if lines else "it stops without an answer"
-        raise ValueError(message) from None
-    if said.getvalue():  # a remark of the command's own, passed on
-        sys.stderr.write(said.getvalue())
-    if not (isinstance(result, tuple) and len(result) == 2):
-        raise ValueError(f"'{args[0]}' gives no answer that a sheet can show")
-    return result[0], result[1]
+    line = parse(list(argv))
+    options = shown_with(line)
+    # The one place a question's work is weighed before it is done (the per-question
+    # budget): line.function names the command, line.arguments holds its values.
+    return solve(line), options
 
 
 def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -> list[Answered]:
@@ -221,7 +90,7 @@ def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -
         try:
             solution, options = answer(q.argv)
         except ValueError as err:
-            raise QuestionError(source, q.line, str(err)) from None
+            raise QuestionError(source, q.line, " ".join(str(err).split())) from None
         except RecursionError:
             raise QuestionError(source, q.line, "input too deeply nested") from None
         if _too_long(solution):
