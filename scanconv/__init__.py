@@ -19,8 +19,13 @@ under unambiguous names:
 >>> [s.pixel for s in scanconv.bresenham_line(0, 0, 3, 1)]
 [(1, 0), (2, 1), (3, 1)]
 
-Coordinates are ``(x, y)`` with y up. Everything is imported on first use (PEP 562), so
-``import scanconv`` stays cheap for the command line.
+A question written as scanconv's own arguments is answered by :mod:`scanconv.questions`
+(``scanconv.questions.answer("line 2 2 10 6 --algo dda")``), and :func:`check` marks a
+student's table against one.
+
+Coordinates are ``(x, y)`` with y up. Every public name is listed once, in ``__init__.pyi``
+(what type checkers read), and imported from there on first use, so ``import scanconv``
+stays cheap for the command line.
 """
 
 from __future__ import annotations
@@ -30,59 +35,59 @@ from typing import Any
 
 __version__ = "0.1.0"
 
-#: public name -> (module, attribute); an API function is wrapped to return an Answer.
-_LAZY: dict[str, tuple[str, str]] = {
-    # records
-    "Answer": ("scanconv.display", "Answer"),
-    "Column": ("scanconv.core.records", "Column"),
-    "Move": ("scanconv.core.records", "Move"),
-    "Quantity": ("scanconv.core.records", "Quantity"),
-    "Solution": ("scanconv.core.records", "Solution"),
-    "Step": ("scanconv.core.records", "Step"),
-    "Table": ("scanconv.core.records", "Table"),
-    "InputError": ("scanconv.core.checks", "InputError"),
-    "round_half_up": ("scanconv.core.numeric", "round_half_up"),
-    # the generators, by unambiguous names
-    "bresenham_line": ("scanconv.algorithms.lines", "bresenham"),
-    "dda_line": ("scanconv.algorithms.lines", "dda"),
-    "basic_line": ("scanconv.algorithms.lines", "basic"),
-    "midpoint_circle": ("scanconv.algorithms.circles", "midpoint"),
-    "bresenham_circle": ("scanconv.algorithms.circles", "bresenham"),
-    "midpoint_ellipse": ("scanconv.algorithms.ellipses", "midpoint_ellipse"),
-    # earlier names, kept
-    "bresenham": ("scanconv.algorithms.lines", "bresenham"),
-    "dda": ("scanconv.algorithms.lines", "dda"),
-    "basic": ("scanconv.algorithms.lines", "basic"),
-    "line_solution": ("scanconv.answers.line", "line_solution"),
-    # the question language: scanconv's own arguments as a question
-    "check": ("scanconv.questions", "check"),
+#: Names kept for old code, with what to use instead (a DeprecationWarning on use).
+DEPRECATED = {
+    "line_solution": "scanconv.line(x1, y1, x2, y2, algo=...), whose table is in the notes' "
+    "layout unless layout='textbook' (line_solution's default)",
 }
 
 
-def _api_names() -> list[str]:
-    """The API functions (one per command), from :mod:`scanconv._api`."""
-    from . import _api
+def _exports() -> dict[str, tuple[str, str | None]]:
+    """Every public name -> (module, attribute; ``None``: the module itself), read from the
+    stub ``__init__.pyi`` (its ``from X import a as b`` lines)."""
+    import ast
+    from pathlib import Path
 
-    return [n for n in _api.__all__ if n[0].islower()]
+    found: dict[str, tuple[str, str | None]] = {}
+    tree = ast.parse(Path(__file__).with_suffix(".pyi").read_text(encoding="utf-8"))
+    for node in tree.body:
+        if not isinstance(node, ast.ImportFrom):
+            continue
+        for alias in node.names:
+            public = alias.asname or alias.name
+            if node.module is None:  # from . import raster
+                found[public] = (f"{__name__}.{alias.name}", None)
+            else:
+                found[public] = (f"{__name__}.{node.module}", alias.name)
+    return found
+
+
+_EXPORTS: dict[str, tuple[str, str | None]] = {}
 
 
 def __getattr__(name: str) -> Any:
-    if name in _LAZY:
-        module, attr = _LAZY[name]
-        value = getattr(importlib.import_module(module), attr)
-    elif name == "raster":
-        value = importlib.import_module("scanconv.algorithms.raster")
-    elif name == "__all__":
-        value = sorted([*_LAZY, *_api_names(), "raster", "__version__"])
-    elif not name.startswith("_") and name in _api_names():
-        from .display import answering
-
-        value = answering(name)
-    else:
+    if not _EXPORTS:
+        _EXPORTS.update(_exports())
+    if name == "__all__":  # what is advertised: not the deprecated names
+        return sorted([*(n for n in _EXPORTS if n not in DEPRECATED), "__version__"])
+    if name not in _EXPORTS:
         raise AttributeError(f"module 'scanconv' has no attribute {name!r}")
+    module, attr = _EXPORTS[name]
+    value = importlib.import_module(module)
+    if attr is not None:
+        value = getattr(value, attr)
+    if name in DEPRECATED:
+        import warnings
+
+        warnings.warn(
+            f"scanconv.{name} is deprecated: use {DEPRECATED[name]}",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return value  # not cached: every use warns
     globals()[name] = value
     return value
 
 
 def __dir__() -> list[str]:
-    return sorted([*_LAZY, *_api_names(), "raster", "__version__"])
+    return list(__getattr__("__all__"))

@@ -1,5 +1,6 @@
-"""The Python API: one function per command of the command line, each returning a
-:class:`~scanconv.core.records.Solution`.
+"""The Python API: one function per command of the command line, each returning an
+:class:`~scanconv.display.Answer` (a :class:`~scanconv.core.records.Solution` that shows
+itself).
 
 The keywords are the library's parameter names; the choices are strings or the library's enums
 (:class:`LineAlgorithm`, :class:`CircleMethod`, :class:`Rounding`). A number may be an ``int``,
@@ -36,10 +37,13 @@ from ..algorithms.choices import (
     Tie,
 )
 from ..core.checks import InputError
-from ..core.numeric import Number, fmt_short, parse_number
+from ..core.numeric import COORD_LIMIT, Number, fmt_short, parse_number
+from ..display import answers
 
 if TYPE_CHECKING:
     from decimal import Decimal
+
+    import numpy as np
 
     from ..algorithms.circle_choices import P0, CircleMethod, Loop, Update
     from ..algorithms.process_choices import (
@@ -93,10 +97,11 @@ __all__ = [
 ]
 
 if TYPE_CHECKING:
-    NumberLike = int | Fraction | float | Decimal | str
+    NumberLike = int | Fraction | float | Decimal | str | np.integer[Any] | np.floating[Any]
 else:  # decimal is imported only by callers that pass a Decimal (start-up time)
     NumberLike = int | Fraction | float | str
-"""What a number parameter takes: an int, Fraction, float, decimal.Decimal or string."""
+"""What a number parameter takes: an int, Fraction, float, decimal.Decimal, numpy scalar or
+string."""
 
 PointLike = tuple[NumberLike, NumberLike]
 """A point ``(x, y)``."""
@@ -114,6 +119,7 @@ TRangeLike = tuple[FormulaLike, FormulaLike]
 # --- lines, circles, ellipses ------------------------------------------------------------------
 
 
+@answers
 def line(
     x1: NumberLike,
     y1: NumberLike,
@@ -129,15 +135,48 @@ def line(
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:
-    """The line from ``(x1, y1)`` to ``(x2, y2)`` by ``algo`` (``scanconv line``).
+    """The line from ``(x1, y1)`` to ``(x2, y2)`` by ``algo``, worked as in the notes
+    (``scanconv line``).
 
-    ``rounding`` (dda, basic), ``tie`` (bresenham) and ``start`` (bresenham, dda: which end
-    point is plotted first, ``"swap"`` or ``"given"``) are conventions, ``convention`` a named
-    preset (``notes``, ``hearn-baker``, ``foley``, ``wikipedia``); ``layout`` the table's rows
-    (``notes`` or ``textbook``); ``derive`` and ``pseudocode`` add the theory.
+    Parameters
+    ----------
+    x1, y1, x2, y2 : int, Fraction, float, Decimal, numpy scalar or str
+        The end points P1 and P2. A float is read as the decimal it prints as (``0.1`` is
+        1/10); a string may be ``"5/2"``. NaN, infinities and ``|value| > 10**9`` are refused.
+    algo : {"bresenham", "dda", "basic", "wu"} or LineAlgorithm, default "bresenham"
+        The line algorithm.
+    rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"}, optional
+        How the DDA and the basic method round a coordinate to a pixel (default half-up).
+    tie : {"step", "keep"}, optional
+        Bresenham: what a decision parameter of 0 does (default step).
+    start : {"swap", "given"}, optional
+        Which end is plotted first: Bresenham swaps to the end with the smaller major
+        coordinate, the DDA starts at P1 (``given``).
+    convention : {"notes", "hearn-baker", "foley", "wikipedia"}, optional
+        A named preset of the conventions above; a convention given alone overrides it.
+    layout : {"notes", "textbook"}, default "notes"
+        The table's rows: the notes' (the decision, then the pixel it chooses) or the
+        textbook's (one row per plotted pixel).
+    derive, pseudocode : bool, default False
+        Add the derivation with these numbers, and the pseudocode of the variant used.
 
+    Returns
+    -------
+    Answer
+        The worked answer: ``.steps()`` (the table's rows), ``.pixels()``, ``.rows()``,
+        ``.to("markdown")``.
+
+    Raises
+    ------
+    InputError
+        A bad value; ``.param`` names the parameter.
+
+    Examples
+    --------
     >>> list(line(0, 0, 3, 1).pixels())
     [(0, 0), (1, 0), (2, 1), (3, 1)]
+    >>> list(line(2, 2, 10, 6, algo="dda").pixels())
+    [(2, 2), (3, 3), (4, 3), (5, 4), (6, 4), (7, 5), (8, 5), (9, 6), (10, 6)]
     >>> list(line(4, 2, 0, 0).pixels()), list(line(4, 2, 0, 0, start="given").pixels())
     ([(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)], [(4, 2), (3, 1), (2, 1), (1, 0), (0, 0)])
     >>> [s.pixel for s in line("1/2", 0, 3.5, 1, algo=LineAlgorithm.dda).steps()]
@@ -162,6 +201,7 @@ def line(
     )
 
 
+@answers
 def circle(
     r: NumberLike,
     center: PointLike = (0, 0),
@@ -177,12 +217,51 @@ def circle(
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:
-    """The circle of radius ``r`` about ``center`` by ``method`` (``scanconv circle``).
+    """The circle of radius ``r`` about ``center`` by ``method``, worked as in the notes
+    (``scanconv circle``).
 
-    ``rounding`` is for the floating-point methods (polynomial, trig, symmetric-dda); ``tie``,
-    ``p0``, ``loop`` and ``update`` are the decision methods' conventions, ``convention`` a
-    named preset; ``layout``, ``derive`` and ``pseudocode`` as for :func:`line`.
+    Parameters
+    ----------
+    r : int, Fraction, float, Decimal, numpy scalar or str
+        The radius, a whole number >= 0.
+    center : (x, y), default (0, 0)
+        The centre, whole numbers.
+    method : {"midpoint", "bresenham", "polynomial", "general", "trig", "symmetric-dda"}
+        The method (default midpoint); a CircleMethod too.
+    rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"}, optional
+        How the floating-point methods (polynomial, trig, symmetric-dda) round to a pixel.
+    tie : {"step", "keep"}, optional
+        The decision methods: what a decision parameter of 0 does.
+    p0 : {"1-r", "5/4-r"}, optional
+        The midpoint method's initial decision parameter.
+    loop : {"strict", "inclusive"}, optional
+        Whether the octant's loop runs while x < y or x <= y.
+    update : {"new", "old"}, optional
+        Whether the decision update uses the new x (and y) or the old.
+    convention : {"notes", "hearn-baker", "foley", "wikipedia"}, optional
+        A named preset of the conventions above.
+    layout : {"notes", "textbook"}, default "notes"
+        The table's rows, as for :func:`line`.
+    derive, pseudocode : bool, default False
+        Add the derivation and the pseudocode.
 
+    Returns
+    -------
+    Answer
+        The worked answer: the octant's table (``.steps()``) and every pixel by 8-way
+        symmetry (``.pixels()``).
+
+    Raises
+    ------
+    InputError
+        A bad value (a negative or fractional radius, an unknown method).
+
+    Examples
+    --------
+    >>> [s.pixel for s in circle(5).steps()]
+    [(0, 5), (1, 5), (2, 5), (3, 4), (4, 3)]
+    >>> list(circle(5).pixels())[:4]
+    [(0, 5), (0, -5), (5, 0), (-5, 0)]
     >>> [s.pixel for s in circle(5, layout="textbook").steps()]
     [(1, 5), (2, 5), (3, 4), (4, 3)]
     >>> [s.p for s in circle(5, method="general").steps()]
@@ -212,6 +291,7 @@ def circle(
     )
 
 
+@answers
 def ellipse(
     rx: NumberLike,
     ry: NumberLike,
@@ -224,12 +304,41 @@ def ellipse(
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:
-    """The midpoint ellipse with semi-axes ``rx``, ``ry`` about ``center`` (``scanconv ellipse``).
+    """The midpoint ellipse with semi-axes ``rx``, ``ry`` about ``center``, worked in its two
+    regions (``scanconv ellipse``).
 
-    ``loop`` (region 1: ``strict`` or ``inclusive``), ``tie`` (``step``: p = 0 chooses SE in
-    both regions; ``keep``: E in region 1, S in region 2) and ``p0`` (``exact``, or
-    ``rounded`` as Hearn & Baker's C code) are conventions.
+    Parameters
+    ----------
+    rx, ry : int, Fraction, float, Decimal, numpy scalar or str
+        The semi-axes along x and y, whole numbers >= 0.
+    center : (x, y), default (0, 0)
+        The centre, whole numbers.
+    loop : {"strict", "inclusive"}, optional
+        Region 1's loop condition.
+    tie : {"step", "keep"}, optional
+        ``step``: p = 0 chooses SE in both regions; ``keep``: E in region 1, S in region 2.
+    p0 : {"exact", "rounded"}, optional
+        The initial decision parameters, exact or rounded as Hearn & Baker's C code.
+    convention : {"notes", "hearn-baker", "foley", "wikipedia"}, optional
+        A named preset of the conventions above.
+    derive, pseudocode : bool, default False
+        Add the derivation and the pseudocode.
 
+    Returns
+    -------
+    Answer
+        The worked answer: the quadrant's table over both regions (``.steps()``) and every
+        pixel by 4-way symmetry (``.pixels()``).
+
+    Raises
+    ------
+    InputError
+        A bad value.
+
+    Examples
+    --------
+    >>> [s.pixel for s in ellipse(3, 2).steps()]
+    [(1, 2), (2, 1), (3, 0)]
     >>> sorted(ellipse(2, 1).pixels())
     [(-2, 0), (-1, -1), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 1), (2, 0)]
     """
@@ -252,6 +361,7 @@ def ellipse(
     )
 
 
+@answers
 def compare_lines(
     x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, theory: bool = False
 ) -> Solution:
@@ -266,6 +376,7 @@ def compare_lines(
     return solution(a, b, c, d, theory=theory)
 
 
+@answers
 def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
     """Every circle method over the first octant (``scanconv compare circle``).
 
@@ -277,6 +388,7 @@ def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
     return solution(_number(r, "r"), theory=theory)
 
 
+@answers
 def compare_curves() -> Solution:
     """Bezier vs B-spline: the points of the notes' comparison (``scanconv compare curves``).
 
@@ -291,6 +403,7 @@ def compare_curves() -> Solution:
 # --- image representation ---------------------------------------------------------------------
 
 
+@answers
 def storage(
     m: NumberLike,
     n: NumberLike,
@@ -319,6 +432,7 @@ def storage(
     )
 
 
+@answers
 def quantize(
     bits: NumberLike,
     value_range: tuple[NumberLike, NumberLike] | None = None,
@@ -343,6 +457,7 @@ def quantize(
     )
 
 
+@answers
 def sample(
     expr: str,
     size: str | int | tuple[int, int],
@@ -375,6 +490,7 @@ def sample(
     return sample_solution(sampled)
 
 
+@answers
 def ramp(size: str | int | tuple[int, int] = "8", levels: NumberLike = 8) -> Solution:
     """The notes' grayscale ramp, ``i + j`` folded back at ``L - 1`` (``scanconv image ramp``).
 
@@ -390,6 +506,7 @@ def ramp(size: str | int | tuple[int, int] = "8", levels: NumberLike = 8) -> Sol
 # --- curves -----------------------------------------------------------------------------------
 
 
+@answers
 def parametric_circle(
     center: PointLike = (0, 0),
     radius: NumberLike = 1,
@@ -413,6 +530,7 @@ def parametric_circle(
     )
 
 
+@answers
 def parametric_ellipse(
     center: PointLike = (0, 0),
     a: NumberLike = 2,
@@ -431,6 +549,7 @@ def parametric_ellipse(
     return _parametric("ellipse", t_range, samples, center=point, a=a, b=b)
 
 
+@answers
 def parametric_parabola(
     vertex: PointLike = (0, 0),
     a: NumberLike = 1,
@@ -447,6 +566,7 @@ def parametric_parabola(
     return _parametric("parabola", t_range, samples, vertex=point, a=_number(a, "a"))
 
 
+@answers
 def parametric_line(
     x0: NumberLike,
     y0: NumberLike,
@@ -465,6 +585,7 @@ def parametric_line(
     return _parametric("line", t_range, samples, points=points)
 
 
+@answers
 def parametric_custom(
     x: str,
     y: str,
@@ -480,6 +601,7 @@ def parametric_custom(
     return _parametric("custom", t_range, samples, x=x, y=y)
 
 
+@answers
 def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
     """The Bezier curve of ``points`` at ``samples`` steps of t (default 16)
     (``scanconv bezier``).
@@ -494,6 +616,7 @@ def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
     return bezier_solution(pts, _whole(DEFAULT_SAMPLES if samples is None else samples, "samples"))
 
 
+@answers
 def bezier_at(points: PointsLike, t: FormulaLike) -> Solution:
     """De Casteljau's construction at one ``t`` in [0, 1] (``scanconv bezier --at``).
 
@@ -506,6 +629,7 @@ def bezier_at(points: PointsLike, t: FormulaLike) -> Solution:
     return bezier_at_solution(pts, _formula(t, "t"))
 
 
+@answers
 def bspline(
     points: PointsLike,
     degree: NumberLike = 3,
@@ -522,6 +646,7 @@ def bspline(
     return _bspline(points, degree, knots, samples, basis_only=False)
 
 
+@answers
 def bspline_basis(
     points: PointsLike | None,
     degree: NumberLike = 3,
@@ -556,6 +681,7 @@ def bspline_basis(
     return _bspline(points, degree, knots, samples, basis_only=True)
 
 
+@answers
 def bspline_at(
     points: PointsLike,
     t: FormulaLike,
@@ -575,6 +701,7 @@ def bspline_at(
     return bspline_at_solution(pts, _whole(degree, "degree"), spec, _formula(t, "t"))
 
 
+@answers
 def continuity(
     first: PointsLike, second: PointsLike, samples: NumberLike | None = None
 ) -> Solution:
@@ -591,6 +718,7 @@ def continuity(
     return continuity_solution(a, b, steps)
 
 
+@answers
 def local_control(
     points: PointsLike,
     index: NumberLike,
@@ -663,13 +791,31 @@ def _bspline(
 
 
 def _number(value: NumberLike, param: str) -> Number:
-    """An exact number: ``int`` and ``Fraction`` as given, anything else through
-    :func:`~scanconv.core.numeric.parse_number` (a float as the decimal it prints as)."""
-    if isinstance(value, int | Fraction) and not isinstance(value, bool):
+    """An exact number within :data:`~scanconv.core.numeric.COORD_LIMIT`, as the command line
+    reads one: an ``int``, a numpy integer or a ``Fraction`` as given; a ``float`` (numpy's
+    too) as the decimal it prints as; a ``Decimal`` or a string through
+    :func:`~scanconv.core.numeric.parse_number`. NaN and infinities are refused.
+
+    >>> _number(Fraction(5, 2), "x"), _number(2.5, "x"), _number("-3", "x")
+    (Fraction(5, 2), Fraction(5, 2), Fraction(-3, 1))
+    """
+    import numbers
+
+    if isinstance(value, bool):
+        raise InputError(f"{param} must be a number, got {value!r}", param)
+    if isinstance(value, int | Fraction):
+        if not -COORD_LIMIT <= value <= COORD_LIMIT:
+            raise InputError(
+                f"{param} = {value} is out of range (|value| <= {COORD_LIMIT:.0e})", param
+            )
         return value
     decimal = sys.modules.get("decimal")  # a Decimal exists only if its module is loaded
-    if isinstance(value, float):
-        text = repr(value)
+    if isinstance(value, numbers.Integral):  # numpy's integers
+        return _number(int(value), param)
+    if isinstance(value, float) or (
+        isinstance(value, numbers.Real) and not isinstance(value, numbers.Rational)
+    ):  # numpy's floats too, whose repr is np.float64(2.5)
+        text = repr(float(value))
     elif decimal is not None and isinstance(value, decimal.Decimal):
         text = str(value)
     elif isinstance(value, str):
@@ -809,6 +955,7 @@ def _choice(value: Enum | str, param: str) -> str:
 # --- the scan-conversion process: transformations, viewing, clipping ---------------------------
 
 
+@answers
 def transform(
     points: PointsLike, transforms: str | Sequence[str], inverse: bool = False
 ) -> Solution:
@@ -825,6 +972,7 @@ def transform(
     return transform_solution(_flat(points, "points"), transforms, inverse_too=bool(inverse))
 
 
+@answers
 def viewport(
     window: Sequence[NumberLike], viewport: Sequence[NumberLike], points: PointsLike = ()
 ) -> Solution:
@@ -841,6 +989,7 @@ def viewport(
     )
 
 
+@answers
 def clip_line(
     x1: NumberLike,
     y1: NumberLike,
@@ -860,6 +1009,7 @@ def clip_line(
     return clip_line_solution(a, b, c, d, _rect(window, "window"), _choice(method, "method"))
 
 
+@answers
 def clip_polygon(
     vertices: PointsLike,
     window: Sequence[NumberLike],
@@ -878,6 +1028,7 @@ def clip_polygon(
     return clip_polygon_solution(_flat(vertices, "vertices"), _rect(window, "window"))
 
 
+@answers
 def pipeline_line(
     x1: NumberLike,
     y1: NumberLike,
@@ -909,6 +1060,7 @@ def pipeline_line(
     )
 
 
+@answers
 def pipeline_polygon(
     vertices: PointsLike,
     window: Sequence[NumberLike],
@@ -956,6 +1108,7 @@ def _flat(values: PointsLike, param: str) -> list[Number]:
 # --- filled areas and anti-aliasing ------------------------------------------------------------
 
 
+@answers
 def polygon(vertices: PointsLike, rule: FillRule | str = "even-odd") -> Solution:
     """The scan-line fill of the polygon ``vertices`` (``scanconv polygon``): the edge table,
     the active edge table per scan line, the spans and the pixels.
@@ -969,6 +1122,7 @@ def polygon(vertices: PointsLike, rule: FillRule | str = "even-odd") -> Solution
     return polygon_solution(_flat(vertices, "vertices"), _choice(rule, "rule"))
 
 
+@answers
 def fill(
     method: str,
     seed: PointLike,
@@ -1002,6 +1156,7 @@ def fill(
     )
 
 
+@answers
 def antialias_line(
     x1: NumberLike,
     y1: NumberLike,
@@ -1028,6 +1183,7 @@ def antialias_line(
     )
 
 
+@answers
 def antialias_circle(
     r: NumberLike,
     center: PointLike = (0, 0),
@@ -1051,6 +1207,7 @@ def antialias_circle(
     )
 
 
+@answers
 def antialias_polygon(
     vertices: PointsLike,
     method: AAMethod | str = "area",
