@@ -24,14 +24,18 @@ A question written as scanconv's own arguments is answered by :mod:`scanconv.que
 student's table against one.
 
 Coordinates are ``(x, y)`` with y up. Every public name is listed once, in ``__init__.pyi``
-(what type checkers read), and imported from there on first use, so ``import scanconv``
-stays cheap for the command line.
+(what type checkers read), and imported from there on first use (as skimage's
+``lazy.attach_stub`` does: :func:`_attach_stub`), so ``import scanconv`` stays cheap for the
+command line.
 """
 
 from __future__ import annotations
 
-import importlib
-from typing import Any
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from collections.abc import Callable, Mapping
+    from typing import Any
 
 __version__ = "0.1.0"
 
@@ -42,52 +46,74 @@ DEPRECATED = {
 }
 
 
-def _exports() -> dict[str, tuple[str, str | None]]:
-    """Every public name -> (module, attribute; ``None``: the module itself), read from the
-    stub ``__init__.pyi`` (its ``from X import a as b`` lines)."""
+# --- the public names, loaded on first use from the stub (scanconv.questions uses this too) ---
+
+
+def _stub_exports(
+    package: str, init_file: str
+) -> tuple[dict[str, tuple[str, str | None]], list[str]]:
+    """Every name the stub beside ``init_file`` imports -> (module, attribute; ``None``: the
+    module itself), from its ``from X import a as b`` lines; and the stub's ``__all__``."""
     import ast
     from pathlib import Path
 
     found: dict[str, tuple[str, str | None]] = {}
-    tree = ast.parse(Path(__file__).with_suffix(".pyi").read_text(encoding="utf-8"))
+    listed: list[str] = []
+    tree = ast.parse(Path(init_file).with_suffix(".pyi").read_text(encoding="utf-8"))
     for node in tree.body:
+        if isinstance(node, ast.Assign) and getattr(node.targets[0], "id", "") == "__all__":
+            listed = list(ast.literal_eval(node.value))
         if not isinstance(node, ast.ImportFrom):
             continue
         for alias in node.names:
             public = alias.asname or alias.name
             if node.module is None:  # from . import raster
-                found[public] = (f"{__name__}.{alias.name}", None)
+                found[public] = (f"{package}.{alias.name}", None)
             else:
-                found[public] = (f"{__name__}.{node.module}", alias.name)
-    return found
+                found[public] = (f"{package}.{node.module}", alias.name)
+    return found, listed or sorted(found)
 
 
-_EXPORTS: dict[str, tuple[str, str | None]] = {}
+def _attach_stub(
+    package: str, init_file: str, deprecated: Mapping[str, str] | None = None
+) -> tuple[Callable[[str], Any], Callable[[], list[str]]]:
+    """``__getattr__`` and ``__dir__`` for the package ``package``: each public name of its
+    stub, imported on first use and kept; a name in ``deprecated`` (name -> what to use
+    instead) warns on every use and is left out of ``__all__`` and ``dir()``."""
+    import sys
+
+    exports: dict[str, tuple[str, str | None]] = {}
+    listed: list[str] = []
+    old = deprecated or {}
+
+    def __getattr__(name: str) -> Any:
+        if not exports:
+            found, names = _stub_exports(package, init_file)
+            exports.update(found)
+            listed.extend(n for n in names if n not in old)
+        if name == "__all__":
+            return list(listed)
+        if name not in exports:
+            raise AttributeError(f"module {package!r} has no attribute {name!r}")
+        import importlib
+
+        module, attr = exports[name]
+        value = importlib.import_module(module)
+        if attr is not None:
+            value = getattr(value, attr)
+        if name in old:
+            import warnings
+
+            message = f"{package}.{name} is deprecated: use {old[name]}"
+            warnings.warn(message, DeprecationWarning, stacklevel=2)
+            return value  # not kept: every use warns
+        vars(sys.modules[package])[name] = value
+        return value
+
+    def __dir__() -> list[str]:
+        return list(__getattr__("__all__"))
+
+    return __getattr__, __dir__
 
 
-def __getattr__(name: str) -> Any:
-    if not _EXPORTS:
-        _EXPORTS.update(_exports())
-    if name == "__all__":  # what is advertised: not the deprecated names
-        return sorted([*(n for n in _EXPORTS if n not in DEPRECATED), "__version__"])
-    if name not in _EXPORTS:
-        raise AttributeError(f"module 'scanconv' has no attribute {name!r}")
-    module, attr = _EXPORTS[name]
-    value = importlib.import_module(module)
-    if attr is not None:
-        value = getattr(value, attr)
-    if name in DEPRECATED:
-        import warnings
-
-        warnings.warn(
-            f"scanconv.{name} is deprecated: use {DEPRECATED[name]}",
-            DeprecationWarning,
-            stacklevel=2,
-        )
-        return value  # not cached: every use warns
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return list(__getattr__("__all__"))
+__getattr__, __dir__ = _attach_stub(__name__, __file__, DEPRECATED)

@@ -106,7 +106,7 @@ def test_stdin_with_a_bom_is_read(monkeypatch: pytest.MonkeyPatch) -> None:
 
 def test_sheet_output_onto_its_question_file_is_refused(tmp_path: Path) -> None:
     path = _file(tmp_path, QUESTIONS)
-    for args in (["-o", str(path)], ["--pdf", str(path)], ["-o", "q.txt"]):
+    for args in (["-o", str(path)], ["--pdf", str(path)], ["-o", "q.txt"], ["--pdf=./q.txt"]):
         cwd = os.getcwd()
         os.chdir(tmp_path)
         try:
@@ -114,6 +114,13 @@ def test_sheet_output_onto_its_question_file_is_refused(tmp_path: Path) -> None:
         finally:
             os.chdir(cwd)
         assert path.read_text(encoding="utf-8") == QUESTIONS
+
+
+def test_sheet_pdf_and_output_naming_one_file_are_refused(tmp_path: Path) -> None:
+    path = _file(tmp_path, QUESTIONS)
+    key = tmp_path / "key.pdf"
+    assert_refused(run("sheet", str(path), "-o", str(key), "--pdf", str(key)), "same file as")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["q.txt"]
 
 
 def test_sheet_output_through_a_symlink_to_its_question_file_is_refused(tmp_path: Path) -> None:

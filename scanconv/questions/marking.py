@@ -9,9 +9,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..core.checks import InputError
-from .answer import solve
+from .answering import solve
 from .grammar_table import NOT_QUESTIONS, SPECS
-from .parse import HELP, CommandLine, parse, split
+from .parser import HELP, CommandLine, parse, split
 from .words import students
 
 if TYPE_CHECKING:

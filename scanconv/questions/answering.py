@@ -10,7 +10,7 @@ from ..core.checks import InputError
 from ..render import Options
 from .commands import BODIES
 from .grammar import error_message
-from .parse import CommandLine, parse
+from .parser import CommandLine, parse
 from .words import UsageError
 
 if TYPE_CHECKING:
