@@ -175,7 +175,7 @@ def sheet_format(fmt: SheetFormat, output: Path | None) -> str:
         raise ValueError(
             f"--output {output} is {named} by its extension, but --format is {fmt.value}"
         )
-    return fmt.value
+    return str(fmt.value)
 
 
 def build(path: str) -> tuple[Sheet, list[Answered]]:

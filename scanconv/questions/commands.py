@@ -13,6 +13,8 @@ from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from .. import _api as api
+from .._api.color_theory import color as color_api
+from .._api.color_theory import theory as theory_api
 from ..core.checks import InputError
 from .words import UsageError, no_such_option, number
 
@@ -284,11 +286,11 @@ def color(model: str, values: list[str], to: Any, unit: bool, bits: Any) -> Solu
                 f"a colour component must be a number, got {token!r} (name the target models "
                 "after --to)"
             )
-    return api.color(model, *numbers, to=targets, unit=unit, bits=8 if bits is None else bits)
+    return color_api(model, *numbers, to=targets, unit=unit, bits=8 if bits is None else bits)
 
 
 def theory(topic: str, list_: bool = False) -> Solution:
-    return api.theory(topic)
+    return theory_api(topic)
 
 
 BODIES: dict[str, Body] = {
