@@ -123,7 +123,6 @@ def answers(fn: Callable[P, Solution]) -> Callable[P, Answer]:
     is always an :class:`~scanconv.core.checks.InputError` (a ``ValueError`` with ``.param``:
     the parameter, or ``None`` when no single one is at fault)."""
     import functools
-    import inspect
 
     @functools.wraps(fn)
     def ask(*args: P.args, **kwargs: P.kwargs) -> Answer:
@@ -135,8 +134,9 @@ def answers(fn: Callable[P, Solution]) -> Callable[P, Answer]:
             raise InputError(str(err)) from err
         return Answer.of(solution, (ask, args, tuple(sorted(kwargs.items()))))
 
-    ask.__annotations__ = {**fn.__annotations__, "return": "Answer"}
-    ask.__signature__ = inspect.signature(fn).replace(return_annotation="Answer")  # type: ignore[attr-defined]
+    # help() reads the signature through __wrapped__: the wrapped function (reached only
+    # through this one) is annotated as the API returns (no signature built at import time)
+    fn.__annotations__ = ask.__annotations__ = {**fn.__annotations__, "return": "Answer"}
     return ask
 
 
