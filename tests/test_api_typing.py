@@ -48,7 +48,7 @@ def test_mypy_sees_the_public_names_and_refuses_a_misspelt_keyword(tmp_path: Pat
     assert lines == [
         'note: Revealed type is "scanconv.display.Answer"',
         'error: Unexpected keyword argument "algoo" for "line"; did you mean "algo"?  [call-arg]',
-        'note: "line" defined in "scanconv._api"',
+        'note: "line" defined in "scanconv._api.shapes"',
         'note: Revealed type is "scanconv.display.Answer"',
         'note: Revealed type is "scanconv.display.Answer"',
     ], done.stdout + done.stderr

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..display import answers
-from . import NumberLike, _number
+from .values import NumberLike, _number
 
 if TYPE_CHECKING:
     from ..core.records import Solution
