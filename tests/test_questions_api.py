@@ -376,3 +376,13 @@ def test_a_theory_question_without_a_topic_is_one_short_line(tmp_path: Path) -> 
     assert_refused(r, "q.txt:1: Missing argument 'TOPIC'.")
     r = run("sheet", str(_file(tmp_path, "theory --list\n")))
     assert_refused(r, "q.txt:1: --list is not a question")
+
+
+def test_an_answered_question_pickles_as_the_api_call_it_made() -> None:
+    import pickle
+
+    from scanconv.questions import answer
+
+    got = answer("circle 5 -c 1 2 --method bresenham")
+    back = pickle.loads(pickle.dumps(got))
+    assert back.to("csv") == got.to("csv") and back.title == got.title

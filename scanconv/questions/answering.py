@@ -74,4 +74,5 @@ def answer(question: str | Sequence[str]) -> Answer:
     """
     from ..display import Answer
 
-    return Answer.of(solve(parse(question)))
+    solution = solve(parse(question))
+    return solution if isinstance(solution, Answer) else Answer.of(solution)
