@@ -20,6 +20,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import scanconv
 from scanconv import _api as api
 from scanconv.answers.marking import mark
 from scanconv.answers.models import (
@@ -535,8 +536,8 @@ def test_read_table_refuses_a_file_beyond_the_size_limit():
 
 
 def test_the_api_marks_against_a_question_or_a_solution():
-    by_words = api.check(DATA / "slip.csv", ["line", "2", "2", "10", "6"])
-    by_solution = api.check(DATA / "slip.csv", api.line(2, 2, 10, 6))
+    by_words = scanconv.check(DATA / "slip.csv", ["line", "2", "2", "10", "6"])
+    by_solution = scanconv.check(DATA / "slip.csv", api.line(2, 2, 10, 6))
     assert by_words.data["score"] == by_solution.data["score"] == 7
     assert by_solution.data["first_error"] == by_words.data["first_error"]
 

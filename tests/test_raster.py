@@ -16,7 +16,7 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from scanconv import raster
+from scanconv.algorithms import raster  # the module itself: its constants are patched
 from scanconv.answers.circle import circle_solution
 from scanconv.answers.ellipse import ellipse_solution
 from scanconv.answers.line import line_solution
