@@ -351,7 +351,7 @@ def test_questions_are_answered_without_the_command_line() -> None:
         "assert questions.answer('line 2 2 10 6 --algo dda').algorithm == 'dda'\n"
         "assert questions.answer(['circle', '5', '--no-grid']).primitive == 'circle'\n"
         "m = scanconv.check('tests/data/check/slip.csv', 'line 2 2 10 6')\n"
-        "assert m.data['score'] == 8\n"
+        "assert m.data['score'] == 7\n"
         "s = questions.read_questions('[2] line 2 2 10 6\\ncircle 5 --origin top-left\\n')\n"
         "lines = [questions.parse(q.argv) for q in s.questions]\n"
         "assert [questions.shown_with(x).origin for x in lines] == ['bottom-left', 'top-left']\n"

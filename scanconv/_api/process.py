@@ -58,16 +58,72 @@ def clip_line(
     y2: NumberLike,
     window: Sequence[NumberLike],
     method: LineClipMethod | str = "cohen-sutherland",
+    *,
+    normals: str | None = None,
+    ends: str | None = None,
+    midpoint: str | None = None,
 ) -> Solution:
     """The segment clipped against ``window`` (``scanconv clip line``).
 
+    ``method`` is ``cohen-sutherland``, ``liang-barsky``, ``cyrus-beck`` (the rectangle as a
+    convex window; ``normals`` outward or inward, ``ends`` exact or truncated) or
+    ``midpoint-subdivision`` (``midpoint`` rounded, floor or exact).
+
     >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8)).data["clipped"]
+    [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
+    >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8), "cyrus-beck").data["clipped"]
     [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
     """
     from ..answers.clip import clip_line_solution
 
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
-    return clip_line_solution(a, b, c, d, _rect(window, "window"), _choice(method, "method"))
+    rect = _rect(window, "window")
+    name = _choice(method, "method")
+    _only(name, {"normals": normals, "ends": ends}, "cyrus-beck")
+    _only(name, {"midpoint": midpoint}, "midpoint-subdivision")
+    if name == "cyrus-beck":
+        from ..answers.cyrus_beck import cyrus_beck_solution
+
+        x0, y0, x1_, y1_ = rect
+        corners = [x0, y0, x1_, y0, x1_, y1_, x0, y1_]
+        return cyrus_beck_solution(
+            a, b, c, d, corners, normals=normals or "outward", ends=ends or "exact"
+        )
+    if name == "midpoint-subdivision":
+        from ..answers.midpoint_clip import midpoint_clip_solution
+
+        return midpoint_clip_solution(a, b, c, d, list(rect), midpoint=midpoint or "rounded")
+    return clip_line_solution(a, b, c, d, rect, name)
+
+
+def _only(method: str, given: dict[str, str | None], owner: str) -> None:
+    """Refuse a convention given to a method it does not apply to."""
+    for param, value in given.items():
+        if value is not None and method != owner:
+            raise InputError(f"{param} applies to {owner} only, not to {method}", param)
+
+
+@answers
+def clip_convex(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    window: PointsLike,
+    *,
+    normals: str = "outward",
+    ends: str = "exact",
+) -> Solution:
+    """Cyrus-Beck clipping against any convex window given by its vertices
+    (``scanconv clip convex``).
+
+    >>> clip_convex(-1, 2, 9, 2, [(0, 0), (8, 0), (0, 8)]).data["clipped"]
+    [[0, 2], [6, 2]]
+    """
+    from ..answers.cyrus_beck import cyrus_beck_solution
+
+    a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    return cyrus_beck_solution(a, b, c, d, _flat(window, "window"), normals=normals, ends=ends)
 
 
 @answers
@@ -76,17 +132,29 @@ def clip_polygon(
     window: Sequence[NumberLike],
     method: PolygonClipMethod | str = "sutherland-hodgman",
 ) -> Solution:
-    """The polygon clipped against ``window`` by Sutherland-Hodgman (``scanconv clip polygon``).
+    """The polygon clipped against ``window`` by Sutherland-Hodgman or Weiler-Atherton
+    (``scanconv clip polygon``).
 
     >>> clip_polygon([(0, 0), (4, 0), (0, 4)], (1, 1, 3, 3)).data["clipped"]
     [[1, 3], [1, 1], [3, 1]]
+    >>> clip_polygon([(0, 0), (8, 0), (8, 8)], (2, 1, 9, 3), "weiler-atherton").data["polygons"]
+    [[[8, 1], [8, 3], [3, 3], [2, 2], [2, 1]]]
     """
     from ..answers.clip_polygon import clip_polygon_solution
 
     name = _choice(method, "method")
+    flat, rect = _flat(vertices, "vertices"), _rect(window, "window")
+    if name == "weiler-atherton":
+        from ..answers.weiler_atherton import weiler_atherton_solution
+
+        x0, y0, x1, y1 = rect
+        return weiler_atherton_solution(flat, [x0, y0, x1, y0, x1, y1, x0, y1])
     if name != "sutherland-hodgman":
-        raise InputError(f"unknown polygon clipping method {name!r} (sutherland-hodgman)", "method")
-    return clip_polygon_solution(_flat(vertices, "vertices"), _rect(window, "window"))
+        raise InputError(
+            f"unknown polygon clipping method {name!r} (sutherland-hodgman, weiler-atherton)",
+            "method",
+        )
+    return clip_polygon_solution(flat, rect)
 
 
 @answers
