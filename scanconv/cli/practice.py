@@ -46,6 +46,10 @@ class Topic(str, Enum):
     bspline = "bspline"
     storage = "storage"
     quantize = "quantize"
+    dither = "dither"
+    inside = "inside"
+    clip = "clip"
+    framebuffer = "framebuffer"
     all = "all"
 
 
