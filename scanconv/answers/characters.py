@@ -130,7 +130,7 @@ def bitmap_solution(
         bbox=_bbox(pixels),
         notes=(
             "Rows are stored top first; the screen's y grows upward, so row i lands at "
-            "y0 + (h - 1 - i)·s.",
+            "y0 + (h - 1 - i) * s.",
         ),
         data={"rows": list(g), "scale": scale},
     )

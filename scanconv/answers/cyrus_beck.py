@@ -116,8 +116,8 @@ def cyrus_beck_solution(
         )
         derived.append(rule("rejected", f"\\text{{rejected: {why}}}"))
     notes = (
-        f"Conventions: {normals} normals (inward normals flip the sign of every N·D and "
-        f"N·(P0 - E), never t), clipped ends {ends}.",
+        f"Conventions: {normals} normals (inward normals flip the sign of every $N \\cdot D$ "
+        f"and $N \\cdot (P_0 - E)$, never $t$), clipped ends {ends}.",
         "The normals are not normalised: any positive multiple gives the same t.",
     )
     return Solution(

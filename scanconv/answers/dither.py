@@ -85,6 +85,12 @@ def _rows_of(steps: Callable[[], Iterator[Step]], width: int) -> Callable[[], It
 
 
 _CELL = (heading("k", "k"), heading("i", "i"), heading("j", "j"))
+_DECIDED = (
+    heading("value", "I(i, j)"),
+    heading("threshold", "T"),
+    heading("output", r"\text{output}"),
+)
+"""The columns of a pixel compared with its threshold (thresholding, ordered dither)."""
 _COMPARE_TEX = {">": ">", ">=": r"\ge"}
 
 
@@ -151,11 +157,6 @@ def threshold_solution(
         worked("T", t, f"T = {fmt_short(t)}"),
         rule("test", f"\\text{{on when }} I(i, j) {rel} T"),
     ]
-    columns = (
-        heading("value", "I(i, j)"),
-        heading("threshold", "T"),
-        heading("output", r"\text{output}"),
-    )
     return _solution(
         "threshold",
         f"Thresholding at T = {fmt_short(t)}",
@@ -163,7 +164,7 @@ def threshold_solution(
         top,
         derived,
         [f"A pixel is on when its value is {compare} T."],
-        columns,
+        _DECIDED,
         lambda: d.threshold(img, t, compare),
         ("value", "threshold", "output"),
         2,
@@ -216,14 +217,9 @@ def ordered_solution(
         ),
     ]
     notes = [
-        f"Conventions: compare {compare}, thresholds {scale} (T = (d{shift}{half})·top/n²), "
+        f"Conventions: compare {compare}, thresholds {scale} (T = (d{shift}{half}) * top / n^2), "
         f"entries from {base}, the matrix read {'by columns (transposed)' if transpose else 'by rows'}.",
     ]
-    columns = (
-        heading("value", "I(i, j)"),
-        heading("threshold", "T"),
-        heading("output", r"\text{output}"),
-    )
     return _solution(
         "ordered",
         f"Ordered dither with {named}",
@@ -231,7 +227,7 @@ def ordered_solution(
         top,
         derived,
         notes,
-        columns,
+        _DECIDED,
         lambda: d.ordered(img, table, compare),
         ("value", "threshold", "output"),
         2,

@@ -43,10 +43,12 @@ def _is(s: str) -> str:
 
 
 def _time_text(seconds: Fraction) -> str:
-    """A time in the unit that reads best: s, ms, µs or ns (exact when it terminates)."""
-    for unit, scale in (("s", 1), ("ms", 10**3), ("µs", 10**6), ("ns", 10**9)):
+    """``= 10.49 \\, s`` or ``\\approx 12.716 \\, ns``: a time in the unit that reads best
+    (s, ms, µs or ns; exact when it terminates), as TeX."""
+    units = (("s", 1), ("ms", 10**3), ("\\mu s", 10**6), ("ns", 10**9))
+    for unit, scale in units:
         if seconds * scale >= 1 or unit == "ns":
-            return f"{size_text(seconds * scale)} \\text{{ {unit}}}"
+            return f"{_is(size_text(seconds * scale))} \\, \\mathrm{{{unit}}}"
     raise AssertionError("unreachable")
 
 
@@ -89,7 +91,7 @@ def _load(total: int, rate: Number) -> Quantity:
         normalize(seconds),
         f"\\text{{load time}} = \\text{{size}} / R = {int_tex(total)} / "
         f"{int_tex(int(rate)) if rate == int(rate) else fmt_short(rate)} "
-        f"{_is(_time_text(seconds))}",
+        f"{_time_text(seconds)}",
     )
 
 
@@ -114,7 +116,7 @@ def _refresh(w: int, h: int, refresh: Number, interlaced: bool) -> list[Quantity
         worked(
             "pixel_time",
             normalize(per_pixel),
-            f"\\text{{time per pixel}} = 1 / {_tex(size_text(rate))} {_is(_time_text(per_pixel))}",
+            f"\\text{{time per pixel}} = 1 / {_tex(size_text(rate))} {_time_text(per_pixel)}",
         ),
     ]
 
@@ -190,7 +192,7 @@ def framebuffer_solution(
         given=tuple(given()),
         derived=tuple(derived),
         notes=(
-            "KB and MB are 1000 and 1000² bytes, KiB and MiB 1024 and 1024² bytes: published "
+            "KB and MB are 1000 and 1000^2 bytes, KiB and MiB 1024 and 1024^2 bytes: published "
             "answers use either, so both are given.",
             "A bit plane holds one bit of every pixel: b bits per pixel take b planes.",
         ),
