@@ -132,6 +132,46 @@ def _one(v: Any) -> Cell | None:
     return v if isinstance(v, Cell) else None
 
 
+def _sources(table: StudentTable, exact_algorithm: bool) -> tuple[str | None, str | None]:
+    """Which columns hold the pixel and which the exact values (the DDA's), by field."""
+    f = set(table.fields)
+    rounded = "pxy" if "pxy" in f else "px" if "px" in f or "py" in f else None
+    plain = "xy" if "xy" in f else "x" if "x" in f else None
+    if not exact_algorithm or plain is None:
+        return rounded or plain, None
+    if rounded is not None:
+        return rounded, plain
+    fractional = any(
+        c is not None and c.value.denominator != 1
+        for r in table.rows
+        for c in _pair(r.cells, "xy", "x", "y")
+    )
+    return (None, plain) if fractional else (plain, None)
+
+
+def _marked(table: StudentTable, pixel_src: str | None, exact_src: str | None) -> set[str]:
+    f = set(table.fields)
+    marked = {"pixel"} if pixel_src else set()
+    if exact_src:
+        marked.add("exact")
+    marked |= {name for name in ("p", "p_next") if name in f}
+    if "decision" in f and any(isinstance(r.cells.get("decision"), str) for r in table.rows):
+        marked.add("decision")
+    return marked
+
+
+def _point(cells: dict[str, Any], fields: set[str], src: str | None) -> Any:
+    """A row's point from the pixel columns (``x, y, round(y)`` pairs the whole x)."""
+    if src is None:
+        return None
+    point = _pair(cells, *_SOURCES[src])
+    if point is not None and src == "px" and "px" not in fields:  # x, y, round(y)
+        point = (_one(cells.get("x")), point[1])
+    if point is not None and src == "px" and "py" not in fields:  # x, round(x), y
+        point = (point[0], _one(cells.get("y")))
+    return point
+
+
 def student_rows(table: StudentTable, exact_algorithm: bool) -> tuple[list[Got], set[str]]:
     """The student's rows as :class:`Got` (one per row), and the fields that will be marked.
 
@@ -139,47 +179,24 @@ def student_rows(table: StudentTable, exact_algorithm: bool) -> tuple[list[Got],
     the DDA where it holds the exact values (next to a rounded column, or with fractions).
     A rounded y next to a whole x (``x, y, round(y)``) is the pixel with that x.
     """
-    f = set(table.fields)
-    rounded = "pxy" if "pxy" in f else "px" if "px" in f or "py" in f else None
-    plain = "xy" if "xy" in f else "x" if "x" in f else None
-    pixel_src, exact_src = rounded or plain, None
-    if exact_algorithm and plain is not None:
-        if rounded is not None:
-            exact_src = plain
-        elif any(
-            c is not None and c.value.denominator != 1
-            for r in table.rows
-            for c in _pair(r.cells, "xy", "x", "y")
-        ):
-            pixel_src, exact_src = None, plain
-    marked = {"pixel"} if pixel_src else set()
-    if exact_src:
-        marked.add("exact")
-    marked |= {name for name in ("p", "p_next") if name in f}
-    if "decision" in f and any(isinstance(r.cells.get("decision"), str) for r in table.rows):
-        marked.add("decision")
+    pixel_src, exact_src = _sources(table, exact_algorithm)
+    fields = set(table.fields)
     rows = []
     for r in table.rows:
         c = r.cells
-        point = _pair(c, *_SOURCES[pixel_src]) if pixel_src else None
-        if point is not None and pixel_src == "px" and "px" not in f:  # x, y, round(y)
-            point = (_one(c.get("x")), point[1])
-        if point is not None and pixel_src == "px" and "py" not in f:  # x, round(x), y
-            point = (point[0], _one(c.get("y")))
-        exact = _pair(c, *_SOURCES[exact_src]) if exact_src else None
         decision = c.get("decision")
         rows.append(
             Got(
                 r.where,
                 _one(c.get("p")),
                 decision if isinstance(decision, str) else None,
-                point,
-                exact,
+                _point(c, fields, pixel_src),
+                _pair(c, *_SOURCES[exact_src]) if exact_src else None,
                 _one(c.get("p_next")),
                 r.where,
             )
         )
-    return rows, marked
+    return rows, _marked(table, pixel_src, exact_src)
 
 
 def steps_of(rows: list[Got], lay: Layout, marked: set[str]) -> tuple[list[Got], Got | None]:
