@@ -38,6 +38,7 @@ from pathlib import Path
 from typing import Any, NamedTuple
 
 from .checks import InputError
+from .headings import field_of
 from .numeric import parse_number
 
 MAX_TABLE_BYTES = 2**18
@@ -55,53 +56,6 @@ FIELDS = ("k", "p", "p_next", "decision", "x", "y", "xy", "px", "py", "pxy", "re
 """The canonical fields, in the order a table lists them."""
 
 _PIXEL_FIELDS = {"x", "xy", "px", "pxy"}
-
-_SUBSCRIPTS = str.maketrans(
-    {
-        "ₖ": "k",
-        "₊": "+",
-        "₋": "-",
-        "₀": "0",
-        "₁": "1",
-        "₂": "2",
-        "ₙ": "n",
-        "ᵢ": "i",
-        "\u2212": "-",
-        "²": "2",
-    }
-)
-_DROP = re.compile(r"[\s$\\{}_*`'\"]")
-_NAMES = {
-    "k": ("k", "step", "i", "n", "#", "no", "no.", "row", "iteration", "stepk", "kstep", "step(k)"),
-    "p": ("p", "pk", "p(k)", "d", "dk", "p1k", "p2k", "p1", "p2", "decisionparameter", "pi"),
-    "p_next": (
-        "pk+1",
-        "p(k+1)",
-        "pnext",
-        "nextp",
-        "dk+1",
-        "p1k+1",
-        "p2k+1",
-        "newp",
-        "nextpk+1",
-        "updatep",
-        "updatedp",
-        "nextdk+1",
-    ),
-    "decision": ("decision", "move", "choice", "choose", "chosen", "direction", "dir", "step?"),
-    "x": ("x", "xk", "xk+1", "xi", "x(k)", "x(k+1)", "newx", "nextx"),
-    "y": ("y", "yk", "yk+1", "yi", "y(k)", "y(k+1)", "newy", "nexty"),
-    "region": ("region", "reg", "r"),
-}
-_TEX = re.compile(r"\\(text|mathrm|mathit|operatorname|textrm|mathbf)\b")
-_QUALIFIER = re.compile(
-    r"\((calculated|calc|computed|float|exact|real|rounded|round|one octant|first octant|octant"
-    r"|px|pixels|pixel units|in pixels|units|integer|int)\)"
-)
-_PAIR_HEAD = re.compile(r"\(?x(k\+1|k|i)?[,;]?y(k\+1|k|i)?\)?")
-_PIXEL_WORDS = re.compile(r"(pixels?|plotted|plot|points?|at|to|the|chosen|lower|left)*")
-_ROUNDED = ("round", "plot", "pixel", "int", "rnd")
-_LOOKUP = {name: field for field, names in _NAMES.items() for name in names}
 
 
 class Cell(NamedTuple):
@@ -136,47 +90,6 @@ class StudentTable(NamedTuple):
     rows: tuple[Row, ...]
     ignored: tuple[str, ...] = ()
     """Headings that map to no field (``2ry²x``): read, never marked."""
-
-
-def field_of(heading: str) -> tuple[str | None, bool]:
-    """The canonical field a column heading names, and whether it says ``k+1``.
-
-    >>> field_of("$p_{k+1}$"), field_of("(x_{k+1}, y_{k+1})"), field_of("Round(X)")
-    (('p_next', False), ('xy', True), ('px', False))
-    >>> field_of("Pixel"), field_of(" X k "), field_of("2ry²x")
-    (('pxy', False), ('x', False), (None, False))
-    """
-    t = _TEX.sub("", heading.translate(_SUBSCRIPTS).lower())
-    qualifier = _QUALIFIER.search(t)
-    said_rounded = qualifier is not None and qualifier.group(1) in (
-        "rounded",
-        "round",
-        "integer",
-        "int",
-    )
-    h = _DROP.sub("", _QUALIFIER.sub("", t))
-    after = "k+1" in h and h not in ("pk+1", "p(k+1)", "dk+1", "p1k+1", "p2k+1", "nextpk+1")
-    if h in _LOOKUP:
-        field = _LOOKUP[h]
-        if said_rounded and field in ("x", "y"):
-            field = "p" + field
-        return field, after and field in ("x", "y", "px", "py")
-    words = _PIXEL_WORDS.match(h)
-    prefix, rest = (words.group(0), h[words.end() :]) if words else ("", h)
-    named_pixel = any(w in prefix for w in ("pixel", "plot", "point"))
-    pair = _PAIR_HEAD.fullmatch(rest) is not None and (prefix == "" or named_pixel)
-    if (rest == "" and named_pixel) or pair:
-        rounded = named_pixel or said_rounded or any(w in h for w in _ROUNDED)
-        return ("pxy" if rounded else "xy"), "k+1" in rest
-    rounded = any(w in h for w in _ROUNDED)
-    bare = re.sub(r"round|plot(ted)?|pixel|int|rnd|[()\[\]]", "", h)
-    if rounded and bare in ("x", "xk", "xk+1"):
-        return "px", after
-    if rounded and bare in ("y", "yk", "yk+1"):
-        return "py", after
-    if rounded and bare in ("x,y", "xk,yk", "(x,y)"):
-        return "pxy", after
-    return None, False
 
 
 def read_table(path: Path) -> StudentTable:
@@ -439,19 +352,26 @@ def _check_rows(rows: list[RawRow], name: str) -> None:
 # --- columns and cells ------------------------------------------------------------------------
 
 
-def _build(name: str, headers: list[str], raw: list[RawRow]) -> StudentTable:
-    if not headers or not any(str(h).strip() for h in headers):
-        raise InputError(f"{name}: no heading row", "answer")
-    mapped: list[str | None] = []
+class _Heading(NamedTuple):
+    """What a table's heading row says: each column's field (``None``: not read), whether a
+    heading says ``k+1``, the headings read as nothing, and where each field is."""
+
+    mapped: list[str | None]
+    after: bool
+    ignored: list[str]
+    seen: dict[str, int]
+
+
+def _read_heading(name: str, headers: list[str], raw: list[RawRow]) -> _Heading:
+    """Each column's field; two columns read as one field must hold the same values."""
+    out = _Heading([], False, [], {})
     after = False
-    ignored: list[str] = []
-    seen: dict[str, int] = {}
     for i, h in enumerate(headers):
         heading = str(h)
         field, says_after = field_of(heading)
         after = after or says_after
-        if field is not None and field in seen:
-            j = seen[field]
+        if field is not None and field in out.seen:
+            j = out.seen[field]
             if any(_text(c, i) != _text(c, j) for _, c in raw):
                 raise InputError(
                     f"{name}: two columns are both read as {field}: "
@@ -461,21 +381,24 @@ def _build(name: str, headers: list[str], raw: list[RawRow]) -> StudentTable:
             field = None  # the same values twice (a pixel and its rounding): read once
         if field is None:
             if heading.strip():
-                ignored.append(heading.strip())
+                out.ignored.append(heading.strip())
         else:
-            seen[field] = i
-        mapped.append(field)
-    fields = tuple(f for f in mapped if f is not None)
-    has = set(fields)
-    if not {"xy", "pxy"} & has:
+            out.seen[field] = i
+        out.mapped.append(field)
+    return out._replace(after=after)
+
+
+def _check_fields(name: str, headers: list[str], fields: set[str], seen: dict[str, int]) -> None:
+    """A coordinate needs the other one; some column must hold the pixels."""
+    if not {"xy", "pxy"} & fields:
         for a, b in (("x", "y"), ("px", "py"), ("y", "x"), ("py", "px")):
             # a coordinate needs the other one, plain or rounded (x next to round(y))
-            if a in has and not {b, "p" + b[-1], b[-1]} & has:
+            if a in fields and not {b, "p" + b[-1], b[-1]} & fields:
                 raise InputError(
                     f"{name}: a column {str(headers[seen[a]])!r} but no column for {b[-1]}",
                     "answer",
                 )
-    if not _PIXEL_FIELDS & set(fields):
+    if not _PIXEL_FIELDS & fields:
         found = ", ".join(repr(str(h).strip()) for h in headers if str(h).strip())
         raise InputError(
             f"{name}: no column for the pixels among the columns {found}; it needs one like "
@@ -483,25 +406,35 @@ def _build(name: str, headers: list[str], raw: list[RawRow]) -> StudentTable:
             "(p_k, Decision and p_{k+1} are read too)",
             "answer",
         )
+
+
+def _row(name: str, where: str, cells: list[Any], mapped: list[str | None]) -> Row:
+    """One row's values by field (the row as long as the heading)."""
+    width = len(mapped)
+    extra = cells[width:]
+    if len(cells) < width or any(str(c).strip() for c in extra if c is not None):
+        raise InputError(
+            f"{name}, {where}: {len(cells)} cells where the heading has {width} columns", "answer"
+        )
+    values: dict[str, Value] = {}
+    for field, text in zip(mapped, cells, strict=False):
+        if field == "decision":
+            values[field] = move_of(text)
+        elif field is not None and field != "k":
+            values[field] = _value(text, field, name, where)
+    return Row(where, values)
+
+
+def _build(name: str, headers: list[str], raw: list[RawRow]) -> StudentTable:
+    if not headers or not any(str(h).strip() for h in headers):
+        raise InputError(f"{name}: no heading row", "answer")
+    head = _read_heading(name, headers, raw)
+    fields = tuple(f for f in head.mapped if f is not None)
+    _check_fields(name, headers, set(fields), head.seen)
     if not raw:
         raise InputError(f"{name}: the table has a heading but no rows", "answer")
-    rows = []
-    width = len(headers)
-    for where, cells in raw:
-        extra = cells[width:]
-        if len(cells) < width or any(str(c).strip() for c in extra if c is not None):
-            raise InputError(
-                f"{name}, {where}: {len(cells)} cells where the heading has {width} columns",
-                "answer",
-            )
-        values: dict[str, Value] = {}
-        for field, text in zip(mapped, cells, strict=False):
-            if field == "decision":
-                values[field] = move_of(text)
-            elif field is not None and field != "k":
-                values[field] = _value(text, field, name, where)
-        rows.append(Row(where, values))
-    return StudentTable(name, fields, after, tuple(rows), tuple(ignored))
+    rows = tuple(_row(name, where, cells, head.mapped) for where, cells in raw)
+    return StudentTable(name, fields, head.after, rows, tuple(head.ignored))
 
 
 def _text(cells: list[Any], i: int) -> str:
