@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from enum import Enum
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, NamedTuple
 
 import typer
 
@@ -135,9 +135,33 @@ def practice(
     ] = None,
 ) -> None:
     """Practice questions from a seed, as a worksheet and its answer key."""
-    from ..answers.practice import MAX_COUNT, question_file
-    from ..answers.practice import practice as generate
-    from ..render.sheet import sheet_document
+    seed = _checked(count, seed, output, key, questions, pdf)
+    docs = _documents(topic, count, seed, difficulty, fmt, output, key, pdf, standalone)
+    files = [pdf_file(pdf, docs.worksheet_tex)] if docs.worksheet_tex is not None and pdf else []
+    if key is not None and docs.key_text is not None:
+        files.append(
+            pdf_file(key, docs.key_text) if docs.key_pdf else text_file(key, docs.key_text)
+        )
+    if questions is not None:
+        files.append(text_file(questions, docs.questions))
+    if output is not None:
+        files.append(text_file(output, docs.worksheet))
+    write_all(files)  # every file or none
+    if output is None and not (pdf is not None and fmt is SheetFormat.auto):
+        write_document(docs.worksheet, None)  # unless only the PDF of the worksheet was asked for
+
+
+def _checked(
+    count: int,
+    seed: int | None,
+    output: Path | None,
+    key: str | None,
+    questions: str | None,
+    pdf: str | None,
+) -> int:
+    """The seed (a new one, announced, when none is given), once the outputs and the count
+    are checked: every refusal before any work."""
+    from ..answers.practice import MAX_COUNT
 
     for name, value in (("--key", key), ("--questions", questions), ("--pdf", pdf)):
         if value == "":
@@ -153,6 +177,33 @@ def practice(
         note(f"seed {seed} (give --seed {seed} for the same questions)")
     elif not 0 <= seed <= SEED_RANGE:
         fail(f"--seed must be 0 to {SEED_RANGE:,} (got {seed})")
+    return seed
+
+
+class _Documents(NamedTuple):
+    questions: str
+    worksheet: str
+    worksheet_tex: str | None
+    key_text: str | None
+    key_pdf: bool
+
+
+def _documents(
+    topic: Topic,
+    count: int,
+    seed: int,
+    difficulty: Difficulty,
+    fmt: SheetFormat,
+    output: Path | None,
+    key: str | None,
+    pdf: str | None,
+    standalone: bool,
+) -> _Documents:
+    """The question file, the worksheet (and its LaTeX for --pdf) and the key."""
+    from ..answers.practice import practice as generate
+    from ..answers.practice import question_file
+    from ..render.sheet import sheet_document
+
     try:
         chosen = generate(topic.value, count, seed, difficulty.value)
         title = f"Practice: {topic.value}, {difficulty.value}, seed {seed}"
@@ -164,8 +215,7 @@ def practice(
         worksheet_tex = None
         if pdf is not None:
             worksheet_tex = sheet_document(sheet, answered, "worksheet", "latex", standalone=True)
-        key_text = None
-        as_pdf = False
+        key_text, as_pdf = None, False
         if key is not None:
             key_fmt = _key_format(key)
             as_pdf = key_fmt == "pdf"
@@ -178,16 +228,7 @@ def practice(
             )
     except ValueError as err:
         fail(" ".join(str(err).split()))
-    files = [pdf_file(pdf, worksheet_tex)] if worksheet_tex is not None and pdf else []
-    if key is not None and key_text is not None:
-        files.append(pdf_file(key, key_text) if as_pdf else text_file(key, key_text))
-    if questions is not None:
-        files.append(text_file(questions, text))
-    if output is not None:
-        files.append(text_file(output, worksheet))
-    write_all(files)  # every file or none
-    if output is None and not (pdf is not None and fmt is SheetFormat.auto):
-        write_document(worksheet, None)  # unless only the PDF of the worksheet was asked for
+    return _Documents(text, worksheet, worksheet_tex, key_text, as_pdf)
 
 
 def _key_format(path: str) -> str:
