@@ -227,19 +227,22 @@ class _Reader:
     def _processing_order(self, p: Param) -> float:
         return self.order.index(p.name) if p.name in self.order else float("inf")
 
+    def _converted(self, p: Param, raw: Any) -> tuple[Any, bool]:
+        """The parameter's value, converted, and whether it is missing."""
+        if p.multiple or p.nargs == -1:
+            value: Any = () if raw is None else tuple(self._convert(p, w) for w in raw)
+            return value, value == ()
+        if p.nargs > 1:
+            value = None if raw is None else tuple(self._convert(p, w) for w in raw)
+        else:
+            value = None if raw is None else self._convert(p, raw)
+        return value, value is None
+
     def _value(self, p: Param) -> Any:
         raw = self.opts.get(p.name)
         if raw is None:
             raw = p.default
-        if p.multiple or p.nargs == -1:
-            value: Any = () if raw is None else tuple(self._convert(p, w) for w in raw)
-            missing = value == ()
-        elif p.nargs > 1:
-            value = None if raw is None else tuple(self._convert(p, w) for w in raw)
-            missing = value is None
-        else:
-            value = None if raw is None else self._convert(p, raw)
-            missing = value is None
+        value, missing = self._converted(p, raw)
         if p.required and missing:
             kind = "option" if p.opts else "argument"
             raise UsageError(f"Missing {kind} {p.hint}.", p.name)
