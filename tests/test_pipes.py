@@ -46,3 +46,20 @@ def test_head_closes_the_pipe_and_scanconv_exits_quietly(args, first):
     assert proc.stdout.startswith(first), proc.stdout[:200]
     assert proc.stdout.count("\n") == 1
     assert proc.stderr == "", proc.stderr  # no BrokenPipeError, no "Exception ignored"
+
+
+def test_the_help_into_a_closed_pipe_is_quiet() -> None:
+    """``scanconv | true``: the bare command's help into a pipe whose reader has gone exits
+    0 with nothing on stderr (it printed a BrokenPipeError traceback)."""
+    import subprocess
+    import sys
+
+    for _ in range(3):
+        p = subprocess.Popen(
+            [sys.executable, "-m", "scanconv"], stdout=subprocess.PIPE, stderr=subprocess.PIPE
+        )
+        assert p.stdout is not None and p.stderr is not None
+        p.stdout.close()
+        err = p.stderr.read()
+        p.wait(timeout=60)
+        assert err == b"" and p.returncode == 0, err[-300:]

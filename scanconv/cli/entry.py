@@ -69,8 +69,6 @@ def main(argv: list[str] | None = None) -> int:
     SIGTERM into a one-line exit 130 or 143 (:func:`scanconv.cli.output.catch_signals`);
     called in-process with ``argv`` it leaves the caller's signal handlers alone, so that a
     SIGTERM to a test runner still ends it."""
-    from typer._click import exceptions as click_exc  # typer vendors click
-
     as_program = argv is None
     if as_program and signal.getsignal(signal.SIGINT) is signal.SIG_IGN:  # a shell's background
         signal.signal(signal.SIGINT, signal.default_int_handler)
@@ -80,49 +78,69 @@ def main(argv: list[str] | None = None) -> int:
     # so the number parser names them.
     argv = [_MINUS + a[1:] if a.lower() in _NONFINITE else a for a in students(argv)]
     command = _command_for(argv)
-    code = 0
     restore_signals = output.catch_signals() if as_program else _nothing
     try:
-        result = command.main(args=argv, prog_name=PROG, standalone_mode=False)
-        code = result if isinstance(result, int) else 0
-        sys.stdout.flush()
-    except click_exc.NoArgsIsHelpError as err:  # ``scanconv``, ``scanconv parametric``
-        print(err.ctx.get_help() if err.ctx is not None else err.format_message())
-        code = 0
-    except click_exc.UsageError as err:
-        note(f"error: {_usage_message(err)}")
-        code = 2
-    except click_exc.ClickException as err:
-        note(f"error: {' '.join(err.format_message().split())}")
-        code = err.exit_code
-    except typer.Abort:
-        code = 130
-    except typer.Exit as err:
-        code = err.exit_code
-    except output.Interrupted as err:  # SIGINT, SIGTERM: one line, 130 or 143
-        note(str(err))
-        code = int(err.code or 1)
-    except SystemExit as err:
-        code = err.code if isinstance(err.code, int) else 1
-    except KeyboardInterrupt:
-        code = 130
-    except BrokenPipeError:
-        code = output._quiet_pipe()
-    except OSError as err:
-        note(f"error: cannot write output: {err.strerror or err}")
-        code = 1
-    except RecursionError:
-        note("error: input too deeply nested")
-        code = 2
-    except ValueError as err:  # bad input found while the answer was already streaming
-        note(f"error: {' '.join(str(err).split())}")
-        code = 2
-    except MemoryError:
-        note("error: out of memory (see docs/limits.md for the input limits)")
-        code = 1
+        return _run(command, argv)
     finally:
         restore_signals()
-    return code
+
+
+def _run(command: Any, argv: list[str]) -> int:
+    """Run one command; its exit status, with bad input, signals and write failures turned
+    into one line on stderr (:func:`_status`). A closed pipe is quiet, the help too."""
+    from typer._click import exceptions as click_exc  # typer vendors click
+
+    try:
+        try:
+            result = command.main(args=argv, prog_name=PROG, standalone_mode=False)
+        except click_exc.NoArgsIsHelpError as err:  # ``scanconv``, ``scanconv parametric``
+            print(err.ctx.get_help() if err.ctx is not None else err.format_message())
+            result = 0
+        sys.stdout.flush()
+        return result if isinstance(result, int) else 0
+    except BrokenPipeError:  # ``scanconv | head``: the reader has gone
+        return output._quiet_pipe()
+    except BaseException as err:  # each kind is mapped to a status; the rest re-raised
+        return _status(err)
+
+
+def _status(err: BaseException) -> int:
+    """The exit status of an exception a command raised, its one line written to stderr."""
+    from typer._click import exceptions as click_exc  # typer vendors click
+
+    if isinstance(err, click_exc.UsageError):
+        note(f"error: {_usage_message(err)}")
+        return 2
+    if isinstance(err, click_exc.ClickException):
+        note(f"error: {' '.join(err.format_message().split())}")
+        return err.exit_code
+    if isinstance(err, typer.Abort | KeyboardInterrupt):
+        return 130
+    if isinstance(err, typer.Exit):
+        return err.exit_code
+    if isinstance(err, output.Interrupted):  # SIGINT, SIGTERM: one line, 130 or 143
+        note(str(err))
+        return int(err.code or 1)
+    if isinstance(err, SystemExit):
+        return err.code if isinstance(err.code, int) else 1
+    return _failure(err)
+
+
+def _failure(err: BaseException) -> int:
+    """Bad input found while the answer was streaming, a failed write, running out."""
+    if isinstance(err, OSError):
+        note(f"error: cannot write output: {err.strerror or err}")
+        return 1
+    if isinstance(err, RecursionError):
+        note("error: input too deeply nested")
+        return 2
+    if isinstance(err, ValueError):  # bad input found while the answer was already streaming
+        note(f"error: {' '.join(str(err).split())}")
+        return 2
+    if isinstance(err, MemoryError):
+        note("error: out of memory (see docs/limits.md for the input limits)")
+        return 1
+    raise err
 
 
 def _nothing() -> None:
