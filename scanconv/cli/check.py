@@ -20,6 +20,7 @@ import typer
 from ..core.records import Solution
 from ..render import Format
 from .application import app
+from .budget import check_question
 from .command import SHARED, Command, error_message
 from .options import BriefOpt, ExactOpt, FormatOpt, OutputOpt
 from .output import PROG, Output, emit, fail, format_for_file, write_atomic
@@ -41,6 +42,7 @@ class _Capture(Command):
         for name in SHARED:
             if name in kwargs and name not in own:
                 del kwargs[name]
+        check_question(self.__name__, kwargs)  # the document budget, before any work
         return self.__wrapped__(**kwargs)
 
 
@@ -209,6 +211,7 @@ def _batch(
     (the default, also on a terminal), JSON, or a table in the text formats."""
     from ..answers.marking import mark
     from ..core.student_table import read_table
+    from ..render.budget import check_batch
     from ..render.marking import batch_csv, batch_json
 
     chosen = format_for_file(fmt, output)
@@ -218,6 +221,7 @@ def _batch(
         fail(f"--batch {folder}: cannot read the folder: {err.strerror or err}")
     if not files:
         fail(f"--batch {folder}: no files to mark")
+    check_batch([p.stat().st_size for p in files], solution)  # before any file is read
     results = []
     for path in files:
         m = mark(read_table(path), solution)

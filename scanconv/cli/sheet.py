@@ -45,6 +45,7 @@ import typer
 from ..render import Options
 from ..render.sheet import Answered, Question, Sheet
 from .application import app, register
+from .budget import check_question
 from .command import Command, error_message
 from .output import PROG, fail, note, write_atomic
 
@@ -58,8 +59,6 @@ MAX_QUESTIONS = 1000
 """The most questions one sheet takes (a 200-question key is the benchmark)."""
 MAX_FILE_BYTES = 1_000_000
 """The largest question file read."""
-MAX_ROWS = 10_000
-"""The most rows of any one table of a question's answer (a sheet is built in memory)."""
 
 
 class QuestionError(ValueError):
@@ -227,6 +226,7 @@ class _Capture(Command):
             if name in own and name in shown:
                 kwargs[name] = shown[name]
         try:
+            check_question(self.__name__, kwargs)  # alone and with the questions before it
             solution = self.__wrapped__(**kwargs)
         except ValueError as err:
             raise _Refused(error_message(err, self.parameters)) from None
@@ -356,7 +356,9 @@ def answer(argv: Iterable[str]) -> tuple[Solution, Options]:
 
 def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -> list[Answered]:
     """Answer every question in this process (see the module docstring); the first bad one
-    raises :class:`QuestionError` with its line.
+    raises :class:`QuestionError` with its line, and so does the first question beyond the
+    work budget of a document, alone or with the questions before it
+    (:func:`scanconv.render.budget.document`).
 
     >>> sheet = read_questions("line 2 2 10 6 --algo dda\\n\\ncircle 0.5\\n", "q.txt")
     >>> answer_questions(sheet.questions, sheet.source)
@@ -364,6 +366,13 @@ def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -
     ...
     scanconv.cli.sheet.QuestionError: q.txt:3: radius must be an integer, got 0.500
     """
+    from ..render.budget import document
+
+    with document():
+        return _answer_all(questions, source)
+
+
+def _answer_all(questions: Iterable[Question], source: str) -> list[Answered]:
     out = []
     for q in questions:
         try:
@@ -372,23 +381,8 @@ def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -
             raise QuestionError(source, q.line, str(err)) from None
         except RecursionError:
             raise QuestionError(source, q.line, "input too deeply nested") from None
-        if _too_long(solution):
-            raise QuestionError(
-                source,
-                q.line,
-                f"its answer has more than {MAX_ROWS:,} table rows: too long for a sheet "
-                "(run it alone: scanconv streams long answers)",
-            )
         out.append(Answered(q, solution, options))
     return out
-
-
-def _too_long(solution: Solution) -> bool:
-    """Whether a table of the answer has more than :data:`MAX_ROWS` rows (counted lazily)."""
-    from itertools import islice
-
-    tables = [solution.steps, *(t.rows for t in solution.tables)]
-    return any(sum(1 for _ in islice(rows(), MAX_ROWS + 1)) > MAX_ROWS for rows in tables)
 
 
 # --- the command ----------------------------------------------------------------------------

@@ -1,0 +1,341 @@
+"""The work of an answer, estimated from its arguments alone, and what a row of it costs.
+
+:func:`estimate` reads the arguments of a library function (:mod:`scanconv._api`, by its name
+and its parameter names) and returns the :class:`Work` of its answer: the rows of its step
+table (or the cells of its matrix), the method whose row cost applies and the parameter that
+makes it large. Every library function is either in :data:`ESTIMATES` or in :data:`BOUNDED`
+with the reason its answer is small whatever its arguments (``tests/test_budget_unified.py``
+walks every command and function). The estimates only need to be close and never much below
+(an ellipse's rows are counted from its region boundary); an argument the estimate cannot read
+is left to the function's own validation.
+
+:data:`COSTS` holds the CPU time of one row, in microseconds, per ``command/method`` and per
+format, measured by ``benchmarks/bench_budget.py`` (which prints this table again) on the
+project's shared 2-CPU machine under load; :mod:`scanconv.render.budget` turns them into limits.
+
+>>> estimate("line", {"x1": 0, "y1": 0, "x2": 10**6, "y2": 1, "algo": "wu"})
+Work(kind='rows', rows=1000001, cols=None, key='line/wu', param='x2', weight=1.0)
+>>> estimate("sample", {"size": "4096"}).cols
+4096
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Mapping
+from fractions import Fraction
+from typing import Any, NamedTuple
+
+from ..core.checks import InputError
+from ..core.numeric import COORD_LIMIT
+
+
+class Work(NamedTuple):
+    """The size of an answer: ``rows`` of a step table, or a ``rows`` x ``cols`` matrix."""
+
+    kind: str
+    """``"rows"`` or ``"matrix"``."""
+    rows: int
+    cols: int | None = None
+    key: str = ""
+    """The ``command/method`` of :data:`COSTS` whose row cost applies."""
+    param: str | None = None
+    """The parameter that makes the answer this large (for :class:`InputError`)."""
+    weight: float = 1.0
+    """How many measured rows one row is worth (control points, samples per pixel)."""
+
+    @property
+    def size(self) -> int:
+        """Rows, or cells of a matrix."""
+        return self.rows * (self.cols or 1)
+
+
+Args = Mapping[str, Any]
+
+
+def _num(a: Args, name: str) -> Fraction:
+    """Argument ``name`` as an exact number within the magnitude limit (else InputError)."""
+    v = a[name]
+    value = Fraction(str(v)) if isinstance(v, (float, str)) else Fraction(v)
+    if abs(value) > COORD_LIMIT:
+        raise InputError(f"{name} = {v} is out of range (|value| <= {COORD_LIMIT:.0e})", name)
+    return value
+
+
+def _flat(values: Iterable[Any]) -> list[Any]:
+    """``[(x, y), ...]`` or ``[x, y, ...]`` as a flat list."""
+    out: list[Any] = []
+    for v in values:
+        if isinstance(v, (tuple, list)):
+            out.extend(v)
+        else:
+            out.append(v)
+    return out
+
+
+def _coords(a: Args, name: str) -> list[Fraction]:
+    flat = _flat(a[name])
+    return [_num({name: v}, name) for v in flat]
+
+
+def _choice(a: Args, name: str, default: str) -> str:
+    v = a.get(name)
+    return default if v is None else str(getattr(v, "value", v))
+
+
+def _line_rows(a: Args, names: tuple[str, str, str, str]) -> tuple[int, str]:
+    x1, y1, x2, y2 = (_num(a, k) for k in names)
+    dx, dy = abs(x2 - x1), abs(y2 - y1)
+    return math.ceil(max(dx, dy)) + 1, names[2] if dx >= dy else names[3]
+
+
+def _line(a: Args) -> Work:
+    rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    return Work("rows", rows, None, "line/" + _choice(a, "algo", "bresenham"), param)
+
+
+def _circle(a: Args) -> Work:
+    # one octant: x runs from 0 to r/sqrt(2)
+    rows = math.ceil(abs(_num(a, "r")) / math.sqrt(2)) + 1
+    return Work("rows", rows, None, "circle/" + _choice(a, "method", "midpoint"), "r")
+
+
+def _ellipse(a: Args) -> Work:
+    # region 1 ends where the slope is -1, at x = rx^2 / sqrt(rx^2 + ry^2); region 2 has about
+    # ry^2 / sqrt(rx^2 + ry^2) steps (ellipse 20000 20000: 28,285 rows)
+    rx, ry = abs(float(_num(a, "rx"))), abs(float(_num(a, "ry")))
+    h = math.hypot(rx, ry) or 1.0
+    rows = math.ceil((rx * rx + ry * ry) / h) + 2
+    return Work("rows", rows, None, "ellipse/midpoint", "rx" if rx >= ry else "ry")
+
+
+def _aa_line(a: Args) -> Work:
+    rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    if _choice(a, "method", "area") == "wu":  # two pixels a column, both ends a little more
+        return Work("rows", 2 * rows + 4, None, "antialias_line/wu", param)
+    x1, y1, x2, y2 = (_num(a, k) for k in ("x1", "y1", "x2", "y2"))
+    return _aa_cells(a, "antialias_line", param, abs(x2 - x1), abs(y2 - y1))
+
+
+def _aa_cells(a: Args, command: str, param: str, width: Fraction, height: Fraction) -> Work:
+    """Area sampling and supersampling: a row per pixel of the shape's box (the command
+    refuses a box beyond :data:`~scanconv.algorithms.coverage.MAX_AA_CELLS`); a row of N x N
+    supersampling costs N^2 samples (measured at N = 16)."""
+    from ..algorithms.coverage import MAX_AA_CELLS
+
+    method = _choice(a, "method", "area")
+    cells = min((math.ceil(width) + 2) * (math.ceil(height) + 2), MAX_AA_CELLS)
+    weight = 1.0
+    if method == "supersample":
+        n = int(_num(a, "samples")) if a.get("samples") is not None else 4
+        weight = max(n * n / 256, 1 / 16)
+    return Work("rows", cells, None, f"{command}/{method}", param, weight)
+
+
+def _aa_circle(a: Args) -> Work:
+    d = 2 * abs(_num(a, "r"))
+    return _aa_cells(a, "antialias_circle", "r", d, d)
+
+
+def _aa_polygon(a: Args) -> Work:
+    v = _coords(a, "vertices")
+    xs, ys = v[0::2], v[1::2]
+    return _aa_cells(a, "antialias_polygon", "vertices", max(xs) - min(xs), max(ys) - min(ys))
+
+
+def _pipeline_line(a: Args) -> Work:
+    # the line is clipped and mapped into the viewport: at most its longer side, plus one
+    vx0, vy0, vx1, vy1 = _coords(a, "viewport")[:4]
+    rows = math.ceil(max(abs(vx1 - vx0), abs(vy1 - vy0))) + 2
+    return Work("rows", rows, None, "pipeline_line/" + _choice(a, "algo", "bresenham"), "viewport")
+
+
+def _pipeline_polygon(a: Args) -> Work:
+    # filled: one row per scan line of the viewport
+    vy = _coords(a, "viewport")[1:4:2]
+    return Work("rows", math.ceil(abs(vy[1] - vy[0])) + 2, None, "polygon/scan-line", "viewport")
+
+
+def _samples(key: str, default: int = 16, points: str | None = None) -> Callable[[Args], Work]:
+    def rows(a: Args) -> Work:
+        n = a.get("samples")
+        count = default if n is None else int(_num(a, "samples"))
+        weight = 1.0
+        if points is not None and a.get(points) is not None:  # a row has a weight per point
+            weight = max(1.0, len(_flat(a[points])) / 8)
+        return Work("rows", count + 1, None, key, "samples", weight)
+
+    return rows
+
+
+def _parametric_line(a: Args) -> Work:
+    if a.get("samples") is None:
+        rows, param = _line_rows(a, ("x0", "y0", "x1", "y1"))
+        return Work("rows", rows, None, "parametric", param)
+    return _samples("parametric")(a)
+
+
+def _polygon(a: Args) -> Work:
+    # one row per scan line of the vertices' y extent (and a few for the edge table)
+    ys = _coords(a, "vertices")[1::2]
+    return Work("rows", math.ceil(max(ys) - min(ys)) + 1, None, "polygon/scan-line", "vertices")
+
+
+def _quantize(a: Args) -> Work:
+    bits = int(_num(a, "bits"))
+    ranged = "/range" if a.get("value_range") else ""
+    return Work("rows", 1 << bits if 0 < bits <= 64 else 0, None, "quantize" + ranged, "bits")
+
+
+def _matrix(default: str) -> Callable[[Args], Work]:
+    def cells(a: Args) -> Work:
+        from ..algorithms.image_limits import parse_size
+
+        size = a.get("size") or default
+        if isinstance(size, (tuple, list)):
+            m, n = (int(v) for v in size)
+        else:
+            m, n = parse_size(str(size))
+        return Work("matrix", m, n, "matrix", "size")
+
+    return cells
+
+
+def _compare_line(a: Args) -> Work:
+    rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    return Work("rows", rows, None, "compare_lines", param)
+
+
+def _compare_circle(a: Args) -> Work:
+    return Work("rows", math.ceil(abs(_num(a, "r")) / math.sqrt(2)) + 1, None, "compare", "r")
+
+
+ESTIMATES: dict[str, Callable[[Args], Work]] = {
+    "line": _line,
+    "circle": _circle,
+    "ellipse": _ellipse,
+    "antialias_line": _aa_line,
+    "antialias_circle": _aa_circle,
+    "antialias_polygon": _aa_polygon,
+    "pipeline_line": _pipeline_line,
+    "pipeline_polygon": _pipeline_polygon,
+    "compare_lines": _compare_line,
+    "compare_circles": _compare_circle,
+    "quantize": _quantize,
+    "polygon": _polygon,
+    "sample": _matrix("8"),
+    "ramp": _matrix("8"),
+    "parametric_circle": _samples("parametric"),
+    "parametric_ellipse": _samples("parametric"),
+    "parametric_parabola": _samples("parametric"),
+    "parametric_custom": _samples("parametric"),
+    "parametric_line": _parametric_line,
+    "bezier": _samples("curve", points="points"),
+    "bspline": _samples("curve", points="points"),
+    "bspline_basis": _samples("curve", points="points"),
+    "continuity": _samples("curve", points="first"),
+    "local_control": _samples("curve", points="points"),
+}
+"""How the size of each library function's answer is estimated, by the function's name."""
+
+BOUNDED: dict[str, str] = {
+    "bezier_at": "de Casteljau's levels: at most algorithms.curve_limits.MAX_POINTS rows",
+    "bspline_at": "one evaluation: at most algorithms.curve_limits.MAX_POINTS rows",
+    "clip_line": "a row per clipping step of one line: a handful of rows",
+    "clip_polygon": "four passes over at most answers.clip_polygon.MAX_VERTICES edges",
+    "compare_curves": "a fixed comparison of the notes' curves",
+    "transform": "at most answers.shapes.MAX_POINTS points and answers.transform.MAX_TRANSFORMS",
+    "viewport": "at most answers.shapes.MAX_POINTS points",
+    "fill": "a row per pixel taken, at most algorithms.seedfill.MAX_SEED_CELLS = 10,000",
+    "storage": "closed-form arithmetic on exact integers",
+    "color": "one conversion in one table",
+    "theory": "a fixed text of the notes",
+    "check": "marking: bounded by core.student_table and answers.marking limits",
+}
+"""The library functions whose answer is small whatever their arguments, and why."""
+
+COSTS: dict[str, dict[str, float]] = {
+    "quantize": {"csv": 0.6, "json": 0.8},
+    "line/basic": {
+        "csv": 16.2,
+        "json": 37.4,
+        "plain": 39.9,
+        "markdown": 36.8,
+        "latex": 61.6,
+        "html": 107.3,
+        "rich": 695.7,
+    },
+    "line/dda": {
+        "csv": 17.0,
+        "json": 32.8,
+        "plain": 48.3,
+        "markdown": 37.7,
+        "latex": 56.0,
+        "html": 175.7,
+        "rich": 1072.5,
+    },
+    "line/bresenham": {
+        "csv": 9.8,
+        "json": 17.5,
+        "plain": 19.4,
+        "markdown": 7.2,
+        "latex": 15.4,
+        "html": 87.3,
+        "rich": 814.8,
+    },
+    "line/wu": {
+        "csv": 51.4,
+        "json": 79.6,
+        "plain": 85.5,
+        "markdown": 105.9,
+        "latex": 118.4,
+        "html": 303.0,
+        "rich": 1076.7,
+    },
+    "circle/midpoint": {
+        "csv": 8.7,
+        "json": 66.0,
+        "plain": 53.8,
+        "markdown": 78.2,
+        "latex": 126.7,
+        "html": 123.2,
+        "rich": 2894.8,
+    },
+    "circle/bresenham": {
+        "csv": 6.2,
+        "json": 50.2,
+        "plain": 61.9,
+        "markdown": 85.9,
+        "latex": 86.8,
+        "html": 75.4,
+    },
+}
+"""CPU microseconds of one row (or matrix cell), per ``command/method`` and format: measured by
+``benchmarks/bench_budget.py`` on the project's shared 2-CPU machine (filled in below)."""
+
+
+def estimate(name: str, arguments: Args) -> Work | None:
+    """The size of the answer of library function ``name``, or ``None`` if it is not
+    estimated (a function of :data:`BOUNDED`, or arguments the function refuses itself).
+    A number beyond the magnitude limit is an :class:`InputError` naming its parameter.
+
+    >>> estimate("ellipse", {"rx": 20000, "ry": 20000}).rows
+    28287
+    >>> estimate("line", {"x1": "junk"}) is None
+    True
+    >>> estimate("line", {"x1": 0, "y1": 0, "x2": 10**12, "y2": 1})
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: x2 = 1000000000000 is out of range (|value| <= 1e+09)
+    """
+    how = ESTIMATES.get(name)
+    if how is None:
+        return None
+    try:
+        return how(arguments)
+    except InputError as err:
+        if "out of range" in str(err):
+            raise
+        return None
+    except (ArithmeticError, KeyError, TypeError, ValueError, IndexError):
+        return None  # the command refuses it itself
