@@ -18,7 +18,8 @@ from typing import Any
 from ..render.work import ESTIMATES, Work
 from .output import Output, format_for_file, resolve
 
-__all__ = ["ESTIMATES", "LIBRARY_NAMES", "check", "check_question", "estimate", "library_call"]
+__all__ = ["DOCUMENT_COMMANDS", "ESTIMATES", "LIBRARY_NAMES", "check", "check_question"]
+__all__ += ["estimate", "library_call"]
 
 LIBRARY_NAMES = {
     "compare_line": "compare_lines",
@@ -28,6 +29,15 @@ LIBRARY_NAMES = {
     "fill_flood": "fill",
 }
 """The library function of each command whose name differs (the others share theirs)."""
+
+
+DOCUMENT_COMMANDS = {
+    "sheet": "each question (check_question) and their total (render.budget.document)",
+    "practice": "its questions go through the sheet's answer_questions, like a sheet's",
+    "exam": "the exam book's questions go through the sheet's answer_questions",
+    "check": "the question (check_question); --batch: render.budget.check_batch",
+}
+"""The commands that run other commands as questions, and how their work is bounded."""
 
 
 def library_call(name: str, arguments: Mapping[str, Any]) -> tuple[str, Mapping[str, Any]]:
@@ -61,6 +71,7 @@ def estimate(name: str, arguments: Mapping[str, Any]) -> Work | None:
 def check(name: str, arguments: Mapping[str, Any], out: Output) -> None:
     """Refuse (``ValueError``, one line) a request beyond its output format's budget.
 
+    >>> from scanconv.render import Format
     >>> check("sample", {"size": "4096"}, Output(fmt=Format.latex))
     Traceback (most recent call last):
     ...
@@ -86,7 +97,7 @@ def check_question(name: str, arguments: Mapping[str, Any]) -> None:
     try:
         check_in_document(*library_call(name, arguments))
     except BudgetError as err:
-        raise ValueError(f"{err} (run it alone: scanconv streams long answers)") from None
+        raise ValueError(str(err)) from None
 
 
 def _worded(err: Any, function: str) -> str:

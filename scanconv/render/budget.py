@@ -313,38 +313,42 @@ def check_question(name: str, arguments: Mapping[str, Any]) -> Work | None:
     ...         _ = check_question("line", {"x1": 0, "y1": 0, "x2": 99_999, "y2": 1})
     Traceback (most recent call last):
     ...
-    scanconv.render.budget.BudgetError: with the questions before it, the document has about 300,000 table rows; a document holds at most 200,000
+    scanconv.render.budget.BudgetError: with the questions before it, the document has about 300,000 table rows; a document holds at most 200,000 (split the questions)
     """
     work = estimate(name, arguments)
     if work is None:
         return None
-    if work.kind == "matrix":
-        for fmt in DOCUMENT:
-            _check_matrix(work, fmt)
+    cells = min(MATRIX_CELLS.get(f, work.size) for f in DOCUMENT)
+    if work.kind == "matrix" and work.size > cells:
+        raise BudgetError(
+            f"a {work.rows} x {work.cols} matrix is {work.size:,} cells; a document prints at "
+            f"most {cells:,} (run it alone: answers stream)",
+            (),
+            work.param,
+        )
     rows, seconds = document_cost(work)
-    _check_total(rows, seconds, "its answer has", work)
+    _check_total(rows, seconds, "its answer has", work, "run it alone: answers stream")
     ledger = _DOCUMENT.get()
     if ledger is not None:
         ledger.rows += rows
         ledger.seconds += seconds
         ledger.questions += 1
-        _check_total(
-            ledger.rows, ledger.seconds, "with the questions before it, the document has", work
-        )
+        what = "with the questions before it, the document has"
+        _check_total(ledger.rows, ledger.seconds, what, work, "split the questions")
     return work
 
 
-def _check_total(rows: int, seconds: float, what: str, work: Work) -> None:
+def _check_total(rows: int, seconds: float, what: str, work: Work, way: str) -> None:
     if rows > SHEET_ROWS:
         raise BudgetError(
-            f"{what} about {rows:,} table rows; a document holds at most {SHEET_ROWS:,}",
+            f"{what} about {rows:,} table rows; a document holds at most {SHEET_ROWS:,} ({way})",
             (),
             work.param,
         )
     if seconds > SHEET_SECONDS:
         raise BudgetError(
             f"{what} about {seconds:.0f} s of work ({work.key}: {rows:,} rows); a document "
-            f"does at most {SHEET_SECONDS} s",
+            f"does at most {SHEET_SECONDS} s ({way})",
             (),
             work.param,
         )
