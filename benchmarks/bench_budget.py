@@ -205,15 +205,37 @@ def measure(function: str, case: Case, fmt: str, big: int) -> tuple[float, int]:
     return max(t1 - t0, 0.0) / (rows(big) - rows(SMALL_ROWS)) * 1e6, kb
 
 
+def print_markdown(costs: dict[str, dict[str, float]]) -> None:
+    """The costs (and the rows each format prints within the budget) as a Markdown table."""
+    from scanconv.render.budget import SECONDS
+
+    print("| command/method | " + " | ".join(FORMATS) + " |")
+    print("|---|" + "--:|" * len(FORMATS))
+    for key, row in costs.items():
+        cells = [
+            f"{row[f]:g} ({min(int(SECONDS * 1e6 / row[f]), 2_000_000) // 1000:,}k)"
+            if f in row
+            else "-"
+            for f in FORMATS
+        ]
+        print(f"| {key} | " + " | ".join(cells) + " |")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
     parser.add_argument("--only", default="", help="measure the keys containing this")
     parser.add_argument("--formats", default=",".join(FORMATS))
     parser.add_argument("--rows", type=int, default=100_000, help="rows of a big csv/json run")
+    parser.add_argument(
+        "--markdown", action="store_true", help="print the code's COSTS as a Markdown table"
+    )
     args = parser.parse_args()
     sys.path.insert(0, str(ROOT))
     from scanconv.render.work import COSTS
 
+    if args.markdown:
+        print_markdown(COSTS)
+        return
     formats = args.formats.split(",")
     measured: dict[str, dict[str, float]] = {}
     for key, function, case in CASES:

@@ -115,10 +115,10 @@ class Answer(Solution):
         list of rows (:data:`~scanconv.render.budget.ROWS_IN_MEMORY`).
 
         >>> import scanconv
-        >>> scanconv.line(0, 0, 10**6, 1, algo="wu").to("html")  # doctest: +ELLIPSIS
+        >>> scanconv.line(0, 0, 500_000, 1, algo="wu").to("html")  # doctest: +ELLIPSIS
         Traceback (most recent call last):
         ...
-        scanconv.render.budget.BudgetError: the table has about 1,000,001 rows; ...
+        scanconv.render.budget.BudgetError: the table has about 500,001 rows; ...
         """
         if self.recipe is not None:
             check_recipe(self.recipe, fmt, in_memory=in_memory)

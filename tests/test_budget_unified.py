@@ -8,6 +8,7 @@ commands or calls was accepted and ran for minutes or hours (or needed gigabytes
 from __future__ import annotations
 
 import inspect
+import re
 import shlex
 from pathlib import Path
 
@@ -278,3 +279,23 @@ def test_check_batch_is_bounded_in_files_and_work(tmp_path):
         (big / f"s{i:02}.csv").write_text("k,x,y\n" + rows, encoding="utf-8")
     r = run("check", "--batch", str(big), "--", "line", "0", "0", "9998", "1")
     assert_refused(r, "40 files", "s of marking", "mark the folder in parts")
+
+
+# --- the documentation ---------------------------------------------------------------------------
+
+BUDGET_ROW = re.compile(r"^\| [^|]+ \| `((?:render|algorithms)\.\w+)\.(\w+)` \| `([^`]+)` \|", re.M)
+
+
+def test_the_documented_budgets_are_the_constants():
+    import importlib
+
+    from scanconv.core.expr import parse_exact
+
+    doc = (Path(__file__).parent.parent / "docs" / "limits.md").read_text(encoding="utf-8")
+    rows = {(m, n): v for m, n, v in BUDGET_ROW.findall(doc)}
+    names = {"SECONDS", "ALL_ROWS", "SHEET_ROWS", "SHEET_SECONDS", "BATCH_FILES"}
+    names |= {"BATCH_SECONDS", "ROWS_IN_MEMORY", "PIXEL_BUDGET", "MEMORY"}
+    assert {n for _, n in rows} == names
+    for (module, name), value in rows.items():
+        constant = getattr(importlib.import_module(f"scanconv.{module}"), name)
+        assert parse_exact(value.replace("_", "")) == constant, name

@@ -33,7 +33,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..core.checks import InputError
 from . import Format
-from .work import COSTS, Work, estimate
+from .work import BYTES, COSTS, Work, estimate
 
 if TYPE_CHECKING:
     from ..core.records import Solution
@@ -58,6 +58,9 @@ pixels of a longer line or circle come from :mod:`scanconv.raster` (numpy, milli
 SECONDS = 40
 """Most CPU seconds of estimated work of one answer (rows times the measured row cost): with
 the start-up and a loaded machine, every accepted answer ends within a minute."""
+
+MEMORY = 500 * 10**6
+"""Most bytes a format may hold at once for one answer (the html page holds its rows)."""
 
 SHEET_ROWS = 200_000
 """Most table rows (or matrix cells) of a whole document (sheet, practice set, exam book),
@@ -186,9 +189,20 @@ def row_cost(work: Work, fmt: Format) -> float:
 def row_limit(work: Work, fmt: Format) -> int:
     """The most rows of ``work``'s kind that ``fmt`` prints within the budget."""
     limit = int(SECONDS * 1e6 / row_cost(work, fmt))
+    held = BYTES.get(work.key, {}).get(fmt.value, 0.0) * work.weight
+    if held and MEMORY / held < _held_rows(fmt):
+        limit = min(limit, int(MEMORY / held))
     if not (work.key in LONG_TABLES and fmt in UNLIMITED):
         limit = min(limit, ALL_ROWS)
     return min(limit, TABLE_ROWS.get(fmt, limit))
+
+
+def _held_rows(fmt: Format) -> int:
+    """How many rows ``fmt`` holds at most (the html page steps through at most
+    :data:`~scanconv.render.stepper.MAX_STEPS`)."""
+    from .stepper import MAX_STEPS
+
+    return MAX_STEPS if fmt is Format.html else ALL_ROWS
 
 
 def check_work(name: str, arguments: Mapping[str, Any], fmt: Format | None) -> Work | None:

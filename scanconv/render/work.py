@@ -97,7 +97,11 @@ def _line(a: Args) -> Work:
 def _circle(a: Args) -> Work:
     # one octant: x runs from 0 to r/sqrt(2)
     rows = math.ceil(abs(_num(a, "r")) / math.sqrt(2)) + 1
-    return Work("rows", rows, None, "circle/" + _choice(a, "method", "midpoint"), "r")
+    method = _choice(a, "method", "midpoint")
+    # the symmetric DDA's exact values gain about 2 bits a step: a row costs in proportion
+    # to the rows before it (r = 16383: 15 s and 1.4 GB as html)
+    weight = max(1.0, rows / 1000) if method == "symmetric-dda" else 1.0
+    return Work("rows", rows, None, "circle/" + method, "r", weight)
 
 
 def _ellipse(a: Args) -> Work:
@@ -206,10 +210,6 @@ def _compare_line(a: Args) -> Work:
     return Work("rows", rows, None, "compare_lines", param)
 
 
-def _compare_circle(a: Args) -> Work:
-    return Work("rows", math.ceil(abs(_num(a, "r")) / math.sqrt(2)) + 1, None, "compare", "r")
-
-
 ESTIMATES: dict[str, Callable[[Args], Work]] = {
     "line": _line,
     "circle": _circle,
@@ -220,7 +220,6 @@ ESTIMATES: dict[str, Callable[[Args], Work]] = {
     "pipeline_line": _pipeline_line,
     "pipeline_polygon": _pipeline_polygon,
     "compare_lines": _compare_line,
-    "compare_circles": _compare_circle,
     "quantize": _quantize,
     "polygon": _polygon,
     "sample": _matrix("8"),
@@ -244,6 +243,7 @@ BOUNDED: dict[str, str] = {
     "clip_line": "a row per clipping step of one line: a handful of rows",
     "clip_polygon": "four passes over at most answers.clip_polygon.MAX_VERTICES edges",
     "compare_curves": "a fixed comparison of the notes' curves",
+    "compare_circles": "an octant of r <= answers.compare.MAX_RADIUS = 2000: at most 1,415 rows",
     "transform": "at most answers.shapes.MAX_POINTS points and answers.transform.MAX_TRANSFORMS",
     "viewport": "at most answers.shapes.MAX_POINTS points",
     "fill": "a row per pixel taken, at most algorithms.seedfill.MAX_SEED_CELLS = 10,000",
@@ -312,6 +312,15 @@ COSTS: dict[str, dict[str, float]] = {
 }
 """CPU microseconds of one row (or matrix cell), per ``command/method`` and format: measured by
 ``benchmarks/bench_budget.py`` on the project's shared 2-CPU machine (filled in below)."""
+
+
+BYTES: dict[str, dict[str, float]] = {
+    "circle/symmetric-dda": {"html": 10_000.0},
+}
+"""Bytes held in memory per row of weight 1, where a format holds its rows (the html page,
+up to :data:`~scanconv.render.stepper.MAX_STEPS` of them): measured as the peak resident
+size over the rows (``benchmarks/bench_budget.py`` prints the peaks). Other rows: about
+3 KB in html (a line's 20,000 rows: 63 MB), and nothing held in the streamed formats."""
 
 
 def estimate(name: str, arguments: Args) -> Work | None:
