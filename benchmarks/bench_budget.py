@@ -167,8 +167,10 @@ def big_rows(key: str, fmt: str, rows: int) -> int:
     big = BIG_ROWS.get(fmt, rows)
     if key.endswith("/wu") or "symmetric" in key or key.startswith("compare"):
         big //= 5
-    if key.startswith("antialias_") and not key.endswith("/wu"):
-        big = min(big, 10_000) // (10 if "supersample" in key else 1)
+    if key.startswith("antialias_") and not key.endswith("/wu"):  # a box of 10^4 cells at most
+        big = min(big, 9_000) // (10 if "supersample" in key else 1)
+    if "symmetric" in key:  # r <= algorithms.circles.SDDA_MAX_RADIUS: 11,585 rows
+        big = min(big, 8_000)
     if key == "matrix" and fmt in ("rich", "latex", "markdown"):
         big = min(big, 65_536)
     if key.startswith("compare"):
@@ -206,16 +208,18 @@ def measure(function: str, case: Case, fmt: str, big: int) -> tuple[float, int]:
 
 
 def print_markdown(costs: dict[str, dict[str, float]]) -> None:
-    """The costs (and the rows each format prints within the budget) as a Markdown table."""
-    from scanconv.render.budget import SECONDS
+    """The costs, and the rows of weight 1 each format prints within the budget
+    (:func:`scanconv.render.budget.row_limit`), as a Markdown table."""
+    from scanconv.render import Format
+    from scanconv.render.budget import row_limit
+    from scanconv.render.work import Work
 
     print("| command/method | " + " | ".join(FORMATS) + " |")
     print("|---|" + "--:|" * len(FORMATS))
     for key, row in costs.items():
+        work = Work("rows", 1, None, key)
         cells = [
-            f"{row[f]:g} ({min(int(SECONDS * 1e6 / row[f]), 2_000_000) // 1000:,}k)"
-            if f in row
-            else "-"
+            f"{row[f]:g} ({row_limit(work, Format(f)) / 1000:,.0f}k)" if f in row else "-"
             for f in FORMATS
         ]
         print(f"| {key} | " + " | ".join(cells) + " |")

@@ -56,7 +56,7 @@ HOLES = [
         "1,000,000,002 rows",
     ),
     # Wu's line costs about ten times Bresenham's: a million rows is beyond a minute in csv
-    (["line", "0", "0", "1000000", "1", "--algo", "wu", "-f", "csv"], "line/wu row costs"),
+    (["line", "0", "0", "1000000", "1", "--algo", "wu", "-f", "csv"], "line/wu in csv costs"),
     (["line", "0", "0", "1000000", "1", "--algo", "wu", "-f", "json"], "json prints at most"),
 ]
 

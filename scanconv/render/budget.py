@@ -51,9 +51,10 @@ TABLE_ROWS: dict[Format, int] = {Format.rich: 10_000}
 """Most step-table rows a format prints beyond :data:`ALL_ROWS`; the others stream up to it."""
 
 ALL_ROWS = 2_000_000
-"""Most step-table rows any format prints: 2,000,000 rows stream in about 7 s as csv and
-35 s as json (an ellipse's wider rows) here, so every allowed table ends within a minute. The
-pixels of a longer line or circle come from :mod:`scanconv.raster` (numpy, milliseconds)."""
+"""Most step-table rows any format prints (a bare quantizer's table in csv and json aside):
+2,000,000 Bresenham rows stream in about 7 s as csv on a quiet machine; the costlier formats
+and methods print fewer within :data:`SECONDS`. The pixels of a longer line or circle come
+from :mod:`scanconv.raster` (numpy, milliseconds)."""
 
 SECONDS = 40
 """Most CPU seconds of estimated work of one answer (rows times the measured row cost): with
@@ -64,7 +65,8 @@ MEMORY = 500 * 10**6
 
 SHEET_ROWS = 200_000
 """Most table rows (or matrix cells) of a whole document (sheet, practice set, exam book),
-which is built in memory: a json sheet holds about 2 KB a row (1.16 GB for 500,000 rows)."""
+which is built in memory: a json sheet holds about 2.4 KB a row (477 MB at the budget; 1.16 GB
+for 500,000 rows)."""
 
 SHEET_SECONDS = 30
 """Most CPU seconds of estimated work of a whole document, each question costed in the
@@ -85,6 +87,9 @@ exact fractions: ``quantize/range`` keeps the budget of every format)."""
 DEFAULT_COSTS = {"csv": 20.0, "json": 60.0, "plain": 60.0, "markdown": 90.0, "latex": 100.0}
 DEFAULT_COSTS |= {"html": 150.0, "rich": 3000.0}
 """Microseconds a row for a command/method missing from :data:`~scanconv.render.work.COSTS`."""
+
+MIN_COST = 0.2
+"""The least cost of a row, in microseconds (a table printed without its rows still costs)."""
 
 UNLIMITED = (Format.csv, Format.json)
 """The formats a budget refusal points to: they stream at a few microseconds a cell."""
@@ -183,18 +188,25 @@ def row_cost(work: Work, fmt: Format) -> float:
     True
     """
     costs = COSTS.get(work.key) or COSTS.get(work.key.split("/")[0]) or {}
-    return costs.get(fmt.value, DEFAULT_COSTS.get(fmt.value, 100.0)) * work.weight
+    us = costs.get(fmt.value, DEFAULT_COSTS.get(fmt.value, 100.0))
+    return max(us, MIN_COST) * work.weight
 
 
 def row_limit(work: Work, fmt: Format) -> int:
     """The most rows of ``work``'s kind that ``fmt`` prints within the budget."""
-    limit = int(SECONDS * 1e6 / row_cost(work, fmt))
-    held = BYTES.get(work.key, {}).get(fmt.value, 0.0) * work.weight
-    if held and MEMORY / held < _held_rows(fmt):
-        limit = min(limit, int(MEMORY / held))
+    limit = min(int(SECONDS * 1e6 / row_cost(work, fmt)), _memory_limit(work, fmt))
     if not (work.key in LONG_TABLES and fmt in UNLIMITED):
         limit = min(limit, ALL_ROWS)
     return min(limit, TABLE_ROWS.get(fmt, limit))
+
+
+def _memory_limit(work: Work, fmt: Format) -> int:
+    """The most rows of ``work`` that ``fmt`` holds within :data:`MEMORY` (no limit: a
+    number beyond any table)."""
+    held = BYTES.get(work.key, {}).get(fmt.value, 0.0) * work.weight
+    if held and MEMORY / held < _held_rows(fmt):
+        return int(MEMORY / held)
+    return 2**62
 
 
 def _held_rows(fmt: Format) -> int:
@@ -219,7 +231,7 @@ def check_work(name: str, arguments: Mapping[str, Any], fmt: Format | None) -> W
     ... # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    scanconv.render.budget.BudgetError: the table has about 1,000,001 rows; a line/wu row costs about ... us in csv, so csv prints at most ... in 40 s
+    scanconv.render.budget.BudgetError: the table has about 1,000,001 rows; line/wu in csv costs about ... us a row, so csv prints at most ... in 40 s
     >>> check_work("line", {"x1": 0, "y1": 0, "x2": 10**6, "y2": 1}, Format.csv).rows
     1000001
     """
@@ -254,10 +266,17 @@ def _refuse_rows(work: Work, fmt: Format) -> None:
     except BudgetError as err:
         ways = err.ways if err.ways == ("raster",) else _faster(work)
         raise BudgetError(str(err), ways, work.param) from None
+    limit = row_limit(work, fmt)
+    if limit == _memory_limit(work, fmt):
+        held = BYTES[work.key][fmt.value] * work.weight
+        why = f"holds about {held:,.0f} bytes a row, so at most {limit:,} in {MEMORY // 10**6} MB"
+    else:
+        us = row_cost(work, fmt)
+        why = (
+            f"costs about {us:.0f} us a row, so {fmt.value} prints at most {limit:,} in {SECONDS} s"
+        )
     raise BudgetError(
-        f"the table has about {work.rows:,} rows; a {work.key} row costs about "
-        f"{row_cost(work, fmt):.0f} us in {fmt.value}, so {fmt.value} prints at most "
-        f"{row_limit(work, fmt):,} in {SECONDS} s",
+        f"the table has about {work.rows:,} rows; {work.key} in {fmt.value} {why}",
         _faster(work) or ("raster",),
         work.param,
     )

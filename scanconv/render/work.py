@@ -53,6 +53,16 @@ class Work(NamedTuple):
 Args = Mapping[str, Any]
 
 
+class _Beyond(Exception):
+    """An argument beyond the function's own input limit: the function refuses it itself,
+    naming that limit (a better message than the budget's)."""
+
+
+def _within(value: float | Fraction, limit: int) -> None:
+    if abs(Fraction(value)) > limit:
+        raise _Beyond
+
+
 def _num(a: Args, name: str) -> Fraction:
     """Argument ``name`` as an exact number within the magnitude limit (else InputError)."""
     v = a[name]
@@ -96,8 +106,12 @@ def _line(a: Args) -> Work:
 
 def _circle(a: Args) -> Work:
     # one octant: x runs from 0 to r/sqrt(2)
+    from ..algorithms.circles import SDDA_MAX_RADIUS
+
     rows = math.ceil(abs(_num(a, "r")) / math.sqrt(2)) + 1
     method = _choice(a, "method", "midpoint")
+    if method == "symmetric-dda":
+        _within(_num(a, "r"), SDDA_MAX_RADIUS)
     # the symmetric DDA's exact values gain about 2 bits a step: a row costs in proportion
     # to the rows before it (r = 16383: 15 s and 1.4 GB as html)
     weight = max(1.0, rows / 1000) if method == "symmetric-dda" else 1.0
@@ -107,7 +121,10 @@ def _circle(a: Args) -> Work:
 def _ellipse(a: Args) -> Work:
     # region 1 ends where the slope is -1, at x = rx^2 / sqrt(rx^2 + ry^2); region 2 has about
     # ry^2 / sqrt(rx^2 + ry^2) steps (ellipse 20000 20000: 28,285 rows)
+    from ..algorithms.ellipses import MAX_AXIS
+
     rx, ry = abs(float(_num(a, "rx"))), abs(float(_num(a, "ry")))
+    _within(max(rx, ry), MAX_AXIS)
     h = math.hypot(rx, ry) or 1.0
     rows = math.ceil((rx * rx + ry * ry) / h) + 2
     return Work("rows", rows, None, "ellipse/midpoint", "rx" if rx >= ry else "ry")
@@ -162,8 +179,11 @@ def _pipeline_polygon(a: Args) -> Work:
 
 def _samples(key: str, default: int = 16, points: str | None = None) -> Callable[[Args], Work]:
     def rows(a: Args) -> Work:
+        from ..algorithms.curve_limits import MAX_SAMPLES
+
         n = a.get("samples")
         count = default if n is None else int(_num(a, "samples"))
+        _within(count, MAX_SAMPLES)
         weight = 1.0
         if points is not None and a.get(points) is not None:  # a row has a weight per point
             weight = max(1.0, len(_flat(a[points])) / 8)
@@ -181,12 +201,19 @@ def _parametric_line(a: Args) -> Work:
 
 def _polygon(a: Args) -> Work:
     # one row per scan line of the vertices' y extent (and a few for the edge table)
-    ys = _coords(a, "vertices")[1::2]
+    from ..algorithms.polygon import MAX_FILL_CELLS
+
+    v = _coords(a, "vertices")
+    xs, ys = v[0::2], v[1::2]
+    _within((max(xs) - min(xs) + 1) * (max(ys) - min(ys) + 1), MAX_FILL_CELLS)
     return Work("rows", math.ceil(max(ys) - min(ys)) + 1, None, "polygon/scan-line", "vertices")
 
 
 def _quantize(a: Args) -> Work:
+    from ..algorithms.image_limits import MAX_BITS
+
     bits = int(_num(a, "bits"))
+    _within(bits, MAX_BITS)
     ranged = "/range" if a.get("value_range") else ""
     return Work("rows", 1 << bits if 0 < bits <= 64 else 0, None, "quantize" + ranged, "bits")
 
@@ -206,7 +233,10 @@ def _matrix(default: str) -> Callable[[Args], Work]:
 
 
 def _compare_line(a: Args) -> Work:
+    from ..answers.compare import MAX_LENGTH
+
     rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    _within(rows - 1, MAX_LENGTH)
     return Work("rows", rows, None, "compare_lines", param)
 
 
@@ -254,68 +284,47 @@ BOUNDED: dict[str, str] = {
 }
 """The library functions whose answer is small whatever their arguments, and why."""
 
+# fmt: off
 COSTS: dict[str, dict[str, float]] = {
-    "quantize": {"csv": 0.6, "json": 0.8},
-    "line/basic": {
-        "csv": 16.2,
-        "json": 37.4,
-        "plain": 39.9,
-        "markdown": 36.8,
-        "latex": 61.6,
-        "html": 107.3,
-        "rich": 695.7,
-    },
-    "line/dda": {
-        "csv": 17.0,
-        "json": 32.8,
-        "plain": 48.3,
-        "markdown": 37.7,
-        "latex": 56.0,
-        "html": 175.7,
-        "rich": 1072.5,
-    },
-    "line/bresenham": {
-        "csv": 9.8,
-        "json": 17.5,
-        "plain": 19.4,
-        "markdown": 7.2,
-        "latex": 15.4,
-        "html": 87.3,
-        "rich": 814.8,
-    },
-    "line/wu": {
-        "csv": 51.4,
-        "json": 79.6,
-        "plain": 85.5,
-        "markdown": 105.9,
-        "latex": 118.4,
-        "html": 303.0,
-        "rich": 1076.7,
-    },
-    "circle/midpoint": {
-        "csv": 8.7,
-        "json": 66.0,
-        "plain": 53.8,
-        "markdown": 78.2,
-        "latex": 126.7,
-        "html": 123.2,
-        "rich": 2894.8,
-    },
-    "circle/bresenham": {
-        "csv": 6.2,
-        "json": 50.2,
-        "plain": 61.9,
-        "markdown": 85.9,
-        "latex": 86.8,
-        "html": 75.4,
-    },
+    "line/basic": {"csv": 16.2, "json": 37.4, "plain": 53.5, "markdown": 41.7, "latex": 61.6, "html": 107.3, "rich": 695.7},
+    "line/dda": {"csv": 20.7, "json": 38.7, "plain": 68.1, "markdown": 64.6, "latex": 56, "html": 178.5, "rich": 1072.5},
+    "line/bresenham": {"csv": 9.8, "json": 17.5, "plain": 19.5, "markdown": 24, "latex": 15.4, "html": 87.3, "rich": 814.8},
+    "line/wu": {"csv": 63.3, "json": 79.6, "plain": 102, "markdown": 105.9, "latex": 118.4, "html": 303, "rich": 1339},
+    "circle/midpoint": {"csv": 8.7, "json": 66, "plain": 62.2, "markdown": 85.6, "latex": 126.7, "html": 133.5, "rich": 3444.2},
+    "circle/bresenham": {"csv": 7.5, "json": 51.7, "plain": 61.9, "markdown": 104.7, "latex": 86.8, "html": 75.4, "rich": 2330.4},
+    "circle/polynomial": {"csv": 10.6, "json": 73.7, "plain": 78.1, "markdown": 107.9, "latex": 125.4, "html": 124.5, "rich": 3062.2},
+    "circle/general": {"csv": 9.1, "json": 67.4, "plain": 60.9, "markdown": 100.5, "latex": 87.7, "html": 136.2, "rich": 2457.6},
+    "circle/trig": {"csv": 24, "json": 81.4, "plain": 123.9, "markdown": 161.5, "latex": 167.3, "html": 214.4, "rich": 3153.1},
+    "circle/symmetric-dda": {"csv": 66.9, "json": 162.7, "plain": 256.9, "markdown": 350, "latex": 352, "html": 304, "rich": 2940},
+    "ellipse/midpoint": {"csv": 14, "json": 58.3, "plain": 59, "markdown": 45.5, "latex": 50.4, "html": 192.9, "rich": 1753.4},
+    "antialias_line/wu": {"csv": 26.9, "json": 35.2, "plain": 38.8, "markdown": 41.9, "latex": 37.7, "html": 120.1, "rich": 558},
+    "antialias_line/area": {"csv": 11.2, "json": 9.9, "plain": 8.7, "markdown": 10.6, "latex": 5.1, "html": 17.8, "rich": 75.2},
+    "antialias_line/supersample": {"csv": 31.7, "json": 91.7, "plain": 127.8, "markdown": 58.8, "latex": 198, "html": 198, "rich": 3960},
+    "antialias_circle/area": {"csv": 7.8, "json": 21.7, "plain": 28.6, "markdown": 23.5, "latex": 22.6, "html": 23.3, "rich": 155.9},
+    "pipeline_line/basic": {"csv": 13.5, "json": 47.3, "plain": 48.8, "markdown": 52.9, "latex": 45.8, "html": 112.2, "rich": 721.1},
+    "pipeline_line/dda": {"csv": 14.6, "json": 53.4, "plain": 45.9, "markdown": 41.8, "latex": 47.2, "html": 167.6, "rich": 792.6},
+    "pipeline_line/bresenham": {"csv": 6.7, "json": 20.8, "plain": 13.7, "markdown": 16.1, "latex": 19.5, "html": 71.6, "rich": 874.4},
+    "polygon/scan-line": {"csv": 0.5, "json": 192.3, "plain": 258.7, "markdown": 235.5, "latex": 444.4, "html": 83.2, "rich": 1560.5},
+    "quantize": {"csv": 0.8, "json": 0.7, "plain": 7.7, "markdown": 19.5, "latex": 19.5, "html": 19.5, "rich": 517.5},
+    "quantize/range": {"csv": 19, "json": 22.2, "plain": 33.5, "markdown": 41.2, "latex": 47.6, "html": 4.4, "rich": 1025.6},
+    "parametric": {"csv": 50.1, "json": 78.2, "plain": 124.9, "markdown": 100, "latex": 108.5, "html": 167.9, "rich": 1005.3},
+    "curve": {"csv": 52.9, "json": 79.9, "plain": 109.3, "markdown": 109.3, "latex": 0.1, "html": 109.3, "rich": 1142.7},
+    "compare_lines": {"csv": 132.3, "json": 158.2, "plain": 146.6, "markdown": 193.6, "latex": 144.3, "html": 197, "rich": 931},
+    "matrix": {"csv": 1.7, "json": 0.3, "plain": 1.8, "markdown": 14.9, "latex": 22.9, "html": 2.5, "rich": 143.5},
+    "antialias_circle/supersample": {"csv": 3323.9, "json": 3015.6, "plain": 3134.8, "markdown": 3131.6, "latex": 3697.6, "html": 2484.7, "rich": 4165.4},
+    "antialias_polygon/area": {"csv": 31.5, "json": 13.3, "plain": 41.9, "markdown": 26.8, "latex": 41.8, "html": 49.3, "rich": 305},
+    "antialias_polygon/supersample": {"csv": 140.9, "json": 48, "plain": 63.3, "markdown": 20.7, "latex": 61.2, "html": 85.8, "rich": 562.9},
 }
+# fmt: on
 """CPU microseconds of one row (or matrix cell), per ``command/method`` and format: measured by
-``benchmarks/bench_budget.py`` on the project's shared 2-CPU machine (filled in below)."""
+``benchmarks/bench_budget.py`` on the project's shared 2-CPU machine under load (the largest
+of two runs where there were two; a run that failed, such as a curve beyond its weight limit in
+the slower formats, takes the costliest text format's value). A polygon's csv is its edge
+table alone (0 us measured: 0.5)."""
 
 
 BYTES: dict[str, dict[str, float]] = {
-    "circle/symmetric-dda": {"html": 10_000.0},
+    "circle/symmetric-dda": {"html": 20_000.0},
 }
 """Bytes held in memory per row of weight 1, where a format holds its rows (the html page,
 up to :data:`~scanconv.render.stepper.MAX_STEPS` of them): measured as the peak resident
@@ -346,5 +355,5 @@ def estimate(name: str, arguments: Args) -> Work | None:
         if "out of range" in str(err):
             raise
         return None
-    except (ArithmeticError, KeyError, TypeError, ValueError, IndexError):
-        return None  # the command refuses it itself
+    except (_Beyond, ArithmeticError, KeyError, TypeError, ValueError, IndexError):
+        return None  # the function refuses it itself
