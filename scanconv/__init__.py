@@ -19,68 +19,101 @@ under unambiguous names:
 >>> [s.pixel for s in scanconv.bresenham_line(0, 0, 3, 1)]
 [(1, 0), (2, 1), (3, 1)]
 
-Coordinates are ``(x, y)`` with y up. Everything is imported on first use (PEP 562), so
-``import scanconv`` stays cheap for the command line.
+A question written as scanconv's own arguments is answered by :mod:`scanconv.questions`
+(``scanconv.questions.answer("line 2 2 10 6 --algo dda")``), and :func:`check` marks a
+student's table against one.
+
+Coordinates are ``(x, y)`` with y up. Every public name is listed once, in ``__init__.pyi``
+(what type checkers read), and imported from there on first use (as skimage's
+``lazy.attach_stub`` does: :func:`_attach_stub`), so ``import scanconv`` stays cheap for the
+command line.
 """
 
 from __future__ import annotations
 
-import importlib
-from typing import Any
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from collections.abc import Callable, Mapping
+    from typing import Any
 
 __version__ = "0.1.0"
 
-#: public name -> (module, attribute); an API function is wrapped to return an Answer.
-_LAZY: dict[str, tuple[str, str]] = {
-    # records
-    "Answer": ("scanconv.display", "Answer"),
-    "Column": ("scanconv.core.records", "Column"),
-    "Move": ("scanconv.core.records", "Move"),
-    "Quantity": ("scanconv.core.records", "Quantity"),
-    "Solution": ("scanconv.core.records", "Solution"),
-    "Step": ("scanconv.core.records", "Step"),
-    "Table": ("scanconv.core.records", "Table"),
-    "InputError": ("scanconv.core.checks", "InputError"),
-    "round_half_up": ("scanconv.core.numeric", "round_half_up"),
-    # the generators, by unambiguous names
-    "bresenham_line": ("scanconv.algorithms.lines", "bresenham"),
-    "dda_line": ("scanconv.algorithms.lines", "dda"),
-    "basic_line": ("scanconv.algorithms.lines", "basic"),
-    "midpoint_circle": ("scanconv.algorithms.circles", "midpoint"),
-    "bresenham_circle": ("scanconv.algorithms.circles", "bresenham"),
-    "midpoint_ellipse": ("scanconv.algorithms.ellipses", "midpoint_ellipse"),
-    # earlier names, kept
-    "bresenham": ("scanconv.algorithms.lines", "bresenham"),
-    "dda": ("scanconv.algorithms.lines", "dda"),
-    "basic": ("scanconv.algorithms.lines", "basic"),
-    "line_solution": ("scanconv.answers.line", "line_solution"),
+#: Names kept for old code, with what to use instead (a DeprecationWarning on use).
+DEPRECATED = {
+    "line_solution": "scanconv.line(x1, y1, x2, y2, algo=...), whose table is in the notes' "
+    "layout unless layout='textbook' (line_solution's default)",
 }
 
 
-def _api_names() -> list[str]:
-    """The API functions (one per command), from :mod:`scanconv._api`."""
-    from . import _api
-
-    return [n for n in _api.__all__ if n[0].islower()]
+# --- the public names, loaded on first use from the stub (scanconv.questions uses this too) ---
 
 
-def __getattr__(name: str) -> Any:
-    if name in _LAZY:
-        module, attr = _LAZY[name]
-        value = getattr(importlib.import_module(module), attr)
-    elif name == "raster":
-        value = importlib.import_module("scanconv.algorithms.raster")
-    elif name == "__all__":
-        value = sorted([*_LAZY, *_api_names(), "raster", "__version__"])
-    elif not name.startswith("_") and name in _api_names():
-        from .display import answering
+def _stub_exports(
+    package: str, init_file: str
+) -> tuple[dict[str, tuple[str, str | None]], list[str]]:
+    """Every name the stub beside ``init_file`` imports -> (module, attribute; ``None``: the
+    module itself), from its ``from X import a as b`` lines; and the stub's ``__all__``."""
+    import ast
+    from pathlib import Path
 
-        value = answering(name)
-    else:
-        raise AttributeError(f"module 'scanconv' has no attribute {name!r}")
-    globals()[name] = value
-    return value
+    found: dict[str, tuple[str, str | None]] = {}
+    listed: list[str] = []
+    tree = ast.parse(Path(init_file).with_suffix(".pyi").read_text(encoding="utf-8"))
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and getattr(node.targets[0], "id", "") == "__all__":
+            listed = list(ast.literal_eval(node.value))
+        if not isinstance(node, ast.ImportFrom):
+            continue
+        for alias in node.names:
+            public = alias.asname or alias.name
+            if node.module is None:  # from . import raster
+                found[public] = (f"{package}.{alias.name}", None)
+            else:
+                found[public] = (f"{package}.{node.module}", alias.name)
+    return found, listed or sorted(found)
 
 
-def __dir__() -> list[str]:
-    return sorted([*_LAZY, *_api_names(), "raster", "__version__"])
+def _attach_stub(
+    package: str, init_file: str, deprecated: Mapping[str, str] | None = None
+) -> tuple[Callable[[str], Any], Callable[[], list[str]]]:
+    """``__getattr__`` and ``__dir__`` for the package ``package``: each public name of its
+    stub, imported on first use and kept; a name in ``deprecated`` (name -> what to use
+    instead) warns on every use and is left out of ``__all__`` and ``dir()``."""
+    import sys
+
+    exports: dict[str, tuple[str, str | None]] = {}
+    listed: list[str] = []
+    old = deprecated or {}
+
+    def __getattr__(name: str) -> Any:
+        if not exports:
+            found, names = _stub_exports(package, init_file)
+            exports.update(found)
+            listed.extend(n for n in names if n not in old)
+        if name == "__all__":
+            return list(listed)
+        if name not in exports:
+            raise AttributeError(f"module {package!r} has no attribute {name!r}")
+        import importlib
+
+        module, attr = exports[name]
+        value = importlib.import_module(module)
+        if attr is not None:
+            value = getattr(value, attr)
+        if name in old:
+            import warnings
+
+            message = f"{package}.{name} is deprecated: use {old[name]}"
+            warnings.warn(message, DeprecationWarning, stacklevel=2)
+            return value  # not kept: every use warns
+        vars(sys.modules[package])[name] = value
+        return value
+
+    def __dir__() -> list[str]:
+        return list(__getattr__("__all__"))
+
+    return __getattr__, __dir__
+
+
+__getattr__, __dir__ = _attach_stub(__name__, __file__, DEPRECATED)

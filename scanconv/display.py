@@ -4,8 +4,9 @@
 must not know about formats) the ways a person looks at an answer from Python: ``to(fmt)``
 (the very text the CLI prints), a short ``repr``, ``_repr_markdown_`` for Jupyter (rich's
 ``JupyterMixin`` idea: the object renders itself through the one :func:`~scanconv.render.render`
-dispatch), ``rows()`` as dictionaries, and pickling. This module sits above every layer, like
-the CLI, so the layers below never import a renderer.
+dispatch), ``rows()`` as dictionaries, and pickling. This module sits above the renderers and
+below the API (:func:`answers` makes each API function return an Answer), so the layers
+below never import a renderer.
 
 >>> import scanconv
 >>> sol = scanconv.line(0, 0, 3, 1)
@@ -24,12 +25,16 @@ k,p,decision,x,y,p_next
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import Any, ParamSpec
 
+from .core.checks import InputError
 from .core.records import Solution, step_getter
 
-Recipe = tuple[str, tuple[Any, ...], tuple[tuple[str, Any], ...]]
-"""How an answer was asked for: the API function's name, its positional and keyword arguments."""
+P = ParamSpec("P")
+
+Recipe = tuple[Callable[..., "Answer"], tuple[Any, ...], tuple[tuple[str, Any], ...]]
+"""How an answer was asked for: the API function (pickled by its name), its positional and
+keyword arguments."""
 
 
 class Answer(Solution):
@@ -133,21 +138,28 @@ class Answer(Solution):
         return notebook_html(self)
 
 
-def answering(name: str) -> Callable[..., Answer]:
-    """The API function ``name`` of :mod:`scanconv._api`, returning an :class:`Answer` that
-    remembers the call (``scanconv.line`` is ``answering("line")``)."""
+def answers(fn: Callable[P, Solution]) -> Callable[P, Answer]:
+    """Make an API function return an :class:`Answer` that remembers the call (so that it
+    pickles), with the function's own signature, its return shown as ``Answer``. Bad input
+    is always an :class:`~scanconv.core.checks.InputError` (a ``ValueError`` with ``.param``:
+    the parameter, or ``None`` when no single one is at fault)."""
     import functools
 
-    from . import _api
-
-    fn = getattr(_api, name)
-
     @functools.wraps(fn)
-    def ask(*args: Any, **kwargs: Any) -> Answer:
-        recipe = (name, args, tuple(sorted(kwargs.items())))
+    def ask(*args: P.args, **kwargs: P.kwargs) -> Answer:
+        recipe = (ask, args, tuple(sorted(kwargs.items())))
         check_recipe(recipe, None)  # the one budget, before any work (scanconv.render.budget)
-        return Answer.of(fn(*args, **kwargs), recipe)
+        try:
+            solution = fn(*args, **kwargs)
+        except InputError:
+            raise
+        except ValueError as err:
+            raise InputError(str(err)) from err
+        return Answer.of(solution, recipe)
 
+    # help() reads the signature through __wrapped__: the wrapped function (reached only
+    # through this one) is annotated as the API returns (no signature built at import time)
+    fn.__annotations__ = ask.__annotations__ = {**fn.__annotations__, "return": "Answer"}
     return ask
 
 
@@ -155,27 +167,27 @@ def check_recipe(recipe: Recipe, fmt: Any, *, in_memory: bool = False) -> None:
     """Refuse the API call ``recipe`` beyond the work budget of ``fmt`` (``None``: of every
     format): :func:`scanconv.render.budget.check_work` on its arguments by name.
 
-    >>> check_recipe(("line", (0, 0, 10**9, 1), ()), None)
+    >>> import scanconv
+    >>> check_recipe((scanconv.line, (0, 0, 10**9, 1), ()), None)
     Traceback (most recent call last):
     ...
     scanconv.render.budget.BudgetError: the table has about 1,000,000,001 rows; no format prints more than 2,000,000 (a minute of output)
     """
     import inspect
 
-    from . import _api
     from .render.budget import check_rows_in_memory, check_work
 
-    name, args, kwargs = recipe
+    call, args, kwargs = recipe
     try:
-        bound = inspect.signature(getattr(_api, name)).bind(*args, **dict(kwargs))
+        bound = inspect.signature(call).bind(*args, **dict(kwargs))
     except TypeError:
         return  # the call itself raises it
-    work = check_work(name, bound.arguments, fmt)
+    work = check_work(call.__name__, bound.arguments, fmt)
     if in_memory and work is not None:
         check_rows_in_memory(work)
 
 
 def _rebuild(recipe: Recipe) -> Answer:
     """Unpickle: ask the API again."""
-    name, args, kwargs = recipe
-    return answering(name)(*args, **dict(kwargs))
+    fn, args, kwargs = recipe
+    return fn(*args, **dict(kwargs))

@@ -7,12 +7,15 @@ import os
 import subprocess
 import sys
 from collections import deque
-from collections.abc import Set
+from collections.abc import Callable, Set
 from contextlib import redirect_stderr, redirect_stdout
 from dataclasses import dataclass
+from typing import Any, TypeVar
 
 from scanconv.cli import main
 from scanconv.core.records import Pixel
+
+T = TypeVar("T")
 
 
 @dataclass
@@ -66,3 +69,59 @@ def connected(pixels: Set[Pixel]) -> bool:
                 seen.add(q)
                 todo.append(q)
     return len(seen) == len(pixels)
+
+
+HANG_SECONDS = 60
+"""A run that takes longer than this has escaped a work budget (every allowed input ends
+within a minute, docs/limits.md): the guard of :func:`run_limited`, not a speed test."""
+
+
+class Overtime(BaseException):
+    """Raised by :func:`run_limited`'s alarm inside a run: a ``BaseException``, so that no
+    ``except Exception`` in the code under test swallows it."""
+
+
+def run_limited(*args: str, seconds: float = HANG_SECONDS) -> Result:
+    """:func:`run` with a hard limit: a run still going after ``seconds`` fails the test with
+    its command line instead of hanging the suite. An alarm interrupts Python code; a
+    ``faulthandler`` watchdog at twice the limit ends the process (dumping every thread's
+    stack) if the run is stuck where the alarm cannot reach it."""
+    import faulthandler
+    import signal
+
+    def overtime(signum: int, frame: object) -> None:
+        raise Overtime
+
+    previous = signal.signal(signal.SIGALRM, overtime)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    faulthandler.dump_traceback_later(2 * seconds, exit=True)
+    try:
+        return run(*args)
+    except Overtime:
+        import pytest
+
+        pytest.fail(f"scanconv {' '.join(args)!r} ran over {seconds:g} s: a hole in a budget")
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        faulthandler.cancel_dump_traceback_later()
+        signal.signal(signal.SIGALRM, previous)
+
+
+def python_calls(fn: Callable[..., T], *args: Any) -> tuple[T, int]:
+    """``fn(*args)`` and the number of Python function calls it made: a measure of the work
+    done that, unlike a clock, does not depend on how busy the machine is (``refused before
+    any work`` is "in a few thousand calls", where computing the rows takes millions)."""
+    count = 0
+
+    def profile(frame: Any, event: str, arg: Any) -> None:
+        nonlocal count
+        if event == "call":
+            count += 1
+
+    previous = sys.getprofile()
+    sys.setprofile(profile)
+    try:
+        result = fn(*args)
+    finally:
+        sys.setprofile(previous)
+    return result, count

@@ -13,6 +13,8 @@ import pytest
 from .cli_vocabulary import ARGUMENTLESS, VOCABULARY, Argv, choices, commands, options
 from .helpers import assert_refused, run
 
+pytestmark = pytest.mark.slow
+
 COMMANDS = commands()
 
 #: A bad value put in place of a number (or formula), and what the message must show of it.

@@ -20,6 +20,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import scanconv
 from scanconv import _api as api
 from scanconv.answers.marking import mark
 from scanconv.answers.models import (
@@ -49,7 +50,8 @@ def check(name: str, *question: str, fmt: str = "json") -> dict:
 
 
 def marks(result: dict) -> list[str]:
-    return [row[4] for row in result["tables"][0]["rows"]]
+    """The marks of the scored steps (the given start row, shown, is left out)."""
+    return [row[4] for row in result["tables"][0]["rows"] if row[4] != "given (not scored)"]
 
 
 # --- the step models are the library's algorithms ---------------------------------------------
@@ -182,7 +184,7 @@ def test_scanconv_json_is_a_student_table(tmp_path):
     r = run(*LINE, "-f", "json")
     (tmp_path / "own.json").write_text(r.out)
     result = json.loads(run("check", str(tmp_path / "own.json"), "--", *LINE, "-f", "json").out)
-    assert (result["score"], result["out_of"]) == (9, 9)
+    assert (result["score"], result["out_of"]) == (8, 8)  # 8 steps, the start row not scored
 
 
 @pytest.mark.parametrize(
@@ -204,7 +206,7 @@ def test_a_malformed_table_is_one_clear_line(name, words):
 def test_other_bad_tables(tmp_path):
     cases = {
         "x-only.csv": ("k,p,x\n0,0,2\n", "no column for y"),
-        "two-p.csv": ("p,p_k,x,y\n0,0,2,2\n", "both read as p"),
+        "two-p.csv": ("p,p_k,x,y\n0,1,2,2\n", "both read as p"),
         "no-rows.csv": ("k,p,x,y\n", "no rows"),
         "bad-pair.csv": ('k,p,pixel\n0,0,"(2)"\n', "not a pixel"),
         "nan.csv": ("k,p,x,y\n0,nan,2,2\n", "not a finite number"),
@@ -251,15 +253,15 @@ def test_a_question_in_a_group_is_marked_by_position():
     ("name", "question", "wrong_row", "rows"),
     [
         # (2,2)-(10,6): row 4 writes p = -4 for -8; from it by hand: -4 < 0 E (6,4) p = 4,
-        # 4 >= 0 NE (7,5) p = -4, ... every later row follows from the slip
-        ("slip.csv", LINE, 4, 9),
+        # 4 >= 0 NE (7,5) p = -4, ... every later row follows from the slip (8 steps)
+        ("slip.csv", LINE, 4, 8),
         # ellipse 8 6, row k = 2 writes p1 = -40 for -44; then -40 + 2*36*3 + 36 = 212 SE (4,5),
         # 212 + 288 - 640 + 36 = -104, -104 + 360 + 36 = 292, 292 + 432 - 512 + 36 = 248, and
         # region 2 starts at (7, 3) with p2_0 = -23 as in the answer
         ("ellipse-slip.csv", ("ellipse", "8", "6"), 3, 10),
         # Bresenham circle r = 10, d = 1 for -1 at (2, 10): SE, 1 + 4(2 - 10) + 10 = -21 at
         # (3, 9); -21 + 12 + 6 = -3; -3 + 16 + 6 = 19; 19 + 4(5 - 9) + 10 = 13; 13 - 8 + 10 = 15
-        ("circle-bresenham-slip.csv", ("circle", "10", "--method", "bresenham"), 3, 8),
+        ("circle-bresenham-slip.csv", ("circle", "10", "--method", "bresenham"), 3, 7),
     ],
 )
 def test_one_slip_costs_one_row(name, question, wrong_row, rows):
@@ -275,10 +277,11 @@ def test_one_slip_costs_one_row(name, question, wrong_row, rows):
 
 def test_a_typo_not_carried_on_costs_one_row():
     # typo.csv is the right table with (6, 5) written for (6, 4) in row 5 and the rest right:
-    # the rows after it are the answer's own, so they are right (not judged from the typo)
+    # the rows after it are the answer's own, so they are right (not judged from the typo);
+    # step 4 is row k = 3's p and decision with the point (6, 5) of row k = 4
     result = check("typo.csv", *LINE)
-    assert (result["score"], result["out_of"]) == (8, 9)
-    assert marks(result) == ["right"] * 4 + ["wrong"] + ["right"] * 4
+    assert (result["score"], result["out_of"]) == (7, 8)
+    assert marks(result) == ["right"] * 3 + ["wrong"] + ["right"] * 4
 
 
 def test_the_first_error_is_explained_in_one_sentence():
@@ -288,30 +291,32 @@ def test_the_first_error_is_explained_in_one_sentence():
 
 def test_a_wrong_pixel_after_the_slip_is_still_wrong():
     rows = (DATA / "slip.csv").read_text().splitlines()
-    # from (7,5) p = -4 < 0 the next row is (8, 5): (8, 6) is a second error; the row after it,
-    # (9, 6) p = -4, does not follow from (8, 6) p = 4 (NE to (9, 7)): a third; the last,
-    # (10, 6) p = 4, follows from (9, 6) p = -4 (E, p + 8)
+    # step k is row k's p with row k + 1's point. Step 6: from (7,5) p = -4 < 0 the point is
+    # (8, 5): (8, 6) is a second error. Step 7: the next p, 4, follows from -4 by the rule's E
+    # (a slip of the pen in the point), but from (8, 6) p = 4 NE reaches (9, 7), not (9, 6):
+    # a third. Step 8: (10, 6) with p = 4 + ... from (9, 6) p = -4 (E) follows.
     rows[7] = "6,4,8,6"
     table = parse_text("\n".join(rows) + "\n", "two.csv")
     m = mark(table, api.line(2, 2, 10, 6))
-    assert [v.mark for v in m.verdicts][3:] == [
+    assert [v.mark for v in m.verdicts][4:] == [
         "wrong",
-        "right (follow-through)",
         "right (follow-through)",
         "wrong",
         "wrong",
         "right (follow-through)",
     ]
-    assert (m.right, m.total) == (6, 9)
+    assert (m.right, m.total) == (5, 8)
 
 
 def test_the_start_row_present_or_not():
-    assert (check("no-start-row.csv", *LINE)["score"], 8) == (8, 8)
-    assert check("right-notes.csv", *LINE)["score"] == 9
+    # the notes' layout without its start row: p0 is never written (step 1 wrong), the rest
+    # follows
+    assert check("no-start-row.csv", *LINE)["score"] == 7
+    assert check("right-notes.csv", *LINE)["score"] == 8
     # a table of (x_{k+1}, y_{k+1}) against the notes' layout of the question, and the reverse
     assert check("circle-textbook.csv", "circle", "10")["score"] == 7
     right = check("right-notes.csv", *LINE, "--layout", "textbook")
-    assert (right["score"], right["out_of"]) == (9, 9)
+    assert (right["score"], right["out_of"]) == (8, 8)
 
 
 def test_a_textbook_table_with_a_start_row_has_it_left_unmarked(tmp_path):
@@ -321,7 +326,9 @@ def test_a_textbook_table_with_a_start_row_has_it_left_unmarked(tmp_path):
     (tmp_path / "start.csv").write_text(text + "\n")
     result = json.loads(run("check", str(tmp_path / "start.csv"), "--", *LINE, "-f", "json").out)
     assert (result["score"], result["out_of"]) == (8, 8)
-    assert any("start pixel, not marked" in n for n in result["notes"])
+    assert any(
+        "start pixel (2, 2), given in the question: shown, not scored" in n for n in result["notes"]
+    )
 
 
 def test_the_ellipse_in_two_markdown_tables():
@@ -400,7 +407,7 @@ def test_a_convention_is_named_before_a_mistake_that_gives_the_same_table(tmp_pa
 
 def test_a_right_table_has_no_diagnosis():
     result = check("right-notes.csv", *LINE)
-    assert (result["score"], result["first_error"], result["diagnosis"]) == (9, "", "")
+    assert (result["score"], result["first_error"], result["diagnosis"]) == (8, "", "")
 
 
 # --- output -----------------------------------------------------------------------------------
@@ -474,9 +481,9 @@ def test_thirty_csvs_make_one_score_csv(tmp_path):
     assert [row["name"] for row in rows] == [neutral(n) for n in names]
     assert "'=HYPERLINK(1).csv" in [row["name"] for row in rows]
     scores = {row["name"]: (int(row["score"]), int(row["out_of"])) for row in rows}
-    assert scores["student00-slip.csv"] == (8, 9)
-    assert scores["student01-right-notes.csv"] == (9, 9)
-    assert scores["student04-no-start-row.csv"] == (8, 8)
+    assert scores["student00-slip.csv"] == (7, 8)
+    assert scores["student01-right-notes.csv"] == (8, 8)
+    assert scores["student04-no-start-row.csv"] == (7, 8)
     by_name = {row["name"]: row for row in rows}
     assert "tie = keep" in by_name["student02-tie-keep.csv"]["diagnosis"]
     assert by_name["student01-right-notes.csv"]["first_error"] == ""
@@ -487,7 +494,7 @@ def test_a_batch_goes_to_stdout_and_exits_0_whatever_the_marks(tmp_path):
     r = run("check", "--batch", str(tmp_path), "--", *LINE)
     assert r.code == 0
     assert r.out.splitlines()[0] == "name,score,out_of,first_error,diagnosis"
-    assert r.out.splitlines()[1].startswith("a.csv,0,9,")
+    assert r.out.splitlines()[1].startswith("a.csv,0,8,")
 
 
 def test_an_unreadable_file_stops_the_batch_with_its_name_and_line(tmp_path):
@@ -529,9 +536,9 @@ def test_read_table_refuses_a_file_beyond_the_size_limit():
 
 
 def test_the_api_marks_against_a_question_or_a_solution():
-    by_words = api.check(DATA / "slip.csv", ["line", "2", "2", "10", "6"])
-    by_solution = api.check(DATA / "slip.csv", api.line(2, 2, 10, 6))
-    assert by_words.data["score"] == by_solution.data["score"] == 8
+    by_words = scanconv.check(DATA / "slip.csv", ["line", "2", "2", "10", "6"])
+    by_solution = scanconv.check(DATA / "slip.csv", api.line(2, 2, 10, 6))
+    assert by_words.data["score"] == by_solution.data["score"] == 7
     assert by_solution.data["first_error"] == by_words.data["first_error"]
 
 
@@ -584,5 +591,6 @@ def test_any_table_is_marked_or_refused_in_one_line(text, question):
         assert str(err).startswith("f.csv") and "\n" not in str(err)
         return
     m = mark(table, question)
-    assert 0 <= m.right <= m.total == len(m.verdicts)
+    scored = [v for v in m.verdicts if v.row > 0]
+    assert 0 <= m.right <= m.total <= len(scored)
     assert (m.first_error == "") == (m.right == m.total)

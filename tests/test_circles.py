@@ -120,6 +120,7 @@ def test_pixels_are_symmetric_about_the_centre_and_unique(method, rounding, r, x
     assert (min(xs), min(ys), max(xs), max(ys)) == sol.bbox
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("method", "rounding"), VARIANTS)
 def test_the_whole_circle_is_closed_without_gaps(method, rounding):
     """Including at 45°, where an octant that stops short leaves its mirror image 2 away."""
@@ -168,6 +169,7 @@ def test_pixel_order_is_the_documented_one():
 # --- midpoint against independent definitions -------------------------------------------------
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("r", range(0, 201))
 def test_midpoint_equals_bresenham_and_the_nearest_pixel_definition(r):
     mid = set(pixel_list("midpoint", r))
@@ -176,6 +178,7 @@ def test_midpoint_equals_bresenham_and_the_nearest_pixel_definition(r):
     assert mid == set(pixel_list("polynomial", r))  # column rounding, octant closed at 45°
 
 
+@pytest.mark.slow
 @given(r=st.integers(min_value=200, max_value=5000))
 @settings(deadline=None, max_examples=60)
 def test_midpoint_equals_bresenham_for_large_radii(r):
@@ -183,6 +186,7 @@ def test_midpoint_equals_bresenham_for_large_radii(r):
     assert mid == set(pixel_list("bresenham", r)) == nearest_rows(r)
 
 
+@pytest.mark.slow
 @given(r=st.integers(min_value=0, max_value=2000))
 @settings(deadline=None, max_examples=80)
 def test_midpoint_equals_skimage_bresenham(r):
@@ -393,6 +397,7 @@ def test_grid_too_large_is_noted_and_the_table_still_printed():
     assert "(1, 60)" in r.out and "(-60, 0)" in r.out and "```text" not in r.out
 
 
+@pytest.mark.slow
 def test_a_huge_radius_streams_its_table():
     """r = 10^6 has 707,107 rows: the first ones arrive at once, nothing is built up first."""
     sol = circle_solution("midpoint", 10**6)

@@ -82,7 +82,8 @@ def test_every_format_and_algorithm(fmt, algo):
         assert [tuple(s["pixel"]) for s in doc["steps"]] == steps
     elif fmt == "csv":
         header, *rows = list(csv.reader(io.StringIO(r.out)))
-        x, y = header.index("x"), header.index("y")  # the first x and y: the pixel's
+        px, py = ("plot_x", "plot_y") if "plot_x" in header else ("x", "y")  # the pixel's
+        x, y = header.index(px), header.index(py)
         assert [(int(row[x]), int(row[y])) for row in rows] == steps
         assert pixels[len(pixels) - len(rows) :] == steps  # every row's pixel is plotted
     else:
@@ -304,7 +305,7 @@ def test_python_dash_m_and_version():
     assert run_process("line", "--help").out.startswith("Usage: scanconv line")
 
 
-@pytest.mark.parametrize("fmt", FORMATS)
+@pytest.mark.parametrize("fmt", (*FORMATS, "html"))
 def test_typer_cli_runner_every_format(fmt):
     from typer.testing import CliRunner
 

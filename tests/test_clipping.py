@@ -60,6 +60,7 @@ def on_segment(q, a, b):
 # --- properties -------------------------------------------------------------------------------
 
 
+@pytest.mark.slow
 @settings(max_examples=400, deadline=None)
 @given(point, point, windows())
 def test_cohen_sutherland_and_liang_barsky_agree_exactly(p1, p2, w):
@@ -69,6 +70,7 @@ def test_cohen_sutherland_and_liang_barsky_agree_exactly(p1, p2, w):
     assert len(cs.iterations) <= 4
 
 
+@pytest.mark.slow
 @settings(max_examples=400, deadline=None)
 @given(point, point, windows())
 def test_a_clipped_segment_is_inside_the_window_and_on_the_line(p1, p2, w):
@@ -88,6 +90,7 @@ def test_a_clipped_segment_is_inside_the_window_and_on_the_line(p1, p2, w):
         assert r.segment[1] == p2
 
 
+@pytest.mark.slow
 @settings(max_examples=300, deadline=None)
 @given(point, point, windows())
 def test_region_codes_follow_the_tbrl_bits(p, _q, w):
@@ -156,6 +159,7 @@ def intersection_area(poly, w):
     return abs(polygon_area(h)) if len(h) >= 3 else 0
 
 
+@pytest.mark.slow
 @settings(max_examples=250, deadline=None)
 @given(st.lists(point, min_size=3, max_size=9), windows())
 def test_sutherland_hodgman_of_a_convex_polygon_is_the_intersection(points, w):
@@ -170,6 +174,7 @@ def test_sutherland_hodgman_of_a_convex_polygon_is_the_intersection(points, w):
         assert not overlapping_edges(out, w)
 
 
+@pytest.mark.slow
 @settings(max_examples=200, deadline=None)
 @given(st.lists(point, min_size=3, max_size=9), windows())
 def test_sutherland_hodgman_keeps_a_polygon_inside_the_window(points, w):

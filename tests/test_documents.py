@@ -33,6 +33,8 @@ from scanconv.render import grid as gridmod
 from .cli_vocabulary import DOCUMENTS
 from .helpers import run
 
+pytestmark = pytest.mark.external  # pdflatex, pandoc (external tests are slow too: conftest)
+
 COMMANDS = set(typer.main.get_command(app).commands)  # type: ignore[attr-defined]
 
 #: One answer of each kind, by its CLI arguments (kinds whose command is missing are left out).

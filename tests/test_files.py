@@ -21,6 +21,8 @@ import pytest
 from .cli_vocabulary import VOCABULARY, commands, file_options
 from .helpers import run
 
+pytestmark = pytest.mark.slow
+
 WRITERS = [
     (path, option)
     for path, command in commands()

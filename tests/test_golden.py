@@ -119,8 +119,9 @@ def test_golden_shows_the_json_answers_pixels(path: Path, monkeypatch: pytest.Mo
         assert json.loads(expected) == answer
     elif path.suffix == ".csv":
         header, *rows = [r.split(",") for r in expected.splitlines()]
-        if "x" in header and "y" in header and "k" in header:
-            ix, iy = header.index("x"), header.index("y")
+        px, py = ("plot_x", "plot_y") if "plot_x" in header else ("x", "y")
+        if px in header and py in header and "k" in header:
+            ix, iy = header.index(px), header.index(py)
             assert [(int(r[ix]), int(r[iy])) for r in rows] == steps
     else:
         shown = shown_pixels(expected)

@@ -344,12 +344,9 @@ def test_a_long_answer_is_capped_and_says_so(monkeypatch):
     assert max(data["pos"]) == 10  # the later pixels light at the last step
 
 
-def test_the_page_for_a_large_circle_is_built_quickly():
-    import time
-
-    t = time.perf_counter()
+def test_the_page_for_a_large_circle_holds_every_step():
+    """(How long it takes to build is measured by benchmarks/bench_html.py, not asserted.)"""
     page = page_of("circle", "1000")
-    assert time.perf_counter() - t < 10
     assert data_of(page)["n"] == len(json_answer("circle", "1000")["steps"])
 
 

@@ -1,10 +1,11 @@
 """docs/limits.md agrees with the code, and every limit is enforced at once and at its edge.
 
 For each documented limit: the number in the table is the constant in the code; an input just
-beyond it is refused with exit 2 and one line naming the limit, within a second, with little
-memory and without reaching numpy's array constructors; an input exactly at it is accepted.
-Every limit-like constant in ``scanconv/`` must be in the table. Finally every command, given
-its largest accepted input, starts answering (or refuses) within seconds and within 2 GiB.
+beyond it is refused with exit 2 and one line naming the limit, before the work (tens of
+thousands of Python calls at most), with little memory and without reaching numpy's array
+constructors; an input exactly at it is accepted. Every limit-like constant in ``scanconv/`` must be in the table.
+Finally every command, given its largest accepted input, starts answering (or refuses) within
+2 GiB, under a generous guard against a hang.
 """
 
 from __future__ import annotations
@@ -18,7 +19,6 @@ import select
 import subprocess
 import sys
 import tempfile
-import time
 import tracemalloc
 from fractions import Fraction
 from pathlib import Path
@@ -29,7 +29,9 @@ import pytest
 import scanconv
 from scanconv.core.expr import parse_exact
 
-from .helpers import assert_refused, run
+from .helpers import HANG_SECONDS, assert_refused, python_calls, run
+
+pytestmark = pytest.mark.slow
 
 ROOT = Path(__file__).resolve().parent.parent
 DOC = (ROOT / "docs" / "limits.md").read_text(encoding="utf-8")
@@ -52,8 +54,10 @@ NOT_INPUT_LIMITS = {
 
 SHEETS = ROOT / "tests" / "data" / "sheet"  # question files beyond the sheet's limits
 BIG_SHEET = Path(tempfile.gettempdir()) / "scanconv-test-sheet-over-1e6-bytes.txt"
-if not BIG_SHEET.exists() or BIG_SHEET.stat().st_size <= 10**6:
-    BIG_SHEET.write_text("# a comment line to pad the file\n" * 31_300, encoding="utf-8")
+if not BIG_SHEET.exists() or BIG_SHEET.stat().st_size <= 10**6:  # whole or not at all: the
+    _part = BIG_SHEET.with_name(f"{BIG_SHEET.name}.{os.getpid()}")  # parallel workers share it
+    _part.write_text("# a comment line to pad the file\n" * 31_300, encoding="utf-8")
+    os.replace(_part, BIG_SHEET)
 
 CHECK = ROOT / "tests" / "data" / "check"  # student tables for scanconv check
 POINTS_101 = [str(i % 7) for i in range(202)]
@@ -63,8 +67,8 @@ POINTS_12 = [str(i % 5) for i in range(24)]
 BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "answers.color.MAX_BITS": [(["color", "rgb", "1", "2", "3", "--bits", "17"], "1..16")],
     "answers.practice.MAX_COUNT": [(["practice", "--count", "201", "--seed", "1"], "200")],
-    "cli.sheet.MAX_FILE_BYTES": [(["sheet", str(BIG_SHEET)], "1,000,000 bytes")],
-    "cli.sheet.MAX_QUESTIONS": [(["sheet", str(SHEETS / "too-many-questions.txt")], "1000")],
+    "questions.files.MAX_FILE_BYTES": [(["sheet", str(BIG_SHEET)], "1,000,000 bytes")],
+    "questions.files.MAX_QUESTIONS": [(["sheet", str(SHEETS / "too-many-questions.txt")], "1000")],
     "core.numeric.COORD_LIMIT": [
         (["line", "0", "0", "1000000001", "0"], "1e+09"),
         (["circle", "1000000001"], "1e+09"),
@@ -278,17 +282,21 @@ def test_just_beyond_the_limit_is_refused_at_once(name, args, word, monkeypatch,
         for fn in ALLOCATORS:
             monkeypatch.setattr(np, fn, allocation_reached)
     tracemalloc.start()
-    start = time.perf_counter()
     try:
-        r = run(*args)
-        elapsed = time.perf_counter() - start
+        r, calls = python_calls(run, *args)
         peak = tracemalloc.get_traced_memory()[1]
     finally:
         tracemalloc.stop()
     assert_refused(r, word)
-    assert elapsed < 1.0, f"refused after {elapsed:.2f} s"
+    assert calls < REFUSAL_CALLS, f"{calls} Python calls before the refusal"
     assert peak < 16 * 2**20, f"{peak / 2**20:.1f} MiB allocated before the refusal"
     assert not list(tmp_path.iterdir()), "a file was written for a refused input"
+
+
+REFUSAL_CALLS = 200_000
+""""At once" is before the work, counted rather than timed (a busy machine must not fail a
+test): a refusal makes a few thousand Python calls (``check`` counts a question's rows up to
+its 10,000-row limit: about 60,000), where the work it refuses makes millions."""
 
 
 def test_the_grid_limit_leaves_the_grid_out_with_a_note():
@@ -339,7 +347,8 @@ def test_exactly_at_each_limit_is_accepted():
 MAX_COORD = "1000000000"
 POINTS_100 = [str((i * 7919) % 1000 if i % 2 else (i * 104729) % 997) for i in range(200)]
 
-#: The largest inputs each command accepts. Each must start answering, or refuse, quickly.
+#: The largest inputs each command accepts. Each must start answering, or refuse, before a
+#: generous hang guard (a minute: every allowed table ends within one, docs/limits.md).
 LARGEST = [
     ["line", "0", "0", MAX_COORD, "1", "-f", "csv"],
     ["line", "0", "0", MAX_COORD, MAX_COORD, "-f", "markdown", "--algo", "dda"],
@@ -370,7 +379,9 @@ def _limit_memory() -> None:  # pragma: no cover - runs in the child
 
 @pytest.mark.parametrize("args", LARGEST, ids=lambda a: " ".join(a)[:60])
 def test_the_largest_accepted_input_answers_at_once_in_bounded_memory(args):
-    """A refusal within 10 s, or the first output within 10 s, within 2 GiB; no traceback."""
+    """A refusal, or the start of the answer, within 2 GiB;
+    no traceback. The minute is a guard against a hang, not a speed test (benchmarks/
+    bench_limits.py times these)."""
     proc = subprocess.Popen(
         [sys.executable, "-m", "scanconv", *args],
         stdout=subprocess.PIPE,
@@ -379,7 +390,7 @@ def test_the_largest_accepted_input_answers_at_once_in_bounded_memory(args):
         env={**os.environ, "PYTHONDONTWRITEBYTECODE": "1"},
     )
     assert proc.stdout is not None
-    ready, _, _ = select.select([proc.stdout], [], [], 10)
+    ready, _, _ = select.select([proc.stdout], [], [], HANG_SECONDS)
     first = os.read(proc.stdout.fileno(), 65536) if ready else b""
     if proc.poll() is None:
         proc.kill()
@@ -389,7 +400,7 @@ def test_the_largest_accepted_input_answers_at_once_in_bounded_memory(args):
     if proc.returncode == 2:
         assert first == b"" and stderr.count("\n") == 1, stderr
         return
-    assert first, f"no output within 10 s (exit {proc.returncode}): {stderr[-500:]}"
+    assert first, f"no output after {HANG_SECONDS} s (exit {proc.returncode}): {stderr[-500:]}"
 
 
 # --- the per-format work budgets ----------------------------------------------------------------

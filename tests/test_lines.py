@@ -187,7 +187,7 @@ def test_bresenham_refuses_fractions():
 
 def test_unknown_algorithm():
     with pytest.raises(ValueError, match="unknown line algorithm"):
-        line_solution("midpoint", 0, 0, 1, 1)
+        line_solution("spiral", 0, 0, 1, 1)
 
 
 @settings(max_examples=50)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import errno
 import signal
 import stat
+import sys
 from pathlib import Path
 
 import pytest
@@ -77,7 +78,7 @@ def test_rich_closed_pipe_raises_instead_of_exiting_1():
         cli._broken_pipe()
 
 
-def test_sigterm_handler_is_installed_during_a_run_and_restored(monkeypatch):
+def test_sigterm_handler_is_installed_during_a_program_run_and_restored(monkeypatch):
     seen = []
 
     def render(solution, fmt, options=None):
@@ -86,8 +87,10 @@ def test_sigterm_handler_is_installed_during_a_run_and_restored(monkeypatch):
 
     before = signal.getsignal(signal.SIGTERM)
     monkeypatch.setattr(cli, "render", render)
-    assert run(*LINE).code == 0
-    assert seen == [entry._terminate]
+    monkeypatch.setattr(sys, "argv", ["scanconv", *LINE])
+    assert entry.main() == 0  # as the program: the arguments from sys.argv
+    assert run(*LINE).code == 0  # in-process (a test, a notebook): the caller's handlers stay
+    assert seen == [entry._terminate, before]
     assert signal.getsignal(signal.SIGTERM) is before
     with pytest.raises(SystemExit) as info:
         entry._terminate(signal.SIGTERM, None)

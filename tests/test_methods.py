@@ -9,7 +9,7 @@ from scanconv.algorithms.choices import LineAlgorithm
 from scanconv.algorithms.circle_choices import CircleMethod
 from scanconv.algorithms.conventions import KNOBS
 from scanconv.algorithms.process_choices import AAMethod, LineClipMethod, PolygonClipMethod
-from scanconv.answers.methods import METHODS, PIECES, Method, method, methods_of
+from scanconv.answers.methods import DOCUMENTS, METHODS, PIECES, Method, method, methods_of
 from scanconv.core.checks import InputError
 
 RECORDS = sorted(METHODS.values(), key=lambda m: m.key)
@@ -99,3 +99,12 @@ def test_line_answers_dispatch_through_the_records(monkeypatch: pytest.MonkeyPat
 def test_line_titles_are_the_notes_names() -> None:
     assert method("line", "bresenham").title == "Bresenham's line algorithm"
     assert "p0 = 1 - r" in method("circle", "midpoint").title
+
+
+def test_every_command_has_method_records_or_is_a_document() -> None:
+    from scanconv.cli.application import TOPIC_OF
+
+    for command in TOPIC_OF:
+        has = bool(methods_of(command))
+        assert has != (command in DOCUMENTS), command
+    assert set(DOCUMENTS) <= set(TOPIC_OF)

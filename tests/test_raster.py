@@ -16,10 +16,12 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from scanconv import raster
+from scanconv.algorithms import raster  # the module itself: its constants are patched
 from scanconv.answers.circle import circle_solution
 from scanconv.answers.ellipse import ellipse_solution
 from scanconv.answers.line import line_solution
+
+pytestmark = pytest.mark.slow
 
 coord = st.integers(min_value=-60, max_value=60)
 far = st.integers(min_value=-(10**9), max_value=10**9)

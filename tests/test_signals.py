@@ -27,9 +27,11 @@ import pytest
 
 from scanconv.render import Format
 
+from .helpers import HANG_SECONDS
+
 pytestmark = pytest.mark.slow
 
-FORMATS = [f.value for f in Format if f is not Format.auto]  # html too, once it exists
+FORMATS = [f.value for f in Format if f is not Format.auto]
 LONG = ["line", "0", "0", "1999999", "1", "--format", "csv"]  # 7 to 30 s of csv (ALL_ROWS)
 OLD = "the previous answer\n"
 _SCANCONV = (sys.executable, "-m", "scanconv")
@@ -49,11 +51,13 @@ def _temporaries(directory: Path) -> list[Path]:
     return [p for p in directory.iterdir() if p.name.endswith(".tmp")]
 
 
-def _wait_for(condition, timeout: float = 20.0) -> None:
-    end = time.monotonic() + timeout
+def _wait_for(condition, what: str) -> None:
+    """Poll until ``condition()``; a guard against a hang (not a speed test) fails after
+    :data:`tests.helpers.HANG_SECONDS` with ``what`` was awaited."""
+    end = time.monotonic() + HANG_SECONDS
     while not condition():
         if time.monotonic() > end:
-            raise AssertionError("timed out")
+            raise AssertionError(f"still waiting after {HANG_SECONDS} s for {what}")
         time.sleep(0.01)
 
 
@@ -78,7 +82,7 @@ def test_a_signal_during_a_file_write_keeps_the_old_file_and_leaves_no_temporary
     target = tmp_path / "answer.csv"
     target.write_text(OLD)
     proc = _start(*LONG, "--output", str(target))
-    _wait_for(lambda: bool(_temporaries(tmp_path)))  # the write is under way
+    _wait_for(lambda: bool(_temporaries(tmp_path)), "the temporary file")  # the write is under way
     time.sleep(0.3)
     for sig in signals:
         proc.send_signal(sig)

@@ -7,12 +7,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from . import NumberLike, _number
+from ..display import answers
+from .values import NumberLike, _number
 
 if TYPE_CHECKING:
     from ..core.records import Solution
 
 
+@answers
 def color(
     model: str,
     *values: NumberLike,
@@ -42,6 +44,7 @@ def color(
     )
 
 
+@answers
 def theory(topic: str) -> Solution:
     """The model answer to the theory question ``topic`` (``scanconv theory``); the names
     are those of ``scanconv theory --list``.

@@ -19,6 +19,8 @@ class LineAlgorithm(str, Enum):
     basic = "basic"
     wu = "wu"
     """Xiaolin Wu's anti-aliased line (the table of :mod:`scanconv.answers.antialias`)."""
+    midpoint = "midpoint"
+    """The midpoint line algorithm: d = F(M), Bresenham's p with its own derivation."""
 
 
 class Rounding(str, Enum):

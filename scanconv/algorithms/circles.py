@@ -32,8 +32,9 @@ from fractions import Fraction
 
 from ..core.numeric import Number
 from ..core.records import Move, Pixel, Step, new_step
+from .choices import Rounding
 from .circle_choices import CircleMethod
-from .conventions import ROUNDINGS, Rounding, rounder
+from .conventions import ROUNDINGS, rounder
 
 __all__ = ["ROUNDINGS", "Rounding", "rounder"]
 
@@ -110,7 +111,7 @@ def midpoint(
         p, k = q, k + 1
 
 
-def bresenham(r: int, tie: str = "step") -> Iterator[Step]:
+def bresenham(r: int, tie: str = "step", xstep: str = "last") -> Iterator[Step]:
     """Bresenham's circle algorithm with ``d0 = 3 - 2r``, first octant from ``(0, r)``.
 
     Yields one step per plotted point; ``Step.pixel`` is the point ``(x_k, y_k)`` plotted at
@@ -139,6 +140,9 @@ def bresenham(r: int, tie: str = "step") -> Iterator[Step]:
     3 7 SE (3, 4)
     """
     # bresenham(5) -> d: -7 -1 9 7 ; points (0,5) (1,5) (2,5) (3,4)
+    if xstep == "first":
+        yield from _bresenham_x_first(r, tie)
+        return
     x, y, d, k = 0, r, 3 - 2 * r, 0
     t = 1 if tie == "keep" else 0  # tie "keep": d <= 0 chooses E
     while x <= y:
@@ -148,6 +152,27 @@ def bresenham(r: int, tie: str = "step") -> Iterator[Step]:
             e, move, ny = d + 4 * (x - y) + 10, Move.SE, y - 1
         yield new_step(Step, (k, d, move, (x, y), ()))
         x, y, d, k = x + 1, ny, e, k + 1
+
+
+def _bresenham_x_first(r: int, tie: str) -> Iterator[Step]:
+    """The widely copied form of Bresenham's circle: ``x += 1`` (and ``y -= 1``) first, then
+    ``d += 4x + 6`` or ``d += 4(x - y) + 10`` with the *new* x and y. It is not the same
+    algorithm: the increments are 4 larger, so the decisions and the points can differ.
+
+    >>> [s.p for s in _bresenham_x_first(10, "step")][:4]
+    [-17, -7, 7, -7]
+    """
+    x, y, d, k = 0, r, 3 - 2 * r, 0
+    t = 1 if tie == "keep" else 0
+    while x <= y:
+        if d < t:
+            nx, ny, move = x + 1, y, Move.E
+            e = d + 4 * nx + 6
+        else:
+            nx, ny, move = x + 1, y - 1, Move.SE
+            e = d + 4 * (nx - ny) + 10
+        yield new_step(Step, (k, d, move, (x, y), ()))
+        x, y, d, k = nx, ny, e, k + 1
 
 
 def general(r: int, tie: str = "step", loop: str = "strict") -> Iterator[Step]:

@@ -122,6 +122,7 @@ KNOBS: dict[str, Knob] = {
             "circle/general",
             "circle/bresenham",
             "ellipse/midpoint",
+            "line/midpoint",
         ),
     ),
     "p0": Knob(
@@ -153,6 +154,24 @@ KNOBS: dict[str, Knob] = {
         "swap",
         ("line/bresenham", "line/dda"),
         (("line/dda", "given"),),
+    ),
+    "scale": Knob(
+        "scale",
+        {
+            "integer": "d = 2F(M): d_0 = 2dy - dx, integers only",
+            "half": "d = F(M): d_0 = dy - dx/2, in halves",
+        },
+        "integer",
+        ("line/midpoint",),
+    ),
+    "xstep": Knob(
+        "xstep",
+        {
+            "last": "d updated with the old x and y, then x += 1",
+            "first": "x += 1 first, d updated with the new x and y, as widely copied code does",
+        },
+        "last",
+        ("circle/bresenham",),
     ),
     "update": Knob(
         "update",
@@ -211,7 +230,7 @@ def resolve(
     >>> resolve("line", "dda", None, {"tie": "keep"})
     Traceback (most recent call last):
     ...
-    scanconv.core.checks.InputError: the tie convention applies to line bresenham, circle midpoint, circle general, circle bresenham, ellipse midpoint, not to line dda
+    scanconv.core.checks.InputError: the tie convention applies to line bresenham, circle midpoint, circle general, circle bresenham, ellipse midpoint, line midpoint, not to line dda
     """
     if convention is not None and convention not in PRESETS:
         raise InputError(

@@ -29,7 +29,7 @@ ed., section 3.17 (unweighted area sampling).
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from fractions import Fraction
 from itertools import pairwise
 
@@ -125,7 +125,9 @@ def _under(c: Number, h: Number, xa: Number, xb: Number) -> Fraction:
     return first + second
 
 
-def _trapezoids(vertices: Sequence[Point], rule: str, rows: bool):
+def _trapezoids(
+    vertices: Sequence[Point], rule: str, rows: bool
+) -> Iterator[tuple[Number, Number, tuple[Number, Number], tuple[Number, Number]]]:
     """``(y_a, y_b, left, right)`` trapezoids of the filled region: ``left`` and ``right`` are
     ``(x at y_a, x at y_b)``. With ``rows`` the bands also stop at every ``j + 1/2``."""
     edges, _ = edge_table(vertices)

@@ -217,7 +217,8 @@ def check_unit_t(t: Value) -> Value:
     """
     if not 0 <= t <= 1:
         raise InputError(f"t must lie in [0, 1] for a Bezier curve, got t = {_shown(t)}", "t")
-    return norm_value(t)
+    shown: Value = norm_value(t)
+    return shown
 
 
 def check_index(index: int, count: int) -> int:

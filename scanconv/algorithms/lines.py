@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 from fractions import Fraction
+from typing import NamedTuple
 
 from ..core.numeric import (
     Number,
@@ -132,7 +133,34 @@ def bresenham_from_p1(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> 
             yield Step(k, p, move, (x, y), (p := p + inc_step,))
 
 
-def orient_from_p1(x1: int, y1: int, x2: int, y2: int) -> tuple:
+class Walk(NamedTuple):
+    """A walk's major axis, its two differences and its two moves (:func:`orient_from_p1`)."""
+
+    steep: bool
+    dmaj: int
+    dmin: int
+    sign: int
+    stay: Move
+    move: Move
+
+
+class Octant(NamedTuple):
+    """A line's end points ordered so the major coordinate increases, and its moves
+    (:func:`orient`)."""
+
+    x1: int
+    y1: int
+    x2: int
+    y2: int
+    steep: bool
+    dmaj: int
+    dmin: int
+    sign: int
+    stay: Move
+    move: Move
+
+
+def orient_from_p1(x1: int, y1: int, x2: int, y2: int) -> Walk:
     """:func:`orient` for a walk from P1 with the major coordinate decreasing (no swap).
 
     Returns ``(steep, dmaj, dmin, s, stay, move)``: ``s`` the sign of the minor step toward P2,
@@ -146,9 +174,9 @@ def orient_from_p1(x1: int, y1: int, x2: int, y2: int) -> tuple:
     dmaj, dmin = (abs(dy), abs(dx)) if steep else (abs(dx), abs(dy))
     if steep:
         s = 1 if dx >= 0 else -1
-        return True, dmaj, dmin, s, Move.from_delta(0, -1), Move.from_delta(s, -1)
+        return Walk(True, dmaj, dmin, s, Move.from_delta(0, -1), Move.from_delta(s, -1))
     s = 1 if dy >= 0 else -1
-    return False, dmaj, dmin, s, Move.from_delta(-1, 0), Move.from_delta(-1, s)
+    return Walk(False, dmaj, dmin, s, Move.from_delta(-1, 0), Move.from_delta(-1, s))
 
 
 def bresenham_notes(
@@ -166,7 +194,7 @@ def bresenham_notes(
     3 -1 None (5, 3) None
     """
     o = orient(x1, y1, x2, y2)
-    pixel, k, p = (o[0], o[1]), 0, 2 * o[6] - o[5]
+    pixel, k, p = (o.x1, o.y1), 0, 2 * o.dmin - o.dmaj
     if start == "given":
         pixel = (x1, y1)
     for s in bresenham(x1, y1, x2, y2, tie, start):
@@ -175,7 +203,7 @@ def bresenham_notes(
     yield Step(k, p, None, pixel, (None,))
 
 
-def orient(x1: int, y1: int, x2: int, y2: int) -> tuple:
+def orient(x1: int, y1: int, x2: int, y2: int) -> Octant:
     """Swap the end points so the major coordinate increases; name the two moves.
 
     Returns ``(x1, y1, x2, y2, steep, dmaj, dmin, s, stay, move)`` where ``s`` is the sign of
@@ -190,9 +218,9 @@ def orient(x1: int, y1: int, x2: int, y2: int) -> tuple:
         x1, y1, x2, y2, dx, dy = x2, y2, x1, y1, -dx, -dy
     if steep:
         s = 1 if dx >= 0 else -1
-        return x1, y1, x2, y2, True, dy, abs(dx), s, Move.N, Move.from_delta(s, 1)
+        return Octant(x1, y1, x2, y2, True, dy, abs(dx), s, Move.N, Move.from_delta(s, 1))
     s = 1 if dy >= 0 else -1
-    return x1, y1, x2, y2, False, dx, abs(dy), s, Move.E, Move.from_delta(1, s)
+    return Octant(x1, y1, x2, y2, False, dx, abs(dy), s, Move.E, Move.from_delta(1, s))
 
 
 def dda(
@@ -307,4 +335,4 @@ def basic(
 
 
 ALGORITHMS = tuple(a.value for a in LineAlgorithm)
-"""The line algorithms' names: ``("bresenham", "dda", "basic")``."""
+"""The line algorithms' names: ``("bresenham", "dda", "basic", "wu")``."""

@@ -233,11 +233,13 @@ def spans_at(edges: Sequence[Edge], y: Number, rule: str) -> list[tuple[Number, 
     return _spans(entries, {e.idx: e for e in edges}, rule)
 
 
-def _spans(active: Sequence[Active], edges: dict[int, Edge], rule: str) -> list[tuple]:
+def _spans(
+    active: Sequence[Active], edges: dict[int, Edge], rule: str
+) -> list[tuple[Number, Number]]:
     """The filled spans of one scan line from its sorted active edges."""
     if rule == "even-odd":
         return [(active[i].x, active[i + 1].x) for i in range(0, len(active) - 1, 2)]
-    spans: list[tuple] = []
+    spans: list[tuple[Number, Number]] = []
     winding = 0
     start: Number = 0
     for a in active:

@@ -11,12 +11,15 @@ class LineClipMethod(str, Enum):
 
     cohen_sutherland = "cohen-sutherland"
     liang_barsky = "liang-barsky"
+    cyrus_beck = "cyrus-beck"
+    midpoint_subdivision = "midpoint-subdivision"
 
 
 class PolygonClipMethod(str, Enum):
-    """The polygon clipping methods (one, named for symmetry with the line methods)."""
+    """The polygon clipping methods."""
 
     sutherland_hodgman = "sutherland-hodgman"
+    weiler_atherton = "weiler-atherton"
 
 
 class AAMethod(str, Enum):

@@ -131,7 +131,7 @@ def _floor_affine(
         return np.arange(a, a + n * b, b, dtype=np.int64)
     if path == "object":
         ks = np.arange(n, dtype=np.int64).astype(object)
-        return ((a + b * ks) // c).astype(np.int64)  # type: ignore[no-any-return]
+        return ((a + b * ks) // c).astype(np.int64)
     block = min(BLOCK, n)
     out = np.empty(n, dtype=np.int64)
     ramp = np.arange(block, dtype=np.int64)

@@ -255,7 +255,8 @@ class _Exact:
         return cls(f, x0, dx, yt, dy, RELATIVE_ERROR * scale, EXACT_CHECK_WORK // f.size)
 
     def value(self, i: int, j: int) -> Fraction:
-        return self.f.exact(x=self.x0 + j * self.dx, y=self.yt + i * self.dy)
+        v: Fraction = self.f.exact(x=self.x0 + j * self.dx, y=self.yt + i * self.dy)
+        return v
 
     def extremes(
         self, blocks: Iterator[tuple[int, np.ndarray]], lo_f: float, hi_f: float

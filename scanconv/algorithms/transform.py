@@ -29,7 +29,7 @@ everything after that rounding is exact."""
 
 def matrix(rows: Iterable[Iterable[Scalar]]) -> Matrix:
     """A matrix with its entries simplified (radicals without roots become rationals)."""
-    return tuple(tuple(simplify(v) for v in r) for r in rows)  # type: ignore[return-value,misc]
+    return tuple(tuple(simplify(v) for v in r) for r in rows)  # type: ignore[misc]
 
 
 IDENTITY: Matrix = ((1, 0, 0), (0, 1, 0), (0, 0, 1))

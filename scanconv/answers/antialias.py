@@ -4,9 +4,9 @@ intensity table and a shaded picture)."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..algorithms import coverage as cov
 from ..algorithms.image_limits import check_levels
@@ -16,6 +16,7 @@ from ..core.checks import InputError, check_integer
 from ..core.numeric import Number, fmt_exact, fmt_short, normalize
 from ..core.records import (
     MAX_GRID_CELLS,
+    Column,
     Pixel,
     Quantity,
     ShadedMatrix,
@@ -65,30 +66,41 @@ def _bbox(pixels: Sequence[Pixel]) -> tuple[int, int, int, int]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8) -> Solution:
-    """Xiaolin Wu's anti-aliased line as a worked answer.
+class _WuWalk(NamedTuple):
+    """Wu's walk along the major coordinate ``a`` (the minor one ``b``), from (a1, b1) to
+    (a2, b2) with a increasing."""
 
-    >>> sol = wu_solution(0, 0, 8, 3)
-    >>> [str(q.value) for q in sol.derived[:3]]
-    ['8', '3', '3/8']
-    >>> [s.extra[4:] for s in sol.steps()][1]
-    (Fraction(5, 8), Fraction(3, 8), (4, 3))
-    """
-    ix1, iy1, ix2, iy2 = (
-        check_integer(v, n) for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2"))
-    )
-    L = check_levels(levels)
+    steep: bool
+    maj: str
+    mnr: str
+    lower: str
+    upper: str
+    a1: int
+    b1: int
+    a2: int
+    b2: int
+    swapped: bool
+
+
+def _wu_walk(ix1: int, iy1: int, ix2: int, iy2: int) -> _WuWalk:
     steep = is_steep(ix1, iy1, ix2, iy2)
     maj, mnr = ("y", "x") if steep else ("x", "y")
     lower, upper = ("left", "right") if steep else ("lower", "upper")
     (a1, b1), (a2, b2) = ((iy1, ix1), (iy2, ix2)) if steep else ((ix1, iy1), (ix2, iy2))
-    if a2 < a1:
+    swapped = a2 < a1
+    if swapped:
         a1, b1, a2, b2 = a2, b2, a1, b1
-    da, db = a2 - a1, b2 - b1
+    return _WuWalk(steep, maj, mnr, lower, upper, a1, b1, a2, b2, swapped)
+
+
+def _wu_derived(w: _WuWalk, levels: int) -> tuple[Quantity, ...]:
+    """Δ along both coordinates, the gradient, the minor coordinate and the split."""
+    maj, mnr, a1, b1 = w.maj, w.mnr, w.a1, w.b1
+    da, db = w.a2 - a1, w.b2 - b1
     grad = normalize(Fraction(db, da)) if da else 0
-    derived = [
-        worked(f"d{maj}", da, f"\\Delta {maj} = {a2} - {_p(a1)} = {da}"),
-        worked(f"d{mnr}", db, f"\\Delta {mnr} = {b2} - {_p(b1)} = {db}"),
+    return (
+        worked(f"d{maj}", da, f"\\Delta {maj} = {w.a2} - {_p(a1)} = {da}"),
+        worked(f"d{mnr}", db, f"\\Delta {mnr} = {w.b2} - {_p(b1)} = {db}"),
         worked(
             "gradient",
             grad,
@@ -102,22 +114,63 @@ def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8)
         ),
         rule(
             "split",
-            f"f = {mnr}_k - \\lfloor {mnr}_k \\rfloor,\\ I(\\text{{{lower}}}) = 1 - f,\\ "
-            f"I(\\text{{{upper}}}) = f",
+            f"f = {mnr}_k - \\lfloor {mnr}_k \\rfloor,\\ I(\\text{{{w.lower}}}) = 1 - f,\\ "
+            f"I(\\text{{{w.upper}}}) = f",
         ),
-        _level_rule(L),
-    ]
-    notes = [
+        _level_rule(levels),
+    )
+
+
+def _wu_notes(w: _WuWalk) -> tuple[str, ...]:
+    return (
+        *((f"End points swapped so that {w.maj} increases along the walk.",) if w.swapped else ()),
         "End points as in Wu (1991): integers, drawn at full intensity (f = 0 there, so the "
         "second pixel of the first and last step has intensity 0).",
         f"Each step's two intensities sum to 1: the line's ink is shared between the two "
-        f"pixels nearest to it along {mnr}, in proportion to its distance from each.",
+        f"pixels nearest to it along {w.mnr}, in proportion to its distance from each.",
         "Wu keeps f as an integer error term of n bits and draws from both ends at once; the "
         "table walks one way with f exact, and the levels are the intensities quantized.",
         SHADING,
-    ]
-    if (a1, b1) != ((iy1, ix1) if steep else (ix1, iy1)):
-        notes.insert(0, f"End points swapped so that {maj} increases along the walk.")
+    )
+
+
+def _wu_columns(w: _WuWalk) -> tuple[Column, ...]:
+    lower, upper = w.lower, w.upper
+    return (
+        heading("k", "k"),
+        heading(w.maj, f"{w.maj}_k"),
+        heading(w.mnr, f"{w.mnr}_k \\text{{ (exact)}}", 3),
+        heading("pixel_a", f"\\text{{{lower} pixel}}"),
+        heading("pixel_b", f"\\text{{{upper} pixel}}"),
+        heading("i_a", f"I(\\text{{{lower}}})", 3),
+        heading("i_b", f"I(\\text{{{upper}}})", 3),
+        heading("levels", f"\\text{{levels ({lower}, {upper})}}"),
+    )
+
+
+def _wu_shades(steps: Iterable[Step]) -> dict[Pixel, int]:
+    """Each pixel's level (a pixel both steps share keeps the larger)."""
+    values: dict[Pixel, int] = {}
+    for s in steps:
+        values[s.extra[2]] = s.extra[6][0]
+        values[s.extra[3]] = max(values.get(s.extra[3], 0), s.extra[6][1])
+    return values
+
+
+def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8) -> Solution:
+    """Xiaolin Wu's anti-aliased line as a worked answer.
+
+    >>> sol = wu_solution(0, 0, 8, 3)
+    >>> [str(q.value) for q in sol.derived[:3]]
+    ['8', '3', '3/8']
+    >>> [s.extra[4:] for s in sol.steps()][1]
+    (Fraction(5, 8), Fraction(3, 8), (4, 3))
+    """
+    ix1, iy1, ix2, iy2 = (
+        check_integer(v, n) for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2"))
+    )
+    L = check_levels(levels)
+    w = _wu_walk(ix1, iy1, ix2, iy2)
 
     def steps() -> Iterator[Step]:
         for s in wu(ix1, iy1, ix2, iy2):
@@ -132,11 +185,8 @@ def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8)
             if s.extra[5]:
                 yield s.extra[3]
 
-    plotted = list(pixels()) if da < 4 * MAX_GRID_CELLS else []
-    values = {}
-    for s in steps() if plotted else ():
-        values[s.extra[2]] = s.extra[6][0]
-        values[s.extra[3]] = max(values.get(s.extra[3], 0), s.extra[6][1])
+    plotted = list(pixels()) if w.a2 - w.a1 < 4 * MAX_GRID_CELLS else []
+    values = _wu_shades(steps()) if plotted else {}
     picture = _picture({p: v for p, v in values.items() if v}, L) if plotted else None
     xs, ys = (ix1, ix2), (iy1, iy2)
     return Solution(
@@ -148,22 +198,13 @@ def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8)
             worked("P2", (ix2, iy2), f"P_2 = ({ix2}, {iy2})"),
             worked("L", L, f"L = {L} \\text{{ levels}}"),
         ),
-        derived=tuple(derived),
-        columns=(
-            heading("k", "k"),
-            heading(maj, f"{maj}_k"),
-            heading(mnr, f"{mnr}_k \\text{{ (exact)}}", 3),
-            heading("pixel_a", f"\\text{{{lower} pixel}}"),
-            heading("pixel_b", f"\\text{{{upper} pixel}}"),
-            heading("i_a", f"I(\\text{{{lower}}})", 3),
-            heading("i_b", f"I(\\text{{{upper}}})", 3),
-            heading("levels", f"\\text{{levels ({lower}, {upper})}}"),
-        ),
-        extra_keys=(maj, mnr, "pixel_a", "pixel_b", "i_a", "i_b", "levels"),
+        derived=_wu_derived(w, L),
+        columns=_wu_columns(w),
+        extra_keys=(w.maj, w.mnr, "pixel_a", "pixel_b", "i_a", "i_b", "levels"),
         steps=steps,
         pixels=pixels,
-        bbox=(min(xs), min(ys), max(xs) + (1 if steep else 0), max(ys) + (0 if steep else 1)),
-        notes=tuple(notes),
+        bbox=(min(xs), min(ys), max(xs) + (1 if w.steep else 0), max(ys) + (0 if w.steep else 1)),
+        notes=_wu_notes(w),
         figures=(picture,) if picture else (),
         geometry={
             "line": (ix1, iy1, ix2, iy2),
@@ -175,6 +216,148 @@ def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8)
 def _p(v: Number) -> str:
     s = fmt_short(v)
     return f"({s})" if s.startswith("-") else s
+
+
+class _Region(NamedTuple):
+    """A shape to sample: its title, pixel values, exact area (if known) and its working."""
+
+    title: str
+    values: dict[Pixel, Any]
+    exact_total: Number | None
+    derived: list[Quantity]
+    notes: list[str]
+    geometry: dict[str, Any]
+
+
+def _line_params(params: Sequence[Number]) -> tuple[Number, Number, Number, Number]:
+    if len(params) != 4:
+        raise InputError(f"a line needs x1 y1 x2 y2, got {len(params)} numbers", "line")
+    x1, y1, x2, y2 = (normalize(v) for v in params)
+    return x1, y1, x2, y2
+
+
+def _coverage(
+    pts: Sequence[tuple[Number, Number]], method: str, n: int, rule_name: str
+) -> tuple[dict[Pixel, Any], Number | None]:
+    if method == "area":
+        return dict(cov.area_coverage(pts, rule_name)), cov.region_area(pts, rule_name)
+    return dict(cov.supersample_coverage(pts, n, rule_name)), None
+
+
+def _line_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
+    x1, y1, x2, y2 = _line_params(params)
+    pts = cov.line_strip(x1, y1, x2, y2)
+    minor = "y" if abs(Fraction(y2 - y1)) <= abs(Fraction(x2 - x1)) else "x"
+    strip = worked(
+        "strip",
+        pts,
+        "\\text{line one pixel wide along } "
+        + minor
+        + ": "
+        + ", ".join(f"({fmt_short(x)}, {fmt_short(y)})" for x, y in pts),
+    )
+    note = (
+        f"The line is the parallelogram one pixel thick along {minor}, from end point to "
+        "end point: exact, and each column along the line is covered by 1 in total."
+    )
+    title = f"line ({fmt_short(x1)}, {fmt_short(y1)}) to ({fmt_short(x2)}, {fmt_short(y2)})"
+    values, exact = _coverage(pts, method, n, rule_name)
+    return _Region(title, values, exact, [strip], [note], {"line": (x1, y1, x2, y2)})
+
+
+def _polygon_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
+    pts, _ = check_polygon(vertices_from_coords(params))
+    geometry = {
+        "polyline": [(float(x), float(y)) for x, y in (*pts, pts[0])],
+        "polyline_name": "polygon",
+    }
+    values, exact = _coverage(pts, method, n, rule_name)
+    title = f"polygon of {len(pts)} vertices ({rule_name} rule)"
+    return _Region(title, values, exact, [], [], geometry)
+
+
+def _circle_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
+    if len(params) not in (1, 3):
+        raise InputError(f"a circle needs r [xc yc], got {len(params)} numbers", "circle")
+    r = check_integer(params[0], "radius", negative=False)
+    xc, yc = (
+        (check_integer(v, n_) for v, n_ in zip(params[1:], ("xc", "yc"), strict=False))
+        if len(params) == 3
+        else (0, 0)
+    )
+    ring = rule(
+        "ring",
+        f"\\text{{ring: }} {r} - 1/2 \\le d \\le {r} + 1/2 \\text{{ around }} ({xc}, {yc})",
+    )
+    notes = []
+    values: dict[Pixel, Any]
+    if method == "area":
+        values = dict(cov.ring_area(r, xc, yc))
+        notes.append(
+            "A circle's covered areas involve arcsin: they are computed in floating point "
+            "from the closed form (the ring's total is π((r + 1/2)² - (r - 1/2)²) = 2π·r)."
+        )
+    else:
+        values = dict(cov.ring_supersample(r, n, xc, yc))
+    title = f"circle r = {r}, centre ({xc}, {yc}), one pixel wide"
+    return _Region(title, values, None, [ring], notes, {"circle": (xc, yc, r)})
+
+
+_REGIONS = {"line": _line_region, "polygon": _polygon_region, "circle": _circle_region}
+
+
+def _sampling_rules(method: str, n: int) -> list[Quantity]:
+    if method == "area":
+        return [
+            rule(
+                "intensity",
+                r"I(i, j) = \text{area of the shape inside } [i - 1/2, i + 1/2] \times [j - 1/2, j + 1/2]",
+            )
+        ]
+    return [
+        rule(
+            "samples",
+            f"{n} \\times {n} = {n * n} \\text{{ samples per pixel, at }} (i - 1/2 + (2a + 1)/{2 * n},\\ "
+            f"j - 1/2 + (2b + 1)/{2 * n}),\\ a, b = 0 \\ldots {n - 1}",
+        ),
+        rule("intensity", f"I = \\text{{samples inside}} / {n * n}"),
+    ]
+
+
+def _total(values: dict[Pixel, Any], exact_total: Number | None) -> Quantity:
+    """The sum of the intensities, against the shape's exact area when that is known."""
+    if any(isinstance(v, float) for v in values.values()):
+        total = sum(float(v) for v in values.values())
+        return worked("total", total, f"\\text{{sum of }} I \\approx {total:.3f}")
+    exact_sum = normalize(sum(values.values(), Fraction(0)))
+    text = f"\\text{{sum of }} I = {fmt_short(exact_sum)}"
+    if exact_total is not None:
+        if exact_sum == exact_total:
+            text += " = \\text{the exact area of the shape}"
+        else:
+            text += f" \\ne {fmt_short(exact_total)} = \\text{{the exact area of the shape}}"
+    return worked("total", exact_sum, text)
+
+
+def _intensity_table(
+    order: list[Pixel], values: dict[Pixel, Any], levels_of: dict[Pixel, int]
+) -> Table:
+    def rows() -> Iterator[tuple[Any, ...]]:
+        for p in order:
+            v = values[p]
+            exact = "-" if isinstance(v, float) else fmt_exact(v)
+            yield (p, v, exact, levels_of[p])
+
+    return Table(
+        "Intensities (pixels with I > 0, bottom row first)",
+        (
+            heading("pixel", r"\text{pixel } (i, j)"),
+            heading("intensity", "I", 3),
+            heading("exact", r"I \text{ (exact)}"),
+            heading("level", r"\text{level}"),
+        ),
+        rows,
+    )
 
 
 def antialias_solution(
@@ -198,124 +381,25 @@ def antialias_solution(
     if method == "wu":
         if shape != "line":
             raise InputError(f"wu draws lines only, not a {shape}", "method")
-        if len(params) != 4:
-            raise InputError(f"a line needs x1 y1 x2 y2, got {len(params)} numbers", "line")
-        x1, y1, x2, y2 = params
-        return wu_solution(x1, y1, x2, y2, levels=L)
+        return wu_solution(*_line_params(params), levels=L)
     if method not in ("area", "supersample"):
         raise InputError(f"unknown method {method!r} (choose from area, supersample, wu)", "method")
     n = cov.check_samples(samples) if method == "supersample" else 1
     check_rule(rule_name)
-    derived: list[Quantity] = []
-    notes: list[str] = []
-    exact_total: Number | None = None
-    geometry: dict[str, Any] = {}
-    if shape in ("line", "polygon"):
-        if shape == "line":
-            if len(params) != 4:
-                raise InputError(f"a line needs x1 y1 x2 y2, got {len(params)} numbers", "line")
-            x1, y1, x2, y2 = (normalize(v) for v in params)
-            pts = cov.line_strip(x1, y1, x2, y2)
-            minor = "y" if abs(Fraction(y2 - y1)) <= abs(Fraction(x2 - x1)) else "x"
-            derived.append(
-                worked(
-                    "strip",
-                    pts,
-                    "\\text{line one pixel wide along } "
-                    + minor
-                    + ": "
-                    + ", ".join(f"({fmt_short(x)}, {fmt_short(y)})" for x, y in pts),
-                )
-            )
-            notes.append(
-                f"The line is the parallelogram one pixel thick along {minor}, from end point to "
-                "end point: exact, and each column along the line is covered by 1 in total."
-            )
-            title = f"line ({fmt_short(x1)}, {fmt_short(y1)}) to ({fmt_short(x2)}, {fmt_short(y2)})"
-            geometry["line"] = (x1, y1, x2, y2)
-        else:
-            pts, _ = check_polygon(vertices_from_coords(params))
-            title = f"polygon of {len(pts)} vertices ({rule_name} rule)"
-            geometry["polyline"] = [(float(x), float(y)) for x, y in (*pts, pts[0])]
-            geometry["polyline_name"] = "polygon"
-        if method == "area":
-            values: dict[Pixel, Any] = dict(cov.area_coverage(pts, rule_name))
-            exact_total = cov.region_area(pts, rule_name)
-        else:
-            values = dict(cov.supersample_coverage(pts, n, rule_name))
-    elif shape == "circle":
-        if len(params) not in (1, 3):
-            raise InputError(f"a circle needs r [xc yc], got {len(params)} numbers", "circle")
-        r = check_integer(params[0], "radius", negative=False)
-        xc, yc = (
-            (check_integer(v, n_) for v, n_ in zip(params[1:], ("xc", "yc"), strict=False))
-            if len(params) == 3
-            else (0, 0)
-        )
-        title = f"circle r = {r}, centre ({xc}, {yc}), one pixel wide"
-        derived.append(
-            rule(
-                "ring",
-                f"\\text{{ring: }} {r} - 1/2 \\le d \\le {r} + 1/2 \\text{{ around }} ({xc}, {yc})",
-            )
-        )
-        geometry["circle"] = (xc, yc, r)
-        if method == "area":
-            values = dict(cov.ring_area(r, xc, yc))
-            notes.append(
-                "A circle's covered areas involve arcsin: they are computed in floating point "
-                "from the closed form (the ring's total is π((r + 1/2)² - (r - 1/2)²) = 2π·r)."
-            )
-        else:
-            values = dict(cov.ring_supersample(r, n, xc, yc))
-    else:
+    if shape not in _REGIONS:
         raise InputError(f"unknown shape {shape!r} (choose from line, circle, polygon)", "shape")
-    if method == "area":
-        derived.append(
-            rule(
-                "intensity",
-                r"I(i, j) = \text{area of the shape inside } [i - 1/2, i + 1/2] \times [j - 1/2, j + 1/2]",
-            )
+    region = _REGIONS[shape](params, method, n, rule_name)
+    values, title = region.values, region.title
+    derived = [*region.derived, *_sampling_rules(method, n)]
+    notes = list(region.notes)
+    if method != "area" and shape != "circle":
+        notes.append(
+            "A sample is inside by the scan-line fill's rules (half-open spans and edges)."
         )
-    else:
-        derived.append(
-            rule(
-                "samples",
-                f"{n} \\times {n} = {n * n} \\text{{ samples per pixel, at }} (i - 1/2 + (2a + 1)/{2 * n},\\ "
-                f"j - 1/2 + (2b + 1)/{2 * n}),\\ a, b = 0 \\ldots {n - 1}",
-            )
-        )
-        derived.append(rule("intensity", f"I = \\text{{samples inside}} / {n * n}"))
-        if shape != "circle":
-            notes.append(
-                "A sample is inside by the scan-line fill's rules (half-open spans and edges)."
-            )
-    total: Number | float = (
-        normalize(sum(values.values(), Fraction(0)))
-        if not any(isinstance(v, float) for v in values.values())
-        else sum(float(v) for v in values.values())
-    )
-    if isinstance(total, float):
-        derived.append(worked("total", total, f"\\text{{sum of }} I \\approx {total:.3f}"))
-    else:
-        text = f"\\text{{sum of }} I = {fmt_short(total)}"
-        if exact_total is not None:
-            if total == exact_total:
-                text += " = \\text{the exact area of the shape}"
-            else:
-                text += f" \\ne {fmt_short(exact_total)} = \\text{{the exact area of the shape}}"
-        derived.append(worked("total", total, text))
-    derived.append(_level_rule(L))
+    derived += [_total(values, region.exact_total), _level_rule(L)]
     notes.append(SHADING)
     levels_of = {p: cov.quantize(v, L) for p, v in values.items()}
     order = list(values)
-
-    def rows() -> Iterator[tuple[Any, ...]]:
-        for p in order:
-            v = values[p]
-            exact = "-" if isinstance(v, float) else fmt_exact(v)
-            yield (p, v, exact, levels_of[p])
-
     picture = _picture({p: lv for p, lv in levels_of.items() if lv}, L)
     name = "Unweighted area sampling" if method == "area" else f"Supersampling {n} x {n}"
     return Solution(
@@ -331,20 +415,9 @@ def antialias_solution(
         ),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=(
-            Table(
-                "Intensities (pixels with I > 0, bottom row first)",
-                (
-                    heading("pixel", r"\text{pixel } (i, j)"),
-                    heading("intensity", "I", 3),
-                    heading("exact", r"I \text{ (exact)}"),
-                    heading("level", r"\text{level}"),
-                ),
-                rows,
-            ),
-        ),
+        tables=(_intensity_table(order, values, levels_of),),
         pixels=lambda: iter(order),
         bbox=_bbox(order),
         figures=(picture,) if picture else (),
-        geometry={**geometry, "shades": levels_of, "levels": L, "numbering": "none"},
+        geometry={**region.geometry, "shades": levels_of, "levels": L, "numbering": "none"},
     )

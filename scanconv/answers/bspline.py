@@ -8,7 +8,6 @@ from fractions import Fraction
 from typing import Any, NamedTuple
 
 from ..algorithms.bspline import (
-    MAX_DEGREE,
     basis_dense,
     basis_levels,
     bspline,
@@ -18,6 +17,7 @@ from ..algorithms.bspline import (
     span,
 )
 from ..algorithms.curve_limits import (
+    MAX_DEGREE,
     Point,
     Value,
     check_exact,
@@ -39,7 +39,7 @@ from ..algorithms.sampling import (
 )
 from ..core.checks import InputError
 from ..core.numeric import Number
-from ..core.records import Quantity, Solution, Step, Table, heading, worked
+from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, worked
 from ._curve import (
     JOIN_NOTE,
     K_T_COLUMNS,
@@ -216,16 +216,29 @@ def bspline_solution(
     )
 
 
-def bspline_at_solution(
-    points: Sequence[Point], degree: int, knots: str | Sequence[Number], t: Value
-) -> Solution:
-    """One ``t``: the Cox–de Boor triangle, the non-zero ``N_{i,p}(t)``, their weighted sum.
+class _At(NamedTuple):
+    """A B-spline evaluated at one t: the Cox–de Boor levels, the span, the point."""
 
-    >>> from fractions import Fraction
-    >>> sol = bspline_at_solution([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, "open", Fraction(3, 2))
-    >>> sol.derived[-1].text
-    'C(1.5) = 0.125·(1, 2) + 0.75·(3, 3) + 0.125·(4, 0) = (2.875, 2.5) → pixel (3, 3)'
-    """
+    pts: tuple[Point, ...]
+    degree: int
+    u: tuple[Number, ...]
+    kind: str
+    t: Value
+    levels: list[list[Value]]
+    w: list[Value]
+    """The degree-p basis values N_(i,p)(t), i = 0 .. n."""
+    s: int
+    """The span: u_s <= t < u_(s+1)."""
+    point: tuple[Value, Value]
+    pixel: Pixel
+    nz: list[int]
+    """The i with N_(i,p)(t) non-zero."""
+    closed: bool
+    """t is the domain's right end (the last non-empty span is closed)."""
+
+
+def _evaluate(points: Sequence[Point], degree: int, knots: str | Sequence[Number], t: Value) -> _At:
+    """The B-spline at ``t``, every input checked (t inside the domain)."""
     pts, n, u, kind = bspline_setup(points, degree, knots)
     t0, t1 = domain(u, degree, n)
     if not t0 <= t <= t1:
@@ -239,21 +252,26 @@ def bspline_at_solution(
     w = levels[degree][: n + 1]
     point = combine(w, pts)
     check_exact((*w, *point), "the B-spline at this t")
-    pixel = curve_pixel(*point)
-    s = span(u, n, t)
-    ts = value_text(t)
     nz = [i for i in range(n + 1) if w[i] != 0]
-    closed = t == t1
+    return _At(
+        pts, degree, u, kind, t, levels, w, span(u, n, t), point, curve_pixel(*point), nz, t == t1
+    )
+
+
+def _at_derived(a: _At) -> tuple[Quantity, ...]:
+    """The knots and domain, the span of t, the non-zero basis values and the point."""
+    s, u, w, degree, nz = a.s, a.u, a.w, a.degree, a.nz
+    ts = value_text(a.t)
     span_tex = (
         f"t = {ts} \\text{{ lies in span }} s = {s}: \\; u_{{{s}}} = {value_text(u[s])} \\le t "
-        + ("\\le" if closed else "<")
+        + ("\\le" if a.closed else "<")
         + f" u_{{{s + 1}}} = {value_text(u[s + 1])}"
-        + (r" \quad (\text{right end: the last non-empty span is closed})" if closed else "")
+        + (r" \quad (\text{right end: the last non-empty span is closed})" if a.closed else "")
     )
     values = ", ".join(f"N_{{{i},{degree}}}({ts}) = {value_text(w[i])}" for i in nz)
-    terms = " + ".join(f"{value_text(w[i])} \\cdot {point_text(pts[i])}" for i in nz)
-    derived = [
-        *(q for q in _bspline_derived(pts, degree, u, kind) if q.key not in ("N0", "Np")),
+    terms = " + ".join(f"{value_text(w[i])} \\cdot {point_text(a.pts[i])}" for i in nz)
+    return (
+        *(q for q in _bspline_derived(a.pts, degree, u, a.kind) if q.key not in ("N0", "Np")),
         worked("span", s, span_tex),
         worked(
             "nonzero",
@@ -263,53 +281,77 @@ def bspline_at_solution(
         ),
         worked(
             "point",
-            point,
-            f"C({ts}) = {terms} = {point_text(point)} \\to \\text{{pixel }} {pixel}",
+            a.point,
+            f"C({ts}) = {terms} = {point_text(a.point)} \\to \\text{{pixel }} {a.pixel}",
         ),
-    ]
-    lo = max(s - degree, 0)
+    )
+
+
+def _triangle_table(a: _At) -> Table:
+    """The Cox–de Boor triangle: N_(i,d)(t) for d = 0 .. p, the span's functions only."""
+    s, levels = a.s, a.levels
+    lo = max(s - a.degree, 0)
     tri_cols = tuple(heading(f"N{i}", f"N_{{{i},d}}", 3) for i in range(lo, s + 1))
 
     def triangle() -> Iterator[tuple[Any, ...]]:
         for d, row in enumerate(levels):
             yield (d, *(row[i] if s - d <= i < len(row) else None for i in range(lo, s + 1)))
 
+    return Table(
+        f"Cox–de Boor at t = {value_text(a.t)}: N_(i,d) for d = 0 .. {a.degree} (only the "
+        "span's functions can be non-zero)",
+        (heading("d", "d"), *tri_cols),
+        triangle,
+    )
+
+
+def _weighted_table(a: _At) -> Table:
+    """The non-zero terms N_(i,p)(t) · P_i of the point."""
+    w, pts = a.w, a.pts
+
     def weighted() -> Iterator[tuple[Any, ...]]:
-        for i in nz:
+        for i in a.nz:
             yield (i, w[i], pts[i], (norm_value(w[i] * pts[i][0]), norm_value(w[i] * pts[i][1])))
 
-    marks = control_marks(pts)
+    return Table(
+        "Weighted sum of the non-zero terms",
+        (
+            heading("i", "i"),
+            heading("N", f"N_{{i,{a.degree}}}(t)", 3),
+            heading("point_P", "P_i"),
+            heading("point_NP", f"N_{{i,{a.degree}}}(t) \\cdot P_i"),
+        ),
+        weighted,
+    )
+
+
+def bspline_at_solution(
+    points: Sequence[Point], degree: int, knots: str | Sequence[Number], t: Value
+) -> Solution:
+    """One ``t``: the Cox–de Boor triangle, the non-zero ``N_{i,p}(t)``, their weighted sum.
+
+    >>> from fractions import Fraction
+    >>> sol = bspline_at_solution([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, "open", Fraction(3, 2))
+    >>> sol.derived[-1].text
+    'C(1.5) = 0.125·(1, 2) + 0.75·(3, 3) + 0.125·(4, 0) = (2.875, 2.5) → pixel (3, 3)'
+    """
+    a = _evaluate(points, degree, knots, t)
+    ts = value_text(a.t)
+    marks = control_marks(a.pts)
     return Solution(
         primitive="curve",
         algorithm="bspline-at",
-        title=f"B-spline of degree {degree} at t = {ts}: knots {knot_text(u)}",
-        given=(*given_points(pts), worked("t", t, f"t = {ts}")),
-        derived=tuple(derived),
-        tables=(
-            Table(
-                f"Cox–de Boor at t = {ts}: N_(i,d) for d = 0 .. {degree} (only the span's "
-                "functions can be non-zero)",
-                (heading("d", "d"), *tri_cols),
-                triangle,
-            ),
-            Table(
-                "Weighted sum of the non-zero terms",
-                (
-                    heading("i", "i"),
-                    heading("N", f"N_{{i,{degree}}}(t)", 3),
-                    heading("point_P", "P_i"),
-                    heading("point_NP", f"N_{{i,{degree}}}(t) \\cdot P_i"),
-                ),
-                weighted,
-            ),
-        ),
-        pixels=lambda: iter((pixel,)),
-        bbox=bbox((*marks, pixel)),
+        title=f"B-spline of degree {degree} at t = {ts}: knots {knot_text(a.u)}",
+        given=(*given_points(a.pts), worked("t", a.t, f"t = {ts}")),
+        derived=_at_derived(a),
+        tables=(_triangle_table(a), _weighted_table(a)),
+        pixels=lambda: iter((a.pixel,)),
+        bbox=bbox((*marks, a.pixel)),
         notes=(*_BSPLINE_NOTES, ROUND_NOTE),
         marks=marks,
         geometry={
-            "polyline": [(float(point[0]), float(point[1]))],
-            "control": float_points(pts),
+            "polyline": [(float(a.point[0]), float(a.point[1]))],
+            "control": float_points(a.pts),
         },
     )
 

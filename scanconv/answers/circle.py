@@ -3,7 +3,6 @@ the pixels."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 
@@ -12,28 +11,20 @@ from ..algorithms.circles import (
     FLOAT_METHODS,
     METHODS,
     SDDA_MAX_RADIUS,
-    SQRT_PLACES,
     bresenham,
     general,
     images,
     midpoint,
-    polynomial,
-    sqrt6,
-    symmetric_dda,
     symmetric_pixels,
-    trig,
-    trig_last,
 )
 from ..algorithms.conventions import ROUNDING_TEXT, convention_note, resolve, rounder
 from ..core.checks import InputError, check_integer
 from ..core.numeric import (
     Number,
-    fmt,
     fmt_value,
     normalize,
 )
 from ..core.records import (
-    Column,
     Move,
     Pixel,
     Quantity,
@@ -44,6 +35,7 @@ from ..core.records import (
     rule,
     worked,
 )
+from .circle_float import Parts, pixels_of, polynomial_parts, sdda_parts, trig_parts
 from .errata import circle_errata
 
 SYMMETRY_HEADS = (
@@ -97,6 +89,70 @@ def _start(r: int) -> Quantity:
     return worked("start", (0, r), f"\\text{{start }} (x_0, y_0) = (0, r) = (0, {r})")
 
 
+def _circle_method(method: str, rounding: str | None, layout: str) -> tuple[str, str | None]:
+    """The method's name (an alias resolved) and its rounding rule, checked."""
+    method = ALIASES.get(method, method)
+    if method not in METHODS:
+        names = ", ".join((*METHODS, *ALIASES))
+        raise InputError(f"unknown circle method {method!r} (choose from {names})", "method")
+    if rounding is not None and method not in FLOAT_METHODS:
+        rounder(rounding)
+        if rounding != "half-up":
+            raise InputError(
+                f"a rounding rule applies only to {', '.join(FLOAT_METHODS)}; "
+                f"{method} uses integers only",
+                "rounding",
+            )
+        rounding = None
+    if layout not in ("notes", "textbook"):
+        raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
+    return method, rounding
+
+
+def _circle_numbers(method: str, r: Number, xc: Number, yc: Number) -> tuple[int, int, int]:
+    """The radius and the centre as integers, checked (the symmetric DDA's radius bounded)."""
+    ir = check_integer(r, "radius", negative=False)
+    ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
+    if method == "symmetric-dda" and ir > SDDA_MAX_RADIUS:
+        raise InputError(
+            f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "
+            f"the radius must be at most {SDDA_MAX_RADIUS} (got {ir})",
+            "r",
+        )
+    return ir, ixc, iyc
+
+
+def _parts(method: str, ir: int, knobs: dict[str, str], layout: str) -> Parts:
+    """The method's octant table and working (one branch per method, none to fall into)."""
+    if method == "midpoint":
+        return _midpoint_parts(ir, knobs, layout)
+    if method == "general":
+        return _general_parts(ir, knobs)
+    if method == "bresenham":
+        return _bresenham_parts(ir, knobs["tie"], knobs["xstep"])
+    float_parts = {"polynomial": polynomial_parts, "trig": trig_parts, "symmetric-dda": sdda_parts}
+    return float_parts[method](ir, knobs.get("rounding", "half-up"))
+
+
+def _theory(
+    method: str,
+    ir: int,
+    knobs: dict[str, str],
+    derived: tuple[Quantity, ...],
+    derive: bool,
+    pseudocode: bool,
+) -> tuple[tuple[Quantity, ...], tuple[Table, ...]]:
+    """The working with ``--derive``'s derivation added, and ``--algorithm``'s table."""
+    if not (derive or pseudocode):
+        return derived, ()
+    from . import theory  # here: only --derive and --algorithm need it
+
+    if derive:
+        derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
+    code = theory.circle_code(method, knobs) if pseudocode else None
+    return derived, (code,) if code is not None else ()
+
+
 def circle_solution(
     method: str,
     r: Number,
@@ -108,6 +164,7 @@ def circle_solution(
     p0: str | None = None,
     loop: str | None = None,
     update: str | None = None,
+    xstep: str | None = None,
     convention: str | None = None,
     layout: str = "textbook",
     derive: bool = False,
@@ -138,49 +195,23 @@ def circle_solution(
     (28, (5, 5, 15, 15))
     """
 
-    method = ALIASES.get(method, method)
-    if method not in METHODS:
-        names = ", ".join((*METHODS, *ALIASES))
-        raise InputError(f"unknown circle method {method!r} (choose from {names})", "method")
-    if rounding is not None and method not in FLOAT_METHODS:
-        rounder(rounding)
-        if rounding != "half-up":
-            raise InputError(
-                f"a rounding rule applies only to {', '.join(FLOAT_METHODS)}; "
-                f"{method} uses integers only",
-                "rounding",
-            )
-        rounding = None
-    if layout not in ("notes", "textbook"):
-        raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
+    method, rounding = _circle_method(method, rounding, layout)
     knobs = resolve(
         "circle",
         method,
         convention,
-        {"rounding": rounding, "tie": tie, "p0": p0, "loop": loop, "update": update},
+        {
+            "rounding": rounding,
+            "tie": tie,
+            "p0": p0,
+            "loop": loop,
+            "update": update,
+            "xstep": xstep,
+        },
     )
     rounding = knobs.get("rounding", "half-up")
-    ir = check_integer(r, "radius", negative=False)
-    ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
-    if method == "symmetric-dda" and ir > SDDA_MAX_RADIUS:
-        raise InputError(
-            f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "
-            f"the radius must be at most {SDDA_MAX_RADIUS} (got {ir})",
-            "r",
-        )
-    if method == "midpoint":
-        parts = _midpoint_parts(ir, knobs, layout)
-    elif method == "general":
-        parts = _general_parts(ir, knobs)
-    elif method == "bresenham":
-        parts = _bresenham_parts(ir, knobs["tie"])
-    else:
-        parts = {
-            "polynomial": _polynomial_parts,
-            "trig": _trig_parts,
-            "symmetric-dda": _sdda_parts,
-        }[method](ir, rounding)
-    title, derived, columns, extra_keys, steps, points, notes = parts
+    ir, ixc, iyc = _circle_numbers(method, r, xc, yc)
+    title, derived, columns, extra_keys, steps, points, notes = _parts(method, ir, knobs, layout)
     if method in FLOAT_METHODS:
         notes = (*notes, _rounding_note(rounding))
     notes = (
@@ -188,14 +219,7 @@ def circle_solution(
         "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
         "once, the first time it is plotted.",
     )
-    tables: tuple[Table, ...] = ()
-    if derive or pseudocode:
-        from . import theory  # here: only --derive and --algorithm need it
-    if derive:
-        derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
-    if pseudocode:
-        code = theory.circle_code(method, knobs)
-        tables = (code,) if code is not None else ()
+    derived, tables = _theory(method, ir, knobs, derived, derive, pseudocode)
     data: dict = {"rounding": rounding} if method in FLOAT_METHODS else {}
     if annotate:
         notes = (*notes, convention_note("circle", convention, knobs))
@@ -258,35 +282,21 @@ def _rounding_note(rounding: str) -> str:
     return f"Coordinates are {ROUNDING_TEXT[rounding]}."
 
 
-_Parts = tuple[
-    str,
-    tuple[Quantity, ...],
-    tuple[Column, ...],
-    tuple[str, ...],
-    Callable[[], Iterator[Step]],
-    Callable[[], Iterator[Pixel]],
-    tuple[str, ...],
-]
-
-
-def _pixels_of(gen: Callable[[], Iterator[Step]]) -> Callable[[], Iterator[Pixel]]:
-    return lambda: (s.pixel for s in gen())
-
-
-def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> _Parts:
-    tie, p0s, loop, update = knobs["tie"], knobs["p0"], knobs["loop"], knobs["update"]
+def _midpoint_derived(r: int, knobs: dict[str, str]) -> tuple[Number, tuple[Quantity, ...]]:
+    """p₀ and the working: the start, p₀, what each sign of p chooses and the loop."""
+    tie, loop = knobs["tie"], knobs["loop"]
     lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
-    if p0s == "5/4-r":
+    if knobs["p0"] == "5/4-r":
         p0: Number = Fraction(5, 4) - r
         p0_q = worked("p0", p0, f"p_0 = \\tfrac54 - r = \\tfrac54 - {r} = {fmt_value(p0)}")
     else:
         p0 = 1 - r
         p0_q = worked("p0", p0, f"p_0 = 1 - r = 1 - {r} = {p0}")
-    if update == "old":
+    if knobs["update"] == "old":
         inc_e, inc_se = "2x_k + 3", "2x_k - 2y_k + 5"
     else:
         inc_e, inc_se = "2x_{k+1} + 1", "2x_{k+1} + 1 - 2y_{k+1}"
-    derived = (
+    return p0, (
         _start(r),
         p0_q,
         rule(
@@ -303,6 +313,12 @@ def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> _Parts:
             "loop", r"\text{continue while } x " + (r"\le" if loop == "inclusive" else "<") + " y"
         ),
     )
+
+
+def _midpoint_notes(
+    r: int, knobs: dict[str, str], layout: str, last: Pixel | None
+) -> tuple[str, ...]:
+    """Where the table starts, what p₀ = 1 - r decides and a last point past the diagonal."""
     if layout == "notes":
         first = (
             f"Row $k$ plots $(x_k, y_k)$ and decides on $p_k$; row 0 is the start point $(0, {r})$."
@@ -310,71 +326,94 @@ def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> _Parts:
     else:
         first = f"The start point $(0, {r})$ is plotted before the first step."
     notes = [first]
-    if p0s == "1-r":
+    if knobs["p0"] == "1-r":
         notes.append(
             "$p_0 = 1 - r$ is $5/4 - r$ rounded to an integer; every $p_k$ is an integer and the "
             "decisions are those of $5/4 - r$."
-            if tie == "step"
+            if knobs["tie"] == "step"
             else "$p_0 = 1 - r$: every $p_k$ is an integer; with $p_k \\le 0$ keeping $y$, $p_k = 0$ "
             "decides differently from $5/4 - r$ (which is then $1/4 > 0$)."
         )
-
-    def gen() -> Iterator[Step]:
-        return midpoint(r, tie, p0s, loop, update)
-
-    last = _last(gen())
     if last is not None and last[0] > last[1]:
         notes.append(
             f"The last point {last} lies past the diagonal; its 8 images are those of "
             f"({last[1]}, {last[0]}), already plotted."
         )
+    return tuple(notes)
 
+
+_MIDPOINT_NOTES_COLUMNS = (
+    heading("k", "k"),
+    heading("x_k", "x_k"),
+    heading("y_k", "y_k"),
+    heading("p", "p_k"),
+    heading("decision", r"\text{decision}"),
+    heading("pixel", r"\text{plot } (x_k, y_k)"),
+)
+_MIDPOINT_COLUMNS = (
+    heading("k", "k"),
+    heading("p", "p_k"),
+    heading("pixel", "(x_{k+1}, y_{k+1})"),
+    heading("two_x", "2x_{k+1}"),
+    heading("two_y", "2y_{k+1}"),
+)
+
+
+def _notes_rows(r: int, p0: Number, gen: Callable[[], Iterator[Step]]) -> Iterator[Step]:
+    """The notes' layout: row k plots (x_k, y_k) and decides on p_k; a last row without a
+    decision."""
+    pt, k, p = (0, r), 0, p0
+    for st in gen():
+        yield Step(st.k, st.p, st.decision, pt, pt)
+        x, y = st.pixel
+        assert st.p is not None  # the midpoint circle decides every step
+        p = st.p + 2 * x + 1 - (2 * y if st.decision == Move.SE else 0)
+        pt, k = st.pixel, st.k + 1
+    yield Step(k, normalize(p), None, pt, pt)
+
+
+def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> Parts:
+    p0, derived = _midpoint_derived(r, knobs)
+
+    def gen() -> Iterator[Step]:
+        return midpoint(r, knobs["tie"], knobs["p0"], knobs["loop"], knobs["update"])
+
+    notes = _midpoint_notes(r, knobs, layout, _last(gen()))
     if layout == "notes":
 
         def steps() -> Iterator[Step]:
-            pt, k, p = (0, r), 0, p0
-            for st in gen():
-                yield Step(st.k, st.p, st.decision, pt, pt)
-                x, y = st.pixel
-                assert st.p is not None  # the midpoint circle decides every step
-                p = st.p + 2 * x + 1 - (2 * y if st.decision == Move.SE else 0)
-                pt, k = st.pixel, st.k + 1
-            yield Step(k, normalize(p), None, pt, pt)
+            return _notes_rows(r, p0, gen)
 
         def points() -> Iterator[Pixel]:
             return (st.pixel for st in steps())
 
-        columns: tuple[Column, ...] = (
-            heading("k", "k"),
-            heading("x_k", "x_k"),
-            heading("y_k", "y_k"),
-            heading("p", "p_k"),
-            heading("decision", r"\text{decision}"),
-            heading("pixel", r"\text{plot } (x_k, y_k)"),
+        return (
+            "Midpoint circle algorithm",
+            derived,
+            _MIDPOINT_NOTES_COLUMNS,
+            ("x_k", "y_k"),
+            steps,
+            points,
+            notes,
         )
-        keys: tuple[str, ...] = ("x_k", "y_k")
-    else:
 
-        def steps() -> Iterator[Step]:
-            return gen()
+    def textbook_points() -> Iterator[Pixel]:
+        yield (0, r)
+        for st in gen():
+            yield st.pixel
 
-        def points() -> Iterator[Pixel]:
-            yield (0, r)
-            for st in gen():
-                yield st.pixel
-
-        columns = (
-            heading("k", "k"),
-            heading("p", "p_k"),
-            heading("pixel", "(x_{k+1}, y_{k+1})"),
-            heading("two_x", "2x_{k+1}"),
-            heading("two_y", "2y_{k+1}"),
-        )
-        keys = ("two_x", "two_y")
-    return ("Midpoint circle algorithm", derived, columns, keys, steps, points, tuple(notes))
+    return (
+        "Midpoint circle algorithm",
+        derived,
+        _MIDPOINT_COLUMNS,
+        ("two_x", "two_y"),
+        gen,
+        textbook_points,
+        notes,
+    )
 
 
-def _general_parts(r: int, knobs: dict[str, str]) -> _Parts:
+def _general_parts(r: int, knobs: dict[str, str]) -> Parts:
     tie, loop = knobs["tie"], knobs["loop"]
     lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
     derived = (
@@ -437,18 +476,20 @@ def _last(steps: Iterator[Step]) -> Pixel | None:
     return last
 
 
-def _bresenham_parts(r: int, tie: str) -> _Parts:
+def _bresenham_parts(r: int, tie: str, xstep: str = "last") -> Parts:
     d0 = 3 - 2 * r
     lt, ge = (r"\le", ">") if tie == "keep" else ("<", r"\ge")
+    x, xy = ("x_{k+1}", "x_{k+1} - y_{k+1}") if xstep == "first" else ("x_k", "x_k - y_k")
     derived = (
         _start(r),
         worked("d0", d0, f"d_0 = 3 - 2r = 3 - 2 \\cdot {r} = {d0}"),
         rule(
-            "if_negative", f"d_k {lt} 0: " + r"d_{k+1} = d_k + 4x_k + 6,\ y_{k+1} = y_k\ (\text{E})"
+            "if_negative",
+            f"d_k {lt} 0: d_{{k+1}} = d_k + 4{x} + 6," + r"\ y_{k+1} = y_k\ (\text{E})",
         ),
         rule(
             "otherwise",
-            f"d_k {ge} 0: " + r"d_{k+1} = d_k + 4(x_k - y_k) + 10,\ y_{k+1} = y_k - 1\ (\text{SE})",
+            f"d_k {ge} 0: d_{{k+1}} = d_k + 4({xy}) + 10," + r"\ y_{k+1} = y_k - 1\ (\text{SE})",
         ),
         rule("loop", r"x_{k+1} = x_k + 1;\ \text{plot } (x_k, y_k) \text{ while } x \le y"),
     )
@@ -458,160 +499,18 @@ def _bresenham_parts(r: int, tie: str) -> _Parts:
         heading("decision", r"\text{decision}"),
         heading("pixel", "(x_k, y_k)"),
     )
-    notes = ("Each row plots (x_k, y_k); d_k and the decision give the next point.",)
-
-    def steps() -> Iterator[Step]:
-        return bresenham(r, tie)
-
-    return ("Bresenham's circle algorithm", derived, columns, (), steps, _pixels_of(steps), notes)
-
-
-def _rounded_name(rounding: str, v: str) -> str:
-    """``\\operatorname{round}(v)`` or ``\\operatorname{trunc}(v)``."""
-    name = "trunc" if rounding == "trunc" else "round"
-    return f"\\operatorname{{{name}}}({v})"
-
-
-def _polynomial_parts(r: int, rounding: str) -> _Parts:
-    rnd = rounder(rounding)
-    xmax = math.isqrt(r * r // 2)  # the last x with x <= y exactly; one more may qualify
-    if xmax < r and rnd(sqrt6(r * r - (xmax + 1) ** 2)) >= xmax + 1:
-        xmax += 1
-    bound = Fraction(math.isqrt(r * r * SQRT_PLACES * SQRT_PLACES // 2), SQRT_PLACES)
-    rounded = _rounded_name(rounding, "y")
-    derived = (
-        worked("equation", r * r, f"y = \\sqrt{{r^2 - x^2}} = \\sqrt{{{r * r} - x^2}}"),
-        worked(
-            "x_last",
-            xmax,
-            f"x = 0, 1, \\ldots \\text{{ while }} x \\le {rounded}\\ (\\text{{the plotted point stays "
-            f"on or above the diagonal; }} r/\\sqrt{{2}} = {fmt(bound, 3)}): x = 0 \\ldots {xmax}",
-        ),
-    )
-    columns = (
-        heading("k", "x"),
-        heading("y_sqrt", r"y = \sqrt{r^2 - x^2}", 3),
-        heading("round_y", rounded),
-        heading("pixel", r"\text{point } (x, y)"),
-    )
-    notes = (
-        "y is computed exactly from integer square roots (shown to 3 decimals), "
-        "so the rounding never depends on floating-point error.",
+    notes: tuple[str, ...] = (
+        "Each row plots (x_k, y_k); d_k and the decision give the next point.",
     )
 
-    def steps() -> Iterator[Step]:
-        return polynomial(r, rounding)
-
-    return (
-        "Circle by the polynomial (square-root) method",
-        derived,
-        columns,
-        ("y_sqrt", "round_y"),
-        steps,
-        _pixels_of(steps),
-        notes,
-    )
-
-
-_ZERO = rule("zero", r"r = 0:\ \text{only the centre is plotted}")
-
-
-def _trig_parts(r: int, rounding: str) -> _Parts:
-    if r == 0:
-        derived: tuple[Quantity, ...] = (_ZERO,)
-    else:
-        kmax = trig_last(r, rounding)
-        dtheta = Fraction(1, r)
-        derived = (
-            worked(
-                "dtheta",
-                dtheta,
-                f"\\Delta\\theta = 1/r = 1/{r} \\text{{ rad}} = "
-                + fmt_value(dtheta).replace("≈", "\\approx")
-                + f" \\text{{ rad}} = {fmt(180 / (math.pi * r), 3)}^\\circ",
-            ),
-            worked(
-                "k_last",
-                kmax,
-                f"\\theta_k = 90^\\circ - k \\cdot \\Delta\\theta \\text{{ from }} 90^\\circ "
-                f"\\text{{ towards }} 45^\\circ\\ (\\pi \\cdot r/4 = {fmt(math.pi * r / 4, 3)} "
-                f"\\text{{ steps}}),\\ \\text{{while }} {_rounded_name(rounding, 'x')} \\le "
-                f"{_rounded_name(rounding, 'y')}: k = 0 \\ldots {kmax}",
-            ),
-            rule("equation", r"x = r \cos\theta_k,\ y = r \sin\theta_k"),
+    if xstep == "first":
+        notes = (
+            *notes,
+            "x is stepped before d is updated (the widely copied code): its increments are 4 "
+            "larger than Bresenham's, so its d values, and some of its points, differ.",
         )
-    columns = (
-        heading("k", "k"),
-        heading("theta_deg", r"\theta_k\ (\text{deg})", 3),
-        heading("theta_rad", r"\theta_k\ (\text{rad})", 3),
-        heading("x_cos", r"x = r \cos\theta", 3),
-        heading("y_sin", r"y = r \sin\theta", 3),
-        heading("pixel", r"\text{point}"),
-    )
-    notes = ("cos and sin are computed in floating point (shown to 3 decimals).",)
 
     def steps() -> Iterator[Step]:
-        return trig(r, rounding)
+        return bresenham(r, tie, xstep)
 
-    return (
-        "Circle by the parametric (trigonometric) method",
-        derived,
-        columns,
-        ("theta_deg", "theta_rad", "x_cos", "y_sin"),
-        steps,
-        _pixels_of(steps),
-        notes,
-    )
-
-
-def _sdda_parts(r: int, rounding: str) -> _Parts:
-    name, yname = _rounded_name(rounding, "x_k"), _rounded_name(rounding, "y_k")
-    if r == 0:
-        derived: tuple[Quantity, ...] = (_ZERO,)
-    else:
-        n = r.bit_length()
-        eps = Fraction(1, 2**n)
-        lo, hi = 2 ** (n - 1), 2**n
-        derived = (
-            worked(
-                "n",
-                n,
-                f"2^{{n-1}} \\le r < 2^n: 2^{{{n - 1}}} = {lo} \\le {r} < {hi} = 2^{{{n}}}, "
-                f"\\text{{ so }} n = {n}",
-            ),
-            worked(
-                "epsilon",
-                eps,
-                f"\\varepsilon = 2^{{-n}} = 2^{{-{n}}} = "
-                + fmt_value(eps).replace("≈", "\\approx"),
-            ),
-            rule(
-                "update",
-                r"x_{k+1} = x_k + \varepsilon \cdot y_k,\ y_{k+1} = y_k - \varepsilon \cdot x_{k+1}"
-                r"\ (\text{the new } x)",
-            ),
-            rule(
-                "loop",
-                f"\\text{{from }} (x_0, y_0) = (0, {r}) \\text{{ while }} {name} \\le {yname}",
-            ),
-        )
-    columns = (
-        heading("k", "k"),
-        heading("x_k", "x_k", 3),
-        heading("y_k", "y_k", 3),
-        heading("pixel", f"({name}, {yname})"),
-    )
-    notes = ("x_k and y_k are exact fractions (shown to 3 decimals).",)
-
-    def steps() -> Iterator[Step]:
-        return symmetric_dda(r, rounding)
-
-    return (
-        "Circle by the symmetric DDA",
-        derived,
-        columns,
-        ("x_k", "y_k"),
-        steps,
-        _pixels_of(steps),
-        notes,
-    )
+    return ("Bresenham's circle algorithm", derived, columns, (), steps, pixels_of(steps), notes)

@@ -202,83 +202,99 @@ def _cell(v: Number | None) -> Any:
     return v if isinstance(v, int) else fmt_short(v)
 
 
-def lb_parts(p1: Point, p2: Point, w: Rect, r: LBResult) -> tuple[list[Quantity], list[Table]]:
-    """The working and table of a Liang–Barsky run."""
+def _lb_deltas(p1: Point, p2: Point) -> Quantity:
     (x1, y1), (x2, y2) = p1, p2
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
-    derived = [
-        Quantity(
-            "d",
-            (dx, dy),
-            f"Δx = {fmt_short(x2)} - {fmt_paren(x1)} = {fmt_short(dx)}, Δy = {fmt_short(y2)} - {fmt_paren(y1)} = {fmt_short(dy)}",
-            f"\\Delta x = {fmt_short(dx)}, \\Delta y = {fmt_short(dy)}",
-        )
-    ]
+    return Quantity(
+        "d",
+        (dx, dy),
+        f"Δx = {fmt_short(x2)} - {fmt_paren(x1)} = {fmt_short(dx)}, Δy = {fmt_short(y2)} - {fmt_paren(y1)} = {fmt_short(dy)}",
+        f"\\Delta x = {fmt_short(dx)}, \\Delta y = {fmt_short(dy)}",
+    )
+
+
+def _lb_pq(p1: Point, w: Rect, r: LBResult) -> list[Quantity]:
+    """Each boundary's p_k and q_k, the numbers substituted."""
+    x1, y1 = p1
     subst = ((x1, w[0]), (w[2], x1), (y1, w[1]), (w[3], y1))
-    for row, (ps, qs, pt_, qt), (a, b) in zip(r.rows, _PQ, subst, strict=True):
-        derived.append(
-            Quantity(
-                f"pq{row.k}", (row.p, row.q),
-                f"p{row.k} = {ps} = {fmt_short(row.p)}, q{row.k} = {qs} = {fmt_short(a)} - {fmt_paren(b)} = {fmt_short(row.q)}   ({row.edge})",
-                f"p_{row.k} = {pt_} = {fmt_short(row.p)}, \\quad q_{row.k} = {qt} = {fmt_short(row.q)}",
-            )
-        )  # fmt: skip
+    return [
+        Quantity(
+            f"pq{row.k}",
+            (row.p, row.q),
+            f"p{row.k} = {ps} = {fmt_short(row.p)}, q{row.k} = {qs} = {fmt_short(a)} - {fmt_paren(b)} = {fmt_short(row.q)}   ({row.edge})",
+            f"p_{row.k} = {pt_} = {fmt_short(row.p)}, \\quad q_{row.k} = {qt} = {fmt_short(row.q)}",
+        )
+        for row, (ps, qs, pt_, qt), (a, b) in zip(r.rows, _PQ, subst, strict=True)
+    ]
+
+
+def _lb_bounds(r: LBResult) -> list[Quantity]:
+    """u1, the largest entering r_k (or 0), and u2, the smallest leaving r_k (or 1)."""
     entering = [row.r for row in r.rows if row.p < 0]
     leaving = [row.r for row in r.rows if row.p > 0]
     u1, u2 = r.rows[-1].u1, r.rows[-1].u2
     ins = ", ".join(["0", *(fmt_short(v) for v in entering if v is not None)])
     outs = ", ".join(["1", *(fmt_short(v) for v in leaving if v is not None)])
-    derived.append(
+    return [
         Quantity(
             "u1",
             u1,
             f"u1 = max(0, r_k where p_k < 0) = max({ins}) = {fmt_short(u1)}",
             f"u_1 = \\max({ins}) = {fmt_short(u1)}",
-        )
-    )
-    derived.append(
+        ),
         Quantity(
             "u2",
             u2,
             f"u2 = min(1, r_k where p_k > 0) = min({outs}) = {fmt_short(u2)}",
             f"u_2 = \\min({outs}) = {fmt_short(u2)}",
-        )
-    )
+        ),
+    ]
+
+
+def _lb_outcome(p1: Point, p2: Point, r: LBResult) -> list[Quantity]:
+    """The rejection (parallel and outside, or u1 > u2), or both clipped end points."""
     if r.outside is not None:
         k = EDGES.index(r.outside) + 1
-        derived.append(
+        return [
             Quantity(
                 "test",
                 "reject",
                 f"p{k} = 0 and q{k} < 0: parallel to the {r.outside} edge and outside it: reject",
                 f"p_{k} = 0, q_{k} < 0: \\text{{reject}}",
             )
-        )
-    elif r.segment is None:
-        derived.append(
+        ]
+    u1, u2 = r.rows[-1].u1, r.rows[-1].u2
+    if r.segment is None:
+        return [
             Quantity(
                 "test",
                 "reject",
                 f"u1 = {fmt_short(u1)} > u2 = {fmt_short(u2)}: reject",
                 "u_1 > u_2: \\text{reject}",
             )
+        ]
+    (x1, y1), (x2, y2) = p1, p2
+    dx, dy = normalize(x2 - x1), normalize(y2 - y1)
+    return [
+        Quantity(
+            name.replace("'", "_clipped"),
+            list(q),
+            f"{name} = (x1 + {un}·Δx, y1 + {un}·Δy) = ({fmt_short(x1)} + {factor(u)}*{fmt_paren(dx)}, {fmt_short(y1)} + {factor(u)}*{fmt_paren(dy)}) = {pt_approx(q)}",
+            f"{name[:2]}' = (x_1 + u_{un[1]} \\Delta x, y_1 + u_{un[1]} \\Delta y) = {pt(q)}",
         )
-    else:
-        for name, un, u, q in (("P1'", "u1", u1, r.segment[0]), ("P2'", "u2", u2, r.segment[1])):
-            us = factor(u)
-            derived.append(
-                Quantity(
-                    name.replace("'", "_clipped"), list(q),
-                    f"{name} = (x1 + {un}·Δx, y1 + {un}·Δy) = ({fmt_short(x1)} + {us}*{fmt_paren(dx)}, {fmt_short(y1)} + {us}*{fmt_paren(dy)}) = {pt_approx(q)}",
-                    f"{name[:2]}' = (x_1 + u_{un[1]} \\Delta x, y_1 + u_{un[1]} \\Delta y) = {pt(q)}",
-                )
-            )  # fmt: skip
+        for name, un, u, q in (("P1'", "u1", u1, r.segment[0]), ("P2'", "u2", u2, r.segment[1]))
+    ]
 
-    def case(p: Number, q: Number) -> str:
-        if p == 0:
-            return "parallel, outside" if q < 0 else "parallel, inside"
-        return "entering (u1)" if p < 0 else "leaving (u2)"
 
+def _lb_case(p: Number, q: Number) -> str:
+    if p == 0:
+        return "parallel, outside" if q < 0 else "parallel, inside"
+    return "entering (u1)" if p < 0 else "leaving (u2)"
+
+
+def lb_parts(p1: Point, p2: Point, w: Rect, r: LBResult) -> tuple[list[Quantity], list[Table]]:
+    """The working and table of a Liang–Barsky run."""
+    derived = [_lb_deltas(p1, p2), *_lb_pq(p1, w, r), *_lb_bounds(r), *_lb_outcome(p1, p2, r)]
     rows = [
         (
             row.k,
@@ -286,7 +302,7 @@ def lb_parts(p1: Point, p2: Point, w: Rect, r: LBResult) -> tuple[list[Quantity]
             _cell(row.p),
             _cell(row.q),
             _cell(row.r),
-            case(row.p, row.q),
+            _lb_case(row.p, row.q),
             _cell(row.u1),
             _cell(row.u2),
         )

@@ -395,6 +395,112 @@ def _breakdown(w: _Work, levels: tuple[int, int, int], bits: int) -> tuple[Table
 # --- the answer ---------------------------------------------------------------------------------------
 
 
+def _given_rgb(
+    w: _Work, model: str, values: Sequence[Number], top: int, unit: bool
+) -> tuple[list[Quantity], tuple[Value, ...], tuple[int, int, int] | None]:
+    """The given values of ``model``, their RGB in [0, 1] and (from RGB) the channel levels."""
+    if model == "rgb":
+        rgb8 = tuple(_level(v, n, top, unit) for v, n in zip(values, "RGB", strict=True))
+        given = [
+            worked(n, normalize(v), f"{n} = {num(v)}") for n, v in zip("RGB", rgb8, strict=True)
+        ]
+        if unit:
+            return given, rgb8, None
+        rgb = tuple(v / top for v in rgb8)
+        for n, v8, v in zip("RGB", rgb8, rgb, strict=True):
+            w.add(
+                f"rgb_{n.lower()}", v, rf"{n.lower()} = {n} / {top} = {num(v8)} / {top} {result(v)}"
+            )
+        return given, rgb, (int(rgb8[0]), int(rgb8[1]), int(rgb8[2]))
+    if model == "grey":
+        y = _level(values[0], "Y", top, unit)
+        v = y if unit else y / top
+        w.say("to_rgb", r"\text{grey} \to \text{RGB: a grey has } r = g = b")
+        w.add(
+            "rgb",
+            (v, v, v),
+            (r"r = g = b = Y " if unit else rf"r = g = b = Y / {top} = {num(y)} / {top} ")
+            + result(v),
+        )
+        return [worked("Y", normalize(y), f"Y = {num(y)}")], (v, v, v), None
+    names = model.upper()
+    if model == "cmy":
+        parsed = tuple(_unit(Fraction(v), n) for v, n in zip(values, names, strict=True))
+    else:  # hsv, hsi: a hue in degrees, then two values in [0, 1]
+        parsed = (_hue(values[0]), _unit(values[1], names[1]), _unit(values[2], names[2]))
+    given = [worked(n, normalize(v), f"{n} = {num(v)}") for n, v in zip(names, parsed, strict=True)]
+    to_rgb = {"cmy": _from_cmy, "hsv": _from_hsv, "hsi": _from_hsi}[model]
+    return given, to_rgb(w, parsed), None
+
+
+def _rgb_levels(w: _Work, rgb: tuple[Value, ...], top: int) -> tuple[int, int, int]:
+    """The channel levels of an RGB in [0, 1] (clamped floats; rounded half up), worked."""
+    rgb = tuple(min(1, max(0, v)) if isinstance(v, float) else v for v in rgb)
+    scaled = [v * top for v in rgb]
+    r8, g8, b8 = (round_half_up(v) for v in scaled)
+    exact = all(isinstance(v, Fraction) and v.denominator == 1 for v in scaled)
+    w.add(
+        "rgb_levels",
+        (r8, g8, b8),
+        rf"(R, G, B) = {top} \cdot (r, g, b) "
+        + ("= " if exact else r"\approx ")
+        + f"({r8}, {g8}, {b8})"
+        + ("" if exact else r" \quad (\text{rounded half up})"),
+    )
+    return r8, g8, b8
+
+
+_LABELS = {
+    "cmy": "CMY",
+    "hsv": "HSV (H deg, S, V)",
+    "hsi": "HSI (H deg, S, I)",
+    "grey": "grey (average, BT.601)",
+}
+"""The results table's label of each target model."""
+
+
+def _convert(
+    w: _Work, target: str, rgb: tuple[Value, ...], unit: bool, top: int, scale: str
+) -> tuple[Value, ...]:
+    """``rgb`` in ``target``, worked."""
+    # exact from every model but HSI, whose RGB may be floats (the formulas take either)
+    frgb = cast(tuple[Fraction, Fraction, Fraction], rgb)
+    if target == "grey":
+        return _grey(w, tuple(v if unit else v * top for v in frgb), scale)
+    return {"cmy": _to_cmy, "hsv": _to_hsv, "hsi": _to_hsi}[target](w, frgb)
+
+
+def _results(rows: list[tuple[str, str, str]]) -> Table:
+    return Table(
+        "Results",
+        (
+            heading("model", r"\text{model}"),
+            heading("value", r"\text{value}"),
+            heading("exact", r"\text{exact}"),
+        ),
+        lambda: tuple(rows),
+    )
+
+
+def _color_notes(scale: str, unit: bool, bits: int, models: Sequence[str]) -> list[str]:
+    notes = [
+        f"RGB is on the {scale} scale ({'values given as fractions of 1' if unit else f'{bits} bits per channel'}); "
+        "the working normalises it to r, g, b in [0, 1]. CMY, S, V and I are in [0, 1], hue in "
+        "degrees [0, 360).",
+    ]
+    if "hsi" in models:
+        notes.append(
+            f"HSI's hue is an arc cosine: it is given to {PLACES} decimals of a degree (~ in a "
+            "table), exactly where the angle is a multiple of 30 degrees."
+        )
+    if "grey" in models[1:]:
+        notes.append(
+            "Two grey levels: the plain average weighs R, G and B alike; BT.601 luma weighs "
+            "them by how bright they look (green most, blue least)."
+        )
+    return notes
+
+
 def color_solution(
     model: str,
     values: Sequence[Number],
@@ -424,120 +530,22 @@ def color_solution(
         )
     scale = "0..1" if unit else f"0..{top}"
     w = _Work()
-    given: list[Quantity] = []
-    levels: tuple[int, int, int] | None = None
-    notes = [
-        f"RGB is on the {scale} scale ({'--unit' if unit else f'{bits} bits per channel'}); "
-        "the working normalises it to r, g, b in [0, 1]. CMY, S, V and I are in [0, 1], hue in "
-        "degrees [0, 360).",
-    ]
-    if model == "rgb":
-        rgb8 = tuple(_level(v, n, top, unit) for v, n in zip(values, "RGB", strict=True))
-        given = [
-            worked(n, normalize(v), f"{n} = {num(v)}") for n, v in zip("RGB", rgb8, strict=True)
-        ]
-        if unit:
-            rgb: tuple[Value, ...] = rgb8
-        else:
-            rgb = tuple(v / top for v in rgb8)
-            for n, v8, v in zip("RGB", rgb8, rgb, strict=True):
-                w.add(
-                    f"rgb_{n.lower()}",
-                    v,
-                    rf"{n.lower()} = {n} / {top} = {num(v8)} / {top} {result(v)}",
-                )
-            levels = (int(rgb8[0]), int(rgb8[1]), int(rgb8[2]))
-    elif model == "grey":
-        y = _level(values[0], "Y", top, unit)
-        given = [worked("Y", normalize(y), f"Y = {num(y)}")]
-        v = y if unit else y / top
-        w.say("to_rgb", r"\text{grey} \to \text{RGB: a grey has } r = g = b")
-        w.add(
-            "rgb",
-            (v, v, v),
-            (r"r = g = b = Y " if unit else rf"r = g = b = Y / {top} = {num(y)} / {top} ")
-            + result(v),
-        )
-        rgb = (v, v, v)
-    elif model == "cmy":
-        cmy = tuple(_unit(Fraction(v), n) for v, n in zip(values, "CMY", strict=True))
-        given = [
-            worked(n, normalize(v), f"{n} = {num(v)}") for n, v in zip("CMY", cmy, strict=True)
-        ]
-        rgb = _from_cmy(w, cmy)
-    elif model == "hsv":
-        hsv = (_hue(values[0]), _unit(values[1], "S"), _unit(values[2], "V"))
-        given = [
-            worked(n, normalize(v), f"{n} = {num(v)}") for n, v in zip("HSV", hsv, strict=True)
-        ]
-        rgb = _from_hsv(w, hsv)
-    else:
-        hsi = (_hue(values[0]), _unit(values[1], "S"), _unit(values[2], "I"))
-        given = [
-            worked(n, normalize(v), f"{n} = {num(v)}") for n, v in zip("HSI", hsi, strict=True)
-        ]
-        rgb = _from_hsi(w, hsi)
-    if levels is None and "rgb" in (model, *want):
+    given, rgb, levels = _given_rgb(w, model, values, top, unit)
+    with_rgb = "rgb" in (model, *want)
+    if levels is None and with_rgb:
         rgb = tuple(min(1, max(0, v)) if isinstance(v, float) else v for v in rgb)
-        scaled = [v * top for v in rgb]
-        r8, g8, b8 = (round_half_up(v) for v in scaled)
-        levels = (r8, g8, b8)
-        exact = all(isinstance(v, Fraction) and v.denominator == 1 for v in scaled)
-        w.add(
-            "rgb_levels",
-            levels,
-            rf"(R, G, B) = {top} \cdot (r, g, b) "
-            + ("= " if exact else r"\approx ")
-            + f"({r8}, {g8}, {b8})"
-            + ("" if exact else r" \quad (\text{rounded half up})"),
-        )
+        levels = _rgb_levels(w, rgb, top)
     rows: list[tuple[str, str, str]] = [("RGB (r, g, b)", _triple(rgb), _triple(rgb, True))]
     data: dict[str, object] = {"model": model, "targets": want, "scale": scale, "rgb": list(rgb)}
     for target in want:
-        if target == "rgb" or target == model:
-            continue
-        # exact from every model but HSI, whose RGB may be floats (the formulas take either)
-        frgb = cast(tuple[Fraction, Fraction, Fraction], rgb)
-        if target == "cmy":
-            out: tuple[Value, ...] = _to_cmy(w, frgb)
-        elif target == "hsv":
-            out = _to_hsv(w, frgb)
-        elif target == "hsi":
-            out = _to_hsi(w, frgb)
-        else:
-            rgb8 = tuple(v if unit else v * top for v in frgb)
-            out = _grey(w, rgb8, scale)
-        data[target] = list(out)
-        label = {
-            "cmy": "CMY",
-            "hsv": "HSV (H deg, S, V)",
-            "hsi": "HSI (H deg, S, I)",
-            "grey": "grey (average, BT.601)",
-        }[target]
-        rows.append((label, _triple(out), _triple(out, True)))
-    table = Table(
-        "Results",
-        (
-            heading("model", r"\text{model}"),
-            heading("value", r"\text{value}"),
-            heading("exact", r"\text{exact}"),
-        ),
-        lambda: tuple(rows),
-    )
-    tables = [table]
-    if levels is not None and "rgb" in (model, *want):
+        if target not in ("rgb", model):
+            out = _convert(w, target, rgb, unit, top, scale)
+            data[target] = list(out)
+            rows.append((_LABELS[target], _triple(out), _triple(out, True)))
+    tables = [_results(rows)]
+    if levels is not None and with_rgb:
         breakdown, data["hex"] = _breakdown(w, levels, bits)
         tables.append(breakdown)
-    if "hsi" in (model, *want):
-        notes.append(
-            f"HSI's hue is an arc cosine: it is given to {PLACES} decimals of a degree (~ in a "
-            "table), exactly where the angle is a multiple of 30 degrees."
-        )
-    if "grey" in want:
-        notes.append(
-            "Two grey levels: the plain average weighs R, G and B alike; BT.601 luma weighs "
-            "them by how bright they look (green most, blue least)."
-        )
     shown = ", ".join(NAMES[m] for m in want if m != model)
     values_text = ", ".join(fmt_short(Fraction(v)) for v in values)
     return Solution(
@@ -546,7 +554,7 @@ def color_solution(
         title=f"Colour {NAMES[model]} ({values_text}) to {shown or NAMES[model]}",
         given=tuple(given),
         derived=tuple(w.items),
-        notes=tuple(notes),
+        notes=tuple(_color_notes(scale, unit, bits, (model, *want))),
         tables=tuple(tables),
         data=data,
     )

@@ -37,9 +37,7 @@ SHORT = {"bresenham": "Bresenham", "polynomial": "poly", "trig": "trig", "symmet
 #: Reason tags shown in the table; the notes explain each one that occurs, with its numbers.
 TIE = "tie"
 DDA_OFF = "DDA off centre"
-DDA_NONE = "DDA skips"
 DDA_MANY = "DDA repeats"
-BASIC_NONE = "basic range"
 
 
 def arithmetic(maj: str, mnr: str, negative: bool = False) -> tuple[tuple[str, str, str], ...]:

@@ -39,15 +39,19 @@ def _verdict(level: int) -> str:
     return verdict + (f"; {_ORDERS[level + 1]} fails)" if level < 2 else ")")
 
 
-def continuity_solution(
-    first: Sequence[Point], second: Sequence[Point], samples: int = DEFAULT_SAMPLES
-) -> Solution:
-    """Classify the join of two Bezier segments: the highest of C0, C1, C2 that holds.
+_COLUMNS = (
+    heading("order", r"\text{order}"),
+    heading("quantity", r"\text{compared}"),
+    heading("point_A", r"A \text{ at } t = 1"),
+    heading("point_B", r"B \text{ at } t = 0"),
+    heading("equal", r"\text{equal}"),
+)
+_QUANTITIES = ("position", "first derivative", "second derivative")
 
-    >>> sol = continuity_solution([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)])
-    >>> sol.derived[-1].text
-    'continuity at the join: C1 (C0 and C1 hold; C2 fails)'
-    """
+
+def _checked_segments(
+    first: Sequence[Point], second: Sequence[Point], samples: int
+) -> tuple[tuple[Point, ...], tuple[Point, ...]]:
     a_pts = check_points(first, 2, "the first segment", param="first")
     b_pts = check_points(second, 2, "the second segment", param="second")
     check_samples(samples)
@@ -55,13 +59,21 @@ def continuity_solution(
     check_path([a_pts, b_pts], samples)
     check_row(bezier(a_pts, samples), "the first segment")
     check_row(bezier(b_pts, samples), "the second segment")
+    return a_pts, b_pts
+
+
+def _join_derived(
+    a_pts: Sequence[Point],
+    b_pts: Sequence[Point],
+    a: Sequence[Point],
+    b: Sequence[Point],
+    level: int,
+) -> tuple[Quantity, ...]:
+    """Both segments' position, first and second derivative at the join, and the verdict."""
     n, m = len(a_pts) - 1, len(b_pts) - 1
-    a = end_derivatives(a_pts, True)
-    b = end_derivatives(b_pts, False)
-    level = continuity_level(a_pts, b_pts)
     a_end, a_before = point_text(a_pts[-1]), point_text(a_pts[-2])
     b_start, b_next = point_text(b_pts[0]), point_text(b_pts[1])
-    derived = [
+    return (
         worked("A(1)", a[0], f"A(1) = P_{{{n}}} = {point_text(a[0])}"),
         worked("B(0)", b[0], f"B(0) = Q_0 = {point_text(b[0])}"),
         worked(
@@ -77,32 +89,58 @@ def continuity_solution(
         ),
         _second("A''(1)", a_pts[::-1], a[2], "P", n, True),
         _second("B''(0)", b_pts, b[2], "Q", m, False),
-    ]
-    verdict = _verdict(level)
-    derived.append(
         worked(
             "continuity",
             _ORDERS[level] if level >= 0 else None,
-            f"\\text{{continuity at the join: {verdict}}}",
-        )
+            f"\\text{{continuity at the join: {_verdict(level)}}}",
+        ),
     )
+
+
+def _join_notes(level: int, a_tangent: Point, b_tangent: Point) -> tuple[str, ...]:
     notes = [
         "$A(t)$ has control points $P_0 \\ldots P_n$, $B(t)$ has $Q_0 \\ldots Q_m$; each runs over "
         "$0 \\le t \\le 1$ and they join at $A(1)$ and $B(0)$.",
         "C0: positions equal (position continuity); C1: first derivatives equal (tangent "
         "continuity); C2: second derivatives equal too (curvature continuity).",
     ]
-    if level == 0 and same_direction(a[1], b[1]):
+    if level == 0 and same_direction(a_tangent, b_tangent):
         notes.append(
             "The tangents point the same way but differ in length: the join is G1 (geometric "
             "tangent continuity), though not C1."
         )
     notes.append(JOIN_NOTE)
+    return tuple(notes)
+
+
+def _joined_polyline(
+    a_pts: Sequence[Point], b_pts: Sequence[Point], samples: int
+) -> list[tuple[float, float]]:
+    """Both segments, sampled densely, as one polyline (for the figure)."""
+    ts = dense_ts(0, 1, samples)
+    xa, ya = combine(bernstein(len(a_pts) - 1, ts), float_points(a_pts))
+    xb, yb = combine(bernstein(len(b_pts) - 1, ts), float_points(b_pts))
+    return polyline(np.concatenate([xa, xb]), np.concatenate([ya, yb]))
+
+
+def continuity_solution(
+    first: Sequence[Point], second: Sequence[Point], samples: int = DEFAULT_SAMPLES
+) -> Solution:
+    """Classify the join of two Bezier segments: the highest of C0, C1, C2 that holds.
+
+    >>> sol = continuity_solution([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)])
+    >>> sol.derived[-1].text
+    'continuity at the join: C1 (C0 and C1 hold; C2 fails)'
+    """
+    a_pts, b_pts = _checked_segments(first, second, samples)
+    n, m = len(a_pts) - 1, len(b_pts) - 1
+    a = end_derivatives(a_pts, True)
+    b = end_derivatives(b_pts, False)
+    level = continuity_level(a_pts, b_pts)
 
     def rows() -> Iterator[tuple[Any, ...]]:
-        labels = ("position", "first derivative", "second derivative")
         for k in range(3):
-            yield (_ORDERS[k], labels[k], a[k], b[k], a[k] == b[k])
+            yield (_ORDERS[k], _QUANTITIES[k], a[k], b[k], a[k] == b[k])
 
     marks = control_marks((*a_pts, *b_pts))
 
@@ -111,34 +149,19 @@ def continuity_solution(
             (s.pixel for s in bezier(a_pts, samples)), (s.pixel for s in bezier(b_pts, samples))
         )
 
-    ts = dense_ts(0, 1, samples)
-    xa, ya = combine(bernstein(n, ts), float_points(a_pts))
-    xb, yb = combine(bernstein(m, ts), float_points(b_pts))
     return Solution(
         primitive="curve",
         algorithm="continuity",
         title=f"Continuity of two Bezier segments (degrees {n} and {m}) at their join",
         given=(*given_points(a_pts), *given_points(b_pts, "Q")),
-        derived=tuple(derived),
-        tables=(
-            Table(
-                "Continuity at the join",
-                (
-                    heading("order", r"\text{order}"),
-                    heading("quantity", r"\text{compared}"),
-                    heading("point_A", r"A \text{ at } t = 1"),
-                    heading("point_B", r"B \text{ at } t = 0"),
-                    heading("equal", r"\text{equal}"),
-                ),
-                rows,
-            ),
-        ),
+        derived=_join_derived(a_pts, b_pts, a, b, level),
+        tables=(Table("Continuity at the join", _COLUMNS, rows),),
         pixels=pixels,
         bbox=bbox(marks),
-        notes=tuple(notes),
+        notes=_join_notes(level, a[1], b[1]),
         marks=marks,
         geometry={
-            "polyline": polyline(np.concatenate([xa, xb]), np.concatenate([ya, yb])),
+            "polyline": _joined_polyline(a_pts, b_pts, samples),
             "control": float_points((*a_pts, *b_pts)),
         },
         data={"continuity": _ORDERS[level] if level >= 0 else None},

@@ -77,6 +77,3 @@ def circle_errata(method: str, r: int) -> str | None:
             f"method (see {ERRATA}, E8)."
         )
     return None
-
-
-# --- pseudocode -------------------------------------------------------------------------------

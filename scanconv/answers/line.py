@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from fractions import Fraction
+from typing import NamedTuple
 
 from ..algorithms.conventions import ROUNDING_TEXT, convention_note, resolve
 from ..algorithms.lines import (
@@ -232,20 +233,26 @@ def _theory(
             )
         if code:
             tables.append(theory.basic_code(steep, knobs["rounding"]))
+    elif algo == "midpoint":  # its answer always derives d; it has no pseudocode of its own
+        if code:
+            method("line", algo).load("pseudocode")
     else:  # a method whose record names no derivation (wu) is refused before this
         method("line", algo).load("derivation" if derive else "pseudocode")
     sol.tables = (*sol.tables, *tables)
 
 
-def _bresenham_solution(
-    x1: Number,
-    y1: Number,
-    x2: Number,
-    y2: Number,
-    tie: str = "step",
-    layout: str = "textbook",
-    start: str = "swap",
-) -> Solution:
+def _swap_rule(maj: str, x1: Number, y1: Number, x2: Number, y2: Number) -> Quantity:
+    """The end points swapped so that the major coordinate increases (said first, so that
+    every line below uses the swapped names)."""
+    return rule(
+        "swap",
+        f"\\text{{swap the end points so that }} {maj} \\text{{ increases: }} "
+        f"(x_1, y_1) = ({fmt_short(x1)}, {fmt_short(y1)}), \\ "
+        f"(x_2, y_2) = ({fmt_short(x2)}, {fmt_short(y2)})",
+    )
+
+
+def _integer_ends(x1: Number, y1: Number, x2: Number, y2: Number) -> tuple[int, int, int, int]:
     for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2")):
         if normalize(v) != int(v):
             raise InputError(
@@ -253,7 +260,33 @@ def _bresenham_solution(
                 "(the dda and basic algorithms take fractional end points)",
                 n,
             )
-    ix1, iy1, ix2, iy2 = int(x1), int(y1), int(x2), int(y2)
+    return int(x1), int(y1), int(x2), int(y2)
+
+
+class _Walk(NamedTuple):
+    """Bresenham's walk as the working writes it: from (sx, sy) to (ex, ey)."""
+
+    sx: int
+    sy: int
+    ex: int
+    ey: int
+    steep: bool
+    dmaj: int
+    dmin: int
+    sign: int
+    stay: str
+    move: str
+    swapped: bool
+    backward: bool
+    """Walked from P1 as given, the major coordinate decreasing (``start = "given"``)."""
+
+    @property
+    def names(self) -> tuple[str, str]:
+        """The major and the minor coordinate."""
+        return ("y", "x") if self.steep else ("x", "y")
+
+
+def _walk(ix1: int, iy1: int, ix2: int, iy2: int, start: str) -> _Walk:
     sx, sy, ex, ey, steep, dmaj, dmin, sign, stay, move = orient(ix1, iy1, ix2, iy2)
     swapped = (sx, sy) != (ix1, iy1)
     backward = swapped and start == "given"  # walk from P1, the major coordinate decreasing
@@ -261,16 +294,23 @@ def _bresenham_solution(
         sx, sy, ex, ey = ix1, iy1, ix2, iy2
         _, _, _, sign, stay, move = orient_from_p1(ix1, iy1, ix2, iy2)
         swapped = False
-    dx, dy = ex - sx, ey - sy  # after the swap, as the working is written
-    maj, mnr = ("y", "x") if steep else ("x", "y")
-    dmin_t = f"|\\Delta {mnr}|" if sign < 0 else f"\\Delta {mnr}"
-    dmaj_t = f"|\\Delta {maj}|" if backward else f"\\Delta {maj}"
+    return _Walk(sx, sy, ex, ey, steep, dmaj, dmin, sign, str(stay), str(move), swapped, backward)
+
+
+def _bresenham_derived(w: _Walk, tie: str) -> tuple[Quantity, ...]:
+    """Δx, Δy, the slope, p₀ and the two increments, after the swap if there is one."""
+    dx, dy = w.ex - w.sx, w.ey - w.sy  # after the swap, as the working is written
+    maj, mnr = w.names
+    dmin, dmaj = w.dmin, w.dmaj
+    dmin_t = f"|\\Delta {mnr}|" if w.sign < 0 else f"\\Delta {mnr}"
+    dmaj_t = f"|\\Delta {maj}|" if w.backward else f"\\Delta {maj}"
     p0 = 2 * dmin - dmaj
     inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
     lt, ge = ("\\le", ">") if tie == "keep" else ("<", "\\ge")
-    derived = [
-        _diff("x", sx, ex, "dx"),
-        _diff("y", sy, ey, "dy"),
+    return (
+        *((_swap_rule(maj, w.sx, w.sy, w.ex, w.ey),) if w.swapped else ()),
+        _diff("x", w.sx, w.ex, "dx"),
+        _diff("y", w.sy, w.ey, "dy"),
         _slope(dx, dy),
         _major(dx, dy),
         worked("p0", p0, f"p_0 = 2{dmin_t} - {dmaj_t} = 2 \\cdot {dmin} - {dmaj} = {p0}"),
@@ -285,37 +325,48 @@ def _bresenham_solution(
             f"2{dmin_t} - 2{dmaj_t} = 2 \\cdot {dmin} - 2 \\cdot {dmaj} = {inc_step} "
             f"\\quad (\\text{{added when }} p_k {ge} 0)",
         ),
-    ]
-    if swapped:  # said first, so that every line below uses the swapped names
-        derived.insert(
-            0,
-            rule(
-                "swap",
-                f"\\text{{swap the end points so that }} {maj} \\text{{ increases: }} "
-                f"(x_1, y_1) = ({sx}, {sy}), \\ (x_2, y_2) = ({ex}, {ey})",
-            ),
-        )
-    notes = [f"Start at $({sx}, {sy})$, plotted before the first step."]
-    if backward:
+    )
+
+
+def _bresenham_line_notes(w: _Walk, tie: str, layout: str) -> tuple[str, ...]:
+    """Where the walk starts, which way it goes and what p chooses (a tie included)."""
+    maj, mnr = w.names
+    if layout == "notes":
+        notes = [
+            f"Row $k$ plots $(x_k, y_k)$ and decides on $p_k$; row 0 is the start "
+            f"$({w.sx}, {w.sy})$, the last row the end point (no decision)."
+        ]
+    else:
+        notes = [f"Start at $({w.sx}, {w.sy})$, plotted before the first step."]
+    if w.backward:
         notes.append(
             f"Walked from $P_1$ as given, ${maj}$ decreasing by 1 each step (no swap); the "
             "decisions are the swapped walk's, but a tie is now seen from the other end."
         )
     if tie == "keep":
         notes.append(
-            f"$p_k \\le 0$ chooses {stay}, $p_k > 0$ chooses {move}; a tie ($p_k = 0$) keeps "
-            f"${mnr}$."
+            f"$p_k \\le 0$ chooses {w.stay}, $p_k > 0$ chooses {w.move}; a tie ($p_k = 0$) "
+            f"keeps ${mnr}$."
         )
     else:
         notes.append(
-            f"$p_k < 0$ chooses {stay}, $p_k \\ge 0$ chooses {move}; a tie ($p_k = 0$) steps "
-            f"${mnr}$ too."
+            f"$p_k < 0$ chooses {w.stay}, $p_k \\ge 0$ chooses {w.move}; a tie ($p_k = 0$) "
+            f"steps ${mnr}$ too."
         )
-    if layout == "notes":
-        notes[0] = (
-            f"Row $k$ plots $(x_k, y_k)$ and decides on $p_k$; row 0 is the start $({sx}, {sy})$, "
-            "the last row the end point (no decision)."
-        )
+    return tuple(notes)
+
+
+def _bresenham_solution(
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    tie: str = "step",
+    layout: str = "textbook",
+    start: str = "swap",
+) -> Solution:
+    ix1, iy1, ix2, iy2 = _integer_ends(x1, y1, x2, y2)
+    w = _walk(ix1, iy1, ix2, iy2, start)
 
     def steps() -> Iterator[Step]:
         if layout == "notes":
@@ -323,7 +374,7 @@ def _bresenham_solution(
         return bresenham(ix1, iy1, ix2, iy2, tie, start)
 
     def pixels() -> Iterator[Pixel]:
-        yield (sx, sy)
+        yield (w.sx, w.sy)
         for s in bresenham(ix1, iy1, ix2, iy2, tie, start):
             yield s.pixel
 
@@ -333,7 +384,7 @@ def _bresenham_solution(
         algorithm="bresenham",
         title=_title("Bresenham's line algorithm", ix1, iy1, ix2, iy2),
         given=_given(ix1, iy1, ix2, iy2),
-        derived=tuple(derived),
+        derived=_bresenham_derived(w, tie),
         columns=(
             heading("k", "k"),
             heading("p", "p_k"),
@@ -346,8 +397,53 @@ def _bresenham_solution(
         pixels=pixels,
         bbox=_bbox((ix1, iy1), (ix2, iy2)),
         geometry={"line": (ix1, iy1, ix2, iy2)},
-        notes=tuple(notes),
+        notes=_bresenham_line_notes(w, tie, layout),
     )
+
+
+def _dda_derived(
+    x1: Number, y1: Number, x2: Number, y2: Number, swapped: bool
+) -> tuple[Quantity, ...]:
+    """Δx, Δy, the slope, the number of steps and the increments (from the walk's start)."""
+    dx, dy = normalize(x2 - x1), normalize(y2 - y1)
+    steps_n = dda_steps(x1, y1, x2, y2)
+    xi, yi = dda_increments(x1, y1, x2, y2)
+    longest = max(abs_value(dx), abs_value(dy))
+    ceil_note = "" if longest == steps_n else f"{fmt_short(longest)},\\ \\text{{rounded up to }} "
+    incs = (
+        worked(
+            f"{name}_inc",
+            inc,
+            f"{name}_{{inc}} = \\frac{{\\Delta {name}}}{{\\text{{steps}}}} = "
+            f"\\frac{{{fmt_short(d)}}}{{{steps_n}}} = " + _tex_value(inc),
+        )
+        for name, d, inc in (("x", dx, xi), ("y", dy, yi))
+    )
+    maj = "y" if abs_value(dy) > abs_value(dx) else "x"
+    return (
+        *((_swap_rule(maj, x1, y1, x2, y2),) if swapped else ()),
+        _diff("x", x1, x2, "dx"),
+        _diff("y", y1, y2, "dy"),
+        _slope(dx, dy),
+        _major(dx, dy),
+        worked(
+            "steps",
+            steps_n,
+            f"\\text{{steps}} = \\max(|\\Delta x|, |\\Delta y|) = \\max({fmt_short(abs_value(dx))}, "
+            f"{fmt_short(abs_value(dy))}) = {ceil_note}{steps_n}",
+        ),
+        *(incs if steps_n else ()),
+    )
+
+
+_DDA_COLUMNS = (
+    heading("k", "k"),
+    heading("x", "x_k", 3),
+    heading("y", "y_k", 3),
+    heading("round_x", r"\operatorname{round}(x_k)"),
+    heading("round_y", r"\operatorname{round}(y_k)"),
+    heading("pixel", r"\text{pixel } (x, y)"),
+)
 
 
 def _dda_solution(
@@ -364,44 +460,6 @@ def _dda_solution(
     swapped = start == "swap" and (dy if steep else dx) < 0
     if swapped:  # walk from the end with the smaller major coordinate
         x1, y1, x2, y2 = x2, y2, x1, y1
-        dx, dy = -dx, -dy
-    steps_n = dda_steps(x1, y1, x2, y2)
-    xi, yi = dda_increments(x1, y1, x2, y2)
-    longest = max(abs_value(dx), abs_value(dy))
-    ceil_note = "" if longest == steps_n else f"{fmt_short(longest)},\\ \\text{{rounded up to }} "
-    derived = [
-        _diff("x", x1, x2, "dx"),
-        _diff("y", y1, y2, "dy"),
-        _slope(dx, dy),
-        _major(dx, dy),
-        worked(
-            "steps",
-            steps_n,
-            f"\\text{{steps}} = \\max(|\\Delta x|, |\\Delta y|) = \\max({fmt_short(abs_value(dx))}, "
-            f"{fmt_short(abs_value(dy))}) = {ceil_note}{steps_n}",
-        ),
-    ]
-    if steps_n:
-        for name, d, inc in (("x", dx, xi), ("y", dy, yi)):
-            derived.append(
-                worked(
-                    f"{name}_inc",
-                    inc,
-                    f"{name}_{{inc}} = \\frac{{\\Delta {name}}}{{\\text{{steps}}}} = "
-                    f"\\frac{{{fmt_short(d)}}}{{{steps_n}}} = " + _tex_value(inc),
-                )
-            )
-    if swapped:  # said first, so that every line below uses the swapped names
-        maj = "y" if steep else "x"
-        derived.insert(
-            0,
-            rule(
-                "swap",
-                f"\\text{{swap the end points so that }} {maj} \\text{{ increases: }} "
-                f"(x_1, y_1) = ({fmt_short(x1)}, {fmt_short(y1)}), \\ "
-                f"(x_2, y_2) = ({fmt_short(x2)}, {fmt_short(y2)})",
-            ),
-        )
     notes = (
         "$x_{k+1} = x_k + x_{inc}$ and $y_{k+1} = y_k + y_{inc}$, computed exactly;"
         + (
@@ -415,15 +473,8 @@ def _dda_solution(
         algorithm="dda",
         title=_title("Simple DDA line algorithm", *asked),
         given=_given(*asked),
-        derived=tuple(derived),
-        columns=(
-            heading("k", "k"),
-            heading("x", "x_k", 3),
-            heading("y", "y_k", 3),
-            heading("round_x", r"\operatorname{round}(x_k)"),
-            heading("round_y", r"\operatorname{round}(y_k)"),
-            heading("pixel", r"\text{pixel } (x, y)"),
-        ),
+        derived=_dda_derived(x1, y1, x2, y2, swapped),
+        columns=_DDA_COLUMNS,
         extra_keys=("x", "y", "round_x", "round_y"),
         steps=lambda: dda(x1, y1, x2, y2, rounding),
         pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2, rounding)),

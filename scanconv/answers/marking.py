@@ -1,204 +1,68 @@
 """Marking a student's step table against the answer of a question, with follow-through.
 
-:func:`mark` compares a :class:`~scanconv.core.student_table.StudentTable` row by row with
-the :class:`~scanconv.core.records.Solution` of the question. Until the first wrong row each
-row is compared with the answer; after it, **follow-through**: each row is judged by running
-the algorithm one step from the student's own previous row (:mod:`.models`), so one slip costs
-one row. The alignment is found, not assumed: the start-pixel row may be there or not, and a
-row may hold ``(x_k, y_k)`` (the notes' layout) or ``(x_{k+1}, y_{k+1})`` (the textbooks').
+:func:`mark` reads the student's table as the steps the question asks for
+(:mod:`.marking_rows`): in every layout the method can print (the notes' and the textbooks'),
+with and without the start row, and keeps the reading with the best follow-through score, so
+the layout is found, never guessed from a heading. The score is out of the number of steps the
+question asks for, whichever layout; the given start row is shown, not scored.
 
-:func:`diagnose` names a known convention (any knob combination of ``docs/conventions.md``,
-with the presets that use it) or a known mistake (each an explicit variant: the notes' p0 of
-errata E1, end points not swapped, the midpoint update with the old x, stopping one step early
-or late) when the student's whole table is exactly that variant's.
+**Follow-through** charges each slip once. Each step is judged from the student's own previous
+step by the method's own rule (:mod:`.models`): p_k must follow from the student's p_{k-1} and
+the move they took; the decision must be the rule's for the student's own p_k (a decision that
+disagrees with it is wrong once, and named); the point must be the one that decision reaches.
+The next step starts where the student's own move went. A step that is the answer's own is
+right whatever came before (a typo not carried on costs one step).
 
-:func:`marking_solution` makes the marking a :class:`~scanconv.core.records.Solution` whose
-table is the row-by-row marking, so every format of :mod:`scanconv.render` can show it.
+:func:`~.marking_diagnose.diagnose` names a known convention or mistake when the student's
+whole table is exactly that variant's; a table in the other circle form (p0 = 1 - r against
+d0 = 3 - 2r, or the reverse) has its pixels marked. :func:`marking_solution` makes the
+marking a :class:`~scanconv.core.records.Solution` every format of :mod:`scanconv.render`
+can show.
 """
 
 from __future__ import annotations
 
 import itertools
-import re
-from collections.abc import Callable, Sequence
-from fractions import Fraction
-from typing import Any, NamedTuple
+from collections.abc import Sequence
 
-from ..algorithms.conventions import KNOBS, PRESETS, ROUNDING_TEXT
 from ..core.checks import InputError
-from ..core.numeric import Number, fmt_short
-from ..core.records import Pixel, Quantity, Solution, Table, heading
+from ..core.records import Solution
 from ..core.student_table import Cell, StudentTable
-from .models import (
-    BresenhamCircle,
-    BresenhamLine,
-    DDALine,
-    GeneralCircle,
-    MidpointCircle,
-    MidpointEllipse,
-    Model,
-    NotesP0Line,
-    OldXMidpoint,
-    State,
-    UnswappedLine,
-    chain,
+from .marking_diagnose import OTHER_FORM, diagnose, model_for, other_form, states_steps
+from .marking_rows import (
+    LAYOUTS,
+    Expected,
+    Got,
+    Layout,
+    Marking,
+    Verdict,
+    exact_of,
+    pixel_of,
+    steps_of,
+    student_rows,
+    wrong_fields,
 )
+from .marking_text import batch_solution, explain, marking_solution, safe_text
+from .models import DDALine, Model, State, chain
+
+__all__ = [
+    "MAX_QUESTION_ROWS",
+    "Marking",
+    "Verdict",
+    "batch_solution",
+    "expect",
+    "mark",
+    "marking_solution",
+    "model_for",
+    "reached",
+    "safe_text",
+    "score",
+]
 
 MAX_QUESTION_ROWS = 10**4
 """Most rows of a question's table that ``check`` marks against: twice the longest student
 table (:data:`~scanconv.core.student_table.MAX_TABLE_ROWS`); a longer question is refused
 before any marking (its table, and each convention's, is held in memory)."""
-
-
-class Got(NamedTuple):
-    """One student row, as the marking reads it."""
-
-    where: str
-    point: tuple[Cell | None, Cell | None] | None
-    p: Cell | None
-    p_next: Cell | None
-    exact: tuple[Cell | None, Cell | None] | None
-
-
-class Expected(NamedTuple):
-    """What a row should hold, and the state it was judged from (for the explanation)."""
-
-    point: Pixel
-    p: Number | None
-    p_next: Number | None
-    exact: tuple[Number, Number] | None
-    source: State | None = None
-    """The state of the row (``at``) or the state its step starts from (``after``)."""
-    prev: State | None = None
-    """The state the row's p was computed from (``None``: the first row, p0)."""
-
-
-class Verdict(NamedTuple):
-    """The mark of one row."""
-
-    row: int
-    """1-based position among the marked rows."""
-    where: str
-    got: Got | None
-    expected: Expected | None
-    mark: str
-    """``right``, ``right (follow-through)``, ``wrong``, ``missing`` or ``extra``."""
-    wrong: tuple[str, ...] = ()
-    """The fields that are wrong: ``pixel``, ``p``, ``p_next``, ``exact``."""
-
-
-class Marking(NamedTuple):
-    """A marked table."""
-
-    verdicts: tuple[Verdict, ...]
-    right: int
-    total: int
-    first_error: str
-    diagnosis: str
-    follow_through: bool
-    """False: the command has no step model here, later rows are compared with the answer."""
-    fields: tuple[str, ...]
-    """What was marked: among ``pixel``, ``p``, ``p_next``, ``exact``."""
-    skipped: str = ""
-    """A student row left unmarked (the start pixel in a table of (x_{k+1}, y_{k+1}))."""
-
-
-# --- the model of a question ------------------------------------------------------------------
-
-
-def _given(solution: Solution) -> dict[str, Any]:
-    return {q.key: q.value for q in solution.given}
-
-
-def _ends(solution: Solution) -> tuple[int, int, int, int] | None:
-    """A line's end points as integers (``None``: not integers, or not a line)."""
-    g = _given(solution)
-    if "P1" not in g or "P2" not in g:
-        return None
-    (x1, y1), (x2, y2) = g["P1"], g["P2"]
-    v = [Fraction(x1), Fraction(y1), Fraction(x2), Fraction(y2)]
-    if any(f.denominator != 1 for f in v):
-        return None
-    return v[0].numerator, v[1].numerator, v[2].numerator, v[3].numerator
-
-
-def model_for(solution: Solution, knobs: dict[str, str] | None = None) -> Model | None:
-    """The step model of ``solution``'s algorithm with its conventions (``knobs`` override
-    them), or ``None`` for a command marked without follow-through."""
-    k = dict(solution.data.get("conventions", {}))
-    k.update(knobs or {})
-    g = _given(solution)
-    prim, algo = solution.primitive, solution.algorithm
-    if prim == "line" and "P1" in g and "P2" in g:
-        (x1, y1), (x2, y2) = g["P1"], g["P2"]
-        if algo == "bresenham":
-            ends = _ends(solution)
-            if ends is None:
-                return None
-            m: Model = BresenhamLine(*ends, k.get("tie", "step"), k.get("start", "swap"))
-            m.shape = "after" if solution.data.get("layout") == "textbook" else "at"
-            return m
-        if algo == "dda":
-            return DDALine(x1, y1, x2, y2, k.get("rounding", "half-up"), k.get("start", "given"))
-        return None
-    if prim == "circle" and "r" in g:
-        r = int(g["r"])
-        if algo == "midpoint":
-            shape = "after" if solution.data.get("layout") == "textbook" else "at"
-            return MidpointCircle(
-                r, k.get("tie", "step"), k.get("p0", "1-r"), k.get("loop", "strict"), shape
-            )
-        if algo == "bresenham":
-            return BresenhamCircle(r, k.get("tie", "step"))
-        if algo == "general":
-            return GeneralCircle(r, k.get("tie", "step"), k.get("loop", "strict"))
-        return None
-    if prim == "ellipse" and algo == "midpoint" and "rx" in g:
-        return MidpointEllipse(
-            int(g["rx"]),
-            int(g["ry"]),
-            k.get("loop", "strict"),
-            k.get("tie", "step"),
-            k.get("p0", "exact"),
-        )
-    return None
-
-
-def rows_of(states: Sequence[State], shape: str, model: Model | None = None) -> list[Expected]:
-    """The rows a chain of states prints in a layout: ``at`` (a row per state) or ``after``
-    (a row per step: p_k and the point reached)."""
-    n = len(states)
-    if shape == "at":
-        return [
-            Expected(
-                s.point,
-                s.p,
-                states[i + 1].p if i + 1 < n else None,
-                s.exact,
-                s,
-                states[i - 1] if i else None,
-            )
-            for i, s in enumerate(states)
-        ]
-    return [
-        Expected(
-            states[i + 1].point,
-            states[i].p,
-            states[i + 1].p,
-            states[i + 1].exact,
-            states[i],
-            states[i - 1] if i else None,
-        )
-        for i in range(n - 1)
-    ]
-
-
-def _solution_rows(solution: Solution) -> list[Expected]:
-    """The answer's rows as printed, for a command without a model (pixels only)."""
-    steps = itertools.islice(solution.steps(), MAX_QUESTION_ROWS + 1)
-    rows = [Expected(s.pixel, s.p, None, None) for s in steps]
-    _check_size(len(rows))
-    return rows
 
 
 def _check_size(rows: int) -> None:
@@ -211,210 +75,212 @@ def _check_size(rows: int) -> None:
 
 
 def _agrees(model: Model, states: list[State], solution: Solution) -> bool:
-    """The model's chain prints the answer's own table (pixels and p): a safety net."""
-    rows = rows_of(states, model.shape)
-    steps = list(itertools.islice(solution.steps(), len(rows) + 1))
-    return len(steps) == len(rows) and all(
-        r.point == s.pixel and r.p == s.p for r, s in zip(rows, steps, strict=True)
+    """The model's chain has the answer's own pixels and p: a safety net."""
+    steps = list(itertools.islice(solution.steps(), len(states) + 1))
+    pts = [s.pixel for s in steps]
+    ps = [s.p for s in steps]
+    want = [s.point for s in states]
+    if pts == want:
+        return [s.p for s in states] == ps or not any(p is not None for p in ps)
+    after = want[1:]  # the answer printed in the textbooks' layout
+    return pts == after and ps == [s.p for s in states[:-1]]
+
+
+# --- follow-through ---------------------------------------------------------------------------
+
+
+def expect(
+    model: Model, base: State, got: Got, marked: set[str], own_p: bool = True
+) -> Expected | None:
+    """What the student's step ``got`` should hold, judged from ``base`` (the state their own
+    previous step reached); ``None``: the method's loop has already ended there. The decision
+    is taken on the student's own p (``own_p``), or on the right one (a p miscopied after
+    deciding)."""
+    p_used = got.p.value if (own_p and "p" in marked and got.p is not None) else base.p
+    s = base._replace(p=p_used)
+    rule_move = model.decide(s)
+    by_rule = model.step(s, rule_move)
+    if by_rule is None or model.done(s, by_rule):
+        return None
+    moves = model.moves(s)
+    said = got.decision if ("decision" in marked and got.decision in moves) else None
+    mine = said
+    pix = pixel_of(got) if "pixel" in marked else None
+    if mine is None and pix is not None:
+        mine = next((m for m in moves if (t := model.step(s, m)) and t.point == pix), None)
+    taken = model.step(s, mine) if mine is not None else by_rule
+    assert taken is not None
+    point = (model.step(s, said) or by_rule).point if said is not None else by_rule.point
+    return Expected(
+        point,
+        base.p,
+        rule_move,
+        taken.p,
+        by_rule.exact,
+        s,
+        model.rule(s),
+        taken,
+        None,
+        by_rule,
     )
 
 
-# --- reading the student's rows ---------------------------------------------------------------
-
-
-def _pair(cells: dict[str, Any], pair: str, x: str, y: str) -> tuple[Cell | None, Cell | None]:
-    if pair in cells:
-        v = cells[pair]
-        return (None, None) if v is None else v
-    return (cells.get(x), cells.get(y))
-
-
-def student_rows(table: StudentTable, exact_algorithm: bool) -> tuple[list[Got], set[str]]:
-    """The student's rows as :class:`Got`, and the fields that will be marked."""
-    f = set(table.fields)
-    rounded = "pxy" if "pxy" in f else "px" if "px" in f else None
-    plain = "xy" if "xy" in f else "x" if "x" in f else None
-    pixel_src, exact_src = rounded or plain, None
-    if exact_algorithm and plain is not None:
-        if rounded is not None:
-            exact_src = plain
-        elif any(
-            c is not None and c.value.denominator != 1
-            for r in table.rows
-            for c in _pair(r.cells, "xy", "x", "y")
-        ):
-            pixel_src, exact_src = None, plain
-    marked = {"pixel"} if pixel_src else set()
-    if exact_src:
-        marked.add("exact")
-    marked |= {name for name in ("p", "p_next") if name in f}
-    rows = []
-    for r in table.rows:
-        c = r.cells
-        point = _pair(c, *_SOURCES[pixel_src]) if pixel_src else None
-        exact = _pair(c, *_SOURCES[exact_src]) if exact_src else None
-        rows.append(Got(r.where, point, _one(c.get("p")), _one(c.get("p_next")), exact))
-    return rows, marked
-
-
-def _one(v: Any) -> Cell | None:
-    return v if isinstance(v, Cell) else None
-
-
-_SOURCES = {"pxy": ("pxy", "px", "py"), "px": ("pxy", "px", "py"), "xy": ("xy", "x", "y")}
-_SOURCES["x"] = _SOURCES["xy"]
-
-
-def _same(c: Cell | None, v: Number | None) -> bool:
-    """A student's number equals an exact value: exactly, or written to 2 or more decimals
-    and within one unit of the last one (``2.333`` for 7/3, ``0.66`` for 2/3)."""
-    if c is None or v is None:
-        return c is None and v is None
-    return c.value == v or (c.places >= 2 and abs(c.value - v) <= Fraction(1, 10**c.places))
-
-
-def _wrong_fields(got: Got, exp: Expected, marked: set[str], last: bool) -> tuple[str, ...]:
-    wrong = []
-    if "pixel" in marked and (
-        got.point is None
-        or got.point[0] is None
-        or got.point[1] is None
-        or (got.point[0].value, got.point[1].value) != exp.point
-    ):
-        wrong.append("pixel")
-    if "exact" in marked and exp.exact is not None:
-        e = got.exact or (None, None)
-        if not (_same(e[0], exp.exact[0]) and _same(e[1], exp.exact[1])):
-            wrong.append("exact")
-    for name, want, have in (("p", exp.p, got.p), ("p_next", exp.p_next, got.p_next)):
-        if name not in marked or want is None or (have is None and last):
+def reached(model: Model, exp: Expected, got: Got, marked: set[str]) -> list[State]:
+    """Where the student's own step went, where the next step starts: after the move their
+    point (or decision) shows, or, if their point is a slip of the pen, after the rule's
+    move; both at their own point, with their own exact values and p_{k+1} where written."""
+    out: list[State] = []
+    pix = pixel_of(got) if "pixel" in marked else None
+    ex = exact_of(got) if "exact" in marked else None
+    for t in (exp.taken, exp.ruled):
+        if t is None:
             continue
-        if not _same(have, want):
-            wrong.append(name)
-    return tuple(wrong)
+        if pix is not None and pix != t.point:
+            t = model.at(pix, t)
+        if ex is not None:
+            t = t._replace(exact=ex)
+        if "p_next" in marked and got.p_next is not None:
+            t = t._replace(p=got.p_next.value)
+        if t not in out:
+            out.append(t)
+    return out
+
+
+def _judged(
+    model: Model, bases: list[State], got: Got, marked: set[str], last: bool
+) -> Expected | None:
+    """The step from the base that explains the student's step best (fewest wrong fields)."""
+    best: tuple[int, Expected] | None = None
+    for b, own_p in itertools.product(bases, (True, False)):
+        e = expect(model, b, got, marked, own_p)
+        if e is not None:
+            n = len(wrong_fields(got, e, marked, last))
+            if best is None or n < best[0]:
+                best = (n, e)
+            if n == 0:
+                break
+    return None if best is None else best[1]
+
+
+def _follow(
+    model: Model, steps: list[Got], answer: list[Expected], marked: set[str]
+) -> list[Verdict]:
+    """Each step marked by follow-through (see the module's docstring)."""
+    verdicts: list[Verdict] = []
+    bases = [model.start()]
+    prev: State | None = None
+    error = False
+    for i, got in enumerate(steps):
+        last = i == len(steps) - 1
+        own = answer[i] if i < len(answer) else None
+        exp: Expected | None = own  # the answer's own step is right whatever came before
+        if own is None or _wrong(got, own, marked, last):
+            exp = _judged(model, bases, got, marked, last) or own
+        from_answer = exp is own
+        if exp is None:
+            verdicts.append(Verdict(i + 1, got.where, got, None, "extra"))
+            error = True
+            continue
+        if not from_answer:
+            exp = exp._replace(prev=prev)
+            from_answer = not error
+        wrong = wrong_fields(got, exp, marked, last)
+        mark_ = "wrong" if wrong else "right" if from_answer else "right (follow-through)"
+        where = got.pixel_where if wrong and set(wrong) <= {"pixel", "exact"} else got.where
+        verdicts.append(Verdict(i + 1, where or got.where, got, exp, mark_, wrong))
+        error = error or bool(wrong)
+        prev = exp.state
+        bases = reached(model, exp, got, marked)
+    # the steps the student did not write: follow on from their last one
+    missing = len(answer) - len(steps)
+    while bases and missing > 0:
+        nxt = expect(model, bases[0], Got("-", None, None, None, None, None), set())
+        if nxt is None or nxt.taken is None:
+            break
+        verdicts.append(Verdict(len(verdicts) + 1, "-", None, nxt._replace(prev=prev), "missing"))
+        prev, bases, missing = nxt.state, [nxt.taken], missing - 1
+    for i in range(max(0, missing)):
+        own = answer[len(answer) - missing + i]
+        verdicts.append(Verdict(len(verdicts) + 1, "-", None, own, "missing"))
+    return verdicts
+
+
+def _wrong(got: Got, exp: Expected, marked: set[str], last: bool) -> bool:
+    return bool(wrong_fields(got, exp, marked, last))
+
+
+def _straight(steps: list[Got], answer: list[Expected], marked: set[str]) -> list[Verdict]:
+    """Each row compared with the answer's row in the same position (no model)."""
+    verdicts = []
+    for i, got in enumerate(steps):
+        if i >= len(answer):
+            verdicts.append(Verdict(i + 1, got.where, got, None, "extra"))
+            continue
+        wrong = wrong_fields(got, answer[i], marked, i == len(steps) - 1)
+        verdicts.append(
+            Verdict(i + 1, got.where, got, answer[i], "wrong" if wrong else "right", wrong)
+        )
+    for e in answer[len(steps) :]:
+        verdicts.append(Verdict(len(verdicts) + 1, "-", None, e, "missing"))
+    return verdicts
+
+
+def score(verdicts: Sequence[Verdict], total: int) -> int:
+    """Right steps among the first ``total``, less one for each row past them."""
+    counted = [v for v in verdicts if v.row > 0]
+    right = sum(v.mark.startswith("right") for v in counted[:total])
+    return max(0, right - max(0, len(counted) - total))
 
 
 # --- marking ----------------------------------------------------------------------------------
 
 
-class _Layout(NamedTuple):
-    shape: str
-    skip_expected: int
-    """1: the student left out the start row of an ``at`` table."""
-    skip_student: int
-    """1: the student's first row is the start pixel of an ``after`` table (not marked)."""
-
-
-def _layouts(table: StudentTable, default: str) -> list[_Layout]:
-    order = ["after", "at"] if table.after or default == "after" else ["at", "after"]
-    out = []
-    for shape in order:
-        out += [
-            _Layout(shape, 0, 0),
-            _Layout(shape, 1, 0) if shape == "at" else _Layout(shape, 0, 1),
-        ]
-    return out
-
-
-def _starts_at(got: Got, point: Pixel) -> bool:
-    return (
-        got.point is not None
-        and got.point[0] is not None
-        and got.point[1] is not None
-        and (got.point[0].value, got.point[1].value) == point
+def _start_ok(start: Got | None, lay: Layout, point: tuple[int, int]) -> bool:
+    """A textbook table's first row is its start row only if it is the start pixel."""
+    return not (lay.shape == "after" and lay.start) or (
+        start is not None and pixel_of(start) == point
     )
-
-
-def _straight(
-    gots: list[Got], rows: Callable[[str], list[Expected]], lay: _Layout, marked: set[str]
-) -> tuple[int, list[Expected], list[Got]] | None:
-    """Rows right when compared position by position in one layout (``None``: not possible)."""
-    exp = rows(lay.shape)
-    if lay.skip_student:
-        start = rows("at")[:1]
-        if not (gots and start and _starts_at(gots[0], start[0].point)):
-            return None
-    exp = exp[lay.skip_expected :]
-    mine = gots[lay.skip_student :]
-    right = sum(
-        not _wrong_fields(g, e, marked, i == len(mine) - 1)
-        for i, (g, e) in enumerate(zip(mine, exp, strict=False))
-    )
-    return right - abs(len(exp) - len(mine)), exp, mine
-
-
-def _of(states: Sequence[State]) -> Callable[[str], list[Expected]]:
-    return lambda shape: rows_of(states, shape)
 
 
 def _best(
-    gots: list[Got], states: list[State], layouts: list[_Layout], marked: set[str]
-) -> tuple[_Layout, list[Expected], list[Got]]:
-    best: tuple[int, int, _Layout, list[Expected], list[Got]] | None = None
-    for n, lay in enumerate(layouts):
-        found = _straight(gots, _of(states), lay, marked)
-        if found is None:
+    model: Model, rows: list[Got], answer: list[Expected], marked: set[str], hint: str
+) -> tuple[Layout, list[Verdict], Got | None]:
+    """The layout (and start row or not) with the best follow-through score."""
+    first = model.start().point
+    best: tuple[int, int, Layout, list[Verdict], Got | None] | None = None
+    order = sorted(LAYOUTS, key=lambda lay: lay.shape != hint)
+    for n, lay in enumerate(order):
+        steps, start = steps_of(rows, lay, marked)
+        if not _start_ok(start, lay, first):
             continue
-        score, exp, mine = found
-        if best is None or score > best[0]:
-            best = (score, n, lay, exp, mine)
+        verdicts = _follow(model, steps, answer, marked)
+        key = score(verdicts, len(answer))
+        if best is None or key > best[0]:
+            best = (key, n, lay, verdicts, start)
+        if all(v.mark.startswith("right") for v in verdicts):
+            break  # every step right: no reading does better
     assert best is not None
     return best[2], best[3], best[4]
 
 
-def _student_state(got: Got, base: State, marked: set[str]) -> State:
-    """The state a student's row stands at: their values, the base state's where they wrote
-    none."""
-    point = base.point
-    if "pixel" in marked and got.point and got.point[0] is not None and got.point[1] is not None:
-        point = (
-            (int(got.point[0].value), int(got.point[1].value))
-            if all(c.value.denominator == 1 for c in got.point if c is not None)
-            else base.point
-        )
-    exact = base.exact
-    if "exact" in marked and got.exact and got.exact[0] is not None and got.exact[1] is not None:
-        exact = (got.exact[0].value, got.exact[1].value)
-    p = got.p.value if ("p" in marked and got.p is not None) else base.p
-    return base._replace(point=point, exact=exact, p=p)
+def _shifted(rows: list[Got], dx: int, dy: int) -> list[Got]:
+    """The rows with their points moved by (dx, dy)."""
+
+    def move(pt: tuple[Cell | None, Cell | None] | None) -> tuple[Cell | None, Cell | None] | None:
+        if pt is None or pt[0] is None or pt[1] is None:
+            return pt
+        return (pt[0]._replace(value=pt[0].value + dx), pt[1]._replace(value=pt[1].value + dy))
+
+    return [g._replace(point=move(g.point)) for g in rows]
 
 
-def _resettle(model: Model, s: State) -> State:
-    """After a student's point, the ellipse re-decides its region (and p2_0) there."""
-    if isinstance(model, MidpointEllipse) and s.region == 1:
-        return model.enter(s.point[0], s.point[1], s.p, s.k)
-    return s
-
-
-def _next_from(
-    model: Model, shape: str, got: Got, judged: Expected, marked: set[str]
-) -> Expected | None:
-    """Follow-through: the row after the student's row ``got`` (judged as ``judged``)."""
-    base = judged.source
-    if base is None:
-        return None
-    if shape == "at":
-        t = model.advance(_student_state(got, base, marked))
-        if t is None:
-            return None
-        after = model.advance(t)
-        return Expected(
-            t.point, t.p, after.p if after else None, t.exact, t, _student_state(got, base, marked)
-        )
-    # after: the student's row holds p_k (of the base state) and the point reached
-    u = base._replace(p=got.p.value if ("p" in marked and got.p is not None) else base.p)
-    a = model.advance(u)
-    if a is None:
-        return None
-    reached = _student_state(got._replace(p=None), a, marked)
-    if "p_next" in marked and got.p_next is not None:
-        reached = reached._replace(p=got.p_next.value)
-    elif reached.point != a.point:  # their own point: the p there follows from it
-        reached = _resettle(model, reached)
-    b = model.advance(reached)
-    if b is None:
-        return None
-    return Expected(b.point, reached.p, b.p, b.exact, reached, u)
+def _centre(solution: Solution) -> tuple[int, int]:
+    given = {q.key: q.value for q in solution.given}
+    c = given.get("center", (0, 0))
+    try:
+        return int(c[0]), int(c[1])
+    except (TypeError, ValueError, IndexError):
+        return 0, 0
 
 
 def mark(table: StudentTable, solution: Solution) -> Marking:
@@ -426,444 +292,78 @@ def mark(table: StudentTable, solution: Solution) -> Marking:
         _check_size(len(states))
         if not _agrees(model, states, solution):  # pragma: no cover - the tests keep them equal
             model = None
-    exact_algo = isinstance(model, DDALine)
-    gots, marked = student_rows(table, exact_algo)
-    skipped = ""
-    if model is not None:
-        lay, exp_rows, mine = _best(gots, states, _layouts(table, model.shape), marked)
-        if lay.skip_student:
-            skipped = f"{gots[0].where}: the start pixel, not marked"
-    else:
-        lay, exp_rows, mine = _Layout("at", 0, 0), _solution_rows(solution), gots
-        marked.discard("p_next")
-        marked.discard("exact")
-    verdicts: list[Verdict] = []
-    error = False
-    judged: list[Expected | None] = []
-    for i, got in enumerate(mine):
-        if not error or model is None:
-            exp = exp_rows[i] if i < len(exp_rows) else None
-        else:
-            prev = judged[-1]
-            exp = _next_from(model, lay.shape, mine[i - 1], prev, marked) if prev else None
-        last = i == len(mine) - 1
-        answer_row = not error
-        if error and model is not None and i < len(exp_rows):
-            # a row that is the answer's own is right, whatever the slip before it (a typo
-            # that the student did not carry on costs one row, not two)
-            own = exp_rows[i]
-            if not _wrong_fields(got, own, marked, last):
-                exp, answer_row = own, True
-        if exp is None:
-            verdicts.append(Verdict(i + 1, got.where, got, None, "extra"))
-        else:
-            wrong = _wrong_fields(got, exp, marked, last)
-            mark_ = "wrong" if wrong else "right" if answer_row else "right (follow-through)"
-            verdicts.append(Verdict(i + 1, got.where, got, exp, mark_, wrong))
-        error = error or verdicts[-1].mark in ("wrong", "extra")
-        judged.append(exp)
-    # rows the student did not write
-    missing: list[Expected] = []
-    if not error or model is None:
-        missing = exp_rows[len(mine) :]
-    elif judged and judged[-1] is not None and mine:
-        prev_exp: Expected | None = judged[-1]
-        got = mine[-1]
-        while prev_exp is not None and len(missing) < MAX_QUESTION_ROWS:
-            nxt = _next_from(model, lay.shape, got, prev_exp, marked)
-            if nxt is None:
-                break
-            missing.append(nxt)
-            prev_exp, got = nxt, _as_got(nxt)
-    for e in missing[:MAX_QUESTION_ROWS]:
-        verdicts.append(Verdict(len(verdicts) + 1, "-", None, e, "missing"))
-    right = sum(v.mark.startswith("right") for v in verdicts)
+    rows, marked = student_rows(table, isinstance(model, DDALine))
+    if model is None:
+        return _mark_plain(rows, marked, solution)
+    answer = states_steps(model, states)
+    hint = "after" if table.after else model.shape
+    lay, verdicts, start = _best(model, rows, answer, marked, hint)
+    note = ""
+    xc, yc = _centre(solution)
+    if solution.primitive == "circle" and (xc, yc) != (0, 0):
+        moved = _shifted(rows, -xc, -yc)
+        lay2, v2, s2 = _best(model, moved, answer, marked, hint)
+        if score(v2, len(answer)) > score(verdicts, len(answer)):
+            rows, lay, verdicts, start = moved, lay2, v2, s2
+            note = (
+                f"The points are written as absolute pixels, the centre ({xc}, {yc}) added to "
+                "the octant's (x, y); they are marked as the octant's points."
+            )
+    diagnosis = ""
+    right = score(verdicts, len(answer))
+    if any(not v.mark.startswith("right") for v in verdicts):
+        diagnosis = diagnose(rows, solution, model, marked, hint)
+        other = other_form(model)
+        if OTHER_FORM in diagnosis and other is not None:
+            # the other form's own table: its pixels are marked (its loop may stop a step
+            # later, past the diagonal: the score is still out of the question's steps)
+            marked = marked - {"p", "p_next", "decision"}
+            theirs = states_steps(other, list(chain(other)))
+            lay, verdicts, start = _best(other, rows, theirs, marked, hint)
+            right = min(score(verdicts, len(theirs)), len(answer))
+    if note:
+        diagnosis = f"{note} {diagnosis}".strip()
+    return _marking(verdicts, len(answer), right, marked, diagnosis, True, lay, start)
+
+
+def _mark_plain(rows: list[Got], marked: set[str], solution: Solution) -> Marking:
+    """A command without a step model: each row compared with the answer's, pixels only."""
+    steps = itertools.islice(solution.steps(), MAX_QUESTION_ROWS + 1)
+    answer = [Expected(s.pixel, s.p) for s in steps]
+    _check_size(len(answer))
+    marked = marked - {"p_next", "exact", "decision"}
+    verdicts = _straight(rows, answer, marked)
+    right = score(verdicts, len(answer))
+    return _marking(verdicts, len(answer), right, marked, "", False, Layout("at", False), None)
+
+
+def _marking(
+    verdicts: list[Verdict],
+    total: int,
+    right: int,
+    marked: set[str],
+    diagnosis: str,
+    follow: bool,
+    lay: Layout,
+    start: Got | None,
+) -> Marking:
+    fields = tuple(f for f in ("p", "decision", "pixel", "exact", "p_next") if f in marked)
     first = next((v for v in verdicts if not v.mark.startswith("right")), None)
-    fields = tuple(f for f in ("pixel", "exact", "p", "p_next") if f in marked)
-    marking = Marking(
-        tuple(verdicts),
+    skipped = ""
+    shown = list(verdicts)
+    if start is not None:
+        pt = pixel_of(start)
+        at = "" if pt is None else f" {pt}"
+        skipped = f"{start.where}: the start pixel{at}, given in the question: shown, not scored"
+        start = start._replace(p=None, decision=None, p_next=None)
+        shown.insert(0, Verdict(0, start.where, start, None, "given (not scored)"))
+    return Marking(
+        tuple(shown),
         right,
-        len(verdicts),
-        explain(first, fields, lay.shape) if first else "",
-        "",
-        model is not None,
+        total,
+        explain(first, fields) if first else "",
+        diagnosis,
+        follow,
         fields,
         skipped,
-    )
-    if first is not None and model is not None:
-        marking = marking._replace(diagnosis=diagnose(gots, solution, model, marked, table))
-    return marking
-
-
-def _as_got(e: Expected) -> Got:
-    def c(v: Number | None) -> Cell | None:
-        return None if v is None else Cell(Fraction(v), 0)
-
-    exact = (c(e.exact[0]), c(e.exact[1])) if e.exact else None
-    return Got("-", (c(e.point[0]), c(e.point[1])), c(e.p), c(e.p_next), exact)
-
-
-# --- words ------------------------------------------------------------------------------------
-
-
-def _num(c: Cell | None) -> str:
-    return "blank" if c is None else fmt_short(c.value)
-
-
-def got_text(got: Got | None, fields: Sequence[str]) -> str:
-    """A student row in a few words: ``p = -8, (3, 3)``."""
-    if got is None:
-        return "-"
-    parts = []
-    for f in fields:
-        if f == "p":
-            parts.append(f"p = {_num(got.p)}")
-        elif f == "pixel":
-            pt = got.point or (None, None)
-            parts.append(f"({_num(pt[0])}, {_num(pt[1])})")
-        elif f == "exact":
-            ex = got.exact or (None, None)
-            parts.append(f"x = {_num(ex[0])}, y = {_num(ex[1])}")
-        elif f == "p_next":
-            parts.append(f"next p = {_num(got.p_next)}")
-    return ", ".join(parts)
-
-
-def expected_text(exp: Expected | None, fields: Sequence[str]) -> str:
-    """An expected row in the same words (``-`` where there is no value)."""
-    if exp is None:
-        return "-"
-
-    def n(v: Number | None) -> str:
-        return "-" if v is None else fmt_short(v)
-
-    parts = []
-    for f in fields:
-        if f == "p":
-            parts.append(f"p = {n(exp.p)}")
-        elif f == "pixel":
-            parts.append(f"({exp.point[0]}, {exp.point[1]})")
-        elif f == "exact" and exp.exact is not None:
-            parts.append(f"x = {n(exp.exact[0])}, y = {n(exp.exact[1])}")
-        elif f == "p_next":
-            parts.append(f"next p = {n(exp.p_next)}")
-    return ", ".join(parts)
-
-
-_NAMES = {"pixel": "the pixel", "exact": "the exact x and y", "p": "p", "p_next": "the next p"}
-
-
-def _state_text(s: State) -> str:
-    where = (
-        f"({fmt_short(s.exact[0])}, {fmt_short(s.exact[1])})"
-        if s.exact
-        else (f"({s.point[0]}, {s.point[1]})")
-    )
-    return where + ("" if s.p is None else f" with p = {fmt_short(s.p)}")
-
-
-def explain(v: Verdict, fields: Sequence[str], shape: str) -> str:
-    """The first error in one sentence.
-
-    >>> e = Expected((5, 4), -8, None, None, None, State((4, 3), 0))
-    >>> g = Got("line 5", (Cell(5, 0), Cell(4, 0)), Cell(-4, 0), None, None)
-    >>> explain(Verdict(4, "line 5", g, e, "wrong", ("p",)), ("pixel", "p"), "at")
-    'Row 4 (line 5): p should be -8, not -4 (the step from (4, 3) with p = 0).'
-    """
-    at = f"Row {v.row}" + (f" ({v.where})" if v.where != "-" else "")
-    if v.mark == "missing" and v.expected is not None:
-        return (
-            f"{at} is missing: the table stops before {expected_text(v.expected, fields)}, "
-            "one step early or more."
-        )
-    if v.mark == "extra" or v.expected is None:
-        return f"{at} is one row too many: the algorithm has already stopped."
-    parts = [
-        f"{_NAMES[w]} should be {expected_text(v.expected, (w,)).split(' = ')[-1]}, "
-        f"not {got_text(v.got, (w,)).split(' = ')[-1]}"
-        if w in ("p", "p_next")
-        else f"{_NAMES[w]} should be {expected_text(v.expected, (w,))}, not {got_text(v.got, (w,))}"
-        for w in v.wrong
-    ]
-    src, prev = v.expected.source, v.expected.prev
-    why = ""
-    if shape == "after" and src is not None and src.p is not None and "p" not in v.wrong:
-        why = f" (deciding on p = {fmt_short(src.p)} at ({src.point[0]}, {src.point[1]}))"
-    elif prev is not None:
-        why = f" (the step from {_state_text(prev)})"
-    elif "p" in v.wrong:
-        why = " (the first p is p0, from its formula)"
-    return f"{at}: {'; '.join(parts)}{why}."
-
-
-# --- diagnosis --------------------------------------------------------------------------------
-
-
-def _matches(
-    gots: list[Got],
-    rows: Callable[[str], list[Expected]],
-    table: StudentTable,
-    shape: str,
-    marked: set[str],
-) -> bool:
-    for lay in _layouts(table, shape):
-        found = _straight(gots, rows, lay, marked)
-        if found is not None:
-            right, exp, mine = found
-            if mine and len(exp) == len(mine) and right == len(mine):
-                return True
-    return False
-
-
-#: The table the course notes print for Bresenham's line from (2, 2) to (10, 6) (errata E1):
-#: p_k, the pixel plotted, p_{k+1}, row by row, as printed. No rule produces it (row 4 plots
-#: the NE step in the row that decides it, and p_{k+1} after NE is -20), so it is kept as data.
-NOTES_E1_TABLE = (
-    (-28, (2, 2), -20),
-    (-20, (3, 2), -12),
-    (-12, (4, 2), -4),
-    (-4, (5, 2), 4),
-    (4, (6, 3), -20),
-    (-20, (7, 3), -12),
-    (-12, (8, 3), -4),
-    (-4, (9, 3), 4),
-    (4, (10, 4), -20),
-)
-
-
-def _notes_e1(extra_end: bool) -> Callable[[str], list[Expected]]:
-    rows = [Expected(pt, p, q, None) for p, pt, q in NOTES_E1_TABLE]
-    if extra_end:  # "(For last step we plot (10, 6))"
-        rows.append(Expected((10, 6), None, None, None))
-    return lambda shape: rows if shape == "at" else []
-
-
-def _knob_text(name: str, value: str) -> str:
-    meaning = ROUNDING_TEXT[value] if name == "rounding" else KNOBS[name].values[value]
-    return f"{name} = {value} ({meaning})"
-
-
-Rows = Callable[[str], list[Expected]]
-"""The rows of a variant in a layout (``at`` or ``after``)."""
-
-MISTAKE = 100
-"""The rank of a known mistake: a convention that explains a table is named first."""
-
-
-def variants(solution: Solution, model: Model) -> list[tuple[int, str, Rows]]:
-    """The known conventions and mistakes for this question: ``(rank, label, rows)``, the
-    rank the number of knobs that differ from the question's, or :data:`MISTAKE`."""
-    prim, algo = solution.primitive, solution.algorithm
-    asked = dict(solution.data.get("conventions", {}))
-    names = [n for n, k in KNOBS.items() if k.applies_to(prim, algo) and n != "update"]
-    out: list[tuple[int, str, Rows]] = []
-    for values in itertools.product(*(KNOBS[n].choices_for(prim, algo) for n in names)):
-        combo = dict(zip(names, values, strict=True))
-        changed = {n: v for n, v in combo.items() if asked.get(n) != v}
-        if not changed:
-            continue
-        presets = [
-            p
-            for p, rules in PRESETS.items()
-            if prim in rules
-            and all(
-                rules[prim].get(n, KNOBS[n].default_for(prim, algo)) == v for n, v in combo.items()
-            )
-        ]
-        label = "the conventions " + " and ".join(_knob_text(n, v) for n, v in changed.items())
-        if presets:
-            many = len(presets) > 1
-            label += f" (as the {' and '.join(presets)} preset{'s use' if many else ' uses'})"
-        other = model_for(solution, combo)
-        if other is not None:
-            out.append((len(changed), label, _of(list(chain(other)))))
-    g = _given(solution)
-    if isinstance(model, BresenhamLine):
-        ends = _ends(solution)
-        assert ends is not None
-        tie, start = asked.get("tie", "step"), asked.get("start", "swap")
-        notes = NotesP0Line(*ends, tie, start)
-        out.append(
-            (
-                MISTAKE,
-                f"the course notes' p0 = 2Δy(y0 + 1/2) - 2Δx(x0 + 1) = {fmt_short(notes.p0())} "
-                "with the start point's own coordinates, which does not follow from the "
-                "algorithm (docs/errata.md, E1)",
-                _of(list(chain(notes))),
-            )
-        )
-        if ends == (2, 2, 10, 6):
-            for extra in (False, True):
-                out.append(
-                    (
-                        MISTAKE,
-                        "the table the course notes print for this line, from their p0 = -28 "
-                        "(docs/errata.md, E1)",
-                        _notes_e1(extra),
-                    )
-                )
-        x1, y1, x2, y2 = ends
-        steep = abs(y2 - y1) > abs(x2 - x1)
-        if (y2 - y1 if steep else x2 - x1) < 0:
-            naive = UnswappedLine(*ends, tie)
-            out.append(
-                (
-                    MISTAKE,
-                    "forgetting to swap the end points of a right-to-left line: the walk starts "
-                    f"at ({x1}, {y1}) and steps as if P2 were to the upper right",
-                    _of(list(chain(naive))),
-                )
-            )
-    if isinstance(model, MidpointCircle) and not isinstance(model, GeneralCircle):
-        r = int(g["r"])
-        old = OldXMidpoint(
-            r, asked.get("tie", "step"), asked.get("p0", "1-r"), asked.get("loop", "strict")
-        )
-        out.append(
-            (
-                MISTAKE,
-                "using the old x in the midpoint update: p + 2x_k + 1 instead of "
-                "p + 2x_{k+1} + 1 (or the equivalent 2x_k + 3)",
-                _of(list(chain(old))),
-            )
-        )
-
-    states = list(chain(model))
-    more = model.advance(states[-1], force=True)
-    out.append(
-        (MISTAKE, "stopping one step early (the loop's last step is missing)", _of(states[:-1]))
-    )
-    if more is not None:
-        out.append(
-            (MISTAKE, "stopping one step late (one step past the loop's end)", _of([*states, more]))
-        )
-    return out
-
-
-def diagnose(
-    gots: list[Got], solution: Solution, model: Model, marked: set[str], table: StudentTable
-) -> str:
-    """The known conventions or mistakes the student's whole table is exactly, in one line."""
-    found: list[tuple[int, str]] = []
-    for rank, label, rows in variants(solution, model):
-        if _matches(gots, rows, table, model.shape, marked):
-            found.append((rank, label))
-    if not found:
-        return ""
-    best = min(r for r, _ in found)
-    labels = [label for r, label in found if r == best]
-    return "The table is exactly that of " + "; or of ".join(labels) + "."
-
-
-# --- the answer -------------------------------------------------------------------------------
-
-
-_UNSAFE = re.compile(r"[^\w .,:=+/()<>-]")
-
-
-def safe_text(text: str, limit: int = 120) -> str:
-    """File names and command words for an answer's notes: no ``$`` (notes read it as math),
-    backslashes, braces or control characters.
-
-    >>> safe_text("al$ice{}.csv")
-    'al_ice__.csv'
-    """
-    return _UNSAFE.sub("_", text)[:limit]
-
-
-def marking_solution(marking: Marking, solution: Solution, name: str, question: str) -> Solution:
-    """The marking as a Solution: a table of row marks, the score, the first error and the
-    diagnosis (notes), and the same as JSON fields."""
-    fields = marking.fields
-    columns = (
-        heading("row", r"\text{row}"),
-        heading("line", r"\text{line}"),
-        heading("written", r"\text{written}"),
-        heading("expected", r"\text{expected}"),
-        heading("mark", r"\text{mark}"),
-    )
-    rows = [
-        (
-            v.row,
-            v.where.removeprefix("line "),
-            got_text(v.got, fields),
-            expected_text(v.expected, fields),
-            v.mark,
-        )
-        for v in marking.verdicts
-    ]
-    score = f"{marking.right}/{marking.total}"
-    notes = [f"Marked: {safe_text(name)} against scanconv {safe_text(question, 200)}."]
-    if marking.skipped:
-        notes.append(f"{marking.skipped}.")
-    notes.append(f"Score: {marking.right} of {marking.total} rows right.")
-    notes.append(
-        f"First error: {marking.first_error}"
-        if marking.first_error
-        else "No error: every row is right."
-    )
-    if marking.diagnosis:
-        notes.append(f"Diagnosis: {marking.diagnosis}")
-    notes.append(
-        "Follow-through: after the first error each row is judged from the student's own "
-        "previous row, so one slip costs one row."
-        if marking.follow_through
-        else "This command is marked without follow-through: each row is compared with the "
-        "answer's row in the same position."
-    )
-    notes.append("Columns marked: " + ", ".join(_NAMES[f] for f in fields) + ".")
-    return Solution(
-        primitive="check",
-        algorithm=solution.algorithm,
-        title=f"Marking: {solution.title}",
-        given=(),
-        derived=(
-            Quantity(
-                "score",
-                score,
-                f"score = {marking.right} / {marking.total}",
-                rf"\text{{score}} = {marking.right} / {marking.total}",
-            ),
-        ),
-        notes=tuple(n.replace("$", "") for n in notes),
-        tables=(Table("Marking, row by row", columns, lambda: iter(rows)),),
-        data={
-            "question": question,
-            "answer": name,
-            "score": marking.right,
-            "out_of": marking.total,
-            "first_error": marking.first_error,
-            "diagnosis": marking.diagnosis,
-            "follow_through": marking.follow_through,
-            "marked": list(fields),
-        },
-    )
-
-
-def batch_solution(
-    results: Sequence[tuple[str, int, int, str, str]], solution: Solution, question: str
-) -> Solution:
-    """The score sheet of a folder as a Solution for the text formats: a table of names and
-    scores, each file's first error and diagnosis as a note (CSV and JSON have their own
-    writers in :mod:`scanconv.render.marking`)."""
-    columns = (
-        heading("name", r"\text{name}"),
-        heading("score", r"\text{score}"),
-        heading("out_of", r"\text{out of}"),
-    )
-    rows = [(name, right, total) for name, right, total, _, _ in results]
-    notes = [f"{len(rows)} files marked against scanconv {safe_text(question, 200)}."]
-    for name, _, _, first, diagnosis in results:
-        if first:
-            said = f"{safe_text(name)}: {first}" + (f" Diagnosis: {diagnosis}" if diagnosis else "")
-            notes.append(said.replace("$", ""))
-    return Solution(
-        primitive="check",
-        algorithm=solution.algorithm,
-        title=f"Marks: {solution.title}",
-        given=(),
-        derived=(),
-        notes=tuple(notes),
-        tables=(Table("Scores", columns, lambda: iter(rows)),),
-        data={"question": question},
     )

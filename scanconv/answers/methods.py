@@ -24,7 +24,7 @@ fall-through to another method):
 >>> method("line", "midpoint-x")
 Traceback (most recent call last):
 ...
-scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from basic, dda, bresenham, wu)
+scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from basic, dda, bresenham, midpoint, wu)
 >>> method("circle", "midpoint").knobs
 ('tie', 'p0', 'loop', 'update')
 >>> methods_of("ellipse")
@@ -141,6 +141,22 @@ _LINE = (
         1.0,
         (),
         "Bresenham",
+    ),
+    Method(
+        "line",
+        "midpoint",
+        "midpoint line algorithm",
+        _A + "midpoint_line:midpoint_answer",
+        _G + "midpoint_line:midpoint_line",
+        _A + "midpoint_line:derivation",
+        None,
+        _A + "models:BresenhamLine",
+        None,
+        1.0,
+        (
+            ("pseudocode", "Bresenham's loop with d for p (the bresenham method's pseudocode)"),
+            ("raster", "raster.line's bresenham gives the same pixels (the default tie)"),
+        ),
     ),
     Method(
         "line",
@@ -304,6 +320,12 @@ _PROCESS = (
            _A + "clip:clip_line_solution", _G + "clipping:cohen_sutherland"),
     _plain("clip", "liang-barsky", "Liang-Barsky line clipping", _A + "clip:clip_line_solution",
            _G + "clipping:liang_barsky"),
+    _plain("clip", "cyrus-beck", "Cyrus-Beck line clipping (any convex window)",
+           _A + "cyrus_beck:cyrus_beck_solution", _G + "cyrus_beck:cyrus_beck"),
+    _plain("clip", "midpoint-subdivision", "midpoint subdivision line clipping",
+           _A + "midpoint_clip:midpoint_clip_solution", _G + "midpoint_clip:subdivide"),
+    _plain("clip", "weiler-atherton", "Weiler-Atherton polygon clipping (concave polygons)",
+           _A + "weiler_atherton:weiler_atherton_solution", _G + "weiler_atherton:weiler_atherton"),
     _plain("clip", "sutherland-hodgman", "Sutherland-Hodgman polygon clipping",
            _A + "clip_polygon:clip_polygon_solution", None,
            no_generator="the answer builds its four passes directly"),
@@ -335,10 +357,67 @@ _IMAGE = (
     ),
 )  # fmt: skip
 
+_DITHER = (
+    _plain("dither", "threshold", "thresholding", _A + "dither:threshold_solution",
+           _G + "dither:threshold"),
+    _plain("dither", "ordered", "ordered dither (Bayer matrix)", _A + "dither:ordered_solution",
+           _G + "dither:ordered"),
+    _plain("dither", "floyd-steinberg", "Floyd-Steinberg error diffusion",
+           _A + "dither:diffusion_solution", _G + "dither:error_diffusion", row_cost=2.0),
+    _plain("dither", "pattern", "halftone patterns", _A + "dither:pattern_solution", None,
+           no_generator="one pattern per level, from the Bayer matrix"),
+)  # fmt: skip
+
+_INSIDE = tuple(
+    _plain("inside", rule_name, f"inside-outside test ({title})", _A + "inside:inside_solution",
+           _G + "inside:edge_tests")
+    for rule_name, title in (("even-odd", "even-odd rule"), ("nonzero", "nonzero winding rule"))
+)  # fmt: skip
+
+_FRAMEBUFFER = (
+    _plain("framebuffer", "arithmetic", "frame-buffer arithmetic",
+           _A + "framebuffer:framebuffer_solution", None,
+           no_generator="arithmetic, worked in one pass"),
+)  # fmt: skip
+
+_ATTRIBUTES = (
+    _plain("linestyle", "mask", "line style from a pixel mask",
+           _A + "attributes:line_style_solution", _G + "attributes:styled"),
+    _plain("thickline", "replication", "thick line by pixel replication",
+           _A + "attributes:thick_line_solution", _G + "attributes:thick"),
+    _plain("thickline", "brush", "thick line by a rectangular brush",
+           _A + "attributes:thick_line_solution", _G + "attributes:thick"),
+)  # fmt: skip
+
+_CHARACTERS = (
+    _plain("characters", "bitmap", "bitmap character generation",
+           _A + "characters:bitmap_solution", _G + "characters:draw_bitmap"),
+    _plain("characters", "stroke", "stroke character generation",
+           _A + "characters:stroke_solution", _G + "characters:draw_strokes"),
+    _plain("characters", "storage", "bitmap font storage",
+           _A + "characters:font_storage_solution", None,
+           no_generator="arithmetic, worked in one pass"),
+)  # fmt: skip
+
 METHODS: dict[str, Method] = {
-    m.key: m for m in (*_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE)
-}
+    m.key: m
+    for m in (
+        *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE,
+        *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS,
+    )
+}  # fmt: skip
 """Every method record, by ``"command/method"``."""
+
+
+DOCUMENTS = {
+    "compare": "sets the records of one command's methods side by side",
+    "sheet": "a list of questions, each answered by its command's method",
+    "practice": "seeded questions over the methods' records",
+    "check": "marks a student's table against a method's answer",
+    "theory": "the notes' written answers (answers/topics: one Topic record each)",
+    "exam": "the notes' exam as a sheet",
+}
+"""The commands that have no method of their own: they assemble other answers."""
 
 
 def methods_of(command: str) -> tuple[str, ...]:

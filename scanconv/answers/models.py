@@ -27,7 +27,7 @@ from typing import NamedTuple
 from ..algorithms.conventions import rounder
 from ..algorithms.lines import dda_increments, dda_steps
 from ..core.numeric import Number, normalize, round_c_cast
-from ..core.records import Pixel
+from ..core.records import Move, Pixel
 
 
 class State(NamedTuple):
@@ -44,8 +44,10 @@ class State(NamedTuple):
 
 
 class Model:
-    """The start of a chain and one step from any state (``None``: the loop has ended; with
-    ``force`` one more step is taken anyway, for "stopped one step late")."""
+    """The start of a chain and one step from any state: :meth:`decide` names the move the
+    method's rule takes from a state, :meth:`step` takes a given move (the rule's, or a
+    student's own), :meth:`advance` is the two (``None``: the loop has ended; with ``force``
+    one more step is taken anyway, for "stopped one step late")."""
 
     shape = "at"
     """``"at"``: a row is a state (the notes' layout); ``"after"``: a row holds p_k and the
@@ -54,8 +56,43 @@ class Model:
     def start(self) -> State:
         raise NotImplementedError
 
-    def advance(self, s: State, force: bool = False) -> State | None:
+    def moves(self, s: State) -> tuple[str, ...]:
+        """The moves a step from ``s`` can take (``()``: the method makes no decision)."""
+        return ()
+
+    def decide(self, s: State) -> str | None:
+        """The move the method's rule takes from ``s`` (``None``: no decision)."""
+        return None
+
+    def rule(self, s: State) -> str:
+        """The rule that decides at ``s``, in words: ``p >= 0 chooses NE``."""
+        return ""
+
+    def step(self, s: State, move: str | None) -> State | None:
+        """The state one step from ``s`` by ``move`` (``None``: no step is defined)."""
         raise NotImplementedError
+
+    def done(self, s: State, t: State) -> bool:
+        """The loop ends at ``s`` (``t``: the step it would take)."""
+        raise NotImplementedError
+
+    def advance(self, s: State, force: bool = False) -> State | None:
+        t = self.step(s, self.decide(s))
+        if t is None or (not force and self.done(s, t)):
+            return None
+        return t
+
+    def at(self, point: Pixel, s: State) -> State:
+        """``s`` moved to a student's own ``point`` (the ellipse re-decides its region)."""
+        return s._replace(point=point)
+
+
+def _choice(p: Number, keep_if_below: Number, moves: tuple[str, str], sign: str = "p") -> str:
+    """The rule's words: ``p < 0 chooses E`` or ``p >= 0 chooses NE``."""
+    keep = p < keep_if_below
+    if keep_if_below == 0:
+        return f"{sign} < 0 chooses {moves[0]}" if keep else f"{sign} >= 0 chooses {moves[1]}"
+    return f"{sign} <= 0 chooses {moves[0]}" if keep else f"{sign} > 0 chooses {moves[1]}"
 
 
 def chain(model: Model, limit: int = 10**4 + 1) -> Iterator[State]:
@@ -99,13 +136,37 @@ class BresenhamLine(Model):
     def start(self) -> State:
         return State(self.first, self.p0())
 
-    def advance(self, s: State, force: bool = False) -> State | None:
-        if (s.k >= self.n and not force) or s.p is None:
+    def _moves(self) -> tuple[str, str]:
+        """The two moves: the major step alone, and with the minor step."""
+        if not hasattr(self, "_pair"):
+            out = []
+            for minor in (0, self.s):
+                d = (minor, self.dir) if self.steep else (self.dir, minor)
+                out.append(Move.from_delta(*d).value)
+            self._pair = (out[0], out[1])
+        return self._pair
+
+    def moves(self, s: State) -> tuple[str, ...]:
+        return self._moves()
+
+    def decide(self, s: State) -> str | None:
+        if s.p is None:
+            return None
+        return self._moves()[0 if s.p < self.t else 1]
+
+    def rule(self, s: State) -> str:
+        return "" if s.p is None else _choice(s.p, self.t, self._moves())
+
+    def done(self, s: State, t: State) -> bool:
+        return s.k >= self.n
+
+    def step(self, s: State, move: str | None) -> State | None:
+        if s.p is None or move not in self._moves():
             return None
         x, y = s.point
         major, minor = (y, x) if self.steep else (x, y)
         major += self.dir
-        if s.p < self.t:
+        if move == self._moves()[0]:
             q = s.p + 2 * self.dmin
         else:
             minor += self.s
@@ -138,13 +199,16 @@ class UnswappedLine(BresenhamLine):
     def p0(self) -> Number:
         return 2 * self.smin - self.smaj
 
-    def advance(self, s: State, force: bool = False) -> State | None:
-        if (s.k >= self.n and not force) or s.p is None:
+    def _moves(self) -> tuple[str, str]:
+        return ("N", "NE") if self.steep else ("E", "NE")
+
+    def step(self, s: State, move: str | None) -> State | None:
+        if s.p is None or move not in self._moves():
             return None
         x, y = s.point
         major, minor = (y, x) if self.steep else (x, y)
         major += 1
-        if s.p < self.t:
+        if move == self._moves()[0]:
             q = s.p + 2 * self.smin
         else:
             minor += 1
@@ -182,9 +246,10 @@ class DDALine(Model):
     def start(self) -> State:
         return self.state(self.first, 0)
 
-    def advance(self, s: State, force: bool = False) -> State | None:
-        if s.k >= self.n and not force:
-            return None
+    def done(self, s: State, t: State) -> bool:
+        return s.k >= self.n
+
+    def step(self, s: State, move: str | None) -> State | None:
         x, y = s.exact if s.exact is not None else s.point
         return self.state((x + self.inc[0], y + self.inc[1]), s.k + 1)
 
@@ -212,11 +277,25 @@ class MidpointCircle(Model):
     def increment(self, x_old: int, x: int, y: int, se: bool) -> Number:
         return 2 * x + 1 - 2 * y if se else 2 * x + 1
 
-    def advance(self, s: State, force: bool = False) -> State | None:
-        x, y = s.point
-        if (not self.going(x, y) and not force) or s.p is None:
+    def moves(self, s: State) -> tuple[str, ...]:
+        return ("E", "SE")
+
+    def decide(self, s: State) -> str | None:
+        if s.p is None:
             return None
-        se = not (s.p < 0 or (self.keep and s.p == 0))
+        return "E" if s.p < 0 or (self.keep and s.p == 0) else "SE"
+
+    def rule(self, s: State) -> str:
+        return "" if s.p is None else _choice(s.p, 1 if self.keep else 0, ("E", "SE"))
+
+    def done(self, s: State, t: State) -> bool:
+        return not self.going(*s.point)
+
+    def step(self, s: State, move: str | None) -> State | None:
+        if s.p is None or move not in ("E", "SE"):
+            return None
+        x, y = s.point
+        se = move == "SE"
         nx, ny = x + 1, y - 1 if se else y
         return State((nx, ny), normalize(s.p + self.increment(x, nx, ny, se)), k=s.k + 1)
 
@@ -232,22 +311,37 @@ class OldXMidpoint(MidpointCircle):
 class BresenhamCircle(Model):
     """Bresenham's circle, d0 = 3 - 2r, as in :func:`scanconv.algorithms.circles.bresenham`."""
 
-    def __init__(self, r: int, tie: str = "step") -> None:
+    def __init__(self, r: int, tie: str = "step", xstep: str = "last") -> None:
         self.r, self.t = r, 1 if tie == "keep" else 0
+        # x (and y) stepped before d is updated: 4(x + 1) and 4((x + 1) - (y - 1)), so the
+        # increments are 4 (E) and 8 (SE) larger than Bresenham's own
+        self.extra_e, self.extra_se = (4, 8) if xstep == "first" else (0, 0)
 
     def start(self) -> State:
         return State((0, self.r), 3 - 2 * self.r)
 
-    def advance(self, s: State, force: bool = False) -> State | None:
+    def moves(self, s: State) -> tuple[str, ...]:
+        return ("E", "SE")
+
+    def decide(self, s: State) -> str | None:
         if s.p is None:
             return None
-        x, y = s.point
-        if s.p < self.t:
-            e, ny = s.p + 4 * x + 6, y
-        else:
-            e, ny = s.p + 4 * (x - y) + 10, y - 1
-        if x + 1 > ny and not force:
+        return "E" if s.p < self.t else "SE"
+
+    def rule(self, s: State) -> str:
+        return "" if s.p is None else _choice(s.p, self.t, ("E", "SE"), "d")
+
+    def done(self, s: State, t: State) -> bool:
+        return t.point[0] > t.point[1]
+
+    def step(self, s: State, move: str | None) -> State | None:
+        if s.p is None or move not in ("E", "SE"):
             return None
+        x, y = s.point
+        if move == "E":
+            e, ny = s.p + 4 * x + 6 + self.extra_e, y
+        else:
+            e, ny = s.p + 4 * (x - y) + 10 + self.extra_se, y - 1
         return State((x + 1, ny), e, k=s.k + 1)
 
 
@@ -301,28 +395,59 @@ class MidpointEllipse(Model):
         p1 = self.initial(self.ry2 - self.rx2 * self.ry + Fraction(self.rx2, 4))
         return self.enter(0, self.ry, p1, 0)
 
-    def advance(self, s: State, force: bool = False) -> State | None:
+    def at(self, point: Pixel, s: State) -> State:
+        if s.region == 1:
+            return self.enter(point[0], point[1], s.p, s.k)
+        return s._replace(point=point)
+
+    def moves(self, s: State) -> tuple[str, ...]:
+        if s.region == 1:
+            return ("E", "SE")
+        return ("S", "SE") if s.point[1] > 0 else ("E",)
+
+    def decide(self, s: State) -> str | None:
+        if s.region == 2 and s.point[1] <= 0:
+            return "E"
+        if s.p is None:
+            return None
+        if s.region == 1:
+            return "E" if s.p < 0 or (self.keep and s.p == 0) else "SE"
+        return "S" if s.p > 0 or (self.keep and s.p == 0) else "SE"
+
+    def rule(self, s: State) -> str:
+        if s.p is None:
+            return ""
+        if s.region == 1:
+            return _choice(s.p, 1 if self.keep else 0, ("E", "SE"), "p1")
+        if self.keep:
+            return "p2 >= 0 chooses S" if s.p >= 0 else "p2 < 0 chooses SE"
+        return "p2 > 0 chooses S" if s.p > 0 else "p2 <= 0 chooses SE"
+
+    def done(self, s: State, t: State) -> bool:
+        return s.region == 2 and s.point[1] <= 0 and s.point[0] >= self.rx
+
+    def step(self, s: State, move: str | None) -> State | None:
         x, y = s.point
+        if move not in self.moves(s):
+            return None
         if s.region == 1:
             if s.p is None:
                 return None
             x += 1
-            if s.p < 0 or (self.keep and s.p == 0):
+            if move == "E":
                 q = s.p + 2 * self.ry2 * x + self.ry2
             else:
                 y -= 1
                 q = s.p + 2 * self.ry2 * x - 2 * self.rx2 * y + self.ry2
             return self.enter(x, y, normalize(q), s.k + 1)
-        if y > 0 or force:
+        if y > 0:
             if s.p is None:
                 return None
             y -= 1
-            if s.p > 0 or (self.keep and s.p == 0):
+            if move == "S":
                 q = s.p - 2 * self.rx2 * y + self.rx2
             else:
                 x += 1
                 q = s.p + 2 * self.ry2 * x - 2 * self.rx2 * y + self.rx2
             return State((x, y), normalize(q) if y > 0 else None, region=2, k=s.k + 1)
-        if x < self.rx:  # the tip of a flat ellipse, along y = 0
-            return State((x + 1, 0), None, region=2, k=s.k + 1)
-        return None
+        return State((x + 1, 0), None, region=2, k=s.k + 1)  # the tip of a flat ellipse

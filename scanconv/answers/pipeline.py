@@ -10,11 +10,11 @@ the question gives.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
 from ..algorithms.lines import ALGORITHMS
-from ..algorithms.transform import rect_outline, viewport_scale
+from ..algorithms.transform import Rect, rect_outline, viewport_scale
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt_short, normalize, round_half_up
 from ..core.records import Column, Pixel, Quantity, Solution, Table, step_getter
@@ -41,6 +41,110 @@ def _stage(text: str) -> Quantity:
     return Quantity(f"stage{text[0]}", None, f"[{text}]", f"\\textbf{{{text}}}")
 
 
+def _to_device(
+    points: Sequence[tuple[Number, Number]],
+    names: Sequence[str],
+    w: Rect,
+    v: Rect,
+    derived: list[Quantity],
+    tables: list[Table],
+) -> list[tuple[Number, Number]]:
+    """Stage 2: the window-to-viewport scale (its working and mapping table added) and the
+    exact device points."""
+    derived.append(_stage("2. window to viewport"))
+    derived += scale_parts(w, v)
+    sx, sy, tx, ty = viewport_scale(w, v)
+    dev = [(normalize(sx * x + tx), normalize(sy * y + ty)) for x, y in points]
+    tables.append(
+        mapping_table(list(zip(names, points, strict=True)), w, v, "Stage 2, window to viewport")
+    )
+    return dev
+
+
+_LINE_NOTES = (
+    "Stages: 1. clip the world-coordinate segment against the window; 2. map the window to "
+    "the viewport (device coordinates); 3. round the end points half up, floor(v + 1/2); "
+    "4. scan convert; 5. the frame buffer (the grid).",
+    "The window is closed (a point on an edge is inside); region codes are written T B R L.",
+)
+
+
+def _check_line_method(algo: str, clip: str) -> None:
+    check_method(clip, "clip")
+    if algo not in ALGORITHMS:
+        raise InputError(
+            f"unknown line algorithm {algo!r} (choose from {', '.join(ALGORITHMS)})", "algo"
+        )
+
+
+def _clipped_quantity(seg: tuple[tuple[Number, Number], ...]) -> Quantity:
+    return Quantity(
+        "clipped",
+        [list(seg[0]), list(seg[1])],
+        f"clipped: {pt_approx(seg[0])} to {pt_approx(seg[1])}",
+        f"\\text{{clipped: }} {pt(seg[0])} \\text{{ to }} {pt(seg[1])}",
+    )
+
+
+def _device_quantities(dev: list[tuple[Number, Number]]) -> list[Quantity]:
+    return [
+        Quantity(
+            name, list(q), f"{name} = (sx·x + tx, sy·y + ty) = {pt_approx(q)}", f"{name} = {pt(q)}"
+        )
+        for name, q in zip(("P1'", "P2'"), dev, strict=True)
+    ]
+
+
+def _scan_stage(
+    algo: str, rounded: list[Pixel], derived: list[Quantity], tables: list[Table]
+) -> Solution:
+    """Stage 4: the line between the rounded end points (its working and step table added)."""
+    (a, b), (c, d) = rounded
+    if algo == "wu":
+        raise InputError("the pipeline scan converts with bresenham, dda or basic, not wu", "algo")
+    line = line_solution(algo, a, b, c, d)
+    derived.append(_stage(f"4. scan convert ({line.title})"))
+    derived += [q._replace(key=f"line_{q.key}") for q in line.derived]
+    if line.columns:
+        get = step_getter(line.columns, line.extra_keys)
+
+        def rows() -> Iterator[tuple]:
+            return (get(s) for s in line.steps())
+
+        tables.append(Table(f"Stage 4, scan conversion: {line.title}", line.columns, rows))
+    return line
+
+
+def _line_given(
+    p1: tuple[Number, Number], p2: tuple[Number, Number], w: Rect, v: Rect
+) -> tuple[Quantity, ...]:
+    return (
+        Quantity("P1", list(p1), f"P1 = {pt(p1)}", f"P_1 = {pt(p1)}"),
+        Quantity("P2", list(p2), f"P2 = {pt(p2)}", f"P_2 = {pt(p2)}"),
+        rect_quantity("window", w, "w"),
+        rect_quantity("viewport", v, "v"),
+    )
+
+
+def _rounding_stage(dev: list[tuple[Number, Number]], derived: list[Quantity]) -> list[Pixel]:
+    """Stage 3: the device end points rounded half up (their working added)."""
+    derived.append(_stage("3. round the end points"))
+    rounded = [(round_half_up(q[0]), round_half_up(q[1])) for q in dev]
+    derived += [_round_work(n, q, r) for n, q, r in zip(("Q1", "Q2"), dev, rounded, strict=True)]
+    return rounded
+
+
+def _union_box(
+    frame: tuple[int, int, int, int], bbox: tuple[int, int, int, int]
+) -> tuple[int, int, int, int]:
+    return (
+        min(frame[0], bbox[0]),
+        min(frame[1], bbox[1]),
+        max(frame[2], bbox[2]),
+        max(frame[3], bbox[3]),
+    )
+
+
 def pipeline_line_solution(
     x1: Number,
     y1: Number,
@@ -62,31 +166,15 @@ def pipeline_line_solution(
     """
     w = check_rect(window, "window", "window")
     v = check_rect(viewport, "viewport", "viewport")
-    check_method(clip, "clip")
-    if algo not in ALGORITHMS:
-        raise InputError(
-            f"unknown line algorithm {algo!r} (choose from {', '.join(ALGORITHMS)})", "algo"
-        )
+    _check_line_method(algo, clip)
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
     derived = [_stage(f"1. clip in world coordinates ({METHOD_NAMES[clip]})")]
     clip_work, clip_tables, seg = clip_line_parts(p1, p2, w, clip)
     derived += clip_work
     tables = [Table(f"Stage 1, clipping: {t.title}", t.columns, t.rows) for t in clip_tables]
-    notes = [
-        "Stages: 1. clip the world-coordinate segment against the window; 2. map the window to "
-        "the viewport (device coordinates); 3. round the end points half up, floor(v + 1/2); "
-        "4. scan convert; 5. the frame buffer (the grid).",
-        "The window is closed (a point on an edge is inside); region codes are written T B R L.",
-    ]
-    given = (
-        Quantity("P1", list(p1), f"P1 = {pt(p1)}", f"P_1 = {pt(p1)}"),
-        Quantity("P2", list(p2), f"P2 = {pt(p2)}", f"P_2 = {pt(p2)}"),
-        rect_quantity("window", w, "w"),
-        rect_quantity("viewport", v, "v"),
-    )
+    notes = list(_LINE_NOTES)
+    given = _line_given(p1, p2, w, v)
     title = f"Scan-conversion pipeline: line {pt(p1)} to {pt(p2)}, window {rect_text(w)}, viewport {rect_text(v)}"
-    vx0, vy0, vx1, vy1 = (round_half_up(c) for c in v)
-    frame: tuple[int, int, int, int] = (vx0, vy0, vx1, vy1)
     data: dict = {"clipped": None, "device": None, "rounded": None}
     if seg is None:
         derived.append(
@@ -99,55 +187,14 @@ def pipeline_line_solution(
             primitive="pipeline", algorithm=algo, title=title, given=given, derived=tuple(derived),
             notes=tuple(notes), tables=tuple(tables), data=data,
         )  # fmt: skip
-    derived.append(
-        Quantity(
-            "clipped",
-            [list(seg[0]), list(seg[1])],
-            f"clipped: {pt_approx(seg[0])} to {pt_approx(seg[1])}",
-            f"\\text{{clipped: }} {pt(seg[0])} \\text{{ to }} {pt(seg[1])}",
-        )
-    )
-    derived.append(_stage("2. window to viewport"))
-    derived += scale_parts(w, v)
-    sx, sy, tx, ty = viewport_scale(w, v)
-    dev = [(normalize(sx * x + tx), normalize(sy * y + ty)) for x, y in seg]
-    for name, q in zip(("P1'", "P2'"), dev, strict=True):
-        derived.append(
-            Quantity(
-                name,
-                list(q),
-                f"{name} = (sx·x + tx, sy·y + ty) = {pt_approx(q)}",
-                f"{name} = {pt(q)}",
-            )
-        )
-    tables.append(
-        mapping_table(
-            list(zip(("P1'", "P2'"), seg, strict=True)), w, v, "Stage 2, window to viewport"
-        )
-    )
-    derived.append(_stage("3. round the end points"))
-    rounded = [(round_half_up(q[0]), round_half_up(q[1])) for q in dev]
-    derived += [_round_work(n, q, r) for n, q, r in zip(("Q1", "Q2"), dev, rounded, strict=True)]
-    (a, b), (c, d) = rounded
-    if algo == "wu":
-        raise InputError("the pipeline scan converts with bresenham, dda or basic, not wu", "algo")
-    line = line_solution(algo, a, b, c, d)
-    derived.append(_stage(f"4. scan convert ({line.title})"))
-    derived += [q._replace(key=f"line_{q.key}") for q in line.derived]
+    derived.append(_clipped_quantity(seg))
+    dev = _to_device(seg, ("P1'", "P2'"), w, v, derived, tables)
+    derived += _device_quantities(dev)
+    rounded = _rounding_stage(dev, derived)
+    line = _scan_stage(algo, rounded, derived, tables)
     notes += list(line.notes)
-    if line.columns:
-        get = step_getter(line.columns, line.extra_keys)
-
-        def rows() -> Iterator[tuple]:
-            return (get(s) for s in line.steps())
-
-        tables.append(Table(f"Stage 4, scan conversion: {line.title}", line.columns, rows))
-    box = (
-        min(frame[0], line.bbox[0]),
-        min(frame[1], line.bbox[1]),
-        max(frame[2], line.bbox[2]),
-        max(frame[3], line.bbox[3]),
-    )
+    frame = (round_half_up(v[0]), round_half_up(v[1]), round_half_up(v[2]), round_half_up(v[3]))
+    box = _union_box(frame, line.bbox)
     marks: tuple[Pixel, ...] = ()
     if fits(box):
         marks = tuple(rect_outline(frame))
@@ -199,6 +246,50 @@ def _fill_rows(vertices: Sequence[tuple[Number, Number]], rule: str) -> Iterator
         )
 
 
+def _fill_stage(
+    dev: list[tuple[Number, Number]], rule: str, tables: list[Table], notes: list[str]
+) -> Callable[[], Iterator[Pixel]] | None:
+    """Stage 3 with ``fill``: the scan-line fill of the exact device polygon (its table and
+    note added), or ``None`` (noted) when the clipped polygon has no area."""
+    from ..algorithms.polygon import check_polygon, fill_pixels
+
+    try:
+        pts, _ = check_polygon(dev)
+    except InputError as err:
+        if "degenerate" not in str(err):
+            raise
+        notes.append(
+            "The clipped polygon has no area (it only touches the window): nothing is filled."
+        )
+        return None
+    tables.append(
+        Table(f"Stage 3, scan-line fill ({rule})", _FILL_COLUMNS, lambda: _fill_rows(pts, rule))
+    )
+    notes.append(
+        "A pixel is filled when its centre is inside: a span [xa, xb) fills ceil(xa) .. ceil(xb) - 1, and an edge counts on the scan lines y_min <= y < y_max (so shared edges are filled once)."
+    )
+    return lambda: iter(fill_pixels(pts, rule))
+
+
+def _outline_stage(
+    dev: list[tuple[Number, Number]], rounded: list[tuple[int, int]]
+) -> Callable[[], Iterator[Pixel]]:
+    """Stage 3 without ``fill``: the edges by Bresenham between the rounded vertices."""
+    from ..algorithms.polygon import MAX_FILL_CELLS, outline_pixels
+
+    length = sum(
+        max(abs(rounded[i][0] - rounded[i - 1][0]), abs(rounded[i][1] - rounded[i - 1][1]))
+        for i in range(len(rounded))
+    )
+    if length > MAX_FILL_CELLS:
+        raise InputError(
+            f"the outline in the viewport has about {length:,} pixels; at most "
+            f"{MAX_FILL_CELLS:,} are drawn",
+            "viewport",
+        )
+    return lambda: iter(outline_pixels(dev))
+
+
 def pipeline_polygon_solution(
     coords: Sequence[Number],
     window: Sequence[Number],
@@ -218,13 +309,7 @@ def pipeline_polygon_solution(
     >>> len(list(sol.pixels()))
     63
     """
-    from ..algorithms.polygon import (
-        MAX_FILL_CELLS,
-        RULES,
-        check_polygon,
-        fill_pixels,
-        outline_pixels,
-    )
+    from ..algorithms.polygon import RULES
 
     w = check_rect(window, "window", "window")
     v = check_rect(viewport, "viewport", "viewport")
@@ -267,52 +352,21 @@ def pipeline_polygon_solution(
     if not final:
         notes.append("The polygon is outside the window: nothing reaches the viewport.")
         return answer()
-    derived.append(_stage("2. window to viewport"))
-    derived += scale_parts(w, v)
-    sx, sy, tx, ty = viewport_scale(w, v)
-    dev = [(normalize(sx * x + tx), normalize(sy * y + ty)) for x, y in final]
-    names = [f"V{i}'" for i in range(1, len(dev) + 1)]
-    tables.append(
-        mapping_table(list(zip(names, final, strict=True)), w, v, "Stage 2, window to viewport")
-    )
+    names = [f"V{i}'" for i in range(1, len(final) + 1)]
+    dev = _to_device(final, names, w, v, derived, tables)
     data["device"] = [list(p) for p in dev]
     rounded = [(round_half_up(x), round_half_up(y)) for x, y in dev]
     frame = tuple(round_half_up(c) for c in v)
-    box = (min(frame[0], *(p[0] for p in rounded)), min(frame[1], *(p[1] for p in rounded)),
-           max(frame[2], *(p[0] for p in rounded)), max(frame[3], *(p[1] for p in rounded)))  # fmt: skip
-    pixels: Any
+    xs, ys = [p[0] for p in rounded], [p[1] for p in rounded]
+    box = (min(frame[0], *xs), min(frame[1], *ys), max(frame[2], *xs), max(frame[3], *ys))
     if fill:
         derived.append(_stage(f"3. scan-line fill ({rule}), the device vertices kept exact"))
-        try:
-            pts, _ = check_polygon(dev)
-        except InputError as err:
-            if "degenerate" not in str(err):
-                raise
-            notes.append(
-                "The clipped polygon has no area (it only touches the window): nothing is filled."
-            )
+        pixels = _fill_stage(dev, rule, tables, notes)
+        if pixels is None:
             return answer()
-        tables.append(
-            Table(f"Stage 3, scan-line fill ({rule})", _FILL_COLUMNS, lambda: _fill_rows(pts, rule))
-        )
-        notes.append(
-            "A pixel is filled when its centre is inside: a span [xa, xb) fills ceil(xa) .. ceil(xb) - 1, and an edge counts on the scan lines y_min <= y < y_max (so shared edges are filled once)."
-        )
-        pixels = lambda: iter(fill_pixels(pts, rule))  # noqa: E731
     else:
         derived.append(_stage("3. draw the edges: Bresenham between the vertices rounded half up"))
-        n = len(rounded)
-        length = sum(
-            max(abs(rounded[i][0] - rounded[i - 1][0]), abs(rounded[i][1] - rounded[i - 1][1]))
-            for i in range(n)
-        )
-        if length > MAX_FILL_CELLS:
-            raise InputError(
-                f"the outline in the viewport has about {length:,} pixels; at most "
-                f"{MAX_FILL_CELLS:,} are drawn",
-                "viewport",
-            )
-        pixels = lambda: iter(outline_pixels(dev))  # noqa: E731
+        pixels = _outline_stage(dev, rounded)
     marks: tuple[Pixel, ...] = tuple(rect_outline(frame)) if fits(box) else ()  # type: ignore[arg-type]
     if marks:
         notes.append("In the grid, o marks the viewport's edge and # the pixels (@ both).")

@@ -4,7 +4,7 @@ removed), the conventions stated as notes, and the outline drawn with the fill."
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from fractions import Fraction
 from typing import Any
 
@@ -164,6 +164,152 @@ def _scan_row(s: ScanLine, labels: dict[int, str], edges: dict[int, Edge], nonze
     )
 
 
+def _polygon_notes(
+    pts: Sequence[Point], rule_name: str, kind: str, horizontal: list[str], dropped: int
+) -> list[str]:
+    """The notes: the pixel, vertex and fill rules, and what was dropped or crosses."""
+    notes = [PIXEL_RULE, VERTEX_RULE, RULE_TEXT[rule_name]]
+    if horizontal:
+        notes.append(
+            "Horizontal edges dropped (their neighbours bound the spans): "
+            + ", ".join(horizontal)
+            + "."
+        )
+    if dropped:
+        notes.append(
+            f"{dropped} repeated vertex (consecutive, or the first repeated last) dropped."
+        )
+    if kind == "self-intersecting":
+        notes.append(
+            "The polygon crosses itself: even-odd leaves the parts covered twice empty, "
+            "nonzero fills them when both windings agree."
+        )
+    if any(normalize(c) != round_half_up(c) for p in pts for c in p):
+        notes.append("The outline joins the vertices rounded half up (Bresenham needs integers).")
+    return notes
+
+
+def _rounded_bbox(pts: Sequence[Point]) -> tuple[int, int, int, int]:
+    rounded = [(round_half_up(x), round_half_up(y)) for x, y in pts]
+    xs, ys = [p[0] for p in rounded], [p[1] for p in rounded]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _polygon_figures(
+    pts: Sequence[Point], bbox: tuple[int, int, int, int], pixels: Callable[[], Iterator[Pixel]]
+) -> tuple[PixelFigure, ...]:
+    """The outline and the fill, when they fit a figure."""
+    if bbox[2] - bbox[0] + 3 > MAX_GRID_CELLS or bbox[3] - bbox[1] + 3 > MAX_GRID_CELLS:
+        return ()
+    return (
+        PixelFigure(
+            tuple(pixels()),
+            tuple(outline_pixels(pts)),
+            bbox,
+            legend="# = filled, o = outline (Bresenham edges) not filled, @ = outline and filled",
+            title="Outline and fill:",
+        ),
+    )
+
+
+_EDGE_COLUMNS = (
+    heading("edge", r"\text{edge}"),
+    heading("y_min", r"y_{\min}"),
+    heading("y_max", r"y_{\max}"),
+    heading("x", r"x \text{ at } y_{\min}"),
+    heading("inv_m", "1/m"),
+    heading("direction", r"\text{direction}"),
+)
+_SCAN_COLUMNS = (
+    heading("y", "y"),
+    heading("removed", r"\text{removed}"),
+    heading("added", r"\text{added}"),
+    heading("aet", r"\text{AET}"),
+    heading("intersections", r"\text{intersections}"),
+    heading("spans", r"\text{spans}"),
+    heading("pixels", r"\text{pixels } x"),
+)
+
+
+def _edge_table(
+    pts: Sequence[Point], edges: Sequence[Edge], horizontal: Sequence[int], label: dict[int, str]
+) -> Table:
+    """The edge table: the edges sorted by y_min, then the horizontal ones dropped."""
+    n = len(pts)
+
+    def rows() -> Iterator[tuple[Any, ...]]:
+        for e in edges:
+            lo, hi = pts[e.idx], pts[(e.idx + 1) % n]
+            yield (
+                label[e.idx],
+                num(e.y_min),
+                num(e.y_max),
+                num(e.x_bottom),
+                num(e.inv_m),
+                "up" if hi[1] > lo[1] else "down",
+            )
+        for i in horizontal:
+            yield (label[i], num(pts[i][1]), num(pts[i][1]), "-", "-", "horizontal: dropped")
+
+    return Table("Edge table (sorted by y_min, then x)", _EDGE_COLUMNS, rows)
+
+
+def _scan_table(
+    pts: Sequence[Point], rule_name: str, edges: Sequence[Edge], label: dict[int, str]
+) -> Table:
+    """One row per scan line: the edges removed and added, the AET, the spans and pixels."""
+    by_index = {e.idx: e for e in edges}
+
+    def rows() -> Iterator[tuple[Any, ...]]:
+        for s in scanline_fill(pts, rule_name):
+            yield _scan_row(s, label, by_index, rule_name == "nonzero")
+
+    return Table("Scan lines (AET entries: edge: x, 1/m, y_max)", _SCAN_COLUMNS, rows)
+
+
+def _filled(pts: Sequence[Point], rule_name: str) -> Iterator[Pixel]:
+    for s in scanline_fill(pts, rule_name):
+        for f, last_x in s.runs:
+            for x in range(f, last_x + 1):
+                yield (x, s.y)
+
+
+def _polygon_derived(
+    pts: Sequence[Point], edges: Sequence[Edge], label: dict[int, str], kind: str
+) -> tuple[Quantity, ...]:
+    """The scan lines' range, each edge's 1/m, the step to the next line and the shape."""
+    n = len(pts)
+    ys = [p[1] for p in pts]
+    first = min(e.first_line for e in edges)
+    last = max(round_half_up(Fraction(e.y_max) - Fraction(1, 2)) for e in edges)
+    return (
+        worked(
+            "scan_lines",
+            (first, last),
+            f"y = \\lceil y_{{\\min}} \\rceil \\ldots \\lfloor y_{{\\max}} \\rfloor = "
+            f"\\lceil {fmt_short(min(ys))} \\rceil \\ldots \\lfloor {fmt_short(max(ys))} "
+            f"\\rfloor = {first} \\ldots {last}",
+        ),
+        *(_edge_work(label[i], pts[i], pts[(i + 1) % n]) for i in range(n)),
+        rule("x_next", r"x_{k+1} = x_k + 1/m \text{ (each active edge, to the next scan line)}"),
+        Quantity("shape", kind, f"the polygon is {kind}", f"\\text{{the polygon is {kind}}}"),
+    )
+
+
+def _edge_data(edges: Sequence[Edge], label: dict[int, str]) -> list[dict[str, Any]]:
+    return [
+        {
+            "edge": label[e.idx],
+            "y_min": e.y_min,
+            "y_max": e.y_max,
+            "x": e.x_bottom,
+            "inv_m": e.inv_m,
+            "direction": e.direction,
+        }
+        for e in edges
+    ]
+
+
 def polygon_solution(coords: Sequence[Number], rule_name: str = "even-odd") -> Solution:
     """The scan-line fill of the polygon ``x1 y1 x2 y2 ...`` as a worked answer.
 
@@ -180,89 +326,18 @@ def polygon_solution(coords: Sequence[Number], rule_name: str = "even-odd") -> S
     n = len(pts)
     edge_label = {i: labels_v[i] + labels_v[(i + 1) % n] for i in range(n)}
     edges, horizontal = edge_table(pts)
-    by_index = {e.idx: e for e in edges}
     kind = shape(pts)
     given = (
         *(worked(f"V{i + 1}", p, f"{labels_v[i]} = {pt(p)}") for i, p in enumerate(pts)),
         Quantity("rule", rule_name, f"rule: {rule_name}", f"\\text{{rule: {rule_name}}}"),
     )
-    ys = [p[1] for p in pts]
-    first = min(e.first_line for e in edges)
-    last = max(round_half_up(Fraction(e.y_max) - Fraction(1, 2)) for e in edges)
-    derived = [
-        worked(
-            "scan_lines",
-            (first, last),
-            f"y = \\lceil y_{{\\min}} \\rceil \\ldots \\lfloor y_{{\\max}} \\rfloor = "
-            f"\\lceil {fmt_short(min(ys))} \\rceil \\ldots \\lfloor {fmt_short(max(ys))} "
-            f"\\rfloor = {first} \\ldots {last}",
-        ),
-        *(_edge_work(edge_label[i], pts[i], pts[(i + 1) % n]) for i in range(n)),
-        rule("x_next", r"x_{k+1} = x_k + 1/m \text{ (each active edge, to the next scan line)}"),
-        Quantity("shape", kind, f"the polygon is {kind}", f"\\text{{the polygon is {kind}}}"),
-    ]
-    notes = [PIXEL_RULE, VERTEX_RULE, RULE_TEXT[rule_name]]
-    if horizontal:
-        notes.append(
-            "Horizontal edges dropped (their neighbours bound the spans): "
-            + ", ".join(edge_label[i] for i in horizontal)
-            + "."
-        )
-    if dropped:
-        notes.append(
-            f"{dropped} repeated vertex (consecutive, or the first repeated last) dropped."
-        )
-    if kind == "self-intersecting":
-        notes.append(
-            "The polygon crosses itself: even-odd leaves the parts covered twice empty, "
-            "nonzero fills them when both windings agree."
-        )
-    fractional = any(normalize(c) != round_half_up(c) for p in pts for c in p)
-    if fractional:
-        notes.append("The outline joins the vertices rounded half up (Bresenham needs integers).")
-
-    def et_rows() -> Iterator[tuple[Any, ...]]:
-        for e in edges:
-            lo, hi = pts[e.idx], pts[(e.idx + 1) % n]
-            yield (
-                edge_label[e.idx],
-                num(e.y_min),
-                num(e.y_max),
-                num(e.x_bottom),
-                num(e.inv_m),
-                "up" if hi[1] > lo[1] else "down",
-            )
-        for i in horizontal:
-            yield (edge_label[i], num(pts[i][1]), num(pts[i][1]), "-", "-", "horizontal: dropped")
-
-    def scan_rows() -> Iterator[tuple[Any, ...]]:
-        for s in scanline_fill(pts, rule_name):
-            yield _scan_row(s, edge_label, by_index, rule_name == "nonzero")
+    notes = _polygon_notes(pts, rule_name, kind, [edge_label[i] for i in horizontal], dropped)
 
     def pixels() -> Iterator[Pixel]:
-        for s in scanline_fill(pts, rule_name):
-            for f, last_x in s.runs:
-                for x in range(f, last_x + 1):
-                    yield (x, s.y)
+        return _filled(pts, rule_name)
 
-    rounded = [(round_half_up(x), round_half_up(y)) for x, y in pts]
-    bbox = (
-        min(p[0] for p in rounded),
-        min(p[1] for p in rounded),
-        max(p[0] for p in rounded),
-        max(p[1] for p in rounded),
-    )
-    figures: tuple[PixelFigure, ...] = ()
-    if bbox[2] - bbox[0] + 3 <= MAX_GRID_CELLS and bbox[3] - bbox[1] + 3 <= MAX_GRID_CELLS:
-        figures = (
-            PixelFigure(
-                tuple(pixels()),
-                tuple(outline_pixels(pts)),
-                bbox,
-                legend="# = filled, o = outline (Bresenham edges) not filled, @ = outline and filled",
-                title="Outline and fill:",
-            ),
-        )
+    bbox = _rounded_bbox(pts)
+    figures = _polygon_figures(pts, bbox, pixels)
     shown = (
         ", ".join(f"{labels_v[i]}{pt(p)}" for i, p in enumerate(pts)) if n <= 8 else f"{n} vertices"
     )
@@ -271,34 +346,11 @@ def polygon_solution(coords: Sequence[Number], rule_name: str = "even-odd") -> S
         algorithm="scanline",
         title=f"Scan-line polygon fill ({rule_name} rule): {shown}",
         given=given,
-        derived=tuple(derived),
+        derived=_polygon_derived(pts, edges, edge_label, kind),
         notes=tuple(notes),
         tables=(
-            Table(
-                "Edge table (sorted by y_min, then x)",
-                (
-                    heading("edge", r"\text{edge}"),
-                    heading("y_min", r"y_{\min}"),
-                    heading("y_max", r"y_{\max}"),
-                    heading("x", r"x \text{ at } y_{\min}"),
-                    heading("inv_m", "1/m"),
-                    heading("direction", r"\text{direction}"),
-                ),
-                et_rows,
-            ),
-            Table(
-                "Scan lines (AET entries: edge: x, 1/m, y_max)",
-                (
-                    heading("y", "y"),
-                    heading("removed", r"\text{removed}"),
-                    heading("added", r"\text{added}"),
-                    heading("aet", r"\text{AET}"),
-                    heading("intersections", r"\text{intersections}"),
-                    heading("spans", r"\text{spans}"),
-                    heading("pixels", r"\text{pixels } x"),
-                ),
-                scan_rows,
-            ),
+            _edge_table(pts, edges, horizontal, edge_label),
+            _scan_table(pts, rule_name, edges, edge_label),
         ),
         pixels=pixels,
         bbox=bbox,
@@ -312,17 +364,7 @@ def polygon_solution(coords: Sequence[Number], rule_name: str = "even-odd") -> S
         },
         data={
             "vertices": [list(p) for p in pts],
-            "edge_table": [
-                {
-                    "edge": edge_label[e.idx],
-                    "y_min": e.y_min,
-                    "y_max": e.y_max,
-                    "x": e.x_bottom,
-                    "inv_m": e.inv_m,
-                    "direction": e.direction,
-                }
-                for e in edges
-            ],
+            "edge_table": _edge_data(edges, edge_label),
             "horizontal": [edge_label[i] for i in horizontal],
         },
     )

@@ -30,7 +30,8 @@ from typing import NamedTuple
 
 from ..core.checks import InputError
 
-TOPICS = ("line", "circle", "ellipse", "bezier", "bspline", "storage", "quantize")
+TOPICS: tuple[str, ...] = ("line", "circle", "ellipse", "bezier", "bspline", "storage", "quantize")
+TOPICS += ("dither", "inside", "clip", "framebuffer")  # beyond the notes: .practice_more
 """The topics a practice set can draw from (``all``: every one, lines most often)."""
 DIFFICULTIES = ("easy", "exam", "hard")
 MAX_COUNT = 200
@@ -167,6 +168,14 @@ def _centre(rng: random.Random, difficulty: str) -> tuple[int, int]:
     return xc, yc
 
 
+#: Each circle method as the course notes name it: the notes' Topic 9 "Bresenham's circle" is
+#: p0 = 1 - r (scanconv's midpoint method); Bresenham's own form d0 = 3 - 2r is named by its p0.
+_CIRCLE_NAMES = {
+    "midpoint": "Bresenham's circle algorithm (the notes' form, p0 = 1 - r)",
+    "bresenham": "Bresenham's circle algorithm in the form d0 = 3 - 2r",
+}
+
+
 def _circle(rng: random.Random, difficulty: str, kind: tuple[str, bool]) -> PracticeQuestion:
     method, away = kind
     r = rng.randrange(_RADIUS[difficulty][0], _RADIUS[difficulty][1] + 1)
@@ -178,9 +187,7 @@ def _circle(rng: random.Random, difficulty: str, kind: tuple[str, bool]) -> Prac
         argv += ["--center", str(xc), str(yc)]
         where = f"centred at ({xc}, {yc})"
         features.add("centre away")
-    name = (
-        "the midpoint circle algorithm" if method == "midpoint" else "Bresenham's circle algorithm"
-    )
+    name = _CIRCLE_NAMES[method]
     return PracticeQuestion(
         "circle",
         tuple(argv),
@@ -330,6 +337,12 @@ def _quantize(rng: random.Random, difficulty: str, kind: int) -> PracticeQuestio
 def _kinds(topic: str, rng: random.Random) -> list:
     if topic == "line":
         return _line_kinds(rng)
+    if topic not in _MAKERS:  # the topics beyond the notes
+        from .practice_more import KINDS
+
+        kinds = KINDS[topic]
+        start = rng.randrange(len(kinds))
+        return kinds[start:] + kinds[:start]
     pairs: dict[str, list] = {
         "circle": [
             ("midpoint", False),
@@ -379,8 +392,13 @@ def practice(
     rng = random.Random(seed)
     topics = MIX if topic == "all" else (topic,)
     kinds = {t: _cycle(_kinds(t, rng)) for t in dict.fromkeys(topics)}
+    makers = dict(_MAKERS)
+    if any(t not in makers for t in topics):
+        from .practice_more import MAKERS
+
+        makers.update(MAKERS)  # type: ignore[arg-type]
     return [
-        _MAKERS[t](rng, difficulty, next(kinds[t]))
+        makers[t](rng, difficulty, next(kinds[t]))
         for t in (topics[i % len(topics)] for i in range(count))
     ]
 

@@ -43,6 +43,111 @@ def _rel(*values: Number | float) -> str:
     return "=" if all(_num(v)[1] for v in values) else r"\approx"
 
 
+def _sample_given(s: Sampled, shown: str) -> tuple[Quantity, ...]:
+    M, N = s.levels.shape
+    x0, x1, y0, y1 = s.domain
+    return (
+        worked("f", shown, f"f(x, y) = \\texttt{{{tex_text(shown)}}}"),
+        worked("M", M, f"M = {M} \\text{{ rows}}"),
+        worked("N", N, f"N = {N} \\text{{ columns}}"),
+        worked("L", s.L, f"L = {s.L} \\text{{ levels}}"),
+        worked(
+            "domain",
+            (x0, x1, y0, y1),
+            f"x \\in [{_show(x0)}, {_show(x1)}], y \\in [{_show(y0)}, {_show(y1)}]",
+        ),
+    )
+
+
+def _grid_derived(s: Sampled) -> tuple[Quantity, ...]:
+    """The sample spacing and where sample (i, j) lies."""
+    M, N = s.levels.shape
+    x0, x1, y0, y1 = s.domain
+    top = "y down" if s.origin == "top-left" else "y up"
+    y_rule = "y_0 + i \\cdot \\Delta y" if s.origin == "top-left" else "y_1 - i \\cdot \\Delta y"
+    return (
+        _spacing("x", x0, x1, N, "N"),
+        _spacing("y", y0, y1, M, "M"),
+        worked(
+            "x_j",
+            None,
+            f"x_j = x_0 + j \\cdot \\Delta x,\\ j = 0 \\ldots {N - 1} "
+            "\\text{ (columns, left to right)}",
+        ),
+        worked(
+            "y_i",
+            None,
+            f"y_i = {y_rule},\\ i = 0 \\ldots {M - 1} \\text{{ (row 0 at the top, {top})}}",
+        ),
+    )
+
+
+def _range_quantity(s: Sampled) -> Quantity:
+    """f's range: over the samples, or as given (with where the samples lie)."""
+    q = s.quantizer
+    if not s.range_given:
+        M, N = s.levels.shape
+        samples = f"{M * N:,}"
+        noun = "sample" if M * N == 1 else "samples"
+        return worked(
+            "f_range",
+            (s.f_min, s.f_max),
+            f"f_{{\\min}} {_rel(s.f_min)} {_show(s.f_min)},\\ f_{{\\max}} {_rel(s.f_max)} "
+            f"{_show(s.f_max)} \\text{{ (over the {samples.replace(',', '{,}')} {noun})}}",
+        )
+    assert q is not None
+    return worked(
+        "f_range",
+        (q.lo, q.hi),
+        f"f_{{\\min}} = {_show(q.lo)},\\ f_{{\\max}} = {_show(q.hi)} \\text{{ (given; "
+        f"the samples lie in }} [{_show(s.f_min)}, {_show(s.f_max)}])",
+    )
+
+
+def _step_quantities(s: Sampled) -> tuple[Quantity, ...]:
+    """The quantization step and the level rule (none when f is constant)."""
+    q = s.quantizer
+    if q is None:
+        return ()
+    lo_s, hi_s, step = _paren_show(q.lo), _paren_show(q.hi), _show(q.step)
+    trel = _rel(q.lo, q.hi, q.step)
+    return (
+        worked(
+            "step",
+            q.step,
+            f"\\Delta = \\frac{{f_{{\\max}} - f_{{\\min}}}}{{L}} = \\frac{{{hi_s} - {lo_s}}}"
+            f"{{{s.L}}} {trel} {step}",
+        ),
+        worked(
+            "level",
+            None,
+            r"\text{level} = \min(\lfloor (f - f_{\min}) / \Delta \rfloor, L - 1)",
+        ),
+    )
+
+
+def _sample_notes(s: Sampled, left_out: str | None) -> tuple[str, ...]:
+    """Samples clamped, levels left as float64, a constant f, a picture left out."""
+    q = s.quantizer
+    notes = []
+    if s.range_given and s.clipped:
+        assert q is not None
+        notes.append(
+            f"{s.clipped:,} samples lie outside [{_show(q.lo)}, {_show(q.hi)}] and are "
+            "clamped to level 0 or L − 1."
+        )
+    if s.unchecked:
+        notes.append(
+            f"{s.unchecked:,} samples lie within float64 rounding of a level boundary and keep "
+            "their float64 level (checking that many exactly is beyond the work budget)."
+        )
+    if q is None:
+        notes.append(f"f is constant ({_show(s.f_min)}) on the grid: every sample is level 0.")
+    if left_out:
+        notes.append(left_out)
+    return tuple(notes)
+
+
 def sample_solution(s: Sampled) -> Solution:
     """Sampling and quantization of ``f(x, y)`` as a worked answer, from
     :func:`~scanconv.algorithms.sample.sample_levels`.
@@ -59,93 +164,15 @@ def sample_solution(s: Sampled) -> Solution:
     (0, 4, 4, 5, 5, 6, 6, 7, 7)
     """
     M, N = s.levels.shape
-    L, origin, expr = s.L, s.origin, s.expr
-    x0, x1, y0, y1 = s.domain
-    shown = " ".join(expr.split())
-    given = (
-        worked("f", shown, f"f(x, y) = \\texttt{{{tex_text(shown)}}}"),
-        worked("M", M, f"M = {M} \\text{{ rows}}"),
-        worked("N", N, f"N = {N} \\text{{ columns}}"),
-        worked("L", L, f"L = {L} \\text{{ levels}}"),
-        worked(
-            "domain",
-            (x0, x1, y0, y1),
-            f"x \\in [{_show(x0)}, {_show(x1)}], y \\in [{_show(y0)}, {_show(y1)}]",
-        ),
+    L = s.L
+    shown = " ".join(s.expr.split())
+    derived = (
+        *_grid_derived(s),
+        _range_quantity(s),
+        *_step_quantities(s),
+        storage_quantity(M, N, L),
     )
-    top = "y down" if origin == "top-left" else "y up"
-    y_rule = "y_0 + i \\cdot \\Delta y" if origin == "top-left" else "y_1 - i \\cdot \\Delta y"
-    derived = [
-        _spacing("x", x0, x1, N, "N"),
-        _spacing("y", y0, y1, M, "M"),
-        worked(
-            "x_j",
-            None,
-            f"x_j = x_0 + j \\cdot \\Delta x,\\ j = 0 \\ldots {N - 1} "
-            "\\text{ (columns, left to right)}",
-        ),
-        worked(
-            "y_i",
-            None,
-            f"y_i = {y_rule},\\ i = 0 \\ldots {M - 1} \\text{{ (row 0 at the top, {top})}}",
-        ),
-    ]
-    notes = []
-    q = s.quantizer
-    t_min, t_max = _rel(s.f_min), _rel(s.f_max)
-    samples = f"{M * N:,}"
-    noun = "sample" if M * N == 1 else "samples"
-    if not s.range_given:
-        derived.append(
-            worked(
-                "f_range",
-                (s.f_min, s.f_max),
-                f"f_{{\\min}} {t_min} {_show(s.f_min)},\\ f_{{\\max}} {t_max} "
-                f"{_show(s.f_max)} \\text{{ (over the {samples.replace(',', '{,}')} {noun})}}",
-            )
-        )
-    else:
-        assert q is not None
-        derived.append(
-            worked(
-                "f_range",
-                (q.lo, q.hi),
-                f"f_{{\\min}} = {_show(q.lo)},\\ f_{{\\max}} = {_show(q.hi)} \\text{{ (given; "
-                f"the samples lie in }} [{_show(s.f_min)}, {_show(s.f_max)}])",
-            )
-        )
-        if s.clipped:
-            notes.append(
-                f"{s.clipped:,} samples lie outside [{_show(q.lo)}, {_show(q.hi)}] and are "
-                "clamped to level 0 or L − 1."
-            )
-    if s.unchecked:
-        notes.append(
-            f"{s.unchecked:,} samples lie within float64 rounding of a level boundary and keep "
-            "their float64 level (checking that many exactly is beyond the work budget)."
-        )
-    if q is None:
-        notes.append(f"f is constant ({_show(s.f_min)}) on the grid: every sample is level 0.")
-    else:
-        lo_s, hi_s, step = _paren_show(q.lo), _paren_show(q.hi), _show(q.step)
-        trel = _rel(q.lo, q.hi, q.step)
-        derived += [
-            worked(
-                "step",
-                q.step,
-                f"\\Delta = \\frac{{f_{{\\max}} - f_{{\\min}}}}{{L}} = \\frac{{{hi_s} - {lo_s}}}"
-                f"{{{L}}} {trel} {step}",
-            ),
-            worked(
-                "level",
-                None,
-                r"\text{level} = \min(\lfloor (f - f_{\min}) / \Delta \rfloor, L - 1)",
-            ),
-        ]
-    derived.append(storage_quantity(M, N, L))
     left_out = picture_note(M, N)
-    if left_out:
-        notes.append(left_out)
     levels_m = s.levels
 
     def rows() -> Iterator[tuple[int, ...]]:
@@ -157,9 +184,9 @@ def sample_solution(s: Sampled) -> Solution:
         primitive="image",
         algorithm="sample",
         title=f"Sampling and quantization of f(x, y) = {shown}: {M} x {N} samples, L = {L}",
-        given=given,
-        derived=tuple(derived),
-        notes=tuple(notes),
+        given=_sample_given(s, shown),
+        derived=derived,
+        notes=_sample_notes(s, left_out),
         tables=(Table("Quantized levels (row i, column j)", matrix_columns(N), rows),),
         figures=()
         if left_out

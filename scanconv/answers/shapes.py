@@ -76,12 +76,12 @@ def point_text(p: Point, tex: bool = False) -> str:
     return f"({text(p[0], tex)}, {text(p[1], tex)})"
 
 
-def matrix_text(m: Matrix) -> str:
+def matrix_text(m: Sequence[Sequence[Scalar]]) -> str:
     """``[[1, 0, 3], [0, 1, -1], [0, 0, 1]]``."""
     return "[" + ", ".join("[" + ", ".join(text(v) for v in row) + "]" for row in m) + "]"
 
 
-def matrix_tex(m: Matrix) -> str:
+def matrix_tex(m: Sequence[Sequence[Scalar]]) -> str:
     """A ``bmatrix``."""
     rows = " \\\\ ".join(" & ".join(text(v, True) for v in row) for row in m)
     return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"

@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 from fractions import Fraction
+from typing import NamedTuple
 
 from ..algorithms.image_limits import MAX_LEVELS, check_levels, check_storage_bits
 from ..algorithms.storage import UNITS, bits_per_pixel, sizes, storage_bits
@@ -69,68 +70,65 @@ def _tex(s: str) -> str:
     return s.replace("≈", "\\approx").replace(",", "{,}")
 
 
-def _depth_quantities(
-    levels: Number | None, bits: Number | None, binary: bool, color: str | None
-) -> tuple[int, list[Quantity], list[str]]:
-    """Bits per pixel, with the working and notes, for the one depth option given."""
-    chosen = [levels is not None, bits is not None, binary, color is not None]
-    if sum(chosen) != 1:
-        raise InputError(
-            "give exactly one pixel depth: the levels L, the bits B, binary (1 bit) or rgb24 "
-            "colour (24 bits)"
-        )
-    if binary:
-        return (
-            1,
-            [
-                worked(
-                    "k",
-                    1,
-                    r"k = 1 \text{ bit per pixel (binary image: } L = 2\text{, 0 = black, "
-                    r"1 = white)}",
-                )
-            ],
-            [],
-        )
-    if color is not None:
-        if color != "rgb24":
-            raise InputError(f"unknown colour format {color!r} (choose from rgb24)", "color")
-        return (
-            24,
-            [
-                worked(
-                    "k",
-                    24,
-                    r"k = 3 \times 8 = 24 \text{ bits per pixel (R, G, B: 8 bits each, "
-                    r"true colour)}",
-                ),
-                worked(
-                    "L",
-                    MAX_LEVELS,
-                    f"L = 2^{{24}} = {int_tex(MAX_LEVELS)} \\text{{ colours}}",
-                ),
-            ],
-            [],
-        )
-    if bits is not None:
-        b = check_storage_bits(bits)
-        return (
-            b,
-            [
-                worked(
-                    "L",
-                    1 << b,
-                    f"L = 2^B = 2^{{{b}}} = {int_tex(1 << b)} \\text{{ levels}}",
-                ),
-                worked("k", b, f"k = B = {b} \\text{{ bits per pixel}}"),
-            ],
-            [],
-        )
-    assert levels is not None
+class _Depth(NamedTuple):
+    """Bits per pixel, with its working and notes."""
+
+    k: int
+    working: list[Quantity]
+    notes: list[str]
+
+
+def _binary_depth() -> _Depth:
+    return _Depth(
+        1,
+        [
+            worked(
+                "k",
+                1,
+                r"k = 1 \text{ bit per pixel (binary image: } L = 2\text{, 0 = black, "
+                r"1 = white)}",
+            )
+        ],
+        [],
+    )
+
+
+def _colour_depth(color: str) -> _Depth:
+    if color != "rgb24":
+        raise InputError(f"unknown colour format {color!r} (choose from rgb24)", "color")
+    return _Depth(
+        24,
+        [
+            worked(
+                "k",
+                24,
+                r"k = 3 \times 8 = 24 \text{ bits per pixel (R, G, B: 8 bits each, "
+                r"true colour)}",
+            ),
+            worked("L", MAX_LEVELS, f"L = 2^{{24}} = {int_tex(MAX_LEVELS)} \\text{{ colours}}"),
+        ],
+        [],
+    )
+
+
+def _bits_depth(bits: Number) -> _Depth:
+    b = check_storage_bits(bits)
+    return _Depth(
+        b,
+        [
+            worked("L", 1 << b, f"L = 2^B = 2^{{{b}}} = {int_tex(1 << b)} \\text{{ levels}}"),
+            worked("k", b, f"k = B = {b} \\text{{ bits per pixel}}"),
+        ],
+        [],
+    )
+
+
+def _levels_depth(levels: Number) -> _Depth:
+    """``k = log2 L`` bits, or ``⌈log2 L⌉`` (with a note) when L is not a power of two."""
     L = check_levels(levels)
     k = bits_per_pixel(L)
     if L == 1 << k:
-        return (
+        return _Depth(
             k,
             [
                 worked(
@@ -147,7 +145,7 @@ def _depth_quantities(
         f"< {int_text(1 << k)} = 2^{k}, so a pixel needs ⌈log2 L⌉ = {k} bits (log2 L = {log} is "
         f"not a whole number of bits; {k} bits could hold {int_text(1 << k)} levels)."
     )
-    return (
+    return _Depth(
         k,
         [
             worked(
@@ -159,6 +157,81 @@ def _depth_quantities(
         ],
         [note],
     )
+
+
+def _depth_quantities(
+    levels: Number | None, bits: Number | None, binary: bool, color: str | None
+) -> _Depth:
+    """Bits per pixel, with the working and notes, for the one depth option given."""
+    chosen = [levels is not None, bits is not None, binary, color is not None]
+    if sum(chosen) != 1:
+        raise InputError(
+            "give exactly one pixel depth: the levels L, the bits B, binary (1 bit) or rgb24 "
+            "colour (24 bits)"
+        )
+    if binary:
+        return _binary_depth()
+    if color is not None:
+        return _colour_depth(color)
+    if bits is not None:
+        return _bits_depth(bits)
+    assert levels is not None
+    return _levels_depth(levels)
+
+
+def _storage_given(M: int, N: int, levels: Number | None, F: int) -> tuple[Quantity, ...]:
+    L = int(levels) if levels is not None else 0  # checked by _depth_quantities
+    return (
+        worked("M", M, f"M = {int_tex(M)}"),
+        worked("N", N, f"N = {int_tex(N)}"),
+        *((worked("L", L, f"L = {int_tex(L)}"),) if levels is not None else ()),
+        *((worked("F", F, f"F = {int_tex(F)} \\text{{ frames}}"),) if F > 1 else ()),
+    )
+
+
+def _size_quantities(M: int, N: int, k: int, F: int, b: int) -> tuple[Quantity, ...]:
+    """``b = M × N × k (× F)`` bits and ``b / 8`` bytes."""
+    unit = "bit" if b == 1 else "bits"
+    frame_t, frame_x = (r" \times F", f" \\times {int_tex(F)}") if F > 1 else ("", "")
+    by = size_text(Fraction(b, 8))
+    return (
+        worked(
+            "bits",
+            b,
+            f"b = M \\times N \\times k{frame_t} = {int_tex(M)} "
+            f"\\times {int_tex(N)} \\times {k}{frame_x} = "
+            f"{int_tex(b)} \\text{{ {unit}}}",
+        ),
+        worked(
+            "bytes",
+            normalize(Fraction(b, 8)),
+            f"\\text{{bytes}} = b / 8 = {int_tex(b)} / 8 = {_tex(by)} \\text{{ bytes}}",
+        ),
+    )
+
+
+def _depth_name(levels: Number | None, bits: Number | None, binary: bool, color: str | None) -> str:
+    if binary:
+        return "binary"
+    if color:
+        return "24-bit colour"
+    return f"{int(bits)}-bit" if bits is not None else f"L = {levels}"
+
+
+_SIZE_COLUMNS = (
+    heading("unit", r"\text{unit}"),
+    heading("bytes_per_unit", r"\text{bytes per unit}"),
+    heading("size", r"\text{size}"),
+)
+
+
+def _size_rows(b: int) -> Iterator[tuple[str, Number, str]]:
+    # storage of 1024 x 768, L = 256 -> bits 6291456 ; bytes 786432 ; KB 786.432 ; ...
+    nbytes = Fraction(b, 8)
+    yield ("bits", Fraction(1, 8), str(b))
+    yield ("bytes", 1, size_text(nbytes, cell=True))
+    for unit, divisor in UNITS:
+        yield (unit, divisor, size_text(nbytes / divisor, cell=True))
 
 
 def storage_solution(
@@ -205,74 +278,20 @@ def storage_solution(
     F = check_positive(frames, "F (frames)", param="frames")
     k, depth, notes = _depth_quantities(levels, bits, binary, color)
     b = storage_bits(M, N, k, F)
-    unit = "bit" if b == 1 else "bits"
     nbytes = Fraction(b, 8)
-    frame_t, frame_x = (r" \times F", f" \\times {int_tex(F)}") if F > 1 else ("", "")
-    given = [
-        worked("M", M, f"M = {int_tex(M)}"),
-        worked("N", N, f"N = {int_tex(N)}"),
-    ]
-    if levels is not None:
-        L = int(levels)  # checked by _depth_quantities
-        given.append(worked("L", L, f"L = {int_tex(L)}"))
-    if F > 1:
-        given.append(worked("F", F, f"F = {int_tex(F)} \\text{{ frames}}"))
-    by = size_text(nbytes)
-    derived = [
-        *depth,
-        worked(
-            "bits",
-            b,
-            f"b = M \\times N \\times k{frame_t} = {int_tex(M)} "
-            f"\\times {int_tex(N)} \\times {k}{frame_x} = "
-            f"{int_tex(b)} \\text{{ {unit}}}",
-        ),
-        worked(
-            "bytes",
-            normalize(nbytes),
-            f"\\text{{bytes}} = b / 8 = {int_tex(b)} / 8 = {_tex(by)} \\text{{ bytes}}",
-        ),
-    ]
     if nbytes.denominator != 1:
         notes.append(
-            f"{by} bytes is not a whole number of bytes: {math.ceil(nbytes)} bytes when "
-            "rounded up to whole bytes."
+            f"{size_text(nbytes)} bytes is not a whole number of bytes: {math.ceil(nbytes)} "
+            "bytes when rounded up to whole bytes."
         )
-
-    def rows() -> Iterator[tuple[str, Number, str]]:
-        # storage of 1024 x 768, L = 256 -> bits 6291456 ; bytes 786432 ; KB 786.432 ; ...
-        yield ("bits", Fraction(1, 8), str(b))
-        yield ("bytes", 1, size_text(nbytes, cell=True))
-        for unit, divisor in UNITS:
-            yield (unit, divisor, size_text(nbytes / divisor, cell=True))
-
-    what = (
-        "binary"
-        if binary
-        else "24-bit colour"
-        if color
-        else f"{int(bits)}-bit"
-        if bits is not None
-        else f"L = {levels}"
-    )
     frames_title = f", {F} frames" if F > 1 else ""
     return Solution(
         primitive="image",
         algorithm="storage",
-        title=f"Storage of a {M} x {N} image ({what}{frames_title})",
-        given=tuple(given),
-        derived=tuple(derived),
+        title=f"Storage of a {M} x {N} image ({_depth_name(levels, bits, binary, color)}{frames_title})",
+        given=_storage_given(M, N, levels, F),
+        derived=(*depth, *_size_quantities(M, N, k, F, b)),
         notes=tuple(notes),
-        tables=(
-            Table(
-                "Size in each unit",
-                (
-                    heading("unit", r"\text{unit}"),
-                    heading("bytes_per_unit", r"\text{bytes per unit}"),
-                    heading("size", r"\text{size}"),
-                ),
-                rows,
-            ),
-        ),
+        tables=(Table("Size in each unit", _SIZE_COLUMNS, lambda: _size_rows(b)),),
         data={"sizes": sizes(b)},
     )

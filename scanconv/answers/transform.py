@@ -315,26 +315,8 @@ _MATRIX_COLUMNS = (
 )
 
 
-def transform_solution(
-    coords: Sequence[Number], transforms: Sequence[str] | str, *, inverse_too: bool = False
-) -> Solution:
-    """The worked answer of the composite of ``transforms`` applied to the points ``coords``
-    (``x1 y1 x2 y2 ...``).
-
-    >>> sol = transform_solution([0, 0, 4, 0, 4, 3], "rotate 90 about 2 1, translate 3 0")
-    >>> for q in sol.derived:
-    ...     print(q.text)
-    θ = 90°: cos θ = 0, sin θ = 1
-    M1 = T(2, 1)·R(90°)·T(-2, -1) = [[0, -1, 3], [1, 0, -1], [0, 0, 1]]
-    M2 = T(3, 0) = [[1, 0, 3], [0, 1, 0], [0, 0, 1]]
-    M = M2·M1 = [[0, -1, 6], [1, 0, -1], [0, 0, 1]]
-    >>> sol.data["after"]
-    [[6, -1], [6, 3], [3, 3]]
-    """
-    stages = parse_transforms([transforms] if isinstance(transforms, str) else transforms)
-    points = check_points(coords)
-    mats = [compose([f.matrix for f in s.factors]) for s in stages]
-    m = compose(mats)
+def _stage_work(stages: Sequence[Any], mats: Sequence[Matrix]) -> list[Quantity]:
+    """Each stage's working and its matrix M_i."""
     derived: list[Quantity] = []
     for i, (stage, mi) in enumerate(zip(stages, mats, strict=True), 1):
         derived.extend(q._replace(key=f"{q.key}{i}") for q in stage.working)
@@ -346,49 +328,32 @@ def transform_solution(
                 f"M_{i} = {product_text(stage.factors, True)} = {matrix_tex(mi)}",
             )
         )
-    order = "·".join(f"M{i}" for i in range(len(mats), 0, -1))
-    derived.append(
+    return derived
+
+
+def _inverse_parts(m: Matrix) -> tuple[list[Quantity], Matrix]:
+    """The determinant and the inverse of ``m``, worked (``InputError`` if it is singular)."""
+    det = determinant(m)
+    (a, b, _), (d, e, _), _ = m
+    work = f"det M = a*e - b*d = {_wrap(text(a))}*{_wrap(text(e))} - {_wrap(text(b))}*{_wrap(text(d))} = {text(det)}"
+    if det == 0:
+        raise InputError(f"the composite matrix is singular ({work}): it has no inverse", "inverse")
+    inv = inverse(m)
+    return [
+        Quantity("det", json_scalar(det), work, f"\\det M = ae - bd = {text(det, True)}"),
         Quantity(
-            "M",
-            matrix_json(m),
-            f"M = {order} = {matrix_text(m)}",
-            f"M = {_tex_order(len(mats))} = {matrix_tex(m)}",
-        )
-    )
-    after = [apply(m, p) for p in points]
-    mat_rows = [
-        r
-        for i, (s, mi) in enumerate(zip(stages, mats, strict=True), 1)
-        for r in matrix_rows(f"M{i}", s.label, mi)
-    ]
-    mat_rows += matrix_rows("M", f"composite {order}", m)
-    data: dict[str, Any] = {
-        "matrix": matrix_json(m),
-        "after": [[json_scalar(v) for v in p] for p in after],
-    }
-    if inverse_too:
-        det = determinant(m)
-        (a, b, _), (d, e, _), _ = m
-        work = f"det M = a*e - b*d = {_wrap(text(a))}*{_wrap(text(e))} - {_wrap(text(b))}*{_wrap(text(d))} = {text(det)}"
-        if det == 0:
-            raise InputError(
-                f"the composite matrix is singular ({work}): it has no inverse", "inverse"
-            )
-        inv = inverse(m)
-        derived.append(
-            Quantity("det", json_scalar(det), work, f"\\det M = ae - bd = {text(det, True)}")
-        )
-        derived.append(
-            Quantity(
-                "M_inverse",
-                matrix_json(inv),
-                f"M⁻¹ = (1/det M)·adj M = {matrix_text(inv)}   (M⁻¹·M = I, checked exactly)",
-                f"M^{{-1}} = \\frac{{1}}{{\\det M}} \\operatorname{{adj}} M = {matrix_tex(inv)}",
-            )
-        )
-        mat_rows += matrix_rows("M^-1", "inverse of M", inv)
-        data["inverse"] = matrix_json(inv)
-    irrational = any(isinstance(simplify(v), Radical) for p in after for v in p)
+            "M_inverse",
+            matrix_json(inv),
+            f"M⁻¹ = (1/det M)·adj M = {matrix_text(inv)}   (M⁻¹·M = I, checked exactly)",
+            f"M^{{-1}} = \\frac{{1}}{{\\det M}} \\operatorname{{adj}} M = {matrix_tex(inv)}",
+        ),
+    ], inv
+
+
+def _points_table(
+    points: Sequence[Any], after: Sequence[Any], m: Matrix, irrational: bool
+) -> Table:
+    """Each point before and after, with the two rows of M worked on it."""
     pt_cols = [
         Column("point", "point", r"\text{point}"),
         Column("point_before", "P = (x, y)", "P = (x, y)"),
@@ -414,6 +379,56 @@ def transform_solution(
             out.append(tuple(row))
         return out
 
+    return Table("Points before and after", tuple(pt_cols), pt_rows)
+
+
+def transform_solution(
+    coords: Sequence[Number], transforms: Sequence[str] | str, *, inverse_too: bool = False
+) -> Solution:
+    """The worked answer of the composite of ``transforms`` applied to the points ``coords``
+    (``x1 y1 x2 y2 ...``).
+
+    >>> sol = transform_solution([0, 0, 4, 0, 4, 3], "rotate 90 about 2 1, translate 3 0")
+    >>> for q in sol.derived:
+    ...     print(q.text)
+    θ = 90°: cos θ = 0, sin θ = 1
+    M1 = T(2, 1)·R(90°)·T(-2, -1) = [[0, -1, 3], [1, 0, -1], [0, 0, 1]]
+    M2 = T(3, 0) = [[1, 0, 3], [0, 1, 0], [0, 0, 1]]
+    M = M2·M1 = [[0, -1, 6], [1, 0, -1], [0, 0, 1]]
+    >>> sol.data["after"]
+    [[6, -1], [6, 3], [3, 3]]
+    """
+    stages = parse_transforms([transforms] if isinstance(transforms, str) else transforms)
+    points = check_points(coords)
+    mats = [compose([f.matrix for f in s.factors]) for s in stages]
+    m = compose(mats)
+    derived = _stage_work(stages, mats)
+    order = "·".join(f"M{i}" for i in range(len(mats), 0, -1))
+    derived.append(
+        Quantity(
+            "M",
+            matrix_json(m),
+            f"M = {order} = {matrix_text(m)}",
+            f"M = {_tex_order(len(mats))} = {matrix_tex(m)}",
+        )
+    )
+    after = [apply(m, p) for p in points]
+    mat_rows = [
+        r
+        for i, (s, mi) in enumerate(zip(stages, mats, strict=True), 1)
+        for r in matrix_rows(f"M{i}", s.label, mi)
+    ]
+    mat_rows += matrix_rows("M", f"composite {order}", m)
+    data: dict[str, Any] = {
+        "matrix": matrix_json(m),
+        "after": [[json_scalar(v) for v in p] for p in after],
+    }
+    if inverse_too:
+        inv_work, inv = _inverse_parts(m)
+        derived += inv_work
+        mat_rows += matrix_rows("M^-1", "inverse of M", inv)
+        data["inverse"] = matrix_json(inv)
+    irrational = any(isinstance(simplify(v), Radical) for p in after for v in p)
     exact = all(s.exact for s in stages)
     notes = [
         "Column vectors: P' = M·P with P = [x, y, 1]^T, so the transformation given first is "
@@ -447,7 +462,7 @@ def transform_solution(
         notes=tuple(notes),
         tables=(
             Table("Matrices (column vectors, P' = M.P)", _MATRIX_COLUMNS, lambda: mat_rows),
-            Table("Points before and after", tuple(pt_cols), pt_rows),
+            _points_table(points, after, m, irrational),
         ),
         figures=shapes_figure(
             points,

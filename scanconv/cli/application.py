@@ -141,9 +141,10 @@ TOPIC_MODULES: tuple[str, ...] = (
     "color",
     "theory",
     "exam",
+    "sheet",
+    "practice",
+    "check",
 )
-TOPIC_MODULES += ("sheet", "practice")  # teacher tools (issue 15)
-TOPIC_MODULES += ("check",)  # marking a student's table (issue 15)
 
 #: Which module defines each top-level command or group.
 TOPIC_OF = {

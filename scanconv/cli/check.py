@@ -1,16 +1,12 @@
 """``scanconv check``: mark a student's table against a question, one file or a folder.
 
-The question is another scanconv command line (``line 2 2 10 6 --algo bresenham``), parsed by
-that command's own click parameters and run in-process: :func:`solve` swaps each command's
-writer (:class:`~scanconv.cli.command.Command`) for one that returns the
-:class:`~scanconv.core.records.Solution` instead of writing it, so the question means exactly
-what it means on the command line, flags, conventions and error messages included.
+The question is another scanconv command line (``line 2 2 10 6 --algo bresenham``), parsed and
+answered by the library's question language (:mod:`scanconv.questions`), so the question means
+exactly what it means on the command line, flags, conventions and error messages included.
 """
 
 from __future__ import annotations
 
-import copy
-import inspect
 import sys
 from pathlib import Path
 from typing import Annotated, Any
@@ -18,15 +14,12 @@ from typing import Annotated, Any
 import typer
 
 from ..core.records import Solution
+from ..questions.marking import marking_answer, marking_line
 from ..render import Format
 from .application import app
 from .budget import check_question
-from .command import SHARED, Command, error_message
 from .options import BriefOpt, ExactOpt, FormatOpt, OutputOpt
-from .output import PROG, Output, emit, fail, format_for_file, write_atomic
-
-#: Commands that are not questions (they would mark, or write sheets, themselves).
-NOT_QUESTIONS = ("check", "sheet", "practice")
+from .output import Output, emit, fail, format_for_file, write_atomic
 
 #: Output options written after the question still belong to ``check`` (the question's own
 #: answer is never written): ``check a.csv -- line 2 2 10 6 -f md`` is markdown.
@@ -34,93 +27,21 @@ _OWN_VALUED = {"-f": "fmt", "--format": "fmt", "-o": "output", "--output": "outp
 _OWN_FLAGS = {"--brief": "brief", "--exact": "exact"}
 
 
-class _Capture(Command):
-    """A command that returns its Solution instead of writing it."""
-
-    def __call__(self, **kwargs: Any) -> Any:
-        own = inspect.signature(self.__wrapped__).parameters
-        for name in SHARED:
-            if name in kwargs and name not in own:
-                del kwargs[name]
-        check_question(self.__name__, kwargs)  # the document budget, before any work
-        return self.__wrapped__(**kwargs)
-
-
-def _capturing(group: typer.Typer) -> typer.Typer:
-    """A copy of ``group`` whose commands return their Solution (the app is not touched)."""
-    one = copy.copy(group)
-    one.registered_commands = []
-    for info in group.registered_commands:
-        info = copy.copy(info)
-        cb = info.callback
-        if isinstance(cb, Command):
-            info.callback = _Capture(cb.__wrapped__, cb._shared)
-        one.registered_commands.append(info)
-    one.registered_groups = []
-    for g in group.registered_groups:
-        g = copy.copy(g)
-        if g.typer_instance is not None:
-            g.typer_instance = _capturing(g.typer_instance)
-        one.registered_groups.append(g)
-    return one
-
-
 def solve(question: list[str]) -> Solution:
-    """The Solution of a scanconv command line, computed in-process.
+    """The Solution of a scanconv command line, computed by the library's question language
+    (:mod:`scanconv.questions.marking`).
 
     >>> solve(["line", "2", "2", "10", "6"]).title
     "Bresenham's line algorithm: (2, 2) to (10, 6)"
     """
-    from typer._click import exceptions as click_exc
-
-    from .application import register
-    from .entry import _only, students
-
-    if not question:
-        raise ValueError("no question after --: give a scanconv command, e.g. -- line 2 2 10 6")
-    argv = students(question)
-    if argv[0] in NOT_QUESTIONS or argv[0].startswith("-"):
-        raise ValueError(
-            f"the question must be a scanconv command with a step table, not {argv[0]!r}"
-        )
-    if any(a in ("-h", "--help", "--version") for a in argv):
-        raise ValueError("the question cannot ask for --help")
-    figure = next((a for a in argv if a.split("=")[0] in ("--svg", "--png")), None)
-    if figure is not None:
-        raise ValueError(
-            f"{figure.split('=')[0]}: check draws no figure; leave it out of the question"
-        )
-    command = typer.main.get_command(_capturing(_only(register(argv), argv)))
+    line = marking_line(question)
+    # The one place a question's work is weighed before it is done (the per-question
+    # budget): line.function names the command, line.arguments holds its values.
     try:
-        result = command.main(args=argv, prog_name=PROG, standalone_mode=False)
-    except click_exc.NoArgsIsHelpError:
-        raise ValueError(
-            f"question: {' '.join(question)!r} is incomplete (see scanconv {argv[0]} --help)"
-        ) from None
-    except click_exc.UsageError as err:
-        raise ValueError(f"question: {' '.join(err.format_message().split())}") from None
-    except click_exc.ClickException as err:
-        raise ValueError(f"question: {' '.join(err.format_message().split())}") from None
+        check_question(line.function, line.arguments)
     except ValueError as err:
-        params = _params_of(command, argv)
-        raise ValueError(f"question: {error_message(err, params)}") from None
-    if not isinstance(result, Solution):
-        raise ValueError(f"the question {' '.join(question[:3])!r} is not a command with an answer")
-    if not result.columns:
-        raise ValueError(f"the question {' '.join(question[:3])!r} has no step table to mark")
-    return result
-
-
-def _params_of(command: Any, argv: list[str]) -> list[inspect.Parameter]:
-    """The Python parameters of the command ``argv`` names (for the flag in a message)."""
-    for name in argv:
-        sub = getattr(command, "commands", {}).get(name)
-        if sub is None:
-            break
-        command = sub
-    cb = getattr(command, "callback", None)
-    target = getattr(cb, "__wrapped__", cb)
-    return list(target.parameters) if isinstance(target, Command) else []
+        raise ValueError(f"question: {err}") from None
+    return marking_answer(line)
 
 
 def _split_own(tail: list[str], own: dict[str, Any]) -> list[str]:

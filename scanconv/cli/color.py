@@ -7,8 +7,8 @@ from typing import Annotated
 
 import typer
 
-from .. import _api as api
 from ..core.records import Solution
+from ..questions import commands
 from .application import app
 from .command import answers
 from .options import NUMERIC_ARGS, num_option
@@ -51,16 +51,4 @@ def color(
     per pixel.
     Example: scanconv color rgb 51 102 153 --to cmy hsv hsi
     """
-    targets = list(to or [])
-    numbers: list[str] = []
-    for token in values:
-        if not token.isalpha():
-            numbers.append(token)
-        elif to is not None:  # --to cmy hsv hsi: click hands hsv and hsi over as values
-            targets.append(token)
-        else:
-            raise ValueError(
-                f"a colour component must be a number, got {token!r} (name the target "
-                "models after --to)"
-            )
-    return api.color(model, *numbers, to=targets, unit=unit, bits=8 if bits is None else bits)
+    return commands.color(model, values, to, unit, bits)

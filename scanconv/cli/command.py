@@ -19,6 +19,7 @@ from typing import Any, get_args, get_type_hints
 from typer.models import OptionInfo, ParameterInfo
 
 from ..core.records import Solution
+from ..questions.grammar import ALIASES
 from ..render import Format
 from .budget import check as check_budget
 from .options import (
@@ -38,20 +39,6 @@ from .output import Output, emit, fail
 
 SHARED = ("fmt", "grid", "origin", "output", "brief", "exact", "explain", "svg", "png")
 """The shared output options, in the order they are listed after a command's own."""
-
-ALIASES = {
-    "xc": "center",
-    "yc": "center",
-    "m": "size",
-    "n": "size",
-    "index": "move",
-    "moved": "move",
-    "integer": "kind",
-}
-"""Library parameters that a command takes under another name: ``--center XC YC`` holds
-``xc`` and ``yc``, ``--size MxN`` holds ``m`` and ``n``, ``--move I X Y`` holds ``index`` and
-``moved``, and ``--input`` sets ``integer``. (A command with a parameter of the library's own
-name, such as ``storage M N``, keeps it.)"""
 
 _KEYWORD = inspect.Parameter.KEYWORD_ONLY
 

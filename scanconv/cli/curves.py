@@ -10,6 +10,7 @@ import typer
 from .. import _api as api
 from ..core.checks import InputError
 from ..core.records import Solution
+from ..questions import commands
 from .application import app, parametric_app
 from .command import answers
 from .options import (
@@ -26,7 +27,6 @@ from .options import (
     num_arg,
     num_option,
     number,
-    segments,
 )
 
 # --- parametric -------------------------------------------------------------------------------
@@ -178,19 +178,7 @@ def bspline(
     Example: scanconv bspline 0 0 1 2 3 3 4 0 5 2 --degree 2 --knots open
     (the basis alone: scanconv bspline --basis --degree 2 --knots 0,.25,.5,.75,1)
     """
-    if basis:
-        if t is not None:
-            return api.bspline_at(points or [], t, degree, knots)
-        return api.bspline_basis(points, degree, knots, samples)
-    if not points:
-        raise InputError(
-            "missing control points X0 Y0 X1 Y1 ... (only --basis takes a degree and a knot "
-            "list alone)",
-            "points",
-        )
-    if t is not None:
-        return api.bspline_at(points, t, degree, knots)
-    return api.bspline(points, degree, knots, samples)
+    return commands.bspline(points, degree, knots, basis, t, samples)
 
 
 @app.command(context_settings=NUMERIC_ARGS)
@@ -200,8 +188,7 @@ def continuity(values: Segments, samples: Samples = None) -> Solution:
 
     Example: scanconv continuity 0 0 1 2 3 3 4 0 : 4 0 5 -3 7 -2 8 0
     """
-    first, second = segments(values)
-    return api.continuity(first, second, samples)
+    return commands.continuity(values, samples)
 
 
 @app.command("local-control", context_settings=NUMERIC_ARGS)

@@ -8,27 +8,20 @@ and SIGTERM 143; no traceback reaches the user.
 from __future__ import annotations
 
 import copy
-import re
 import signal
 import sys
 from typing import Any
 
 import typer
 
+from ..questions.words import MINUS, NONFINITE, students, usage_message
 from . import output
 from .application import register
 from .output import PROG, note
 
-_MINUS = "\u2212"
-_NUM = r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:/\d+)?"
-# patterns, compiled by re on first use: a plain run never needs them (start-up time)
-_POINT = rf"^\(?\s*({_NUM})\s*,\s*({_NUM})\s*\)?$"
-_SIZE = r"^(\d+)\s*[xX\u00d7]\s*(\d+)$"
-_FORMAT_NAMES = {"md": "markdown", "tex": "latex", "txt": "plain", "text": "plain"}
-#: Options whose value is text the library parses itself (never split as a point).
-_TEXT_OPTIONS = {"--knots", "--at", "--t-range", "--domain", "--size", "-o", "--output"}
-_TEXT_OPTIONS |= {"--svg", "--png", "--x", "--y", "--formula"}
-_NONFINITE = ("-inf", "-infinity", "-nan")
+__all__ = ["main", "students"]
+
+_MINUS, _NONFINITE = MINUS, NONFINITE  # the question language's (scanconv.questions.words)
 
 
 def _command_for(argv: list[str]) -> Any:
@@ -64,59 +57,22 @@ def _only(group: typer.Typer, argv: list[str]) -> typer.Typer:
     return one
 
 
-def students(argv: list[str]) -> list[str]:
-    """``argv`` with what students type made into what the commands take: a point written
-    ``2,2`` or ``(2, 2)`` is two numbers, ``storage 1024x768`` is two sizes, ``-f md`` is
-    markdown (``tex``: latex, ``txt``: plain).
-
-    >>> students(["line", "(2,2)", "10,6", "-f", "md"])
-    ['line', '2', '2', '10', '6', '-f', 'markdown']
-    >>> students(["storage", "1024x768", "--knots", "0,1"])
-    ['storage', '1024', '768', '--knots', '0,1']
-    """
-    out: list[str] = []
-    for i, a in enumerate(argv):
-        before = argv[i - 1] if i else ""
-        # the patterns only where they can match: plain numbers and flags skip the regex engine
-        point = re.match(_POINT, a) if "," in a else None
-        size = re.match(_SIZE, a) if argv[:1] == ["storage"] and a[-1:].isdigit() else None
-        if before in ("-f", "--format") and a.lower() in _FORMAT_NAMES:
-            out.append(_FORMAT_NAMES[a.lower()])
-        elif a.startswith("--format=") and a[9:].lower() in _FORMAT_NAMES:
-            out.append("--format=" + _FORMAT_NAMES[a[9:].lower()])
-        elif point and before not in _TEXT_OPTIONS:
-            out.extend(point.groups())
-        elif size and argv[:1] == ["storage"] and before not in _TEXT_OPTIONS:
-            out.extend(size.groups())
-        else:
-            out.append(a)
-    return out
-
-
 def _usage_message(err: Exception) -> str:
-    """click's message, in the words a student expects: an unknown flag is "No such option",
-    a choice close to a valid one names it."""
-    message = " ".join(err.format_message().split()).replace("Value error, ", "")  # type: ignore[attr-defined]
-    extra = re.match(r"Got unexpected extra argument(?:\(s\)|s)? \((-[^ )]*)[^)]*\)", message)
-    if extra:
-        return f"No such option: {extra.group(1)}"
-    choice = re.search(r"'([^']*)' is not one of ((?:'[^']*'(?:, )?)+)", message)
-    if choice:
-        import difflib
-
-        given, names = choice.group(1), re.findall(r"'([^']*)'", choice.group(2))
-        close = [n for n in names if given.lower() in n.lower()]
-        close = close or difflib.get_close_matches(given, names, n=1)
-        if close:
-            message = message.rstrip(".") + f"; did you mean '{close[0]}'?"
-    return message
+    """click's message, in the words a student expects (:func:`usage_message`)."""
+    return usage_message(err.format_message())  # type: ignore[attr-defined]
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the CLI; return (and exit with) its status. Never shows a traceback for bad input."""
+    """Run the CLI; return (and exit with) its status. Never shows a traceback for bad input.
+
+    Run as the program (``argv`` None: the arguments are ``sys.argv``), it turns SIGINT and
+    SIGTERM into a one-line exit 130 or 143 (:func:`scanconv.cli.output.catch_signals`);
+    called in-process with ``argv`` it leaves the caller's signal handlers alone, so that a
+    SIGTERM to a test runner still ends it."""
     from typer._click import exceptions as click_exc  # typer vendors click
 
-    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:  # started in the background by a shell
+    as_program = argv is None
+    if as_program and signal.getsignal(signal.SIGINT) is signal.SIG_IGN:  # a shell's background
         signal.signal(signal.SIGINT, signal.default_int_handler)
     if argv is None:
         argv = sys.argv[1:]
@@ -125,7 +81,7 @@ def main(argv: list[str] | None = None) -> int:
     argv = [_MINUS + a[1:] if a.lower() in _NONFINITE else a for a in students(argv)]
     command = _command_for(argv)
     code = 0
-    restore_signals = output.catch_signals()
+    restore_signals = output.catch_signals() if as_program else _nothing
     try:
         result = command.main(args=argv, prog_name=PROG, standalone_mode=False)
         code = result if isinstance(result, int) else 0
@@ -167,6 +123,10 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         restore_signals()
     return code
+
+
+def _nothing() -> None:
+    """Nothing to restore: an in-process run installs no signal handler."""
 
 
 _terminate = output.on_signal

@@ -84,7 +84,7 @@ def _words(s: str) -> list[str]:
 # --- the table of contents ----------------------------------------------------------------------
 
 
-def _contents(answered: list, fmt: str) -> str:
+def _contents(answered: list[Answered], fmt: str) -> str:
     """The table of contents of the book in ``fmt`` (markdown or plain)."""
     from ..render.sheet import md_text
 
@@ -101,7 +101,7 @@ def _contents(answered: list, fmt: str) -> str:
     return "\n".join(lines) + "\n\n"
 
 
-def _html_contents(document: str, answered: list) -> str:
+def _html_contents(document: str, answered: list[Answered]) -> str:
     """The HTML book with a linked table of contents after its introduction (each question's
     section has the id ``q<number>``)."""
     from html import escape
@@ -132,7 +132,7 @@ _SECTION = re.compile(r"\\section\*\{\\raggedright (.*)\}")
 _QUESTION = re.compile(r"\\subsection\*\{Question (\d+)\b.*")
 
 
-def _with_contents(document: str, answered: list, fmt: str, title: bool) -> str:
+def _with_contents(document: str, answered: list[Answered], fmt: str, title: bool) -> str:
     """``document`` (a whole sheet) with its table of contents: in markdown and plain after
     the title and the count of questions, in LaTeX ``\\tableofcontents`` and a contents line
     for every section and question (pdflatex twice fills it in)."""

@@ -13,6 +13,7 @@ import typer
 from .. import _api as api
 from ..algorithms.process_choices import AAMethod, FillRule, Order
 from ..core.records import Solution
+from ..questions import commands
 from .application import _subapp, app
 from .command import answers
 from .options import NUMERIC_ARGS, Center, Num, Vertices, choice, integer, number
@@ -58,26 +59,6 @@ def polygon(vertices: Vertices, rule: Rule = FillRule.even_odd) -> Solution:
     Example: scanconv polygon 2 3 7 1 13 5 13 11 7 7 2 9
     """
     return api.polygon(vertices, rule=rule)
-
-
-def _seed_fill(
-    method: str,
-    vertices: list[Fraction] | None,
-    seed: tuple[int, int],
-    rows: str | None,
-    connectivity: int,
-    order: Order,
-    span: bool,
-) -> Solution:
-    return api.fill(
-        method,
-        seed,
-        vertices=vertices or None,
-        rows=rows,
-        connectivity=connectivity,
-        order=order,
-        span=span,
-    )
 
 
 OptVertices = Annotated[
@@ -128,7 +109,7 @@ def _seed_command(kind: str, doc: str) -> Callable[..., Solution]:
         order: OrderOpt = Order.stack,
         span: Span = False,
     ) -> Solution:
-        return _seed_fill(kind, vertices, seed, rows, connectivity, order, span)
+        return commands.BODIES[f"fill_{kind}"](seed, vertices, rows, connectivity, order, span)
 
     command.__name__ = command.__qualname__ = f"fill_{kind}"
     command.__doc__ = doc

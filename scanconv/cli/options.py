@@ -23,24 +23,13 @@ import typer
 from typer._click.exceptions import NoSuchOption  # typer vendors click
 
 from ..core.numeric import parse_number
+from ..questions.words import looks_like_option
 from ..render import Format
 
 #: Commands that take numbers as positional arguments accept negative ones (``-3``) too.
 NUMERIC_ARGS: dict[str, Any] = {"ignore_unknown_options": True}
 
 # --- parsers ----------------------------------------------------------------------------------
-
-
-def _looks_like_option(text: str) -> bool:
-    """``-x``, ``--bogus``: an option name where a number was expected (``-3``, ``-.5`` and
-    ``-inf`` are values, the last refused as not finite)."""
-    s = text.strip()
-    return (
-        s.startswith("-")
-        and not s[1:2].isdigit()
-        and s[1:2] != "."
-        and s.lstrip("-").lower() not in ("nan", "inf", "infinity")
-    )
 
 
 def number(text: str | Fraction) -> Fraction:
@@ -54,7 +43,7 @@ def number(text: str | Fraction) -> Fraction:
     try:
         return parse_number(text)
     except ValueError as err:
-        if _looks_like_option(text):
+        if looks_like_option(text):
             raise NoSuchOption(text.strip()) from None
         raise typer.BadParameter(str(err)) from None
 
@@ -73,16 +62,6 @@ def coordinate(text: str) -> Fraction | str:
     """typer parser for one value of ``continuity``'s points: a number, or the ``:`` between
     the two segments."""
     return ":" if text.strip() == ":" else number(text)
-
-
-def segments(values: list[Any]) -> tuple[list[Fraction], list[Fraction]]:
-    """``X0 Y0 ... : X0 Y0 ...`` (parsed by :func:`coordinate`) as the two segments' values."""
-    if values.count(":") != 1:
-        raise ValueError(
-            "give two Bezier segments separated by ':', e.g. 0 0 1 1 2 0 : 2 0 3 -1 4 0"
-        )
-    i = values.index(":")
-    return values[:i], values[i + 1 :]
 
 
 def choice(*names: str, help: str) -> Any:

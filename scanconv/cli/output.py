@@ -244,20 +244,46 @@ def write_figures(solution: Solution, origin: Origin, svg: Path | None, png: Pat
         write_atomic(png, lambda f: f.write(data), binary=True)
 
 
+Pending = tuple[Path, Callable[[IO[Any]], object], bool]
+"""A file to write: its path, what fills it, and whether it is binary."""
+
+
 def write_atomic(path: Path, fill: Callable[[IO[Any]], object], *, binary: bool = False) -> None:
     """Create ``path`` through a temporary file in its directory and a rename.
 
     A failure leaves any existing file untouched and no partial file behind (exit 1).
     ``fill`` gets a text file (UTF-8, ``\\n`` line ends), or a binary one with ``binary``.
     """
-    import stat
-    import tempfile  # here, not at the top: only a file output needs it (start-up time)
+    write_all([(path, fill, binary)])
 
+
+def write_all(files: Iterable[Pending]) -> None:
+    """Write several files all or none: each is written in full to a temporary file beside
+    it, and only when every one is complete are they all renamed into place. A failure
+    before the renames leaves none of them and the old files untouched (exit 1).
+
+    A special file (``/dev/null``, ``/dev/stdout``, a FIFO) has nothing to replace: it is
+    written into, after the renames.
+    """
+    staged: list[tuple[str, Path, Path]] = []
+    special: list[Pending] = []
     try:
-        special = not stat.S_ISREG(os.stat(path).st_mode)
-    except OSError:  # missing (or unreadable): created below, or the error is reported there
-        special = False
-    if special:  # /dev/null, /dev/stdout, a FIFO: nothing to replace, so write into it
+        for path, fill, binary in files:
+            if _is_special(path):
+                special.append((path, fill, binary))
+            else:
+                staged.append(_stage(path, fill, binary))
+        while staged:
+            tmp, target, path = staged[0]
+            try:
+                os.replace(tmp, target)
+            except OSError as err:
+                fail(f"cannot write {path}: {err.strerror or err}", 1)
+            staged.pop(0)
+    finally:
+        for tmp, _, _ in staged:
+            _unlink(tmp)
+    for path, fill, binary in special:
         try:
             with (
                 open(path, "wb") if binary else open(path, "w", encoding="utf-8", newline="\n")
@@ -265,12 +291,27 @@ def write_atomic(path: Path, fill: Callable[[IO[Any]], object], *, binary: bool 
                 fill(f)
         except OSError as err:
             fail(f"cannot write {path}: {err.strerror or err}", 1)
-        return
-    target = Path(os.path.realpath(path))  # through a symlink: replace its target, keep the link
-    directory = target.parent
+
+
+def _is_special(path: Path) -> bool:
+    """Whether ``path`` exists and is not a regular file (a device, a FIFO)."""
+    import stat
+
+    try:
+        return not stat.S_ISREG(os.stat(path).st_mode)
+    except OSError:  # missing (or unreadable): created, or the error is reported then
+        return False
+
+
+def _stage(path: Path, fill: Callable[[IO[Any]], object], binary: bool) -> tuple[str, Path, Path]:
+    """Write the whole of ``path``'s content to a temporary file in its directory: the
+    temporary file, the target (a symlink's target: the link is kept) and ``path``."""
+    import tempfile  # here, not at the top: only a file output needs it (start-up time)
+
+    target = Path(os.path.realpath(path))
     blocked = _block_signals()  # a signal between creating the temporary and naming it: later
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
     except OSError as err:
         _unblock_signals(blocked)
         fail(f"cannot write {path}: {err.strerror or err}", 1)
@@ -281,13 +322,45 @@ def write_atomic(path: Path, fill: Callable[[IO[Any]], object], *, binary: bool 
         ) as f:
             fill(f)
         os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the mode open() would
-        os.replace(tmp, target)
     except OSError as err:
         _unlink(tmp)
         fail(f"cannot write {path}: {err.strerror or err}", 1)
     except BaseException:
         _unlink(tmp)
         raise
+    return tmp, target, path
+
+
+def check_paths(inputs: Iterable[tuple[str, Any]], outputs: Iterable[tuple[str, Any]]) -> None:
+    """Refuse, before any work (exit 2), an output that is a directory or that names the same
+    file as an input or as another output (it would be overwritten). Each is ``(label,
+    path)``: ``("QUESTIONS", "q.txt")``, ``("--pdf", "a.pdf")``; ``None`` and ``-`` (standard
+    input or output) are skipped, and so are devices such as ``/dev/null``."""
+    seen: dict[Any, tuple[str, Any]] = {}
+    for label, path in inputs:
+        if path not in (None, "", "-"):
+            seen.setdefault(_identity(path), (label, path))
+    for label, path in outputs:
+        if path in (None, "", "-"):
+            continue
+        if os.path.isdir(path):
+            fail(f"{label} {path}: is a directory; give a file name")
+        if _is_special(Path(path)):
+            continue
+        key = _identity(path)
+        if key in seen:
+            other, other_path = seen[key]
+            fail(f"{label} {path}: the same file as {other} {other_path}; give another name")
+        seen[key] = (label, path)
+
+
+def _identity(path: Any) -> Any:
+    """What names one file: its device and inode if it exists, else its resolved path."""
+    try:
+        st = os.stat(path)
+        return (st.st_dev, st.st_ino)
+    except (OSError, ValueError):
+        return os.path.normcase(os.path.realpath(path))
 
 
 def _block_signals() -> Any:

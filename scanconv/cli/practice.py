@@ -21,17 +21,18 @@ import typer
 
 from .application import app
 from .options import integer
-from .output import fail, note, write_atomic
+from .output import check_paths, fail, note, write_all
 from .sheet import (
     SHEET_EXTENSIONS,
     SheetFormat,
     SheetFormatOpt,
     SheetOutputOpt,
     answer_questions,
+    pdf_file,
     read_questions,
     sheet_format,
+    text_file,
     write_document,
-    write_pdf,
 )
 
 
@@ -45,6 +46,10 @@ class Topic(str, Enum):
     bspline = "bspline"
     storage = "storage"
     quantize = "quantize"
+    dither = "dither"
+    inside = "inside"
+    clip = "clip"
+    framebuffer = "framebuffer"
     all = "all"
 
 
@@ -137,6 +142,8 @@ def practice(
     for name, value in (("--key", key), ("--questions", questions), ("--pdf", pdf)):
         if value == "":
             fail(f"{name} needs a file name")
+    outputs = [("--output", output), ("--key", key), ("--questions", questions), ("--pdf", pdf)]
+    check_paths([], outputs)
     if not 1 <= count <= MAX_COUNT:  # checked before a seed is chosen and announced
         fail(f"--count must be 1 to {MAX_COUNT} (got {count})")
     if seed is None:
@@ -158,6 +165,7 @@ def practice(
         if pdf is not None:
             worksheet_tex = sheet_document(sheet, answered, "worksheet", "latex", standalone=True)
         key_text = None
+        as_pdf = False
         if key is not None:
             key_fmt = _key_format(key)
             as_pdf = key_fmt == "pdf"
@@ -170,18 +178,16 @@ def practice(
             )
     except ValueError as err:
         fail(" ".join(str(err).split()))
-    if worksheet_tex is not None and pdf is not None:
-        write_pdf(worksheet_tex, Path(pdf))
+    files = [pdf_file(pdf, worksheet_tex)] if worksheet_tex is not None and pdf else []
     if key is not None and key_text is not None:
-        if key.lower().endswith(".pdf"):
-            write_pdf(key_text, Path(key))
-        else:
-            write_atomic(Path(key), lambda f: f.write(key_text))
+        files.append(pdf_file(key, key_text) if as_pdf else text_file(key, key_text))
     if questions is not None:
-        write_atomic(Path(questions), lambda f: f.write(text))
-    if output is None and pdf is not None and fmt is SheetFormat.auto:
-        return  # only the PDF of the worksheet was asked for
-    write_document(worksheet, output)
+        files.append(text_file(questions, text))
+    if output is not None:
+        files.append(text_file(output, worksheet))
+    write_all(files)  # every file or none
+    if output is None and not (pdf is not None and fmt is SheetFormat.auto):
+        write_document(worksheet, None)  # unless only the PDF of the worksheet was asked for
 
 
 def _key_format(path: str) -> str:

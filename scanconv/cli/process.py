@@ -8,13 +8,12 @@ from fractions import Fraction
 from typing import Annotated
 
 import typer
-from typer._click.exceptions import NoSuchOption  # typer vendors click
 
 from .. import _api as api
 from ..algorithms.choices import LineAlgorithm
 from ..algorithms.process_choices import LineClipMethod, PolygonClipMethod
-from ..core.numeric import parse_number
 from ..core.records import Solution
+from ..questions import commands
 from .application import app, clip_app, pipeline_app
 from .command import answers
 from .options import NUMERIC_ARGS, Num, Vertices, number
@@ -63,55 +62,6 @@ class FillRule(str, Enum):
     nonzero = "nonzero"
 
 
-def _is_number(word: str) -> bool:
-    try:
-        parse_number(word)
-    except ValueError:
-        return False
-    return True
-
-
-#: The transformation words of ``transform``, spelled as options (with their ``--``).
-WORDS = {"--translate", "--scale", "--rotate", "--reflect", "--shear", "--about", "--points"}
-
-
-def _check_word(word: str) -> None:
-    """Refuse an empty word (as every number parser does) and an unknown option (``-Z``,
-    ``--bogus``) the way click would; negative numbers and angles (``-pi/2``) are values."""
-    if not word.strip():
-        number(word)  # raises: empty value where a number is expected
-    if not word.startswith("-") or word.split("=", 1)[0] in WORDS or _is_number(word):
-        return
-    from ..answers.transform import parse_angle  # here: only a run of transform needs it
-
-    try:
-        parse_angle(word)
-    except ValueError:
-        raise NoSuchOption(word.split("=", 1)[0]) from None
-
-
-def split_words(words: list[str]) -> tuple[list[Fraction], list[str]]:
-    """The points (the numbers before the first transformation, or after ``--points``) and
-    the transformation words, in order.
-
-    >>> split_words(["0", "0", "4", "0", "--rotate", "90", "--about", "2", "1"])
-    ([Fraction(0, 1), Fraction(0, 1), Fraction(4, 1), Fraction(0, 1)], ['--rotate', '90', '--about', '2', '1'])
-    """
-    points: list[Fraction] = []
-    ops: list[str] = []
-    taking = True
-    for word in words:
-        _check_word(word)
-        if word == "--points":
-            taking = True
-        elif taking and _is_number(word):
-            points.append(number(word))
-        else:
-            taking = False
-            ops.append(word)
-    return points, ops
-
-
 @app.command(context_settings=NUMERIC_ARGS, help=TRANSFORM_HELP)
 @answers()
 def transform(
@@ -128,8 +78,7 @@ def transform(
         typer.Option("--inverse", help="Also show the inverse of the composite matrix."),
     ] = False,
 ) -> Solution:
-    points, ops = split_words(words)
-    return api.transform(points, ops, inverse=inverse)
+    return commands.transform(words, inverse)
 
 
 @app.command(context_settings=NUMERIC_ARGS)

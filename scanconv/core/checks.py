@@ -18,22 +18,28 @@ class InputError(ValueError):
         """The parameter's name in the library's signature (``None``: no single one)."""
 
 
-def check_integer(value: Number, what: str, *, negative: bool = True) -> int:
-    """``value`` as an int within :data:`~scanconv.core.numeric.COORD_LIMIT`, or ``ValueError``.
+def check_integer(
+    value: Number, what: str, *, negative: bool = True, param: str | None = None
+) -> int:
+    """``value`` as an int within :data:`~scanconv.core.numeric.COORD_LIMIT`, or
+    :class:`InputError` naming ``what`` (about ``param``).
 
     >>> from fractions import Fraction
     >>> check_integer(Fraction(-3), "xc")
     -3
-    >>> check_integer(-1, "radius", negative=False)
+    >>> check_integer(-1, "radius", negative=False, param="r")
     Traceback (most recent call last):
     ...
-    ValueError: radius must be a non-negative integer, got -1
+    scanconv.core.checks.InputError: radius must be a non-negative integer, got -1
     """
-    v = as_int(normalize(value), what)
+    try:
+        v = as_int(normalize(value), what)
+    except ValueError as err:
+        raise InputError(str(err), param) from None
     if not negative and v < 0:
-        raise ValueError(f"{what} must be a non-negative integer, got {v}")
+        raise InputError(f"{what} must be a non-negative integer, got {v}", param)
     if abs(v) > COORD_LIMIT:
-        raise ValueError(f"{what} = {v} is out of range (|value| <= {COORD_LIMIT:.0e})")
+        raise InputError(f"{what} = {v} is out of range (|value| <= {COORD_LIMIT:.0e})", param)
     return v
 
 

@@ -399,7 +399,7 @@ class _Compiler:
                     bits = max(base.numerator.bit_length(), base.denominator.bit_length())
                     if bits * abs(power) > MAX_BITS:
                         raise ValueError(f"exact value too large (more than {MAX_BITS} bits)")
-                    return base**power  # type: ignore[return-value]
+                    return base**power
 
         elif le is not None and re_ is not None:
             op = _exact_div if symbol == "/" else _EXACT_BINOPS[symbol]

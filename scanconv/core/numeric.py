@@ -78,11 +78,12 @@ def round_half_away(v: Number | float) -> int:
     return round_half_up(f) if f >= 0 else -round_half_up(-f)
 
 
-def parse_number(text: str) -> Fraction:
+def parse_number(text: str, limit: int = COORD_LIMIT) -> Fraction:
     """Parse a decimal, integer or ``a/b`` literal exactly.
 
-    NaN, infinities, empty strings, overlong literals and magnitudes beyond
-    :data:`COORD_LIMIT` are refused with a :class:`ValueError` that names the problem.
+    NaN, infinities, empty strings, overlong literals and magnitudes beyond ``limit``
+    (:data:`COORD_LIMIT`: coordinates) are refused with a :class:`ValueError` that names the
+    problem.
 
     >>> parse_number("2.5"), parse_number("-3/4"), parse_number("1e2")
     (Fraction(5, 2), Fraction(-3, 4), Fraction(100, 1))
@@ -104,8 +105,8 @@ def parse_number(text: str) -> Fraction:
     if "/" in s and int(s.split("/")[1]) == 0:
         raise ValueError(f"{text!r} divides by zero")
     value = Fraction(s)
-    if abs(value) > COORD_LIMIT:
-        raise ValueError(f"{text!r} is out of range (|value| <= {COORD_LIMIT:.0e})")
+    if abs(value) > limit:
+        raise ValueError(f"{text!r} is out of range (|value| <= {limit:.0e})")
     return value
 
 
@@ -119,21 +120,6 @@ def as_int(value: Number, what: str) -> int:
         if value.denominator != 1:
             raise ValueError(f"{what} must be an integer, got {fmt(value)}")
         return value.numerator
-    return value
-
-
-def check_between(value: int, what: str, lo: int, hi: int) -> int:
-    """Return ``value`` if ``lo <= value <= hi``, else a ``ValueError`` naming the bound.
-
-    >>> check_between(25, "bits per pixel", 1, 24)
-    Traceback (most recent call last):
-    ...
-    ValueError: bits per pixel must be at most 24, got 25
-    """
-    if value < lo:
-        raise ValueError(f"{what} must be at least {lo}, got {value}")
-    if value > hi:
-        raise ValueError(f"{what} must be at most {hi}, got {value}")
     return value
 
 

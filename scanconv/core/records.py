@@ -85,7 +85,7 @@ class Step(NamedTuple):
 
 #: Building a record through ``tuple.__new__`` skips NamedTuple's Python-level ``__new__``;
 #: the hot loops use it (``_step(Step, (k, p, move, pixel, extra))``).
-new_step: Callable[[type[Step], tuple[Any, ...]], Step] = tuple.__new__  # type: ignore[assignment]
+new_step: Callable[[type[Step], tuple[Any, ...]], Step] = tuple.__new__
 
 
 class Column(NamedTuple):
@@ -346,7 +346,9 @@ class Solution:
         return any(c.key == "decision" for c in self.columns)
 
 
-def step_getter(columns: Iterable[Column], extra_keys: tuple[str, ...]) -> Callable[[Step], tuple]:
+def step_getter(
+    columns: Iterable[Column], extra_keys: tuple[str, ...]
+) -> Callable[[Step], tuple[Any, ...]]:
     """A function that turns a step into its cells, in column order.
 
     >>> get = step_getter([Column("k", "k", "k"), Column("p_next", "p", "p")], ("p_next",))
@@ -359,7 +361,7 @@ def step_getter(columns: Iterable[Column], extra_keys: tuple[str, ...]) -> Calla
         for c in columns
     ]
 
-    def get(step: Step) -> tuple:
+    def get(step: Step) -> tuple[Any, ...]:
         return tuple(step[i] if j is None else step.extra[j] for i, j in where)
 
     return get

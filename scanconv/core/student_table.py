@@ -43,12 +43,18 @@ from .numeric import parse_number
 MAX_TABLE_BYTES = 2**18
 """Largest student file read (256 KiB): a 1,000-row table of a dozen columns is under 60 KiB."""
 
+CELL_LIMIT = 10**24
+"""Largest magnitude of a student's number: a decision parameter of a large ellipse passes
+10^9 (1,726,200,000 for rx = ry = 1200), far below this."""
+
 MAX_TABLE_ROWS = 5000
 """Most rows of a student table: more than any hand-written table, and enough to mark a long
 line's or a large circle's table written by a student's own program."""
 
 FIELDS = ("k", "p", "p_next", "decision", "x", "y", "xy", "px", "py", "pxy", "region")
 """The canonical fields, in the order a table lists them."""
+
+_PIXEL_FIELDS = {"x", "xy", "px", "pxy"}
 
 _SUBSCRIPTS = str.maketrans(
     {
@@ -66,14 +72,34 @@ _SUBSCRIPTS = str.maketrans(
 )
 _DROP = re.compile(r"[\s$\\{}_*`'\"]")
 _NAMES = {
-    "k": ("k", "step", "i", "n", "#", "no", "no.", "row", "iteration", "stepk", "kstep"),
+    "k": ("k", "step", "i", "n", "#", "no", "no.", "row", "iteration", "stepk", "kstep", "step(k)"),
     "p": ("p", "pk", "p(k)", "d", "dk", "p1k", "p2k", "p1", "p2", "decisionparameter", "pi"),
-    "p_next": ("pk+1", "p(k+1)", "pnext", "nextp", "dk+1", "p1k+1", "p2k+1", "newp", "nextpk+1"),
-    "decision": ("decision", "move", "choice", "direction", "dir", "step?"),
+    "p_next": (
+        "pk+1",
+        "p(k+1)",
+        "pnext",
+        "nextp",
+        "dk+1",
+        "p1k+1",
+        "p2k+1",
+        "newp",
+        "nextpk+1",
+        "updatep",
+        "updatedp",
+        "nextdk+1",
+    ),
+    "decision": ("decision", "move", "choice", "choose", "chosen", "direction", "dir", "step?"),
     "x": ("x", "xk", "xk+1", "xi", "x(k)", "x(k+1)", "newx", "nextx"),
     "y": ("y", "yk", "yk+1", "yi", "y(k)", "y(k+1)", "newy", "nexty"),
     "region": ("region", "reg", "r"),
 }
+_TEX = re.compile(r"\\(text|mathrm|mathit|operatorname|textrm|mathbf)\b")
+_QUALIFIER = re.compile(
+    r"\((calculated|calc|computed|float|exact|real|rounded|round|one octant|first octant|octant"
+    r"|px|pixels|pixel units|in pixels|units|integer|int)\)"
+)
+_PAIR_HEAD = re.compile(r"\(?x(k\+1|k|i)?[,;]?y(k\+1|k|i)?\)?")
+_PIXEL_WORDS = re.compile(r"(pixels?|plotted|plot|points?|at|to|the|chosen|lower|left)*")
 _ROUNDED = ("round", "plot", "pixel", "int", "rnd")
 _LOOKUP = {name: field for field, names in _NAMES.items() for name in names}
 
@@ -85,8 +111,9 @@ class Cell(NamedTuple):
     places: int
 
 
-Value = Cell | tuple[Cell, Cell] | None
-"""A cell: a number, a coordinate pair, or nothing (an empty cell or a dash)."""
+Value = Cell | tuple[Cell, Cell] | str | None
+"""A cell: a number, a coordinate pair, a move (a decision: ``NE``), or nothing (an empty
+cell or a dash)."""
 
 
 class Row(NamedTuple):
@@ -119,15 +146,29 @@ def field_of(heading: str) -> tuple[str | None, bool]:
     >>> field_of("Pixel"), field_of(" X k "), field_of("2ry²x")
     (('pxy', False), ('x', False), (None, False))
     """
-    h = _DROP.sub("", heading.translate(_SUBSCRIPTS).lower())
-    after = "k+1" in h and h not in ("pk+1", "p(k+1)", "dk+1", "p1k+1", "p2k+1")
+    t = _TEX.sub("", heading.translate(_SUBSCRIPTS).lower())
+    qualifier = _QUALIFIER.search(t)
+    said_rounded = qualifier is not None and qualifier.group(1) in (
+        "rounded",
+        "round",
+        "integer",
+        "int",
+    )
+    h = _DROP.sub("", _QUALIFIER.sub("", t))
+    after = "k+1" in h and h not in ("pk+1", "p(k+1)", "dk+1", "p1k+1", "p2k+1", "nextpk+1")
     if h in _LOOKUP:
-        return _LOOKUP[h], after and _LOOKUP[h] in ("x", "y")
+        field = _LOOKUP[h]
+        if said_rounded and field in ("x", "y"):
+            field = "p" + field
+        return field, after and field in ("x", "y", "px", "py")
+    words = _PIXEL_WORDS.match(h)
+    prefix, rest = (words.group(0), h[words.end() :]) if words else ("", h)
+    named_pixel = any(w in prefix for w in ("pixel", "plot", "point"))
+    pair = _PAIR_HEAD.fullmatch(rest) is not None and (prefix == "" or named_pixel)
+    if (rest == "" and named_pixel) or pair:
+        rounded = named_pixel or said_rounded or any(w in h for w in _ROUNDED)
+        return ("pxy" if rounded else "xy"), "k+1" in rest
     rounded = any(w in h for w in _ROUNDED)
-    if (h.startswith("(") and "x" in h and "y" in h and "," in h) or h in ("point", "points"):
-        return ("pxy" if rounded else "xy"), after
-    if h in ("pixel", "pixels", "plot", "plotted", "pixeltoplot", "pixelplotted"):
-        return "pxy", False
     bare = re.sub(r"round|plot(ted)?|pixel|int|rnd|[()\[\]]", "", h)
     if rounded and bare in ("x", "xk", "xk+1"):
         return "px", after
@@ -190,8 +231,12 @@ def parse_text(text: str, name: str, suffix: str = "") -> StudentTable:
     if suffix == ".json" or (suffix not in (".csv", ".md", ".markdown") and start in "[{"):
         headers, rows = _json_rows(text, name)
     elif suffix in (".md", ".markdown") or (
-        suffix != ".csv" and any(ln.lstrip().startswith("|") for ln in text.splitlines())
+        suffix not in (".csv", ".tsv", ".txt") and _SEPARATOR.search(text)
     ):
+        headers, rows = _markdown_rows(text, name)
+    elif suffix not in (".csv", ".tsv") and _RULE.search(text):
+        headers, rows = _plain_rows(text, name)
+    elif suffix not in (".csv", ".tsv", ".txt") and re.search(r"^\s*\|", text, re.M):
         headers, rows = _markdown_rows(text, name)
     else:
         headers, rows = _csv_rows(text, name)
@@ -207,13 +252,13 @@ RawRow = tuple[str, list[Any]]
 def _csv_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
     lines = text.splitlines()
     first = next((ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#")), "")
-    delimiter = ","
-    if "," not in first:
-        delimiter = "\t" if "\t" in first else ";" if ";" in first else ","
+    # a tab first: the notes' tables are tab-separated with commas inside "(x, y)"
+    bare = re.sub(r"[(\[][^)\]]*[)\]]", "", first)  # the commas of "(x, y)" part nothing
+    delimiter = "\t" if "\t" in bare else "," if "," in bare else ";" if ";" in bare else " "
     headers: list[str] | None = None
     rows: list[RawRow] = []
     try:
-        reader = csv.reader(lines, delimiter=delimiter)
+        reader = csv.reader(lines, delimiter=delimiter) if delimiter != " " else _spaced(lines)
         for number, cells in enumerate(reader, 1):
             if not any(c.strip() for c in cells) or cells[0].lstrip().startswith("#"):
                 continue
@@ -226,6 +271,20 @@ def _csv_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
     except csv.Error as err:
         raise InputError(f"{name}: not a CSV table ({err})", "answer") from None
     return headers or [], rows
+
+
+def _spaced(lines: list[str]) -> list[list[str]]:
+    """Columns lined up with spaces (a table typed in a text file): two or more spaces part
+    the cells if the heading has them, else any space does.
+
+    >>> _spaced(["k  p_k  (x, y)", "0    0  (2, 2)"])
+    [['k', 'p_k', '(x, y)'], ['0', '0', '(2, 2)']]
+    """
+    first = next((ln for ln in lines if ln.strip()), "")
+    wide = re.search(r"\S {2,}\S", first.strip()) is not None
+    return [
+        re.split(r" {2,}" if wide else r"\s+", ln.strip()) if ln.strip() else [] for ln in lines
+    ]
 
 
 def _rejoin(cells: list[str], delimiter: str) -> list[str]:
@@ -241,49 +300,107 @@ def _rejoin(cells: list[str], delimiter: str) -> list[str]:
             out[-1] += delimiter + c
         else:
             out.append(c)
-        s = out[-1].strip()
-        open_ = s.startswith(("(", "[")) and not s.endswith((")", "]"))
+        s = out[-1]
+        open_ = s.count("(") + s.count("[") > s.count(")") + s.count("]")
     return out
 
 
 def _markdown_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
-    headers: list[str] | None = None
-    rows: list[RawRow] = []
+    """The pipe tables of a Markdown text (fenced code skipped), as :func:`_choose` picks."""
+    tables: list[tuple[list[str], list[RawRow]]] = []
     block: list[tuple[int, list[str]]] = []
+    bad: list[int] = []
 
     def flush() -> None:
-        nonlocal headers
         if not block:
             return
-        if len(block) < 2 or not all(re.fullmatch(r":?-+:?", c.strip()) for c in block[1][1]):
-            raise InputError(
-                f"{name}, line {block[0][0]}: a pipe table needs a heading row and a "
-                "|---| separator row",
-                "answer",
-            )
-        heads = block[0][1]
-        if headers is None:
-            headers = heads
-        elif [field_of(h)[0] for h in heads] != [field_of(h)[0] for h in headers]:
-            raise InputError(
-                f"{name}, line {block[0][0]}: a second table with other columns than the first",
-                "answer",
-            )
-        rows.extend((f"line {n}", cells) for n, cells in block[2:])
-        _check_rows(rows, name)
+        if len(block) >= 2 and all(re.fullmatch(r":?-+:?", c.strip()) for c in block[1][1]):
+            tables.append((block[0][1], [(f"line {n}", cells) for n, cells in block[2:]]))
+        else:
+            bad.append(block[0][0])
         block.clear()
 
+    fence = False
     for number, line in enumerate(text.splitlines(), 1):
         s = line.strip()
-        if s.startswith("|"):
+        if s.startswith(("```", "~~~")):
+            flush()
+            fence = not fence
+        elif s.startswith("|") and not fence:
             body = s[1:-1] if s.endswith("|") and len(s) > 1 else s[1:]
             block.append((number, [c.strip() for c in re.split(r"(?<!\\)\|", body)]))
         else:
             flush()
     flush()
-    if headers is None:
+    if not tables and bad:
+        raise InputError(
+            f"{name}, line {bad[0]}: a pipe table needs a heading row and a |---| separator row",
+            "answer",
+        )
+    if not tables:
         raise InputError(f"{name}: no pipe table found", "answer")
+    return _choose(tables, name)
+
+
+def _choose(
+    tables: list[tuple[list[str], list[RawRow]]], name: str
+) -> tuple[list[str], list[RawRow]]:
+    """The step table among a document's tables: the one with pixels that names the most
+    known columns (the first on a tie), and the rows of the later tables with the same columns
+    (an ellipse's region 2); tables of other columns (a symmetry table) are left out."""
+    known = [[field_of(str(h))[0] for h in heads] for heads, _ in tables]
+    steps = [i for i, f in enumerate(known) if _PIXEL_FIELDS & set(f)]
+    if not steps:
+        return tables[0]
+    best = max(steps, key=lambda i: (len({f for f in known[i] if f}), -i))
+    headers, rows = tables[best][0], list(tables[best][1])
+    for i in range(best + 1, len(tables)):
+        if known[i] == known[best]:
+            rows += tables[i][1]
+            _check_rows(rows, name)
     return headers, rows
+
+
+_RULE = re.compile(r"^ *-+(?: {2,}-+)+ *$", re.MULTILINE)
+"""The rule under a plain-text table's heading: runs of dashes, one per column."""
+_SEPARATOR = re.compile(r"^\s*\|?\s*:?-+:?\s*\|", re.MULTILINE)
+"""A Markdown table's separator row (``|---|:--:|``)."""
+_TOKEN = re.compile(r"\S+(?: \S+)*")
+
+
+def _plain_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
+    """scanconv's plain text (``-f plain``): the first table under a dash rule whose heading
+    names the pixels; each cell goes to the column its text overlaps most.
+
+    >>> _plain_rows("k  (x, y)\\n-  ------\\n0  (2, 2)\\n1  (3, 3)\\n\\nend\\n", "a.txt")
+    (['k', '(x, y)'], [('line 3', ['0', '(2, 2)']), ('line 4', ['1', '(3, 3)'])])
+    """
+    lines = text.splitlines()
+    tables: list[tuple[list[str], list[RawRow]]] = []
+    for i, line in enumerate(lines):
+        if i == 0 or not _RULE.fullmatch(line):
+            continue
+        spans = [(m.start(), m.end()) for m in re.finditer(r"-+", line)]
+        rows: list[RawRow] = []
+        for n in range(i + 1, len(lines)):
+            if not lines[n].strip():
+                break
+            rows.append((f"line {n + 1}", _spread(lines[n], spans)))
+            _check_rows(rows, name)
+        tables.append((_spread(lines[i - 1], spans), rows))
+    assert tables  # the caller found a rule
+    return _choose(tables, name)
+
+
+def _spread(line: str, spans: list[tuple[int, int]]) -> list[str]:
+    """The cells of a plain-text row: each run of text to the column it overlaps most."""
+    cells = [""] * len(spans)
+    for m in _TOKEN.finditer(line):
+        a, b = m.span()
+        overlap = [min(b, e) - max(a, s) for s, e in spans]
+        best = max(range(len(spans)), key=lambda j: (overlap[j], -abs(spans[j][0] - a)))
+        cells[best] = (cells[best] + " " + m.group(0)).strip()
+    return cells
 
 
 def _json_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
@@ -328,31 +445,42 @@ def _build(name: str, headers: list[str], raw: list[RawRow]) -> StudentTable:
     mapped: list[str | None] = []
     after = False
     ignored: list[str] = []
-    seen: dict[str, str] = {}
-    for h in headers:
+    seen: dict[str, int] = {}
+    for i, h in enumerate(headers):
         heading = str(h)
         field, says_after = field_of(heading)
         after = after or says_after
         if field is not None and field in seen:
-            raise InputError(
-                f"{name}: two columns are both read as {field}: {seen[field]!r} and {heading!r}",
-                "answer",
-            )
+            j = seen[field]
+            if any(_text(c, i) != _text(c, j) for _, c in raw):
+                raise InputError(
+                    f"{name}: two columns are both read as {field}: "
+                    f"{str(headers[j])!r} and {heading!r}",
+                    "answer",
+                )
+            field = None  # the same values twice (a pixel and its rounding): read once
         if field is None:
             if heading.strip():
                 ignored.append(heading.strip())
         else:
-            seen[field] = heading
+            seen[field] = i
         mapped.append(field)
     fields = tuple(f for f in mapped if f is not None)
-    for a, b in (("x", "y"), ("px", "py")):
-        if (a in fields) != (b in fields):
-            have, lack = (a, b) if a in fields else (b, a)
-            raise InputError(f"{name}: a column {seen[have]!r} but no column for {lack}", "answer")
-    if not {"x", "xy", "px", "pxy"} & set(fields):
+    has = set(fields)
+    if not {"xy", "pxy"} & has:
+        for a, b in (("x", "y"), ("px", "py"), ("y", "x"), ("py", "px")):
+            # a coordinate needs the other one, plain or rounded (x next to round(y))
+            if a in has and not {b, "p" + b[-1], b[-1]} & has:
+                raise InputError(
+                    f"{name}: a column {str(headers[seen[a]])!r} but no column for {b[-1]}",
+                    "answer",
+                )
+    if not _PIXEL_FIELDS & set(fields):
+        found = ", ".join(repr(str(h).strip()) for h in headers if str(h).strip())
         raise InputError(
-            f"{name}: no column for the pixels (expected (x, y), x and y, pixel or plot; "
-            f"found {', '.join(repr(str(h)) for h in headers)})",
+            f"{name}: no column for the pixels among the columns {found}; it needs one like "
+            "'(x, y)', 'Pixel Plotted (x, y)' or two columns 'x' and 'y' "
+            "(p_k, Decision and p_{k+1} are read too)",
             "answer",
         )
     if not raw:
@@ -368,10 +496,37 @@ def _build(name: str, headers: list[str], raw: list[RawRow]) -> StudentTable:
             )
         values: dict[str, Value] = {}
         for field, text in zip(mapped, cells, strict=False):
-            if field is not None and field not in ("decision", "k"):
+            if field == "decision":
+                values[field] = move_of(text)
+            elif field is not None and field != "k":
                 values[field] = _value(text, field, name, where)
         rows.append(Row(where, values))
     return StudentTable(name, fields, after, tuple(rows), tuple(ignored))
+
+
+def _text(cells: list[Any], i: int) -> str:
+    return " ".join(str(cells[i]).split()) if i < len(cells) and cells[i] is not None else ""
+
+
+_MOVE = re.compile(r"\b(NE|NW|SE|SW|N|E|S|W)\b")
+
+
+def move_of(raw: Any) -> str | None:
+    """A decision cell as a move: ``NE``, ``E (keep y)``, ``p < 0: E``, ``se`` (``None``: no
+    move named).
+
+    >>> move_of(" ne "), move_of("E (x + 1)"), move_of("p < 0 -> E"), move_of("-")
+    ('NE', 'E', 'E', None)
+    >>> move_of("keep"), move_of("n/a")
+    (None, None)
+    """
+    if raw is None or isinstance(raw, (bool, int, float, list, dict)):
+        return None
+    text = str(raw).strip().strip("$*`").strip()
+    if text.lower() in _EMPTY:
+        return None
+    m = _MOVE.search(text.upper())
+    return m.group(1) if m else None
 
 
 _EMPTY = ("", "-", "\u2013", "\u2014", "none", "null", "n/a", "na")
@@ -411,7 +566,7 @@ def _number(raw: Any, name: str, where: str) -> Cell:
         raw = repr(raw)
     text = str(raw).strip().strip("$*`").strip().replace("\u2212", "-")
     try:
-        value = parse_number(text)
+        value = parse_number(text, CELL_LIMIT)
     except ValueError as err:
         raise InputError(f"{name}, {where}: {err}", "answer") from None
     places = len(text.split(".", 1)[1]) if "." in text and "e" not in text.lower() else 0

@@ -1,7 +1,8 @@
 """The ``csv`` and ``json`` formats: data for other tools, streamed row by row.
 
-CSV is the step table only, one header row of column keys; a pixel column becomes two
-columns ``x`` and ``y``. JSON is one object (documented in the README, "JSON output")::
+CSV is the step table only, one header row of unique column names; a pixel column becomes two
+columns ``x`` and ``y`` (``plot_x`` and ``plot_y`` next to the algorithm's own coordinates,
+:func:`pixel_names`). JSON is one object (documented in the README, "JSON output")::
 
     {"primitive": "line", "algorithm": "bresenham", "title": ..., "given": {...},
      "derived": {...}, "working": [...], "notes": [...], "columns": [...],
@@ -35,7 +36,7 @@ def render_csv(solution: Solution) -> Iterator[str]:
     keys = [k for k in keys if k in shown or k in ("k", "pixel")]
     header: list[str] = []
     for k in keys:
-        header.extend(("x", "y") if k == "pixel" else (k,))
+        header.extend(pixel_names(solution.extra_keys) if k == "pixel" else (k,))
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(header)
@@ -54,6 +55,22 @@ def render_csv(solution: Solution) -> Iterator[str]:
         buf.truncate()
         writer.writerow(row)
         yield buf.getvalue()
+
+
+_COORDINATES = ("x", "y", "x_k", "y_k")
+
+
+def pixel_names(extra_keys: tuple[str, ...]) -> tuple[str, str]:
+    """The CSV names of the pixel's two columns: ``x, y``, or ``plot_x, plot_y`` next to the
+    algorithm's own coordinates (the DDA's exact ``x, y`` and ``round_x``, a circle's octant
+    point ``x_k, y_k``), so that every column name is unique and says what it holds.
+
+    >>> pixel_names(("p_next",)), pixel_names(("x", "y", "round_x", "round_y"))
+    (('x', 'y'), ('plot_x', 'plot_y'))
+    """
+    if any(k in _COORDINATES or k.startswith("round_") for k in extra_keys):
+        return ("plot_x", "plot_y")
+    return ("x", "y")
 
 
 def _table_csv(solution: Solution) -> Iterator[str]:

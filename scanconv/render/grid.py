@@ -71,35 +71,14 @@ def render_grid(
     w = 1 if compact else max(len(str(x)) for x in (x0, x1))
     lw = max(len(str(y)) for y in (y0, y1))
     ys = range(y0, y1 + 1) if origin == "top-left" else range(y1, y0 - 1, -1)
-    lines = []
-    for y in ys:
-        cells = []
-        for x in range(x0, x1 + 1):
-            p = (x, y)
-            ch = (
-                "@"
-                if (p in plotted and p in marked)
-                else "#"
-                if p in plotted
-                else ("o" if p in marked else ".")
-            )
-            cells.append(ch.ljust(w))
-        lines.append(f"{str(y).rjust(lw)} | " + " ".join(cells).rstrip())
+    lines = [
+        f"{str(y).rjust(lw)} | "
+        + " ".join(_cell((x, y), plotted, marked).ljust(w) for x in range(x0, x1 + 1)).rstrip()
+        for y in ys
+    ]
     ncols = x1 - x0 + 1
     lines.append(" " * lw + " +" + "-" * (ncols * (w + 1)))
-    if compact:
-        row = [" "] * (ncols * (w + 1) + 4)
-        end = -1
-        for i, x in enumerate(range(x0, x1 + 1)):
-            text = str(x)
-            start = i * (w + 1)
-            if x % 5 == 0 and start > end and start + len(text) <= ncols * (w + 1):
-                row[start : start + len(text)] = text
-                end = start + len(text)
-        labels = "".join(row).rstrip()
-    else:
-        labels = " ".join(str(x).ljust(w) for x in range(x0, x1 + 1)).rstrip()
-    lines.append(" " * (lw + 3) + labels)
+    lines.append(" " * (lw + 3) + _x_labels(x0, x1, w, compact))
     if legend is None:
         legend = "# = plotted pixel"
         if marked:
@@ -107,6 +86,29 @@ def render_grid(
     direction = "y down (screen addressing)" if origin == "top-left" else "y up"
     lines.append(f"{legend}; x to the right, {direction}")
     return lines
+
+
+def _cell(p: Pixel, plotted: set[Pixel], marked: set[Pixel]) -> str:
+    """``@`` plotted and marked, ``#`` plotted, ``o`` marked, ``.`` neither."""
+    if p in plotted:
+        return "@" if p in marked else "#"
+    return "o" if p in marked else "."
+
+
+def _x_labels(x0: int, x1: int, w: int, compact: bool) -> str:
+    """The x axis's labels: every column, or (``compact``) every fifth that fits."""
+    if not compact:
+        return " ".join(str(x).ljust(w) for x in range(x0, x1 + 1)).rstrip()
+    ncols = x1 - x0 + 1
+    row = [" "] * (ncols * (w + 1) + 4)
+    end = -1
+    for i, x in enumerate(range(x0, x1 + 1)):
+        text = str(x)
+        start = i * (w + 1)
+        if x % 5 == 0 and start > end and start + len(text) <= ncols * (w + 1):
+            row[start : start + len(text)] = text
+            end = start + len(text)
+    return "".join(row).rstrip()
 
 
 def figure_grid(figure: PixelFigure, origin: str) -> list[str]:

@@ -289,6 +289,7 @@ COSTS: dict[str, dict[str, float]] = {
     "line/basic": {"csv": 16.2, "json": 37.4, "plain": 53.5, "markdown": 41.7, "latex": 61.6, "html": 107.3, "rich": 695.7},
     "line/dda": {"csv": 20.7, "json": 38.7, "plain": 68.1, "markdown": 64.6, "latex": 56, "html": 178.5, "rich": 1072.5},
     "line/bresenham": {"csv": 9.8, "json": 17.5, "plain": 19.5, "markdown": 24, "latex": 15.4, "html": 87.3, "rich": 814.8},
+    "line/midpoint": {"csv": 9.8, "json": 17.5, "plain": 19.5, "markdown": 24, "latex": 24.7, "html": 100.5, "rich": 839.9},
     "line/wu": {"csv": 63.3, "json": 79.6, "plain": 102, "markdown": 105.9, "latex": 118.4, "html": 303, "rich": 1339},
     "circle/midpoint": {"csv": 8.7, "json": 66, "plain": 62.2, "markdown": 85.6, "latex": 126.7, "html": 133.5, "rich": 3444.2},
     "circle/bresenham": {"csv": 7.5, "json": 51.7, "plain": 61.9, "markdown": 104.7, "latex": 86.8, "html": 75.4, "rich": 2330.4},
@@ -320,7 +321,8 @@ COSTS: dict[str, dict[str, float]] = {
 ``benchmarks/bench_budget.py`` on the project's shared 2-CPU machine under load (the largest
 of two runs where there were two; a run that failed, such as a curve beyond its weight limit in
 the slower formats, takes the costliest text format's value). A polygon's csv is its edge
-table alone (0 us measured: 0.5)."""
+table alone (0 us measured: 0.5). The midpoint line, measured in one run, takes the larger of
+its and Bresenham's cost (the same walk)."""
 
 
 BYTES: dict[str, dict[str, float]] = {

@@ -1,0 +1,133 @@
+# The public names of scanconv, for type checkers and at run time: ``scanconv/__init__.py``
+# reads this stub to load each name on first use (as skimage's ``lazy.attach_stub`` does), so
+# it is the one list of the exports.
+from . import questions as questions
+from . import raster as raster
+from ._api import antialias_circle as antialias_circle
+from ._api import antialias_line as antialias_line
+from ._api import antialias_polygon as antialias_polygon
+from ._api import bezier as bezier
+from ._api import bezier_at as bezier_at
+from ._api import bspline as bspline
+from ._api import bspline_at as bspline_at
+from ._api import bspline_basis as bspline_basis
+from ._api import circle as circle
+from ._api import clip_line as clip_line
+from ._api import clip_polygon as clip_polygon
+from ._api import compare_circles as compare_circles
+from ._api import compare_curves as compare_curves
+from ._api import compare_lines as compare_lines
+from ._api import continuity as continuity
+from ._api import ellipse as ellipse
+from ._api import fill as fill
+from ._api import line as line
+from ._api import local_control as local_control
+from ._api import parametric_circle as parametric_circle
+from ._api import parametric_custom as parametric_custom
+from ._api import parametric_ellipse as parametric_ellipse
+from ._api import parametric_line as parametric_line
+from ._api import parametric_parabola as parametric_parabola
+from ._api import pipeline_line as pipeline_line
+from ._api import pipeline_polygon as pipeline_polygon
+from ._api import polygon as polygon
+from ._api import quantize as quantize
+from ._api import ramp as ramp
+from ._api import sample as sample
+from ._api import storage as storage
+from ._api import transform as transform
+from ._api import viewport as viewport
+from ._api.color_theory import color as color
+from ._api.color_theory import theory as theory
+from .algorithms.choices import LineAlgorithm as LineAlgorithm
+from .algorithms.choices import Rounding as Rounding
+from .algorithms.circle_choices import CircleMethod as CircleMethod
+from .algorithms.circles import bresenham as bresenham_circle
+from .algorithms.circles import midpoint as midpoint_circle
+from .algorithms.ellipses import midpoint_ellipse as midpoint_ellipse
+from .algorithms.lines import basic as basic
+from .algorithms.lines import basic as basic_line
+from .algorithms.lines import bresenham as bresenham
+from .algorithms.lines import bresenham as bresenham_line
+from .algorithms.lines import dda as dda
+from .algorithms.lines import dda as dda_line
+from .algorithms.process_choices import LineClipMethod as LineClipMethod
+from .algorithms.process_choices import PolygonClipMethod as PolygonClipMethod
+from .answers.line import line_solution as line_solution
+from .core.checks import InputError as InputError
+from .core.numeric import round_half_up as round_half_up
+from .core.records import Column as Column
+from .core.records import Move as Move
+from .core.records import Quantity as Quantity
+from .core.records import Solution as Solution
+from .core.records import Step as Step
+from .core.records import Table as Table
+from .display import Answer as Answer
+from .questions import check as check
+
+__version__: str
+
+__all__ = [
+    "Answer",
+    "CircleMethod",
+    "Column",
+    "InputError",
+    "LineAlgorithm",
+    "LineClipMethod",
+    "Move",
+    "PolygonClipMethod",
+    "Quantity",
+    "Rounding",
+    "Solution",
+    "Step",
+    "Table",
+    "__version__",
+    "antialias_circle",
+    "antialias_line",
+    "antialias_polygon",
+    "basic",
+    "basic_line",
+    "bezier",
+    "bezier_at",
+    "bresenham",
+    "bresenham_circle",
+    "bresenham_line",
+    "bspline",
+    "bspline_at",
+    "bspline_basis",
+    "check",
+    "circle",
+    "clip_line",
+    "clip_polygon",
+    "color",
+    "compare_circles",
+    "compare_curves",
+    "compare_lines",
+    "continuity",
+    "dda",
+    "dda_line",
+    "ellipse",
+    "fill",
+    "line",
+    "line_solution",
+    "local_control",
+    "midpoint_circle",
+    "midpoint_ellipse",
+    "parametric_circle",
+    "parametric_custom",
+    "parametric_ellipse",
+    "parametric_line",
+    "parametric_parabola",
+    "pipeline_line",
+    "pipeline_polygon",
+    "polygon",
+    "quantize",
+    "questions",
+    "ramp",
+    "raster",
+    "round_half_up",
+    "sample",
+    "storage",
+    "theory",
+    "transform",
+    "viewport",
+]

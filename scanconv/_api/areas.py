@@ -1,0 +1,148 @@
+"""The Python API: filled areas and anti-aliasing (``scanconv polygon``, ``fill``, ``antialias``). See :mod:`scanconv._api`."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+from ..display import answers
+from .values import (
+    NumberLike,
+    PointLike,
+    PointsLike,
+    _choice,
+    _flat,
+    _number,
+    _numbers,
+    _pair,
+    _whole,
+)
+
+if TYPE_CHECKING:
+    from ..algorithms.process_choices import AAMethod, FillRule, Order
+    from ..core.records import Solution
+
+
+@answers
+def polygon(vertices: PointsLike, rule: FillRule | str = "even-odd") -> Solution:
+    """The scan-line fill of the polygon ``vertices`` (``scanconv polygon``): the edge table,
+    the active edge table per scan line, the spans and the pixels.
+
+    >>> sol = polygon([(0, 0), (4, 0), (2, 3)])
+    >>> list(sol.pixels())
+    [(0, 0), (1, 0), (2, 0), (3, 0), (1, 1), (2, 1), (3, 1), (2, 2)]
+    """
+    from ..answers.polygon import polygon_solution
+
+    return polygon_solution(_flat(vertices, "vertices"), _choice(rule, "rule"))
+
+
+@answers
+def fill(
+    method: str,
+    seed: PointLike,
+    *,
+    vertices: PointsLike | None = None,
+    rows: str | Sequence[str] | None = None,
+    connectivity: NumberLike = 4,
+    order: Order | str = "stack",
+    span: bool = False,
+) -> Solution:
+    """A seed fill (``scanconv fill boundary``, ``scanconv fill flood``): ``method`` is
+    ``"boundary"`` or ``"flood"``, over the Bresenham outline of the polygon ``vertices`` or
+    over the grid ``rows`` (text, top row first: ``#`` boundary, ``.`` empty); ``span`` gives the
+    span (scan-line seed) fill.
+
+    >>> sorted(fill("flood", (1, 1), rows="####/#..#/####").pixels())
+    [(1, 1), (2, 1)]
+    """
+    from ..answers.fill import seed_fill_solution
+
+    texts = None if rows is None else ([rows] if isinstance(rows, str) else list(rows))
+    sx, sy = _pair(seed, "seed")
+    return seed_fill_solution(
+        _choice(method, "method"),
+        (_whole(sx, "seed"), _whole(sy, "seed")),
+        vertices=None if vertices is None else _flat(vertices, "vertices"),
+        rows=texts,
+        connectivity=_whole(connectivity, "connectivity"),
+        order=_choice(order, "order"),
+        span=bool(span),
+    )
+
+
+@answers
+def antialias_line(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    method: AAMethod | str = "area",
+    samples: NumberLike = 4,
+    levels: NumberLike = 8,
+) -> Solution:
+    """An anti-aliased line (``scanconv antialias line``): ``method`` ``"wu"`` (Xiaolin Wu's
+    algorithm), ``"area"`` or ``"supersample"`` (``samples`` x ``samples`` per pixel).
+
+    >>> [s.extra[4] for s in antialias_line(0, 0, 4, 1, method="wu").steps()]
+    [1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4), 1]
+    """
+    from ..answers.antialias import antialias_solution
+
+    return antialias_solution(
+        "line",
+        _numbers(x1=x1, y1=y1, x2=x2, y2=y2),
+        method=_choice(method, "method"),
+        samples=_whole(samples, "samples"),
+        levels=_whole(levels, "levels"),
+    )
+
+
+@answers
+def antialias_circle(
+    r: NumberLike,
+    center: PointLike = (0, 0),
+    method: AAMethod | str = "area",
+    samples: NumberLike = 4,
+    levels: NumberLike = 8,
+) -> Solution:
+    """An anti-aliased circle one pixel wide (``scanconv antialias circle``).
+
+    >>> round(sum(float(v) for _, v, *_ in antialias_circle(3).tables[0].rows()), 6)
+    18.849556
+    """
+    from ..answers.antialias import antialias_solution
+
+    return antialias_solution(
+        "circle",
+        (_number(r, "r"), *_pair(center, "center")),
+        method=_choice(method, "method"),
+        samples=_whole(samples, "samples"),
+        levels=_whole(levels, "levels"),
+    )
+
+
+@answers
+def antialias_polygon(
+    vertices: PointsLike,
+    method: AAMethod | str = "area",
+    samples: NumberLike = 4,
+    levels: NumberLike = 8,
+    rule: FillRule | str = "even-odd",
+) -> Solution:
+    """An anti-aliased polygon (``scanconv antialias polygon``): exact covered areas, or the
+    fraction of ``samples`` x ``samples`` samples inside.
+
+    >>> antialias_polygon([(0, 0), (2, 0), (2, 1), (0, 1)]).derived[-2].value
+    2
+    """
+    from ..answers.antialias import antialias_solution
+
+    return antialias_solution(
+        "polygon",
+        _flat(vertices, "vertices"),
+        method=_choice(method, "method"),
+        samples=_whole(samples, "samples"),
+        levels=_whole(levels, "levels"),
+        rule_name=_choice(rule, "rule"),
+    )

@@ -1,0 +1,214 @@
+"""The Python API: the scan-conversion process (``scanconv transform``, ``viewport``, ``clip``, ``pipeline``). See :mod:`scanconv._api`."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from enum import Enum
+from typing import TYPE_CHECKING
+
+from ..algorithms.choices import LineAlgorithm
+from ..core.checks import InputError
+from ..display import answers
+from .values import NumberLike, PointsLike, _choice, _flat, _numbers, _rect
+
+if TYPE_CHECKING:
+    from ..algorithms.process_choices import LineClipMethod, PolygonClipMethod
+    from ..core.records import Solution
+
+
+@answers
+def transform(
+    points: PointsLike, transforms: str | Sequence[str], inverse: bool = False
+) -> Solution:
+    """The composite of ``transforms`` applied to ``points`` (``scanconv transform``).
+
+    ``transforms`` is a string or a list of words, applied in order: ``"rotate 90 about 2 1,
+    translate 3 0"`` (see :mod:`scanconv.answers.transform`); ``inverse`` also shows M^-1.
+
+    >>> transform([(0, 0), (4, 0)], "rotate 90 about 2 1, translate 3 0").data["after"]
+    [[6, -1], [6, 3]]
+    """
+    from ..answers.transform import transform_solution
+
+    return transform_solution(_flat(points, "points"), transforms, inverse_too=bool(inverse))
+
+
+@answers
+def viewport(
+    window: Sequence[NumberLike], viewport: Sequence[NumberLike], points: PointsLike = ()
+) -> Solution:
+    """The window-to-viewport mapping of ``points`` (default: the window's corners)
+    (``scanconv viewport``).
+
+    >>> viewport((0, 0, 10, 10), (100, 100, 150, 200), [(5, 5)]).data["mapped"]
+    [[125, 150]]
+    """
+    from ..answers.viewport import viewport_solution
+
+    return viewport_solution(
+        _flat(points, "points"), _rect(window, "window"), _rect(viewport, "viewport")
+    )
+
+
+@answers
+def clip_line(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    window: Sequence[NumberLike],
+    method: LineClipMethod | str = "cohen-sutherland",
+    *,
+    normals: str | None = None,
+    ends: str | None = None,
+    midpoint: str | None = None,
+) -> Solution:
+    """The segment clipped against ``window`` (``scanconv clip line``).
+
+    ``method`` is ``cohen-sutherland``, ``liang-barsky``, ``cyrus-beck`` (the rectangle as a
+    convex window; ``normals`` outward or inward, ``ends`` exact or truncated) or
+    ``midpoint-subdivision`` (``midpoint`` rounded, floor or exact).
+
+    >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8)).data["clipped"]
+    [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
+    >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8), "cyrus-beck").data["clipped"]
+    [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
+    """
+    from ..answers.clip import clip_line_solution
+
+    a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    rect = _rect(window, "window")
+    name = _choice(method, "method")
+    _only(name, {"normals": normals, "ends": ends}, "cyrus-beck")
+    _only(name, {"midpoint": midpoint}, "midpoint-subdivision")
+    if name == "cyrus-beck":
+        from ..answers.cyrus_beck import cyrus_beck_solution
+
+        x0, y0, x1_, y1_ = rect
+        corners = [x0, y0, x1_, y0, x1_, y1_, x0, y1_]
+        return cyrus_beck_solution(
+            a, b, c, d, corners, normals=normals or "outward", ends=ends or "exact"
+        )
+    if name == "midpoint-subdivision":
+        from ..answers.midpoint_clip import midpoint_clip_solution
+
+        return midpoint_clip_solution(a, b, c, d, list(rect), midpoint=midpoint or "rounded")
+    return clip_line_solution(a, b, c, d, rect, name)
+
+
+def _only(method: str, given: dict[str, str | None], owner: str) -> None:
+    """Refuse a convention given to a method it does not apply to."""
+    for param, value in given.items():
+        if value is not None and method != owner:
+            raise InputError(f"{param} applies to {owner} only, not to {method}", param)
+
+
+@answers
+def clip_convex(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    window: PointsLike,
+    *,
+    normals: str = "outward",
+    ends: str = "exact",
+) -> Solution:
+    """Cyrus-Beck clipping against any convex window given by its vertices
+    (``scanconv clip convex``).
+
+    >>> clip_convex(-1, 2, 9, 2, [(0, 0), (8, 0), (0, 8)]).data["clipped"]
+    [[0, 2], [6, 2]]
+    """
+    from ..answers.cyrus_beck import cyrus_beck_solution
+
+    a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    return cyrus_beck_solution(a, b, c, d, _flat(window, "window"), normals=normals, ends=ends)
+
+
+@answers
+def clip_polygon(
+    vertices: PointsLike,
+    window: Sequence[NumberLike],
+    method: PolygonClipMethod | str = "sutherland-hodgman",
+) -> Solution:
+    """The polygon clipped against ``window`` by Sutherland-Hodgman or Weiler-Atherton
+    (``scanconv clip polygon``).
+
+    >>> clip_polygon([(0, 0), (4, 0), (0, 4)], (1, 1, 3, 3)).data["clipped"]
+    [[1, 3], [1, 1], [3, 1]]
+    >>> clip_polygon([(0, 0), (8, 0), (8, 8)], (2, 1, 9, 3), "weiler-atherton").data["polygons"]
+    [[[8, 1], [8, 3], [3, 3], [2, 2], [2, 1]]]
+    """
+    from ..answers.clip_polygon import clip_polygon_solution
+
+    name = _choice(method, "method")
+    flat, rect = _flat(vertices, "vertices"), _rect(window, "window")
+    if name == "weiler-atherton":
+        from ..answers.weiler_atherton import weiler_atherton_solution
+
+        x0, y0, x1, y1 = rect
+        return weiler_atherton_solution(flat, [x0, y0, x1, y0, x1, y1, x0, y1])
+    if name != "sutherland-hodgman":
+        raise InputError(
+            f"unknown polygon clipping method {name!r} (sutherland-hodgman, weiler-atherton)",
+            "method",
+        )
+    return clip_polygon_solution(flat, rect)
+
+
+@answers
+def pipeline_line(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    window: Sequence[NumberLike],
+    viewport: Sequence[NumberLike],
+    algo: LineAlgorithm | str = LineAlgorithm.bresenham,
+    clip: LineClipMethod | str = "cohen-sutherland",
+) -> Solution:
+    """A world-coordinate line clipped, mapped, rounded and scan converted
+    (``scanconv pipeline line``).
+
+    >>> pipeline_line(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10)).data["rounded"]
+    [[0, 3], [20, 8]]
+    """
+    from ..answers.pipeline import pipeline_line_solution
+
+    a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    return pipeline_line_solution(
+        a,
+        b,
+        c,
+        d,
+        _rect(window, "window"),
+        _rect(viewport, "viewport"),
+        algo=_choice(algo, "algo"),
+        clip=_choice(clip, "clip"),
+    )
+
+
+@answers
+def pipeline_polygon(
+    vertices: PointsLike,
+    window: Sequence[NumberLike],
+    viewport: Sequence[NumberLike],
+    fill: bool = False,
+    rule: Enum | str = "even-odd",
+) -> Solution:
+    """A world-coordinate polygon clipped (Sutherland-Hodgman), mapped to the viewport, then
+    outlined or, with ``fill``, scan-line filled (``scanconv pipeline polygon``).
+
+    >>> pipeline_polygon([(-2, 0), (6, 0), (2, 6)], (0, 0, 4, 4), (0, 0, 8, 8)).data["device"][2]
+    [0, 6]
+    """
+    from ..answers.pipeline import pipeline_polygon_solution
+
+    return pipeline_polygon_solution(
+        _flat(vertices, "vertices"),
+        _rect(window, "window"),
+        _rect(viewport, "viewport"),
+        fill=bool(fill),
+        rule=_choice(rule, "rule"),
+    )

@@ -1,0 +1,294 @@
+"""The Python API: lines, circles and ellipses, and their comparisons (``scanconv line``, ``circle``, ``ellipse``, ``compare``). See :mod:`scanconv._api`."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ..algorithms.choices import Convention, Layout, LineAlgorithm, Rounding, Start, Tie
+from ..display import answers
+from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _pair
+
+if TYPE_CHECKING:
+    from ..algorithms.circle_choices import P0, CircleMethod, Loop, Update
+    from ..core.records import Solution
+
+
+@answers
+def line(
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    algo: LineAlgorithm | str = "bresenham",
+    *,
+    rounding: Rounding | str | None = None,
+    tie: Tie | str | None = None,
+    start: Start | str | None = None,
+    convention: Convention | str | None = None,
+    layout: Layout | str = "notes",
+    derive: bool = False,
+    pseudocode: bool = False,
+) -> Solution:
+    """The line from ``(x1, y1)`` to ``(x2, y2)`` by ``algo``, worked as in the notes
+    (``scanconv line``).
+
+    Parameters
+    ----------
+    x1, y1, x2, y2 : int, Fraction, float, Decimal, numpy scalar or str
+        The end points P1 and P2. A float is read as the decimal it prints as (``0.1`` is
+        1/10); a string may be ``"5/2"``. NaN, infinities and ``|value| > 10**9`` are refused.
+    algo : {"bresenham", "dda", "basic", "wu"} or LineAlgorithm, default "bresenham"
+        The line algorithm.
+    rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"}, optional
+        How the DDA and the basic method round a coordinate to a pixel (default half-up).
+    tie : {"step", "keep"}, optional
+        Bresenham: what a decision parameter of 0 does (default step).
+    start : {"swap", "given"}, optional
+        Which end is plotted first: Bresenham swaps to the end with the smaller major
+        coordinate, the DDA starts at P1 (``given``).
+    convention : {"notes", "hearn-baker", "foley", "wikipedia"}, optional
+        A named preset of the conventions above; a convention given alone overrides it.
+    layout : {"notes", "textbook"}, default "notes"
+        The table's rows: the notes' (the decision, then the pixel it chooses) or the
+        textbook's (one row per plotted pixel).
+    derive, pseudocode : bool, default False
+        Add the derivation with these numbers, and the pseudocode of the variant used.
+
+    Returns
+    -------
+    Answer
+        The worked answer: ``.steps()`` (the table's rows), ``.pixels()``, ``.rows()``,
+        ``.to("markdown")``.
+
+    Raises
+    ------
+    InputError
+        A bad value; ``.param`` names the parameter.
+
+    Examples
+    --------
+    >>> list(line(0, 0, 3, 1).pixels())
+    [(0, 0), (1, 0), (2, 1), (3, 1)]
+    >>> list(line(2, 2, 10, 6, algo="dda").pixels())
+    [(2, 2), (3, 3), (4, 3), (5, 4), (6, 4), (7, 5), (8, 5), (9, 6), (10, 6)]
+    >>> list(line(4, 2, 0, 0).pixels()), list(line(4, 2, 0, 0, start="given").pixels())
+    ([(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)], [(4, 2), (3, 1), (2, 1), (1, 0), (0, 0)])
+    >>> [s.pixel for s in line("1/2", 0, 3.5, 1, algo=LineAlgorithm.dda).steps()]
+    [(1, 0), (2, 0), (3, 1), (4, 1)]
+    >>> list(line(0, 0, 4, 2, tie="keep").pixels())
+    [(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)]
+    """
+    from ..answers.line import line_solution
+
+    coords = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    return line_solution(
+        _choice(algo, "algo"),
+        *coords,
+        rounding=_maybe(rounding, "rounding"),
+        tie=_maybe(tie, "tie"),
+        start=_maybe(start, "start"),
+        convention=_maybe(convention, "convention"),
+        layout=_choice(layout, "layout"),
+        derive=derive,
+        pseudocode=pseudocode,
+        annotate=True,
+    )
+
+
+@answers
+def circle(
+    r: NumberLike,
+    center: PointLike = (0, 0),
+    method: CircleMethod | str = "midpoint",
+    rounding: Rounding | str | None = None,
+    *,
+    tie: Tie | str | None = None,
+    p0: P0 | str | None = None,
+    loop: Loop | str | None = None,
+    update: Update | str | None = None,
+    convention: Convention | str | None = None,
+    layout: Layout | str = "notes",
+    derive: bool = False,
+    pseudocode: bool = False,
+) -> Solution:
+    """The circle of radius ``r`` about ``center`` by ``method``, worked as in the notes
+    (``scanconv circle``).
+
+    Parameters
+    ----------
+    r : int, Fraction, float, Decimal, numpy scalar or str
+        The radius, a whole number >= 0.
+    center : (x, y), default (0, 0)
+        The centre, whole numbers.
+    method : {"midpoint", "bresenham", "polynomial", "general", "trig", "symmetric-dda"}
+        The method (default midpoint); a CircleMethod too.
+    rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"}, optional
+        How the floating-point methods (polynomial, trig, symmetric-dda) round to a pixel.
+    tie : {"step", "keep"}, optional
+        The decision methods: what a decision parameter of 0 does.
+    p0 : {"1-r", "5/4-r"}, optional
+        The midpoint method's initial decision parameter.
+    loop : {"strict", "inclusive"}, optional
+        Whether the octant's loop runs while x < y or x <= y.
+    update : {"new", "old"}, optional
+        Whether the decision update uses the new x (and y) or the old.
+    convention : {"notes", "hearn-baker", "foley", "wikipedia"}, optional
+        A named preset of the conventions above.
+    layout : {"notes", "textbook"}, default "notes"
+        The table's rows, as for :func:`line`.
+    derive, pseudocode : bool, default False
+        Add the derivation and the pseudocode.
+
+    Returns
+    -------
+    Answer
+        The worked answer: the octant's table (``.steps()``) and every pixel by 8-way
+        symmetry (``.pixels()``).
+
+    Raises
+    ------
+    InputError
+        A bad value (a negative or fractional radius, an unknown method).
+
+    Examples
+    --------
+    >>> [s.pixel for s in circle(5).steps()]
+    [(0, 5), (1, 5), (2, 5), (3, 4), (4, 3)]
+    >>> list(circle(5).pixels())[:4]
+    [(0, 5), (0, -5), (5, 0), (-5, 0)]
+    >>> [s.pixel for s in circle(5, layout="textbook").steps()]
+    [(1, 5), (2, 5), (3, 4), (4, 3)]
+    >>> [s.p for s in circle(5, method="general").steps()]
+    [0, -5, 0, 1]
+    >>> circle(5, (10, 10), method="trig", rounding="trunc").data["rounding"]
+    'trunc'
+    """
+    from ..answers.circle import circle_solution
+
+    radius = _number(r, "r")
+    xc, yc = _pair(center, "center")
+    return circle_solution(
+        _choice(method, "method"),
+        radius,
+        xc,
+        yc,
+        rounding=_maybe(rounding, "rounding"),
+        tie=_maybe(tie, "tie"),
+        p0=_maybe(p0, "p0"),
+        loop=_maybe(loop, "loop"),
+        update=_maybe(update, "update"),
+        convention=_maybe(convention, "convention"),
+        layout=_choice(layout, "layout"),
+        derive=derive,
+        pseudocode=pseudocode,
+        annotate=True,
+    )
+
+
+@answers
+def ellipse(
+    rx: NumberLike,
+    ry: NumberLike,
+    center: PointLike = (0, 0),
+    *,
+    loop: Loop | str | None = None,
+    tie: Tie | str | None = None,
+    p0: str | None = None,
+    convention: Convention | str | None = None,
+    derive: bool = False,
+    pseudocode: bool = False,
+) -> Solution:
+    """The midpoint ellipse with semi-axes ``rx``, ``ry`` about ``center``, worked in its two
+    regions (``scanconv ellipse``).
+
+    Parameters
+    ----------
+    rx, ry : int, Fraction, float, Decimal, numpy scalar or str
+        The semi-axes along x and y, whole numbers >= 0.
+    center : (x, y), default (0, 0)
+        The centre, whole numbers.
+    loop : {"strict", "inclusive"}, optional
+        Region 1's loop condition.
+    tie : {"step", "keep"}, optional
+        ``step``: p = 0 chooses SE in both regions; ``keep``: E in region 1, S in region 2.
+    p0 : {"exact", "rounded"}, optional
+        The initial decision parameters, exact or rounded as Hearn & Baker's C code.
+    convention : {"notes", "hearn-baker", "foley", "wikipedia"}, optional
+        A named preset of the conventions above.
+    derive, pseudocode : bool, default False
+        Add the derivation and the pseudocode.
+
+    Returns
+    -------
+    Answer
+        The worked answer: the quadrant's table over both regions (``.steps()``) and every
+        pixel by 4-way symmetry (``.pixels()``).
+
+    Raises
+    ------
+    InputError
+        A bad value.
+
+    Examples
+    --------
+    >>> [s.pixel for s in ellipse(3, 2).steps()]
+    [(1, 2), (2, 1), (3, 0)]
+    >>> sorted(ellipse(2, 1).pixels())
+    [(-2, 0), (-1, -1), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 1), (2, 0)]
+    """
+    from ..answers.ellipse import ellipse_solution
+
+    a, b = _numbers(rx=rx, ry=ry)
+    xc, yc = _pair(center, "center")
+    return ellipse_solution(
+        a,
+        b,
+        xc,
+        yc,
+        loop=_maybe(loop, "loop"),
+        tie=_maybe(tie, "tie"),
+        p0=_maybe(p0, "p0"),
+        convention=_maybe(convention, "convention"),
+        derive=derive,
+        pseudocode=pseudocode,
+        annotate=True,
+    )
+
+
+@answers
+def compare_lines(
+    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, theory: bool = False
+) -> Solution:
+    """The basic method, DDA and Bresenham side by side (``scanconv compare line``).
+
+    >>> len(list(compare_lines(2, 8, 10, 4).tables[0].rows()))  # x = 2 .. 10
+    9
+    """
+    from ..answers.compare import compare_lines as solution
+
+    a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
+    return solution(a, b, c, d, theory=theory)
+
+
+@answers
+def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
+    """Every circle method over the first octant (``scanconv compare circle``).
+
+    >>> len(list(compare_circles(10).tables[0].rows()))
+    8
+    """
+    from ..answers.compare import compare_circles as solution
+
+    return solution(_number(r, "r"), theory=theory)
+
+
+@answers
+def compare_curves() -> Solution:
+    """Bezier vs B-spline: the points of the notes' comparison (``scanconv compare curves``).
+
+    >>> compare_curves().title
+    'Bezier vs B-spline curves'
+    """
+    from ..answers.compare import compare_curves as solution
+
+    return solution()

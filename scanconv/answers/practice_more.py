@@ -1,0 +1,154 @@
+"""Practice questions on the topics beyond the notes (:mod:`.practice` registers them):
+dithering, inside-outside tests, clipping (Cohen-Sutherland, Liang-Barsky, Cyrus-Beck,
+midpoint subdivision, Weiler-Atherton) and the frame buffer. Each topic walks its kinds as the
+notes' topics do, so a few questions show every method; every question is worded with the
+method's own name (:mod:`.methods`)."""
+
+from __future__ import annotations
+
+import random
+from typing import Any
+
+from .methods import method
+from .practice import PracticeQuestion
+
+
+def _image(rng: random.Random, rows: int, cols: int) -> str:
+    return "; ".join(" ".join(str(rng.randrange(0, 256)) for _ in range(cols)) for _ in range(rows))
+
+
+def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    rows, cols = {"easy": (2, 2), "exam": (2, 4), "hard": (4, 4)}[difficulty]
+    image = _image(rng, rows, cols)
+    argv: tuple[str, ...] = ("dither", kind, "--image", image, "--top", "255")
+    if kind == "ordered":
+        n = 4 if difficulty == "hard" else 2
+        argv += ("--matrix", str(n))
+        how = f"the {n} x {n} Bayer matrix"
+    elif kind == "threshold":
+        how = "a threshold of 128"
+        argv += ("--at", "128")
+    else:
+        how = "Floyd-Steinberg error diffusion (7/16, 3/16, 5/16, 1/16)"
+    return PracticeQuestion(
+        "dither",
+        argv,
+        f"Dither the {rows} x {cols} image [{image}] (gray levels 0 to 255) to black and white "
+        f"with {how}: give the table and the output.",
+        6 if difficulty == "easy" else 8,
+        frozenset({kind}),
+    )
+
+
+_POLYGONS = (
+    ((0, 0, 8, 0, 8, 8, 4, 3, 0, 8), "concave"),
+    ((0, 0, 8, 0, 8, 6, 0, 6), "convex"),
+    ((0, 0, 8, 6, 8, 0, 0, 6), "self-intersecting"),
+    ((1, 1, 9, 1, 5, 9), "convex"),
+)
+
+
+def inside(rng: random.Random, difficulty: str, kind: int) -> PracticeQuestion:
+    coords, shape = _POLYGONS[kind]
+    count = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
+    points = [str(rng.randrange(0, 9)) for _ in range(2 * count)]
+    rule = "both" if difficulty != "easy" else rng.choice(("even-odd", "nonzero"))
+    name = {"both": "the odd-even and the nonzero winding rules", "even-odd": "the odd-even rule",
+            "nonzero": "the nonzero winding rule"}[rule]  # fmt: skip
+    pairs = ", ".join(f"({points[i]}, {points[i + 1]})" for i in range(0, len(points), 2))
+    return PracticeQuestion(
+        "inside",
+        ("inside", *map(str, coords), "--points", *points, "--rule", rule),
+        f"Is each point {pairs} inside the {shape} polygon "
+        f"{', '.join(f'({coords[i]}, {coords[i + 1]})' for i in range(0, len(coords), 2))}? "
+        f"Use {name}, with each edge's test.",
+        6,
+        frozenset({shape, rule}),
+    )
+
+
+_CLIP_WINDOW = {"easy": (2, 2, 8, 6), "exam": (10, 10, 50, 40), "hard": (-10, -5, 30, 25)}
+
+
+def clipping(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    xmin, ymin, xmax, ymax = _CLIP_WINDOW[difficulty]
+    span = xmax - xmin
+    window = tuple(map(str, (xmin, ymin, xmax, ymax)))
+    title = method("clip", kind).title
+    if kind == "weiler-atherton":
+        # a concave polygon with a notch through the window's top edge
+        cx = (xmin + xmax) // 2
+        poly = (xmin - span // 4, ymin + 1, xmax + span // 4, ymin + 1, xmax + span // 4,
+                ymax + span // 3, cx, ymin + (ymax - ymin) // 2, xmin - span // 4,
+                ymax + span // 3)  # fmt: skip
+        argv: tuple[str, ...] = ("clip", "polygon", *map(str, poly), "--window", *window)
+        return PracticeQuestion(
+            "clip",
+            (*argv, "--method", kind),
+            f"Clip the polygon {_pairs(poly)} against the window ({xmin}, {ymin})-({xmax}, "
+            f"{ymax}) by {title}: give both vertex lists, the walks and the output.",
+            8,
+            frozenset({kind}),
+        )
+    x1 = rng.randrange(xmin - span // 2, xmin)
+    y1 = rng.randrange(ymin, ymax)
+    x2 = rng.randrange(xmax + 1, xmax + span // 2 + 1)
+    y2 = rng.randrange(ymin - (ymax - ymin) // 2, ymax + (ymax - ymin) // 2)
+    ends = (str(x1), str(y1), str(x2), str(y2))
+    return PracticeQuestion(
+        "clip",
+        ("clip", "line", *ends, "--window", *window, "--method", kind),
+        f"Clip the line ({x1}, {y1})-({x2}, {y2}) against the window ({xmin}, {ymin})-({xmax}, "
+        f"{ymax}) by {title}.",
+        8,
+        frozenset({kind}),
+    )
+
+
+def _pairs(flat: tuple[int, ...]) -> str:
+    return ", ".join(f"({flat[i]}, {flat[i + 1]})" for i in range(0, len(flat), 2))
+
+
+_RESOLUTIONS = ((640, 480), (800, 600), (1024, 768), (1280, 1024), (1920, 1080))
+
+
+def framebuffer(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    w, h = rng.choice(_RESOLUTIONS)
+    bits = rng.choice((4, 8, 12, 24))
+    argv: tuple[str, ...] = ("framebuffer", str(w), str(h), str(bits))
+    if kind == "load":
+        rate = rng.choice((10**5, 10**6, 10**7))
+        argv += ("--rate", str(rate))
+        ask = f"how long does loading it take at {rate:,} bits per second?"
+    elif kind == "lut":
+        argv += ("--lut", "24")
+        ask = "with a 24-bit colour look-up table, how large is the table and how many colours?"
+    else:
+        interlaced = kind == "interlaced"
+        argv += ("--refresh", "60", *(("--interlaced",) if interlaced else ()))
+        ask = f"at 60 Hz{' interlaced' if interlaced else ''}, how long does each pixel get?"
+    return PracticeQuestion(
+        "framebuffer",
+        argv,
+        f"A raster system has a {w} x {h} frame buffer of {bits} bits per pixel: what is its "
+        f"size, and {ask}",
+        4,
+        frozenset({kind}),
+    )
+
+
+KINDS: dict[str, list[Any]] = {
+    "dither": ["ordered", "floyd-steinberg", "threshold"],
+    "inside": [0, 1, 2, 3],
+    "clip": [
+        "cohen-sutherland",
+        "liang-barsky",
+        "cyrus-beck",
+        "midpoint-subdivision",
+        "weiler-atherton",
+    ],
+    "framebuffer": ["load", "lut", "refresh", "interlaced"],
+}
+"""Each topic's kinds, walked in a seeded rotation."""
+
+MAKERS = {"dither": dither, "inside": inside, "clip": clipping, "framebuffer": framebuffer}

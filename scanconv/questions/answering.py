@@ -1,0 +1,78 @@
+"""Answering a parsed question: the command's answer (:func:`solve`), the options it is shown
+with (:func:`shown_with`), and both from the words in one call (:func:`answer`)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+from ..core.checks import InputError
+from ..render import Options
+from .commands import BODIES
+from .grammar import error_message
+from .parser import CommandLine, parse
+from .words import UsageError
+
+if TYPE_CHECKING:
+    from ..core.records import Solution
+    from ..display import Answer
+
+
+def solve(line: CommandLine) -> Solution:
+    """The answer of a parsed question. Bad input found while answering is an
+    :class:`~scanconv.core.checks.InputError` whose text names the command's flag for it
+    (``--degree: degree must satisfy ...``), as the command line says it.
+
+    >>> solve(parse("circle 5 --method bresenham")).title
+    "Bresenham's circle algorithm: r = 5, centre (0, 0)"
+    """
+    body = BODIES[line.function]
+    try:
+        return body(**line.arguments)
+    except UsageError:
+        raise
+    except ValueError as err:
+        param = getattr(err, "param", None)
+        raise InputError(error_message(err, line.spec.params), param) from None
+
+
+def shown_with(line: CommandLine, where: str = "the sheet") -> Options:
+    """The options a question asks its answer to be shown with (``--no-grid``, ``--origin``,
+    ``--brief``, ``--exact``). An output option in a question (``-o``, ``--svg``,
+    ``--format``) is refused: ``where`` writes the one document.
+
+    >>> shown_with(parse("circle 5 --no-grid --exact"))
+    Options(grid=False, origin='bottom-left', brief=False, exact=True, width=None)
+    """
+    shown = line.display
+    for name in ("output", "svg", "png"):
+        if shown.get(name) is not None:
+            raise UsageError(f"--{name} in a question: {where} writes one document (give it -o)")
+    if shown.get("fmt", "auto") != "auto":
+        raise UsageError(f"--format in a question: {where}'s --format applies to every answer")
+    return Options(
+        grid=shown.get("grid", True),
+        origin=shown.get("origin") or "bottom-left",
+        brief=shown.get("brief", False),
+        exact=shown.get("exact", False),
+    )
+
+
+def answer(question: str | Sequence[str]) -> Answer:
+    """The answer of a question written as scanconv's own arguments, computed by the library
+    (no command line involved): the words as a string, split as a shell splits them, or a
+    list of words.
+
+    >>> answer("line 2 2 10 6 --algo dda").algorithm
+    'dda'
+    >>> [s.pixel for s in answer(["circle", "5"]).steps()][:2]
+    [(0, 5), (1, 5)]
+    >>> answer("line 2 2 10 6 --algo zzz")
+    Traceback (most recent call last):
+    ...
+    scanconv.questions.words.UsageError: Invalid value for '--algo' / '-a': 'zzz' is not one of 'bresenham', 'dda', 'basic', 'wu'.
+    """
+    from ..display import Answer
+
+    solution = solve(parse(question))
+    return solution if isinstance(solution, Answer) else Answer.of(solution)

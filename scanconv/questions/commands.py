@@ -1,0 +1,307 @@
+"""What each command answers: one function per command of the question language, taking its
+parameters by the command's names (``x1``, ``center``, ``kind``) and returning the
+:class:`~scanconv.core.records.Solution` that :mod:`scanconv._api` builds. The command line
+and the questions of sheets, practice, the exam book and ``check`` all answer through these.
+
+A choice may be given as its text or as an enum member; a list of points flat.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any
+
+from .. import _api as api
+from .._api.color_theory import color as color_api
+from .._api.color_theory import theory as theory_api
+from ..core.checks import InputError
+from .words import UsageError, no_such_option, number
+
+if TYPE_CHECKING:
+    from ..core.records import Solution
+
+Body = Callable[..., "Solution"]
+
+ORIGIN = (Fraction(0), Fraction(0))
+"""The default centre or vertex of a parametric curve."""
+
+TRANSFORM_WORDS = {"--translate", "--scale", "--rotate", "--reflect", "--shear", "--about"}
+TRANSFORM_WORDS |= {"--points"}
+"""The words of ``transform`` that start a transformation (or more points)."""
+
+
+def _text(value: Any) -> Any:
+    """A choice as its text (an enum member's value); ``None`` stays."""
+    return getattr(value, "value", value)
+
+
+def line(x1: Any, y1: Any, x2: Any, y2: Any, **conventions: Any) -> Solution:
+    return api.line(x1, y1, x2, y2, **conventions)
+
+
+def storage(
+    m: Any, n: Any, levels: Any, bits: Any, binary: bool, color: Any, frames: Any
+) -> Solution:
+    return api.storage(
+        m,
+        n,
+        levels=levels,
+        bits=bits,
+        binary=binary,
+        color=_text(color),
+        frames=1 if frames is None else frames,
+    )
+
+
+def quantize(bits: Any, value_range: Any, kind: Any, recon: Any) -> Solution:
+    return api.quantize(bits, value_range, integer=_text(kind) == "integer", recon=_text(recon))
+
+
+def sample(
+    expr: str, size: str, levels: Any, domain: Any, value_range: Any, origin: Any
+) -> Solution:
+    return api.sample(
+        expr, size, levels, domain=domain, value_range=value_range, origin=_text(origin)
+    )
+
+
+def image_ramp(size: str, levels: Any) -> Solution:
+    return api.ramp(size, 8 if levels is None else levels)
+
+
+def parametric_circle(r: Any, center: Any, radius: Any, t_range: Any, samples: Any) -> Solution:
+    if r is not None and radius is not None and r != radius:
+        raise InputError(
+            f"unexpected extra argument {r}: the radius is already given by --radius {radius}"
+        )
+    chosen = r if r is not None else radius if radius is not None else Fraction(1)
+    return api.parametric_circle(center, chosen, t_range=t_range, samples=samples)
+
+
+def parametric_ellipse(center: Any, a: Any, b: Any, t_range: Any, samples: Any) -> Solution:
+    return api.parametric_ellipse(center, a, b, t_range=t_range, samples=samples)
+
+
+def parametric_parabola(vertex: Any, a: Any, t_range: Any, samples: Any) -> Solution:
+    return api.parametric_parabola(vertex, a, t_range=t_range, samples=samples)
+
+
+def parametric_line(x0: Any, y0: Any, x1: Any, y1: Any, t_range: Any, samples: Any) -> Solution:
+    return api.parametric_line(x0, y0, x1, y1, t_range=t_range, samples=samples)
+
+
+def parametric_custom(x: str, y: str, t_range: Any, samples: Any) -> Solution:
+    return api.parametric_custom(x, y, t_range=t_range, samples=samples)
+
+
+def bezier(points: Any, samples: Any, t: Any) -> Solution:
+    if t is not None:
+        return api.bezier_at(points, t)
+    return api.bezier(points, samples)
+
+
+def bspline(points: Any, degree: Any, knots: Any, basis: bool, t: Any, samples: Any) -> Solution:
+    if basis:
+        if t is not None:
+            return api.bspline_at(points or [], t, degree, knots)
+        return api.bspline_basis(points, degree, knots, samples)
+    if not points:
+        raise InputError(
+            "missing control points X0 Y0 X1 Y1 ... (only --basis takes a degree and a knot "
+            "list alone)",
+            "points",
+        )
+    if t is not None:
+        return api.bspline_at(points, t, degree, knots)
+    return api.bspline(points, degree, knots, samples)
+
+
+def segments(values: list[Any]) -> tuple[list[Fraction], list[Fraction]]:
+    """``X0 Y0 ... : X0 Y0 ...`` (numbers and one ``:``) as the two segments' values."""
+    if values.count(":") != 1:
+        raise ValueError(
+            "give two Bezier segments separated by ':', e.g. 0 0 1 1 2 0 : 2 0 3 -1 4 0"
+        )
+    i = values.index(":")
+    return values[:i], values[i + 1 :]
+
+
+def continuity(values: list[Any], samples: Any) -> Solution:
+    first, second = segments(values)
+    return api.continuity(first, second, samples)
+
+
+def local_control(points: Any, move: Any, degree: Any, knots: Any, samples: Any) -> Solution:
+    index, x, y = move
+    return api.local_control(points, index, (x, y), degree, knots, samples)
+
+
+def circle(r: Any, center: Any, **conventions: Any) -> Solution:
+    return api.circle(r, center or (0, 0), **conventions)
+
+
+def ellipse(rx: Any, ry: Any, center: Any, **conventions: Any) -> Solution:
+    return api.ellipse(rx, ry, center or (0, 0), **conventions)
+
+
+def compare_line(x1: Any, y1: Any, x2: Any, y2: Any, theory: bool) -> Solution:
+    return api.compare_lines(x1, y1, x2, y2, theory=theory)
+
+
+def compare_circle(r: Any, theory: bool) -> Solution:
+    return api.compare_circles(r, theory=theory)
+
+
+def compare_curves() -> Solution:
+    return api.compare_curves()
+
+
+def _is_number(word: str) -> bool:
+    from ..core.numeric import parse_number
+
+    try:
+        parse_number(word)
+    except ValueError:
+        return False
+    return True
+
+
+def _check_word(word: str) -> None:
+    """A word of ``transform`` that is neither a number, a transformation nor an angle is an
+    unknown option."""
+    if not word.strip():  # an empty word, as the command line's number parser words it
+        try:
+            number(word)
+        except ValueError as err:
+            raise UsageError(f"Invalid value: {err}") from None
+    if not word.startswith("-") or word.split("=", 1)[0] in TRANSFORM_WORDS or _is_number(word):
+        return
+    from ..answers.transform import parse_angle
+
+    try:
+        parse_angle(word)
+    except ValueError:
+        raise no_such_option(word.split("=", 1)[0]) from None
+
+
+def split_words(words: list[str]) -> tuple[list[Fraction], list[str]]:
+    """``transform``'s words: the leading points, and the transformations after them.
+
+    >>> split_words(["0", "0", "4", "0", "--rotate", "90"])
+    ([Fraction(0, 1), Fraction(0, 1), Fraction(4, 1), Fraction(0, 1)], ['--rotate', '90'])
+    """
+    points: list[Fraction] = []
+    ops: list[str] = []
+    taking = True
+    for word in words:
+        _check_word(word)
+        if word == "--points":
+            taking = True
+        elif taking and _is_number(word):
+            points.append(number(word))
+        else:
+            taking = False
+            ops.append(word)
+    return points, ops
+
+
+def transform(words: list[str], inverse: bool) -> Solution:
+    points, ops = split_words(words)
+    return api.transform(points, ops, inverse=inverse)
+
+
+def viewport(window: Any, viewport: Any, points: Any) -> Solution:
+    return api.viewport(window, viewport, points or [])
+
+
+def clip_line(x1: Any, y1: Any, x2: Any, y2: Any, window: Any, method: Any) -> Solution:
+    return api.clip_line(x1, y1, x2, y2, window, method=method)
+
+
+def clip_polygon(vertices: Any, window: Any, method: Any) -> Solution:
+    return api.clip_polygon(vertices, window, method=method)
+
+
+def pipeline_line(
+    x1: Any, y1: Any, x2: Any, y2: Any, window: Any, viewport: Any, algo: Any, clip: Any
+) -> Solution:
+    return api.pipeline_line(x1, y1, x2, y2, window, viewport, algo=algo, clip=clip)
+
+
+def pipeline_polygon(vertices: Any, window: Any, viewport: Any, fill: bool, rule: Any) -> Solution:
+    return api.pipeline_polygon(vertices, window, viewport, fill=fill, rule=_text(rule))
+
+
+def polygon(vertices: Any, rule: Any) -> Solution:
+    return api.polygon(vertices, rule=rule)
+
+
+def _seed_fill(kind: str) -> Body:
+    def fill(
+        seed: Any, vertices: Any, rows: Any, connectivity: Any, order: Any, span: bool
+    ) -> Solution:
+        return api.fill(
+            kind,
+            seed,
+            vertices=vertices or None,
+            rows=rows,
+            connectivity=connectivity,
+            order=order,
+            span=span,
+        )
+
+    fill.__name__ = fill.__qualname__ = f"fill_{kind}"
+    return fill
+
+
+fill_boundary = _seed_fill("boundary")
+fill_flood = _seed_fill("flood")
+
+
+def antialias_line(
+    x1: Any, y1: Any, x2: Any, y2: Any, method: Any, samples: Any, levels: Any
+) -> Solution:
+    return api.antialias_line(x1, y1, x2, y2, method=method, samples=samples, levels=levels)
+
+
+def antialias_circle(r: Any, center: Any, method: Any, samples: Any, levels: Any) -> Solution:
+    return api.antialias_circle(r, center or (0, 0), method=method, samples=samples, levels=levels)
+
+
+def antialias_polygon(vertices: Any, method: Any, samples: Any, levels: Any, rule: Any) -> Solution:
+    return api.antialias_polygon(vertices, method=method, samples=samples, levels=levels, rule=rule)
+
+
+def color(model: str, values: list[str], to: Any, unit: bool, bits: Any) -> Solution:
+    targets = list(to or [])
+    numbers: list[str] = []
+    for token in values:
+        if not token.isalpha():
+            numbers.append(token)
+        elif to is not None:
+            targets.append(token)
+        else:
+            raise ValueError(
+                f"a colour component must be a number, got {token!r} (name the target models "
+                "after --to)"
+            )
+    return color_api(model, *numbers, to=targets, unit=unit, bits=8 if bits is None else bits)
+
+
+def theory(topic: str, list_: bool = False) -> Solution:
+    return theory_api(topic)
+
+
+BODIES: dict[str, Body] = {
+    fn.__name__: fn
+    for fn in (
+        line, storage, quantize, sample, image_ramp, parametric_circle, parametric_ellipse,
+        parametric_parabola, parametric_line, parametric_custom, bezier, bspline, continuity,
+        local_control, circle, ellipse, compare_line, compare_circle, compare_curves, transform,
+        viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon,
+        fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color,
+        theory,
+    )
+}  # fmt: skip
+"""Each command's answer, by the command's function name (``parametric_circle``)."""

@@ -1,0 +1,187 @@
+"""Question files: one question per line, written as scanconv's own arguments.
+
+::
+
+    title: Unit 2 test: scan conversion        (optional, once)
+    section: Lines                             (optional: a heading for the questions after it)
+    # a comment; blank lines are ignored
+    > Draw the line from (2, 2) to (10, 6) with the DDA algorithm.   (optional wording)
+    [4] line 2 2 10 6 --algo dda               ([N] or [N marks]: the marks, optional)
+    circle 8 --center 2 3   # a comment after a question
+
+Words are split as a shell splits them (quote a formula: ``sample 'x + y' --size 4``), and ``#``
+starts a comment where a shell's does (at the start of a word, outside quotes). Lines end at
+``\\n``, ``\\r\\n`` or ``\\r`` only, as an editor counts them: any other separator (U+2028,
+U+0085, a form feed) is a character of its line, replaced like every control character, so it
+can neither start a question nor shift a line number. A UTF-8 byte-order mark is skipped.
+"""
+
+from __future__ import annotations
+
+import re
+
+from ..render.sheet import Question, Sheet
+
+MAX_QUESTIONS = 1000
+"""The most questions one sheet takes (a 200-question key is the benchmark)."""
+MAX_FILE_BYTES = 1_000_000
+"""The largest question file read."""
+
+
+class QuestionError(ValueError):
+    """A bad line of a question file: ``str()`` is ``SOURCE:LINE: message``."""
+
+    def __init__(self, source: str, line: int, message: str) -> None:
+        super().__init__(f"{source}:{line}: {message}")
+        self.source, self.line, self.message = source, line, message
+
+
+_MARKS = re.compile(r"^\[\s*(\d{1,4})\s*(?:marks?)?\s*\]\s*", re.IGNORECASE)
+_KEYWORD = re.compile(r"^(title|section)\s*:\s*(.*)$", re.IGNORECASE)
+_LINE_END = re.compile(r"\r\n|\r|\n")
+#: ESC, BEL, NEL, FF, VT, the line and paragraph separators...: never echoed, never a line end
+_CONTROL = re.compile("[\x01-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029]")
+
+
+def strip_comment(line: str) -> str:
+    """``line`` without its comment: ``#`` at the start of a word, outside quotes, as in a
+    shell.
+
+    >>> strip_comment("fill flood --rows '#..#' --seed 1 1  # the notes' example")
+    "fill flood --rows '#..#' --seed 1 1  "
+    >>> strip_comment("line 2 2#3")
+    'line 2 2#3'
+    """
+    quote = ""
+    escaped = False
+    for i, ch in enumerate(line):
+        if escaped:
+            escaped = False
+        elif ch == "\\" and quote != "'":
+            escaped = True
+        elif quote:
+            if ch == quote:
+                quote = ""
+        elif ch in "'\"":
+            quote = ch
+        elif ch == "#" and (i == 0 or line[i - 1].isspace()):
+            return line[:i]
+    return line
+
+
+def split_lines(text: str) -> list[str]:
+    """The lines of ``text`` as an editor numbers them: split at ``\\n``, ``\\r\\n`` and
+    ``\\r`` only (``str.splitlines`` also splits at U+2028, U+0085, FF, VT...).
+
+    >>> split_lines("a\\r\\nb\\rc\\u2028d\\x0ce\\n")
+    ['a', 'b', 'c\\u2028d\\x0ce']
+    """
+    lines = _LINE_END.split(text)
+    return lines[:-1] if lines and lines[-1] == "" else lines
+
+
+def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
+    """Parse a question file (the syntax is in this module's docstring).
+
+    >>> sheet = read_questions("title: Test\\n# c\\n[4] line 2 2 10 6 --algo dda\\ncircle 8\\n")
+    >>> sheet.title, [(q.number, q.line, q.marks, q.argv[0]) for q in sheet.questions]
+    ('Test', [(1, 3, 4, 'line'), (2, 4, None, 'circle')])
+    >>> read_questions("line 2 2 'x")
+    Traceback (most recent call last):
+    ...
+    scanconv.questions.files.QuestionError: QUESTIONS:1: unbalanced quotes: No closing quotation
+
+    Control characters (a terminal escape sequence) become U+FFFD, so no output echoes them:
+
+    >>> read_questions("title: A\\x1b[31mB\\nline 0 0 1 1").title
+    'A\\ufffd[31mB'
+    """
+    import shlex
+
+    title = ""
+    section = ""
+    wording: list[str] = []
+    questions: list[Question] = []
+    number = 0
+    for number, raw in enumerate(split_lines(text.removeprefix("\ufeff")), 1):
+        stripped = _CONTROL.sub("\ufffd", raw).strip()
+        if not stripped or stripped.startswith("#"):
+            continue
+        if stripped.startswith(">"):
+            wording.append(stripped[1:].strip())
+            continue
+        keyword = _KEYWORD.match(stripped)
+        if keyword:
+            name, value = keyword.group(1).lower(), " ".join(keyword.group(2).split())
+            if not value:
+                raise QuestionError(source, number, f"'{name}:' needs a text after it")
+            if name == "title":
+                if title:
+                    raise QuestionError(source, number, "a second title line (one per sheet)")
+                title = value
+            else:
+                section = value
+            continue
+        marks = None
+        found = _MARKS.match(stripped)
+        if found:
+            marks = int(found.group(1))
+            stripped = stripped[found.end() :]
+        elif stripped.startswith("["):
+            raise QuestionError(
+                source, number, "marks are written [N] or [N marks] before the question, e.g. [4]"
+            )
+        try:
+            argv = tuple(shlex.split(strip_comment(stripped)))
+        except ValueError as err:
+            raise QuestionError(source, number, f"unbalanced quotes: {err}") from None
+        if not argv:
+            raise QuestionError(source, number, "marks without a question")
+        if len(questions) == MAX_QUESTIONS:
+            raise QuestionError(source, number, f"at most {MAX_QUESTIONS} questions in one sheet")
+        questions.append(
+            Question(len(questions) + 1, number, argv, marks, " ".join(wording), section)
+        )
+        wording = []
+    if wording:
+        raise QuestionError(source, number, "'>' wording without a question after it")
+    return Sheet(title, tuple(questions), source)
+
+
+def _read_bytes(path: str) -> bytes:
+    """At most :data:`MAX_FILE_BYTES` + 1 bytes of ``path`` (``-``: standard input)."""
+    import sys
+
+    if path != "-":
+        with open(path, "rb") as f:
+            return f.read(MAX_FILE_BYTES + 1)
+    stream = getattr(sys.stdin, "buffer", None)
+    if stream is not None:
+        return bytes(stream.read(MAX_FILE_BYTES + 1))
+    # a text stream without bytes (a test's StringIO): its undecodable bytes come back
+    return sys.stdin.read(MAX_FILE_BYTES + 1).encode("utf-8", "surrogateescape")
+
+
+def read_file(path: str) -> Sheet:
+    """Read and parse the question file ``path`` (``-``: standard input, read as strictly as
+    a named file); a file that cannot be read is a ``ValueError`` naming it."""
+    if path == "":
+        raise ValueError("QUESTIONS is empty (''): give the name of a question file")
+    name = "<stdin>" if path == "-" else path
+    try:
+        data = _read_bytes(path)
+        if b"\x00" in data:
+            raise ValueError(f"{name} is not a text file (it holds NUL bytes)")
+        text = data.decode("utf-8")
+    except UnicodeError:
+        raise ValueError(f"{name} is not UTF-8 text") from None
+    except IsADirectoryError:
+        raise ValueError(f"{path!r} is a directory, not a question file") from None
+    except OSError as err:
+        raise ValueError(f"cannot read {path!r}: {err.strerror or err}") from None
+    if len(data) > MAX_FILE_BYTES:
+        raise ValueError(f"{name} is larger than {MAX_FILE_BYTES:,} bytes")
+    sheet = read_questions(text, name)
+    if not sheet.questions:
+        raise ValueError(f"{name} holds no question (one per line: line 2 2 10 6 --algo dda)")
+    return sheet

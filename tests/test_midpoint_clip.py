@@ -1,0 +1,68 @@
+"""Midpoint subdivision clipping (scanconv.algorithms.midpoint_clip): by hand, and against
+Liang-Barsky's exact segment (an independent computation): with rounded midpoints the visible
+part found is within one unit of the exact one at each end."""
+
+from __future__ import annotations
+
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+
+from scanconv.algorithms.clipping import liang_barsky
+from scanconv.algorithms.midpoint_clip import subdivide, visible
+from scanconv.answers.midpoint_clip import midpoint_clip_solution
+
+C = st.integers(-40, 40)
+WINDOW = (0, 0, 20, 20)
+
+
+def test_by_hand() -> None:
+    # (-4, 2)-(4, 2) against (0,0)-(8,8): split at (0, 2): the right half (0,2)-(4,2) is
+    # inside; the left half splits at (-2, 2) (outside, reject), then (-1, 2): (-1,2)-(0,2) is
+    # one unit long and keeps its inside end (0, 2)
+    pieces = list(subdivide((-4, 2), (4, 2), (0, 0, 8, 8)))
+    assert [p.action for p in pieces] == [
+        "split", "split", "reject", "split", "reject", "keep inside end", "accept",
+    ]  # fmt: skip
+    assert visible(pieces) == [((0, 2), (4, 2))]
+
+
+def test_floor_midpoints_use_the_shift() -> None:
+    pieces = list(subdivide((-3, 1), (4, 1), (0, 0, 8, 8), "floor"))
+    assert pieces[0].mid == (0, 1)  # (-3 + 4) >> 1 = 0
+    pieces = list(subdivide((-3, 1), (4, 1), (0, 0, 8, 8), "rounded"))
+    assert pieces[0].mid == (1, 1)  # 1/2 rounded half up
+
+
+@settings(deadline=None, max_examples=150)
+@given(p1=st.tuples(C, C), p2=st.tuples(C, C))
+def test_exact_midpoints_agree_with_liang_barsky_to_a_unit(p1, p2) -> None:
+    assume(p1 != p2)
+    lb = liang_barsky(p1, p2, WINDOW)
+    parts = visible(list(subdivide(p1, p2, WINDOW, "exact")))
+    if not lb.accepted:
+        assert parts == []
+        return
+    (sa, sb) = lb.segment
+    if max(abs(sb[0] - sa[0]), abs(sb[1] - sa[1])) < 1:
+        return  # a visible part shorter than a unit: found or not, to a unit
+    assert parts, (p1, p2)
+    (a, b), (la, lb_) = (parts[0][0], parts[-1][1]), lb.segment
+    assert max(abs(a[0] - la[0]), abs(a[1] - la[1])) <= 1
+    assert max(abs(b[0] - lb_[0]), abs(b[1] - lb_[1])) <= 1
+
+
+@settings(deadline=None, max_examples=150)
+@given(p1=st.tuples(C, C), p2=st.tuples(C, C), how=st.sampled_from(["rounded", "floor"]))
+def test_rounded_midpoints_keep_only_points_inside(p1, p2, how) -> None:
+    """Rounded midpoints leave the ideal line by up to half a unit a level (the method's
+    pixel approximation): what they keep is inside the window and integer."""
+    for a, b in visible(list(subdivide(p1, p2, WINDOW, how))):
+        for x, y in (a, b):
+            assert 0 <= x <= 20 and 0 <= y <= 20
+            assert isinstance(x, int) and isinstance(y, int)
+
+
+def test_answer() -> None:
+    sol = midpoint_clip_solution(-4, 2, 4, 2, [0, 0, 8, 8])
+    assert sol.data["pieces"] == 7
+    assert next(r[5] for r in sol.tables[0].rows()) == "split"
