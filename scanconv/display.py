@@ -81,6 +81,7 @@ class Answer(Solution):
             raise ValueError(f"unknown format {fmt!r} (choose from {names})") from None
         if chosen in (Format.auto, Format.rich):
             raise ValueError("the rich format is for a terminal: use markdown or plain")
+        self.check_budget(chosen)
         options = Options(grid=grid, origin=origin)
         return "".join(c for c in render(self, chosen, options) if not isinstance(c, Notice))
 
@@ -96,6 +97,9 @@ class Answer(Solution):
     def rows(self) -> list[dict[str, Any]]:
         """The step table as dictionaries keyed by column key, exact values as computed
         (decisions as their names)."""
+        from .render import Format
+
+        self.check_budget(Format.json, in_memory=True)
         get = step_getter(self.columns, self.extra_keys)
         keys = [c.key for c in self.columns]
         return [
@@ -109,11 +113,28 @@ class Answer(Solution):
     def _repr_markdown_(self) -> str:
         return self.to("markdown")
 
+    def check_budget(self, fmt: Any = None, *, in_memory: bool = False) -> None:
+        """Refuse (:class:`~scanconv.core.checks.InputError` naming the parameter and the
+        limit) to show this answer in ``fmt`` (``None``: in any format) beyond the work budget
+        of :mod:`scanconv.render.budget`, before any row is computed; ``in_memory``: as a
+        list of rows (:data:`~scanconv.render.budget.ROWS_IN_MEMORY`).
+
+        >>> import scanconv
+        >>> scanconv.line(0, 0, 500_000, 1, algo="wu").to("html")  # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        scanconv.render.budget.BudgetError: the table has about 500,001 rows; ...
+        """
+        if self.recipe is not None:
+            check_recipe(self.recipe, fmt, in_memory=in_memory)
+
     def _repr_html_(self) -> str:
         """The interactive step-through page as a notebook fragment: its own unique id, its
         style scoped to it, its keys bound to it (see :func:`scanconv.render.html.notebook_html`)."""
+        from .render import Format
         from .render.html import notebook_html
 
+        self.check_budget(Format.html)
         return notebook_html(self)
 
 
@@ -126,18 +147,44 @@ def answers(fn: Callable[P, Solution]) -> Callable[P, Answer]:
 
     @functools.wraps(fn)
     def ask(*args: P.args, **kwargs: P.kwargs) -> Answer:
+        recipe = (ask, args, tuple(sorted(kwargs.items())))
+        check_recipe(recipe, None)  # the one budget, before any work (scanconv.render.budget)
         try:
             solution = fn(*args, **kwargs)
         except InputError:
             raise
         except ValueError as err:
             raise InputError(str(err)) from err
-        return Answer.of(solution, (ask, args, tuple(sorted(kwargs.items()))))
+        return Answer.of(solution, recipe)
 
     # help() reads the signature through __wrapped__: the wrapped function (reached only
     # through this one) is annotated as the API returns (no signature built at import time)
     fn.__annotations__ = ask.__annotations__ = {**fn.__annotations__, "return": "Answer"}
     return ask
+
+
+def check_recipe(recipe: Recipe, fmt: Any, *, in_memory: bool = False) -> None:
+    """Refuse the API call ``recipe`` beyond the work budget of ``fmt`` (``None``: of every
+    format): :func:`scanconv.render.budget.check_work` on its arguments by name.
+
+    >>> import scanconv
+    >>> check_recipe((scanconv.line, (0, 0, 10**9, 1), ()), None)
+    Traceback (most recent call last):
+    ...
+    scanconv.render.budget.BudgetError: the table has about 1,000,000,001 rows; no format prints more than 2,000,000 (a minute of output)
+    """
+    import inspect
+
+    from .render.budget import check_rows_in_memory, check_work
+
+    call, args, kwargs = recipe
+    try:
+        bound = inspect.signature(call).bind(*args, **dict(kwargs))
+    except TypeError:
+        return  # the call itself raises it
+    work = check_work(call.__name__, bound.arguments, fmt)
+    if in_memory and work is not None:
+        check_rows_in_memory(work)
 
 
 def _rebuild(recipe: Recipe) -> Answer:

@@ -69,7 +69,6 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "answers.practice.MAX_COUNT": [(["practice", "--count", "201", "--seed", "1"], "200")],
     "questions.files.MAX_FILE_BYTES": [(["sheet", str(BIG_SHEET)], "1,000,000 bytes")],
     "questions.files.MAX_QUESTIONS": [(["sheet", str(SHEETS / "too-many-questions.txt")], "1000")],
-    "questions.files.MAX_ROWS": [(["sheet", str(SHEETS / "too-long-answer.txt")], "10,000")],
     "core.numeric.COORD_LIMIT": [
         (["line", "0", "0", "1000000001", "0"], "1e+09"),
         (["circle", "1000000001"], "1e+09"),

@@ -183,7 +183,7 @@ def test_a_bad_question_is_refused_with_its_line_and_scanconvs_message(
 
 def test_an_answer_too_long_for_a_sheet_is_refused_quickly(tmp_path: Path) -> None:
     r = run("sheet", str(_file(tmp_path, "line 1 1 3 2\nline 0 0 100000000 1\n")))
-    assert_refused(r, "q.txt:2: ", "more than 10,000 table rows")
+    assert_refused(r, "q.txt:2: ", "100,000,001 table rows", "at most 200,000")
 
 
 def test_unknown_commands_get_a_suggestion(tmp_path: Path) -> None:

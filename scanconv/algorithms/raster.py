@@ -54,6 +54,7 @@ from ..core.checks import check_integer
 from ..core.numeric import COORD_LIMIT, Number, as_int, fmt_exact, normalize, round_half_up
 from . import circles
 from .lines import dda_increments, dda_steps, orient
+from .raster_fill import check_pixels
 from .raster_fill import line_aa as line_aa  # the bulk Wu line and fill: scanconv.raster too
 from .raster_fill import polygon as polygon
 
@@ -241,6 +242,8 @@ def line(
     [(2, 2), (2, 3), (3, 4), (3, 5)]
     """
     p = [_exact(v, n) for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2"))]
+    dx, dy = (abs(Fraction(p[i + 2]) - Fraction(p[i])) for i in (0, 1))
+    check_pixels(math.ceil(max(dx, dy)) + 2, "x2" if dx >= dy else "y2")
     if algo == "bresenham":
         ix1, iy1, ix2, iy2 = (
             as_int(v, n) for v, n in zip(p, ("x1", "y1", "x2", "y2"), strict=True)
@@ -482,6 +485,7 @@ def circle(r: int, xc: int = 0, yc: int = 0) -> Coords:
     """
     r = _int(r, "radius", negative=False)
     xc, yc = _int(xc, "xc"), _int(yc, "yc")
+    check_pixels(math.ceil(4 * math.sqrt(2) * r) + 8, "r")
     head = list(circles.symmetric_pixels([(0, r)], xc, yc))
     if r == 0:
         return _assemble([_given(head)])
@@ -542,6 +546,7 @@ def ellipse(rx: int, ry: int, xc: int = 0, yc: int = 0) -> Coords:
     """
     rx, ry = _int(rx, "rx", negative=False), _int(ry, "ry", negative=False)
     xc, yc = _int(xc, "xc"), _int(yc, "yc")
+    check_pixels(4 * (rx + ry) + 4, "rx" if rx >= ry else "ry")
     px, py = _quadrant(rx, ry)
     # x never decreases and y never increases along the walk: the points on the y axis come
     # first, then the origin (if it is a point), the points off the axes, and those on the x

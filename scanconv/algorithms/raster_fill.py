@@ -42,6 +42,27 @@ from .polygon import RULES
 
 Array = npt.NDArray[np.int64]
 
+PIXEL_BUDGET = 2 * 10**7
+"""Most pixels one call of :mod:`scanconv.raster` returns: their int64 coordinates take 16
+bytes a pixel, so 320 MB (and a few seconds) at the budget, where a line of 10**9 pixels
+needed 16 GB. Checked from the arguments before any array is allocated."""
+
+
+def check_pixels(count: int, param: str) -> None:
+    """Refuse a primitive of more than :data:`PIXEL_BUDGET` pixels, naming ``param``.
+
+    >>> check_pixels(10**9 + 1, "x2")
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: about 1,000,000,001 pixels: scanconv.raster returns at most 20,000,000 at once (320 MB of coordinates); draw it in parts
+    """
+    if count > PIXEL_BUDGET:
+        raise InputError(
+            f"about {count:,} pixels: scanconv.raster returns at most {PIXEL_BUDGET:,} at once "
+            f"({PIXEL_BUDGET * 16 // 10**6:,} MB of coordinates); draw it in parts",
+            param,
+        )
+
 
 def _ints(values: Sequence[object] | npt.ArrayLike, name: str) -> Array:
     """Integer coordinates as int64, or an error naming the problem."""
@@ -90,6 +111,7 @@ def polygon(
     dy, dx = y1 - y0, x1 - x0
     counts = dy  # scan lines y0 .. y1 - 1 (integer vertices: the upper end excluded)
     total = int(counts.sum())
+    check_pixels(total, "vertices")
     empty = np.empty(0, dtype=np.int64)
     if total == 0:
         return empty, empty.copy()
@@ -109,6 +131,7 @@ def polygon(
     rows = line[:-1][on[:-1]]
     length = np.maximum(b - a, 0)
     n = int(length.sum())
+    check_pixels(n, "vertices")
     if n == 0:
         return empty, empty.copy()
     first = np.cumsum(length) - length
@@ -138,6 +161,7 @@ def line_aa(x1: int, y1: int, x2: int, y2: int) -> tuple[Array, Array, npt.NDArr
     if a2 < a1:
         a1, b1, a2, b2 = a2, b2, a1, b1
     da, db = a2 - a1, b2 - b1
+    check_pixels(2 * (da + 1), "y2" if steep else "x2")
     k = np.arange(da + 1, dtype=np.int64)
     if da == 0:
         low, rem, den = np.array([b1], dtype=np.int64), np.zeros(1, dtype=np.int64), 1

@@ -1,188 +1,119 @@
-"""The work budget of a command, checked before the command does any work.
+"""The work budget on the command line: the library's one check, worded with this CLI's flags.
 
-:func:`check` estimates, from the command's arguments alone, how many rows (step tables) or
-cells (matrices) its answer prints, and refuses the request at once when that is beyond the
-budget of the output format (:mod:`scanconv.render.budget`): one line naming the size, the
-format's limit and the formats that would print it, as options of this command line
-(``use --format plain, csv or json``). The estimates only need to be close (an ellipse's rows
-are counted from its region boundary); an argument the estimate cannot read is left to the
-command's own validation.
+:func:`check` runs :func:`scanconv.render.budget.check_work` for a command before it does any
+work, in the output format the command will write, and words a refusal as one line naming the
+size, the limit and the formats that would print it, as options of this command line
+(``use --format plain, csv or json``). :func:`check_question` checks a question of a sheet,
+practice set, exam or ``check`` against the document budget
+(:func:`scanconv.render.budget.check_question`). Both go through :func:`library_call`, which
+names the library function a command calls (the estimates and the costs are the library's,
+:mod:`scanconv.render.work`).
 """
 
 from __future__ import annotations
 
-import math
-from collections.abc import Callable, Mapping
-from fractions import Fraction
+from collections.abc import Mapping
 from typing import Any
 
-from ..core.numeric import COORD_LIMIT
-from ..render import Format
+from ..render.work import ESTIMATES, Work
 from .output import Output, format_for_file, resolve
 
-Work = tuple[str, int, int | None]
-"""``("rows", rows, None)`` for a step table, ``("matrix", m, n)`` for a matrix."""
+__all__ = ["DOCUMENT_COMMANDS", "ESTIMATES", "LIBRARY_NAMES", "check", "check_question"]
+__all__ += ["estimate", "library_call"]
 
-
-def _num(v: Any) -> Fraction:
-    return Fraction(v)
-
-
-def _line_rows(a: Mapping[str, Any], names: tuple[str, str, str, str]) -> int:
-    x1, y1, x2, y2 = (_num(a[k]) for k in names)
-    return math.ceil(max(abs(x2 - x1), abs(y2 - y1))) + 1
-
-
-def _line(a: Mapping[str, Any]) -> Work:
-    return ("rows", _line_rows(a, ("x1", "y1", "x2", "y2")), None)
-
-
-def _circle(a: Mapping[str, Any]) -> Work:
-    # one octant: x runs from 0 to r/sqrt(2)
-    return ("rows", math.ceil(abs(_num(a["r"])) / math.sqrt(2)) + 1, None)
-
-
-def _ellipse(a: Mapping[str, Any]) -> Work:
-    # region 1 ends where the slope is -1, at x = rx^2 / sqrt(rx^2 + ry^2); region 2 has about
-    # ry^2 / sqrt(rx^2 + ry^2) steps (ellipse 20000 20000: 28,285 rows)
-    rx, ry = abs(float(_num(a["rx"]))), abs(float(_num(a["ry"])))
-    h = math.hypot(rx, ry) or 1.0
-    return ("rows", math.ceil((rx * rx + ry * ry) / h) + 2, None)
-
-
-def _samples(default: int = 16) -> Callable[[Mapping[str, Any]], Work]:
-    def rows(a: Mapping[str, Any]) -> Work:
-        n = a.get("samples")
-        return ("rows", (default if n is None else int(n)) + 1, None)
-
-    return rows
-
-
-def _parametric_line(a: Mapping[str, Any]) -> Work:
-    n = a.get("samples")
-    if n is None:
-        return ("rows", _line_rows(a, ("x0", "y0", "x1", "y1")), None)
-    return ("rows", int(n) + 1, None)
-
-
-def _polygon(a: Mapping[str, Any]) -> Work:
-    # one row per scan line of the vertices' y extent (and a few for the edge table)
-    ys = [_num(v) for v in list(a["vertices"])[1::2]]
-    return ("rows", math.ceil(max(ys) - min(ys)) + 1, None)
-
-
-def _quantize(a: Mapping[str, Any]) -> Work:
-    bits = int(_num(a["bits"]))
-    return ("rows", 1 << bits if 0 < bits <= 64 else 0, None)
-
-
-def _matrix(default: str | None = None) -> Callable[[Mapping[str, Any]], Work]:
-    def cells(a: Mapping[str, Any]) -> Work:
-        from ..algorithms.image_limits import parse_size
-
-        m, n = parse_size(a.get("size") or default or "")
-        return ("matrix", m, n)
-
-    return cells
-
-
-ESTIMATES: dict[str, Callable[[Mapping[str, Any]], Work]] = {
-    "line": _line,
-    "circle": _circle,
-    "ellipse": _ellipse,
-    "compare_line": _line,
-    "quantize": _quantize,
-    "polygon": _polygon,
-    "sample": _matrix(),
-    "image_ramp": _matrix("8"),
-    "parametric_circle": _samples(),
-    "parametric_ellipse": _samples(),
-    "parametric_parabola": _samples(),
-    "parametric_custom": _samples(),
-    "parametric_line": _parametric_line,
-    "bezier": _samples(),
-    "bspline": _samples(),
-    "continuity": _samples(),
-    "local_control": _samples(),
+LIBRARY_NAMES = {
+    "compare_line": "compare_lines",
+    "compare_circle": "compare_circles",
+    "image_ramp": "ramp",
+    "fill_boundary": "fill",
+    "fill_flood": "fill",
 }
-"""How the size of each command's answer is estimated, by the command function's name."""
+"""The library function of each command whose name differs (the others share theirs)."""
 
-#: How a budget refusal's formats are written on this command line.
-_FLAGS = {"csv": "csv", "json": "json", "plain": "plain", "markdown": "markdown"}
+
+DOCUMENT_COMMANDS = {
+    "sheet": "each question (check_question) and their total (render.budget.document)",
+    "practice": "its questions go through the sheet's answer_questions, like a sheet's",
+    "exam": "the exam book's questions go through the sheet's answer_questions",
+    "check": "the question (check_question); --batch: render.budget.check_batch",
+}
+"""The commands that run other commands as questions, and how their work is bounded."""
+
+
+def library_call(name: str, arguments: Mapping[str, Any]) -> tuple[str, Mapping[str, Any]]:
+    """The library function that command ``name`` calls for ``arguments``, and its arguments.
+
+    >>> library_call("bezier", {"points": [0, 0, 1, 1], "t": "1/2"})[0]
+    'bezier_at'
+    >>> library_call("image_ramp", {"size": "8"})[0]
+    'ramp'
+    """
+    if name in ("bezier", "bspline") and arguments.get("t") is not None:
+        return name + "_at", arguments
+    if name == "bspline" and arguments.get("basis"):
+        return "bspline_basis", arguments
+    if name == "continuity" and arguments.get("values") is not None:
+        return name, {**arguments, "first": arguments["values"]}
+    return LIBRARY_NAMES.get(name, name), arguments
 
 
 def estimate(name: str, arguments: Mapping[str, Any]) -> Work | None:
-    """The size of the answer of command ``name`` for ``arguments``, or ``None`` if unknown.
+    """The estimated size of command ``name``'s answer (``None``: not estimated).
 
-    >>> estimate("sample", {"size": "4096"})
-    ('matrix', 4096, 4096)
-    >>> estimate("ellipse", {"rx": 20000, "ry": 20000})
-    ('rows', 28287, None)
-    >>> estimate("line", {"x1": "junk"}) is None
-    True
+    >>> estimate("sample", {"size": "4096"}).cols
+    4096
     """
-    how = ESTIMATES.get(name)
-    if how is None:
-        return None
-    try:
-        return how(arguments)
-    except (ArithmeticError, KeyError, TypeError, ValueError):  # the command refuses it itself
-        return None
+    from ..render.work import estimate as library_estimate
 
-
-LONG_TABLES = {"quantize"}
-"""Commands whose table may pass :data:`~scanconv.render.budget.ALL_ROWS` (in csv and json):
-``quantize --bits 24`` is 2^24 rows, and those rows are the answer. With ``--range`` each row
-carries exact fractions, three times slower: that table keeps the budget of every format."""
-
-
-def _bare(arguments: Mapping[str, Any]) -> bool:
-    """True for a quantizer's table without ``--range`` (integers and names only)."""
-    return not arguments.get("value_range")
+    return library_estimate(*library_call(name, arguments))
 
 
 def check(name: str, arguments: Mapping[str, Any], out: Output) -> None:
     """Refuse (``ValueError``, one line) a request beyond its output format's budget.
 
+    >>> from scanconv.render import Format
     >>> check("sample", {"size": "4096"}, Output(fmt=Format.latex))
     Traceback (most recent call last):
     ...
     ValueError: a 4096 x 4096 matrix is 16,777,216 cells; the rich, latex and markdown formats print at most 65,536: use --format csv or json
     >>> check("sample", {"size": "4096"}, Output(fmt=Format.csv))
     """
-    if name not in ESTIMATES:
-        return
+    from ..render.budget import BudgetError, check_work
+
     fmt = resolve(format_for_file(out.fmt, out.output), out.output is not None)
-    work = estimate(name, arguments)
-    if work is None:
-        return
-    if fmt in (Format.csv, Format.json, Format.html) and work[0] != "rows":
-        return  # matrices: streamed, or cut by the page itself
-    from ..render.budget import BudgetError, check_matrix, check_rows
-
-    kind, a, b = work
-    if kind == "matrix" and b is not None:
-        from ..algorithms.image_limits import MAX_CELLS
-
-        if a * b > MAX_CELLS:
-            return  # beyond the input limit: the command refuses it, naming that limit
-    if kind == "rows" and a > 2 * COORD_LIMIT + 1:
-        return
+    function, args = library_call(name, arguments)
     try:
-        if kind == "matrix" and b is not None:
-            check_matrix(a, b, fmt)
-        elif name in LONG_TABLES and fmt in (Format.csv, Format.json) and _bare(arguments):
-            return  # a quantizer's 2^24 rows are what was asked for (docs/limits.md)
-        else:
-            check_rows(a, fmt, every_format=not (name in LONG_TABLES and _bare(arguments)))
+        check_work(function, args, fmt)
     except BudgetError as err:
-        if err.ways == ("raster",):
-            hint = (
-                "; for the pixels alone use scanconv.raster in Python (docs/library-numpy.md)"
-                if name in ("line", "circle")
-                else ""
-            )
-            raise ValueError(f"{err}{hint}") from None
-        ways = [_FLAGS.get(w, w) for w in err.ways]
-        words = ways[0] if len(ways) == 1 else ", ".join(ways[:-1]) + " or " + ways[-1]
-        raise ValueError(f"{err}: use --format {words}") from None
+        raise ValueError(_worded(err, function)) from None
+
+
+def check_question(name: str, arguments: Mapping[str, Any]) -> None:
+    """Refuse (``ValueError``, one line) a question beyond the budget of a document, alone
+    or with the questions before it (:func:`scanconv.render.budget.document`)."""
+    from ..render.budget import BudgetError
+    from ..render.budget import check_question as check_in_document
+
+    try:
+        check_in_document(*library_call(name, arguments))
+    except BudgetError as err:
+        raise ValueError(str(err)) from None
+
+
+def _worded(err: Any, function: str) -> str:
+    """The refusal with its way out as options of this command line."""
+    if err.ways == ("raster",):
+        hint = {"line": "line", "circle": "circle", "antialias_line": "line_aa"}.get(function)
+        if function == "line" and "line/wu" in str(err):
+            hint = "line_aa"
+        if hint is None:
+            return str(err)
+        return (
+            f"{err}; for the pixels alone use scanconv.raster in Python (raster.{hint}, "
+            "docs/library-numpy.md)"
+        )
+    if not err.ways:
+        return str(err)
+    ways = list(err.ways)
+    words = ways[0] if len(ways) == 1 else ", ".join(ways[:-1]) + " or " + ways[-1]
+    return f"{err}: use --format {words}"

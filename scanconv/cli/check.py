@@ -17,6 +17,7 @@ from ..core.records import Solution
 from ..questions.marking import marking_answer, marking_line
 from ..render import Format
 from .application import app
+from .budget import check_question
 from .options import BriefOpt, ExactOpt, FormatOpt, OutputOpt
 from .output import Output, emit, fail, format_for_file, write_atomic
 
@@ -36,6 +37,10 @@ def solve(question: list[str]) -> Solution:
     line = marking_line(question)
     # The one place a question's work is weighed before it is done (the per-question
     # budget): line.function names the command, line.arguments holds its values.
+    try:
+        check_question(line.function, line.arguments)
+    except ValueError as err:
+        raise ValueError(f"question: {err}") from None
     return marking_answer(line)
 
 
@@ -127,6 +132,7 @@ def _batch(
     (the default, also on a terminal), JSON, or a table in the text formats."""
     from ..answers.marking import mark
     from ..core.student_table import read_table
+    from ..render.budget import check_batch
     from ..render.marking import batch_csv, batch_json
 
     chosen = format_for_file(fmt, output)
@@ -136,6 +142,7 @@ def _batch(
         fail(f"--batch {folder}: cannot read the folder: {err.strerror or err}")
     if not files:
         fail(f"--batch {folder}: no files to mark")
+    check_batch([p.stat().st_size for p in files], solution)  # before any file is read
     results = []
     for path in files:
         m = mark(read_table(path), solution)

@@ -34,7 +34,6 @@ from ..questions import parse, shown_with, solve
 from ..questions.files import (
     MAX_FILE_BYTES,
     MAX_QUESTIONS,
-    MAX_ROWS,
     QuestionError,
     read_file,
     read_questions,
@@ -43,6 +42,7 @@ from ..questions.files import (
 from ..render import Options
 from ..render.sheet import Answered, Question, Sheet
 from .application import app
+from .budget import check_question
 from .output import Pending, check_paths, fail, note, write_all, write_atomic
 
 if TYPE_CHECKING:
@@ -50,7 +50,7 @@ if TYPE_CHECKING:
 
 __all__ = ["Answered", "Question", "QuestionError", "Sheet", "answer", "answer_questions"]
 __all__ += ["read_file", "read_questions", "sheet", "strip_comment"]
-__all__ += ["MAX_FILE_BYTES", "MAX_QUESTIONS", "MAX_ROWS"]
+__all__ += ["MAX_FILE_BYTES", "MAX_QUESTIONS"]
 
 # --- answering ------------------------------------------------------------------------------
 
@@ -72,12 +72,15 @@ def answer(argv: Iterable[str]) -> tuple[Solution, Options]:
     options = shown_with(line)
     # The one place a question's work is weighed before it is done (the per-question
     # budget): line.function names the command, line.arguments holds its values.
+    check_question(line.function, line.arguments)  # alone and with the questions before it
     return solve(line), options
 
 
 def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -> list[Answered]:
     """Answer every question in this process (see the module docstring); the first bad one
-    raises :class:`QuestionError` with its line.
+    raises :class:`QuestionError` with its line, and so does the first question beyond the
+    work budget of a document, alone or with the questions before it
+    (:func:`scanconv.render.budget.document`).
 
     >>> sheet = read_questions("line 2 2 10 6 --algo dda\\n\\ncircle 0.5\\n", "q.txt")
     >>> answer_questions(sheet.questions, sheet.source)
@@ -85,6 +88,13 @@ def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -
     ...
     scanconv.questions.files.QuestionError: q.txt:3: radius must be an integer, got 0.500
     """
+    from ..render.budget import document
+
+    with document():
+        return _answer_all(questions, source)
+
+
+def _answer_all(questions: Iterable[Question], source: str) -> list[Answered]:
     out = []
     for q in questions:
         try:
@@ -93,23 +103,8 @@ def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -
             raise QuestionError(source, q.line, " ".join(str(err).split())) from None
         except RecursionError:
             raise QuestionError(source, q.line, "input too deeply nested") from None
-        if _too_long(solution):
-            raise QuestionError(
-                source,
-                q.line,
-                f"its answer has more than {MAX_ROWS:,} table rows: too long for a sheet "
-                "(run it alone: scanconv streams long answers)",
-            )
         out.append(Answered(q, solution, options))
     return out
-
-
-def _too_long(solution: Solution) -> bool:
-    """Whether a table of the answer has more than :data:`MAX_ROWS` rows (counted lazily)."""
-    from itertools import islice
-
-    tables = [solution.steps, *(t.rows for t in solution.tables)]
-    return any(sum(1 for _ in islice(rows(), MAX_ROWS + 1)) > MAX_ROWS for rows in tables)
 
 
 # --- the command ----------------------------------------------------------------------------

@@ -26,8 +26,6 @@ MAX_QUESTIONS = 1000
 """The most questions one sheet takes (a 200-question key is the benchmark)."""
 MAX_FILE_BYTES = 1_000_000
 """The largest question file read."""
-MAX_ROWS = 10_000
-"""The most rows of any one table of a question's answer (a sheet is built in memory)."""
 
 
 class QuestionError(ValueError):

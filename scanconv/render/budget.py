@@ -1,17 +1,23 @@
-"""Work budgets of the output formats, decided before any work starts.
+"""One work budget for every answer, decided from its arguments before any work starts.
 
-Every format streams its rows, but they differ a hundredfold in what a row or a cell costs:
-the ``csv`` and ``json`` writers take microseconds a cell, ``plain`` a few, ``latex`` and
-``markdown`` tens (markdown lays out the whole table at once), and ``rich`` (a terminal
-table, measured and laid out by rich) about a hundred. So a size that every format accepts
-in a minute would be tiny; instead each format has its own budget, and a request beyond it is
-refused at once, naming the formats that have no such limit (:class:`BudgetError`).
+:func:`check_work` is the one check: the command line calls it for a command in its output
+format, the Python API (:mod:`scanconv.display`) for an answer it is about to compute or show,
+and a sheet, practice set, exam or ``check`` for each question (:func:`check_question`) and for
+the whole document (:func:`document`). It estimates the answer's size from its arguments
+(:mod:`scanconv.render.work`) and refuses, with an :class:`~scanconv.core.checks.InputError`
+naming the parameter, the size and the limit, an answer beyond any of:
 
-The numbers (measured on a shared 2-CPU machine, see docs/performance.md):
+* the rows a format prints (:data:`TABLE_ROWS`: rich lays out each row) and the cells of a
+  matrix (:data:`MATRIX_CELLS`);
+* :data:`ALL_ROWS`, the most rows of any table in any format (the pixels of a longer line come
+  from :mod:`scanconv.raster`);
+* :data:`SECONDS` of CPU time: the rows times the measured cost of a row of this command,
+  method and format (:data:`scanconv.render.work.COSTS`; Wu's line costs ten times
+  Bresenham's, json twice csv, rich fifty times).
 
-* a sampled 512 × 512 matrix (262,144 cells): rich 26 s, markdown 13 s, latex 9.5 s,
-  plain 1.1 s, csv and json 0.6 s;
-* a step table of 5,000 rows: rich 2.7 s; an ellipse's 28,285 rows: rich 56 s.
+A document (a sheet, a practice set, an exam book) is built in memory: each question is checked
+in the costliest document format and the questions' total against :data:`SHEET_ROWS` and
+:data:`SHEET_SECONDS`. ``check --batch`` is bounded by :func:`check_batch`.
 
 The messages state the rule and name formats, never a command-line flag: the caller words
 the way out (:attr:`BudgetError.ways`).
@@ -19,8 +25,18 @@ the way out (:attr:`BudgetError.ways`).
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
+import itertools
+from collections.abc import Iterator, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
 from ..core.checks import InputError
 from . import Format
+from .work import BYTES, COSTS, Work, estimate
+
+if TYPE_CHECKING:
+    from ..core.records import Solution
 
 MATRIX_CELLS: dict[Format, int] = {
     Format.rich: 256 * 256,
@@ -35,9 +51,45 @@ TABLE_ROWS: dict[Format, int] = {Format.rich: 10_000}
 """Most step-table rows a format prints beyond :data:`ALL_ROWS`; the others stream up to it."""
 
 ALL_ROWS = 2_000_000
-"""Most step-table rows any format prints: 2,000,000 rows stream in about 7 s as csv and
-35 s as json (an ellipse's wider rows) here, so every allowed table ends within a minute. The
-pixels of a longer line or circle come from :mod:`scanconv.raster` (numpy, milliseconds)."""
+"""Most step-table rows any format prints (a bare quantizer's table in csv and json aside):
+2,000,000 Bresenham rows stream in about 7 s as csv on a quiet machine; the costlier formats
+and methods print fewer within :data:`SECONDS`. The pixels of a longer line or circle come
+from :mod:`scanconv.raster` (numpy, milliseconds)."""
+
+SECONDS = 40
+"""Most CPU seconds of estimated work of one answer (rows times the measured row cost): with
+the start-up and a loaded machine, every accepted answer ends within a minute."""
+
+MEMORY = 500 * 10**6
+"""Most bytes a format may hold at once for one answer (the html page holds its rows)."""
+
+SHEET_ROWS = 200_000
+"""Most table rows (or matrix cells) of a whole document (sheet, practice set, exam book),
+which is built in memory: a json sheet holds about 2.4 KB a row (477 MB at the budget; 1.16 GB
+for 500,000 rows)."""
+
+SHEET_SECONDS = 30
+"""Most CPU seconds of estimated work of a whole document, each question costed in the
+costliest document format (:data:`DOCUMENT`)."""
+
+DOCUMENT = (Format.markdown, Format.latex, Format.html, Format.json, Format.plain)
+"""The formats a document is written in."""
+
+ROWS_IN_MEMORY = 500_000
+"""Most rows :meth:`scanconv.display.Answer.rows` builds as a list of dictionaries (about
+500 bytes a row)."""
+
+LONG_TABLES = ("quantize",)
+"""Costs keys whose table may pass :data:`ALL_ROWS` in csv and json: ``quantize --bits 24`` is
+2^24 rows (0.5 us a row), and those rows are the answer (with ``--range`` each row carries
+exact fractions: ``quantize/range`` keeps the budget of every format)."""
+
+DEFAULT_COSTS = {"csv": 20.0, "json": 60.0, "plain": 60.0, "markdown": 90.0, "latex": 100.0}
+DEFAULT_COSTS |= {"html": 150.0, "rich": 3000.0}
+"""Microseconds a row for a command/method missing from :data:`~scanconv.render.work.COSTS`."""
+
+MIN_COST = 0.2
+"""The least cost of a row, in microseconds (a table printed without its rows still costs)."""
 
 UNLIMITED = (Format.csv, Format.json)
 """The formats a budget refusal points to: they stream at a few microseconds a cell."""
@@ -50,8 +102,8 @@ class BudgetError(InputError):
     words them as its own options.
     """
 
-    def __init__(self, message: str, ways: tuple[str, ...]) -> None:
-        super().__init__(message)
+    def __init__(self, message: str, ways: tuple[str, ...], param: str | None = None) -> None:
+        super().__init__(message, param)
         self.ways = ways
 
 
@@ -121,3 +173,267 @@ def check_rows(rows: int, fmt: Format, what: str = "the table", every_format: bo
         f"{what} has about {rows:,} rows; the {fmt.value} format prints at most {limit:,}",
         ("plain", "markdown", *(f.value for f in UNLIMITED)),
     )
+
+
+# --- the one check ------------------------------------------------------------------------------
+
+
+def row_cost(work: Work, fmt: Format) -> float:
+    """Microseconds of CPU for one row of ``work`` in ``fmt`` (its weight included).
+
+    >>> from scanconv.render.work import estimate
+    >>> wu, bresenham = (estimate("line", {"x1": 0, "y1": 0, "x2": 9, "y2": 1, "algo": a})
+    ...                  for a in ("wu", "bresenham"))
+    >>> row_cost(wu, Format.csv) > 5 * row_cost(bresenham, Format.csv)
+    True
+    """
+    costs = COSTS.get(work.key) or COSTS.get(work.key.split("/")[0]) or {}
+    us = costs.get(fmt.value, DEFAULT_COSTS.get(fmt.value, 100.0))
+    return max(us, MIN_COST) * work.weight
+
+
+def row_limit(work: Work, fmt: Format) -> int:
+    """The most rows of ``work``'s kind that ``fmt`` prints within the budget."""
+    limit = min(int(SECONDS * 1e6 / row_cost(work, fmt)), _memory_limit(work, fmt))
+    if not (work.key in LONG_TABLES and fmt in UNLIMITED):
+        limit = min(limit, ALL_ROWS)
+    return min(limit, TABLE_ROWS.get(fmt, limit))
+
+
+def _memory_limit(work: Work, fmt: Format) -> int:
+    """The most rows of ``work`` that ``fmt`` holds within :data:`MEMORY` (no limit: a
+    number beyond any table)."""
+    held = BYTES.get(work.key, {}).get(fmt.value, 0.0) * work.weight
+    if held and MEMORY / held < _held_rows(fmt):
+        return int(MEMORY / held)
+    return 2**62
+
+
+def _held_rows(fmt: Format) -> int:
+    """How many rows ``fmt`` holds at most (the html page steps through at most
+    :data:`~scanconv.render.stepper.MAX_STEPS`)."""
+    from .stepper import MAX_STEPS
+
+    return MAX_STEPS if fmt is Format.html else ALL_ROWS
+
+
+def check_work(name: str, arguments: Mapping[str, Any], fmt: Format | None) -> Work | None:
+    """Refuse, before any work, the answer of library function ``name`` for ``arguments``
+    when it is beyond the budget of ``fmt`` (``None``: of every format); return its estimated
+    :class:`~scanconv.render.work.Work` (``None``: not estimated, see
+    :data:`~scanconv.render.work.BOUNDED`).
+
+    >>> check_work("line", {"x1": 0, "y1": 0, "x2": 10**9, "y2": 1}, None)
+    Traceback (most recent call last):
+    ...
+    scanconv.render.budget.BudgetError: the table has about 1,000,000,001 rows; no format prints more than 2,000,000 (a minute of output)
+    >>> check_work("line", {"x1": 0, "y1": 0, "x2": 10**6, "y2": 1, "algo": "wu"}, Format.csv)
+    ... # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    scanconv.render.budget.BudgetError: the table has about 1,000,001 rows; line/wu in csv costs about ... us a row, so csv prints at most ... in 40 s
+    >>> check_work("line", {"x1": 0, "y1": 0, "x2": 10**6, "y2": 1}, Format.csv).rows
+    1000001
+    """
+    work = estimate(name, arguments)
+    if work is None:
+        return None
+    if work.kind == "matrix":
+        _check_matrix(work, fmt)
+        return work
+    if fmt is None:  # before anything is shown: refuse only what no format prints
+        fmt = max((f for f in Format if f is not Format.auto), key=lambda f: row_limit(work, f))
+    if work.rows > row_limit(work, fmt):
+        _refuse_rows(work, fmt)
+    return work
+
+
+def _check_matrix(work: Work, fmt: Format | None) -> None:
+    from ..algorithms.image_limits import MAX_CELLS
+
+    if fmt is None or work.size > MAX_CELLS:
+        return  # beyond the input limit: the function refuses it, naming that limit
+    try:
+        check_matrix(work.rows, work.cols or 1, fmt)
+    except BudgetError as err:
+        raise BudgetError(str(err), err.ways, work.param) from None
+
+
+def _refuse_rows(work: Work, fmt: Format) -> None:
+    """The refusal of ``work`` in ``fmt``: the all-format limit, the format's own, or time."""
+    try:
+        check_rows(work.rows, fmt, every_format=work.key not in LONG_TABLES)
+    except BudgetError as err:
+        ways = err.ways if err.ways == ("raster",) else _faster(work)
+        raise BudgetError(str(err), ways, work.param) from None
+    limit = row_limit(work, fmt)
+    if limit == _memory_limit(work, fmt):
+        held = BYTES[work.key][fmt.value] * work.weight
+        why = f"holds about {held:,.0f} bytes a row, so at most {limit:,} in {MEMORY // 10**6} MB"
+    else:
+        us = row_cost(work, fmt)
+        why = (
+            f"costs about {us:.0f} us a row, so {fmt.value} prints at most {limit:,} in {SECONDS} s"
+        )
+    raise BudgetError(
+        f"the table has about {work.rows:,} rows; {work.key} in {fmt.value} {why}",
+        _faster(work) or ("raster",),
+        work.param,
+    )
+
+
+def _faster(work: Work) -> tuple[str, ...]:
+    """The formats that print all of ``work`` within the budget, in the usual order."""
+    order = (Format.plain, Format.markdown, Format.csv, Format.json)
+    return tuple(f.value for f in order if row_limit(work, f) >= work.rows)
+
+
+def check_rows_in_memory(work: Work) -> None:
+    """Refuse a list of more than :data:`ROWS_IN_MEMORY` rows (``Answer.rows()``)."""
+    if work.size > ROWS_IN_MEMORY:
+        raise BudgetError(
+            f"the table has about {work.size:,} rows; at most {ROWS_IN_MEMORY:,} are listed in "
+            "memory (iterate over steps() instead)",
+            (),
+            work.param,
+        )
+
+
+# --- documents: every question, and their total -------------------------------------------------
+
+
+class _Ledger:
+    """The running total of a document's questions."""
+
+    def __init__(self) -> None:
+        self.rows, self.seconds, self.questions = 0, 0.0, 0
+
+
+_DOCUMENT: contextvars.ContextVar[_Ledger | None] = contextvars.ContextVar(
+    "scanconv_document", default=None
+)
+
+
+@contextlib.contextmanager
+def document() -> Iterator[None]:
+    """Count the questions checked by :func:`check_question` inside this block as one
+    document (a sheet, a practice set, an exam book), refusing the question that takes the
+    total beyond :data:`SHEET_ROWS` rows or :data:`SHEET_SECONDS` of work."""
+    token = _DOCUMENT.set(_Ledger())
+    try:
+        yield
+    finally:
+        _DOCUMENT.reset(token)
+
+
+def document_cost(work: Work) -> tuple[int, float]:
+    """Rows (cells of a matrix) and CPU seconds of ``work`` in the costliest document format."""
+    if work.kind == "matrix":
+        costs = COSTS.get("matrix", {})
+        us = max(costs.get(f.value, DEFAULT_COSTS[f.value]) for f in DOCUMENT)
+    else:
+        us = max(row_cost(work, f) for f in DOCUMENT)
+    return work.size, work.size * us / 1e6
+
+
+def check_question(name: str, arguments: Mapping[str, Any]) -> Work | None:
+    """Refuse a question of a document beyond the document's budget, alone or with the
+    questions before it in the same :func:`document` (its matrix also beyond the cells every
+    document format prints).
+
+    >>> with document():
+    ...     for _ in range(3):
+    ...         _ = check_question("line", {"x1": 0, "y1": 0, "x2": 99_999, "y2": 1})
+    Traceback (most recent call last):
+    ...
+    scanconv.render.budget.BudgetError: with the questions before it, the document has about 300,000 table rows; a document holds at most 200,000 (split the questions)
+    """
+    work = estimate(name, arguments)
+    if work is None:
+        return None
+    cells = min(MATRIX_CELLS.get(f, work.size) for f in DOCUMENT)
+    if work.kind == "matrix" and work.size > cells:
+        raise BudgetError(
+            f"a {work.rows} x {work.cols} matrix is {work.size:,} cells; a document prints at "
+            f"most {cells:,} (run it alone: answers stream)",
+            (),
+            work.param,
+        )
+    rows, seconds = document_cost(work)
+    _check_total(rows, seconds, "its answer has", work, "run it alone: answers stream")
+    ledger = _DOCUMENT.get()
+    if ledger is not None:
+        ledger.rows += rows
+        ledger.seconds += seconds
+        ledger.questions += 1
+        what = "with the questions before it, the document has"
+        _check_total(ledger.rows, ledger.seconds, what, work, "split the questions")
+    return work
+
+
+def _check_total(rows: int, seconds: float, what: str, work: Work, way: str) -> None:
+    if rows > SHEET_ROWS:
+        raise BudgetError(
+            f"{what} about {rows:,} table rows; a document holds at most {SHEET_ROWS:,} ({way})",
+            (),
+            work.param,
+        )
+    if seconds > SHEET_SECONDS:
+        raise BudgetError(
+            f"{what} about {seconds:.0f} s of work ({work.key}: {rows:,} rows); a document "
+            f"does at most {SHEET_SECONDS} s ({way})",
+            (),
+            work.param,
+        )
+
+
+# --- check --batch ------------------------------------------------------------------------------
+
+BATCH_FILES = 1000
+"""Most files one ``check --batch`` marks (a class, several times over)."""
+
+BATCH_SECONDS = 40
+"""Most CPU seconds of estimated marking of one batch."""
+
+MARK_FILE_US = 3000.0
+"""Microseconds to read and mark a file of a few rows (10,000 small files: 25 s)."""
+
+MARK_ROW_US = 150.0
+"""Microseconds a row of a student's table or of the question's, marked (all wrong, with the
+diagnosis: 40 files of 5,000 rows against 9,999 question rows took 82 s)."""
+
+
+def check_batch(sizes: Sequence[int], question: Solution | int) -> None:
+    """Refuse a batch of files (their sizes in bytes) beyond :data:`BATCH_FILES` or
+    :data:`BATCH_SECONDS` of marking against ``question`` (its Solution, whose rows are
+    counted up to :data:`~scanconv.answers.marking.MAX_QUESTION_ROWS`, or that count), before
+    any file is read. A file's rows are estimated from its size (a row is at least 8 bytes,
+    at most :data:`~scanconv.core.student_table.MAX_TABLE_ROWS`).
+
+    >>> check_batch([126_000] * 40, 9_999)
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: the folder holds 40 files: against a question of 9,999 rows they are about 90 s of marking; a batch does at most 40 s (mark the folder in parts)
+    """
+    from ..answers.marking import MAX_QUESTION_ROWS
+    from ..core.student_table import MAX_TABLE_ROWS
+
+    if len(sizes) > BATCH_FILES:
+        raise InputError(
+            f"the folder holds {len(sizes):,} files; a batch marks at most {BATCH_FILES:,} "
+            "(mark the folder in parts)",
+            "batch",
+        )
+    if isinstance(question, int):
+        q = question
+    else:
+        q = sum(1 for _ in itertools.islice(question.steps(), MAX_QUESTION_ROWS + 1))
+    rows = sum(min(MAX_TABLE_ROWS, size // 8 + 1) + q for size in sizes)
+    seconds = (len(sizes) * MARK_FILE_US + rows * MARK_ROW_US) / 1e6
+    if seconds > BATCH_SECONDS:
+        raise InputError(
+            f"the folder holds {len(sizes):,} files: against a question of {q:,} rows they "
+            f"are about {seconds:.0f} s of marking; a batch does at most {BATCH_SECONDS} s "
+            "(mark the folder in parts)",
+            "batch",
+        )

@@ -1,0 +1,361 @@
+"""The work of an answer, estimated from its arguments alone, and what a row of it costs.
+
+:func:`estimate` reads the arguments of a library function (:mod:`scanconv._api`, by its name
+and its parameter names) and returns the :class:`Work` of its answer: the rows of its step
+table (or the cells of its matrix), the method whose row cost applies and the parameter that
+makes it large. Every library function is either in :data:`ESTIMATES` or in :data:`BOUNDED`
+with the reason its answer is small whatever its arguments (``tests/test_budget_unified.py``
+walks every command and function). The estimates only need to be close and never much below
+(an ellipse's rows are counted from its region boundary); an argument the estimate cannot read
+is left to the function's own validation.
+
+:data:`COSTS` holds the CPU time of one row, in microseconds, per ``command/method`` and per
+format, measured by ``benchmarks/bench_budget.py`` (which prints this table again) on the
+project's shared 2-CPU machine under load; :mod:`scanconv.render.budget` turns them into limits.
+
+>>> estimate("line", {"x1": 0, "y1": 0, "x2": 10**6, "y2": 1, "algo": "wu"})
+Work(kind='rows', rows=1000001, cols=None, key='line/wu', param='x2', weight=1.0)
+>>> estimate("sample", {"size": "4096"}).cols
+4096
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Mapping
+from fractions import Fraction
+from typing import Any, NamedTuple
+
+from ..core.checks import InputError
+from ..core.numeric import COORD_LIMIT
+
+
+class Work(NamedTuple):
+    """The size of an answer: ``rows`` of a step table, or a ``rows`` x ``cols`` matrix."""
+
+    kind: str
+    """``"rows"`` or ``"matrix"``."""
+    rows: int
+    cols: int | None = None
+    key: str = ""
+    """The ``command/method`` of :data:`COSTS` whose row cost applies."""
+    param: str | None = None
+    """The parameter that makes the answer this large (for :class:`InputError`)."""
+    weight: float = 1.0
+    """How many measured rows one row is worth (control points, samples per pixel)."""
+
+    @property
+    def size(self) -> int:
+        """Rows, or cells of a matrix."""
+        return self.rows * (self.cols or 1)
+
+
+Args = Mapping[str, Any]
+
+
+class _Beyond(Exception):
+    """An argument beyond the function's own input limit: the function refuses it itself,
+    naming that limit (a better message than the budget's)."""
+
+
+def _within(value: float | Fraction, limit: int) -> None:
+    if abs(Fraction(value)) > limit:
+        raise _Beyond
+
+
+def _num(a: Args, name: str) -> Fraction:
+    """Argument ``name`` as an exact number within the magnitude limit (else InputError)."""
+    v = a[name]
+    value = Fraction(str(v)) if isinstance(v, (float, str)) else Fraction(v)
+    if abs(value) > COORD_LIMIT:
+        raise InputError(f"{name} = {v} is out of range (|value| <= {COORD_LIMIT:.0e})", name)
+    return value
+
+
+def _flat(values: Iterable[Any]) -> list[Any]:
+    """``[(x, y), ...]`` or ``[x, y, ...]`` as a flat list."""
+    out: list[Any] = []
+    for v in values:
+        if isinstance(v, (tuple, list)):
+            out.extend(v)
+        else:
+            out.append(v)
+    return out
+
+
+def _coords(a: Args, name: str) -> list[Fraction]:
+    flat = _flat(a[name])
+    return [_num({name: v}, name) for v in flat]
+
+
+def _choice(a: Args, name: str, default: str) -> str:
+    v = a.get(name)
+    return default if v is None else str(getattr(v, "value", v))
+
+
+def _line_rows(a: Args, names: tuple[str, str, str, str]) -> tuple[int, str]:
+    x1, y1, x2, y2 = (_num(a, k) for k in names)
+    dx, dy = abs(x2 - x1), abs(y2 - y1)
+    return math.ceil(max(dx, dy)) + 1, names[2] if dx >= dy else names[3]
+
+
+def _line(a: Args) -> Work:
+    rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    return Work("rows", rows, None, "line/" + _choice(a, "algo", "bresenham"), param)
+
+
+def _circle(a: Args) -> Work:
+    # one octant: x runs from 0 to r/sqrt(2)
+    from ..algorithms.circles import SDDA_MAX_RADIUS
+
+    rows = math.ceil(abs(_num(a, "r")) / math.sqrt(2)) + 1
+    method = _choice(a, "method", "midpoint")
+    if method == "symmetric-dda":
+        _within(_num(a, "r"), SDDA_MAX_RADIUS)
+    # the symmetric DDA's exact values gain about 2 bits a step: a row costs in proportion
+    # to the rows before it (r = 16383: 15 s and 1.4 GB as html)
+    weight = max(1.0, rows / 1000) if method == "symmetric-dda" else 1.0
+    return Work("rows", rows, None, "circle/" + method, "r", weight)
+
+
+def _ellipse(a: Args) -> Work:
+    # region 1 ends where the slope is -1, at x = rx^2 / sqrt(rx^2 + ry^2); region 2 has about
+    # ry^2 / sqrt(rx^2 + ry^2) steps (ellipse 20000 20000: 28,285 rows)
+    from ..algorithms.ellipses import MAX_AXIS
+
+    rx, ry = abs(float(_num(a, "rx"))), abs(float(_num(a, "ry")))
+    _within(max(rx, ry), MAX_AXIS)
+    h = math.hypot(rx, ry) or 1.0
+    rows = math.ceil((rx * rx + ry * ry) / h) + 2
+    return Work("rows", rows, None, "ellipse/midpoint", "rx" if rx >= ry else "ry")
+
+
+def _aa_line(a: Args) -> Work:
+    rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    if _choice(a, "method", "area") == "wu":  # two pixels a column, both ends a little more
+        return Work("rows", 2 * rows + 4, None, "antialias_line/wu", param)
+    x1, y1, x2, y2 = (_num(a, k) for k in ("x1", "y1", "x2", "y2"))
+    return _aa_cells(a, "antialias_line", param, abs(x2 - x1), abs(y2 - y1))
+
+
+def _aa_cells(a: Args, command: str, param: str, width: Fraction, height: Fraction) -> Work:
+    """Area sampling and supersampling: a row per pixel of the shape's box (the command
+    refuses a box beyond :data:`~scanconv.algorithms.coverage.MAX_AA_CELLS`); a row of N x N
+    supersampling costs N^2 samples (measured at N = 16)."""
+    from ..algorithms.coverage import MAX_AA_CELLS
+
+    method = _choice(a, "method", "area")
+    cells = min((math.ceil(width) + 2) * (math.ceil(height) + 2), MAX_AA_CELLS)
+    weight = 1.0
+    if method == "supersample":
+        n = int(_num(a, "samples")) if a.get("samples") is not None else 4
+        weight = max(n * n / 256, 1 / 16)
+    return Work("rows", cells, None, f"{command}/{method}", param, weight)
+
+
+def _aa_circle(a: Args) -> Work:
+    d = 2 * abs(_num(a, "r"))
+    return _aa_cells(a, "antialias_circle", "r", d, d)
+
+
+def _aa_polygon(a: Args) -> Work:
+    v = _coords(a, "vertices")
+    xs, ys = v[0::2], v[1::2]
+    return _aa_cells(a, "antialias_polygon", "vertices", max(xs) - min(xs), max(ys) - min(ys))
+
+
+def _pipeline_line(a: Args) -> Work:
+    # the line is clipped and mapped into the viewport: at most its longer side, plus one
+    vx0, vy0, vx1, vy1 = _coords(a, "viewport")[:4]
+    rows = math.ceil(max(abs(vx1 - vx0), abs(vy1 - vy0))) + 2
+    return Work("rows", rows, None, "pipeline_line/" + _choice(a, "algo", "bresenham"), "viewport")
+
+
+def _pipeline_polygon(a: Args) -> Work:
+    # filled: one row per scan line of the viewport
+    vy = _coords(a, "viewport")[1:4:2]
+    return Work("rows", math.ceil(abs(vy[1] - vy[0])) + 2, None, "polygon/scan-line", "viewport")
+
+
+def _samples(key: str, default: int = 16, points: str | None = None) -> Callable[[Args], Work]:
+    def rows(a: Args) -> Work:
+        from ..algorithms.curve_limits import MAX_SAMPLES
+
+        n = a.get("samples")
+        count = default if n is None else int(_num(a, "samples"))
+        _within(count, MAX_SAMPLES)
+        weight = 1.0
+        if points is not None and a.get(points) is not None:  # a row has a weight per point
+            weight = max(1.0, len(_flat(a[points])) / 8)
+        return Work("rows", count + 1, None, key, "samples", weight)
+
+    return rows
+
+
+def _parametric_line(a: Args) -> Work:
+    if a.get("samples") is None:
+        rows, param = _line_rows(a, ("x0", "y0", "x1", "y1"))
+        return Work("rows", rows, None, "parametric", param)
+    return _samples("parametric")(a)
+
+
+def _polygon(a: Args) -> Work:
+    # one row per scan line of the vertices' y extent (and a few for the edge table)
+    from ..algorithms.polygon import MAX_FILL_CELLS
+
+    v = _coords(a, "vertices")
+    xs, ys = v[0::2], v[1::2]
+    _within((max(xs) - min(xs) + 1) * (max(ys) - min(ys) + 1), MAX_FILL_CELLS)
+    return Work("rows", math.ceil(max(ys) - min(ys)) + 1, None, "polygon/scan-line", "vertices")
+
+
+def _quantize(a: Args) -> Work:
+    from ..algorithms.image_limits import MAX_BITS
+
+    bits = int(_num(a, "bits"))
+    _within(bits, MAX_BITS)
+    ranged = "/range" if a.get("value_range") else ""
+    return Work("rows", 1 << bits if 0 < bits <= 64 else 0, None, "quantize" + ranged, "bits")
+
+
+def _matrix(default: str) -> Callable[[Args], Work]:
+    def cells(a: Args) -> Work:
+        from ..algorithms.image_limits import parse_size
+
+        size = a.get("size") or default
+        if isinstance(size, (tuple, list)):
+            m, n = (int(v) for v in size)
+        else:
+            m, n = parse_size(str(size))
+        return Work("matrix", m, n, "matrix", "size")
+
+    return cells
+
+
+def _compare_line(a: Args) -> Work:
+    from ..answers.compare import MAX_LENGTH
+
+    rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    _within(rows - 1, MAX_LENGTH)
+    return Work("rows", rows, None, "compare_lines", param)
+
+
+ESTIMATES: dict[str, Callable[[Args], Work]] = {
+    "line": _line,
+    "circle": _circle,
+    "ellipse": _ellipse,
+    "antialias_line": _aa_line,
+    "antialias_circle": _aa_circle,
+    "antialias_polygon": _aa_polygon,
+    "pipeline_line": _pipeline_line,
+    "pipeline_polygon": _pipeline_polygon,
+    "compare_lines": _compare_line,
+    "quantize": _quantize,
+    "polygon": _polygon,
+    "sample": _matrix("8"),
+    "ramp": _matrix("8"),
+    "parametric_circle": _samples("parametric"),
+    "parametric_ellipse": _samples("parametric"),
+    "parametric_parabola": _samples("parametric"),
+    "parametric_custom": _samples("parametric"),
+    "parametric_line": _parametric_line,
+    "bezier": _samples("curve", points="points"),
+    "bspline": _samples("curve", points="points"),
+    "bspline_basis": _samples("curve", points="points"),
+    "continuity": _samples("curve", points="first"),
+    "local_control": _samples("curve", points="points"),
+}
+"""How the size of each library function's answer is estimated, by the function's name."""
+
+BOUNDED: dict[str, str] = {
+    "bezier_at": "de Casteljau's levels: at most algorithms.curve_limits.MAX_POINTS rows",
+    "bspline_at": "one evaluation: at most algorithms.curve_limits.MAX_POINTS rows",
+    "clip_line": "a row per clipping step of one line: a handful of rows",
+    "clip_polygon": "four passes over at most answers.clip_polygon.MAX_VERTICES edges",
+    "compare_curves": "a fixed comparison of the notes' curves",
+    "compare_circles": "an octant of r <= answers.compare.MAX_RADIUS = 2000: at most 1,415 rows",
+    "transform": "at most answers.shapes.MAX_POINTS points and answers.transform.MAX_TRANSFORMS",
+    "viewport": "at most answers.shapes.MAX_POINTS points",
+    "fill": "a row per pixel taken, at most algorithms.seedfill.MAX_SEED_CELLS = 10,000",
+    "storage": "closed-form arithmetic on exact integers",
+    "color": "one conversion in one table",
+    "theory": "a fixed text of the notes",
+    "check": "marking: bounded by core.student_table and answers.marking limits",
+}
+"""The library functions whose answer is small whatever their arguments, and why."""
+
+# fmt: off
+COSTS: dict[str, dict[str, float]] = {
+    "line/basic": {"csv": 16.2, "json": 37.4, "plain": 53.5, "markdown": 41.7, "latex": 61.6, "html": 107.3, "rich": 695.7},
+    "line/dda": {"csv": 20.7, "json": 38.7, "plain": 68.1, "markdown": 64.6, "latex": 56, "html": 178.5, "rich": 1072.5},
+    "line/bresenham": {"csv": 9.8, "json": 17.5, "plain": 19.5, "markdown": 24, "latex": 15.4, "html": 87.3, "rich": 814.8},
+    "line/midpoint": {"csv": 9.8, "json": 17.5, "plain": 19.5, "markdown": 24, "latex": 24.7, "html": 100.5, "rich": 839.9},
+    "line/wu": {"csv": 63.3, "json": 79.6, "plain": 102, "markdown": 105.9, "latex": 118.4, "html": 303, "rich": 1339},
+    "circle/midpoint": {"csv": 8.7, "json": 66, "plain": 62.2, "markdown": 85.6, "latex": 126.7, "html": 133.5, "rich": 3444.2},
+    "circle/bresenham": {"csv": 7.5, "json": 51.7, "plain": 61.9, "markdown": 104.7, "latex": 86.8, "html": 75.4, "rich": 2330.4},
+    "circle/polynomial": {"csv": 10.6, "json": 73.7, "plain": 78.1, "markdown": 107.9, "latex": 125.4, "html": 124.5, "rich": 3062.2},
+    "circle/general": {"csv": 9.1, "json": 67.4, "plain": 60.9, "markdown": 100.5, "latex": 87.7, "html": 136.2, "rich": 2457.6},
+    "circle/trig": {"csv": 24, "json": 81.4, "plain": 123.9, "markdown": 161.5, "latex": 167.3, "html": 214.4, "rich": 3153.1},
+    "circle/symmetric-dda": {"csv": 66.9, "json": 162.7, "plain": 256.9, "markdown": 350, "latex": 352, "html": 304, "rich": 2940},
+    "ellipse/midpoint": {"csv": 14, "json": 58.3, "plain": 59, "markdown": 45.5, "latex": 50.4, "html": 192.9, "rich": 1753.4},
+    "antialias_line/wu": {"csv": 26.9, "json": 35.2, "plain": 38.8, "markdown": 41.9, "latex": 37.7, "html": 120.1, "rich": 558},
+    "antialias_line/area": {"csv": 11.2, "json": 9.9, "plain": 8.7, "markdown": 10.6, "latex": 5.1, "html": 17.8, "rich": 75.2},
+    "antialias_line/supersample": {"csv": 31.7, "json": 91.7, "plain": 127.8, "markdown": 58.8, "latex": 198, "html": 198, "rich": 3960},
+    "antialias_circle/area": {"csv": 7.8, "json": 21.7, "plain": 28.6, "markdown": 23.5, "latex": 22.6, "html": 23.3, "rich": 155.9},
+    "pipeline_line/basic": {"csv": 13.5, "json": 47.3, "plain": 48.8, "markdown": 52.9, "latex": 45.8, "html": 112.2, "rich": 721.1},
+    "pipeline_line/dda": {"csv": 14.6, "json": 53.4, "plain": 45.9, "markdown": 41.8, "latex": 47.2, "html": 167.6, "rich": 792.6},
+    "pipeline_line/bresenham": {"csv": 6.7, "json": 20.8, "plain": 13.7, "markdown": 16.1, "latex": 19.5, "html": 71.6, "rich": 874.4},
+    "polygon/scan-line": {"csv": 0.5, "json": 192.3, "plain": 258.7, "markdown": 235.5, "latex": 444.4, "html": 83.2, "rich": 1560.5},
+    "quantize": {"csv": 0.8, "json": 0.7, "plain": 7.7, "markdown": 19.5, "latex": 19.5, "html": 19.5, "rich": 517.5},
+    "quantize/range": {"csv": 19, "json": 22.2, "plain": 33.5, "markdown": 41.2, "latex": 47.6, "html": 4.4, "rich": 1025.6},
+    "parametric": {"csv": 50.1, "json": 78.2, "plain": 124.9, "markdown": 100, "latex": 108.5, "html": 167.9, "rich": 1005.3},
+    "curve": {"csv": 52.9, "json": 79.9, "plain": 109.3, "markdown": 109.3, "latex": 0.1, "html": 109.3, "rich": 1142.7},
+    "compare_lines": {"csv": 132.3, "json": 158.2, "plain": 146.6, "markdown": 193.6, "latex": 144.3, "html": 197, "rich": 931},
+    "matrix": {"csv": 1.7, "json": 0.3, "plain": 1.8, "markdown": 14.9, "latex": 22.9, "html": 2.5, "rich": 143.5},
+    "antialias_circle/supersample": {"csv": 3323.9, "json": 3015.6, "plain": 3134.8, "markdown": 3131.6, "latex": 3697.6, "html": 2484.7, "rich": 4165.4},
+    "antialias_polygon/area": {"csv": 31.5, "json": 13.3, "plain": 41.9, "markdown": 26.8, "latex": 41.8, "html": 49.3, "rich": 305},
+    "antialias_polygon/supersample": {"csv": 140.9, "json": 48, "plain": 63.3, "markdown": 20.7, "latex": 61.2, "html": 85.8, "rich": 562.9},
+}
+# fmt: on
+"""CPU microseconds of one row (or matrix cell), per ``command/method`` and format: measured by
+``benchmarks/bench_budget.py`` on the project's shared 2-CPU machine under load (the largest
+of two runs where there were two; a run that failed, such as a curve beyond its weight limit in
+the slower formats, takes the costliest text format's value). A polygon's csv is its edge
+table alone (0 us measured: 0.5). The midpoint line, measured in one run, takes the larger of
+its and Bresenham's cost (the same walk)."""
+
+
+BYTES: dict[str, dict[str, float]] = {
+    "circle/symmetric-dda": {"html": 20_000.0},
+}
+"""Bytes held in memory per row of weight 1, where a format holds its rows (the html page,
+up to :data:`~scanconv.render.stepper.MAX_STEPS` of them): measured as the peak resident
+size over the rows (``benchmarks/bench_budget.py`` prints the peaks). Other rows: about
+3 KB in html (a line's 20,000 rows: 63 MB), and nothing held in the streamed formats."""
+
+
+def estimate(name: str, arguments: Args) -> Work | None:
+    """The size of the answer of library function ``name``, or ``None`` if it is not
+    estimated (a function of :data:`BOUNDED`, or arguments the function refuses itself).
+    A number beyond the magnitude limit is an :class:`InputError` naming its parameter.
+
+    >>> estimate("ellipse", {"rx": 20000, "ry": 20000}).rows
+    28287
+    >>> estimate("line", {"x1": "junk"}) is None
+    True
+    >>> estimate("line", {"x1": 0, "y1": 0, "x2": 10**12, "y2": 1})
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: x2 = 1000000000000 is out of range (|value| <= 1e+09)
+    """
+    how = ESTIMATES.get(name)
+    if how is None:
+        return None
+    try:
+        return how(arguments)
+    except InputError as err:
+        if "out of range" in str(err):
+            raise
+        return None
+    except (_Beyond, ArithmeticError, KeyError, TypeError, ValueError, IndexError):
+        return None  # the function refuses it itself
