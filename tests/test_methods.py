@@ -25,7 +25,7 @@ def test_every_piece_is_there_or_explained(record: Method) -> None:
             assert record.reason(piece) is None, f"{record.key}: {piece} is there and excused"
             assert callable(record.load(piece)), f"{record.key}: {piece} = {ref} is not callable"
     assert record.answer is not None
-    assert record.row_cost > 0
+    assert all(us > 0 for _, us in record.costs)
     assert record.title
 
 
@@ -108,3 +108,16 @@ def test_every_command_has_method_records_or_is_a_document() -> None:
         has = bool(methods_of(command))
         assert has != (command in DOCUMENTS), command
     assert set(DOCUMENTS) <= set(TOPIC_OF)
+
+
+def test_every_step_table_method_has_its_row_costs_for_the_budget() -> None:
+    """The line, circle and ellipse methods (tables as long as the input makes them) carry
+    a measured cost per row in every format, and the work budget reads them from the record."""
+    from scanconv.render import Format
+    from scanconv.render.work import COSTS
+
+    formats = {f.value for f in Format if f.value != "auto"}
+    for record in RECORDS:
+        if record.command in ("line", "circle", "ellipse"):
+            assert {f for f, _ in record.costs} == formats, record.key
+            assert COSTS[record.key] == dict(record.costs)

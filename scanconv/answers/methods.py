@@ -9,8 +9,8 @@ use by :meth:`Method.load`, so that reading the table costs no start-up time):
 - ``derivation`` and ``pseudocode``: the ``--derive`` and ``--algorithm`` pieces;
 - ``model``: the marking model (follow-through marking from any state);
 - ``raster``: the bulk rasterizer of :mod:`scanconv.raster`;
-- ``row_cost``: the relative CPU cost of one table row (Bresenham's line is 1), which the work
-  budget multiplies by the number of rows;
+- ``costs``: the CPU time of one table row in each format, which the work budget multiplies
+  by the number of rows;
 - ``knobs``: the conventions that apply (read from
   :data:`scanconv.algorithms.conventions.KNOBS`, where each knob lists its methods).
 
@@ -60,7 +60,11 @@ class Method(NamedTuple):
     pseudocode: str | None = None
     model: str | None = None
     raster: str | None = None
-    row_cost: float = 1.0
+    costs: tuple[tuple[str, float], ...] = ()
+    """CPU microseconds of one table row per output format (``csv``, ``json``, ``plain``,
+    ``markdown``, ``latex``, ``html``, ``rich``), measured by ``benchmarks/bench_budget.py``;
+    the work budget (:mod:`scanconv.render.work`) multiplies them by the rows. Empty: the
+    budget costs the command as a whole (its function's estimate)."""
     missing: tuple[tuple[str, str], ...] = ()
     """``(piece, reason)`` for every piece that is ``None``."""
     short: str = ""
@@ -110,7 +114,7 @@ _LINE = (
         _A + "theory:basic_code",
         None,
         _G + "raster:line",
-        1.2,
+        (),
         (("model", _NO_MODEL),),
         "basic",
     ),
@@ -124,7 +128,7 @@ _LINE = (
         _A + "theory:dda_code",
         _A + "models:DDALine",
         _G + "raster:line",
-        1.2,
+        (),
         (),
         "DDA",
     ),
@@ -138,7 +142,7 @@ _LINE = (
         _A + "theory:bresenham_line_code",
         _A + "models:BresenhamLine",
         _G + "raster:line",
-        1.0,
+        (),
         (),
         "Bresenham",
     ),
@@ -152,7 +156,7 @@ _LINE = (
         None,
         _A + "models:BresenhamLine",
         None,
-        1.0,
+        (),
         (
             ("pseudocode", "Bresenham's loop with d for p (the bresenham method's pseudocode)"),
             ("raster", "raster.line's bresenham gives the same pixels (the default tie)"),
@@ -168,7 +172,7 @@ _LINE = (
         None,
         None,
         "scanconv.raster:line_aa",
-        10.0,
+        (),
         (
             ("derivation", "the notes give Wu's line without a derivation"),
             ("pseudocode", "the notes give Wu's line without pseudocode"),
@@ -190,7 +194,6 @@ _CIRCLE_MODELS = {
     "bresenham": "BresenhamCircle",
     "general": "GeneralCircle",
 }
-_CIRCLE_COSTS = {"symmetric-dda": 6.0, "trig": 3.0, "polynomial": 2.0}
 _CIRCLE_SHORT = {
     "midpoint": "midpoint",
     "bresenham": "Bresenham",
@@ -223,7 +226,7 @@ def _circle(name: str) -> Method:
         _A + "theory:circle_code",
         None if model is None else _A + f"models:{model}",
         _G + "raster:circle" if name == "midpoint" else None,
-        _CIRCLE_COSTS.get(name, 1.0),
+        (),
         (
             *missing,
             *(() if name == "midpoint" else (("raster", "raster.circle is the midpoint circle"),)),
@@ -245,7 +248,7 @@ _ELLIPSE = (
         _A + "theory:ellipse_code",
         _A + "models:MidpointEllipse",
         _G + "raster:ellipse",
-        1.5,
+        (),
     ),
 )
 
@@ -258,7 +261,6 @@ def _plain(
     generator: str | None,
     *,
     raster: str | None = None,
-    row_cost: float = 1.0,
     no_generator: str = "",
 ) -> Method:
     """A method with no derivation, pseudocode or marking model (each said why)."""
@@ -281,7 +283,7 @@ def _plain(
         None,
         None,
         raster,
-        row_cost,
+        (),
         tuple(missing),
     )
 
@@ -292,30 +294,30 @@ _CURVES = (
     _plain("bezier", "de-casteljau", "de Casteljau's construction",
            _A + "bezier:bezier_at_solution", _G + "bezier:de_casteljau"),
     _plain("bspline", "cox-de-boor", "B-spline curve (Cox-de Boor)",
-           _A + "bspline:bspline_solution", _G + "bspline:bspline", row_cost=3.0),
+           _A + "bspline:bspline_solution", _G + "bspline:bspline"),
     _plain("continuity", "bezier-joins", "continuity of joined Bezier segments",
            _A + "continuity:continuity_solution", _G + "bezier:bezier"),
     _plain("local-control", "bezier-vs-bspline", "local control: Bezier against B-spline",
-           _A + "local_control:local_control_solution", _G + "bspline:bspline", row_cost=3.0),
+           _A + "local_control:local_control_solution", _G + "bspline:bspline"),
     *(
         _plain("parametric", kind, f"parametric {kind}", _A + "parametric:parametric_solution",
-               _G + "parametric:parametric", row_cost=2.0)
+               _G + "parametric:parametric")
         for kind in ("line", "circle", "ellipse", "parabola", "custom")
     ),
 )  # fmt: skip
 
 _PROCESS = (
     _plain("polygon", "scan-line", "scan-line polygon fill", _A + "polygon:polygon_solution",
-           _G + "polygon:scanline_fill", raster="scanconv.raster:polygon", row_cost=2.0),
+           _G + "polygon:scanline_fill", raster="scanconv.raster:polygon"),
     _plain("fill", "boundary", "boundary fill", _A + "fill:seed_fill_solution",
            _G + "seedfill:seed_fill"),
     _plain("fill", "flood", "flood fill", _A + "fill:seed_fill_solution", _G + "seedfill:seed_fill"),
     _plain("antialias", "area", "area sampling", _A + "antialias:antialias_solution",
-           _G + "coverage:area_coverage", row_cost=4.0),
+           _G + "coverage:area_coverage"),
     _plain("antialias", "supersample", "supersampling", _A + "antialias:antialias_solution",
-           _G + "coverage:supersample_coverage", row_cost=4.0),
+           _G + "coverage:supersample_coverage"),
     _plain("antialias", "wu", "Xiaolin Wu's anti-aliased line", _A + "antialias:antialias_solution",
-           _G + "wu:wu", raster="scanconv.raster:line_aa", row_cost=10.0),
+           _G + "wu:wu", raster="scanconv.raster:line_aa"),
     _plain("clip", "cohen-sutherland", "Cohen-Sutherland line clipping",
            _A + "clip:clip_line_solution", _G + "clipping:cohen_sutherland"),
     _plain("clip", "liang-barsky", "Liang-Barsky line clipping", _A + "clip:clip_line_solution",
@@ -334,10 +336,10 @@ _PROCESS = (
     _plain("viewport", "window-to-viewport", "window-to-viewport mapping",
            _A + "viewport:viewport_solution", _G + "transform:map_to_viewport"),
     _plain("pipeline", "line", "the scan-conversion process for a line",
-           _A + "pipeline:pipeline_line_solution", None, row_cost=1.5,
+           _A + "pipeline:pipeline_line_solution", None,
            no_generator="clips, maps and then runs the line's own method"),
     _plain("pipeline", "polygon", "the scan-conversion process for a polygon",
-           _A + "pipeline:pipeline_polygon_solution", None, row_cost=2.0,
+           _A + "pipeline:pipeline_polygon_solution", None,
            no_generator="clips, maps and then fills with the polygon's own method"),
 )  # fmt: skip
 
@@ -363,7 +365,7 @@ _DITHER = (
     _plain("dither", "ordered", "ordered dither (Bayer matrix)", _A + "dither:ordered_solution",
            _G + "dither:ordered"),
     _plain("dither", "floyd-steinberg", "Floyd-Steinberg error diffusion",
-           _A + "dither:diffusion_solution", _G + "dither:error_diffusion", row_cost=2.0),
+           _A + "dither:diffusion_solution", _G + "dither:error_diffusion"),
     _plain("dither", "pattern", "halftone patterns", _A + "dither:pattern_solution", None,
            no_generator="one pattern per level, from the Bayer matrix"),
 )  # fmt: skip
@@ -399,8 +401,34 @@ _CHARACTERS = (
            no_generator="arithmetic, worked in one pass"),
 )  # fmt: skip
 
+# fmt: off
+_COSTS: dict[str, dict[str, float]] = {
+    "line/basic": {"csv": 16.2, "json": 37.4, "plain": 53.5, "markdown": 41.7, "latex": 61.6, "html": 107.3, "rich": 695.7},
+    "line/dda": {"csv": 20.7, "json": 38.7, "plain": 68.1, "markdown": 64.6, "latex": 56, "html": 178.5, "rich": 1072.5},
+    "line/bresenham": {"csv": 9.8, "json": 17.5, "plain": 19.5, "markdown": 24, "latex": 15.4, "html": 87.3, "rich": 814.8},
+    "line/midpoint": {"csv": 9.8, "json": 17.5, "plain": 19.5, "markdown": 24, "latex": 24.7, "html": 100.5, "rich": 839.9},
+    "line/wu": {"csv": 63.3, "json": 79.6, "plain": 102, "markdown": 105.9, "latex": 118.4, "html": 303, "rich": 1339},
+    "circle/midpoint": {"csv": 8.7, "json": 66, "plain": 62.2, "markdown": 85.6, "latex": 126.7, "html": 133.5, "rich": 3444.2},
+    "circle/bresenham": {"csv": 7.5, "json": 51.7, "plain": 61.9, "markdown": 104.7, "latex": 86.8, "html": 75.4, "rich": 2330.4},
+    "circle/polynomial": {"csv": 10.6, "json": 73.7, "plain": 78.1, "markdown": 107.9, "latex": 125.4, "html": 124.5, "rich": 3062.2},
+    "circle/general": {"csv": 9.1, "json": 67.4, "plain": 60.9, "markdown": 100.5, "latex": 87.7, "html": 136.2, "rich": 2457.6},
+    "circle/trig": {"csv": 24, "json": 81.4, "plain": 123.9, "markdown": 161.5, "latex": 167.3, "html": 214.4, "rich": 3153.1},
+    "circle/symmetric-dda": {"csv": 66.9, "json": 162.7, "plain": 256.9, "markdown": 350, "latex": 352, "html": 304, "rich": 2940},
+    "ellipse/midpoint": {"csv": 14, "json": 58.3, "plain": 59, "markdown": 45.5, "latex": 50.4, "html": 192.9, "rich": 1753.4},
+    "polygon/scan-line": {"csv": 0.5, "json": 192.3, "plain": 258.7, "markdown": 235.5, "latex": 444.4, "html": 83.2, "rich": 1560.5},
+}
+# fmt: on
+"""Each method's measured row costs (see :attr:`Method.costs`), in microseconds: the largest
+of two runs of ``benchmarks/bench_budget.py`` on the project's shared 2-CPU machine under
+load; the midpoint line takes the larger of its and Bresenham's (the same walk)."""
+
+
+def _with_costs(m: Method) -> Method:
+    return m._replace(costs=tuple(_COSTS[m.key].items())) if m.key in _COSTS else m
+
+
 METHODS: dict[str, Method] = {
-    m.key: m
+    m.key: _with_costs(m)
     for m in (
         *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE,
         *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS,

@@ -26,6 +26,7 @@ from collections.abc import Callable, Iterable, Mapping
 from fractions import Fraction
 from typing import Any, NamedTuple
 
+from ..answers.methods import METHODS
 from ..core.checks import InputError
 from ..core.numeric import COORD_LIMIT
 
@@ -285,19 +286,7 @@ BOUNDED: dict[str, str] = {
 """The library functions whose answer is small whatever their arguments, and why."""
 
 # fmt: off
-COSTS: dict[str, dict[str, float]] = {
-    "line/basic": {"csv": 16.2, "json": 37.4, "plain": 53.5, "markdown": 41.7, "latex": 61.6, "html": 107.3, "rich": 695.7},
-    "line/dda": {"csv": 20.7, "json": 38.7, "plain": 68.1, "markdown": 64.6, "latex": 56, "html": 178.5, "rich": 1072.5},
-    "line/bresenham": {"csv": 9.8, "json": 17.5, "plain": 19.5, "markdown": 24, "latex": 15.4, "html": 87.3, "rich": 814.8},
-    "line/midpoint": {"csv": 9.8, "json": 17.5, "plain": 19.5, "markdown": 24, "latex": 24.7, "html": 100.5, "rich": 839.9},
-    "line/wu": {"csv": 63.3, "json": 79.6, "plain": 102, "markdown": 105.9, "latex": 118.4, "html": 303, "rich": 1339},
-    "circle/midpoint": {"csv": 8.7, "json": 66, "plain": 62.2, "markdown": 85.6, "latex": 126.7, "html": 133.5, "rich": 3444.2},
-    "circle/bresenham": {"csv": 7.5, "json": 51.7, "plain": 61.9, "markdown": 104.7, "latex": 86.8, "html": 75.4, "rich": 2330.4},
-    "circle/polynomial": {"csv": 10.6, "json": 73.7, "plain": 78.1, "markdown": 107.9, "latex": 125.4, "html": 124.5, "rich": 3062.2},
-    "circle/general": {"csv": 9.1, "json": 67.4, "plain": 60.9, "markdown": 100.5, "latex": 87.7, "html": 136.2, "rich": 2457.6},
-    "circle/trig": {"csv": 24, "json": 81.4, "plain": 123.9, "markdown": 161.5, "latex": 167.3, "html": 214.4, "rich": 3153.1},
-    "circle/symmetric-dda": {"csv": 66.9, "json": 162.7, "plain": 256.9, "markdown": 350, "latex": 352, "html": 304, "rich": 2940},
-    "ellipse/midpoint": {"csv": 14, "json": 58.3, "plain": 59, "markdown": 45.5, "latex": 50.4, "html": 192.9, "rich": 1753.4},
+_OTHER_COSTS: dict[str, dict[str, float]] = {
     "antialias_line/wu": {"csv": 26.9, "json": 35.2, "plain": 38.8, "markdown": 41.9, "latex": 37.7, "html": 120.1, "rich": 558},
     "antialias_line/area": {"csv": 11.2, "json": 9.9, "plain": 8.7, "markdown": 10.6, "latex": 5.1, "html": 17.8, "rich": 75.2},
     "antialias_line/supersample": {"csv": 31.7, "json": 91.7, "plain": 127.8, "markdown": 58.8, "latex": 198, "html": 198, "rich": 3960},
@@ -305,7 +294,6 @@ COSTS: dict[str, dict[str, float]] = {
     "pipeline_line/basic": {"csv": 13.5, "json": 47.3, "plain": 48.8, "markdown": 52.9, "latex": 45.8, "html": 112.2, "rich": 721.1},
     "pipeline_line/dda": {"csv": 14.6, "json": 53.4, "plain": 45.9, "markdown": 41.8, "latex": 47.2, "html": 167.6, "rich": 792.6},
     "pipeline_line/bresenham": {"csv": 6.7, "json": 20.8, "plain": 13.7, "markdown": 16.1, "latex": 19.5, "html": 71.6, "rich": 874.4},
-    "polygon/scan-line": {"csv": 0.5, "json": 192.3, "plain": 258.7, "markdown": 235.5, "latex": 444.4, "html": 83.2, "rich": 1560.5},
     "quantize": {"csv": 0.8, "json": 0.7, "plain": 7.7, "markdown": 19.5, "latex": 19.5, "html": 19.5, "rich": 517.5},
     "quantize/range": {"csv": 19, "json": 22.2, "plain": 33.5, "markdown": 41.2, "latex": 47.6, "html": 4.4, "rich": 1025.6},
     "parametric": {"csv": 50.1, "json": 78.2, "plain": 124.9, "markdown": 100, "latex": 108.5, "html": 167.9, "rich": 1005.3},
@@ -317,6 +305,10 @@ COSTS: dict[str, dict[str, float]] = {
     "antialias_polygon/supersample": {"csv": 140.9, "json": 48, "plain": 63.3, "markdown": 20.7, "latex": 61.2, "html": 85.8, "rich": 562.9},
 }
 # fmt: on
+COSTS: dict[str, dict[str, float]] = {
+    **{m.key: dict(m.costs) for m in METHODS.values() if m.costs},
+    **_OTHER_COSTS,
+}
 """CPU microseconds of one row (or matrix cell), per ``command/method`` and format: measured by
 ``benchmarks/bench_budget.py`` on the project's shared 2-CPU machine under load (the largest
 of two runs where there were two; a run that failed, such as a curve beyond its weight limit in
