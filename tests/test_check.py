@@ -497,7 +497,8 @@ def test_a_batch_goes_to_stdout_and_exits_0_whatever_the_marks(tmp_path):
     assert r.out.splitlines()[1].startswith("a.csv,0,8,")
 
 
-def test_an_unreadable_file_stops_the_batch_with_its_name_and_line(tmp_path):
+def test_an_unreadable_file_is_a_row_of_the_sheet_with_its_name_and_line(tmp_path):
+    """One bad file no longer stops the class: it gets a row saying why it was not marked."""
     folder = tmp_path / "class"
     folder.mkdir()
     shutil.copy(DATA / "slip.csv", folder / "a.csv")
@@ -505,8 +506,10 @@ def test_an_unreadable_file_stops_the_batch_with_its_name_and_line(tmp_path):
     out = tmp_path / "scores.csv"
     out.write_text("keep")
     r = run("check", "--batch", str(folder), "-o", str(out), "--", *LINE)
-    assert_refused(r, "b.csv, line 3")
-    assert out.read_text() == "keep"
+    assert r.code == 0 and r.err == "", r.err
+    rows = {row[0]: row for row in csv.reader(io.StringIO(out.read_text()))}
+    assert rows["a.csv"][1:3] == ["7", "8"]
+    assert rows["b.csv"][1:3] == ["", ""] and "b.csv, line 3" in rows["b.csv"][3]
     assert_refused(run("check", "--batch", str(tmp_path / "none"), "--", *LINE), "none")
 
 

@@ -218,7 +218,9 @@ def marking_solution(marking: Marking, solution: Solution, name: str, question: 
 
 
 def batch_solution(
-    results: Sequence[tuple[str, int, int, str, str]], solution: Solution, question: str
+    results: Sequence[tuple[str, int | None, int | None, str, str]],
+    solution: Solution,
+    question: str,
 ) -> Solution:
     """The score sheet of a folder as a Solution for the text formats: a table of names and
     scores, each file's first error and diagnosis as a note (CSV and JSON have their own

@@ -19,7 +19,7 @@ from ..render import Format
 from .application import app
 from .budget import check_question
 from .options import BriefOpt, ExactOpt, FormatOpt, OutputOpt
-from .output import Output, emit, fail, format_for_file, write_atomic
+from .output import Output, check_paths, emit, fail, format_for_file, write_atomic
 
 #: Output options written after the question still belong to ``check`` (the question's own
 #: answer is never written): ``check a.csv -- line 2 2 10 6 -f md`` is markdown.
@@ -106,6 +106,7 @@ def check(
     except ValueError:
         fail(f"--format: {own['fmt']!r} is not one of {', '.join(f.value for f in Format)}")
     output = Path(own["output"]) if "output" in own else output
+    check_paths([("ANSWER", answer), ("--batch", batch)], [("--output", output)])
     brief = own.get("brief", brief)
     exact = own.get("exact", exact)
     from ..answers.marking import mark, marking_solution
@@ -125,6 +126,36 @@ def check(
     emit(result, Output(fmt=fmt, output=output, brief=brief, exact=exact))
 
 
+def _regular(path: Path) -> bool:
+    """A regular file of the folder itself: a link is never followed out of it."""
+    return not path.is_symlink() and path.is_file()
+
+
+def _shown(name: str) -> str:
+    """A file name as a score sheet shows it: bytes that are not UTF-8, control and bidi
+    characters each shown as U+FFFD (a name never moves the terminal's cursor or reorders
+    the text), so every format can write it."""
+    text = name.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
+    return "".join(c if c.isprintable() else "\ufffd" for c in text)
+
+
+def _mark_one(
+    path: Path, solution: Solution, mark: Any, read_table: Any
+) -> tuple[str, int | None, int | None, str, str]:
+    """One file's row of the score sheet; a file that cannot be marked gets a row saying why
+    (the rest of the class is still marked)."""
+    name = _shown(path.name)
+    if not _regular(path):
+        why = "a link (links are not followed)" if path.is_symlink() else "not a regular file"
+        return (name, None, None, f"not marked: {why}", "")
+    try:
+        m = mark(read_table(path), solution)
+    except ValueError as err:
+        message = _shown(" ".join(str(err).split()))
+        return (name, None, None, f"not marked: {message}", "")
+    return (name, m.right, m.total, m.first_error, m.diagnosis)
+
+
 def _batch(
     folder: Path, solution: Solution, question: str, fmt: Format, output: Path | None
 ) -> None:
@@ -137,16 +168,14 @@ def _batch(
 
     chosen = format_for_file(fmt, output)
     try:
-        files = sorted(p for p in folder.iterdir() if not p.name.startswith(".") and p.is_file())
+        files = sorted(p for p in folder.iterdir() if not p.name.startswith("."))
     except OSError as err:
         fail(f"--batch {folder}: cannot read the folder: {err.strerror or err}")
     if not files:
         fail(f"--batch {folder}: no files to mark")
-    check_batch([p.stat().st_size for p in files], solution)  # before any file is read
-    results = []
-    for path in files:
-        m = mark(read_table(path), solution)
-        results.append((path.name, m.right, m.total, m.first_error, m.diagnosis))
+    sizes = [p.lstat().st_size for p in files if _regular(p)]
+    check_batch(sizes, solution)  # before any file is read
+    results = [_mark_one(path, solution, mark, read_table) for path in files]
     if chosen not in (Format.auto, Format.csv, Format.json):  # a table to read, not a sheet
         from ..answers.marking import batch_solution
 

@@ -27,7 +27,12 @@ def neutral(text: str) -> str:
     return "'" + text if text.startswith(_FORMULA) else text
 
 
-def batch_csv(rows: Iterable[tuple[str, int, int, str, str]]) -> Iterator[str]:
+ScoreRow = tuple[str, int | None, int | None, str, str]
+"""A score sheet's row: the file's name, its score and out of (``None``: not marked), the
+first error (or why it was not marked) and the diagnosis."""
+
+
+def batch_csv(rows: Iterable[ScoreRow]) -> Iterator[str]:
     """The score sheet, header first.
 
     >>> print("".join(batch_csv([("=bob.csv", 8, 9, "Row 2: ...", "")])), end="")
@@ -45,7 +50,7 @@ def batch_csv(rows: Iterable[tuple[str, int, int, str, str]]) -> Iterator[str]:
     yield buf.getvalue()
 
 
-def batch_json(rows: Iterable[tuple[str, int, int, str, str]], question: str) -> Iterator[str]:
+def batch_json(rows: Iterable[ScoreRow], question: str) -> Iterator[str]:
     """The score sheet as one JSON object: the question and a row object per student.
 
     >>> print("".join(batch_json([("a.csv", 9, 9, "", "")], "line 2 2 10 6")), end="")
