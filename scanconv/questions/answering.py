@@ -70,7 +70,7 @@ def answer(question: str | Sequence[str]) -> Answer:
     >>> answer("line 2 2 10 6 --algo zzz")
     Traceback (most recent call last):
     ...
-    scanconv.questions.words.UsageError: Invalid value for '--algo' / '-a': 'zzz' is not one of 'bresenham', 'dda', 'basic', 'wu'.
+    scanconv.questions.words.UsageError: Invalid value for '--algo' / '-a': 'zzz' is not one of 'bresenham', 'dda', 'basic', 'wu', 'midpoint'.
     """
     from ..display import Answer
 
