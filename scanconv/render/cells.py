@@ -15,7 +15,7 @@ from typing import Any
 
 from ..core.numeric import fmt, fmt_pixel, json_number
 from ..core.records import Column, Solution
-from ..core.working import tex_to_unicode
+from ..core.working import tex_to_unicode, visible
 
 
 def cell(value: Any, column: Column, exact: bool = False) -> str:
@@ -54,7 +54,7 @@ def cell(value: Any, column: Column, exact: bool = False) -> str:
             return "(" + ", ".join(cell(v, column, exact) for v in value) + ")"
         decimals = column._replace(places=3)  # a point's coordinates alike
         return "(" + ", ".join(cell(v, decimals) for v in value) + ")"
-    return str(value)
+    return visible(str(value))
 
 
 def json_value(value: Any) -> Any:
@@ -102,7 +102,7 @@ def numeric_column(column: Column) -> bool:
 
 
 #: Keys of columns that hold words, not numbers (centred, never set in math mode).
-TEXT_KEYS = ("decision", "pixel", "method", "work", "arithmetic", "reason")
+TEXT_KEYS = ("decision", "pixel", "method", "work", "arithmetic", "reason", "name")
 
 
 def note_segments(note: str) -> list[tuple[bool, str]]:

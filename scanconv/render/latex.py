@@ -16,6 +16,7 @@ columns, each part repeating the first column.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Iterator, Sequence
 from itertools import chain, islice
 
@@ -26,11 +27,34 @@ from . import Notice, Options
 from .cells import note_segments, numeric_column, wrap_items
 from .text import Rows, all_tables, figure_lines, pixel_count
 
+_MATH_CELL = re.compile(r"(?=[-(0-9])(?:[-+*/(), ]|[0-9]+(?:\.[0-9]+)?|sqrt|[a-z]{1,2}(?![a-z.]))+")
+r"""What scanconv writes for a number, a point or an exact value: ``-3``, ``2.500``, ``34/27``,
+``(3, -4)``, ``(0.500, 1.000)``, ``-1 + 3*sqrt(2)/2``, ``(xc + x, yc - y)``: digits, operators,
+``sqrt`` and one- or two-letter names. Only such a cell is set in math mode (where a ``\``,
+``{``, ``^`` or ``_`` could never reach); any other text is escaped."""
+
+
+def math_cell(text: str) -> bool:
+    r"""Whether a cell is a number or a point that scanconv wrote (set in math mode, its
+    minus signs real minus signs); any other text, a student's file name above all, is text.
+
+    >>> math_cell("-3"), math_cell("(0.5, 1/2)"), math_cell("(xc - y, -1 + sqrt(2))")
+    (True, True, True)
+    >>> math_cell("0\\input{x}.csv"), math_cell("0(abc).csv"), math_cell("0 a.csv")
+    (False, False, False)
+    """
+    return _MATH_CELL.fullmatch(text) is not None
+
 
 def _cell(text: str) -> str:
+    r"""A table cell: a number or point in math mode, anything else escaped as text.
+
+    >>> _cell("-"), _cell("-2.500"), _cell(r"0\input{^^2fetc}.csv")
+    ('--', '$-2.500$', '0\\textbackslash{}input\\{\\textasciicircum{}\\textasciicircum{}2fetc\\}.csv')
+    """
     if text == "-":
         return "--"
-    if text and (text[0].isdigit() or text[0] in "-(") and text.isascii():
+    if math_cell(text):
         return f"${text}$"
     return tex_text(text)
 

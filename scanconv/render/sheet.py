@@ -22,9 +22,10 @@ from collections.abc import Iterator, Sequence
 from typing import NamedTuple
 
 from ..core.records import Column, Solution
-from ..core.working import ascii_text, tex_text
+from ..core.working import ascii_text, json_visible, tex_text, visible
 from . import Notice, Options
 from .cells import numeric_column
+from .text import md_text
 
 
 class Question(NamedTuple):
@@ -236,18 +237,6 @@ def _blank_rows(blank: Blank) -> Iterator[list[str]]:
 
 # --- markdown and plain -------------------------------------------------------------------------
 
-_MD_SPECIAL = re.compile(r"([\\`*_{}\[\]<>#|$~^&])")
-
-
-def md_text(text: str) -> str:
-    """User text made literal in Markdown (pandoc's and GitHub's): every character that could
-    start markup, math, a table cell or raw HTML is backslash-escaped.
-
-    >>> md_text("A | B <script> *x* $1")
-    'A \\\\| B \\\\<script\\\\> \\\\*x\\\\* \\\\$1'
-    """
-    return _MD_SPECIAL.sub(r"\\\1", " ".join(text.split()))
-
 
 def md_code(text: str) -> str:
     """``text`` as an inline code span, fenced with more backticks than it holds.
@@ -258,7 +247,7 @@ def md_code(text: str) -> str:
     runs = [len(r) for r in re.findall(r"`+", text)]
     fence = "`" * (max(runs, default=0) + 1)
     pad = " " if runs or text.startswith("`") else ""
-    return f"{fence}{pad}{text}{pad}{fence}"
+    return f"{fence}{pad}{visible(text)}{pad}{fence}"
 
 
 def _levels(sheet: Sheet) -> tuple[int, int]:
@@ -290,7 +279,7 @@ def _markdown(
 
     section_level, level = _levels(sheet)
     if sheet.title:
-        yield f"# {md_text(sheet.title)}\n\n{_intro(sheet, kind)}\n\n"
+        yield f"# {md_text(' '.join(sheet.title.split()))}\n\n{_intro(sheet, kind)}\n\n"
     section = ""
     for a in answered:
         q = a.question
@@ -448,9 +437,9 @@ def _tex_label(text: str) -> str:
     >>> _tex_label("-3"), _tex_label("KB_2")
     ('$-3$', 'KB\\_2')
     """
-    if text[:1].isdigit() or text[:1] in ("-", "("):
-        return f"${text}$"
-    return tex_text(text)
+    from .latex import math_cell
+
+    return f"${text}$" if math_cell(text) else tex_text(text)
 
 
 def _room(chars: int) -> int:
@@ -526,7 +515,7 @@ def _json(sheet: Sheet, answered: Sequence[Answered], kind: str) -> str:
         "total_marks": sheet.total_marks,
         "questions": questions,
     }
-    return json.dumps(document, ensure_ascii=False, indent=1) + "\n"
+    return json_visible(json.dumps(document, ensure_ascii=False, indent=1)) + "\n"
 
 
 # --- html ---------------------------------------------------------------------------------------
@@ -550,7 +539,7 @@ def _html(sheet: Sheet, answered: Sequence[Answered], kind: str, notices: list[s
     """The sheet as one self-contained HTML page: every text from the question file and every
     value escaped; a page break before each question when printed. The key's answers are the
     stepping answers of :mod:`scanconv.render.html` (each with its own stepper)."""
-    from html import escape
+    from .mathml import esc as escape
 
     title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
     style = f"<style>\n{_SHEET_CSS}</style>\n"
@@ -606,7 +595,7 @@ def _html(sheet: Sheet, answered: Sequence[Answered], kind: str, notices: list[s
 
 def _html_blank(a: Answered) -> Iterator[str]:
     """A worksheet question's given values and empty tables, in HTML."""
-    from html import escape
+    from .mathml import esc as escape
 
     if a.solution.given:
         given = ", ".join(escape(g.text) for g in a.solution.given)
