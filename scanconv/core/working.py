@@ -182,12 +182,20 @@ def ascii_text(s: str) -> str:
     'p0 = 2dy - dx = 2*4 - 8 >= 0'
     >>> ascii_text("pₖ₊₁ = pₖ + 2xₖ₊₁ + 1, p1₀ = rₓ²/4, 2ⁿ⁻¹ ≤ r < 2ⁿ, ε = 2⁻³, θₖ")
     'p_{k+1} = p_k + 2x_{k+1} + 1, p1_0 = r_x^2/4, 2^(n-1) <= r < 2^n, eps = 2^-3, theta_k'
+    >>> ascii_text("xₖ + εyₖ, Δx")
+    'x_k + eps y_k, dx'
     """
     if s.isascii():
         return s if s.isprintable() else UNSAFE.sub("?", s)
     s = _SUB_RUN.sub(_sub_ascii, s)
     s = _SUP_RUN.sub(_sup_ascii, s)
-    return UNSAFE.sub("?", "".join(ch if ch.isascii() else _ASCII.get(ch, "?") for ch in s))
+    out = []
+    for i, ch in enumerate(s):
+        word = ch if ch.isascii() else _ASCII.get(ch, "?")
+        if len(word) > 1 and word.isalpha() and s[i + 1 : i + 2].isalpha():
+            word += " "  # ε y as "eps y", never "epsy"
+        out.append(word)
+    return UNSAFE.sub("?", "".join(out))
 
 
 # --- TeX -> Unicode --------------------------------------------------------------------------

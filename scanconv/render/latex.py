@@ -24,7 +24,7 @@ from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
 from ..core.working import tex_text
 from . import Notice, Options
-from .cells import note_segments, numeric_column, wrap_items
+from .cells import note_segments, numeric_column, prose_math, wrap_items
 from .text import Rows, all_tables, figure_lines, pixel_count
 
 _MATH_CELL = re.compile(r"(?=[-(0-9])(?:[-+*/(), ]|[0-9]+(?:\.[0-9]+)?|sqrt|[a-z]{1,2}(?![a-z.]))+")
@@ -56,7 +56,17 @@ def _cell(text: str) -> str:
         return "--"
     if math_cell(text):
         return f"${text}$"
-    return tex_text(text)
+    return prose_tex(text)
+
+
+def prose_tex(text: str) -> str:
+    r"""Text in LaTeX: escaped, the formulas written in it in the ASCII notation
+    (:func:`~scanconv.render.cells.prose_math`) in math mode; a ``$`` is only text.
+
+    >>> prose_tex("Centre: x^2 + y^2 = r^2, $5")
+    'Centre: $x^2$ + $y^2$ = $r^2$, \\$5'
+    """
+    return "".join(f"${t}$" if math else tex_text(t) for math, t in prose_math(text))
 
 
 TEXT_WIDTH = 345

@@ -17,7 +17,7 @@ from typing import Any
 
 from ..core.working import UNSAFE as _CONTROLS
 from ..core.working import tex_to_unicode
-from .cells import note_segments
+from .cells import note_segments, prose_math
 
 
 def esc(text: str) -> str:
@@ -184,6 +184,16 @@ def note_html(note: str) -> str:
     return "".join(
         tex_math(part) if is_math else esc(part) for is_math, part in note_segments(note)
     )
+
+
+def prose_html(text: str) -> str:
+    """A text cell: escaped, the formulas written in it in the ASCII notation
+    (:func:`~scanconv.render.cells.prose_math`) as MathML; a ``$`` is only text.
+
+    >>> prose_html("x^2 < 1")[:5], prose_html("x^2 < 1")[-7:]
+    ('<math', ' &lt; 1')
+    """
+    return "".join(tex_math(part) if is_math else esc(part) for is_math, part in prose_math(text))
 
 
 def json_script(data: Any, cls: str = "sc-data") -> str:

@@ -19,7 +19,15 @@ from ..core.records import Column, Figure, ShadedMatrix, Solution, Table, step_g
 from ..core.working import ascii_text, visible
 from . import Notice, Options
 from . import grid as gridmod
-from .cells import cell, marks_label, note_segments, note_unicode, numeric_column, wrap_items
+from .cells import (
+    cell,
+    marks_label,
+    note_segments,
+    note_unicode,
+    numeric_column,
+    prose_math,
+    wrap_items,
+)
 from .shade import matrix_lines
 
 BUFFER_ROWS = 1000
@@ -94,7 +102,9 @@ def md_cell(text: str) -> str:
     >>> md_cell("   "), md_cell("a|b*"), md_cell("-3")
     ('   ', 'a\\\\|b\\\\*', '-3')
     """
-    return md_text(text) if text.strip() else text
+    if not text.strip():
+        return text
+    return "".join(f"${t}$" if math else md_text(t) for math, t in prose_math(text))
 
 
 def _md_heading(text: str) -> str:
