@@ -79,7 +79,7 @@ def test_latex_score_table_reads_no_file_when_compiled(tmp_path: Path) -> None:
     body = _batch(_folder(tmp_path, *TEX_NAMES), "latex")
     doc = tmp_path / "s.tex"
     doc.write_text(
-        "\\documentclass{article}\\usepackage{booktabs,amsmath,longtable}\n"
+        "\\documentclass{article}\\usepackage{booktabs,amsmath,longtable,tikz}\n"
         f"\\begin{{document}}\n{body}\\end{{document}}\n"
     )
     subprocess.run(

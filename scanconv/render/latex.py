@@ -25,7 +25,9 @@ from ..core.records import Column, Solution
 from ..core.working import tex_text
 from . import Notice, Options
 from .cells import note_segments, numeric_column, prose_math, wrap_items
-from .text import Rows, all_tables, figure_lines, pixel_count
+from .grid import too_large
+from .text import Rows, all_tables, figure_text, grid_block, pixel_count
+from .tikz import tikz_figure, tikz_grid
 
 _MATH_CELL = re.compile(r"(?=[-(0-9])(?:[-+*/(), ]|[0-9]+(?:\.[0-9]+)?|sqrt|[a-z]{1,2}(?![a-z.]))+")
 r"""What scanconv writes for a number, a point or an exact value: ``-3``, ``2.500``, ``34/27``,
@@ -67,6 +69,30 @@ def prose_tex(text: str) -> str:
     'Centre: $x^2$ + $y^2$ = $r^2$, \\$5'
     """
     return "".join(f"${t}$" if math else tex_text(t) for math, t in prose_math(text))
+
+
+NEED = r"""\makeatletter
+\providecommand{\scneed}[1]{\par\penalty-100\begingroup\setlength{\dimen@}{#1}%
+\vskip\z@\@plus\dimen@\penalty-100\vskip\z@\@plus-\dimen@\vskip\dimen@
+\penalty9999\vskip-\dimen@\vskip\z@skip\endgroup}
+\makeatother
+"""
+r"""``\scneed{h}``: a page break here unless ``h`` of the page is left (needspace's way):
+a table's heading never ends a page without its table."""
+
+KEEP_ROWS = 15
+"""A table of at most this many rows starts on the next page rather than be split; a longer
+one starts where it is, with at least a few rows under its heading."""
+
+
+def _heading(title: str, rows: int) -> str:
+    r"""A table's heading, kept with its table (or its first rows).
+
+    >>> print(_heading("Step table", 2), end="")
+    \scneed{71pt}\paragraph{Step table}\mbox{}\\[1ex]
+    """
+    need = 45 + 13 * (rows if rows <= KEEP_ROWS else 5)
+    return f"\\scneed{{{need}pt}}\\paragraph{{{tex_text(title)}}}\\mbox{{}}\\\\[1ex]\n"
 
 
 TEXT_WIDTH = 345
@@ -159,14 +185,38 @@ def _heading_chars(column: Column) -> float:
     return len(column.text.translate(_MARKUP)) + ops
 
 
+RESIZE_ROWS = 40
+"""A table too wide for the page with at most this many rows is set whole, scaled to the
+text width (it fits on a page); a longer one is set in parts of its columns."""
+
+WRAP_CHARS = 24
+"""A text column with a cell longer than this is set as a paragraph column that wraps."""
+
+
 def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
-    """One table, or several of its columns each when it is too wide for the page."""
+    """One table, whole whenever it can be: in the largest type that fits the text width;
+    with its long text columns wrapped (a comparison's sentences) rather than set smaller
+    than ``\\small``; scaled down to the text
+    width when it has at most :data:`RESIZE_ROWS` rows; only a long table too wide for the
+    page is set in parts of its columns, each part repeating the first column."""
     first = rows()
     head = list(islice(first, _SAMPLE_ROWS))
     parts = split_columns(columns, head)
+    small = parts[0][1][0] in ("\\footnotesize", "\\scriptsize", "\\tiny")
+    wrapped = wrap_spec(columns, head) if len(parts) > 1 or small else None
+    if wrapped is not None:
+        yield _heading(title, len(head))
+        yield from _tabular(columns, ("\\small", True), chain(head, first), wrapped)
+        yield "\n"
+        return
+    if (len(parts) > 1 or parts[0][1] == _TINY) and len(head) <= RESIZE_ROWS:
+        yield _heading(title, len(head))
+        yield from resized(columns, head)
+        yield "\n"
+        return
     for n, (part, layout) in enumerate(parts, 1):
         label = title if len(parts) == 1 else f"{title}, part {n} of {len(parts)}"
-        yield f"\\paragraph{{{tex_text(label)}}}\\mbox{{}}\\\\[1ex]\n"
+        yield _heading(label, len(head))
         if len(parts) == 1:  # the whole table: the rows already started, read on
             yield from _tabular(columns, layout, chain(head, first))
         else:  # each part reads the rows afresh, keeping its own columns
@@ -175,9 +225,57 @@ def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
         yield "\n"
 
 
-def _tabular(columns: Sequence[Column], layout: Layout, rows: Iterable[list[str]]) -> Iterator[str]:
-    """A longtable of every row in ``rows``, in the font size and spacing of ``layout``."""
+def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | None:
+    """The column spec of a table whose long text columns wrap (``p`` columns sharing the
+    width the other columns leave, at ``\\small`` with 3pt gaps), or ``None`` if no text
+    column is long enough to wrap or the rest would not fit.
+
+    >>> from scanconv.core.records import Column
+    >>> cols = [Column("point", "point", ""), Column("work", "DDA", "")]
+    >>> wrap_spec(cols, [["speed", "slower"]]) is None
+    True
+    >>> wrap_spec(cols, [["error", "round-off accumulates along the line, and more"]])
+    'c>{\\\\raggedright\\\\arraybackslash}p{300.6pt}'
+    """
+    longest = [max((len(r[i]) for r in rows), default=0) for i in range(len(columns))]
+    wrap = [
+        n > WRAP_CHARS and any(not math_cell(r[i]) for r in rows) for i, n in enumerate(longest)
+    ]
+    if not any(wrap):
+        return None
+    fixed = sum(
+        4.4 * max(n, _heading_chars(c)) + 6
+        for c, n, w in zip(columns, longest, wrap, strict=True)
+        if not w
+    )
+    room = 0.97 * TEXT_WIDTH - fixed - 6 * sum(wrap)
+    total = sum(n for n, w in zip(longest, wrap, strict=True) if w)
+    if room < 60 * sum(wrap):
+        return None
+    return "".join(
+        f">{{\\raggedright\\arraybackslash}}p{{{room * n / total:.1f}pt}}"
+        if w
+        else ("r" if numeric_column(c) else "c")
+        for c, n, w in zip(columns, longest, wrap, strict=True)
+    )
+
+
+def resized(columns: Sequence[Column], rows: Iterable[list[str]]) -> Iterator[str]:
+    """A short table too wide for the page, whole, scaled to the text width (needs
+    ``graphicx``)."""
     spec = "".join("r" if numeric_column(c) else "c" for c in columns)
+    yield f"\\noindent\\resizebox{{\\linewidth}}{{!}}{{\\begin{{tabular}}{{{spec}}}\n\\toprule\n"
+    yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n"
+    for r in rows:
+        yield " & ".join(_cell(c) for c in r) + " \\\\\n"
+    yield "\\bottomrule\n\\end{tabular}}\\par\n"
+
+
+def _tabular(
+    columns: Sequence[Column], layout: Layout, rows: Iterable[list[str]], spec: str = ""
+) -> Iterator[str]:
+    """A longtable of every row in ``rows``, in the font size and spacing of ``layout``."""
+    spec = spec or "".join("r" if numeric_column(c) else "c" for c in columns)
     size, tight = layout
     group = bool(size or tight)
     if group:
@@ -230,7 +328,8 @@ def note_tex(note: str) -> str:
 
 def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]:
     """The worked solution as a LaTeX fragment."""
-    yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable}\n"
+    yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}\n"
+    yield NEED
     yield f"\\subsection*{{{tex_text(solution.title)}}}\n\n"
     if solution.given:
         yield "\\paragraph{Given} " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
@@ -251,13 +350,39 @@ def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]
         for line in wrap_items(f"${fmt_pixel(p)}$" for p in solution.pixels()):
             yield line + "\n"
         yield "\\par}\n"
-    lines, notices = figure_lines(solution, options)
-    if max((len(line) for line in lines), default=0) > _GRID_SIZES[-1][0]:
-        lines, notices = figure_lines(solution, options, compact=True)
-    yield from notices
+    yield from _figures(solution, options)
+
+
+def _figures(solution: Solution, options: Options) -> Iterator[str | Notice]:
+    """The pixel grid drawn with TikZ (:mod:`scanconv.render.tikz`), then the answer's own
+    figures (a two-set pixel figure, an image's grey levels) drawn too; a figure too large
+    to draw stays a typewriter picture, and the grid is left out with a notice saying why."""
+    drawn = None
+    if options.grid and solution.pixels is not None and not too_large(solution.bbox):
+        drawn = tikz_grid(solution, options.origin)
+    if drawn is not None:
+        yield drawn
+    else:
+        chunks = list(grid_block(solution, options))
+        lines = [c for c in chunks if isinstance(c, str)]
+        if max((len(line) for line in lines), default=0) > _GRID_SIZES[-1][0]:
+            lines = [c for c in grid_block(solution, options, compact=True) if isinstance(c, str)]
+        yield from (c for c in chunks if isinstance(c, Notice))
+        yield from _verbatim(lines)
+    if options.grid:
+        for figure in solution.figures:
+            picture = tikz_figure(figure, options.origin)
+            if picture is None:
+                yield from _verbatim(figure_text(figure, options.origin))
+            else:
+                yield picture
+
+
+def _verbatim(lines: Sequence[str]) -> Iterator[str]:
+    """A typewriter picture in a minipage (never split across a page), set small enough to
+    fit the text width."""
     lines = [part for line in lines for part in _wrap_key(line)]
     if lines:
-        # In a minipage the grid is never split across a page (its axis on the next one).
         size = grid_size(lines)
         yield "\n\\noindent\\begin{minipage}{\\linewidth}\n" + (f"{size}\n" if size else "")
         yield "\\begin{verbatim}\n"
