@@ -20,6 +20,7 @@ import pytest
 
 from scanconv.render.latex import _cell
 from tests.helpers import run
+from tests.test_print import Visible
 
 STUDENT = "k,p_k,x,y\n0,0,2,2\n"
 QUESTION = ("--", "line", "2", "2", "10", "6")
@@ -217,30 +218,11 @@ def test_bidi_override_in_a_formula_comment(fmt: str) -> None:
     assert BIDI not in r.out
 
 
-class _Text(HTMLParser):
-    """The visible text of a page: scripts and styles left out."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.skip = 0
-        self.parts: list[str] = []
-
-    def handle_starttag(self, tag: str, attrs: object) -> None:
-        self.skip += tag in ("script", "style")
-
-    def handle_endtag(self, tag: str) -> None:
-        self.skip -= tag in ("script", "style")
-
-    def handle_data(self, data: str) -> None:
-        if not self.skip:
-            self.parts.append(data)
-
-
 def test_formula_comment_in_html_math_is_shown_as_typed() -> None:
     typed = "x + y # <b>{a}</b> --z"
     r = run("sample", typed, "--size", "3", "-L", "2", "-f", "html")
     assert r.code == 0, r.err
-    page = _Text()
+    page = Visible(hide=("script", "style"))
     page.feed(r.out)
     text = "".join(page.parts)
     assert "# <b>{a}</b> --z" in text

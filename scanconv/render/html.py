@@ -127,7 +127,7 @@ def _table(
         for j, t in enumerate(texts):
             widths[j] = max(widths[j], len(t))
         tds = "".join(
-            f'<td class="sc-num">{esc(t)}</td>' if r else f"<td>{prose_html(t)}</td>"
+            f'<td class="sc-num">{prose_html(t)}</td>' if r else f"<td>{prose_html(t)}</td>"
             for t, r in zip(texts, right, strict=False)
         )
         lines.append(f"<tr{attrs}>{tds}</tr>")

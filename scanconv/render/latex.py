@@ -235,7 +235,7 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
     >>> wrap_spec(cols, [["speed", "slower"]]) is None
     True
     >>> wrap_spec(cols, [["error", "round-off accumulates along the line, and more"]])
-    'c>{\\\\raggedright\\\\arraybackslash}p{300.6pt}'
+    'l>{\\\\raggedright\\\\arraybackslash}p{300.6pt}'
     """
     longest = [max((len(r[i]) for r in rows), default=0) for i in range(len(columns))]
     wrap = [
@@ -255,8 +255,8 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
     return "".join(
         f">{{\\raggedright\\arraybackslash}}p{{{room * n / total:.1f}pt}}"
         if w
-        else ("r" if numeric_column(c) else "c")
-        for c, n, w in zip(columns, longest, wrap, strict=True)
+        else ("r" if all(math_cell(r[i]) or r[i] == "-" for r in rows) else "l")
+        for i, (n, w) in enumerate(zip(longest, wrap, strict=True))
     )
 
 

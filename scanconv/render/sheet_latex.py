@@ -20,7 +20,7 @@ from collections.abc import Iterator, Sequence
 
 from ..core.working import tex_text
 from . import Notice
-from .latex import NEED
+from .latex import KEEP_ROWS, NEED
 from .sheet import (
     Answered,
     Blank,
@@ -135,7 +135,7 @@ def _worksheet(a: Answered) -> Iterator[str]:
     lines = WORKING_LINES if blanks or drawing else 2 * WORKING_LINES
     yield (
         "\\paragraph{Working}\\mbox{}\\par\\nopagebreak\n\\noindent\\fbox{\\parbox[t]"
-        f"[{lines}\\baselineskip]{{\\dimexpr\\linewidth-2\\fboxsep-2\\fboxrule\\relax}}{{}}}}"
+        f"[{lines}\\baselineskip]{{\\dimexpr\\linewidth-2\\fboxsep-2\\fboxrule\\relax}}{{\\mbox{{}}}}}}"
         f"\\par\n% height {lines * 12}pt\n"
     )
     for blank in blanks:
@@ -184,7 +184,8 @@ def _latex_blank(blank: Blank) -> Iterator[str]:
     answer cell and a little more, narrowed to the text width when too wide (a longtable:
     a table of many rows continues on the next page, its heading repeated)."""
     widths, size = blank_widths(blank)
-    yield f"\\paragraph{{{tex_text(blank.title)}}}\\mbox{{}}\\\\[1ex]\n"
+    need = 60 + 26 * (blank.rows if blank.rows <= KEEP_ROWS else 5)  # rows 8 mm high, ruled
+    yield f"\\scneed{{{need}pt}}\\paragraph{{{tex_text(blank.title)}}}\\mbox{{}}\\\\[1ex]\n"
     spec = "|" + "|".join(f">{{\\centering\\arraybackslash}}p{{{w:.1f}pt}}" for w in widths) + "|"
     yield f"\\begin{{longtable}}{{{spec}}}\n\\hline\n"
     fit = "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}"
