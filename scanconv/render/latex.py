@@ -274,17 +274,27 @@ def resized(columns: Sequence[Column], rows: Iterable[list[str]]) -> Iterator[st
 def _tabular(
     columns: Sequence[Column], layout: Layout, rows: Iterable[list[str]], spec: str = ""
 ) -> Iterator[str]:
-    """A longtable of every row in ``rows``, in the font size and spacing of ``layout``."""
+    """Every row in ``rows`` in the font size and spacing of ``layout``: a ``tabular``, which
+    never breaks, when there are at most :data:`KEEP_ROWS` rows (its heading has made room
+    for it), else a ``longtable`` that continues on the next page with its heading."""
     spec = spec or "".join("r" if numeric_column(c) else "c" for c in columns)
+    it = iter(rows)
+    head = list(islice(it, KEEP_ROWS + 1))
+    short = len(head) <= KEEP_ROWS
     size, tight = layout
-    group = bool(size or tight)
-    if group:
-        yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
-    yield f"\\begin{{longtable}}{{{spec}}}\n\\toprule\n"
-    yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n\\endhead\n"
-    for r in rows:
+    yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
+    if short:
+        yield f"\\par\\centering\\begin{{tabular}}{{{spec}}}\n\\toprule\n"
+        yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n"
+    else:
+        yield f"\\begin{{longtable}}{{{spec}}}\n\\toprule\n"
+        yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n\\endhead\n"
+    for r in chain(head, it):
         yield " & ".join(_cell(c) for c in r) + " \\\\\n"
-    yield "\\bottomrule\n\\end{longtable}\n" + ("}\n" if group else "")
+    if short:
+        yield "\\bottomrule\n\\end{tabular}\\par\\medskip}\n"
+    else:
+        yield "\\bottomrule\n\\end{longtable}\n}\n"
 
 
 #: Font sizes for the verbatim grid by the widest line (characters) that fits an article's

@@ -187,11 +187,13 @@ def _latex_blank(blank: Blank) -> Iterator[str]:
     need = 60 + 26 * (blank.rows if blank.rows <= KEEP_ROWS else 5)  # rows 8 mm high, ruled
     yield f"\\scneed{{{need}pt}}\\paragraph{{{tex_text(blank.title)}}}\\mbox{{}}\\\\[1ex]\n"
     spec = "|" + "|".join(f">{{\\centering\\arraybackslash}}p{{{w:.1f}pt}}" for w in widths) + "|"
-    yield f"\\begin{{longtable}}{{{spec}}}\n\\hline\n"
+    short = blank.rows <= KEEP_ROWS  # a tabular never breaks: its heading made room for it
+    env = "tabular" if short else "longtable"
+    yield ("\\par{\\centering" if short else "") + f"\\begin{{{env}}}{{{spec}}}\n\\hline\n"
     fit = "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}"
     heads = (f"{fit}{{{size}${c.tex}$}}" for c in blank.columns)
-    yield " & ".join(heads) + " \\\\\n\\hline\n\\endhead\n"
+    yield " & ".join(heads) + " \\\\\n\\hline\n" + ("" if short else "\\endhead\n")
     for row in _blank_rows(blank):
         cells = [_tex_label(row[0]) if row[0] else ""] + [""] * (len(row) - 1)
         yield "\\rule[-2.5mm]{0pt}{8mm}" + " & ".join(cells) + " \\\\\n\\hline\n"
-    yield "\\end{longtable}\n"
+    yield "\\end{tabular}\\par}\\medskip\n" if short else "\\end{longtable}\n"
