@@ -1,17 +1,21 @@
 """The ``latex`` format: a fragment to ``\\input`` into a document.
 
-Needs ``\\usepackage{booktabs,amsmath,longtable}`` in the preamble (the fragment says so in
-its first line). The table is written by hand rather than with tabulate's ``latex_booktabs``,
-which escapes ``$`` and ``_`` and so breaks math headings; every cell that holds a number is
-set in math mode so minus signs are real minus signs, and every text cell is escaped.
+Needs ``\\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}`` in the preamble (the
+fragment says so in its first line, then defines ``\\scneed`` if the document has not). The
+table is written by hand rather than with tabulate's ``latex_booktabs``, which escapes ``$``
+and ``_`` and so breaks math headings; a cell that is one of scanconv's numbers or points
+(:func:`math_cell`) is set in math mode so minus signs are real minus signs, and every other
+cell is escaped text (a student's file name can never reach math mode), its formulas in the
+ASCII notation (``x^2``) set as math (:func:`prose_tex`).
 
-Tables are ``longtable`` s, so a long line's table continues on the next page (with its
-heading repeated) instead of running off the bottom of the page. Each plotted pixel is its own
-``$...$``, so the pixel list breaks between pixels (TeX does not break math after a comma).
-The pixel list is set ragged-right (long unbreakable pixels would overfill justified lines).
-Wide tables and grids are set tighter or smaller so they fit an article's text width; a table
-too wide even in ``\\scriptsize`` (the circle's 9-column symmetry table) is set in parts of its
-columns, each part repeating the first column.
+Tables stay whole where they can: a short table (:data:`KEEP_ROWS`) is a ``tabular`` and its
+heading makes room for it on the page (``\\scneed``); a longer one is a ``longtable`` that
+continues on the next page with its heading repeated. A table too wide for the text width has
+its long text columns wrapped (a comparison's sentences) or, when short, is scaled to the
+width; only a long table too wide even in ``\\scriptsize`` is set in parts of its columns,
+each repeating the first column. Each plotted pixel is its own ``$...$``, so the pixel list
+breaks between pixels, ragged-right. The pixel grid and the answer's figures are drawn with
+TikZ (:mod:`scanconv.render.tikz`); a figure too large to draw stays a typewriter picture.
 """
 
 from __future__ import annotations
