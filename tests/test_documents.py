@@ -186,6 +186,11 @@ def test_markdown_survives_exactly(name: str) -> None:
 
     formulas = len(solution.given) + len(solution.derived) + sum(len(c) for c in tables)
     formulas += sum(math for n in solution.notes for math, _ in note_segments(n))  # $...$
+    from scanconv.render.cells import prose_math
+    from scanconv.render.text import all_tables
+
+    cells = (c for _, _, rows in all_tables(solution) for row in rows() for c in row)
+    formulas += sum(math for c in cells for math, _ in prose_math(c))  # x_inc in a cell
     assert html.math == formulas
     heads = [len(t["head"]) for t in html.tables]
     assert heads == [len(c) for c in tables]
@@ -206,7 +211,7 @@ def test_markdown_survives_exactly(name: str) -> None:
 # --- LaTeX through pdflatex ---------------------------------------------------------------------
 
 PREAMBLE = r"""\documentclass{article}
-\usepackage{booktabs,amsmath,longtable}
+\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}
 \begin{document}
 """
 
@@ -272,19 +277,19 @@ def test_latex_fits_the_page_width(tmp_path: Path, name: str) -> None:
     assert not [v for v in _overfull(log) if v > 1], "a line runs past the right margin"
 
 
-def test_latex_wide_table_is_split_into_parts_that_repeat_the_first_column() -> None:
+def test_latex_wide_short_table_is_set_whole_never_in_parts(tmp_path: Path) -> None:
+    """Issue 27: the circle's 9-column symmetry table is one table (scaled to the text width),
+    not parts of its columns; it fits the page."""
     from scanconv.answers.circle import circle_solution
 
     (table,) = circle_solution("midpoint", 10).tables
     out = run("circle", "10", "--format", "latex").out
-    parts = out.split("8-way symmetry about the centre (0, 0), part ")[1:]
-    assert [p[:6] for p in parts] == ["1 of 2", "2 of 2"]
-    heads = [p.split("\\midrule")[0] for p in parts]
-    assert all(h.count("$(x, y)$") == 1 for h in heads)
-    rest = [c for h in heads for c in re.findall(r"\$(\([^$]*\))\$", h) if c != "(x, y)"]
-    assert rest == [c.tex for c in table.columns[1:]]
-    rows = sum(1 for _ in table.rows())
-    assert all(p.split("\\midrule")[1].count("\\\\\n") == rows for p in parts)
+    assert ", part 1 of" not in out
+    whole = out.split("8-way symmetry about the centre (0, 0)")[1].split("\\end{tabular}")[0]
+    assert "\\resizebox{\\linewidth}" in whole
+    assert whole.count("\\\\\n") == 1 + sum(1 for _ in table.rows())  # heading and rows
+    log = _compile(tmp_path, out)
+    assert not [v for v in _overfull(log) if v > 1]
 
 
 def test_latex_long_answer_breaks_pixels_and_pages(tmp_path: Path) -> None:
@@ -297,9 +302,10 @@ def test_latex_long_answer_breaks_pixels_and_pages(tmp_path: Path) -> None:
     assert pages and int(pages.group(1)) >= 2
 
 
-def test_latex_wide_grid_is_set_smaller(tmp_path: Path) -> None:
+def test_latex_wide_grid_is_drawn_to_fit(tmp_path: Path) -> None:
+    """Issue 27: the grid is drawn (TikZ), scaled to the text width, never typewriter text."""
     result = run("line", "0", "0", "24", "4", "--format", "latex")
-    assert "\\scriptsize\n\\begin{verbatim}" in result.out or "\\tiny\n" in result.out
+    assert "\\begin{tikzpicture}" in result.out and "\\begin{verbatim}" not in result.out
     log = _compile(tmp_path, result.out)
     assert not [v for v in _overfull(log) if v > 1]
 
@@ -384,7 +390,7 @@ def test_every_golden_latex_answer_in_one_document_sets_cleanly(tmp_path: Path) 
         result = run(*read_case(path)[0])
         assert result.code == 0, result.err
         fragments.append(result.out)
-        grids = result.out.count("\\begin{verbatim}")
+        grids = result.out.count("\\begin{verbatim}") + result.out.count("\\begin{tikzpicture}")
         assert result.out.count("\\begin{minipage}{\\linewidth}") == grids, path.name
     log = _compile(tmp_path, *fragments)
     assert _overfull(log) == [], "overfull boxes"

@@ -199,7 +199,7 @@ def _check_format(
             cells = [n for n in page.rows if n]
             assert len(set(cells)) == 1 and len(cells) >= table_rows, page.rows
     elif fmt is Format.latex:
-        doc = "\\documentclass{article}\n\\usepackage{booktabs,amsmath,longtable,array}\n"
+        doc = "\\documentclass{article}\n\\usepackage{booktabs,amsmath,longtable,array,tikz}\n"
         _not_executed(_compile(tmp_path, doc + "\\begin{document}\n" + out + "\\end{document}\n"))
     elif fmt is Format.json:
         json.loads(out)

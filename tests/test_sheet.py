@@ -458,7 +458,7 @@ def _compile(tmp_path: Path, tex: str) -> str:
 
 @pytest.mark.external
 @pytest.mark.parametrize("kind", ["--key", "--worksheet"])
-def test_latex_sheets_compile_with_a_page_per_question_and_no_overfull_box(
+def test_latex_sheets_compile_paginated_per_question_with_no_overfull_box(
     kind: str, tmp_path: Path
 ) -> None:
     path = _file(
@@ -467,11 +467,13 @@ def test_latex_sheets_compile_with_a_page_per_question_and_no_overfull_box(
     )
     r = run("sheet", str(path), kind, "--format", "latex", "--standalone")
     assert r.code == 0, r.err
-    assert r.out.count("\\clearpage") == len(QUESTIONS) - 1
+    # Issue 27: a question starts on a new page when it does not fit (\\scneed), not always.
+    starts = re.findall(r"\\scneed\{\d+pt\}\n\\(?:sub)?section\*", r.out)
+    assert len(starts) == len(QUESTIONS) - 1
     log = _compile(tmp_path, r.out)
     assert "Overfull \\hbox" not in log and "Overfull \\vbox" not in log
     pages = re.search(r"Output written on doc\.pdf \((\d+) pages?", log)
-    assert pages and int(pages.group(1)) >= len(QUESTIONS)
+    assert pages and int(pages.group(1)) >= 1
 
 
 @pytest.mark.external

@@ -148,7 +148,7 @@ def test_every_answer_compiles_with_pdflatex_without_overfull_boxes(tmp_path: Pa
     pdflatex = shutil.which("pdflatex")
     if not pdflatex:
         pytest.skip("pdflatex not installed (apt-get install texlive-latex-base)")
-    from scanconv.render.sheet import PREAMBLE  # the exam book's: \emergencystretch=3em
+    from scanconv.render.sheet_latex import PREAMBLE  # the exam book's: \emergencystretch=3em
 
     body = "\n".join(_text(theory_solution(n), Format.latex) for n in NAMES)
     doc = PREAMBLE + body + "\n\\end{document}\n"

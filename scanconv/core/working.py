@@ -36,6 +36,44 @@ from __future__ import annotations
 
 import re
 
+# --- Characters no output may carry as they are ----------------------------------------------
+
+UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]")
+"""Control characters (a terminal escape sequence, a bell) and the bidirectional controls
+(U+202E RIGHT-TO-LEFT OVERRIDE and kin, which make text read differently from what it holds):
+user text never carries them into any format. Tab and newline are left to each format."""
+
+
+def visible(text: str) -> str:
+    """``text`` with every :data:`UNSAFE` character shown as U+FFFD, and tabs and line breaks
+    as spaces: a single-line text (a file name, a title) as every format shows it.
+
+    >>> visible("a\x1b[2Jb\u202ecba\tz")
+    'a\ufffd[2Jb\ufffdcba z'
+    """
+    if text.isascii() and text.isprintable():  # the common case: nothing to do
+        return text
+    return UNSAFE.sub("\ufffd", _BREAKS.sub(" ", text))
+
+
+_BREAKS = re.compile(r"\r\n|[\t\n\r]")
+
+
+def json_visible(text: str) -> str:
+    """JSON text with every :data:`UNSAFE` character in its strings written as a ``\\u``
+    escape: the data round-trips unchanged, but the file never holds a raw bidirectional
+    override or terminal control (``json.dumps`` escapes C0 controls, not U+202E or DEL).
+
+    >>> import json
+    >>> text = json_visible(json.dumps("a\u202eb\x7f", ensure_ascii=False))
+    >>> text, json.loads(text) == "a\u202eb\x7f"
+    ('"a\\\\u202eb\\\\u007f"', True)
+    """
+    if text.isascii() and "\x7f" not in text:
+        return text
+    return UNSAFE.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
+
+
 # --- Unicode -> ASCII ------------------------------------------------------------------------
 
 _GREEK = {
@@ -137,18 +175,27 @@ def _sup_ascii(m: re.Match[str]) -> str:
 
 
 def ascii_text(s: str) -> str:
-    """Transliterate Unicode working to ASCII; anything unknown becomes ``?``.
+    """Transliterate Unicode working to ASCII; anything unknown, and any control character
+    but tab and newline (:data:`UNSAFE`), becomes ``?``.
 
     >>> ascii_text("p₀ = 2Δy - Δx = 2·4 - 8 ≥ 0")
     'p0 = 2dy - dx = 2*4 - 8 >= 0'
     >>> ascii_text("pₖ₊₁ = pₖ + 2xₖ₊₁ + 1, p1₀ = rₓ²/4, 2ⁿ⁻¹ ≤ r < 2ⁿ, ε = 2⁻³, θₖ")
     'p_{k+1} = p_k + 2x_{k+1} + 1, p1_0 = r_x^2/4, 2^(n-1) <= r < 2^n, eps = 2^-3, theta_k'
+    >>> ascii_text("xₖ + εyₖ, Δx")
+    'x_k + eps y_k, dx'
     """
     if s.isascii():
-        return s
+        return s if s.isprintable() else UNSAFE.sub("?", s)
     s = _SUB_RUN.sub(_sub_ascii, s)
     s = _SUP_RUN.sub(_sup_ascii, s)
-    return "".join(ch if ch.isascii() else _ASCII.get(ch, "?") for ch in s)
+    out = []
+    for i, ch in enumerate(s):
+        word = ch if ch.isascii() else _ASCII.get(ch, "?")
+        if len(word) > 1 and word.isalpha() and s[i + 1 : i + 2].isalpha():
+            word += " "  # ε y as "eps y", never "epsy"
+        out.append(word)
+    return UNSAFE.sub("?", "".join(out))
 
 
 # --- TeX -> Unicode --------------------------------------------------------------------------
@@ -486,6 +533,8 @@ _TEX = {
     "·": r"$\cdot$",
     "×": r"$\times$",
     "→": r"$\to$",
+    "↑": r"$\uparrow$",
+    "↓": r"$\downarrow$",
     "≈": r"$\approx$",
     "²": r"$^2$",
     "³": r"$^3$",
@@ -525,17 +574,27 @@ _TEX_SPECIAL = {
 def tex_text(s: str) -> str:
     """Escape text for LaTeX, turning known Unicode symbols into math.
 
+    Every TeX special character is escaped (``^`` too, so no ``^^2f`` can spell a character),
+    a run of hyphens keeps every hyphen (``--algo`` is never an en dash), and control
+    characters become ``?`` as any character TeX's fonts lack does.
+
     >>> tex_text("p_k >= 0 chooses NE; 50% of Δx")
     'p\\\\_k \\\\textgreater{}= 0 chooses NE; 50\\\\% of $\\\\Delta$x'
+    >>> tex_text("--algo dda ^^2f")
+    '-{}-algo dda \\\\textasciicircum{}\\\\textasciicircum{}2f'
     """
     out = []
-    for ch in s:
-        if ch in _TEX_SPECIAL:
+    for i, ch in enumerate(s):
+        if ch == "-" and s[i + 1 : i + 2] == "-":
+            out.append("-{}")
+        elif ch in _TEX_SPECIAL:
             out.append(_TEX_SPECIAL[ch])
         elif ch in _TEX:
             out.append(_TEX[ch])
-        elif ch.isascii():
+        elif ch.isascii() and ch.isprintable():
             out.append(ch)
+        elif ch in "\t\n":
+            out.append(" ")
         else:
             out.append("?")
     return "".join(out)

@@ -23,6 +23,7 @@ from collections.abc import Iterator
 from itertools import chain, islice
 
 from ..core.records import Solution
+from ..core.working import json_visible
 from .cells import json_value, note_unicode
 
 
@@ -148,7 +149,7 @@ def render_json(solution: Solution) -> Iterator[str]:
         "columns": [c.key for c in solution.columns],
     }
     head.update({k: json_value(v) for k, v in solution.data.items()})
-    yield d(head, ensure_ascii=False)[:-1] + ',\n "steps": [\n'
+    yield json_visible(d(head, ensure_ascii=False))[:-1] + ',\n "steps": [\n'
     has_p, has_decision = solution.has_p, solution.has_decision
     keys = solution.extra_keys
     first = True
@@ -182,7 +183,7 @@ def _tables_json(solution: Solution) -> Iterator[str]:
     d = json.dumps
     yield ',\n "tables": ['
     for n, t in enumerate(solution.tables):
-        title = d(t.title, ensure_ascii=False)
+        title = json_visible(d(t.title, ensure_ascii=False))
         columns = d([c.key for c in t.columns], ensure_ascii=False)
         yield f'{", " if n else ""}{{"title": {title}, "columns": {columns}, "rows": ['
         encode = json.JSONEncoder(ensure_ascii=False).encode  # once: 2**24 rows at most
@@ -192,7 +193,7 @@ def _tables_json(solution: Solution) -> Iterator[str]:
                 text = encode(batch)[1:-1]
             else:
                 text = ", ".join(encode([json_value(v) for v in row]) for row in batch)
-            yield sep + text
+            yield sep + json_visible(text)
             sep = ", "
         yield "]}"
     yield "]"

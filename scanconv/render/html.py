@@ -56,7 +56,7 @@ from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution, Table, step_getter
 from . import Notice, Options, stepper
 from .cells import cell, numeric_column
-from .mathml import esc, json_script, note_html, tex_math
+from .mathml import esc, json_script, note_html, prose_html, tex_math
 from .stepgrid import figure_svg, legend, step_grid
 from .stepper import column_label, stepping
 
@@ -127,7 +127,7 @@ def _table(
         for j, t in enumerate(texts):
             widths[j] = max(widths[j], len(t))
         tds = "".join(
-            f'<td class="sc-num">{esc(t)}</td>' if r else f"<td>{esc(t)}</td>"
+            f'<td class="sc-num">{prose_html(t)}</td>' if r else f"<td>{prose_html(t)}</td>"
             for t, r in zip(texts, right, strict=False)
         )
         lines.append(f"<tr{attrs}>{tds}</tr>")

@@ -1,21 +1,26 @@
 """The ``latex`` format: a fragment to ``\\input`` into a document.
 
-Needs ``\\usepackage{booktabs,amsmath,longtable}`` in the preamble (the fragment says so in
-its first line). The table is written by hand rather than with tabulate's ``latex_booktabs``,
-which escapes ``$`` and ``_`` and so breaks math headings; every cell that holds a number is
-set in math mode so minus signs are real minus signs, and every text cell is escaped.
+Needs ``\\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}`` in the preamble (the
+fragment says so in its first line, then defines ``\\scneed`` if the document has not). The
+table is written by hand rather than with tabulate's ``latex_booktabs``, which escapes ``$``
+and ``_`` and so breaks math headings; a cell that is one of scanconv's numbers or points
+(:func:`math_cell`) is set in math mode so minus signs are real minus signs, and every other
+cell is escaped text (a student's file name can never reach math mode), its formulas in the
+ASCII notation (``x^2``) set as math (:func:`prose_tex`).
 
-Tables are ``longtable`` s, so a long line's table continues on the next page (with its
-heading repeated) instead of running off the bottom of the page. Each plotted pixel is its own
-``$...$``, so the pixel list breaks between pixels (TeX does not break math after a comma).
-The pixel list is set ragged-right (long unbreakable pixels would overfill justified lines).
-Wide tables and grids are set tighter or smaller so they fit an article's text width; a table
-too wide even in ``\\scriptsize`` (the circle's 9-column symmetry table) is set in parts of its
-columns, each part repeating the first column.
+Tables stay whole where they can: a short table (:data:`KEEP_ROWS`) is a ``tabular`` and its
+heading makes room for it on the page (``\\scneed``); a longer one is a ``longtable`` that
+continues on the next page with its heading repeated. A table too wide for the text width has
+its long text columns wrapped (a comparison's sentences) or, when short, is scaled to the
+width; only a long table too wide even in ``\\scriptsize`` is set in parts of its columns,
+each repeating the first column. Each plotted pixel is its own ``$...$``, so the pixel list
+breaks between pixels, ragged-right. The pixel grid and the answer's figures are drawn with
+TikZ (:mod:`scanconv.render.tikz`); a figure too large to draw stays a typewriter picture.
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Iterator, Sequence
 from itertools import chain, islice
 
@@ -23,16 +28,75 @@ from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
 from ..core.working import tex_text
 from . import Notice, Options
-from .cells import note_segments, numeric_column, wrap_items
-from .text import Rows, all_tables, figure_lines, pixel_count
+from .cells import note_segments, numeric_column, prose_math, wrap_items
+from .grid import too_large
+from .text import Rows, all_tables, figure_text, grid_block, pixel_count
+from .tikz import tikz_figure, tikz_grid
+
+_MATH_CELL = re.compile(r"(?=[-(0-9])(?:[-+*/(), ]|[0-9]+(?:\.[0-9]+)?|sqrt|[a-z]{1,2}(?![a-z.]))+")
+r"""What scanconv writes for a number, a point or an exact value: ``-3``, ``2.500``, ``34/27``,
+``(3, -4)``, ``(0.500, 1.000)``, ``-1 + 3*sqrt(2)/2``, ``(xc + x, yc - y)``: digits, operators,
+``sqrt`` and one- or two-letter names. Only such a cell is set in math mode (where a ``\``,
+``{``, ``^`` or ``_`` could never reach); any other text is escaped."""
+
+
+def math_cell(text: str) -> bool:
+    r"""Whether a cell is a number or a point that scanconv wrote (set in math mode, its
+    minus signs real minus signs); any other text, a student's file name above all, is text.
+
+    >>> math_cell("-3"), math_cell("(0.5, 1/2)"), math_cell("(xc - y, -1 + sqrt(2))")
+    (True, True, True)
+    >>> math_cell("0\\input{x}.csv"), math_cell("0(abc).csv"), math_cell("0 a.csv")
+    (False, False, False)
+    """
+    return _MATH_CELL.fullmatch(text) is not None
 
 
 def _cell(text: str) -> str:
+    r"""A table cell: a number or point in math mode, anything else escaped as text.
+
+    >>> _cell("-"), _cell("-2.500"), _cell(r"0\input{^^2fetc}.csv")
+    ('--', '$-2.500$', '0\\textbackslash{}input\\{\\textasciicircum{}\\textasciicircum{}2fetc\\}.csv')
+    """
     if text == "-":
         return "--"
-    if text and (text[0].isdigit() or text[0] in "-(") and text.isascii():
+    if math_cell(text):
         return f"${text}$"
-    return tex_text(text)
+    return prose_tex(text)
+
+
+def prose_tex(text: str) -> str:
+    r"""Text in LaTeX: escaped, the formulas written in it in the ASCII notation
+    (:func:`~scanconv.render.cells.prose_math`) in math mode; a ``$`` is only text.
+
+    >>> prose_tex("Centre: x^2 + y^2 = r^2, $5")
+    'Centre: $x^2$ + $y^2$ = $r^2$, \\$5'
+    """
+    return "".join(f"${t}$" if math else tex_text(t) for math, t in prose_math(text))
+
+
+NEED = r"""\makeatletter
+\providecommand{\scneed}[1]{\par\penalty-100\begingroup\setlength{\dimen@}{#1}%
+\vskip\z@\@plus\dimen@\penalty-100\vskip\z@\@plus-\dimen@\vskip\dimen@
+\penalty9999\vskip-\dimen@\vskip\z@skip\endgroup}
+\makeatother
+"""
+r"""``\scneed{h}``: a page break here unless ``h`` of the page is left (needspace's way):
+a table's heading never ends a page without its table."""
+
+KEEP_ROWS = 15
+"""A table of at most this many rows starts on the next page rather than be split; a longer
+one starts where it is, with at least a few rows under its heading."""
+
+
+def _heading(title: str, rows: int) -> str:
+    r"""A table's heading, kept with its table (or its first rows).
+
+    >>> print(_heading("Step table", 2), end="")
+    \scneed{71pt}\paragraph{Step table}\mbox{}\\[1ex]
+    """
+    need = 45 + 13 * (rows if rows <= KEEP_ROWS else 5)
+    return f"\\scneed{{{need}pt}}\\paragraph{{{tex_text(title)}}}\\mbox{{}}\\\\[1ex]\n"
 
 
 TEXT_WIDTH = 345
@@ -125,14 +189,38 @@ def _heading_chars(column: Column) -> float:
     return len(column.text.translate(_MARKUP)) + ops
 
 
+RESIZE_ROWS = 40
+"""A table too wide for the page with at most this many rows is set whole, scaled to the
+text width (it fits on a page); a longer one is set in parts of its columns."""
+
+WRAP_CHARS = 24
+"""A text column with a cell longer than this is set as a paragraph column that wraps."""
+
+
 def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
-    """One table, or several of its columns each when it is too wide for the page."""
+    """One table, whole whenever it can be: in the largest type that fits the text width;
+    with its long text columns wrapped (a comparison's sentences) rather than set smaller
+    than ``\\small``; scaled down to the text
+    width when it has at most :data:`RESIZE_ROWS` rows; only a long table too wide for the
+    page is set in parts of its columns, each part repeating the first column."""
     first = rows()
     head = list(islice(first, _SAMPLE_ROWS))
     parts = split_columns(columns, head)
+    small = parts[0][1][0] in ("\\footnotesize", "\\scriptsize", "\\tiny")
+    wrapped = wrap_spec(columns, head) if len(parts) > 1 or small else None
+    if wrapped is not None:
+        yield _heading(title, len(head))
+        yield from _tabular(columns, ("\\small", True), chain(head, first), wrapped)
+        yield "\n"
+        return
+    if (len(parts) > 1 or parts[0][1] == _TINY) and len(head) <= RESIZE_ROWS:
+        yield _heading(title, len(head))
+        yield from resized(columns, head)
+        yield "\n"
+        return
     for n, (part, layout) in enumerate(parts, 1):
         label = title if len(parts) == 1 else f"{title}, part {n} of {len(parts)}"
-        yield f"\\paragraph{{{tex_text(label)}}}\\mbox{{}}\\\\[1ex]\n"
+        yield _heading(label, len(head))
         if len(parts) == 1:  # the whole table: the rows already started, read on
             yield from _tabular(columns, layout, chain(head, first))
         else:  # each part reads the rows afresh, keeping its own columns
@@ -141,18 +229,76 @@ def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
         yield "\n"
 
 
-def _tabular(columns: Sequence[Column], layout: Layout, rows: Iterable[list[str]]) -> Iterator[str]:
-    """A longtable of every row in ``rows``, in the font size and spacing of ``layout``."""
+def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | None:
+    """The column spec of a table whose long text columns wrap (``p`` columns sharing the
+    width the other columns leave, at ``\\small`` with 3pt gaps), or ``None`` if no text
+    column is long enough to wrap or the rest would not fit.
+
+    >>> from scanconv.core.records import Column
+    >>> cols = [Column("point", "point", ""), Column("work", "DDA", "")]
+    >>> wrap_spec(cols, [["speed", "slower"]]) is None
+    True
+    >>> wrap_spec(cols, [["error", "round-off accumulates along the line, and more"]])
+    'l>{\\\\raggedright\\\\arraybackslash}p{300.6pt}'
+    """
+    longest = [max((len(r[i]) for r in rows), default=0) for i in range(len(columns))]
+    wrap = [
+        n > WRAP_CHARS and any(not math_cell(r[i]) for r in rows) for i, n in enumerate(longest)
+    ]
+    if not any(wrap):
+        return None
+    fixed = sum(
+        4.4 * max(n, _heading_chars(c)) + 6
+        for c, n, w in zip(columns, longest, wrap, strict=True)
+        if not w
+    )
+    room = 0.97 * TEXT_WIDTH - fixed - 6 * sum(wrap)
+    total = sum(n for n, w in zip(longest, wrap, strict=True) if w)
+    if room < 60 * sum(wrap):
+        return None
+    return "".join(
+        f">{{\\raggedright\\arraybackslash}}p{{{room * n / total:.1f}pt}}"
+        if w
+        else ("r" if all(math_cell(r[i]) or r[i] == "-" for r in rows) else "l")
+        for i, (n, w) in enumerate(zip(longest, wrap, strict=True))
+    )
+
+
+def resized(columns: Sequence[Column], rows: Iterable[list[str]]) -> Iterator[str]:
+    """A short table too wide for the page, whole, scaled to the text width (needs
+    ``graphicx``)."""
     spec = "".join("r" if numeric_column(c) else "c" for c in columns)
-    size, tight = layout
-    group = bool(size or tight)
-    if group:
-        yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
-    yield f"\\begin{{longtable}}{{{spec}}}\n\\toprule\n"
-    yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n\\endhead\n"
+    yield f"\\noindent\\resizebox{{\\linewidth}}{{!}}{{\\begin{{tabular}}{{{spec}}}\n\\toprule\n"
+    yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n"
     for r in rows:
         yield " & ".join(_cell(c) for c in r) + " \\\\\n"
-    yield "\\bottomrule\n\\end{longtable}\n" + ("}\n" if group else "")
+    yield "\\bottomrule\n\\end{tabular}}\\par\n"
+
+
+def _tabular(
+    columns: Sequence[Column], layout: Layout, rows: Iterable[list[str]], spec: str = ""
+) -> Iterator[str]:
+    """Every row in ``rows`` in the font size and spacing of ``layout``: a ``tabular``, which
+    never breaks, when there are at most :data:`KEEP_ROWS` rows (its heading has made room
+    for it), else a ``longtable`` that continues on the next page with its heading."""
+    spec = spec or "".join("r" if numeric_column(c) else "c" for c in columns)
+    it = iter(rows)
+    head = list(islice(it, KEEP_ROWS + 1))
+    short = len(head) <= KEEP_ROWS
+    size, tight = layout
+    yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
+    if short:
+        yield f"\\par\\centering\\begin{{tabular}}{{{spec}}}\n\\toprule\n"
+        yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n"
+    else:
+        yield f"\\begin{{longtable}}{{{spec}}}\n\\toprule\n"
+        yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n\\endhead\n"
+    for r in chain(head, it):
+        yield " & ".join(_cell(c) for c in r) + " \\\\\n"
+    if short:
+        yield "\\bottomrule\n\\end{tabular}\\par\\medskip}\n"
+    else:
+        yield "\\bottomrule\n\\end{longtable}\n}\n"
 
 
 #: Font sizes for the verbatim grid by the widest line (characters) that fits an article's
@@ -196,7 +342,8 @@ def note_tex(note: str) -> str:
 
 def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]:
     """The worked solution as a LaTeX fragment."""
-    yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable}\n"
+    yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}\n"
+    yield NEED
     yield f"\\subsection*{{{tex_text(solution.title)}}}\n\n"
     if solution.given:
         yield "\\paragraph{Given} " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
@@ -217,13 +364,39 @@ def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]
         for line in wrap_items(f"${fmt_pixel(p)}$" for p in solution.pixels()):
             yield line + "\n"
         yield "\\par}\n"
-    lines, notices = figure_lines(solution, options)
-    if max((len(line) for line in lines), default=0) > _GRID_SIZES[-1][0]:
-        lines, notices = figure_lines(solution, options, compact=True)
-    yield from notices
+    yield from _figures(solution, options)
+
+
+def _figures(solution: Solution, options: Options) -> Iterator[str | Notice]:
+    """The pixel grid drawn with TikZ (:mod:`scanconv.render.tikz`), then the answer's own
+    figures (a two-set pixel figure, an image's grey levels) drawn too; a figure too large
+    to draw stays a typewriter picture, and the grid is left out with a notice saying why."""
+    drawn = None
+    if options.grid and solution.pixels is not None and not too_large(solution.bbox):
+        drawn = tikz_grid(solution, options.origin)
+    if drawn is not None:
+        yield drawn
+    else:
+        chunks = list(grid_block(solution, options))
+        lines = [c for c in chunks if isinstance(c, str)]
+        if max((len(line) for line in lines), default=0) > _GRID_SIZES[-1][0]:
+            lines = [c for c in grid_block(solution, options, compact=True) if isinstance(c, str)]
+        yield from (c for c in chunks if isinstance(c, Notice))
+        yield from _verbatim(lines)
+    if options.grid:
+        for figure in solution.figures:
+            picture = tikz_figure(figure, options.origin)
+            if picture is None:
+                yield from _verbatim(figure_text(figure, options.origin))
+            else:
+                yield picture
+
+
+def _verbatim(lines: Sequence[str]) -> Iterator[str]:
+    """A typewriter picture in a minipage (never split across a page), set small enough to
+    fit the text width."""
     lines = [part for line in lines for part in _wrap_key(line)]
     if lines:
-        # In a minipage the grid is never split across a page (its axis on the next one).
         size = grid_size(lines)
         yield "\n\\noindent\\begin{minipage}{\\linewidth}\n" + (f"{size}\n" if size else "")
         yield "\\begin{verbatim}\n"

@@ -2,7 +2,9 @@
 
 Every text cell that a spreadsheet would read as a formula (starting with ``=``, ``+``, ``-``,
 ``@``, a tab or a carriage return: a student's file name can be anything) is prefixed with
-``'``, the usual neutralisation; numbers stay numbers.
+``'``, the usual neutralisation; numbers stay numbers. Control characters and bidirectional
+overrides are shown as U+FFFD (:func:`~scanconv.core.working.visible`): a terminal that shows
+the CSV runs no escape sequence.
 """
 
 from __future__ import annotations
@@ -11,6 +13,8 @@ import csv
 import io
 import json
 from collections.abc import Iterable, Iterator
+
+from ..core.working import json_visible, visible
 
 HEADER = ("name", "score", "out_of", "first_error", "diagnosis")
 
@@ -23,7 +27,7 @@ def neutral(text: str) -> str:
     >>> neutral("=HYPERLINK(1)"), neutral("-2"), neutral("alice.csv")
     ("'=HYPERLINK(1)", "'-2", 'alice.csv')
     """
-    text = " ".join(text.splitlines()) if "\n" in text or "\r" in text[1:] else text
+    text = visible(text)
     return "'" + text if text.startswith(_FORMULA) else text
 
 
@@ -58,10 +62,10 @@ def batch_json(rows: Iterable[ScoreRow], question: str) -> Iterator[str]:
       {"name": "a.csv", "score": 9, "out_of": 9, "first_error": "", "diagnosis": ""}
     ]}
     """
-    yield f'{{"question": {json.dumps(question, ensure_ascii=False)}, "students": ['
+    yield f'{{"question": {json_visible(json.dumps(question, ensure_ascii=False))}, "students": ['
     first = True
     for row in rows:
         obj = dict(zip(HEADER, row, strict=True))
-        yield ("\n  " if first else ",\n  ") + json.dumps(obj, ensure_ascii=False)
+        yield ("\n  " if first else ",\n  ") + json_visible(json.dumps(obj, ensure_ascii=False))
         first = False
     yield "\n]}\n"

@@ -15,15 +15,14 @@ import json
 import re
 from typing import Any
 
+from ..core.working import UNSAFE as _CONTROLS
 from ..core.working import tex_to_unicode
-from .cells import note_segments
-
-_CONTROLS = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+from .cells import note_segments, prose_math
 
 
 def esc(text: str) -> str:
     """Text for HTML content and quoted attributes: escaped, control characters (a terminal
-    escape sequence in a title) shown as U+FFFD.
+    escape sequence in a title) and bidirectional overrides shown as U+FFFD.
 
     >>> esc('<b title="x">\x1b[2J & co')
     '&lt;b title=&quot;x&quot;&gt;\ufffd[2J &amp; co'
@@ -106,10 +105,11 @@ def tex_math(tex: str, display: bool = False) -> str:
     >>> "&lt;b&gt;" in tex_math(r"\\text{<b>}")
     True
     """
+    typed: list[str] = []
     try:
         from latex2mathml.converter import convert
 
-        markup = convert(_TEXT_EDGES.sub(_keep_spaces, tex))
+        markup = convert(_TEXT_EDGES.sub(_keep_spaces, _typed_out(tex, typed)))
     except Exception:  # latex2mathml raises many kinds on TeX it does not know
         try:
             text = tex_to_unicode(tex)
@@ -124,7 +124,41 @@ def tex_math(tex: str, display: bool = False) -> str:
     )
     if display:  # set like display math, but left-aligned in its list item
         markup = markup.replace(' display="inline">', ' display="inline" displaystyle="true">', 1)
-    return _safe_mathml(markup)
+    markup = _safe_mathml(markup)
+    for n, text in enumerate(typed):  # each typed text back, escaped, as its own <mtext>
+        typed_text = f'<mtext mathvariant="monospace">{esc(text)}</mtext>'
+        markup = markup.replace(f"<mtext>{_TYPED}{n}</mtext>", typed_text, 1)
+    return markup
+
+
+_TYPED = "scTyped"
+r"""The name a ``\texttt{...}`` group stands as while latex2mathml converts the rest (it
+would close the group at the first ``}`` of an escape such as ``\textless{}``)."""
+
+
+def _typed_out(tex: str, typed: list[str]) -> str:
+    r"""``tex`` with each ``\texttt{...}`` group (a formula the user typed, escaped by
+    :func:`~scanconv.core.working.tex_text`) replaced by a placeholder name; the group's
+    text, read back (``\textless{}`` is ``<``), is appended to ``typed``.
+
+    >>> typed = []
+    >>> _typed_out(r"f = \texttt{t \# \textless{}b\textgreater{}} + 1", typed), typed
+    ('f = \\text{scTyped0} + 1', ['t # <b>'])
+    """
+    out = []
+    i = 0
+    while (start := tex.find("\\texttt{", i)) >= 0:
+        depth, j = 0, start + len("\\texttt")
+        while j < len(tex):
+            if tex[j - 1] != "\\":
+                depth += {"{": 1, "}": -1}.get(tex[j], 0)
+            j += 1
+            if depth == 0:
+                break
+        out.append(tex[i:start] + f"\\text{{{_TYPED}{len(typed)}}}")
+        typed.append(tex_to_unicode("\\text{" + tex[start + len("\\texttt{") : j - 1] + "}"))
+        i = j
+    return "".join(out) + tex[i:]
 
 
 _TEXT_EDGES = re.compile(r"\\text\{( *)([^{}]*?)( *)\}")
@@ -150,6 +184,16 @@ def note_html(note: str) -> str:
     return "".join(
         tex_math(part) if is_math else esc(part) for is_math, part in note_segments(note)
     )
+
+
+def prose_html(text: str) -> str:
+    """A text cell: escaped, the formulas written in it in the ASCII notation
+    (:func:`~scanconv.render.cells.prose_math`) as MathML; a ``$`` is only text.
+
+    >>> prose_html("x^2 < 1")[:5], prose_html("x^2 < 1")[-7:]
+    ('<math', ' &lt; 1')
+    """
+    return "".join(tex_math(part) if is_math else esc(part) for is_math, part in prose_math(text))
 
 
 def json_script(data: Any, cls: str = "sc-data") -> str:

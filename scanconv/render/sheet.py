@@ -2,7 +2,7 @@
 
 :func:`sheet_document` renders a whole sheet in memory (so nothing is written when a question
 turns out bad) in ``markdown``, ``plain``, ``latex`` (a fragment, or a complete document with
-``standalone``: a page per question), ``json`` and ``html``. A key is each question's number,
+``standalone``; written by :mod:`scanconv.render.sheet_latex`), ``json`` and ``html``. A key is each question's number,
 marks, wording and command line, then its full worked answer, as the single-answer renderers
 write it. A worksheet is the question in words, the given values and, for each table of the
 answer, an empty table with the answer's columns and number of rows (the ``k`` column, which
@@ -22,9 +22,10 @@ from collections.abc import Iterator, Sequence
 from typing import NamedTuple
 
 from ..core.records import Column, Solution
-from ..core.working import ascii_text, tex_text
+from ..core.working import ascii_text, json_visible, visible
 from . import Notice, Options
 from .cells import numeric_column
+from .text import md_text
 
 
 class Question(NamedTuple):
@@ -104,7 +105,9 @@ def sheet_document(
     if fmt == "html":
         return _html(sheet, answered, kind, notices)
     if fmt == "latex":
-        writer = _latex
+        from .sheet_latex import latex_sheet
+
+        writer = latex_sheet
     elif fmt in ("markdown", "plain"):
         writer = _markdown if fmt == "markdown" else _plain
     else:
@@ -236,18 +239,6 @@ def _blank_rows(blank: Blank) -> Iterator[list[str]]:
 
 # --- markdown and plain -------------------------------------------------------------------------
 
-_MD_SPECIAL = re.compile(r"([\\`*_{}\[\]<>#|$~^&])")
-
-
-def md_text(text: str) -> str:
-    """User text made literal in Markdown (pandoc's and GitHub's): every character that could
-    start markup, math, a table cell or raw HTML is backslash-escaped.
-
-    >>> md_text("A | B <script> *x* $1")
-    'A \\\\| B \\\\<script\\\\> \\\\*x\\\\* \\\\$1'
-    """
-    return _MD_SPECIAL.sub(r"\\\1", " ".join(text.split()))
-
 
 def md_code(text: str) -> str:
     """``text`` as an inline code span, fenced with more backticks than it holds.
@@ -258,7 +249,7 @@ def md_code(text: str) -> str:
     runs = [len(r) for r in re.findall(r"`+", text)]
     fence = "`" * (max(runs, default=0) + 1)
     pad = " " if runs or text.startswith("`") else ""
-    return f"{fence}{pad}{text}{pad}{fence}"
+    return f"{fence}{pad}{visible(text)}{pad}{fence}"
 
 
 def _levels(sheet: Sheet) -> tuple[int, int]:
@@ -290,7 +281,7 @@ def _markdown(
 
     section_level, level = _levels(sheet)
     if sheet.title:
-        yield f"# {md_text(sheet.title)}\n\n{_intro(sheet, kind)}\n\n"
+        yield f"# {md_text(' '.join(sheet.title.split()))}\n\n{_intro(sheet, kind)}\n\n"
     section = ""
     for a in answered:
         q = a.question
@@ -377,80 +368,7 @@ def _plain(
                 yield "Answer:\n" + "\n" * 6
 
 
-# --- latex ------------------------------------------------------------------------------------
-
-PREAMBLE = r"""\documentclass[a4paper]{article}
-\usepackage[margin=25mm]{geometry}
-\usepackage{booktabs,amsmath,longtable,array}
-\setlength{\parindent}{0pt}
-\emergencystretch=3em
-\tolerance=2000
-\begin{document}
-"""
-
-
-def _tex_command(command: str) -> str:
-    r"""A command line in typewriter type, breakable at its spaces.
-
-    >>> _tex_command("scanconv sample 'x_1 % 2'")
-    "{\\raggedright\\ttfamily scanconv sample 'x\\_1 \\% 2'\\par}"
-    """
-    return "{\\raggedright\\ttfamily " + tex_text(command) + "\\par}"
-
-
-def _latex(
-    sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
-) -> Iterator[str | Notice]:
-    if standalone:
-        yield PREAMBLE
-    else:
-        yield "% scanconv sheet; needs \\usepackage{booktabs,amsmath,longtable,array}\n"
-    if sheet.title:
-        yield f"\\section*{{\\raggedright {tex_text(' '.join(sheet.title.split()))}}}\n"
-        yield f"{_intro(sheet, kind)}\n\n"
-    section = ""
-    for n, a in enumerate(answered):
-        q = a.question
-        with _Guard(sheet, q):
-            if n:
-                yield "\n\\clearpage\n"
-            if q.section and q.section != section:
-                section = q.section
-                yield f"\\section*{{\\raggedright {tex_text(section)}}}\n"
-            yield f"\\subsection*{{Question {q.number}{_marks(q.marks)}}}\n"
-            if kind == "key":
-                if q.wording:
-                    yield f"\\emph{{{tex_text(q.wording)}}}\\par\\medskip\n"
-                yield _tex_command(q.command) + "\n\n"
-                for chunk in _answer_chunks(a, "latex"):
-                    if isinstance(chunk, str) and chunk.startswith("% scanconv answer"):
-                        continue
-                    if isinstance(chunk, str) and chunk.startswith("\\subsection*{"):
-                        chunk = "\\subsubsection*{" + chunk[len("\\subsection*{") :]
-                    yield chunk
-                continue
-            yield tex_text(wording(a)) + "\\par\\medskip\n"
-            if a.solution.given:
-                given = ", ".join(f"${g.tex}$" for g in a.solution.given)
-                yield f"\\paragraph{{Given}} {given}\n\n"
-            blanks = _blank_tables(a.solution)
-            for blank in blanks:
-                yield from _latex_blank(blank)
-            if not blanks:
-                yield "\\paragraph{Answer}\\mbox{}\\\\[1ex]\n\\vspace*{12\\baselineskip}\n"
-    if standalone:
-        yield "\\end{document}\n"
-
-
-def _tex_label(text: str) -> str:
-    r"""A row label in LaTeX: a number in math, a word as text.
-
-    >>> _tex_label("-3"), _tex_label("KB_2")
-    ('$-3$', 'KB\\_2')
-    """
-    if text[:1].isdigit() or text[:1] in ("-", "("):
-        return f"${text}$"
-    return tex_text(text)
+# --- latex: scanconv.render.sheet_latex ---------------------------------------------------
 
 
 def _room(chars: int) -> int:
@@ -460,36 +378,6 @@ def _room(chars: int) -> int:
     (5, 15)
     """
     return max(5, chars + (chars + 1) // 2)
-
-
-def _latex_blank(blank: Blank) -> Iterator[str]:
-    """An empty table, ruled for writing in: each column as wide as its widest answer cell
-    (and a little more), split into parts of columns as the key's table is when too wide."""
-    from .latex import split_columns
-
-    room = [_room(w) for w in blank.widths]
-    sample = [["0" * (r + 2) for r in room]]  # the space to write in, the rules
-    parts = split_columns(blank.columns, sample)
-    for n, (part, (size, tight)) in enumerate(parts, 1):
-        label = blank.title if len(parts) == 1 else f"{blank.title}, part {n} of {len(parts)}"
-        yield f"\\paragraph{{{tex_text(label)}}}\\mbox{{}}\\\\[1ex]\n"
-        cols = [blank.columns[i] for i in part]
-        widths = [room[i] for i in part]
-        group = bool(size or tight)
-        if group:
-            yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
-        spec = "|" + "|".join("c" for _ in cols) + "|"
-        yield f"\\begin{{longtable}}{{{spec}}}\n\\hline\n"
-        yield " & ".join(f"${c.tex}$" for c in cols) + " \\\\\n\\hline\n\\endhead\n"
-        for row in _blank_rows(blank):
-            cells = [
-                "\\rlap{" + _tex_label(row[i]) + f"}}\\hphantom{{{'0' * w}}}"
-                if j == 0 and row[i]
-                else f"\\rule[-2.5mm]{{0pt}}{{8mm}}\\hphantom{{{'0' * w}}}"
-                for j, (i, w) in enumerate(zip(part, widths, strict=True))
-            ]
-            yield " & ".join(cells) + " \\\\\n\\hline\n"
-        yield "\\end{longtable}\n" + ("}\n" if group else "")
 
 
 # --- json ---------------------------------------------------------------------------------------
@@ -526,7 +414,7 @@ def _json(sheet: Sheet, answered: Sequence[Answered], kind: str) -> str:
         "total_marks": sheet.total_marks,
         "questions": questions,
     }
-    return json.dumps(document, ensure_ascii=False, indent=1) + "\n"
+    return json_visible(json.dumps(document, ensure_ascii=False, indent=1)) + "\n"
 
 
 # --- html ---------------------------------------------------------------------------------------
@@ -550,7 +438,7 @@ def _html(sheet: Sheet, answered: Sequence[Answered], kind: str, notices: list[s
     """The sheet as one self-contained HTML page: every text from the question file and every
     value escaped; a page break before each question when printed. The key's answers are the
     stepping answers of :mod:`scanconv.render.html` (each with its own stepper)."""
-    from html import escape
+    from .mathml import esc as escape
 
     title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
     style = f"<style>\n{_SHEET_CSS}</style>\n"
@@ -606,7 +494,7 @@ def _html(sheet: Sheet, answered: Sequence[Answered], kind: str, notices: list[s
 
 def _html_blank(a: Answered) -> Iterator[str]:
     """A worksheet question's given values and empty tables, in HTML."""
-    from html import escape
+    from .mathml import esc as escape
 
     if a.solution.given:
         given = ", ".join(escape(g.text) for g in a.solution.given)

@@ -29,6 +29,7 @@ from rich.text import Text
 
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
+from ..core.working import visible
 from . import Notice, Options
 from . import grid as gridmod
 from .cells import marks_label, note_unicode, numeric_column, unicode_heading, wrap_items
@@ -111,7 +112,7 @@ def wrap_text(text: str, width: int, indent: str = "", first: str = "") -> list[
 def render_rich(solution: Solution, options: Options) -> Iterator[Any]:
     """The worked solution as rich renderables, every line at most ``options.width`` wide."""
     width = options.width or DEFAULT_WIDTH
-    for line in wrap_text(solution.title, width, "  "):
+    for line in wrap_text(visible(solution.title), width, "  "):
         yield Text(line, style="bold underline")
     yield Text("")
     if not options.brief:
@@ -145,7 +146,9 @@ def _derivation(solution: Solution, width: int) -> Iterator[Text]:
     if solution.notes:
         yield Text("Notes:", style="bold")
         for note in solution.notes:
-            for line in wrap_text(unicode_heading(note_unicode(note)), width, "    ", "  - "):
+            for line in wrap_text(
+                visible(unicode_heading(note_unicode(note))), width, "    ", "  - "
+            ):
                 yield Text(line)
         yield Text("")
 

@@ -16,10 +16,18 @@ from itertools import islice
 
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Figure, ShadedMatrix, Solution, Table, step_getter
-from ..core.working import ascii_text
+from ..core.working import ascii_text, visible
 from . import Notice, Options
 from . import grid as gridmod
-from .cells import cell, marks_label, note_unicode, numeric_column, wrap_items
+from .cells import (
+    cell,
+    marks_label,
+    note_segments,
+    note_unicode,
+    numeric_column,
+    prose_math,
+    wrap_items,
+)
 from .shade import matrix_lines
 
 BUFFER_ROWS = 1000
@@ -62,16 +70,14 @@ def table_lines(
             return c.rjust(widths[i])
         return c.center(widths[i])
 
-    def line(cells: Sequence[str]) -> str:
+    def line(cells: Sequence[str], escape: Callable[[str], str] = md_cell) -> str:
         if markdown:
             if streaming:
-                return "| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |"
-            return (
-                "| " + " | ".join(pad(c.replace("|", "\\|"), i) for i, c in enumerate(cells)) + " |"
-            )
+                return "| " + " | ".join(escape(c) for c in cells) + " |"
+            return "| " + " | ".join(pad(escape(c), i) for i, c in enumerate(cells)) + " |"
         return "  ".join(pad(c, i) for i, c in enumerate(cells)).rstrip()
 
-    yield line(headers)
+    yield line(headers, _md_heading)
     if markdown:
         yield (
             "|"
@@ -87,6 +93,23 @@ def table_lines(
         yield line(r)
     for r in it:
         yield line(r)
+
+
+def md_cell(text: str) -> str:
+    """A Markdown table cell: a blank cell (a worksheet's room to write) as it is, any other
+    text through :func:`md_text`.
+
+    >>> md_cell("   "), md_cell("a|b*"), md_cell("-3")
+    ('   ', 'a\\\\|b\\\\*', '-3')
+    """
+    if not text.strip():
+        return text
+    return "".join(f"${t}$" if math else md_text(t) for math, t in prose_math(text))
+
+
+def _md_heading(text: str) -> str:
+    """A column heading (``$...$`` math scanconv wrote) in a Markdown table: its ``|`` escaped."""
+    return text.replace("|", "\\|")
 
 
 def _tabulated(
@@ -105,12 +128,9 @@ def _tabulated(
     """
     from tabulate import tabulate
 
-    def escape(cells: Sequence[str]) -> list[str]:
-        return [c.replace("|", "\\|") for c in cells]
-
     table = tabulate(
-        [escape(r) for r in rows],
-        headers=escape(headers),
+        [[md_cell(c) for c in r] for r in rows],
+        headers=[_md_heading(h) for h in headers],
         tablefmt="pipe",
         disable_numparse=True,
         colalign=["right" if r else "center" for r in right],
@@ -227,29 +247,46 @@ def _parts(
         yield part, f"{name}, part {n} of {len(parts)}", ([r[i] for i in part] for r in rows())
 
 
-_MD_INLINE = None
+_MD_SPECIAL = None
+_MD_LINKS = None
 
 
-def md_heading(text: str) -> str:
-    """A title made literal in a Markdown heading: the characters that would start emphasis,
-    code, a link, raw HTML or a table cell are backslash-escaped (a formula such as
-    ``t**2+t**3`` in a title stays a formula).
+def md_text(text: str) -> str:
+    """User text made literal in Markdown (pandoc's ``markdown`` and ``gfm``, GitHub's): the
+    one Markdown escaper. Every character that could start markup, math, a table cell, an
+    entity or raw HTML is backslash-escaped; the ``:`` of ``http://``, the ``.`` of
+    ``www.`` and every ``@`` too, so that no autolink (GFM's bare URLs and e-mail addresses)
+    can swallow the escapes after it; control characters and bidirectional overrides are
+    shown as U+FFFD and line breaks as spaces (:func:`~scanconv.core.working.visible`).
 
-    >>> print(md_heading("x(t) = t**2+t**3 <b>"))
-    x(t) = t\\*\\*2+t\\*\\*3 \\<b\\>
+    >>> print(md_text("x(t) = t**2+t**3 <b> | $1 & a@b.c"))
+    x(t) = t\\*\\*2+t\\*\\*3 \\<b\\> \\| \\$1 \\& a\\@b.c
+    >>> print(md_text("T http://a.b/><img src=x> www.c.d"))
+    T http\\://a.b/\\>\\<img src=x\\> www\\.c.d
     """
     import re
 
-    global _MD_INLINE
-    if _MD_INLINE is None:
-        _MD_INLINE = re.compile(r"([\\`*_\[\]<>~|])")
-    return _MD_INLINE.sub(r"\\\1", text)
+    global _MD_SPECIAL, _MD_LINKS
+    if _MD_SPECIAL is None or _MD_LINKS is None:
+        _MD_SPECIAL = re.compile(r"([\\`*_{}\[\]<>#|$~^&@])")
+        _MD_LINKS = re.compile(r"(?i)(?<=[a-z0-9])(:)(?=/)|(?<![a-z0-9])(www)(\.)")
+    text = _MD_SPECIAL.sub(r"\\\1", visible(text))
+    return _MD_LINKS.sub(lambda m: "\\:" if m.group(1) else m.group(2) + "\\.", text)
+
+
+def note_md(note: str) -> str:
+    """A note in Markdown: its ``$...$`` formulas kept as math, its text escaped.
+
+    >>> print(note_md("$p_k < 0$ chooses E for <b>"))
+    $p_k < 0$ chooses E for \\<b\\>
+    """
+    return "".join(f"${t}$" if math else md_text(t) for math, t in note_segments(note))
 
 
 def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iterator[str | Notice]:
     """Markdown or plain text, one line per chunk."""
     if markdown:
-        yield f"## {md_heading(solution.title)}\n\n"
+        yield f"## {md_text(solution.title)}\n\n"
         if solution.given:
             yield "**Given:** " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
         if solution.derived:
@@ -258,7 +295,7 @@ def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iter
                 yield f"- ${q.tex}$\n"
             yield "\n"
         for i, note in enumerate(solution.notes):
-            yield f"{'>' + chr(10) if i else ''}> {note}\n"
+            yield f"{'>' + chr(10) if i else ''}> {note_md(note)}\n"
         if solution.notes:
             yield "\n"
     else:
@@ -288,7 +325,7 @@ def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iter
             for line in table_lines(
                 [heading(c) for c in part_cols],
                 [numeric_column(c) for c in part_cols],
-                part_rows,
+                part_rows if markdown else ([ascii_text(c) for c in r] for r in part_rows),
                 markdown=markdown,
             ):
                 yield line + "\n"

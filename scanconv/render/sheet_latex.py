@@ -1,0 +1,199 @@
+r"""The LaTeX writer of a sheet (:func:`scanconv.render.sheet.sheet_document` with ``latex``).
+
+A key is each question's number, marks, wording and command line (typewriter type, every
+hyphen kept: an option is never an en dash), then its worked answer as the ``latex`` format
+writes it (tables, the drawn pixel grid). A worksheet is the question, the given values, a
+ruled box for the working, each table of the answer empty (the right shape: its columns and
+rows, the row numbers filled in) and, for a drawing question, the empty pixel grid of the
+answer's extent with its axes numbered.
+
+Pages: a question starts on a new page when what is estimated of its height does not fit in
+what is left of the page (``\scneed``, the ``needspace`` idea), or, for a long question, when
+less than :data:`NEED_SHARE` of a page is left. A grid is never split from its caption, and a table too wide for the
+page is set whole when it can be (:func:`scanconv.render.latex._tables`).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator, Sequence
+
+from ..core.working import tex_text
+from . import Notice
+from .latex import KEEP_ROWS, NEED
+from .sheet import (
+    Answered,
+    Blank,
+    Sheet,
+    _answer_chunks,
+    _blank_rows,
+    _blank_tables,
+    _Guard,
+    _intro,
+    _marks,
+    _room,
+    wording,
+)
+
+PREAMBLE = (
+    r"""\RequirePackage{fix-cm}
+\documentclass[a4paper]{article}
+\usepackage[margin=25mm]{geometry}
+\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}
+\setlength{\parindent}{0pt}
+\emergencystretch=3em
+\tolerance=2000
+"""
+    + NEED
+    + "\\begin{document}\n"
+)
+
+PACKAGES = "booktabs,amsmath,longtable,array,graphicx,tikz"
+"""What a sheet's fragment needs in the preamble."""
+
+TEXT_HEIGHT = 690.0
+"""An A4 page's text height with 25 mm margins, in points."""
+
+NEED_SHARE = 0.45
+"""A question starts on a new page when less than its estimated height is left of the page,
+or less than this share of a page for a question that cannot fit beside another anyway."""
+
+WORKING_LINES = 8
+"""The height of a worksheet's box for the working, in lines."""
+
+
+def tex_command(command: str) -> str:
+    r"""A command line in typewriter type, breakable at its spaces, every hyphen kept.
+
+    >>> tex_command("scanconv sample 'x_1 % 2' --size 4")
+    "{\\raggedright\\ttfamily scanconv sample 'x\\_1 \\% 2' -{}-size 4\\par}"
+    """
+    return "{\\raggedright\\ttfamily " + tex_text(command) + "\\par}"
+
+
+def height(tex: str) -> float:
+    r"""About how tall a question's LaTeX is set, in points: its lines, table rows, list
+    items and pictures (each picture says its height in a ``% height`` comment).
+
+    >>> height("a\\par\nb & c \\\\\n% height 100pt\n")
+    126.0
+    """
+    rows = tex.count("\\\\\n") + tex.count("\\par") + tex.count("\\item")
+    pictures = sum(float(h) for h in re.findall(r"% height ([0-9.]+)pt", tex))
+    return 13.0 * rows + pictures
+
+
+def latex_sheet(
+    sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
+) -> Iterator[str | Notice]:
+    """The sheet in LaTeX: a fragment, or a complete article with ``standalone``."""
+    yield PREAMBLE if standalone else f"% scanconv sheet; needs \\usepackage{{{PACKAGES}}}\n" + NEED
+    if sheet.title:
+        yield f"\\section*{{\\raggedright {tex_text(' '.join(sheet.title.split()))}}}\n"
+        yield f"{_intro(sheet, kind)}\n\n"
+    section = ""
+    for n, a in enumerate(answered):
+        q = a.question
+        with _Guard(sheet, q):
+            body: list[str] = []
+            notices: list[Notice] = []
+            if q.section and q.section != section:
+                section = q.section
+                body.append(f"\\section*{{\\raggedright {tex_text(section)}}}\n")
+            body.append(f"\\subsection*{{Question {q.number}{_marks(q.marks)}}}\n")
+            for chunk in _key(a) if kind == "key" else _worksheet(a):
+                (notices if isinstance(chunk, Notice) else body).append(chunk)  # type: ignore[arg-type]
+            if n:
+                need = min(height("".join(body)) + 60, NEED_SHARE * TEXT_HEIGHT)
+                yield f"\n\\scneed{{{need:.0f}pt}}\n"
+            yield from notices
+            yield "".join(body)
+    if standalone:
+        yield "\\end{document}\n"
+
+
+def _key(a: Answered) -> Iterator[str | Notice]:
+    q = a.question
+    if q.wording:
+        yield f"\\emph{{{tex_text(q.wording)}}}\\par\\medskip\n"
+    yield tex_command(q.command) + "\n\n"
+    for chunk in _answer_chunks(a, "latex"):
+        if isinstance(chunk, str) and chunk.startswith("% scanconv answer"):
+            continue
+        if isinstance(chunk, str) and chunk.startswith("\\subsection*{"):
+            chunk = "\\subsubsection*{" + chunk[len("\\subsection*{") :]
+        yield chunk
+
+
+def _worksheet(a: Answered) -> Iterator[str]:
+    yield tex_text(wording(a)) + "\\par\\medskip\n"
+    if a.solution.given:
+        given = ", ".join(f"${g.tex}$" for g in a.solution.given)
+        yield f"\\paragraph{{Given}} {given}\n\n"
+    blanks = _blank_tables(a.solution)
+    drawing = a.solution.pixels is not None
+    lines = WORKING_LINES if blanks or drawing else 2 * WORKING_LINES
+    yield (
+        "\\paragraph{Working}\\mbox{}\\par\\nopagebreak\n\\noindent\\fbox{\\parbox[t]"
+        f"[{lines}\\baselineskip]{{\\dimexpr\\linewidth-2\\fboxsep-2\\fboxrule\\relax}}{{\\mbox{{}}}}}}"
+        f"\\par\n% height {lines * 12}pt\n"
+    )
+    for blank in blanks:
+        yield from _latex_blank(blank)
+    if drawing:
+        from .tikz import tikz_grid
+
+        grid = tikz_grid(a.solution, a.options.origin, empty=True)
+        if grid is not None:
+            yield "\\paragraph{Pixel grid}\\mbox{}\\par\\nopagebreak\n" + grid
+
+
+def _tex_label(text: str) -> str:
+    r"""A row label in LaTeX: a number in math, a word as text.
+
+    >>> _tex_label("-3"), _tex_label("KB_2")
+    ('$-3$', 'KB\\_2')
+    """
+    from .latex import math_cell
+
+    return f"${text}$" if math_cell(text) else tex_text(text)
+
+
+def blank_widths(blank: Blank) -> tuple[list[float], str]:
+    """The width of each column of an empty table in points (room to write each answer
+    cell by hand) and the font size of its headings: the natural widths when they fit the
+    text width, else all narrowed in proportion, the headings set smaller; the table is
+    never split into parts.
+
+    >>> from scanconv.core.records import Column
+    >>> cols = tuple(Column(str(i), "x", "x") for i in range(9))
+    >>> widths, size = blank_widths(Blank("t", cols, 3, (18,) * 9))
+    >>> round(sum(widths) + 12 * 9), size
+    (335, '\\\\scriptsize')
+    """
+    natural = [5.0 * (_room(w) + 2) for w in blank.widths]
+    room = 0.97 * 345 - 12 * len(natural)
+    if sum(natural) <= room:
+        return natural, ""
+    factor = room / sum(natural)
+    return [w * factor for w in natural], "\\footnotesize" if factor > 0.7 else "\\scriptsize"
+
+
+def _latex_blank(blank: Blank) -> Iterator[str]:
+    """An empty table, ruled for writing in, whole: each column as wide as its widest
+    answer cell and a little more, narrowed to the text width when too wide (a longtable:
+    a table of many rows continues on the next page, its heading repeated)."""
+    widths, size = blank_widths(blank)
+    need = 60 + 26 * (blank.rows if blank.rows <= KEEP_ROWS else 5)  # rows 8 mm high, ruled
+    yield f"\\scneed{{{need}pt}}\\paragraph{{{tex_text(blank.title)}}}\\mbox{{}}\\\\[1ex]\n"
+    spec = "|" + "|".join(f">{{\\centering\\arraybackslash}}p{{{w:.1f}pt}}" for w in widths) + "|"
+    short = blank.rows <= KEEP_ROWS  # a tabular never breaks: its heading made room for it
+    env = "tabular" if short else "longtable"
+    yield ("\\par{\\centering" if short else "") + f"\\begin{{{env}}}{{{spec}}}\n\\hline\n"
+    fit = "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}"
+    heads = (f"{fit}{{{size}${c.tex}$}}" for c in blank.columns)
+    yield " & ".join(heads) + " \\\\\n\\hline\n" + ("" if short else "\\endhead\n")
+    for row in _blank_rows(blank):
+        cells = [_tex_label(row[0]) if row[0] else ""] + [""] * (len(row) - 1)
+        yield "\\rule[-2.5mm]{0pt}{8mm}" + " & ".join(cells) + " \\\\\n\\hline\n"
+    yield "\\end{tabular}\\par}\\medskip\n" if short else "\\end{longtable}\n"
