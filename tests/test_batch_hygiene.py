@@ -64,3 +64,15 @@ def test_the_output_may_not_be_the_students_file(tmp_path: Path) -> None:
     r = run("check", str(answer), "-o", str(answer), *QUESTION)
     assert r.code == 2 and r.out == "" and len(r.err.strip().splitlines()) == 1
     assert answer.read_bytes() == before
+
+
+def test_messages_stay_one_short_line(tmp_path: Path) -> None:
+    """A heading of 20,000 columns, a JSON number of 5,000 digits: one line naming the file."""
+    wide = tmp_path / "wide.csv"
+    wide.write_text(",".join(f"c{i}" for i in range(20_000)) + "\n" + ",".join("1" * 20_000) + "\n")
+    r = run("check", str(wide), *QUESTION)
+    assert r.code == 2 and len(r.err) < 1000 and "wide.csv" in r.err and "more" in r.err
+    digits = tmp_path / "digits.json"
+    digits.write_text('{"steps": [{"k": 0, "p": ' + "9" * 5000 + ', "pixel": [2, 2]}]}')
+    r = run("check", str(digits), *QUESTION)
+    assert r.code == 2 and "digits.json" in r.err and len(r.err) < 1000, r.err

@@ -16,7 +16,9 @@ _GIVEN_KEYS = ("x1", "y1", "x2", "y2")
 
 
 def _ends(x1: Number, y1: Number, x2: Number, y2: Number) -> tuple[int, int, int, int]:
-    a, b, c, d = (check_integer(v, k) for v, k in zip((x1, y1, x2, y2), _GIVEN_KEYS, strict=True))
+    a, b, c, d = (
+        check_integer(v, k, param=k) for v, k in zip((x1, y1, x2, y2), _GIVEN_KEYS, strict=True)
+    )
     return a, b, c, d
 
 

@@ -90,7 +90,7 @@ def bitmap_solution(
     >>> len(list(sol.pixels())), sol.bbox
     (44, (0, 0, 9, 13))
     """
-    x0, y0 = check_integer(x0, "x0"), check_integer(y0, "y0")
+    x0, y0 = check_integer(x0, "x0", param="x0"), check_integer(y0, "y0", param="y0")
     g = ch.glyph(char, rows)
     steps = list(ch.draw_bitmap(g, x0, y0, scale))
     pixels = [p for s in steps for p in s.extra[2]]
@@ -145,7 +145,7 @@ def stroke_solution(
     >>> [s.pixel for s in sol.steps()]
     [(0, 6), (2, 6)]
     """
-    x0, y0 = check_integer(x0, "x0"), check_integer(y0, "y0")
+    x0, y0 = check_integer(x0, "x0", param="x0"), check_integer(y0, "y0", param="y0")
     steps = list(ch.draw_strokes(char, x0, y0, scale, algo))
     pixels = list(dict.fromkeys(p for s in steps for p in s.extra[1]))
 

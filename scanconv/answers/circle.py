@@ -111,8 +111,8 @@ def _circle_method(method: str, rounding: str | None, layout: str) -> tuple[str,
 
 def _circle_numbers(method: str, r: Number, xc: Number, yc: Number) -> tuple[int, int, int]:
     """The radius and the centre as integers, checked (the symmetric DDA's radius bounded)."""
-    ir = check_integer(r, "radius", negative=False)
-    ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
+    ir = check_integer(r, "radius", negative=False, param="r")
+    ixc, iyc = check_integer(xc, "xc", param="xc"), check_integer(yc, "yc", param="yc")
     if method == "symmetric-dda" and ir > SDDA_MAX_RADIUS:
         raise InputError(
             f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "

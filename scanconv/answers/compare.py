@@ -352,7 +352,7 @@ def compare_circles(r: Number, theory: bool = False) -> Solution:
     from ..core.checks import check_integer
     from .circle import circle_solution
 
-    ir = check_integer(r, "radius", negative=False)
+    ir = check_integer(r, "radius", negative=False, param="r")
     if ir > MAX_RADIUS:
         raise InputError(
             f"compare circle: the radius must be at most {MAX_RADIUS} (got {ir}; "

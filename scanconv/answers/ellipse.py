@@ -64,9 +64,9 @@ class _Ellipse(NamedTuple):
 
 def _checked(rx: Number, ry: Number, xc: Number, yc: Number, knobs: dict) -> _Ellipse:
     """The question with its numbers checked, and the end of region 1."""
-    irx = check_integer(rx, "rx", negative=False)
-    iry = check_integer(ry, "ry", negative=False)
-    ixc, iyc = check_integer(xc, "xc"), check_integer(yc, "yc")
+    irx = check_integer(rx, "rx", negative=False, param="rx")
+    iry = check_integer(ry, "ry", negative=False, param="ry")
+    ixc, iyc = check_integer(xc, "xc", param="xc"), check_integer(yc, "yc", param="yc")
     if max(irx, iry) > MAX_AXIS:
         raise InputError(
             f"semi-axes of the midpoint ellipse must be at most {MAX_AXIS:.0e} "

@@ -325,6 +325,8 @@ def _json_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
         ) from None
     except RecursionError:
         raise InputError(f"{name}: JSON nested too deeply", "answer") from None
+    except ValueError as err:  # an integer of more than 4,300 digits, for one
+        raise InputError(f"{name}: not valid JSON ({_short(str(err))})", "answer") from None
     if isinstance(data, dict):
         data = data.get("steps", data.get("rows"))
     if not isinstance(data, list) or not all(isinstance(r, dict) for r in data):
@@ -399,13 +401,23 @@ def _check_fields(name: str, headers: list[str], fields: set[str], seen: dict[st
                     "answer",
                 )
     if not _PIXEL_FIELDS & fields:
-        found = ", ".join(repr(str(h).strip()) for h in headers if str(h).strip())
+        named = [repr(_short(str(h).strip())) for h in headers if str(h).strip()]
+        found = ", ".join(named[:8]) + (f" and {len(named) - 8} more" if len(named) > 8 else "")
         raise InputError(
             f"{name}: no column for the pixels among the columns {found}; it needs one like "
             "'(x, y)', 'Pixel Plotted (x, y)' or two columns 'x' and 'y' "
             "(p_k, Decision and p_{k+1} are read too)",
             "answer",
         )
+
+
+def _short(text: str, most: int = 60) -> str:
+    """A text cut to ``most`` characters for a message (one line stays readable).
+
+    >>> _short("x" * 100, 10)
+    'xxxxxxxxx…'
+    """
+    return text if len(text) <= most else text[: most - 1] + "…"
 
 
 def _row(name: str, where: str, cells: list[Any], mapped: list[str | None]) -> Row:
