@@ -11,16 +11,27 @@ from ._api import bezier_at as bezier_at
 from ._api import bspline as bspline
 from ._api import bspline_at as bspline_at
 from ._api import bspline_basis as bspline_basis
+from ._api import char_bitmap as char_bitmap
+from ._api import char_storage as char_storage
+from ._api import char_stroke as char_stroke
 from ._api import circle as circle
+from ._api import clip_convex as clip_convex
 from ._api import clip_line as clip_line
 from ._api import clip_polygon as clip_polygon
 from ._api import compare_circles as compare_circles
 from ._api import compare_curves as compare_curves
 from ._api import compare_lines as compare_lines
 from ._api import continuity as continuity
+from ._api import dither_diffusion as dither_diffusion
+from ._api import dither_ordered as dither_ordered
+from ._api import dither_threshold as dither_threshold
 from ._api import ellipse as ellipse
 from ._api import fill as fill
+from ._api import framebuffer as framebuffer
+from ._api import halftone as halftone
+from ._api import inside as inside
 from ._api import line as line
+from ._api import line_style as line_style
 from ._api import local_control as local_control
 from ._api import parametric_circle as parametric_circle
 from ._api import parametric_custom as parametric_custom
@@ -34,6 +45,7 @@ from ._api import quantize as quantize
 from ._api import ramp as ramp
 from ._api import sample as sample
 from ._api import storage as storage
+from ._api import thick_line as thick_line
 from ._api import transform as transform
 from ._api import viewport as viewport
 from ._api.color_theory import color as color
@@ -94,8 +106,12 @@ __all__ = [
     "bspline",
     "bspline_at",
     "bspline_basis",
+    "char_bitmap",
+    "char_storage",
+    "char_stroke",
     "check",
     "circle",
+    "clip_convex",
     "clip_line",
     "clip_polygon",
     "color",
@@ -105,10 +121,17 @@ __all__ = [
     "continuity",
     "dda",
     "dda_line",
+    "dither_diffusion",
+    "dither_ordered",
+    "dither_threshold",
     "ellipse",
     "fill",
+    "framebuffer",
+    "halftone",
+    "inside",
     "line",
     "line_solution",
+    "line_style",
     "local_control",
     "midpoint_circle",
     "midpoint_ellipse",
@@ -128,6 +151,7 @@ __all__ = [
     "sample",
     "storage",
     "theory",
+    "thick_line",
     "transform",
     "viewport",
 ]

@@ -752,6 +752,147 @@ VOCABULARY[("exam",)] = Vocab(
     small={"--section": ("1", "dda", "14", "circle")},
 )
 
+# The rest of the syllabus (issue 30): dithering, halftones, the inside-outside test, the frame
+# buffer, line attributes, characters, and clipping against a convex window.
+IMAGE = ("--image", "10 200; 60 90")
+BIG_IMAGE = "; ".join([" ".join(["0"] * 64)] * 65)  # 4160 cells, beyond MAX_CELLS
+IMAGE_VALUES = ("0 255", "10 200; 60 90", "1/2 1; 0 1", "100, 100 / 100, 100")
+TRIANGLE_WINDOW = ("--window-vertices", "0", "0", "8", "0", "0", "8")
+for _name, _extra in (
+    ("threshold", ("--at", "128")),
+    ("floyd-steinberg", ("--order", "serpentine")),
+):
+    VOCABULARY[("dither", _name)] = Vocab(
+        valid=((*IMAGE, "--top", "255", *_extra),),
+        numbers=((3, 5) if _name == "threshold" else (3,),),
+        out_of_range=(
+            (("--image", BIG_IMAGE), "4,096"),
+            ((*IMAGE, "--top", "1e10"), "out of range"),
+        ),
+        too_few=(("--image",), "requires an argument"),
+        too_many=((*IMAGE, "5"), "unexpected extra argument"),
+        wrong_type=(("--image", "1 2; 3"), "every row"),
+        small={"--image": IMAGE_VALUES, "--top": ("1", "255"), "--at": ("0", "1", "128")},
+    )
+VOCABULARY[("dither", "ordered")] = Vocab(
+    valid=((*IMAGE, "--top", "255", "--matrix", "4"), (*IMAGE, "--matrix", "0 2; 3 1")),
+    numbers=((3, 5), (1,)),
+    out_of_range=(
+        ((*IMAGE, "--matrix", "3"), "2, 4, 8 or 16"),
+        (("--image", BIG_IMAGE), "4,096"),
+    ),
+    too_few=(("--image",), "requires an argument"),
+    too_many=((*IMAGE, "5"), "unexpected extra argument"),
+    wrong_type=((*IMAGE, "--matrix", "2.5"), "must be an integer"),
+    small={"--image": IMAGE_VALUES, "--top": ("1", "255"), "--matrix": ("2", "4", "0 1; 1 0")},
+)
+VOCABULARY[("halftone",)] = Vocab(
+    valid=(("2",), ("4", "--level", "5", "--bits", "1")),
+    numbers=((0,), (0, 2, 4)),
+    out_of_range=((("32",), "2, 4, 8 or 16"), (("2", "--level", "9"), "levels 0 .. 4")),
+    too_few=((), "Missing argument"),
+    too_many=(("2", "3"), "unexpected extra argument"),
+    wrong_type=(("2.5",), "must be an integer"),
+    small={"--level": ("0", "1", "3"), "--bits": ("1", "2")},
+    positional=("2", "4", "3", "0"),
+)
+VOCABULARY[("inside",)] = Vocab(
+    valid=(("0", "0", "6", "0", "6", "6", "3", "2", "0", "6", "--points", "3", "1", "3", "4"),),
+    numbers=((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 11, 12, 13, 14),),
+    out_of_range=(
+        (("0", "0", "6", "0", "6", "6", "--points", "1e10", "1"), "out of range"),
+        (("0", "0", "6", "0", "6", "6", "--points", *["1"] * 202), "at most 100 points"),
+    ),
+    too_few=(("0", "0", "6", "0", "6", "6"), "Missing option '--points'"),
+    too_many=((*TOO_MANY_VERTICES, "--points", "1", "1"), "at most 1000 polygon vertices"),
+    wrong_type=(("0", "0", "6", "0", "6", "--points", "1", "1"), "odd"),
+    positional=("0", "1", "2", "6", "-3", "1/2", "--points"),
+)
+VOCABULARY[("framebuffer",)] = Vocab(
+    valid=(("640", "480", "8"), ("1280", "1024", "8", "--lut", "24", "--rate", "1e6")),
+    numbers=((0, 1, 2), (0, 1, 2, 4, 6)),
+    out_of_range=(
+        (("640", "480", "65"), "at most 64"),
+        (("640", "480", "8", "--rate", "0"), "positive"),
+    ),
+    too_few=(("640", "480"), "Missing argument"),
+    too_many=(("640", "480", "8", "1"), "unexpected extra argument"),
+    wrong_type=(("640.5", "480", "8"), "must be an integer"),
+    small={"--lut": ("8", "24"), "--rate": ("1", "1e6"), "--refresh": ("30", "60")},
+    positional=("1", "8", "640", "480", "0"),
+)
+VOCABULARY[("linestyle",)] = Vocab(
+    valid=(
+        ("0", "0", "12", "4", "--mask", "1110"),
+        ("0", "0", "7", "2", "--mask", "110", "--repeat", "2"),
+    ),
+    numbers=((0, 1, 2, 3), (0, 1, 2, 3, 7)),
+    out_of_range=(
+        (("0", "0", "12", "4", "--mask", "1" * 65), "at most 64 bits"),
+        (("0", "0", "1e10", "4", "--mask", "1"), "out of range"),
+    ),
+    too_few=(("0", "0", "12", "4"), "Missing option"),
+    too_many=(("0", "0", "12", "4", "5", "--mask", "1"), "unexpected extra argument"),
+    wrong_type=(("0", "0", "12", "4", "--mask", "11", "--repeat", "1.5"), "must be an integer"),
+    small={"--mask": ("1", "10", "1110", "0x0f"), "--repeat": ("1", "2")},
+    positional=("0", "1", "2", "5", "-3"),
+)
+VOCABULARY[("thickline",)] = Vocab(
+    valid=(("0", "0", "8", "3", "--width", "3"), ("0", "0", "3", "8", "--width", "2", "--brush")),
+    numbers=((0, 1, 2, 3, 5), (0, 1, 2, 3, 5)),
+    out_of_range=(
+        (("0", "0", "8", "3", "--width", "26"), "1..25"),
+        (("0", "0", "1e10", "3", "--width", "3"), "out of range"),
+    ),
+    too_few=(("0", "0", "8", "3"), "Missing option"),
+    too_many=(("0", "0", "8", "3", "5", "--width", "3"), "unexpected extra argument"),
+    wrong_type=(("0", "0", "8", "3", "--width", "2.5"), "must be an integer"),
+    small={"--width": ("1", "2", "3")},
+    positional=("0", "1", "2", "5", "-3"),
+)
+VOCABULARY[("char", "bitmap")] = Vocab(
+    valid=(("A", "--at", "2", "1"), ("X", "--rows", "101/010/101", "--scale", "2")),
+    numbers=((2, 3), (4,)),
+    out_of_range=((("A", "--scale", "17"), "1..16"), (("A", "--rows", "1" * 65), "at most 64")),
+    too_few=((), "Missing argument"),
+    too_many=(("A", "B"), "unexpected extra argument"),
+    wrong_type=(("A", "--scale", "1.5"), "must be an integer"),
+    small={"--scale": ("1", "2"), "--at": ("0", "1", "-2"), "--rows": ("1", "10/01", "#./.#")},
+    positional=("A", "L", "7", "?", "AB"),
+)
+VOCABULARY[("char", "stroke")] = Vocab(
+    valid=(("T", "--scale", "2"), ("A", "--at", "1", "1", "--algo", "dda")),
+    numbers=((2,), (2, 3)),
+    out_of_range=((("T", "--scale", "17"), "1..16"), (("T", "--at", "1e10", "0"), "out of range")),
+    too_few=((), "Missing argument"),
+    too_many=(("T", "L"), "unexpected extra argument"),
+    wrong_type=(("T", "--scale", "1.5"), "must be an integer"),
+    small={"--scale": ("1", "2"), "--at": ("0", "1", "-2")},
+    positional=("T", "L", "7", "?"),
+)
+VOCABULARY[("char", "storage")] = Vocab(
+    valid=(("128", "5", "7"), ("256", "7", "9", "--packing", "columns")),
+    numbers=((0, 1, 2), (0, 1, 2)),
+    out_of_range=((("2097152", "5", "7"), "at most 2^20"),),
+    too_few=(("128", "5"), "Missing argument"),
+    too_many=(("128", "5", "7", "1"), "unexpected extra argument"),
+    wrong_type=(("128", "5.5", "7"), "must be an integer"),
+    positional=("1", "5", "7", "128", "0"),
+)
+VOCABULARY[("clip", "convex")] = Vocab(
+    valid=(
+        ("-1", "2", "9", "2", *TRIANGLE_WINDOW),
+        ("-1", "2", "9", "2", *TRIANGLE_WINDOW, "--normals", "inward"),
+    ),
+    numbers=((0, 1, 2, 3, 5, 6, 7, 8, 9, 10), (0, 1, 2, 3, 5, 6, 7, 8, 9, 10)),
+    out_of_range=((("0", "0", "1e10", "1", *TRIANGLE_WINDOW), "out of range"),),
+    too_few=(("0", "0", "1", *TRIANGLE_WINDOW), "X1 Y1 X2 Y2"),
+    too_many=(("0", "0", "1", "1", "1", *TRIANGLE_WINDOW), "X1 Y1 X2 Y2"),
+    wrong_type=(("0", "0", "1", "1", "--window-vertices", "0", "0", "8", "0", "0"), "at least 3"),
+    positional=("0", "1", "2", "8", "-3", "1/2", "--window-vertices"),
+)
+
+
 #: Commands that write a whole document (a sheet of answers, a practice set, the exam book)
 #: rather than one answer: they have no API function returning one Solution, no terminal
 #: layout of their own (``--format rich``) and no ``--brief``/``--explain`` (which shape one

@@ -319,6 +319,61 @@ CASES += [
         (STUDENT, "line 2 2 10 6"),
         {},
     ),
+    # issue 30: the rest of the syllabus
+    (
+        ("dither", "threshold"),
+        ("--image", "10 200; 60 90", "--at", "128"),
+        "dither_threshold",
+        ([[10, 200], [60, 90]],),
+        {"at": 128},
+    ),
+    (
+        ("dither", "ordered"),
+        ("--image", "10 200 / 60 90", "--matrix", "0 2; 3 1", "--scale", "centered"),
+        "dither_ordered",
+        ("10 200; 60 90", [[0, 2], [3, 1]]),
+        {"scale": "centered"},
+    ),
+    (
+        ("dither", "floyd-steinberg"),
+        ("--image", "100 100; 100 100", "--top", "1", "--order", "serpentine"),
+        "dither_diffusion",
+        ("100 100; 100 100", 1),
+        {"order": "serpentine"},
+    ),
+    (("halftone",), ("4", "--level", "5"), "halftone", (4,), {"level": "5"}),
+    (
+        ("inside",),
+        ("0", "0", "6", "0", "6", "6", "--points", "3", "1", "6", "3", "--boundary", "outside"),
+        "inside",
+        ([(0, 0), (6, 0), (6, 6)], [3, 1, 6, 3]),
+        {"boundary": "outside"},
+    ),
+    (
+        ("framebuffer",),
+        ("640", "480", "8", "--lut", "24", "--refresh", "60", "--interlaced"),
+        "framebuffer",
+        (640, 480, 8.0),
+        {"lut": 24, "refresh": 60, "interlaced": True},
+    ),
+    (
+        ("linestyle",),
+        ("0", "0", "12", "4", "--mask", "1110", "--repeat", "2"),
+        "line_style",
+        (0, 0, 12, 4, "1110"),
+        {"repeat": 2},
+    ),
+    (("thickline",), ("0", "0", "8", "3", "--width", "3"), "thick_line", (0, 0, 8, 3, 3), {}),
+    (("char", "bitmap"), ("A", "--at", "2", "1"), "char_bitmap", ("A",), {"at": (2, 1)}),
+    (("char", "stroke"), ("T", "--scale", "2"), "char_stroke", ("T",), {"scale": 2}),
+    (("char", "storage"), ("128", "5", "7"), "char_storage", (128, 5, 7), {}),
+    (
+        ("clip", "convex"),
+        ("-1", "2", "9", "2", "--window-vertices", "0", "0", "8", "0", "0", "8"),
+        "clip_convex",
+        (-1, 2, 9, 2, [(0, 0), (8, 0), (0, 8)]),
+        {},
+    ),
 ]
 
 

@@ -55,3 +55,21 @@ def test_the_marking_model_follows_the_x_first_generator(r: int, tie: str) -> No
         got.append((t.p, t.point))
         s = t
     assert got == [(x.p, x.pixel) for x in bresenham(r, tie, "first")]
+
+
+@pytest.mark.parametrize("r", [3, 10, 21])
+def test_check_marks_the_x_first_table_with_its_own_model(r: int, tmp_path) -> None:
+    """scanconv's own x-first table gets full marks; Bresenham's own table, checked against
+    the x-first question, loses the rows where the two differ."""
+    from .helpers import run
+
+    own = tmp_path / "own.csv"
+    assert run("circle", str(r), "--method", "bresenham", "--xstep", "first", "-f", "csv",
+               "-o", str(own)).code == 0  # fmt: skip
+    res = run("check", str(own), "-f", "json", "--", "circle", str(r), "--method", "bresenham",
+              "--xstep", "first")  # fmt: skip
+    assert res.code == 0, res.err
+    import json
+
+    doc = json.loads(res.out)
+    assert doc["score"] == doc["out_of"]

@@ -41,8 +41,29 @@ from .curves import (
     parametric_parabola,
 )
 from .image import quantize, ramp, sample, storage
-from .process import clip_line, clip_polygon, pipeline_line, pipeline_polygon, transform, viewport
+from .process import (
+    clip_convex,
+    clip_line,
+    clip_polygon,
+    pipeline_line,
+    pipeline_polygon,
+    transform,
+    viewport,
+)
 from .shapes import circle, compare_circles, compare_curves, compare_lines, ellipse, line
+from .syllabus import (
+    char_bitmap,
+    char_storage,
+    char_stroke,
+    dither_diffusion,
+    dither_ordered,
+    dither_threshold,
+    framebuffer,
+    halftone,
+    inside,
+    line_style,
+    thick_line,
+)
 from .values import FormulaLike as FormulaLike
 from .values import NumberLike as NumberLike
 from .values import PointLike as PointLike
@@ -63,16 +84,27 @@ __all__ = [
     "bspline",
     "bspline_at",
     "bspline_basis",
+    "char_bitmap",
+    "char_storage",
+    "char_stroke",
     "circle",
+    "clip_convex",
     "clip_line",
     "clip_polygon",
     "compare_circles",
     "compare_curves",
     "compare_lines",
     "continuity",
+    "dither_diffusion",
+    "dither_ordered",
+    "dither_threshold",
     "ellipse",
     "fill",
+    "framebuffer",
+    "halftone",
+    "inside",
     "line",
+    "line_style",
     "local_control",
     "parametric_circle",
     "parametric_custom",
@@ -86,6 +118,7 @@ __all__ = [
     "ramp",
     "sample",
     "storage",
+    "thick_line",
     "transform",
     "viewport",
 ]

@@ -24,6 +24,7 @@ def line(
     rounding: Rounding | str | None = None,
     tie: Tie | str | None = None,
     start: Start | str | None = None,
+    scale: str | None = None,
     convention: Convention | str | None = None,
     layout: Layout | str = "notes",
     derive: bool = False,
@@ -46,6 +47,8 @@ def line(
     start : {"swap", "given"}, optional
         Which end is plotted first: Bresenham swaps to the end with the smaller major
         coordinate, the DDA starts at P1 (``given``).
+    scale : {"integer", "half"}, optional
+        The midpoint line: d = 2F(M) in integers (default) or d = F(M) in halves.
     convention : {"notes", "hearn-baker", "foley", "wikipedia"}, optional
         A named preset of the conventions above; a convention given alone overrides it.
     layout : {"notes", "textbook"}, default "notes"
@@ -87,6 +90,7 @@ def line(
         rounding=_maybe(rounding, "rounding"),
         tie=_maybe(tie, "tie"),
         start=_maybe(start, "start"),
+        scale=_maybe(scale, "scale"),
         convention=_maybe(convention, "convention"),
         layout=_choice(layout, "layout"),
         derive=derive,
@@ -106,6 +110,7 @@ def circle(
     p0: P0 | str | None = None,
     loop: Loop | str | None = None,
     update: Update | str | None = None,
+    xstep: str | None = None,
     convention: Convention | str | None = None,
     layout: Layout | str = "notes",
     derive: bool = False,
@@ -132,6 +137,9 @@ def circle(
         Whether the octant's loop runs while x < y or x <= y.
     update : {"new", "old"}, optional
         Whether the decision update uses the new x (and y) or the old.
+    xstep : {"last", "first"}, optional
+        Bresenham's circle: d updated before x += 1 (default) or after it, as widely copied
+        code does.
     convention : {"notes", "hearn-baker", "foley", "wikipedia"}, optional
         A named preset of the conventions above.
     layout : {"notes", "textbook"}, default "notes"
@@ -177,6 +185,7 @@ def circle(
         p0=_maybe(p0, "p0"),
         loop=_maybe(loop, "loop"),
         update=_maybe(update, "update"),
+        xstep=_maybe(xstep, "xstep"),
         convention=_maybe(convention, "convention"),
         layout=_choice(layout, "layout"),
         derive=derive,

@@ -47,6 +47,13 @@ class Start(str, Enum):
     given = "given"
 
 
+class LineScale(str, Enum):
+    """The midpoint line's decision variable: d = 2F(M) in integers or d = F(M) in halves."""
+
+    integer = "integer"
+    half = "half"
+
+
 class Layout(str, Enum):
     """The step table's row shape: the notes' or the textbook's."""
 

@@ -39,6 +39,13 @@ class Loop(str, Enum):
     inclusive = "inclusive"
 
 
+class XStep(str, Enum):
+    """Bresenham's circle: d updated before x += 1 (``last``) or after it (``first``)."""
+
+    last = "last"
+    first = "first"
+
+
 class Update(str, Enum):
     """Whether the midpoint circle's increments are written with the new or the old x."""
 

@@ -33,6 +33,13 @@ METHODS = ("threshold", "ordered", "floyd-steinberg", "pattern")
 """The dithering methods, as ``scanconv dither METHOD`` takes them."""
 
 
+def _checked(image: Sequence[Sequence[Number]], top: Number) -> d.Matrix:
+    """The image as an exact matrix, its scale's top checked positive (the mean divides by it)."""
+    if not top > 0:
+        raise InputError(f"the scale's top must be positive, got {fmt_short(top)}", "top")
+    return d.check_matrix(image, "image", "image")
+
+
 def _matrix(key: str, name: str, rows: Sequence[Sequence[Number]]) -> Quantity:
     """``name = [[...], ...]`` with its TeX ``bmatrix``."""
     m = tuple(tuple(r) for r in rows)
@@ -150,7 +157,7 @@ def threshold_solution(
     >>> sol.data["output"]
     [[0, 1], [1, 0]]
     """
-    img = d.check_matrix(image, "image", "image")
+    img = _checked(image, top)
     t = normalize(Fraction(top) / 2) if at is None else normalize(Fraction(at))
     rel = _COMPARE_TEX[d.choice("compare", compare)]
     derived = [
@@ -197,7 +204,7 @@ def ordered_solution(
     >>> [s.extra[2:] for s in sol.steps()]
     [(1, 0, 1), (2, 2, 0), (3, 3, 0), (4, 1, 1)]
     """
-    img = d.check_matrix(image, "image", "image")
+    img = _checked(image, top)
     dm, named = _dither_matrix(matrix)
     n2 = len(dm) * len(dm[0])
     table = d.thresholds(dm, top, scale=scale, base=base, transpose=transpose)
@@ -255,7 +262,7 @@ def diffusion_solution(
     >>> sol.data["output"]
     [[0, 1], [0, 0]]
     """
-    img = d.check_matrix(image, "image", "image")
+    img = _checked(image, top)
     shares = d.KERNELS[d.choice("kernel", kernel)]
     rel = _COMPARE_TEX[d.choice("compare", compare)]
     half = normalize(Fraction(top) / 2)

@@ -125,6 +125,7 @@ def line_solution(
     rounding: str | None = None,
     tie: str | None = None,
     start: str | None = None,
+    scale: str | None = None,
     convention: str | None = None,
     layout: str = "textbook",
     derive: bool = False,
@@ -134,7 +135,7 @@ def line_solution(
     """The worked solution of a line with one of :data:`ALGORITHMS`.
 
     ``rounding`` (dda, basic), ``tie`` (bresenham) and ``start`` (bresenham, dda: ``"swap"``
-    to walk from the end with the smaller major coordinate, ``"given"`` from P1) are the conventions
+    to walk from the end with the smaller major coordinate, ``"given"`` from P1) and ``scale`` (midpoint: ``"integer"`` d = 2F(M) or ``"half"`` d = F(M)) are the conventions
     (:mod:`scanconv.algorithms.conventions`), ``convention`` a named preset; ``layout`` is
     ``"notes"`` (Bresenham: row k plots (x_k, y_k), row 0 the start pixel) or ``"textbook"``;
     ``derive`` adds the derivation, ``pseudocode`` the algorithm as a table; ``annotate``
@@ -159,7 +160,12 @@ def line_solution(
         )
     if layout not in ("notes", "textbook"):
         raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
-    knobs = resolve("line", algo, convention, {"rounding": rounding, "tie": tie, "start": start})
+    knobs = resolve(
+        "line",
+        algo,
+        convention,
+        {"rounding": rounding, "tie": tie, "start": start, "scale": scale},
+    )
     if algo == "wu":  # anti-aliased: two pixels per step with their intensities, no conventions
         if derive or pseudocode:
             raise InputError(

@@ -366,7 +366,7 @@ _DITHER = (
            _G + "dither:ordered"),
     _plain("dither", "floyd-steinberg", "Floyd-Steinberg error diffusion",
            _A + "dither:diffusion_solution", _G + "dither:error_diffusion"),
-    _plain("dither", "pattern", "halftone patterns", _A + "dither:pattern_solution", None,
+    _plain("halftone", "pattern", "halftone patterns", _A + "dither:pattern_solution", None,
            no_generator="one pattern per level, from the Bayer matrix"),
 )  # fmt: skip
 
@@ -392,11 +392,11 @@ _ATTRIBUTES = (
 )  # fmt: skip
 
 _CHARACTERS = (
-    _plain("characters", "bitmap", "bitmap character generation",
+    _plain("char", "bitmap", "bitmap character generation",
            _A + "characters:bitmap_solution", _G + "characters:draw_bitmap"),
-    _plain("characters", "stroke", "stroke character generation",
+    _plain("char", "stroke", "stroke character generation",
            _A + "characters:stroke_solution", _G + "characters:draw_strokes"),
-    _plain("characters", "storage", "bitmap font storage",
+    _plain("char", "storage", "bitmap font storage",
            _A + "characters:font_storage_solution", None,
            no_generator="arithmetic, worked in one pass"),
 )  # fmt: skip

@@ -81,7 +81,7 @@ def midpoint_clip_solution(
     parts = visible(pieces)
     how = {
         "rounded": r"\text{rounded half up}",
-        "floor": r"\text{floor: the hardware shift } (a + b) \gg 1",
+        "floor": r"\text{floor: the hardware shift, } \lfloor (a + b)/2 \rfloor",
         "exact": r"\text{exact}",
     }[midpoint]
     shown = "; ".join(f"{_pt(a)} to {_pt(b)}" for a, b in parts) or "none"

@@ -25,14 +25,29 @@ _SETTINGS: dict[str, Any] = {
 
 #: The panels of ``scanconv --help``: each command under the topic of the notes it answers.
 PANELS = (
-    ("Lines, circles and ellipses", ("line", "circle", "ellipse", "parametric")),
+    (
+        "Lines, circles and ellipses",
+        ("line", "circle", "ellipse", "parametric", "linestyle", "thickline", "char"),
+    ),
     ("Curves", ("bezier", "bspline", "continuity", "local-control")),
-    ("Image representation", ("image", "storage", "quantize", "sample")),
+    (
+        "Image representation",
+        ("image", "storage", "quantize", "sample", "dither", "halftone", "framebuffer"),
+    ),
     ("Comparisons", ("compare",)),
     ("Teaching", ("sheet", "practice", "check")),
     (
         "The process: clip, transform, fill, anti-alias",
-        ("clip", "transform", "viewport", "pipeline", "polygon", "fill", "antialias"),
+        (
+            "clip",
+            "transform",
+            "viewport",
+            "pipeline",
+            "polygon",
+            "inside",
+            "fill",
+            "antialias",
+        ),
     ),
     ("Theory and exam", ("color", "theory", "exam")),
 )
@@ -106,7 +121,15 @@ parametric_app = _subapp(
     "parametric",
     "Parametric curves x(t), y(t): line, circle, ellipse, parabola or your own formulas.",
 )
-clip_app = _subapp("clip", "Clip a line or a polygon against a rectangular window.")
+clip_app = _subapp(
+    "clip", "Clip a line or a polygon against a rectangular window, or a line against a convex one."
+)
+dither_app = _subapp(
+    "dither", "Two-level images by thresholding, ordered dither or error diffusion."
+)
+char_app = _subapp(
+    "char", "Character generation: a bitmap glyph, a stroke character, a bitmap font's storage."
+)
 pipeline_app = _subapp(
     "pipeline", "The scan-conversion process end to end: clip, map to the viewport, scan convert."
 )
@@ -138,6 +161,7 @@ TOPIC_MODULES: tuple[str, ...] = (
     "compare",
     "process",
     "fill",
+    "syllabus",
     "color",
     "theory",
     "exam",
@@ -168,6 +192,13 @@ TOPIC_OF = {
     "polygon": "fill",
     "fill": "fill",
     "antialias": "fill",
+    "dither": "syllabus",
+    "halftone": "syllabus",
+    "inside": "syllabus",
+    "framebuffer": "syllabus",
+    "linestyle": "syllabus",
+    "thickline": "syllabus",
+    "char": "syllabus",
     "sheet": "sheet",
     "check": "check",
     "practice": "practice",

@@ -7,7 +7,7 @@ from typing import Annotated
 
 from .. import _api as api
 from ..algorithms.choices import Layout
-from ..algorithms.circle_choices import P0, CircleMethod, EllipseP0, Loop, Update
+from ..algorithms.circle_choices import P0, CircleMethod, EllipseP0, Loop, Update, XStep
 from ..core.records import Solution
 from .application import app
 from .command import answers
@@ -45,6 +45,14 @@ def circle(
         Update | None,
         choice("--update", help="midpoint: increments written with the new x or the old x."),
     ] = None,
+    xstep: Annotated[
+        XStep | None,
+        choice(
+            "--xstep",
+            help="bresenham: d updated before x += 1 (last, Bresenham's own) or after it "
+            "(first, as widely copied code does).",
+        ),
+    ] = None,
     convention: ConventionOpt = None,
     layout: LayoutOpt = Layout.notes,
     derive: DeriveOpt = False,
@@ -63,6 +71,7 @@ def circle(
         p0=p0,
         loop=loop,
         update=update,
+        xstep=xstep,
         convention=convention,
         layout=layout,
         derive=derive,

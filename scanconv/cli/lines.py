@@ -8,7 +8,15 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.choices import Convention, Layout, LineAlgorithm, Rounding, Start, Tie
+from ..algorithms.choices import (
+    Convention,
+    Layout,
+    LineAlgorithm,
+    LineScale,
+    Rounding,
+    Start,
+    Tie,
+)
 from ..core.records import Solution
 from .application import app
 from .command import answers
@@ -72,6 +80,13 @@ def line(
     rounding: RoundingOpt = None,
     tie: TieOpt = None,
     start: StartOpt = None,
+    scale: Annotated[
+        LineScale | None,
+        choice(
+            "--scale",
+            help="midpoint: d = 2F(M), integers (integer, the default) or d = F(M), halves (half).",
+        ),
+    ] = None,
     convention: ConventionOpt = None,
     layout: LayoutOpt = Layout.notes,
     derive: DeriveOpt = False,
@@ -90,6 +105,7 @@ def line(
         rounding=rounding,
         tie=tie,
         start=start,
+        scale=scale,
         convention=convention,
         layout=layout,
         derive=derive,

@@ -55,6 +55,46 @@ Example: scanconv transform 0 0 4 0 4 3 --rotate 90 --about 2 1 --translate 3 0
 """
 
 
+class Normals(str, Enum):
+    """Cyrus-Beck: the edges' normals point out of the window or into it."""
+
+    outward = "outward"
+    inward = "inward"
+
+
+class Ends(str, Enum):
+    """Cyrus-Beck: the clipped end points kept exact or truncated to integers."""
+
+    exact = "exact"
+    truncated = "truncated"
+
+
+class Midpoint(str, Enum):
+    """Midpoint subdivision: the midpoints rounded, floored or exact."""
+
+    rounded = "rounded"
+    floor = "floor"
+    exact = "exact"
+
+
+NormalsOpt = Annotated[
+    Normals | None,
+    typer.Option(
+        "--normals",
+        case_sensitive=False,
+        help="cyrus-beck: the edge normals point outward (default) or inward.",
+    ),
+]
+EndsOpt = Annotated[
+    Ends | None,
+    typer.Option(
+        "--ends",
+        case_sensitive=False,
+        help="cyrus-beck: the clipped end points exact (default) or truncated.",
+    ),
+]
+
+
 class FillRule(str, Enum):
     """The scan-line fill rules of ``pipeline polygon --fill``."""
 
@@ -116,13 +156,47 @@ def clip_line(
         LineClipMethod,
         typer.Option("--method", "-m", case_sensitive=False, help="Line clipping method."),
     ] = LineClipMethod.cohen_sutherland,
+    normals: NormalsOpt = None,
+    ends: EndsOpt = None,
+    midpoint: Annotated[
+        Midpoint | None,
+        typer.Option(
+            "--midpoint",
+            case_sensitive=False,
+            help="midpoint-subdivision: each midpoint rounded (default), floored or exact.",
+        ),
+    ] = None,
 ) -> Solution:
     """Clip the segment (X1, Y1)-(X2, Y2) against the window: region codes (T B R L) and one
-    row per iteration (Cohen-Sutherland), or the p_k, q_k table and u1, u2 (Liang-Barsky).
+    row per iteration (Cohen-Sutherland), the p_k, q_k table and u1, u2 (Liang-Barsky), t per
+    edge (Cyrus-Beck) or each midpoint and its outcode (midpoint subdivision).
 
     Example: scanconv clip line 7 9 11 4 --window 4 4 10 8 --method cohen-sutherland
     """
-    return api.clip_line(x1, y1, x2, y2, window, method=method)
+    return commands.clip_line(x1, y1, x2, y2, window, method, normals, ends, midpoint)
+
+
+@clip_app.command("convex", context_settings=NUMERIC_ARGS)
+@answers()
+def clip_convex(
+    words: Annotated[
+        list[str],
+        typer.Argument(
+            metavar="X1 Y1 X2 Y2 --window-vertices X Y X Y X Y ...",
+            help="The segment's end points, then --window-vertices and the convex window's "
+            "vertices in order.",
+            show_default=False,
+        ),
+    ],
+    normals: NormalsOpt = None,
+    ends: EndsOpt = None,
+) -> Solution:
+    """Cyrus-Beck: clip the segment against any convex window, with each edge's normal, t,
+    entering or leaving, and tE, tL.
+
+    Example: scanconv clip convex -1 2 9 2 --window-vertices 0 0 8 0 0 8
+    """
+    return commands.clip_convex(words, normals, ends)
 
 
 @clip_app.command("polygon", context_settings=NUMERIC_ARGS)

@@ -215,8 +215,69 @@ def viewport(window: Any, viewport: Any, points: Any) -> Solution:
     return api.viewport(window, viewport, points or [])
 
 
-def clip_line(x1: Any, y1: Any, x2: Any, y2: Any, window: Any, method: Any) -> Solution:
-    return api.clip_line(x1, y1, x2, y2, window, method=method)
+def clip_line(
+    x1: Any,
+    y1: Any,
+    x2: Any,
+    y2: Any,
+    window: Any,
+    method: Any,
+    normals: Any = None,
+    ends: Any = None,
+    midpoint: Any = None,
+) -> Solution:
+    return api.clip_line(
+        x1,
+        y1,
+        x2,
+        y2,
+        window,
+        method=method,
+        normals=_text(normals),
+        ends=_text(ends),
+        midpoint=_text(midpoint),
+    )
+
+
+def numbers_around(words: list[str], flag: str, param: str) -> tuple[list[Any], list[Any]]:
+    """``X1 Y1 ... FLAG X Y ...`` (the words of ``inside`` and ``clip convex``): the numbers
+    before ``flag`` and the numbers after it.
+
+    >>> numbers_around(["0", "0", "--points", "1", "-2"], "--points", "points")
+    ([Fraction(0, 1), Fraction(0, 1)], [Fraction(1, 1), Fraction(-2, 1)])
+    """
+    before: list[Any] = []
+    after: list[Any] = []
+    taking = before
+    for word in words:
+        name, eq, value = word.partition("=")
+        if name == flag:
+            taking = after
+            if not eq:
+                continue
+            word = value
+        try:
+            taking.append(number(word))
+        except ValueError as err:
+            if isinstance(err, UsageError):
+                raise
+            raise UsageError(f"Invalid value: {err}") from None
+    if not after:
+        raise UsageError(f"Missing option '{flag}' (give {flag} X Y ...)")
+    return before, after
+
+
+def clip_convex(words: list[str], normals: Any, ends: Any) -> Solution:
+    ends_, window = numbers_around(words, "--window-vertices", "window")
+    if len(ends_) != 4:
+        raise UsageError(
+            f"give the segment's end points X1 Y1 X2 Y2 before --window-vertices, got "
+            f"{len(ends_)} number(s)"
+        )
+    x1, y1, x2, y2 = ends_
+    return api.clip_convex(
+        x1, y1, x2, y2, window, normals=_text(normals) or "outward", ends=_text(ends) or "exact"
+    )
 
 
 def clip_polygon(vertices: Any, window: Any, method: Any) -> Solution:
@@ -289,6 +350,91 @@ def color(model: str, values: list[str], to: Any, unit: bool, bits: Any) -> Solu
     return color_api(model, *numbers, to=targets, unit=unit, bits=8 if bits is None else bits)
 
 
+def dither_threshold(image: str, top: Any, at: Any, compare: Any) -> Solution:
+    return api.dither_threshold(image, 255 if top is None else top, at=at, compare=_text(compare))
+
+
+def dither_ordered(
+    image: str,
+    top: Any,
+    matrix: Any,
+    compare: Any,
+    scale: Any,
+    base: Any,
+    transpose: bool,
+) -> Solution:
+    return api.dither_ordered(
+        image,
+        "2" if matrix is None else matrix,
+        255 if top is None else top,
+        compare=_text(compare),
+        scale=_text(scale),
+        base=_text(base),
+        transpose=transpose,
+    )
+
+
+def dither_diffusion(
+    image: str,
+    top: Any,
+    kernel: Any,
+    order: Any,
+    arithmetic: Any,
+    carry: Any,
+    compare: Any,
+) -> Solution:
+    return api.dither_diffusion(
+        image,
+        255 if top is None else top,
+        kernel=_text(kernel),
+        order=_text(order),
+        arithmetic=_text(arithmetic),
+        carry=_text(carry),
+        compare=_text(compare),
+    )
+
+
+def halftone(n: Any, level: Any, bits: Any) -> Solution:
+    return api.halftone(n, level=level, bits=1 if bits is None else bits)
+
+
+def inside(words: list[str], rule: Any, boundary: Any) -> Solution:
+    vertices, points = numbers_around(words, "--points", "points")
+    return api.inside(vertices, points, rule=_text(rule), boundary=_text(boundary))
+
+
+def framebuffer(
+    width: Any, height: Any, bits: Any, lut: Any, rate: Any, refresh: Any, interlaced: bool
+) -> Solution:
+    return api.framebuffer(
+        width, height, bits, lut=lut, rate=rate, refresh=refresh, interlaced=interlaced
+    )
+
+
+def line_style(x1: Any, y1: Any, x2: Any, y2: Any, mask: str, bits: Any, repeat: Any) -> Solution:
+    return api.line_style(
+        x1, y1, x2, y2, mask, bits=_text(bits), repeat=1 if repeat is None else repeat
+    )
+
+
+def thick_line(x1: Any, y1: Any, x2: Any, y2: Any, width: Any, brush: bool) -> Solution:
+    return api.thick_line(x1, y1, x2, y2, width, brush=brush)
+
+
+def char_bitmap(char: str, rows: Any, at: Any, scale: Any) -> Solution:
+    return api.char_bitmap(char, rows=rows, at=at or (0, 0), scale=1 if scale is None else scale)
+
+
+def char_stroke(char: str, at: Any, scale: Any, algo: Any) -> Solution:
+    return api.char_stroke(
+        char, at=at or (0, 0), scale=1 if scale is None else scale, algo=_text(algo)
+    )
+
+
+def char_storage(count: Any, width: Any, height: Any, packing: Any) -> Solution:
+    return api.char_storage(count, width, height, packing=_text(packing))
+
+
 def theory(topic: str, list_: bool = False) -> Solution:
     return theory_api(topic)
 
@@ -301,7 +447,8 @@ BODIES: dict[str, Body] = {
         local_control, circle, ellipse, compare_line, compare_circle, compare_curves, transform,
         viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon,
         fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color,
-        theory,
+        theory, clip_convex, dither_threshold, dither_ordered, dither_diffusion, halftone, inside,
+        framebuffer, line_style, thick_line, char_bitmap, char_stroke, char_storage,
     )
 }  # fmt: skip
 """Each command's answer, by the command's function name (``parametric_circle``)."""
