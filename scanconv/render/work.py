@@ -241,7 +241,44 @@ def _compare_line(a: Args) -> Work:
     return Work("rows", rows, None, "compare_lines", param)
 
 
+def _line_style(a: Args) -> Work:
+    rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    return Work("rows", rows, None, "linestyle/mask", param)
+
+
+def _thick_line(a: Args) -> Work:
+    # a row lists the pixels it adds: the width (replication) or the brush's square
+    rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    width = max(1.0, float(_num(a, "width")))
+    brush = bool(a.get("brush"))
+    weight = width * width / 4 if brush else width / 2
+    method = "brush" if brush else "replication"
+    return Work("rows", rows, None, "thickline/" + method, param, max(1.0, weight))
+
+
+def _inside(a: Args) -> Work:
+    # an edge table per point: points x edges rows (the command line's words hold both)
+    if "words" in a:
+        n = len(list(a["words"])) // 2
+        rows = (n // 2) * (n - n // 2)
+    else:
+        rows = (len(list(a["vertices"])) // 2) * (len(list(a["points"])) // 2)
+    return Work("rows", max(rows, 1), None, "inside", "points")
+
+
+def _char_bitmap(a: Args) -> Work:
+    # a row per set bit, each listing scale^2 pixels
+    rows_text = a.get("rows")
+    bits = 35 if rows_text is None else str(rows_text).count("1") + str(rows_text).count("#")
+    scale = max(1.0, float(_num(a, "scale") if a.get("scale") is not None else 1))
+    return Work("rows", max(bits, 1), None, "char/bitmap", "scale", max(1.0, scale * scale / 8))
+
+
 ESTIMATES: dict[str, Callable[[Args], Work]] = {
+    "line_style": _line_style,
+    "thick_line": _thick_line,
+    "inside": _inside,
+    "char_bitmap": _char_bitmap,
     "line": _line,
     "circle": _circle,
     "ellipse": _ellipse,
@@ -282,6 +319,14 @@ BOUNDED: dict[str, str] = {
     "color": "one conversion in one table",
     "theory": "a fixed text of the notes",
     "check": "marking: bounded by core.student_table and answers.marking limits",
+    "dither_threshold": "a row per pixel, at most algorithms.dither.MAX_CELLS = 4,096",
+    "dither_ordered": "a row per pixel, at most algorithms.dither.MAX_CELLS = 4,096",
+    "dither_diffusion": "a row per pixel, at most algorithms.dither.MAX_CELLS = 4,096",
+    "halftone": "n <= algorithms.dither.MAX_ORDER = 16: at most 257 patterns",
+    "framebuffer": "closed-form arithmetic on exact integers",
+    "char_stroke": "at most 4 strokes on a 5 x 7 grid, scaled at most 16 times",
+    "char_storage": "closed-form arithmetic on exact integers",
+    "clip_convex": "one line against at most algorithms.cyrus_beck.MAX_EDGES = 64 edges",
 }
 """The library functions whose answer is small whatever their arguments, and why."""
 
