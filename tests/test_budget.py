@@ -39,8 +39,25 @@ from scanconv.render.work import ESTIMATES
 
 from .helpers import assert_refused, python_calls, run
 
+
+def _ring_point(i: int) -> tuple[float, float]:
+    t = 2 * math.pi * i / 400
+    return math.cos(t), math.sin(t)
+
+
+#: A polygon of 400 vertices on a circle, and 100 points: 40,000 edge rows.
+_RING = [str(round(1000 * v)) for i in range(400) for v in _ring_point(i)]
+
 #: A request beyond a budget, per estimated command, with the words its refusal must contain.
 BEYOND = [
+    (["linestyle", "0", "0", "100000", "1", "--mask", "10", "-f", "rich"], "100,001 rows", "rich"),
+    (["thickline", "0", "0", "100000", "1", "--width", "3", "-f", "rich"], "100,001 rows", "rich"),
+    (["inside", *_RING, "--points", *(["1", "1"] * 100), "-f", "rich"], "rows", "rich"),
+    (
+        ["char", "bitmap", "X", "--rows", "/".join(["1" * 64] * 64), "--scale", "16", "-f", "rich"],
+        "rows",
+        "rich",
+    ),
     (["line", "0", "0", "100000", "1", "-f", "rich"], "100,001 rows", "at most 10,000"),
     (["circle", "100000", "-f", "rich"], "rows", "--format plain, markdown, csv or json"),
     (["ellipse", "1000000", "1000000", "-f", "rich"], "1,414,216 rows", "rich"),
@@ -158,6 +175,10 @@ def test_every_estimated_command_has_a_refusal_case():
         "bspline": "bspline",
         "continuity": "continuity",
         "local-control": "local_control",
+        "linestyle": "line_style",
+        "thickline": "thick_line",
+        "inside": "inside",
+        "char": "char_bitmap",
     }
     covered = set()
     for args, _, _ in BEYOND:

@@ -426,6 +426,11 @@ class _Reader:
                 raise self.error(f"unknown control symbol \\{c}")
             return
         name = self.word()
+        if not (self._symbol(name, out) or self._structure(name, out)):
+            raise self.error(f"unknown macro \\{name}")
+
+    def _symbol(self, name: str, out: _Out) -> bool:
+        """A macro that stands for a character or a space (``\\Delta``, ``\\le``, ``\\quad``)."""
         if name in _LETTERS:
             out.add(_LETTERS[name])
             if self.s[self.i :].lstrip()[:1].isalnum():  # \Delta x is Δx; \pi = 3 is π = 3
@@ -446,7 +451,14 @@ class _Reader:
         elif name in _CLOSE:
             out.strip()
             out.add(_CLOSE[name])
-        elif name in _FUNCTIONS or name == "operatorname":
+        elif name not in _SIZES:
+            return False
+        return True
+
+    def _structure(self, name: str, out: _Out) -> bool:
+        """A macro with arguments: functions, text, fonts, fractions, roots, delimiters and
+        ``bmatrix``."""
+        if name in _FUNCTIONS or name == "operatorname":
             out.add(name if name in _FUNCTIONS else self.argument())
             self.skip_spaces()
             if self.peek().isalnum() or self._letter_like_follows():
@@ -460,15 +472,27 @@ class _Reader:
             frac = a + _FRACS[name] + b
             out.add(f"({frac})" if self.s[self.i :].lstrip()[:1] == "(" else frac)
         elif name == "sqrt":
-            index = ""
-            if self.peek() == "[":
-                end = self.s.index("]", self.i)
-                index, self.i = _script(self.s[self.i + 1 : end], sup=True), end + 1
-            a = self.argument()
-            out.add(index + "√" + (a if a.isalnum() else f"({a})"))
+            out.add(self._root())
         elif name == "binom":
             out.add(f"C({self.argument()}, {self.argument()})")
-        elif name == "left":  # the delimiter, then the spaces after it
+        elif name in ("left", "right"):
+            self._delimiter(name, out)
+        elif name == "begin":
+            out.add(self._matrix())
+        else:
+            return False
+        return True
+
+    def _root(self) -> str:
+        index = ""
+        if self.peek() == "[":
+            end = self.s.index("]", self.i)
+            index, self.i = _script(self.s[self.i + 1 : end], sup=True), end + 1
+        a = self.argument()
+        return index + "√" + (a if a.isalnum() else f"({a})")
+
+    def _delimiter(self, name: str, out: _Out) -> None:
+        if name == "left":  # the delimiter, then the spaces after it
             self.skip_spaces()
             if self.peek() == ".":  # \left. : no delimiter
                 self.i += 1
@@ -477,15 +501,33 @@ class _Reader:
             else:
                 out.add(self.argument())
             self.skip_spaces()
-        elif name == "right":  # the spaces before it, then the delimiter
-            out.strip()
-            self.skip_spaces()
-            if self.peek() == ".":
-                self.i += 1
-        elif name in _SIZES:
-            pass
-        else:
-            raise self.error(f"unknown macro \\{name}")
+            return
+        out.strip()  # \right: the spaces before it, then the delimiter
+        self.skip_spaces()
+        if self.peek() == ".":
+            self.i += 1
+
+    def _matrix(self) -> str:
+        """``\\begin{bmatrix} a & b \\\\ c & d \\end{bmatrix}`` as ``[[a, b], [c, d]]``.
+
+        >>> tex_to_unicode(r"D = \\begin{bmatrix} 0 & 2 \\\\ 3 & \\frac{1}{2} \\end{bmatrix}")
+        'D = [[0, 2], [3, 1 / 2]]'
+        """
+        env = self.argument()
+        if env != "bmatrix":
+            raise self.error(f"unknown environment {env}")
+        end = self.s.find("\\end{bmatrix}", self.i)
+        if end < 0:
+            raise self.error("missing \\end{bmatrix}")
+        body, self.i = self.s[self.i : end], end + len("\\end{bmatrix}")
+        rows = [r for r in body.split("\\\\") if r.strip()]
+        return (
+            "["
+            + ", ".join(
+                "[" + ", ".join(tex_to_unicode(c.strip()) for c in r.split("&")) + "]" for r in rows
+            )
+            + "]"
+        )
 
     def _letter_like_follows(self) -> bool:
         """True if a letter-like control word or a function name comes next."""
