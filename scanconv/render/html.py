@@ -53,7 +53,7 @@ from itertools import islice
 from typing import Any
 
 from ..core.numeric import fmt_pixel
-from ..core.records import Column, Solution, Table, step_getter
+from ..core.records import Column, Solution, step_getter
 from . import Notice, Options, stepper
 from .cells import cell, numeric_column
 from .mathml import esc, json_script, note_html, prose_html, tex_math
@@ -82,7 +82,6 @@ MAX_TABLE_COLUMNS = 64
 MAX_PIXEL_LIST = 4_000
 """Pixels listed in words under the tables."""
 
-SPLIT_COLUMNS = 9
 """A secondary table of this many columns or more (the circle's symmetry table) is split into
 parts, as in the Markdown and LaTeX answers."""
 
@@ -163,23 +162,6 @@ def _table(
     if notes:
         body += '<p class="sc-more">' + " ".join(notes) + "</p>"
     return body
-
-
-def _split_table(table: Table, exact: bool) -> Iterator[str]:
-    """A table of :data:`SPLIT_COLUMNS` columns or more in the parts the LaTeX and Markdown
-    answers set it in (each repeating the first column), so it fits a column and a page."""
-    from .latex import split_columns
-
-    sample = [
-        [cell(v, c, exact) for v, c in zip(row, table.columns, strict=False)]
-        for row in islice(table.rows(), 100)
-    ]
-    parts = [part for part, _ in split_columns(table.columns, sample)]
-    for n, part in enumerate(parts, 1):
-        title = table.title if len(parts) == 1 else f"{table.title}, part {n} of {len(parts)}"
-        cols = [table.columns[i] for i in part]
-        rows = (tuple(row[i] for i in part) for row in table.rows())
-        yield _table(title, cols, rows, exact)
 
 
 def _step_rows(solution: Solution) -> Iterator[tuple[Any, ...]]:
@@ -291,10 +273,8 @@ def answer_section(
                 positions = {r: (r + 1, 1) for r in range(st.n)}
         if mapped is not None and t in mapped:
             positions = {r: step_positions[s] for r, s in mapped[t].items() if s in step_positions}
-        if positions is None and len(table.columns) >= SPLIT_COLUMNS:
-            out.extend(_split_table(table, exact))
-        else:
-            out.append(_table(table.title, table.columns, table.rows(), exact, positions, None, at))
+        # a table stays whole (the symmetry table, a comparison); its box scrolls sideways
+        out.append(_table(table.title, table.columns, table.rows(), exact, positions, None, at))
     if solution.pixels is not None and st is not None:
         count = st.total_pixels
         listed = ", ".join(fmt_pixel(p) for p in st.pixels[:MAX_PIXEL_LIST])

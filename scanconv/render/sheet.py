@@ -260,18 +260,9 @@ def _levels(sheet: Sheet) -> tuple[int, int]:
 
 
 def _parts(blank: Blank) -> list[tuple[list[int], str]]:
-    """The column indexes and the label of each part a Markdown table is set in: split as the
-    key's Markdown table is (:func:`scanconv.render.text._parts`), when wide."""
-    from .latex import split_columns
-    from .text import SPLIT_COLUMNS
-
-    every = list(range(len(blank.columns)))
-    if len(blank.columns) < SPLIT_COLUMNS:
-        return [(every, blank.title)]
-    parts = [part for part, _ in split_columns(blank.columns, [list(r) for r in blank.sample])]
-    if len(parts) == 1:
-        return [(every, blank.title)]
-    return [(p, f"{blank.title}, part {n} of {len(parts)}") for n, p in enumerate(parts, 1)]
+    """The columns and the label of a Markdown worksheet table: whole, as the key's table is
+    (:func:`scanconv.render.text._parts`) and as the PDF sets it."""
+    return [(list(range(len(blank.columns))), blank.title)]
 
 
 def _markdown(

@@ -222,29 +222,14 @@ def all_tables(
         yield table.title, table.columns, partial(table_rows, table, exact)
 
 
-SPLIT_COLUMNS = 9
-"""Markdown tables with this many columns or more are split when too wide for a page."""
-
-
 def _parts(
     name: str, cols: Sequence[Column], rows: Rows, *, markdown: bool
 ) -> Iterator[tuple[list[int], str, Iterator[list[str]]]]:
-    """The parts a table is set in: in markdown, a table too wide for a page (the circle's
-    9-column symmetry table, a B-spline's basis table) is split as LaTeX splits it, each part
-    repeating the first column; plain text keeps one table. Only tables of
-    :data:`SPLIT_COLUMNS` or more columns are split: narrower ones fit a page."""
-    every = list(range(len(cols)))
-    if not markdown or len(cols) < SPLIT_COLUMNS:
-        yield every, name, rows()
-        return
-    from .latex import split_columns  # the same page-width rule as the LaTeX answer
-
-    parts = [part for part, _ in split_columns(cols, list(islice(rows(), 100)))]
-    if len(parts) == 1:
-        yield every, name, rows()
-        return
-    for n, part in enumerate(parts, 1):
-        yield part, f"{name}, part {n} of {len(parts)}", ([r[i] for i in part] for r in rows())
+    """The parts a table is set in: one, whole, in markdown and plain alike. A table that
+    belongs together (a comparison, the circle's 9-column symmetry table) stays one table,
+    as the PDF sets it; pandoc and a browser wrap or scroll it (the terminal's own format,
+    ``rich``, fits its width by splitting, :mod:`.terminal`)."""
+    yield list(range(len(cols))), name, rows()
 
 
 _MD_SPECIAL = None
