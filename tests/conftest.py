@@ -18,21 +18,36 @@ import pytest
 from hypothesis import settings
 
 # No wall-clock deadline anywhere: on a shared machine a cold first call can take any time, and
-# timings belong in benchmarks/. HYPOTHESIS_PROFILE=dev for a quick inner loop (20 examples a
-# property); CI (and the default) keeps each test's own count.
+# timings belong in benchmarks/. The dev profile (the inner loop) runs at most DEV_EXAMPLES
+# examples of each property, even of one that asks for more; ci (the README's command) runs
+# each test's own count.
+DEV_EXAMPLES = 20
 settings.register_profile("ci", deadline=None)
-settings.register_profile("dev", max_examples=20, deadline=None)
+settings.register_profile("dev", max_examples=DEV_EXAMPLES, deadline=None)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+
+def pytest_configure(config):
+    """``pytest -m "not slow"`` (the inner loop) runs the dev profile unless
+    ``HYPOTHESIS_PROFILE`` says otherwise. Before collection: the profile's settings are
+    what an ``@given`` test without its own ``@settings`` takes when its module is imported."""
+    if "HYPOTHESIS_PROFILE" not in os.environ and config.option.markexpr == "not slow":
+        settings.load_profile("dev")
 
 
 def pytest_collection_modifyitems(config, items):
     """A test that needs programs outside Python (``@pytest.mark.external``) is slow too, so
     ``pytest -m "not slow"`` is the inner loop. Every other mark is declared where its test
     is defined (``pytestmark`` in the file, a decorator on the test), never here by name
-    (tests/test_markers.py)."""
+    (tests/test_markers.py). Under the dev profile, a property's own larger example count is
+    capped at the profile's (hypothesis reads a test's settings when it runs)."""
+    dev = settings.default.max_examples == DEV_EXAMPLES
     for item in items:
         if item.get_closest_marker("external") is not None:  # pdflatex, pandoc, chromium
             item.add_marker(pytest.mark.slow)
+        own = getattr(getattr(item, "obj", None), "_hypothesis_internal_use_settings", None)
+        if dev and own is not None and own.max_examples > DEV_EXAMPLES:
+            item.obj._hypothesis_internal_use_settings = settings(own, max_examples=DEV_EXAMPLES)
 
 
 def pytest_addoption(parser):

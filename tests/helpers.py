@@ -82,29 +82,30 @@ class Overtime(BaseException):
 
 
 def run_limited(*args: str, seconds: float = HANG_SECONDS) -> Result:
-    """:func:`run` with a hard limit: a run still going after ``seconds`` fails the test with
-    its command line instead of hanging the suite. An alarm interrupts Python code; a
-    ``faulthandler`` watchdog at twice the limit ends the process (dumping every thread's
-    stack) if the run is stuck where the alarm cannot reach it."""
+    """:func:`run` with a hard limit: a run that has used ``seconds`` of CPU time fails the
+    test with its command line instead of hanging the suite. CPU time (``ITIMER_PROF``), not
+    wall time, so that a busy machine cannot trip it; the alarm interrupts Python code, and a
+    ``faulthandler`` watchdog at ten times the limit of wall time ends the process (dumping
+    every thread's stack) if the run is stuck where the alarm cannot reach it."""
     import faulthandler
     import signal
 
     def overtime(signum: int, frame: object) -> None:
         raise Overtime
 
-    previous = signal.signal(signal.SIGALRM, overtime)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    faulthandler.dump_traceback_later(2 * seconds, exit=True)
+    previous = signal.signal(signal.SIGPROF, overtime)
+    signal.setitimer(signal.ITIMER_PROF, seconds)
+    faulthandler.dump_traceback_later(10 * seconds, exit=True)
     try:
         return run(*args)
     except Overtime:
         import pytest
 
-        pytest.fail(f"scanconv {' '.join(args)!r} ran over {seconds:g} s: a hole in a budget")
+        pytest.fail(f"scanconv {' '.join(args)!r} used {seconds:g} s of CPU: a hole in a budget")
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.setitimer(signal.ITIMER_PROF, 0)
         faulthandler.cancel_dump_traceback_later()
-        signal.signal(signal.SIGALRM, previous)
+        signal.signal(signal.SIGPROF, previous)
 
 
 def python_calls(fn: Callable[..., T], *args: Any) -> tuple[T, int]:

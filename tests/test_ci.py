@@ -43,7 +43,7 @@ def test_the_command_checks_lint_format_types_and_coverage():
         "ruff format --check .",
         "mypy",
         "lint-imports --no-cache",
-        "pytest --cov --cov-fail-under=90",
+        "pytest --cov --cov-fail-under=90 -n auto",
     ]
     pyproject = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
     assert re.search(r'\[tool\.coverage\.run\]\nsource = \["scanconv"\]', pyproject)
@@ -80,7 +80,7 @@ def test_any_failing_check_fails_the_run(failing, tmp_path):
             "ruff format --check .",
             "mypy",
             "lint-imports --no-cache",
-            "pytest --cov --cov-fail-under=90",
+            "pytest --cov --cov-fail-under=90 -n auto",
         ]
     else:
         assert proc.returncode != 0, ran
