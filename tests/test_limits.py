@@ -53,6 +53,11 @@ NOT_INPUT_LIMITS = {
 }
 
 SHEETS = ROOT / "tests" / "data" / "sheet"  # question files beyond the sheet's limits
+LONG_LINE = Path(tempfile.gettempdir()) / "scanconv-test-sheet-long-line.txt"
+if not LONG_LINE.exists():  # one line of 10,001 characters (written whole: workers share it)
+    _line = LONG_LINE.with_name(f"{LONG_LINE.name}.{os.getpid()}")
+    _line.write_text("line 2 2 10 6 " + "x" * 9987 + "\n")
+    os.replace(_line, LONG_LINE)
 BIG_SHEET = Path(tempfile.gettempdir()) / "scanconv-test-sheet-over-1e6-bytes.txt"
 if not BIG_SHEET.exists() or BIG_SHEET.stat().st_size <= 10**6:  # whole or not at all: the
     _part = BIG_SHEET.with_name(f"{BIG_SHEET.name}.{os.getpid()}")  # parallel workers share it
@@ -60,6 +65,22 @@ if not BIG_SHEET.exists() or BIG_SHEET.stat().st_size <= 10**6:  # whole or not 
     os.replace(_part, BIG_SHEET)
 
 CHECK = ROOT / "tests" / "data" / "check"  # student tables for scanconv check
+HUGE_CELL = Path(tempfile.gettempdir()) / "scanconv-test-huge-cell.csv"
+if not HUGE_CELL.exists():  # a p of 10^25, beyond core.student_table.CELL_LIMIT
+    _cell = HUGE_CELL.with_name(f"{HUGE_CELL.name}.{os.getpid()}")
+    _cell.write_text("k,p,x,y\n0," + "1" + "0" * 25 + ",2,2\n")
+    os.replace(_cell, HUGE_CELL)
+
+
+def _ring(n: int) -> list[str]:
+    """A convex polygon of n vertices on a circle of radius 1000, as x y words."""
+    import math
+
+    return [
+        str(round(1000 * f(2 * math.pi * i / n))) for i in range(n) for f in (math.cos, math.sin)
+    ]
+
+
 POINTS_101 = [str(i % 7) for i in range(202)]
 POINTS_12 = [str(i % 5) for i in range(24)]
 
@@ -69,6 +90,52 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "answers.practice.MAX_COUNT": [(["practice", "--count", "201", "--seed", "1"], "200")],
     "questions.files.MAX_FILE_BYTES": [(["sheet", str(BIG_SHEET)], "1,000,000 bytes")],
     "questions.files.MAX_QUESTIONS": [(["sheet", str(SHEETS / "too-many-questions.txt")], "1000")],
+    "questions.files.MAX_LINE_CHARS": [(["sheet", str(LONG_LINE)], "10,000")],
+    "algorithms.dither.MAX_CELLS": [
+        (["dither", "threshold", "--image", ";".join([" ".join(["1"] * 65)] * 64)], "4,096")
+    ],
+    "algorithms.dither.MAX_ORDER": [(["halftone", "32"], "16")],
+    "algorithms.inside.MAX_POINTS": [
+        (["inside", "0", "0", "4", "0", "0", "4", "--points", *(["1", "1"] * 101)], "100")
+    ],
+    "algorithms.cyrus_beck.MAX_EDGES": [
+        (
+            ["clip", "convex", "0", "0", "1", "1", "--window-vertices", *_ring(65)],
+            "64",
+        )
+    ],
+    "algorithms.weiler_atherton.MAX_VERTICES": [
+        (
+            [
+                "clip",
+                "polygon",
+                *_ring(65),
+                "--window",
+                "-1",
+                "-1",
+                "1",
+                "1",
+                "--method",
+                "weiler-atherton",
+            ],
+            "64",
+        )
+    ],
+    "algorithms.attributes.MAX_MASK": [
+        (["linestyle", "0", "0", "5", "1", "--mask", "1" * 65], "64")
+    ],
+    "algorithms.attributes.MAX_WIDTH": [(["thickline", "0", "0", "5", "1", "--width", "26"], "25")],
+    "algorithms.characters.MAX_CHARACTERS": [
+        (["char", "storage", str(2**20 + 1), "5", "7"], "2^20")
+    ],
+    "algorithms.characters.MAX_SCALE": [(["char", "bitmap", "A", "--scale", "17"], "16")],
+    "_api.syllabus.MAX_GLYPH": [
+        (["char", "bitmap", "X", "--rows", "/".join(["1" * 65] * 2)], "64")
+    ],
+    "answers.framebuffer.MAX_BITS": [(["framebuffer", "640", "480", "65"], "64")],
+    "core.student_table.CELL_LIMIT": [
+        (["check", str(HUGE_CELL), "--", "line", "2", "2", "10", "6"], "out of range")
+    ],
     "core.numeric.COORD_LIMIT": [
         (["line", "0", "0", "1000000001", "0"], "1e+09"),
         (["circle", "1000000001"], "1e+09"),
@@ -207,7 +274,9 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
 
 #: A limit that is not a refusal: the grid is left out with a note, and the answer is complete.
 NOTED = {
-    "core.records.MAX_GRID_CELLS": (["line", "0", "0", "98", "0", "-f", "plain"], "101 x 3 cells")
+    "core.records.MAX_GRID_CELLS": (["line", "0", "0", "98", "0", "-f", "plain"], "101 x 3 cells"),
+    # a grid beyond the drawn figure's limit is listed, not drawn (tests/test_print.py)
+    "render.tikz.MAX_FIGURE_CELLS": (["line", "0", "0", "98", "0", "-f", "latex"], "101 x 3"),
 }
 
 ALLOCATORS = ("empty", "zeros", "ones", "full", "arange", "linspace", "meshgrid", "indices")

@@ -66,3 +66,19 @@ def test_answer() -> None:
     sol = midpoint_clip_solution(-4, 2, 4, 2, [0, 0, 8, 8])
     assert sol.data["pieces"] == 7
     assert next(r[5] for r in sol.tables[0].rows()) == "split"
+
+
+@settings(deadline=None, max_examples=100)
+@given(
+    p1=st.tuples(st.integers(-(10**9), 10**9), st.integers(-(10**9), 10**9)),
+    p2=st.tuples(st.integers(-(10**9), 10**9), st.integers(-(10**9), 10**9)),
+    how=st.sampled_from(["rounded", "floor", "exact"]),
+)
+def test_the_pieces_are_few_even_for_the_longest_lines(p1, p2, how) -> None:
+    """Each undecided piece is halved until it is a unit long: a line of length L takes
+    about 2 log2(L) pieces a window edge it crosses, never many (no limit is needed)."""
+    import math
+
+    length = max(abs(p2[0] - p1[0]), abs(p2[1] - p1[1]), 2)
+    pieces = list(subdivide(p1, p2, (-5, -5, 5, 5), how))
+    assert len(pieces) <= 8 * (math.log2(length) + 2)

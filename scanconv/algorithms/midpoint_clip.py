@@ -25,8 +25,6 @@ from ..core.numeric import Number, normalize, round_half_up
 from .clipping import Point, Rect, region_code
 
 MIDPOINTS = ("rounded", "floor", "exact")
-MAX_PIECES = 400
-"""The most pieces worked (a segment crossing the window halves its way to each boundary)."""
 
 
 class Piece(NamedTuple):
@@ -69,8 +67,6 @@ def subdivide(p1: Point, p2: Point, window: Rect, midpoint: str = "rounded") -> 
     todo: list[tuple[Point, Point]] = [(p1, p2)]
     k = 0
     while todo:
-        if k >= MAX_PIECES:
-            raise InputError(f"the subdivision needs more than {MAX_PIECES} pieces", "window")
         a, b = todo.pop()
         ca, cb = region_code(a, window), region_code(b, window)
         if ca == 0 and cb == 0:

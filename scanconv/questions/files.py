@@ -26,6 +26,9 @@ MAX_QUESTIONS = 1000
 """The most questions one sheet takes (a 200-question key is the benchmark)."""
 MAX_FILE_BYTES = 1_000_000
 """The largest question file read."""
+MAX_LINE_CHARS = 10_000
+"""The longest line of a question file: a question with a 1,000-vertex polygon is under 10,000
+characters (splitting a line into words takes time growing with its square)."""
 
 
 class QuestionError(ValueError):
@@ -104,6 +107,10 @@ def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
     questions: list[Question] = []
     number = 0
     for number, raw in enumerate(split_lines(text.removeprefix("\ufeff")), 1):
+        if len(raw) > MAX_LINE_CHARS:
+            raise QuestionError(
+                source, number, f"a line of {len(raw):,} characters; at most {MAX_LINE_CHARS:,}"
+            )
         stripped = _CONTROL.sub("\ufffd", raw).strip()
         if not stripped or stripped.startswith("#"):
             continue

@@ -104,7 +104,8 @@ def _command(args: list[str]) -> tuple[Spec, list[str]]:
         name, known = top, sorted({p[0] for p in SPECS} | set(NOT_QUESTIONS))
     close = difflib.get_close_matches(name, known, n=1)
     hint = f"; did you mean '{close[0]}'?" if close else ""
-    raise UsageError(f"No such command '{name}'{hint}")
+    shown = name if len(name) <= 40 else name[:39] + "…"
+    raise UsageError(f"No such command '{shown}'{hint}")
 
 
 _CONVERT = {"number": number, "integer": integer, "coordinate": coordinate}
