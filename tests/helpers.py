@@ -25,6 +25,23 @@ class Result:
     err: str
 
 
+class _Bounded(io.StringIO):
+    """Captured output that keeps its first ``limit`` characters and counts the rest: a
+    fuzzed command may print a large allowed answer (the CLI streams it; a test that kept it
+    whole in memory could hold gigabytes)."""
+
+    def __init__(self, limit: int) -> None:
+        super().__init__()
+        self.limit, self.dropped = limit, 0
+
+    def write(self, text: str) -> int:
+        room = self.limit - self.tell()
+        if room > 0:
+            super().write(text[:room])
+        self.dropped += max(0, len(text) - max(room, 0))
+        return len(text)
+
+
 def run(*args: str) -> Result:
     """Run ``scanconv ARGS`` in-process, capturing stdout and stderr."""
     out, err = io.StringIO(), io.StringIO()
@@ -81,9 +98,18 @@ class Overtime(BaseException):
     ``except Exception`` in the code under test swallows it."""
 
 
+def _run_bounded(*args: str, limit: int = 1 << 20) -> Result:
+    """:func:`run`, keeping at most ``limit`` characters of each stream."""
+    out, err = _Bounded(limit), _Bounded(limit)
+    with redirect_stdout(out), redirect_stderr(err):
+        code = main(list(args))
+    return Result(code, out.getvalue(), err.getvalue())
+
+
 def run_limited(*args: str, seconds: float = HANG_SECONDS) -> Result:
-    """:func:`run` with a hard limit: a run that has used ``seconds`` of CPU time fails the
-    test with its command line instead of hanging the suite. CPU time (``ITIMER_PROF``), not
+    """:func:`run` with hard limits: at most a megabyte of each stream is kept, and a run
+    that has used ``seconds`` of CPU time fails the test with its command line instead of
+    hanging the suite. CPU time (``ITIMER_PROF``), not
     wall time, so that a busy machine cannot trip it; the alarm interrupts Python code, and a
     ``faulthandler`` watchdog at ten times the limit of wall time ends the process (dumping
     every thread's stack) if the run is stuck where the alarm cannot reach it."""
@@ -97,7 +123,7 @@ def run_limited(*args: str, seconds: float = HANG_SECONDS) -> Result:
     signal.setitimer(signal.ITIMER_PROF, seconds)
     faulthandler.dump_traceback_later(10 * seconds, exit=True)
     try:
-        return run(*args)
+        return _run_bounded(*args)
     except Overtime:
         import pytest
 

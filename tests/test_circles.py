@@ -412,7 +412,11 @@ def test_a_huge_radius_streams_its_table():
     head = [proc.stdout.readline() for _ in range(3)]
     proc.kill()
     proc.communicate(timeout=60)
-    assert head == ["k,p,decision,x,y,x_k,y_k\n", "0,-999999,E,0,1000000,0,1000000\n", head[2]]
+    assert head == [
+        "k,p,decision,plot_x,plot_y,x_k,y_k\n",
+        "0,-999999,E,0,1000000,0,1000000\n",
+        head[2],
+    ]
 
 
 def test_every_format_renders_a_circle_and_an_ellipse():

@@ -57,11 +57,8 @@ def weiler_atherton_solution(subject: Sequence[Number], clip: Sequence[Number]) 
     r = weiler_atherton(s, c)
     derived = [
         rule("in", r"\text{in: the subject enters the clip region; out: it leaves}"),
-        rule(
-            "walk",
-            r"\text{from an unvisited in: follow the subject to an out, then the clip "
-            r"polygon to an in, until back at the start}",
-        ),
+        rule("walk", r"\text{walk: from an unvisited in, follow the subject to an out,}"),
+        rule("switch", r"\text{then the clip polygon to an in, until back at the start}"),
     ]
     for i, walk in enumerate(r.walks, 1):
         arrow = " \\to ".join((*walk, walk[0]))
