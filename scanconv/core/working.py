@@ -36,6 +36,8 @@ from __future__ import annotations
 
 import re
 
+from .tex_escape import tex_text as tex_text  # the LaTeX escaper, with the working
+
 # --- Characters no output may carry as they are ----------------------------------------------
 
 UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]")
@@ -563,80 +565,3 @@ def tex_to_unicode(tex: str) -> str:
     'x = x₁ + (Δx / Δy)(y - y₁), p1₀ = rₓ²/4'
     """
     return _Reader(tex).math(group=False).replace(_HARD, " ").strip()
-
-
-# --- Unicode -> LaTeX text mode ----------------------------------------------------------------
-
-_TEX = {
-    "Δ": r"$\Delta$",
-    "≥": r"$\ge$",
-    "≤": r"$\le$",
-    "≠": r"$\ne$",
-    "·": r"$\cdot$",
-    "×": r"$\times$",
-    "→": r"$\to$",
-    "↑": r"$\uparrow$",
-    "↓": r"$\downarrow$",
-    "≈": r"$\approx$",
-    "²": r"$^2$",
-    "³": r"$^3$",
-    "√": r"$\surd$",
-    "ε": r"$\varepsilon$",
-    "θ": r"$\theta$",
-    "π": r"$\pi$",
-    "°": r"$^\circ$",
-    "−": "--",
-    "…": r"\ldots{}",
-    "–": "--",
-    "—": "---",
-    "⌈": r"$\lceil$",
-    "⌉": r"$\rceil$",
-    "⌊": r"$\lfloor$",
-    "⌋": r"$\rfloor$",
-    "∈": r"$\in$",
-}
-
-_TEX_SPECIAL = {
-    "\\": r"\textbackslash{}",
-    "&": r"\&",
-    "%": r"\%",
-    "$": r"\$",
-    "#": r"\#",
-    "_": r"\_",
-    "{": r"\{",
-    "}": r"\}",
-    "~": r"\textasciitilde{}",
-    "^": r"\textasciicircum{}",
-    "<": r"\textless{}",
-    ">": r"\textgreater{}",
-    "|": r"\textbar{}",
-}
-
-
-def tex_text(s: str) -> str:
-    """Escape text for LaTeX, turning known Unicode symbols into math.
-
-    Every TeX special character is escaped (``^`` too, so no ``^^2f`` can spell a character),
-    a run of hyphens keeps every hyphen (``--algo`` is never an en dash), and control
-    characters become ``?`` as any character TeX's fonts lack does.
-
-    >>> tex_text("p_k >= 0 chooses NE; 50% of Δx")
-    'p\\\\_k \\\\textgreater{}= 0 chooses NE; 50\\\\% of $\\\\Delta$x'
-    >>> tex_text("--algo dda ^^2f")
-    '-{}-algo dda \\\\textasciicircum{}\\\\textasciicircum{}2f'
-    """
-    out = []
-    for i, ch in enumerate(s):
-        if ch == "-" and s[i + 1 : i + 2] == "-":
-            out.append("-{}")
-        elif ch in _TEX_SPECIAL:
-            out.append(_TEX_SPECIAL[ch])
-        elif ch in _TEX:
-            out.append(_TEX[ch])
-        elif ch.isascii() and ch.isprintable():
-            out.append(ch)
-        elif ch in "\t\n":
-            out.append(" ")
-        else:
-            out.append("?")
-    return "".join(out)
