@@ -11,10 +11,7 @@ from ..algorithms.cyrus_beck import CBResult, cyrus_beck
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt_short, normalize
 from ..core.records import Quantity, Solution, Table, heading, rule, worked
-
-
-def _pt(p: Sequence[Number]) -> str:
-    return f"({fmt_short(p[0])}, {fmt_short(p[1])})"
+from .shapes import pt
 
 
 def _vertices(coords: Sequence[Number], param: str) -> list[tuple[Number, Number]]:
@@ -31,8 +28,8 @@ def _edge_table(result: CBResult, n: int) -> Table:
         for r in result.rows:
             yield (
                 name(r.edge),
-                _pt(r.normal),
-                _pt(r.point),
+                pt(r.normal),
+                pt(r.point),
                 fmt_short(r.n_dot_d),
                 fmt_short(r.n_dot_w),
                 "-" if r.t is None else fmt_short(r.t),
@@ -82,12 +79,12 @@ def cyrus_beck_solution(
     d = (normalize(p1[0] - p0[0]), normalize(p1[1] - p0[1]))
     sign = "-" if normals == "outward" else ""
     given = (
-        worked("P0", p0, f"P_0 = {_pt(p0)}"),
-        worked("P1", p1, f"P_1 = {_pt(p1)}"),
-        *(worked(f"V{i}", v, f"V_{{{i}}} = {_pt(v)}") for i, v in enumerate(win, 1)),
+        worked("P0", p0, f"P_0 = {pt(p0)}"),
+        worked("P1", p1, f"P_1 = {pt(p1)}"),
+        *(worked(f"V{i}", v, f"V_{{{i}}} = {pt(v)}") for i, v in enumerate(win, 1)),
     )
     derived: list[Quantity] = [
-        worked("D", d, f"D = P_1 - P_0 = {_pt(d)}"),
+        worked("D", d, f"D = P_1 - P_0 = {pt(d)}"),
         rule("P", r"P(t) = P_0 + t D, \quad 0 \le t \le 1"),
         rule("t", f"t = N \\cdot (P_0 - E) / ({sign}N \\cdot D)"),
         rule(
@@ -105,7 +102,7 @@ def cyrus_beck_solution(
                 "clipped",
                 (a, b),
                 f"t_E = {fmt_short(last.t_enter)}, t_L = {fmt_short(last.t_leave)}: "
-                f"P(t_E) = {_pt(a)}, P(t_L) = {_pt(b)}",
+                f"P(t_E) = {pt(a)}, P(t_L) = {pt(b)}",
             )
         )
     else:
@@ -123,7 +120,7 @@ def cyrus_beck_solution(
     return Solution(
         primitive="clip",
         algorithm="cyrus-beck",
-        title=f"Cyrus-Beck clipping: {_pt(p0)} to {_pt(p1)}, a window of {len(win)} vertices",
+        title=f"Cyrus-Beck clipping: {pt(p0)} to {pt(p1)}, a window of {len(win)} vertices",
         given=given,
         derived=tuple(derived),
         notes=notes,

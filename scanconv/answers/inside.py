@@ -12,13 +12,10 @@ from ..algorithms.polygon import check_polygon, vertices_from_coords
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt_short, normalize
 from ..core.records import PixelFigure, Solution, Table, heading, rule, worked
+from .shapes import pt
 
 RULES = ("both", "even-odd", "nonzero")
 """Which rule an answer applies."""
-
-
-def _pt(p: Sequence[Number]) -> str:
-    return f"({fmt_short(p[0])}, {fmt_short(p[1])})"
 
 
 def _label(i: int) -> str:
@@ -37,7 +34,7 @@ def _edge_table(vertices: Sequence[io.Point], point: io.Point, number: int) -> T
         for t in tests:
             yield (
                 _edge_name(t.edge, n),
-                f"{_pt(t.a)} to {_pt(t.b)}",
+                f"{pt(t.a)} to {pt(t.b)}",
                 "yes" if t.straddles else "no",
                 "-" if t.x is None else fmt_short(t.x),
                 "yes" if t.crossing else "no",
@@ -45,7 +42,7 @@ def _edge_table(vertices: Sequence[io.Point], point: io.Point, number: int) -> T
             )
 
     return Table(
-        f"P{number} = {_pt(point)}: the ray y = {fmt_short(point[1])}, x > {fmt_short(point[0])}",
+        f"P{number} = {pt(point)}: the ray y = {fmt_short(point[1])}, x > {fmt_short(point[0])}",
         (
             heading("edge", r"\text{edge}"),
             heading("ends", r"\text{from, to}"),
@@ -65,7 +62,7 @@ def _verdicts_table(verdicts: Sequence[io.Verdict], rule_name: str, n: int) -> T
     def rows() -> Iterator[tuple[Any, ...]]:
         for i, v in enumerate(verdicts, 1):
             on = "-" if v.on_boundary is None else f"on {_edge_name(v.on_boundary, n)}"
-            row: list[Any] = [f"P{i} {_pt(v.point)}", on, v.crossings]
+            row: list[Any] = [f"P{i} {pt(v.point)}", on, v.crossings]
             parity = "odd" if v.crossings % 2 else "even"
             why = "boundary" if v.on_boundary is not None else parity
             if rule_name != "nonzero":
@@ -154,8 +151,8 @@ def inside_solution(
     verdicts = [io.verdict(pts, p, boundary) for p in tested]
     n = len(pts)
     given = (
-        *(worked(_label(i), p, f"{_label(i)} = {_pt(p)}") for i, p in enumerate(pts)),
-        *(worked(f"P{i}", p, f"P_{{{i}}} = {_pt(p)}") for i, p in enumerate(tested, 1)),
+        *(worked(_label(i), p, f"{_label(i)} = {pt(p)}") for i, p in enumerate(pts)),
+        *(worked(f"P{i}", p, f"P_{{{i}}} = {pt(p)}") for i, p in enumerate(tested, 1)),
     )
     derived = _INSIDE_RULES
     notes = (

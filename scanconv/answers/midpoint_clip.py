@@ -7,15 +7,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from ..algorithms.clipping import Point, Rect
+from ..algorithms.clipping import Rect
 from ..algorithms.midpoint_clip import Piece, subdivide, visible
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt_short, normalize
 from ..core.records import Solution, Table, heading, rule, worked
-
-
-def _pt(p: Point) -> str:
-    return f"({fmt_short(p[0])}, {fmt_short(p[1])})"
+from .shapes import pt
 
 
 def _code(c: int | None) -> str:
@@ -27,12 +24,12 @@ def _table(pieces: list[Piece]) -> Table:
         for p in pieces:
             yield (
                 p.k,
-                f"{_pt(p.a)} to {_pt(p.b)}",
+                f"{pt(p.a)} to {pt(p.b)}",
                 _code(p.code_a),
                 _code(p.code_b),
                 _code(p.code_a & p.code_b),
                 p.action,
-                "-" if p.mid is None else _pt(p.mid),
+                "-" if p.mid is None else pt(p.mid),
                 _code(p.code_mid),
             )
 
@@ -84,14 +81,14 @@ def midpoint_clip_solution(
         "floor": r"\text{floor: the hardware shift, } \lfloor (a + b)/2 \rfloor",
         "exact": r"\text{exact}",
     }[midpoint]
-    shown = "; ".join(f"{_pt(a)} to {_pt(b)}" for a, b in parts) or "none"
+    shown = "; ".join(f"{pt(a)} to {pt(b)}" for a, b in parts) or "none"
     return Solution(
         primitive="clip",
         algorithm="midpoint-subdivision",
-        title=f"Midpoint subdivision clipping: {_pt(p1)} to {_pt(p2)}",
+        title=f"Midpoint subdivision clipping: {pt(p1)} to {pt(p2)}",
         given=(
-            worked("P1", p1, f"P_1 = {_pt(p1)}"),
-            worked("P2", p2, f"P_2 = {_pt(p2)}"),
+            worked("P1", p1, f"P_1 = {pt(p1)}"),
+            worked("P2", p2, f"P_2 = {pt(p2)}"),
             worked(
                 "window",
                 w,

@@ -9,12 +9,9 @@ from typing import Any
 
 from ..algorithms.weiler_atherton import Entry, weiler_atherton
 from ..core.checks import InputError
-from ..core.numeric import Number, fmt_short, normalize
+from ..core.numeric import Number, normalize
 from ..core.records import Solution, Table, heading, rule, worked
-
-
-def _pt(p: Sequence[Number]) -> str:
-    return f"({fmt_short(p[0])}, {fmt_short(p[1])})"
+from .shapes import pt
 
 
 def _points(coords: Sequence[Number], name: str) -> list[tuple[Number, Number]]:
@@ -29,10 +26,10 @@ def _list_table(title: str, prefix: str, entries: Sequence[Entry]) -> Table:
         for e in entries:
             if e.crossing is None:
                 n += 1
-                yield (f"{prefix}{n}", _pt(e.point), "vertex")
+                yield (f"{prefix}{n}", pt(e.point), "vertex")
             else:
                 kind = "in (entering)" if e.label == "in" else "out (leaving)"
-                yield (f"I{e.crossing + 1}", _pt(e.point), kind)
+                yield (f"I{e.crossing + 1}", pt(e.point), kind)
 
     return Table(
         title,
@@ -77,15 +74,15 @@ def weiler_atherton_solution(subject: Sequence[Number], clip: Sequence[Number]) 
     result = Table(
         "Output polygons",
         (heading("polygon", r"\text{polygon}"), heading("vertices", r"\text{vertices}")),
-        lambda: ((i, ", ".join(_pt(p) for p in poly)) for i, poly in enumerate(r.polygons, 1)),
+        lambda: ((i, ", ".join(pt(p) for p in poly)) for i, poly in enumerate(r.polygons, 1)),
     )
     return Solution(
         primitive="clip",
         algorithm="weiler-atherton",
         title=f"Weiler-Atherton clipping: a subject of {len(s)} vertices, a clip polygon of {len(c)}",
         given=(
-            worked("subject", s, "\\text{subject: } " + ", ".join(_pt(p) for p in s)),
-            worked("clip", c, "\\text{clip: } " + ", ".join(_pt(p) for p in c)),
+            worked("subject", s, "\\text{subject: } " + ", ".join(pt(p) for p in s)),
+            worked("clip", c, "\\text{clip: } " + ", ".join(pt(p) for p in c)),
         ),
         derived=tuple(derived),
         notes=tuple(notes),
