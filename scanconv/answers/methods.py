@@ -225,7 +225,7 @@ def _circle(name: str) -> Method:
         None if derivation is None else _A + f"theory:{derivation}",
         _A + "theory:circle_code",
         None if model is None else _A + f"models:{model}",
-        _G + "raster:circle" if name == "midpoint" else None,
+        _G + "raster_conic:circle" if name == "midpoint" else None,
         (),
         (
             *missing,
@@ -247,7 +247,7 @@ _ELLIPSE = (
         _A + "theory:ellipse_derivation",
         _A + "theory:ellipse_code",
         _A + "models:MidpointEllipse",
-        _G + "raster:ellipse",
+        _G + "raster_conic:ellipse",
         (),
     ),
 )
