@@ -56,6 +56,31 @@ _PI_HI = _PI_LO + Fraction(1, 10**63)
 # --- the octant generators --------------------------------------------------------------------
 
 
+def midpoint_increment(x: int, y: int, se: bool) -> int:
+    """``p_{k+1} - p_k`` of the midpoint circle with the new point ``(x, y)``: ``2x + 1``
+    (E) or ``2x + 1 - 2y`` (SE). The one copy of the update, shared by :func:`midpoint`,
+    :func:`general` and the marking model (:class:`scanconv.answers.models.MidpointCircle`).
+
+    >>> midpoint_increment(4, 9, True), midpoint_increment(1, 10, False)
+    (-9, 3)
+    """
+    return 2 * x + 1 - 2 * y if se else 2 * x + 1
+
+
+def bresenham_increment(x: int, y: int, se: bool, xstep: str = "last") -> int:
+    """``d_{k+1} - d_k`` of Bresenham's circle from the point ``(x, y)`` the decision was taken
+    at: ``4x + 6`` (E) or ``4(x - y) + 10`` (SE); with ``xstep="first"`` (x, and y, stepped
+    before d is updated) the same with the new x and y, 4 (E) and 8 (SE) larger. Shared by
+    :func:`bresenham` and :class:`scanconv.answers.models.BresenhamCircle`.
+
+    >>> bresenham_increment(0, 10, False), bresenham_increment(0, 10, False, "first")
+    (6, 10)
+    """
+    if xstep == "first":
+        x, y = x + 1, y - 1 if se else y
+    return 4 * (x - y) + 10 if se else 4 * x + 6
+
+
 def midpoint(
     r: int, tie: str = "step", p0: str = "1-r", loop: str = "strict", update: str = "new"
 ) -> Iterator[Step]:
@@ -103,10 +128,10 @@ def midpoint(
     while x < y or (inclusive and x == y):
         x += 1
         if p < 0 or (keep and p == 0):
-            q, move = p + 2 * x + 1, Move.E
+            q, move = p + midpoint_increment(x, y, False), Move.E
         else:
             y -= 1
-            q, move = p + 2 * x + 1 - 2 * y, Move.SE
+            q, move = p + midpoint_increment(x, y, True), Move.SE
         yield new_step(Step, (k, p, move, (x, y), (2 * x, 2 * y)))
         p, k = q, k + 1
 
@@ -147,9 +172,9 @@ def bresenham(r: int, tie: str = "step", xstep: str = "last") -> Iterator[Step]:
     t = 1 if tie == "keep" else 0  # tie "keep": d <= 0 chooses E
     while x <= y:
         if d < t:
-            e, move, ny = d + 4 * x + 6, Move.E, y
+            e, move, ny = d + bresenham_increment(x, y, False), Move.E, y
         else:
-            e, move, ny = d + 4 * (x - y) + 10, Move.SE, y - 1
+            e, move, ny = d + bresenham_increment(x, y, True), Move.SE, y - 1
         yield new_step(Step, (k, d, move, (x, y), ()))
         x, y, d, k = x + 1, ny, e, k + 1
 
@@ -167,10 +192,10 @@ def _bresenham_x_first(r: int, tie: str) -> Iterator[Step]:
     while x <= y:
         if d < t:
             nx, ny, move = x + 1, y, Move.E
-            e = d + 4 * nx + 6
+            e = d + bresenham_increment(x, y, False, "first")
         else:
             nx, ny, move = x + 1, y - 1, Move.SE
-            e = d + 4 * (nx - ny) + 10
+            e = d + bresenham_increment(x, y, True, "first")
         yield new_step(Step, (k, d, move, (x, y), ()))
         x, y, d, k = nx, ny, e, k + 1
 
@@ -205,10 +230,9 @@ def general(r: int, tie: str = "step", loop: str = "strict") -> Iterator[Step]:
     while x < y or (inclusive and x == y):
         if p < 0 or (keep and p == 0):
             nx, ny, move = x + 1, y, Move.E
-            q = p + 2 * nx + 1
         else:
             nx, ny, move = x + 1, y - 1, Move.SE
-            q = p + 2 * nx - 2 * ny + 1
+        q = p + midpoint_increment(nx, ny, move is Move.SE)
         yield new_step(Step, (k, p, move, (x, y), (x, y, (nx, ny))))
         x, y, p, k = nx, ny, q, k + 1
     yield new_step(Step, (k, p, None, (x, y), (x, y, None)))

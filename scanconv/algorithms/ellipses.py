@@ -102,7 +102,7 @@ def midpoint_ellipse(
     rx2, ry2 = rx * rx, ry * ry
     x, y = 0, ry
     tx, ty = 0, 2 * rx2 * ry  # 2ry²x and 2rx²y, kept incrementally
-    p4 = start4(4 * ry2 - 4 * rx2 * ry + rx2, p0)  # 4·p1_0
+    p4 = start4(p1_4(rx, ry), p0)  # 4·p1_0
     k = 0
     inclusive = loop == "inclusive"
     t1, t2 = (1, -1) if tie == "keep" else (0, 0)  # p <= 0 is 4p < 1; p >= 0 is 4p > -1
@@ -110,24 +110,24 @@ def midpoint_ellipse(
         x += 1
         tx += 2 * ry2
         if p4 < t1:
-            q4, move = p4 + 4 * (tx + ry2), Move.E
+            q4, move = p4 + increment4(rx, ry, x, y, 1, False), Move.E
         else:
             y -= 1
             ty -= 2 * rx2
-            q4, move = p4 + 4 * (tx - ty + ry2), Move.SE
+            q4, move = p4 + increment4(rx, ry, x, y, 1, True), Move.SE
         yield new_step(Step, (k, quarter(p4), move, (x, y), (1, tx, ty)))
         p4, k = q4, k + 1
-    p4 = start4(ry2 * (2 * x + 1) ** 2 + 4 * rx2 * (y - 1) ** 2 - 4 * rx2 * ry2, p0)  # 4·p2_0
+    p4 = start4(p2_4(rx, ry, x, y), p0)  # 4·p2_0
     k = 0
     while y > 0:
         y -= 1
         ty -= 2 * rx2
         if p4 > t2:
-            q4, move = p4 + 4 * (rx2 - ty), Move.S
+            q4, move = p4 + increment4(rx, ry, x, y, 2, False), Move.S
         else:
             x += 1
             tx += 2 * ry2
-            q4, move = p4 + 4 * (tx - ty + rx2), Move.SE
+            q4, move = p4 + increment4(rx, ry, x, y, 2, True), Move.SE
         yield new_step(Step, (k, quarter(p4), move, (x, y), (2, tx, ty)))
         p4, k = q4, k + 1
     while x < rx:  # the tip of a flat ellipse, along y = 0
@@ -141,6 +141,40 @@ MAX_AXIS = 10**6
 """Largest semi-axis of :func:`ellipse_solution`: its working (where region 2 starts, p2_0)
 needs the end of region 1 before the first line is printed, and finding it runs region 1
 (about rx²/sqrt(rx² + ry²) steps: well under a second at 10**6, hours at 10**9)."""
+
+
+def p1_4(rx: int, ry: int) -> int:
+    """``4 p1_0 = 4ry² - 4rx²ry + rx²``: region 1's first p (times 4, an integer).
+
+    >>> p1_4(8, 6)
+    -1328
+    """
+    return 4 * ry * ry - 4 * rx * rx * ry + rx * rx
+
+
+def p2_4(rx: int, ry: int, x: int, y: int) -> int:
+    """``4 p2_0 = ry²(2x + 1)² + 4rx²(y - 1)² - 4rx²ry²`` at region 1's last point ``(x, y)``.
+
+    >>> p2_4(8, 6, 7, 3)
+    -92
+    """
+    rx2, ry2 = rx * rx, ry * ry
+    return ry2 * (2 * x + 1) ** 2 + 4 * rx2 * (y - 1) ** 2 - 4 * rx2 * ry2
+
+
+def increment4(rx: int, ry: int, x: int, y: int, region: int, diagonal: bool) -> int:
+    """``4 (p_{k+1} - p_k)`` with the new point ``(x, y)``: region 1 ``2ry²x + ry²`` (E) or
+    ``2ry²x - 2rx²y + ry²`` (SE); region 2 ``-2rx²y + rx²`` (S) or ``2ry²x - 2rx²y + rx²``
+    (SE). The one copy of the updates: :func:`midpoint_ellipse`, :func:`region1_end` and the
+    marking model (:class:`scanconv.answers.models.MidpointEllipse`) all add it.
+
+    >>> increment4(8, 6, 1, 6, 1, False), increment4(8, 6, 8, 2, 2, True)
+    (432, 1536)
+    """
+    rx2, ry2 = rx * rx, ry * ry
+    tx = 2 * ry2 * x if region == 1 or diagonal else 0
+    ty = 2 * rx2 * y if region == 2 or diagonal else 0
+    return 4 * (tx - ty + (ry2 if region == 1 else rx2))
 
 
 def start4(p4: int, p0: str) -> int:
@@ -163,18 +197,17 @@ def region1_end(
     """
     rx2, ry2 = rx * rx, ry * ry
     x, y, tx, ty = 0, ry, 0, 2 * rx2 * ry
-    p4 = start4(4 * ry2 - 4 * rx2 * ry + rx2, p0)
+    p4 = start4(p1_4(rx, ry), p0)
     inclusive = loop == "inclusive"
     t1 = 1 if tie == "keep" else 0
     while tx < ty or (inclusive and tx == ty and y > 0):
         x += 1
         tx += 2 * ry2
-        if p4 < t1:
-            p4 += 4 * (tx + ry2)
-        else:
+        se = p4 >= t1
+        if se:
             y -= 1
             ty -= 2 * rx2
-            p4 += 4 * (tx - ty + ry2)
+        p4 += increment4(rx, ry, x, y, 1, se)
     return x, y
 
 

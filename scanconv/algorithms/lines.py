@@ -23,6 +23,19 @@ from .choices import LineAlgorithm
 from .conventions import rounder
 
 
+def bresenham_terms(dmaj: int, dmin: int, tie: str = "step") -> tuple[int, int, int, int]:
+    """Bresenham's arithmetic, once for the generators here and the marking model
+    (:class:`scanconv.answers.models.BresenhamLine`): ``(p0, inc_keep, inc_step, t)`` with
+    ``p0 = 2 Δminor - Δmajor``, ``p_{k+1} = p_k + inc_keep`` when ``p_k < t`` (the minor
+    coordinate kept) and ``p_k + inc_step`` otherwise. ``t`` is 0, or 1 with ``tie="keep"``
+    (``p <= 0`` is ``p < 1``: every p is an integer).
+
+    >>> bresenham_terms(8, 4), bresenham_terms(8, 4, "keep")
+    ((0, 8, -8, 0), (0, 8, -8, 1))
+    """
+    return 2 * dmin - dmaj, 2 * dmin, 2 * dmin - 2 * dmaj, 1 if tie == "keep" else 0
+
+
 def bresenham(
     x1: int, y1: int, x2: int, y2: int, tie: str = "step", start: str = "swap"
 ) -> Iterator[Step]:
@@ -76,9 +89,8 @@ def bresenham(
         yield from bresenham_from_p1(x1, y1, x2, y2, tie)
         return
     x1, y1, x2, y2, steep, dmaj, dmin, s, stay, move = orient(x1, y1, x2, y2)
-    inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
-    x, y, p = x1, y1, 2 * dmin - dmaj
-    t = 1 if tie == "keep" else 0  # p <= 0 is p < 1: every p is an integer
+    p, inc_keep, inc_step, t = bresenham_terms(dmaj, dmin, tie)
+    x, y = x1, y1
     # The hot path of every long table (benchmarks/bench.py measures it): one loop per major
     # axis so no step tests `steep`, and the record constructor bound to local names.
     make, cls = new_step, Step
@@ -115,9 +127,8 @@ def bresenham_from_p1(x1: int, y1: int, x2: int, y2: int, tie: str = "step") -> 
     [(1, 1), (2, 1), (3, 2), (4, 2)]
     """
     steep, dmaj, dmin, s, stay, move = orient_from_p1(x1, y1, x2, y2)
-    inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
-    x, y, p = x1, y1, 2 * dmin - dmaj
-    t = 1 if tie == "keep" else 0
+    p, inc_keep, inc_step, t = bresenham_terms(dmaj, dmin, tie)
+    x, y = x1, y1
     for k in range(dmaj):
         if steep:
             y -= 1
@@ -194,7 +205,7 @@ def bresenham_notes(
     3 -1 None (5, 3) None
     """
     o = orient(x1, y1, x2, y2)
-    pixel, k, p = (o.x1, o.y1), 0, 2 * o.dmin - o.dmaj
+    pixel, k, p = (o.x1, o.y1), 0, bresenham_terms(o.dmaj, o.dmin)[0]
     if start == "given":
         pixel = (x1, y1)
     for s in bresenham(x1, y1, x2, y2, tie, start):

@@ -13,6 +13,7 @@ from ..algorithms.lines import (
     basic,
     bresenham,
     bresenham_notes,
+    bresenham_terms,
     dda,
     dda_increments,
     dda_steps,
@@ -310,8 +311,7 @@ def _bresenham_derived(w: _Walk, tie: str) -> tuple[Quantity, ...]:
     dmin, dmaj = w.dmin, w.dmaj
     dmin_t = f"|\\Delta {mnr}|" if w.sign < 0 else f"\\Delta {mnr}"
     dmaj_t = f"|\\Delta {maj}|" if w.backward else f"\\Delta {maj}"
-    p0 = 2 * dmin - dmaj
-    inc_keep, inc_step = 2 * dmin, 2 * dmin - 2 * dmaj
+    p0, inc_keep, inc_step, _ = bresenham_terms(dmaj, dmin)
     lt, ge = ("\\le", ">") if tie == "keep" else ("<", "\\ge")
     return (
         *((_swap_rule(maj, w.sx, w.sy, w.ex, w.ey),) if w.swapped else ()),

@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from fractions import Fraction
 
-from ..algorithms.lines import orient
+from ..algorithms.lines import bresenham_terms, orient
 from ..algorithms.midpoint_line import halve
 from ..core.numeric import Number, fmt_short
 from ..core.records import Column, Quantity, Solution, Step, rule, worked
@@ -28,9 +28,7 @@ def derivation(steep: bool, dmaj: int, dmin: int, scale: str, tie: str) -> list[
     D, d = f"\\Delta {maj}", f"\\Delta {mnr}"
     half = scale == "half"
     div = 2 if half else 1
-    d0 = Fraction(2 * dmin - dmaj, div)
-    keep = Fraction(2 * dmin, div)
-    step = Fraction(2 * dmin - 2 * dmaj, div)
+    d0, keep, step = (Fraction(v, div) for v in bresenham_terms(dmaj, dmin)[:3])
     factor = "" if half else "2"
     lt, ge = ("<", "\\ge") if tie == "step" else ("\\le", ">")
     lhs = "F(M)" if half else "2F(M)"

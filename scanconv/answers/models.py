@@ -24,8 +24,10 @@ from collections.abc import Iterator
 from fractions import Fraction
 from typing import NamedTuple
 
+from ..algorithms.circles import bresenham_increment, midpoint_increment
 from ..algorithms.conventions import rounder
-from ..algorithms.lines import dda_increments, dda_steps
+from ..algorithms.ellipses import increment4, p1_4, p2_4
+from ..algorithms.lines import bresenham_terms, dda_increments, dda_steps
 from ..core.numeric import Number, normalize, round_c_cast
 from ..core.records import Move, Pixel
 
@@ -128,10 +130,10 @@ class BresenhamLine(Model):
         self.dir = 1 if dmaj >= 0 else -1
         self.s = 1 if dmin >= 0 else -1
         self.first = (x1, y1)
-        self.t = 1 if tie == "keep" else 0
+        _, self.inc_keep, self.inc_step, self.t = bresenham_terms(self.n, self.dmin, tie)
 
     def p0(self) -> Number:
-        return 2 * self.dmin - self.n
+        return bresenham_terms(self.n, self.dmin)[0]
 
     def start(self) -> State:
         return State(self.first, self.p0())
@@ -167,10 +169,10 @@ class BresenhamLine(Model):
         major, minor = (y, x) if self.steep else (x, y)
         major += self.dir
         if move == self._moves()[0]:
-            q = s.p + 2 * self.dmin
+            q = s.p + self.inc_keep
         else:
             minor += self.s
-            q = s.p + 2 * self.dmin - 2 * self.n
+            q = s.p + self.inc_step
         point = (minor, major) if self.steep else (major, minor)
         return State(point, normalize(q), k=s.k + 1)
 
@@ -194,27 +196,14 @@ class UnswappedLine(BresenhamLine):
         super().__init__(x1, y1, x2, y2, tie, start="given")
         dx, dy = x2 - x1, y2 - y1
         self.smaj, self.smin = (dy, dx) if self.steep else (dx, dy)
-        self.dir, self.s = 1, 1
+        self.dir, self.s = 1, 1  # the signed differences in the same arithmetic as Bresenham's
+        _, self.inc_keep, self.inc_step, _ = bresenham_terms(self.smaj, self.smin)
 
     def p0(self) -> Number:
-        return 2 * self.smin - self.smaj
+        return bresenham_terms(self.smaj, self.smin)[0]
 
     def _moves(self) -> tuple[str, str]:
         return ("N", "NE") if self.steep else ("E", "NE")
-
-    def step(self, s: State, move: str | None) -> State | None:
-        if s.p is None or move not in self._moves():
-            return None
-        x, y = s.point
-        major, minor = (y, x) if self.steep else (x, y)
-        major += 1
-        if move == self._moves()[0]:
-            q = s.p + 2 * self.smin
-        else:
-            minor += 1
-            q = s.p + 2 * self.smin - 2 * self.smaj
-        point = (minor, major) if self.steep else (major, minor)
-        return State(point, q, k=s.k + 1)
 
 
 class DDALine(Model):
@@ -275,7 +264,7 @@ class MidpointCircle(Model):
         return x < y or (self.inclusive and x == y)
 
     def increment(self, x_old: int, x: int, y: int, se: bool) -> Number:
-        return 2 * x + 1 - 2 * y if se else 2 * x + 1
+        return midpoint_increment(x, y, se)
 
     def moves(self, s: State) -> tuple[str, ...]:
         return ("E", "SE")
@@ -312,10 +301,7 @@ class BresenhamCircle(Model):
     """Bresenham's circle, d0 = 3 - 2r, as in :func:`scanconv.algorithms.circles.bresenham`."""
 
     def __init__(self, r: int, tie: str = "step", xstep: str = "last") -> None:
-        self.r, self.t = r, 1 if tie == "keep" else 0
-        # x (and y) stepped before d is updated: 4(x + 1) and 4((x + 1) - (y - 1)), so the
-        # increments are 4 (E) and 8 (SE) larger than Bresenham's own
-        self.extra_e, self.extra_se = (4, 8) if xstep == "first" else (0, 0)
+        self.r, self.t, self.xstep = r, 1 if tie == "keep" else 0, xstep
 
     def start(self) -> State:
         return State((0, self.r), 3 - 2 * self.r)
@@ -338,11 +324,9 @@ class BresenhamCircle(Model):
         if s.p is None or move not in ("E", "SE"):
             return None
         x, y = s.point
-        if move == "E":
-            e, ny = s.p + 4 * x + 6 + self.extra_e, y
-        else:
-            e, ny = s.p + 4 * (x - y) + 10 + self.extra_se, y - 1
-        return State((x + 1, ny), e, k=s.k + 1)
+        se = move == "SE"
+        e = s.p + bresenham_increment(x, y, se, self.xstep)
+        return State((x + 1, y - 1 if se else y), e, k=s.k + 1)
 
 
 class GeneralCircle(MidpointCircle):
@@ -382,9 +366,7 @@ class MidpointEllipse(Model):
         return round_c_cast(p) if self.rounded else normalize(p)
 
     def p2_0(self, x: int, y: int) -> Number:
-        return self.initial(
-            self.ry2 * (x + Fraction(1, 2)) ** 2 + self.rx2 * (y - 1) ** 2 - self.rx2 * self.ry2
-        )
+        return self.initial(Fraction(p2_4(self.rx, self.ry, x, y), 4))
 
     def enter(self, x: int, y: int, p: Number | None, k: int) -> State:
         if self.region1(x, y):
@@ -392,7 +374,7 @@ class MidpointEllipse(Model):
         return State((x, y), self.p2_0(x, y) if y > 0 else None, region=2, k=k)
 
     def start(self) -> State:
-        p1 = self.initial(self.ry2 - self.rx2 * self.ry + Fraction(self.rx2, 4))
+        p1 = self.initial(Fraction(p1_4(self.rx, self.ry), 4))
         return self.enter(0, self.ry, p1, 0)
 
     def at(self, point: Pixel, s: State) -> State:
@@ -434,20 +416,14 @@ class MidpointEllipse(Model):
             if s.p is None:
                 return None
             x += 1
-            if move == "E":
-                q = s.p + 2 * self.ry2 * x + self.ry2
-            else:
-                y -= 1
-                q = s.p + 2 * self.ry2 * x - 2 * self.rx2 * y + self.ry2
+            y -= move == "SE"
+            q = s.p + Fraction(increment4(self.rx, self.ry, x, y, 1, move == "SE"), 4)
             return self.enter(x, y, normalize(q), s.k + 1)
         if y > 0:
             if s.p is None:
                 return None
             y -= 1
-            if move == "S":
-                q = s.p - 2 * self.rx2 * y + self.rx2
-            else:
-                x += 1
-                q = s.p + 2 * self.ry2 * x - 2 * self.rx2 * y + self.rx2
+            x += move == "SE"
+            q = s.p + Fraction(increment4(self.rx, self.ry, x, y, 2, move == "SE"), 4)
             return State((x, y), normalize(q) if y > 0 else None, region=2, k=s.k + 1)
         return State((x + 1, 0), None, region=2, k=s.k + 1)  # the tip of a flat ellipse
