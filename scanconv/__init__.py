@@ -65,12 +65,13 @@ def _stub_exports(
             listed = list(ast.literal_eval(node.value))
         if not isinstance(node, ast.ImportFrom):
             continue
+        base = package.rsplit(".", node.level - 1)[0] if node.level > 1 else package
         for alias in node.names:
             public = alias.asname or alias.name
             if node.module is None:  # from . import raster
-                found[public] = (f"{package}.{alias.name}", None)
-            else:
-                found[public] = (f"{package}.{node.module}", alias.name)
+                found[public] = (f"{base}.{alias.name}", None)
+            else:  # from .x import a, or from ..x import a (a level up)
+                found[public] = (f"{base}.{node.module}", alias.name)
     return found, listed or sorted(found)
 
 
