@@ -303,3 +303,18 @@ def test_the_mode_fits_a_phone(quiz):
         b = q.page.locator(sel).bounding_box()
         assert b is not None and b["x"] + b["width"] <= 390, sel
     q.answer("-4", "E", (3, 8))
+
+
+def test_the_tip_of_a_flat_ellipse_asks_the_pixel_only(quiz):
+    q = quiz("ellipse", "12", "1")
+    q.start()
+    n = int(q.page.inner_text(".sc-tq").split(" of ")[1].split(":")[0])
+    for _ in range(n - 1):  # every step but the last left blank: no mark
+        q.page.keyboard.press("Enter")
+        q.next()
+    assert q.page.inner_text(".sc-tq") == f"Step {n} of {n}: from (11, 0), the pixel only"
+    assert not q.page.is_visible("input[name=p]") and not q.page.is_visible("select")
+    assert q.page.evaluate("document.activeElement.name") == "pixel"
+    f = q.answer(None, None, "12, 0")
+    assert "\u2713 next pixel (12, 0)" in f and "the next pixel is E: (12, 0)." in f
+    assert q.score().startswith("Score: 1 / ")

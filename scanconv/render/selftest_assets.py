@@ -124,6 +124,9 @@ SELFTEST_JS = r"""
       root.querySelectorAll(".sc-tablebox, .sc-scroll").forEach(function (box) {
         if (stepped.indexOf(box) < 0) { box.classList.add("sc-testhide"); }  // it would tell
       });
+      var listed = root.querySelector(".sc-pixels");
+      var heading = listed && (listed.closest(".sc-pixbox") || listed).previousElementSibling;
+      if (heading && heading.tagName === "H3") { heading.classList.add("sc-testhide"); }
       function goTo(p) { slider.value = String(p); slider.dispatchEvent(new Event("input")); }
       function hideFrom(p) {
         trs.forEach(function (tr) {
@@ -204,7 +207,7 @@ SELFTEST_JS = r"""
             why = " (" + r.name + " = " + prev.name + (inc.n < B0 ? " \u2212 " + T.show(mk(-inc.n, inc.d)) : " + " + T.show(inc)) +
               " = " + T.show(a) + (inc.n < B0 ? " \u2212 " : " + ") + T.show(mk(abs(inc.n), inc.d)) + " = " + T.show(want) + ")";
           } else if (!okP) { why = " (see the working)"; }
-          line(okP, okP ? r.name + " = " + r.pt.replace(/-/g, "\u2212") : r.name + " = " + r.pt.replace(/-/g, "\u2212") + ", not " + pIn.value.trim() + why);
+          line(okP, okP ? r.name + " = " + r.pt.replace(/-/g, "\u2212") : r.name + " = " + r.pt.replace(/-/g, "\u2212") + ", not " + (pIn.value.trim() || "blank") + why);
           marks += okP ? 1 : 0;
         }
         var used = okP || !gp || want === null ? want : gp;   // decided on your own p
