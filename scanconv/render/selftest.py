@@ -230,7 +230,7 @@ def selftest_html(solution: Solution, st: Stepping | None, options: Options | No
         '<button type="button" class="sc-testbtn" data-selftest aria-expanded="false">'
         f'Test yourself</button> <span class="sc-testnote">{esc(f"{n} steps")}: '
         "the table hides from the current row on; type (or click on the grid) each step."
-        '</span><div class="sc-testpanel" hidden></div>'
+        '</span><div class="sc-testpanel" role="group" aria-label="Test yourself" hidden></div>'
         + json_script(data, "sc-testdata")
         + "</div>"
     )

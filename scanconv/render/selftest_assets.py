@@ -42,7 +42,7 @@ border-radius:4px}
 .scanconv.sc-testing td.sc-hidcell *{visibility:hidden}
 .scanconv.sc-testing svg.sc-stepgrid{cursor:crosshair}
 @media (max-width:600px){.scanconv .sc-tform input{width:6.5em}\
-.scanconv .sc-stepper{position:static}}
+.scanconv.sc-testing .sc-stepper{position:static}}
 @media print{.scanconv .sc-selftest{display:none}}
 """
 """The mode's style (every rule under ``.scanconv``; nothing of it prints)."""
@@ -140,6 +140,7 @@ SELFTEST_JS = r"""
       var score = el("p", "sc-tscore"), bar = el("div", "sc-tbar");
       form.setAttribute("novalidate", "");
       feed.setAttribute("aria-live", "polite");
+      score.setAttribute("aria-live", "polite");
       var pIn = el("input"), dIn = el("select"), xyIn = el("input");
       var pLab = el("label"), dLab = el("label"), xyLab = el("label");
       var pName = el("span"), check = el("button", "", "Check");
