@@ -26,11 +26,14 @@ LOCAL = ("file:", "data:", "blob:", "about:")
 
 
 CELL = """([x, y]) => {
-  // the centre of the grid's cell (x, y), found from a drawn pixel (y up)
-  const ref = document.querySelector("svg.sc-stepgrid rect.sc-px");
-  const b = ref.getBoundingClientRect();
+  // the centre of the grid's cell (x, y), found from two drawn pixels (y up or down)
+  const rects = [...document.querySelectorAll("svg.sc-stepgrid rect.sc-px")];
+  const ref = rects[0], b = ref.getBoundingClientRect();
+  const other = rects.find(r => r.getAttribute("data-y") !== ref.getAttribute("data-y"));
+  const up = (+other.getAttribute("data-y") > +ref.getAttribute("data-y")) ===
+    (other.getBoundingClientRect().top < b.top) ? -1 : 1;
   const rx = +ref.getAttribute("data-x"), ry = +ref.getAttribute("data-y");
-  return [b.left + (x - rx + 0.5) * b.width, b.top + (ry - y + 0.5) * b.height];
+  return [b.left + (x - rx + 0.5) * b.width, b.top + (up * (y - ry) + 0.5) * b.height];
 }"""
 
 
@@ -318,3 +321,51 @@ def test_the_tip_of_a_flat_ellipse_asks_the_pixel_only(quiz):
     f = q.answer(None, None, "12, 0")
     assert "\u2713 next pixel (12, 0)" in f and "the next pixel is E: (12, 0)." in f
     assert q.score().startswith("Score: 1 / ")
+
+
+def test_a_click_on_a_grid_with_y_down_names_the_right_pixel(quiz):
+    q = quiz(*LINE, "--origin", "top-left")
+    q.start()
+    for i, (p, d, px) in enumerate(LINE_RIGHT[:3]):
+        x, y = (int(v) for v in px.split(", "))
+        assert "\u2717" not in q.answer(p, d, (x, y))
+        assert q.page.input_value("input[name=pixel]") == f"{x}, {y}"
+        if i < 2:
+            q.next()
+    assert q.score() == "Score so far: 9 / 9"
+
+
+def test_two_notebook_answers_test_apart(browser, tmp_path):
+    import scanconv
+
+    cells = [scanconv.line(2, 2, 10, 6)._repr_html_(), scanconv.circle(5)._repr_html_()]
+    target = tmp_path / "notebook.html"
+    target.write_text(
+        "<!DOCTYPE html><html><head><meta charset='utf-8'></head><body>"
+        + "".join(f"<div class='cell'>{c}</div>" for c in cells)
+        + "</body></html>",
+        encoding="utf-8",
+    )
+    page = browser.new_page()
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(target.as_uri())
+    page.wait_for_selector("section.scanconv[data-st-ready]")
+    line, circle = page.locator("section.scanconv").all()
+    assert page.locator("section.scanconv[data-st-ready]").count() == 2
+    line.locator("[data-selftest]").click()
+    assert line.evaluate("r => r.classList.contains('sc-testing')")
+    assert not circle.evaluate("r => r.classList.contains('sc-testing')")
+    line.locator("input[name=p]").fill("0")
+    line.locator("select[name=decision]").select_option("NE")
+    line.locator("input[name=pixel]").fill("3, 3")
+    page.keyboard.press("Enter")
+    assert "\u2717" not in line.locator(".sc-tfeed").inner_text()
+    pos = line.get_attribute("data-pos")
+    page.keyboard.press("ArrowRight")  # the focus is in the test: the stepper stays
+    assert line.get_attribute("data-pos") == pos
+    circle.locator("button[data-act=reset]").click()
+    page.keyboard.press("ArrowRight")  # the other answer still steps
+    assert circle.get_attribute("data-pos") == "1"
+    page.close()
+    assert errors == []
