@@ -235,6 +235,7 @@ def test_a_wrong_midpoint_circle_is_marked_with_follow_through(quiz):
 def test_a_dda_line_asks_the_exact_values_and_rounds_the_students_own(quiz):
     q = quiz("line", "0", "0", "5", "3", "--algo", "dda")
     q.start()
+    assert q.page.inner_text(".sc-tq").startswith("Step 1 of 5: from (0.000, 0.000), what are")
     f = q.answer("1, 0.6", None, "1, 1")
     assert "\u2717" not in f and "(x\u2081, y\u2081) = (1.000, 0.600)" in f
     q.next()

@@ -158,6 +158,7 @@ def _rows(
             assert s.exact is not None and t.exact is not None
             row["xy"] = [frac(v) for v in s.exact]
             row["nxy"] = [frac(v) for v in t.exact]
+            row["xyt"] = [_text(v, solution, "x", options.exact) for v in s.exact]
             row["nxyt"] = [_text(v, solution, "x", options.exact) for v in t.exact]
             row["name"] = f"(x{_sub(records[j].k + 1)}, y{_sub(records[j].k + 1)})"
             rows.append(row)

@@ -164,7 +164,7 @@ SELFTEST_JS = r"""
         waiting = true;
         hideFrom(r.row);
         goTo(r.lit);
-        q.textContent = "Step " + (i + 1) + " of " + rows.length + ": from " + pt(r.at) +
+        q.textContent = "Step " + (i + 1) + " of " + rows.length + ": from " + (dda ? "(" + r.xyt.join(", ") + ")" : pt(r.at)) +
           (dda ? "" : r.p === null ? ", the pixel only" : ", what are " + r.name + ", the decision and the next pixel?");
         if (dda) { q.textContent += ", what are " + r.name + " and the pixel?"; }
         pName.textContent = r.name + " =";
