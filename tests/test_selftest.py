@@ -284,3 +284,28 @@ def test_an_answer_whose_table_is_not_the_models_gets_no_test():
     bare = line.line_solution("bresenham", 2, 2, 10, 6, tie="keep")
     assert descriptor(bare) is None
     assert BUTTON not in answer_section(bare, "sc1")
+
+
+ARGV = {
+    "line": lambda name: ("line", "2", "2", "10", "6", "--algo", name),
+    "circle": lambda name: ("circle", "5", "-m", name),
+    "ellipse": lambda name: ("ellipse", "8", "6"),
+}
+
+
+def test_every_method_with_a_marking_model_has_the_test_and_no_other_of_its_command():
+    from scanconv.answers.methods import METHODS
+
+    with_model = set()
+    for record in METHODS.values():
+        if record.command not in ARGV:
+            assert record.model is None, record.key  # a new model: give it a page here
+            continue
+        _, data = page_data(*ARGV[record.command](record.name))
+        assert (data is not None) == (record.model is not None), record.key
+        if record.model is not None:
+            with_model.add(record.key)
+    assert with_model == {
+        "line/dda", "line/bresenham", "line/midpoint", "circle/midpoint", "circle/bresenham",
+        "circle/general", "ellipse/midpoint",
+    }  # fmt: skip
