@@ -57,6 +57,7 @@ from ..core.records import Column, Solution, step_getter
 from . import Notice, Options, stepper
 from .cells import cell, numeric_column
 from .mathml import esc, json_script, note_html, prose_html, tex_math
+from .selftest import selftest_html
 from .stepgrid import figure_svg, legend, step_grid
 from .stepper import column_label, stepping
 
@@ -319,6 +320,7 @@ def answer_section(
             + ("; hover a pixel to see which step plotted it." if st.pixels else ".")
             + "</p>"
         )
+        out.append(selftest_html(solution, st, options))  # "Test yourself" (issue 31): selftest.py
         if st.total > st.n and solution.columns:
             said.append(f"the stepper goes through the first {st.n:,} of {st.total:,} steps")
         if st.total_pixels > len(st.pixels):

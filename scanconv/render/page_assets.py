@@ -270,3 +270,9 @@ JS = r"""
 })();
 """
 """The stepper: one script for every answer on the page (see the module)."""
+
+# The "Test yourself" mode (issue 31): its own module, appended to every page's style and script.
+from .selftest_assets import SELFTEST_CSS, SELFTEST_JS  # noqa: E402
+
+CSS += SELFTEST_CSS
+JS += SELFTEST_JS

@@ -1,0 +1,304 @@
+"""The style and the script of the page's "Test yourself" mode (:mod:`scanconv.render.selftest`).
+
+Appended to :data:`~scanconv.render.page_assets.CSS` and
+:data:`~scanconv.render.page_assets.JS`, so every page, answer key and notebook answer that has
+the stepper has the mode too. The script knows no method: it reads each answer's
+``script.sc-testdata`` (rows and rules, exact values as fraction strings) and compares with
+exact rationals (``BigInt``). It finds the answers through the stepper
+(``window.scanconvStepper.roots``) and its elements inside each answer's root; it drives the
+grid through the stepper's own slider (an ``input`` event), so the stepper needs no change.
+"""
+
+from __future__ import annotations
+
+SELFTEST_CSS = """\
+.scanconv .sc-selftest{margin:.5em 0 .2em 0}
+.scanconv .sc-selftest button,.scanconv .sc-testpanel select{font:inherit;font-size:.95em;\
+padding:.25em .7em;border:1px solid #777;border-radius:4px;background:#f3f6fa;cursor:pointer}
+.scanconv .sc-selftest button:focus-visible,.scanconv .sc-testpanel input:focus-visible,\
+.scanconv .sc-testpanel select:focus-visible{outline:2px solid var(--sc-px-edge);outline-offset:1px}
+.scanconv .sc-testbtn{font-weight:bold}
+.scanconv:not(.sc-js) .sc-selftest{display:none}
+.scanconv .sc-testnote{color:var(--sc-muted);font-size:.85em}
+.scanconv .sc-testpanel{margin:.4em 0;padding:.5em .6em;border:1px solid var(--sc-rule);\
+border-radius:6px;background:#fbfbf7}
+.scanconv .sc-testpanel[hidden],.scanconv .sc-testpanel [hidden]{display:none}
+.scanconv .sc-tq{margin:0 0 .4em 0;font-weight:bold}
+.scanconv .sc-tform{display:flex;flex-wrap:wrap;gap:.45em .8em;align-items:center}
+.scanconv .sc-tform label{display:inline-flex;gap:.35em;align-items:center;white-space:nowrap}
+.scanconv .sc-tform input{font:inherit;width:7.5em;padding:.2em .35em;border:1px solid #888;\
+border-radius:4px}
+.scanconv .sc-tfeed{margin:.5em 0 .2em 0;min-height:1.3em}
+.scanconv .sc-tfeed p{margin:.15em 0}
+.scanconv .sc-tfeed .sc-ok{color:#1d6b2a}
+.scanconv .sc-tfeed .sc-no{color:#a01818}
+.scanconv .sc-tscore{font-weight:bold;margin:.4em 0}
+.scanconv .sc-tbar{display:flex;flex-wrap:wrap;gap:.4em;margin-top:.4em}
+.scanconv.sc-testing .sc-controls,.scanconv.sc-testing .sc-caption,.scanconv.sc-testing .sc-hover,\
+.scanconv.sc-testing .sc-keys,.scanconv.sc-testing .sc-pixels,.scanconv.sc-testing .sc-figures,\
+.scanconv.sc-testing .sc-testhide,.scanconv.sc-testing .sc-testnote{display:none}
+.scanconv.sc-testing tr.sc-hid{display:none}
+.scanconv.sc-testing td.sc-hidcell{color:transparent}
+.scanconv.sc-testing td.sc-hidcell *{visibility:hidden}
+.scanconv.sc-testing svg.sc-stepgrid{cursor:crosshair}
+@media (max-width:600px){.scanconv .sc-tform input{width:6.5em}\
+.scanconv.sc-testing .sc-stepper{position:static}}
+@media print{.scanconv .sc-selftest{display:none}}
+"""
+"""The mode's style (every rule under ``.scanconv``; nothing of it prints)."""
+
+SELFTEST_JS = r"""
+(function () {
+  "use strict";
+  var S = window.scanconvStepper;
+  if (!S) { return; }
+  var T = window.scanconvSelftest;
+  if (!T || T.version !== 1) {
+    T = window.scanconvSelftest = { version: 1 };
+    var B0 = BigInt(0), B1 = BigInt(1), B2 = BigInt(2), B10 = BigInt(10);
+    var abs = function (a) { return a < B0 ? -a : a; };
+    var gcd = function (a, b) { a = abs(a); b = abs(b); while (b !== B0) { var t = a % b; a = b; b = t; } return a; };
+    var mk = function (n, d) { if (d < B0) { n = -n; d = -d; } var g = gcd(n, d) || B1; return { n: n / g, d: d / g, places: 0 }; };
+    // An exact value written as "-5/4", "3", "-1.25" (or with a real minus sign).
+    T.num = function (text) {
+      var t = String(text).trim().replace(/\u2212/g, "-").replace(/\s+/g, "");
+      var m = /^([+-]?\d+)\/(\d+)$/.exec(t);
+      if (m) { return BigInt(m[2]) === B0 ? null : mk(BigInt(m[1]), BigInt(m[2])); }
+      m = /^([+-]?)(\d*)(?:\.(\d*))?$/.exec(t);
+      if (!m || (m[2] + (m[3] || "")) === "") { return null; }
+      var frac = m[3] || "", r = mk(BigInt((m[1] === "-" ? "-" : "") + (m[2] || "0") + frac), B10 ** BigInt(frac.length));
+      r.places = Math.min(frac.length, 12);
+      return r;
+    };
+    // A written number equals an exact value: exactly, or to 2 or more decimals within one unit
+    // of the last (as check marks it).
+    T.same = function (got, want) {
+      if (!got || !want) { return false; }
+      var diff = abs(got.n * want.d - want.n * got.d);
+      if (diff === B0) { return true; }
+      return got.places >= 2 && diff * B10 ** BigInt(got.places) <= got.d * want.d;
+    };
+    T.sign = function (r) { return r.n < B0 ? "neg" : r.n > B0 ? "pos" : "zero"; };
+    T.show = function (r) { return (r.d === B1 ? String(r.n) : r.n + "/" + r.d).replace(/-/g, "\u2212"); };
+    var floorDiv = function (n, d) { var q = n / d; return (n % d !== B0 && (n < B0) !== (d < B0)) ? q - B1 : q; };
+    T.round = function (r, how) {
+      var n = r.n, d = r.d;
+      if (how === "trunc") { return n / d; }
+      if (how === "c-cast") { return (B2 * n + d) / (B2 * d); }
+      if (how === "half-away") { var u = floorDiv(B2 * abs(n) + d, B2 * d); return n < B0 ? -u : u; }
+      if (how === "half-even") {
+        var f = floorDiv(n, d), rest = n - f * d;
+        if (B2 * rest > d || (B2 * rest === d && f % B2 !== B0)) { f += B1; }
+        return f;
+      }
+      return floorDiv(B2 * n + d, B2 * d);
+    };
+    // A pixel written "5, 3", "(5, 3)" or "5 3".
+    T.pixel = function (text) {
+      var m = /^\(?\s*([+\-\u2212]?\d+)\s*[,;\s]\s*([+\-\u2212]?\d+)\s*\)?$/.exec(String(text).trim());
+      return m ? [+m[1].replace("\u2212", "-"), +m[2].replace("\u2212", "-")] : null;
+    };
+    var pt = function (p) { return ("(" + p[0] + ", " + p[1] + ")").replace(/-/g, "\u2212"); };
+    var el = function (tag, cls, text) {
+      var e = document.createElement(tag);
+      if (cls) { e.className = cls; }
+      if (text !== undefined) { e.textContent = text; }
+      return e;
+    };
+    var CMP = { neg: " < 0", zero: "", pos: " > 0" };
+
+    T.init = function (root) {
+      if (root.getAttribute("data-st-ready")) { return; }
+      root.setAttribute("data-st-ready", "1");
+      var holder = root.querySelector("script.sc-testdata");
+      var btn = root.querySelector("[data-selftest]");
+      var panel = root.querySelector(".sc-testpanel");
+      var slider = root.querySelector(".sc-slider");
+      if (!holder || !btn || !panel || !slider) { return; }
+      var data = JSON.parse(holder.textContent), rows = data.rows, dda = data.kind === "dda";
+      var trs = root.querySelectorAll("tr[data-pos]");
+      var svg = root.querySelector("svg.sc-stepgrid");
+      var i = 0, got = 0, asked = 0, testing = false, waiting = false;
+      var stepped = [];
+      trs.forEach(function (tr) { stepped.push(tr.closest(".sc-tablebox, .sc-scroll")); });
+      root.querySelectorAll(".sc-tablebox, .sc-scroll").forEach(function (box) {
+        if (stepped.indexOf(box) < 0) { box.classList.add("sc-testhide"); }  // it would tell
+      });
+      var listed = root.querySelector(".sc-pixels");
+      var heading = listed && (listed.closest(".sc-pixbox") || listed).previousElementSibling;
+      if (heading && heading.tagName === "H3") { heading.classList.add("sc-testhide"); }
+      function goTo(p) { slider.value = String(p); slider.dispatchEvent(new Event("input")); }
+      function hideFrom(p) {
+        trs.forEach(function (tr) {
+          var at = +tr.getAttribute("data-pos"), cell = data.next === null ? null : tr.children[data.next];
+          tr.classList.toggle("sc-hid", at >= p);
+          if (cell) { cell.classList.toggle("sc-hidcell", at === p - 1); }
+        });
+      }
+      // the panel: the question, the form, the feedback, the score
+      var q = el("p", "sc-tq"), form = el("form", "sc-tform"), feed = el("div", "sc-tfeed");
+      var score = el("p", "sc-tscore"), bar = el("div", "sc-tbar");
+      form.setAttribute("novalidate", "");
+      feed.setAttribute("aria-live", "polite");
+      score.setAttribute("aria-live", "polite");
+      var pIn = el("input"), dIn = el("select"), xyIn = el("input");
+      var pLab = el("label"), dLab = el("label"), xyLab = el("label");
+      var pName = el("span"), check = el("button", "", "Check");
+      [pIn, xyIn].forEach(function (x) { x.type = "text"; x.autocomplete = "off"; x.spellcheck = false; });
+      pIn.name = "p"; dIn.name = "decision"; xyIn.name = "pixel";
+      xyIn.placeholder = "x, y";
+      pIn.placeholder = dda ? "x, y (exact)" : "exact value";
+      pLab.append(pName, pIn);
+      dLab.append(el("span", "", "decision"), dIn);
+      xyLab.append(el("span", "", dda ? "pixel" : "next pixel"), xyIn);
+      check.type = "submit";
+      form.append(pLab, dLab, xyLab, check);
+      var next = el("button", "", "Next step"), stop = el("button", "", "Stop");
+      next.type = "button"; stop.type = "button";
+      next.setAttribute("data-tact", "next"); stop.setAttribute("data-tact", "stop");
+      bar.append(next, stop);
+      panel.append(q, form, feed, score, bar);
+
+      function ask() {
+        var r = rows[i];
+        waiting = true;
+        hideFrom(r.row);
+        goTo(r.lit);
+        q.textContent = "Step " + (i + 1) + " of " + rows.length + ": from " + (dda ? "(" + r.xyt.join(", ") + ")" : pt(r.at)) +
+          (dda ? "" : r.p === null ? ", the pixel only" : ", what are " + r.name + ", the decision and the next pixel?");
+        if (dda) { q.textContent += ", what are " + r.name + " and the pixel?"; }
+        pName.textContent = r.name + " =";
+        var rule = dda ? null : data.rules[r.rule];
+        var one = dda || r.p === null;
+        pLab.hidden = !dda && r.p === null;
+        dLab.hidden = one;
+        dIn.textContent = "";
+        dIn.append(el("option", "", "choose"));
+        dIn.firstChild.value = "";
+        if (rule) { Object.keys(rule.moves).forEach(function (m) { var o = el("option", "", m); o.value = m; dIn.append(o); }); }
+        pIn.value = ""; dIn.value = ""; xyIn.value = "";
+        feed.textContent = "";
+        form.hidden = false; next.hidden = true;
+        (pLab.hidden ? xyIn : pIn).focus();
+      }
+      function line(ok, text) { var p = el("p", ok ? "sc-ok" : "sc-no", (ok ? "\u2713 " : "\u2717 ") + text); feed.append(p); }
+      function judgeDda(r) {
+        var parts = pIn.value.replace(/^\s*\(|\)\s*$/g, "").split(/\s*[,;]\s*|\s+/);
+        var gx = parts.length === 2 ? T.num(parts[0]) : null, gy = parts.length === 2 ? T.num(parts[1]) : null;
+        var wx = T.num(r.nxy[0]), wy = T.num(r.nxy[1]);
+        var okXY = T.same(gx, wx) && T.same(gy, wy);
+        var ux = gx && gy ? gx : wx, uy = gx && gy ? gy : wy;  // follow-through: the pixel of your own values
+        var want = [Number(T.round(ux, data.rounding)), Number(T.round(uy, data.rounding))];
+        var px = T.pixel(xyIn.value), okPx = !!px && px[0] === want[0] && px[1] === want[1];
+        var right = "(" + r.nxyt.join(", ") + ")";
+        line(okXY, r.name + " = " + right + (okXY ? "" : ", not " + (pIn.value.trim() || "blank") + " (the row before plus the increments)"));
+        line(okPx, okPx ? "pixel " + pt(want) + (okXY ? "" : ", rounded from your values: follow-through") :
+          "pixel: " + data.rounding + " rounding of " + (gx && gy ? "your (" + T.show(gx) + ", " + T.show(gy) + ")" : right) + " gives " + pt(want));
+        feed.append(el("p", "", r.name + " = " + right + ", so the pixel is " + pt(r.to) + "."));
+        return (okXY ? 1 : 0) + (okPx ? 1 : 0);
+      }
+      function judge(r) {
+        var rule = data.rules[r.rule], moves = rule.moves, marks = 0;
+        var want = r.p === null ? null : T.num(r.p), gp = T.num(pIn.value);
+        var okP = want === null || T.same(gp, want);
+        if (want !== null) {
+          var prev = rows[i - 1], why = "";
+          if (prev && prev.p !== null && prev.rule === r.rule) {
+            var a = T.num(prev.p), inc = mk(want.n * a.d - a.n * want.d, want.d * a.d);
+            why = " (" + r.name + " = " + prev.name + (inc.n < B0 ? " \u2212 " + T.show(mk(-inc.n, inc.d)) : " + " + T.show(inc)) +
+              " = " + T.show(a) + (inc.n < B0 ? " \u2212 " : " + ") + T.show(mk(abs(inc.n), inc.d)) + " = " + T.show(want) + ")";
+          } else if (!okP) { why = " (see the working)"; }
+          line(okP, okP ? r.name + " = " + r.pt.replace(/-/g, "\u2212") : r.name + " = " + r.pt.replace(/-/g, "\u2212") + ", not " + (pIn.value.trim() || "blank") + why);
+          marks += okP ? 1 : 0;
+        }
+        var used = okP || !gp || want === null ? want : gp;   // decided on your own p
+        var dWant = used === null ? Object.keys(moves)[0] : rule[T.sign(used)];
+        if (want !== null) {
+          var okD = dIn.value === dWant;
+          var on = r.name + " = " + T.show(used) + CMP[T.sign(used)];
+          line(okD, okD ? "decision " + dWant + (okP ? "" : ": it follows from your " + on + " (follow-through)") :
+            "decision: " + (dIn.value ? dIn.value : "none chosen") + "; " + (okP ? "" : "your ") + on + " chooses " + dWant);
+          marks += okD ? 1 : 0;
+        }
+        var move = moves[dIn.value] ? dIn.value : dWant;
+        var to = [r.at[0] + moves[move][0], r.at[1] + moves[move][1]];
+        var px = T.pixel(xyIn.value), okX = !!px && px[0] === to[0] && px[1] === to[1];
+        var from = move === r.d ? "" : " (follow-through from your decision)";
+        line(okX, okX ? "next pixel " + pt(to) + from : "next pixel: " + move + " from " + pt(r.at) + " goes to " + pt(to) + (px ? ", not " + pt(px) : ""));
+        marks += okX ? 1 : 0;
+        var tail = want === null ? "the next pixel is " + r.d + ": " + pt(r.to) :
+          r.name + " = " + r.pt.replace(/-/g, "\u2212") + CMP[T.sign(want)] + ", so the next pixel is " + r.d + ": " + pt(r.to);
+        feed.append(el("p", "", tail + "."));
+        return marks;
+      }
+      function parts(r) { return dda ? 2 : r.p === null ? 1 : 3; }
+      form.addEventListener("submit", function (e) {
+        e.preventDefault();
+        if (!waiting) { return; }
+        waiting = false;
+        var r = rows[i];
+        feed.textContent = "";
+        got += dda ? judgeDda(r) : judge(r);
+        asked += parts(r);
+        hideFrom(r.row + 1);
+        goTo(r.lit + 1);
+        form.hidden = true;
+        score.textContent = "Score so far: " + got + " / " + asked;
+        i += 1;
+        if (i >= rows.length) {
+          score.textContent = "Score: " + got + " / " + asked + " (" + Math.round(100 * got / Math.max(asked, 1)) + " %)";
+          next.textContent = "Again";
+        } else { next.textContent = "Next step"; }
+        next.hidden = false;
+        next.focus();
+      });
+      next.addEventListener("click", function () {
+        if (i >= rows.length) { i = 0; got = 0; asked = 0; score.textContent = ""; }
+        ask();
+      });
+      function start() {
+        testing = true; i = 0; got = 0; asked = 0;
+        root.classList.add("sc-testing");
+        panel.hidden = false;
+        btn.setAttribute("aria-expanded", "true");
+        btn.textContent = "Stop the test";
+        score.textContent = "";
+        ask();
+      }
+      function end() {
+        testing = false; waiting = false;
+        root.classList.remove("sc-testing");
+        hideFrom(Infinity);
+        panel.hidden = true;
+        btn.setAttribute("aria-expanded", "false");
+        btn.textContent = "Test yourself";
+        btn.focus();
+      }
+      btn.addEventListener("click", function () { if (testing) { end(); } else { start(); } });
+      stop.addEventListener("click", end);
+      // while testing, the stepper's keys and row clicks would give the answer away
+      var key = root.scanconvKey;
+      if (key) { root.scanconvKey = function (e) { if (!testing) { key(e); } }; }
+      root.addEventListener("keydown", function (e) { if (testing) { e.stopPropagation(); } }, true);
+      root.addEventListener("click", function (e) {
+        if (testing && e.target.closest && e.target.closest("tr[data-pos]")) { e.stopPropagation(); }
+      }, true);
+      // a click on the grid names the pixel (relative to the centre, as the table writes it)
+      if (svg && data.centre) {
+        var ref = root.querySelector("svg.sc-stepgrid rect.sc-px");
+        svg.addEventListener("click", function (e) {
+          if (!testing || !waiting || !ref || !svg.getScreenCTM()) { return; }
+          var m = svg.getScreenCTM().inverse(), s = +ref.getAttribute("width");
+          var ux = m.a * e.clientX + m.c * e.clientY + m.e, uy = m.b * e.clientX + m.d * e.clientY + m.f;
+          var cx = Math.floor((ux - +ref.getAttribute("x")) / s), cy = Math.floor((uy - +ref.getAttribute("y")) / s);
+          var x = +ref.getAttribute("data-x") + cx, y = +ref.getAttribute("data-y") + (data.down ? cy : -cy);
+          xyIn.value = (x - data.centre[0]) + ", " + (y - data.centre[1]);
+          xyIn.focus();
+        });
+      }
+    };
+  }
+  S.roots.forEach(function (r) { T.init(r); });
+})();
+"""
+"""The mode's script (see the module)."""

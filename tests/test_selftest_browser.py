@@ -1,0 +1,372 @@
+"""The "Test yourself" mode in a real browser (Debian's headless Chromium through Playwright).
+
+Sequences of answers written by hand, right and wrong, are typed (or clicked on the grid) into
+pages the CLI writes; the score and the explanations must be what ``check``'s follow-through
+gives: a decision that follows from the student's own wrong p_k earns its mark, the pixel is
+judged from the student's decision applied to the pixel before. Pages without a rule have no
+button. The browser is the session's (``tests/conftest.py``); without chromium or Playwright
+the tests skip.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from scanconv.algorithms.conventions import ROUNDINGS
+
+from .helpers import run
+
+pytestmark = pytest.mark.external  # chromium (external tests are slow too: conftest)
+
+LOCAL = ("file:", "data:", "blob:", "about:")
+
+
+CELL = """([x, y]) => {
+  // the centre of the grid's cell (x, y), found from two drawn pixels (y up or down)
+  const rects = [...document.querySelectorAll("svg.sc-stepgrid rect.sc-px")];
+  const ref = rects[0], b = ref.getBoundingClientRect();
+  const other = rects.find(r => r.getAttribute("data-y") !== ref.getAttribute("data-y"));
+  const up = (+other.getAttribute("data-y") > +ref.getAttribute("data-y")) ===
+    (other.getBoundingClientRect().top < b.top) ? -1 : 1;
+  const rx = +ref.getAttribute("data-x"), ry = +ref.getAttribute("data-y");
+  return [b.left + (x - rx + 0.5) * b.width, b.top + (up * (y - ry) + 0.5) * b.height];
+}"""
+
+
+class Quiz:
+    """A page open in the browser, in test mode."""
+
+    def __init__(self, browser: Any, path: Path, width: int = 1280) -> None:
+        self.page = browser.new_page(viewport={"width": width, "height": 900})
+        self.requests: list[str] = []
+        self.errors: list[str] = []
+        self.page.on("request", lambda r: self.requests.append(r.url))
+        self.page.on(
+            "console", lambda m: self.errors.append(m.text) if m.type in ("error", "warning") else 0
+        )
+        self.page.on("pageerror", lambda e: self.errors.append(str(e)))
+        self.page.goto(path.as_uri())
+        self.page.wait_for_selector("section.scanconv[data-ready]")
+
+    def start(self) -> None:
+        self.page.focus("[data-selftest]")
+        self.page.keyboard.press("Enter")
+        assert self.page.evaluate("document.activeElement.name") == "p"
+
+    def answer(self, p: str | None, decision: str | None, pixel: str | tuple[int, int]) -> str:
+        """Type one step (``pixel`` a tuple: click that pixel on the grid), press Enter, and
+        return the feedback; then go on with Enter (the focus is on "Next step")."""
+        pg = self.page
+        if p is not None:
+            pg.keyboard.type(p)
+        if decision is not None:
+            pg.select_option("select[name=decision]", decision)
+        if isinstance(pixel, tuple):
+            pg.mouse.click(*pg.evaluate(CELL, list(pixel)))
+            assert pg.evaluate("document.activeElement.name") == "pixel"
+        else:
+            pg.fill("input[name=pixel]", pixel)
+        pg.keyboard.press("Enter")
+        feedback = pg.inner_text(".sc-tfeed")
+        assert pg.evaluate("document.activeElement.textContent") in ("Next step", "Again")
+        return feedback
+
+    def next(self) -> None:
+        self.page.keyboard.press("Enter")
+
+    def score(self) -> str:
+        return self.page.inner_text(".sc-tscore")
+
+    def close(self) -> None:
+        self.page.close()
+        assert [u for u in self.requests if not u.startswith(LOCAL)] == []
+        assert self.errors == []
+
+
+@pytest.fixture
+def quiz(browser: Any, tmp_path: Path) -> Any:
+    opened: list[Quiz] = []
+
+    def open_quiz(*argv: str, width: int = 1280) -> Quiz:
+        target = tmp_path / f"quiz{len(opened)}.html"
+        r = run(*argv, "-o", str(target))
+        assert r.code == 0, r.err
+        q = Quiz(browser, target, width)
+        opened.append(q)
+        return q
+
+    yield open_quiz
+    for q in opened:
+        q.close()
+
+
+LINE = ("line", "2", "2", "10", "6")
+LINE_RIGHT = [
+    ("0", "NE", "3, 3"), ("-8", "E", "4, 3"), ("0", "NE", "5, 4"), ("-8", "E", "6, 4"),
+    ("0", "NE", "7, 5"), ("-8", "E", "8, 5"), ("0", "NE", "9, 6"), ("-8", "E", "10, 6"),
+]  # fmt: skip
+
+
+def test_a_right_bresenham_line_scores_full_marks(quiz):
+    q = quiz(*LINE)
+    q.start()
+    for i, (p, d, px) in enumerate(LINE_RIGHT):
+        feedback = q.answer(p, d, px)
+        assert "\u2717" not in feedback, (i, feedback)
+        if i < len(LINE_RIGHT) - 1:
+            assert q.score() == f"Score so far: {3 * (i + 1)} / {3 * (i + 1)}"
+            q.next()
+    assert q.score() == "Score: 24 / 24 (100 %)"
+    assert "p\u2087 = \u22128 < 0, so the next pixel is E: (10, 6)." in feedback
+
+
+def test_a_wrong_bresenham_line_is_marked_with_follow_through(quiz):
+    q = quiz(*LINE)
+    q.start()
+    marks = []
+    # step 0 right
+    assert "\u2717" not in q.answer("0", "NE", "3, 3")
+    marks.append(3)
+    q.next()
+    # step 1: p1 = 8 (it is -8); NE follows from the student's 8 > 0, and (4, 4) from NE
+    f = q.answer("8", "NE", "4, 4")
+    assert (
+        "\u2717 p\u2081 = \u22128, not 8 (p\u2081 = p\u2080 \u2212 8 = 0 \u2212 8 = \u22128)" in f
+    )
+    assert "\u2713 decision NE: it follows from your p\u2081 = 8 > 0 (follow-through)" in f
+    assert "\u2713 next pixel (4, 4) (follow-through from your decision)" in f
+    assert "p\u2081 = \u22128 < 0, so the next pixel is E: (4, 3)." in f
+    marks.append(2)
+    q.next()
+    # the right row is revealed and the test goes on from (4, 3)
+    assert "from (4, 3)" in q.page.inner_text(".sc-tq")
+    # step 2: p2 = 0 right, E wrong (0 chooses NE), (5, 3) follows from E
+    f = q.answer("0", "E", "5, 3")
+    assert "\u2717 decision: E; p\u2082 = 0 chooses NE" in f
+    assert "\u2713 next pixel (5, 3) (follow-through from your decision)" in f
+    marks.append(2)
+    q.next()
+    # step 3: the pixel wrong
+    f = q.answer("-8", "E", "6, 5")
+    assert "\u2717 next pixel: E from (5, 4) goes to (6, 4), not (6, 5)" in f
+    marks.append(2)
+    q.next()
+    for i, (p, d, px) in enumerate(LINE_RIGHT[4:]):
+        assert "\u2717" not in q.answer(p, d, px)
+        marks.append(3)
+        if i < 3:
+            q.next()
+    assert sum(marks) == 21
+    assert q.score() == "Score: 21 / 24 (88 %)"
+
+
+def test_the_table_hides_from_the_current_row_on_and_the_stepper_keys_give_nothing_away(quiz):
+    q = quiz(*LINE)
+    q.start()
+    for p, d, px in LINE_RIGHT[:3]:
+        q.answer(p, d, px)
+        q.next()
+    visible = q.page.evaluate(
+        """() => [...document.querySelectorAll("tr[data-pos]")]
+              .filter(t => t.offsetParent !== null).map(t => +t.getAttribute("data-pos"))"""
+    )
+    assert visible == [1, 2, 3]  # rows k = 0, 1, 2; row k = 3 holds the p asked now
+    # the p_{k+1} column of the last row shown is p_3 itself: hidden
+    hidden = q.page.evaluate(
+        """() => getComputedStyle(document.querySelector('tr[data-pos="3"] td.sc-hidcell')).color"""
+    )
+    assert hidden == "rgba(0, 0, 0, 0)"
+    assert not q.page.is_visible(".sc-caption") and not q.page.is_visible(".sc-pixels")
+    before = q.page.get_attribute("section.scanconv", "data-pos")
+    q.page.focus(".sc-testpanel button[data-tact=stop]")
+    q.page.keyboard.press("ArrowRight")
+    q.page.keyboard.press("End")
+    assert q.page.get_attribute("section.scanconv", "data-pos") == before
+    q.page.keyboard.press("Enter")  # Stop: the whole table again
+    assert q.page.evaluate("document.querySelectorAll('tr[data-pos]').length") == q.page.evaluate(
+        """() => [...document.querySelectorAll("tr[data-pos]")]
+              .filter(t => t.offsetParent !== null).length"""
+    )
+    assert q.page.get_attribute("[data-selftest]", "aria-expanded") == "false"
+
+
+CIRCLE = ("circle", "5", "--center", "2", "3")
+
+
+def test_a_right_midpoint_circle_clicked_on_the_grid_scores_full_marks(quiz):
+    q = quiz(*CIRCLE)
+    q.start()
+    steps = [("-4", "E", (3, 8)), ("-1", "E", (4, 8)), ("4", "SE", (5, 7)), ("3", "SE", (6, 6))]
+    for i, (p, d, px) in enumerate(steps):
+        f = q.answer(p, d, px)
+        assert "\u2717" not in f, f
+        if i < 3:
+            q.next()
+    assert "p\u2083 = 3 > 0, so the next pixel is SE: (4, 3)." in f
+    assert q.score() == "Score: 12 / 12 (100 %)"
+
+
+def test_a_wrong_midpoint_circle_is_marked_with_follow_through(quiz):
+    q = quiz(*CIRCLE)
+    q.start()
+    assert "\u2717" not in q.answer("-4", "E", "1, 5")
+    q.next()
+    # p1 = 2 (it is -1): SE follows from 2 > 0; the click on (2, 4) (absolute (4, 7)) from SE
+    f = q.answer("2", "SE", (4, 7))
+    assert "\u2717 p\u2081 = \u22121, not 2 (p\u2081 = p\u2080 + 3 = \u22124 + 3 = \u22121)" in f
+    assert "\u2713 decision SE: it follows from your p\u2081 = 2 > 0 (follow-through)" in f
+    assert "\u2713 next pixel (2, 4)" in f
+    assert "p\u2081 = \u22121 < 0, so the next pixel is E: (2, 5)." in f
+    q.next()
+    f = q.answer("4", "E", "3, 5")
+    assert "\u2717 decision: E; p\u2082 = 4 > 0 chooses SE" in f
+    q.next()
+    f = q.answer("3", "SE", "4, 4")
+    assert "\u2717 next pixel: SE from (3, 4) goes to (4, 3), not (4, 4)" in f
+    assert q.score() == "Score: 9 / 12 (75 %)"
+    q.next()  # "Again" starts over
+    assert "Step 1 of 4" in q.page.inner_text(".sc-tq") and q.score() == ""
+
+
+def test_a_dda_line_asks_the_exact_values_and_rounds_the_students_own(quiz):
+    q = quiz("line", "0", "0", "5", "3", "--algo", "dda")
+    q.start()
+    assert q.page.inner_text(".sc-tq").startswith("Step 1 of 5: from (0.000, 0.000), what are")
+    f = q.answer("1, 0.6", None, "1, 1")
+    assert "\u2717" not in f and "(x\u2081, y\u2081) = (1.000, 0.600)" in f
+    q.next()
+    # y2 written 1.5 (it is 1.2): wrong, but its pixel (2, 2) is rounded from it
+    f = q.answer("2, 3/2", None, "2, 2")
+    assert "\u2717 (x\u2082, y\u2082) = (2.000, 1.200), not 2, 3/2" in f
+    assert "\u2713 pixel (2, 2), rounded from your values: follow-through" in f
+    for xy, px in [("3, 9/5", "3, 2"), ("4, 2.4", "4, 2"), ("5, 3", "5, 3")]:
+        q.next()
+        assert "\u2717" not in q.answer(xy, None, px)
+    assert q.score() == "Score: 9 / 10 (90 %)"
+
+
+def test_an_ellipse_asks_both_regions(quiz):
+    q = quiz("ellipse", "8", "6")
+    q.start()
+    right = [("-332", "E", "1, 6"), ("-224", "E", "2, 6"), ("-44", "E", "3, 6"),
+             ("208", "SE", "4, 5"), ("-108", "E", "5, 5"), ("288", "SE", "6, 4"),
+             ("244", "SE", "7, 3"), ("-23", "SE", "8, 2"), ("361", "S", "8, 1"),
+             ("297", "S", "8, 0")]  # fmt: skip
+    for i, (p, d, px) in enumerate(right):
+        if i == 7:  # region 2 starts: p2_0
+            assert "p2\u2080 =" in q.page.inner_text("form.sc-tform")
+        assert "\u2717" not in q.answer(p, d, px)
+        if i < len(right) - 1:
+            q.next()
+    assert q.score() == "Score: 30 / 30 (100 %)"
+
+
+def test_the_script_rounds_as_the_library_does(quiz):
+    q = quiz(*LINE)
+    values = [Fraction(n, d) for d in (1, 2, 3, 4, 5, 10) for n in range(-13, 14)]
+    for how, fn in ROUNDINGS.items():
+        got = q.page.evaluate(
+            """([vs, how]) => vs.map(v => Number(window.scanconvSelftest.round(
+                 window.scanconvSelftest.num(v), how)))""",
+            [[str(v) for v in values], how],
+        )
+        assert got == [fn(v) for v in values], how
+    same = q.page.evaluate(
+        """(pairs) => pairs.map(([a, b]) => window.scanconvSelftest.same(
+             window.scanconvSelftest.num(a), window.scanconvSelftest.num(b)))""",
+        [["0.33", "1/3"], ["0.3", "1/3"], ["-1.25", "-5/4"], ["\u22125/4", "-5/4"], ["2", "2.0"],
+         ["0.667", "2/3"], ["0.665", "2/3"], ["x", "1"], ["1/0", "1"]],
+    )  # fmt: skip
+    assert same == [True, False, True, True, True, True, False, False, False]
+
+
+def test_a_page_without_a_step_table_or_rule_has_no_button(browser, tmp_path):
+    for i, argv in enumerate(
+        [("polygon", "2", "3", "7", "1", "13", "5"), ("circle", "5", "-m", "trig")]
+    ):
+        target = tmp_path / f"plain{i}.html"
+        assert run(*argv, "-o", str(target)).code == 0
+        page = browser.new_page()
+        page.goto(target.as_uri())
+        page.wait_for_selector("section.scanconv[data-ready]")
+        assert page.locator("[data-selftest]").count() == 0
+        assert page.get_by_role("button", name="Test yourself").count() == 0
+        page.close()
+
+
+def test_the_mode_fits_a_phone(quiz):
+    q = quiz(*CIRCLE, width=390)
+    q.start()
+    box = q.page.locator(".sc-testpanel").bounding_box()
+    assert box is not None and box["x"] >= 0 and box["x"] + box["width"] <= 390
+    for sel in ("input[name=p]", "select[name=decision]", "input[name=pixel]"):
+        b = q.page.locator(sel).bounding_box()
+        assert b is not None and b["x"] + b["width"] <= 390, sel
+    q.answer("-4", "E", (3, 8))
+
+
+def test_the_tip_of_a_flat_ellipse_asks_the_pixel_only(quiz):
+    q = quiz("ellipse", "12", "1")
+    q.start()
+    n = int(q.page.inner_text(".sc-tq").split(" of ")[1].split(":")[0])
+    for _ in range(n - 1):  # every step but the last left blank: no mark
+        q.page.keyboard.press("Enter")
+        q.next()
+    assert q.page.inner_text(".sc-tq") == f"Step {n} of {n}: from (11, 0), the pixel only"
+    assert not q.page.is_visible("input[name=p]") and not q.page.is_visible("select")
+    assert q.page.evaluate("document.activeElement.name") == "pixel"
+    f = q.answer(None, None, "12, 0")
+    assert "\u2713 next pixel (12, 0)" in f and "the next pixel is E: (12, 0)." in f
+    assert q.score().startswith("Score: 1 / ")
+
+
+def test_a_click_on_a_grid_with_y_down_names_the_right_pixel(quiz):
+    q = quiz(*LINE, "--origin", "top-left")
+    q.start()
+    for i, (p, d, px) in enumerate(LINE_RIGHT[:3]):
+        x, y = (int(v) for v in px.split(", "))
+        assert "\u2717" not in q.answer(p, d, (x, y))
+        assert q.page.input_value("input[name=pixel]") == f"{x}, {y}"
+        if i < 2:
+            q.next()
+    assert q.score() == "Score so far: 9 / 9"
+
+
+def test_two_notebook_answers_test_apart(browser, tmp_path):
+    import scanconv
+
+    cells = [scanconv.line(2, 2, 10, 6)._repr_html_(), scanconv.circle(5)._repr_html_()]
+    target = tmp_path / "notebook.html"
+    target.write_text(
+        "<!DOCTYPE html><html><head><meta charset='utf-8'></head><body>"
+        + "".join(f"<div class='cell'>{c}</div>" for c in cells)
+        + "</body></html>",
+        encoding="utf-8",
+    )
+    page = browser.new_page()
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(target.as_uri())
+    page.wait_for_selector("section.scanconv[data-st-ready]")
+    line, circle = page.locator("section.scanconv").all()
+    assert page.locator("section.scanconv[data-st-ready]").count() == 2
+    line.locator("[data-selftest]").click()
+    assert line.evaluate("r => r.classList.contains('sc-testing')")
+    assert not circle.evaluate("r => r.classList.contains('sc-testing')")
+    line.locator("input[name=p]").fill("0")
+    line.locator("select[name=decision]").select_option("NE")
+    line.locator("input[name=pixel]").fill("3, 3")
+    page.keyboard.press("Enter")
+    assert "\u2717" not in line.locator(".sc-tfeed").inner_text()
+    pos = line.get_attribute("data-pos")
+    page.keyboard.press("ArrowRight")  # the focus is in the test: the stepper stays
+    assert line.get_attribute("data-pos") == pos
+    circle.locator("button[data-act=reset]").click()
+    page.keyboard.press("ArrowRight")  # the other answer still steps
+    assert circle.get_attribute("data-pos") == "1"
+    page.close()
+    assert errors == []
