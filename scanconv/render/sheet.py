@@ -82,7 +82,7 @@ class Answered(NamedTuple):
 
 
 KINDS = ("key", "worksheet")
-FORMATS = ("markdown", "plain", "latex", "json", "html")
+FORMATS = ("markdown", "plain", "latex", "json", "html", "moodle", "gift")
 
 
 def sheet_document(
@@ -100,6 +100,10 @@ def sheet_document(
     """
     if kind not in KINDS:
         raise ValueError(f"unknown sheet kind {kind!r}: key or worksheet")
+    if fmt in ("moodle", "gift"):  # a quiz file for an LMS: scanconv.render.lms
+        from .lms import quiz_document
+
+        return quiz_document(sheet, answered, fmt, notices)
     if fmt == "json":
         return _json(sheet, answered, kind)
     if fmt == "html":
