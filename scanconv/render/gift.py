@@ -29,7 +29,7 @@ HINTS = {
     "number": "A decimal (to 3 decimals or more where it is not exact).",
     "word": "A word (a decision: the move's compass letters, E, NE, N, ...).",
 }
-"""What each blank asks for, under its question (GIFT text: nothing to escape)."""
+"""What each blank asks for, under its question."""
 
 _SPECIAL = re.compile(r"([\\~=#{}:])")
 
@@ -51,9 +51,11 @@ def gift_text(text: str) -> str:
 
 
 def _answer(gap: Gap) -> str:
+    """A blank's answers: a short answer is compared with what the student types, so it is
+    plain text (GIFT-escaped, not HTML)."""
     if gap.kind == "number":
         return f"#{gap.answers[0]}:{gap.tolerance}"
-    return " ".join("=" + gift_text(a) for a in gap.answers)
+    return " ".join("=" + gift_plain(a) for a in gap.answers)
 
 
 def _shown(pieces: Sequence[Piece], asked: Gap) -> str:
@@ -90,17 +92,17 @@ def _blank_questions(q: QuizQuestion) -> Iterator[str]:
     """One question per blank; its feedback the derivation and the row filled in (the whole
     key on each of a question's many blanks would make the file hundreds of times larger)."""
     stem = _stem(q)
-    working = gift_text("\n".join(q.working))
+    working = "\n".join(q.working)
     i = 0
     for table in q.tables:
         for gap, asked, answered in _rows(table):
             i += 1
             name = gift_plain(f"{q.name} [{i}] {gap.label}"[:250])
             ask = gift_text(f"What is {gap.label.rpartition(', ')[2]} (the ?)?")
-            feedback = f"<pre>{working}\n\n{gift_text(answered)}</pre>"
+            feedback = f"<pre>{gift_text(working + chr(10) * 2 + answered)}</pre>"
             yield (
                 f"::{name}::[html]{stem}<p>{gift_text(asked)}</p><p>{ask}</p>"
-                f"<p><em>{HINTS[gap.kind]}</em></p>"
+                f"<p><em>{gift_text(HINTS[gap.kind])}</em></p>"
                 f"{{{_answer(gap)}\n####[html]{feedback}}}\n\n"
             )
 

@@ -12,7 +12,8 @@ docs/lms.md):
   the step table out) is not asked twice;
 * in a table, the first column when it only numbers or names the rows (the step ``k``, a
   level, a unit, an edge: :data:`scanconv.render.sheet.LABELS`, and the first column of any
-  secondary table) is shown, as a worksheet shows it;
+  secondary table) is shown, as a worksheet shows it, and so is a step number ``k`` wherever
+  it stands;
 * a number is a numerical gap (:func:`number_gap`: exact when it has at most 3 decimals, else
   within :data:`TOLERANCE`); a pixel or point is a gap per coordinate; a decision (a move) is a
   short-answer gap taking its compass letters or words (:data:`MOVE_WORDS`); a text cell that
@@ -100,8 +101,9 @@ class QuizQuestion(NamedTuple):
     """The worked answer (the plain key) and the command line that computes it."""
     marks: int | None
     working: tuple[str, ...] = ()
-    """The derivation alone (the working and the notes, as text): with a row of a table
-    filled in, the feedback of one blank (GIFT, which asks each blank on its own)."""
+    """The command line and the working alone (the derived values with the numbers
+    substituted, as text): with a row of a table filled in, the feedback of one blank
+    (GIFT, which asks each blank on its own)."""
 
 
 # --- numbers ------------------------------------------------------------------------------------
@@ -219,14 +221,16 @@ def _gap_table(
     labelled: bool,
     room: list[int],
 ) -> GapTable:
-    """A table with its answer cells as gaps; the first column shown when ``labelled``.
-    ``room[0]`` is how many more gaps may be made (:class:`_TooMany` past it)."""
+    """A table with its answer cells as gaps; the first column shown when ``labelled``, and
+    a step number ``k`` wherever it stands. ``room[0]`` is how many more gaps may be made
+    (:class:`_TooMany` past it)."""
+    shown = {j for j, c in enumerate(columns) if c.key == "k" or (j == 0 and labelled)}
     out = []
     for row in rows:
         head = str(row[0]) if row else ""
         cells: list[tuple[Piece, ...]] = []
         for j, (column, value) in enumerate(zip(columns, row, strict=True)):
-            if j == 0 and labelled:
+            if j in shown:
                 cells.append((str(value),))
                 continue
             pieces = cell_pieces(value, f"{title}, {columns[0].text} = {head}, {column.text}")
@@ -300,7 +304,6 @@ def quiz_questions(
 
 def _quiz_question(title: str, a: Answered, notices: list[str] | None) -> QuizQuestion:
     from . import Format, Notice, render
-    from .cells import note_unicode
     from .sheet import wording
 
     q = a.question
@@ -333,11 +336,7 @@ def _quiz_question(title: str, a: Answered, notices: list[str] | None) -> QuizQu
         tables=tables,
         feedback=f"$ {q.command}\n\n" + "".join(key).rstrip("\n") + "\n",
         marks=q.marks,
-        working=(
-            f"$ {q.command}",
-            *(d.text for d in a.solution.derived),
-            *(note_unicode(n) for n in a.solution.notes),
-        ),
+        working=(f"$ {q.command}", *(d.text for d in a.solution.derived)),
     )
 
 
