@@ -10,9 +10,11 @@ import html
 import re
 import xml.etree.ElementTree as ET
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from scanconv.core.working import visible
 from scanconv.render.gift import gift
 from scanconv.render.lms import Gap, GapTable, QuizQuestion
 from scanconv.render.moodle import cdata, cloze, moodle_text, moodle_xml
@@ -107,3 +109,30 @@ def test_any_text_reads_back(gift_reader: GiftReader, text: str, word: str) -> N
     assert _first_paragraph(parsed[0]["stem"]["text"]) == text
     assert [c["text"]["text"] for c in parsed[0]["choices"]] == [" ".join(word.split())]
     assert parsed[1]["choices"] == {"type": "range", "number": -8, "range": 0}
+
+
+def _corpus() -> list[str]:
+    from tests.test_escaping import CORPUS
+
+    return [t for t in CORPUS if "\x00" not in t]  # a NUL byte: not a text file, refused
+
+
+@pytest.mark.parametrize("text", _corpus(), ids=lambda t: repr(t[:16]))
+def test_the_escaping_corpus_in_both_quiz_formats(gift_reader: GiftReader, text: str) -> None:
+    """The corpus every format is tried with (tests/test_escaping.py) as a sheet's title,
+    section and wording: both quiz files read back, no control character or bidirectional
+    override in them, the title there as the other formats show it (visible)."""
+    one = " ".join(text.split("\n"))
+    questions = f"title: {one}\nsection: {one}\n> {one}\n[4] line 2 2 10 6\n> {one}\ncircle 5\n"
+    xml, gift_text, _ = documents(questions)
+    unsafe = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
+    for out in (xml, gift_text):
+        assert not unsafe.search(out)
+    title = " ".join(visible(one).split())
+    moodle = read_moodle(xml)
+    assert [q.type for q in moodle] == ["cloze", "cloze"]
+    assert all(q.name.startswith(title[:200]) for q in moodle)
+    assert all("<script" not in q.text for q in moodle)
+    parsed = gift_reader.parse(gift_text)
+    assert {q["type"] for q in parsed} == {"Numerical", "Short"}
+    assert all(q["title"].startswith(title[:200]) for q in parsed)

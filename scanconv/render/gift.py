@@ -22,6 +22,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator, Sequence
 
+from ..core.working import visible
 from .lms import Gap, GapTable, Piece, QuizQuestion
 from .mathml import esc
 
@@ -35,12 +36,13 @@ _SPECIAL = re.compile(r"([\\~=#{}:])")
 
 
 def gift_plain(text: str) -> str:
-    r"""Plain text (a question's name) with GIFT's special characters escaped.
+    r"""Plain text (a question's name, a short answer) on one line, control characters and
+    bidirectional overrides shown as U+FFFD, GIFT's special characters escaped.
 
     >>> gift_plain("Q1: a::b")
     'Q1\\: a\\:\\:b'
     """
-    one_line = " ".join(text.split())
+    one_line = " ".join(visible(text).split())
     return _SPECIAL.sub(r"\\\1", one_line)
 
 
