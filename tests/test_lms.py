@@ -482,3 +482,17 @@ def test_the_tolerance_rule(value: Fraction) -> None:
             if abs(rounded - value) <= Fraction(1, 2000):  # a 3-decimal rounding of it
                 assert abs(rounded - centre) <= tol
         assert "e" not in gap.answers[0].lower()
+
+
+def test_docs_state_the_rules_the_code_uses() -> None:
+    """docs/lms.md states the tolerance, the most blanks of a question and the spellings of
+    a decision as the code has them."""
+    from scanconv.render.lms import MOVE_WORDS
+
+    doc = (Path(__file__).resolve().parent.parent / "docs" / "lms.md").read_text(encoding="utf-8")
+    assert f"tolerance {TOLERANCE}" in doc and f"more than {MAX_GAPS} blanks" in doc
+    assert "`E`/`east`, `NE`/`north-east`/`northeast`/`north east`" in doc
+    assert MOVE_WORDS["E"] == ("east",)
+    assert MOVE_WORDS["NE"] == ("north-east", "northeast", "north east")
+    assert set(MOVE_WORDS) == {"E", "NE", "N", "NW", "W", "SW", "S", "SE"}
+    assert "N NW W SW S SE" in doc
