@@ -496,3 +496,12 @@ def test_docs_state_the_rules_the_code_uses() -> None:
     assert MOVE_WORDS["NE"] == ("north-east", "northeast", "north east")
     assert set(MOVE_WORDS) == {"E", "NE", "N", "NW", "W", "SW", "S", "SE"}
     assert "N NW W SW S SE" in doc
+
+
+def test_numbers_of_any_size_are_written_exactly() -> None:
+    """No decimal context rounds a large value (an ellipse's p with large radii)."""
+    big = 10**40
+    assert number_gap(big).answers == (str(big),)
+    assert number_gap(Fraction(-big - 1, 8)).answers == (f"-{(big + 1) // 8}.125",)
+    gap = number_gap(Fraction(big + 1, 3))
+    assert gap.answers[0] == "3" * 40 + ".666667" and gap.tolerance == TOLERANCE

@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Iterator, Sequence
-from decimal import ROUND_HALF_UP, Decimal
+from decimal import Decimal
 from fractions import Fraction
 from typing import Any, NamedTuple
 
@@ -118,7 +118,20 @@ def decimal_text(value: Fraction | int) -> str | None:
     scaled = Fraction(value) * 1000
     if scaled.denominator != 1:
         return None
-    return _plain(Decimal(scaled.numerator).scaleb(-3))
+    return _fixed(scaled.numerator, 3)
+
+
+def _fixed(n: int, places: int) -> str:
+    """The integer ``n`` scaled by ``10**-places``, in fixed notation without trailing zeros
+    (exact at any size: no decimal context).
+
+    >>> _fixed(-1500, 3), _fixed(7, 6), _fixed(0, 6), _fixed(10**40, 3)[:5]
+    ('-1.5', '0.000007', '0', '10000')
+    """
+    whole, part = divmod(abs(n), 10**places)
+    digits = f"{part:0{places}d}".rstrip("0")
+    text = f"{whole}.{digits}" if digits else str(whole)
+    return f"-{text}" if n < 0 else text
 
 
 def _plain(d: Decimal) -> str:
@@ -143,9 +156,11 @@ def number_gap(value: Fraction | int | float, label: str = "") -> Gap:
     text = decimal_text(exact)
     if text is not None:
         return Gap("number", (text,), "0", label)
-    centre = Decimal(exact.numerator) / Decimal(exact.denominator)
-    rounded = centre.quantize(Decimal(1).scaleb(-CENTRE_PLACES), rounding=ROUND_HALF_UP)
-    return Gap("number", (_plain(rounded),), TOLERANCE, label)
+    scaled = abs(exact) * 10**CENTRE_PLACES
+    rounded = (scaled + Fraction(1, 2)).__floor__()  # half up, away from zero
+    return Gap(
+        "number", (_fixed(-rounded if exact < 0 else rounded, CENTRE_PLACES),), TOLERANCE, label
+    )
 
 
 _NUMBER = re.compile(r"^(~?)(-?\d+(?:\.\d+)?|-?\d+/\d+)$")

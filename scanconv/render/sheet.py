@@ -2,7 +2,8 @@
 
 :func:`sheet_document` renders a whole sheet in memory (so nothing is written when a question
 turns out bad) in ``markdown``, ``plain``, ``latex`` (a fragment, or a complete document with
-``standalone``; written by :mod:`scanconv.render.sheet_latex`), ``json`` and ``html``. A key is each question's number,
+``standalone``; written by :mod:`scanconv.render.sheet_latex`), ``json`` and ``html``, and as
+a quiz file for an LMS, ``moodle`` (Moodle XML) or ``gift`` (:mod:`scanconv.render.lms`). A key is each question's number,
 marks, wording and command line, then its full worked answer, as the single-answer renderers
 write it. A worksheet is the question in words, the given values and, for each table of the
 answer, an empty table with the answer's columns and number of rows (the ``k`` column, which
