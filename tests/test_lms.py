@@ -505,3 +505,31 @@ def test_numbers_of_any_size_are_written_exactly() -> None:
     assert number_gap(Fraction(-big - 1, 8)).answers == (f"-{(big + 1) // 8}.125",)
     gap = number_gap(Fraction(big + 1, 3))
     assert gap.answers[0] == "3" * 40 + ".666667" and gap.tolerance == TOLERANCE
+
+
+@pytest.mark.slow
+def test_the_whole_exam_as_a_quiz(gift_reader: GiftReader) -> None:
+    """The notes' exam (``scanconv exam --source``): its theory questions are essays, every
+    other question a Cloze question whose blanks hold the key, and gift-pegjs reads the
+    GIFT of the same questions with the same answers."""
+    from scanconv.cli.exam import exam_text
+
+    xml, text, answers = documents(exam_text())
+    questions = read_moodle(xml)
+    marked = [(q, a) for q, a in zip(questions, answers, strict=True) if q.type == "cloze"]
+    assert {a["primitive"] for q, a in zip(questions, answers, strict=True)
+            if q.type == "essay"} == {"theory"}  # fmt: skip
+    assert len(marked) >= 10
+    assert_moodle_key(
+        "<quiz>"
+        + "".join(ET.tostring(q.element, encoding="unicode") for q, _ in marked)
+        + "</quiz>",
+        [a for _, a in marked],
+    )
+    parsed = gift_reader.parse(text)
+    assert sum(q["type"] == "Essay" for q in parsed) == len(questions) - len(marked)
+    cells = [c for _, a in marked for c in key_cells(a)]
+    blanks = [q for q in parsed if q["type"] != "Essay"]
+    assert len(blanks) == len(cells)
+    for question, value in zip(blanks, cells, strict=True):
+        assert holds(*gift_answers(question), value), (question["title"], value)
