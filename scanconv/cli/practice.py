@@ -69,7 +69,8 @@ _HELP = (
     "stdout or -o FILE, its answer key with --key FILE.\n\n"
     "Every octant, steep and negative slopes, right-to-left end points, ties and centres "
     "away from the origin come up by construction (docs/teaching.md). The --key file's format "
-    "is taken from its extension (.md, .tex, .html, .json, .txt, .pdf; .xml: Moodle XML, .gift: GIFT, quiz files for an LMS, docs/lms.md).\n\n"
+    "is taken from its extension (.md, .tex, .html, .json, .txt, .pdf; .xml and .gift: "
+    "a quiz for Moodle, docs/lms.md).\n\n"
     "Example: scanconv practice --topic line --count 8 --seed 7 -o worksheet.md --key key.md"
 )
 
@@ -108,7 +109,8 @@ def practice(
         typer.Option(
             "--key",
             metavar="FILE",
-            help="Write the answer key to FILE (.md, .tex, .html, .json, .txt, .pdf, .xml or .gift).",
+            help="Write the answer key to FILE (.md, .tex, .html, .json, .txt, .pdf, .xml "
+            "or .gift).",
             show_default=False,
         ),
     ] = None,
