@@ -2,7 +2,7 @@
 ``--format gift`` (docs/lms.md).
 
 The Moodle XML is read back by a reader written here with xml.etree (the Cloze blanks
-``{1:NUMERICAL:=-8:0}`` parsed by hand), the GIFT by the independent npm parser
+``{1:NUMERICAL:=-8:0}`` parsed by Moodle's multianswer rules, restated below), the GIFT by the independent npm parser
 ``gift-pegjs`` (installed into a temporary directory once per session); the answers they hold
 must be the key: the step table and the tables of scanconv's JSON answer to the same
 questions, value by value, in order.
@@ -42,50 +42,45 @@ class Blank(NamedTuple):
     """Each right answer (marked ``=``) with its tolerance (``""`` for a word)."""
 
 
-_START = re.compile(r"\{(\d*):([A-Z_]+):")
-
-
-def _split(body: str, sep: str) -> list[str]:
-    """``body`` split at each ``sep`` not escaped with a backslash (the escapes kept)."""
-    parts, cur, i = [], "", 0
-    while i < len(body):
-        ch = body[i]
-        if ch == "\\" and i + 1 < len(body):
-            cur += body[i : i + 2]
-            i += 2
-            continue
-        if ch == sep:
-            parts.append(cur)
-            cur = ""
-        else:
-            cur += ch
-        i += 1
-    return [*parts, cur]
-
-
-def _unescape(text: str) -> str:
-    return html.unescape(re.sub(r"\\(.)", r"\1", text))
+# Moodle's multianswer syntax (question/type/multianswer/questiontype.php), restated: an
+# answer runs to a ``~``, ``#`` or ``}`` not preceded by ``\``, ``&`` or ``&amp;``; a word
+# answer is then HTML-entity-decoded and only ``\}`` and ``\#`` unescaped; a numerical answer
+# is ``NUMBER`` or ``NUMBER:TOLERANCE``.
+_FRACTION = r"=|%-?[0-9]+(?:[.,][0-9]*)?%"
+_ANSWER = r".+?(?<!\\)(?<!&)(?<!&amp;)(?=[~#}]|$)"
+_FEEDBACK = r".*?(?<!\\)(?=[~}]|$)"
+_ALT = rf"(?:{_FRACTION})?(?:{_ANSWER})(?:#(?:{_FEEDBACK}))?"
+_PARTS = re.compile(
+    rf"~?(?P<fraction>{_FRACTION})?(?P<answer>{_ANSWER})(?:#(?:{_FEEDBACK}))?", re.S
+)
+_NUMBER = r"-?(?:[0-9]+[.,]?[0-9]*|[.,][0-9]+)(?:[eE][-+]?[0-9]+)?"
+_NUMERICAL = re.compile(rf"^(?P<value>{_NUMBER})(?::(?P<tol>{_NUMBER}))?$", re.S)
+_TYPES = "NUMERICAL|NM|MULTICHOICE|MC|SHORTANSWER_C|SAC|MWC|SHORTANSWER|SA|MW"
+_BLANK = re.compile(
+    rf"\{{(?P<weight>[0-9]*):(?P<type>{_TYPES}):(?P<alts>{_ALT}(?:~{_ALT})*)\}}", re.S
+)
 
 
 def cloze_blanks(text: str) -> list[Blank]:
-    """Every blank of a Cloze question's text, as Moodle's multianswer parser finds them: a
-    ``{`` with a weight and a type, up to the first ``}`` not escaped."""
+    """Every blank of a Cloze question's text, as Moodle's multianswer parser reads them."""
     out = []
-    for m in _START.finditer(text):
-        i = m.end()
-        while text[i] != "}":
-            i += 2 if text[i] == "\\" else 1
-        answers = []
-        for alt in _split(text[m.end() : i], "~"):
-            if not alt.startswith("="):
-                continue  # a wrong answer (none are written)
-            answer = _split(alt[1:], "#")[0]
-            if m.group(2) == "NUMERICAL":
-                value, _, tol = answer.partition(":")
-                answers.append((_unescape(value), tol))
+    for m in _BLANK.finditer(text):
+        kind = {"NM": "NUMERICAL", "SA": "SHORTANSWER", "MW": "SHORTANSWER"}.get(
+            m["type"], m["type"]
+        )
+        answers, rest = [], m["alts"]
+        while rest and (alt := _PARTS.match(rest)):
+            rest = rest[alt.end() :]
+            if alt["fraction"] != "=":
+                continue  # not a right answer (none are written)
+            if kind == "NUMERICAL":
+                number = _NUMERICAL.match(alt["answer"])
+                assert number, alt["answer"]
+                answers.append((number["value"], number["tol"] or "0"))
             else:
-                answers.append((_unescape(answer), ""))
-        out.append(Blank(m.group(2), int(m.group(1) or 1), tuple(answers)))
+                word = html.unescape(alt["answer"]).replace("\\}", "}").replace("\\#", "#")
+                answers.append((word, ""))
+        out.append(Blank(kind, int(m["weight"] or 1), tuple(answers)))
     return out
 
 

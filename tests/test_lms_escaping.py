@@ -86,13 +86,16 @@ def _question(text: str, word: str) -> QuizQuestion:
 printable = st.text(
     st.characters(blacklist_categories=("Cs", "Cc", "Cf", "Zl", "Zp", "Co", "Cn")), max_size=40
 )
+words = st.text(st.sampled_from(list('{}~=#:\\/"&<>ab;')), min_size=1, max_size=12).filter(
+    lambda w: "\\#" not in w and "\\}" not in w  # Moodle unescapes these after decoding: no
+)  # word of scanconv holds a backslash (lms.cell_pieces), so they cannot come up
 hostile = st.one_of(printable, st.text(st.sampled_from(list("{}~=#:]>[<&\\/\"' x%")), max_size=30))
 
 
 @settings(
     max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
 )
-@given(hostile, st.text(st.sampled_from(list('{}~=#:\\/"&<>ab')), min_size=1, max_size=12))
+@given(hostile, words)
 def test_any_text_reads_back(gift_reader: GiftReader, text: str, word: str) -> None:
     """Whatever the text: Moodle XML stays well-formed with exactly the quiz's blanks, and
     gift-pegjs reads one question per blank, each text as it was."""

@@ -4,7 +4,7 @@ Each question is a ``cloze`` (Embedded answers) question: its wording, the given
 the answer's tables as an HTML table whose answer cells are blanks that stock Moodle marks
 (:mod:`.lms` says which): ``{1:NUMERICAL:=-8:0}`` for a number (tolerance 0 when it has at most
 3 decimals, else 0.0005), ``{1:SHORTANSWER:=NE~=north-east~...}`` for a decision or a word
-(case-insensitive). The worked answer is the general feedback. A question with no table is an
+(case-insensitive; an answer's special characters as character references, :func:`_cloze_answer`). The worked answer is the general feedback. A question with no table is an
 ``essay`` question with the key as its feedback and the grader's information.
 
 Every text from the question file and every value goes through :func:`moodle_text`, the one
@@ -22,6 +22,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator, Sequence
 
+from ..core.working import UNSAFE
 from .lms import INSTRUCTIONS, Gap, GapTable, Piece, QuizQuestion
 from .mathml import esc
 
@@ -47,19 +48,23 @@ def cdata(html: str) -> str:
     return "<![CDATA[" + html.replace("]]>", "]]]]><![CDATA[>") + "]]>"
 
 
-_CLOZE_SPECIAL = re.compile(r'([\\}#~/"])')
+_CLOZE_SPECIAL = re.compile(r"""[&<>"'{}~#\\]""")
 
 
 def _cloze_answer(text: str) -> str:
-    r"""An answer inside a blank: the characters the Cloze syntax reads backslash-escaped.
+    r"""An answer inside a blank, as Moodle's Cloze parser reads it back: an answer ends at a
+    ``~``, ``#`` or ``}`` not preceded by ``\``, ``&`` or ``&amp;``, and is then
+    HTML-entity-decoded (with only ``\}`` and ``\#`` unescaped). So every character that
+    could end it, escape it or start an entity is written as a character reference, which
+    ends in ``;`` and holds no terminator: the answer is read back as it was (but for a
+    backslash before ``#`` or ``}``, which Moodle drops; no answer scanconv writes holds a
+    backslash).
 
-    >>> _cloze_answer('a}b~c#d/e"f')
-    'a\\}b\\~c\\#d\\/e\\"f'
+    >>> _cloze_answer('a}b~c#d&e\\f')
+    'a&#125;b&#126;c&#35;d&#38;e&#92;f'
     """
-    import html
-
-    clean = html.escape(_XML_ILLEGAL.sub("\ufffd", text), quote=False)
-    return _CLOZE_SPECIAL.sub(r"\\\1", clean)
+    clean = UNSAFE.sub("\ufffd", _XML_ILLEGAL.sub("\ufffd", text))
+    return _CLOZE_SPECIAL.sub(lambda m: f"&#{ord(m.group())};", clean)
 
 
 def cloze(gap: Gap) -> str:
