@@ -86,7 +86,8 @@ def _rows(table: GapTable) -> Iterator[tuple[Gap, str, str]]:
 def _stem(q: QuizQuestion) -> str:
     parts = [f"<p>{gift_text(q.wording)}</p>"]
     if q.given:
-        parts.append(f"<p><strong>Given\\:</strong> {gift_text(', '.join(q.given))}</p>")
+        given = gift_text(", ".join(q.given))
+        parts.append(f"<p><strong>{gift_text('Given:')}</strong> {given}</p>")
     return "".join(parts)
 
 
