@@ -694,7 +694,7 @@ VOCABULARY[("sheet",)] = Vocab(
     too_few=((), "Missing argument"),
     too_many=((QUESTIONS, QUESTIONS), "unexpected extra argument"),
     wrong_type=((str(TEACH),), "is a directory"),
-    small={"--format": ("markdown", "latex", "html", "json", "plain")},
+    small={"--format": ("markdown", "latex", "html", "json", "plain", "moodle", "gift")},
     positional=(QUESTIONS, "-", "missing.questions"),
 )
 VOCABULARY[("practice",)] = Vocab(

@@ -69,7 +69,8 @@ _HELP = (
     "stdout or -o FILE, its answer key with --key FILE.\n\n"
     "Every octant, steep and negative slopes, right-to-left end points, ties and centres "
     "away from the origin come up by construction (docs/teaching.md). The --key file's format "
-    "is taken from its extension (.md, .tex, .html, .json, .txt, .pdf).\n\n"
+    "is taken from its extension (.md, .tex, .html, .json, .txt, .pdf; .xml and .gift: "
+    "a quiz for Moodle, docs/lms.md).\n\n"
     "Example: scanconv practice --topic line --count 8 --seed 7 -o worksheet.md --key key.md"
 )
 
@@ -108,7 +109,8 @@ def practice(
         typer.Option(
             "--key",
             metavar="FILE",
-            help="Write the answer key to FILE (.md, .tex, .html, .json, .txt or .pdf).",
+            help="Write the answer key to FILE (.md, .tex, .html, .json, .txt, .pdf, .xml "
+            "or .gift).",
             show_default=False,
         ),
     ] = None,
@@ -242,6 +244,7 @@ def _key_format(path: str) -> str:
         return "pdf"
     if suffix and suffix not in SHEET_EXTENSIONS:
         raise ValueError(
-            f"--key {path}: unknown extension {suffix} (.md, .tex, .json, .html, .txt, .pdf)"
+            f"--key {path}: unknown extension {suffix} "
+            "(.md, .tex, .json, .html, .txt, .pdf, .xml, .gift)"
         )
     return SHEET_EXTENSIONS.get(suffix, "markdown")

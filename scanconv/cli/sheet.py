@@ -119,6 +119,8 @@ class SheetFormat(str, Enum):
     html = "html"
     json = "json"
     plain = "plain"
+    moodle = "moodle"
+    gift = "gift"
 
 
 SheetFormatOpt = Annotated[
@@ -152,13 +154,15 @@ SHEET_EXTENSIONS = {
     ".htm": "html",
     ".json": "json",
     ".txt": "plain",
+    ".xml": "moodle",
+    ".gift": "gift",
 }
 
 
 def sheet_format(fmt: SheetFormat, output: Path | None) -> str:
     """The format of the sheet: ``--format``, else the output file's extension, else
     markdown. A ``--format`` that contradicts a ``.tex``, ``.html`` or ``.json`` file is
-    refused.
+    refused, and so is one that contradicts a quiz file (``.xml``: Moodle XML, ``.gift``).
 
     >>> sheet_format(SheetFormat.auto, Path("key.tex")), sheet_format(SheetFormat.json, None)
     ('latex', 'json')
@@ -166,7 +170,7 @@ def sheet_format(fmt: SheetFormat, output: Path | None) -> str:
     named = SHEET_EXTENSIONS.get(output.suffix.lower()) if output is not None else None
     if fmt is SheetFormat.auto:
         return named or "markdown"
-    if named in ("latex", "html", "json") and named != fmt.value:
+    if named in ("latex", "html", "json", "moodle", "gift") and named != fmt.value:
         raise ValueError(
             f"--output {output} is {named} by its extension, but --format is {fmt.value}"
         )

@@ -2,7 +2,8 @@
 
 :func:`sheet_document` renders a whole sheet in memory (so nothing is written when a question
 turns out bad) in ``markdown``, ``plain``, ``latex`` (a fragment, or a complete document with
-``standalone``; written by :mod:`scanconv.render.sheet_latex`), ``json`` and ``html``. A key is each question's number,
+``standalone``; written by :mod:`scanconv.render.sheet_latex`), ``json`` and ``html``, and as
+a quiz file for an LMS, ``moodle`` (Moodle XML) or ``gift`` (:mod:`scanconv.render.lms`). A key is each question's number,
 marks, wording and command line, then its full worked answer, as the single-answer renderers
 write it. A worksheet is the question in words, the given values and, for each table of the
 answer, an empty table with the answer's columns and number of rows (the ``k`` column, which
@@ -82,7 +83,7 @@ class Answered(NamedTuple):
 
 
 KINDS = ("key", "worksheet")
-FORMATS = ("markdown", "plain", "latex", "json", "html")
+FORMATS = ("markdown", "plain", "latex", "json", "html", "moodle", "gift")
 
 
 def sheet_document(
@@ -100,6 +101,10 @@ def sheet_document(
     """
     if kind not in KINDS:
         raise ValueError(f"unknown sheet kind {kind!r}: key or worksheet")
+    if fmt in ("moodle", "gift"):  # a quiz file for an LMS: scanconv.render.lms
+        from .lms import quiz_document
+
+        return quiz_document(sheet, answered, fmt, notices)
     if fmt == "json":
         return _json(sheet, answered, kind)
     if fmt == "html":
