@@ -178,6 +178,19 @@ def test_bad_input_shows_the_cli_message(page: Site) -> None:
     assert page.page.is_hidden("#answer")
 
 
+def test_the_exam_book_is_browsable(browser: Any, origin: str, page: Site) -> None:
+    assert page.page.get_attribute("text=The exam book, answered", "href") == "exam.html"
+    book = Site(browser, origin, "exam.html", width=390)
+    try:
+        contents = book.page.locator("nav.sc-contents a")
+        assert contents.count() > 30
+        contents.nth(5).click()
+        assert book.page.evaluate("location.hash") == "#q6"
+        assert book.page.locator("#q6").is_visible()
+    finally:
+        book.close()
+
+
 def test_the_shared_link_reopens_the_same_answer(browser: Any, origin: str, page: Site) -> None:
     question = "bezier 0 0 1 2 3 3 4 0 --at 0.5"
     expected = page.ask(question)

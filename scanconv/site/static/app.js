@@ -30,8 +30,12 @@ function received(m) {
   if (m.type === "ready") {
     ready = true;
     timings.ready = performance.now() - started;
+    timings.phases = m.phases; // ms since the worker started: Python up, wheels in, scanconv imported
     setStatus(`Ready (loaded in ${(timings.ready / 1000).toFixed(1)} s).`, "ready");
-    if (asked) worker.postMessage({ id: asked.id, question: asked.question });
+    if (asked) {
+      asked.at = performance.now(); // the answer's own time, not the loading's
+      worker.postMessage({ id: asked.id, question: asked.question });
+    }
   } else if (m.type === "failed") {
     setStatus("Python could not start: " + m.error, "failed");
   } else if (m.type === "answer" && asked && m.id === asked.id) {

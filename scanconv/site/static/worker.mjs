@@ -7,15 +7,21 @@ let page = null;
 const waiting = [];
 
 async function start() {
+  const phases = {};
+  const mark = (name) => (phases[name] = Math.round(performance.now()));
   const site = await (await fetch("site.json")).json();
   const pyodide = await loadPyodide({ indexURL: new URL("./pyodide/", import.meta.url).href });
+  mark("python");
   for (const wheel of site.wheels) {
     const response = await fetch("wheels/" + wheel);
     if (!response.ok) throw new Error(`wheels/${wheel}: HTTP ${response.status}`);
     pyodide.unpackArchive(new Uint8Array(await response.arrayBuffer()), "wheel");
   }
+  mark("wheels");
   page = pyodide.pyimport("scanconv.site.page");
-  postMessage({ type: "ready" });
+  page.warm();
+  mark("scanconv");
+  postMessage({ type: "ready", phases });
   while (waiting.length) answer(waiting.shift());
 }
 
