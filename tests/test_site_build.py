@@ -180,3 +180,17 @@ def test_the_page_words_bad_input_as_the_cli_does() -> None:
         shown = solve_page(question)
         assert not shown["ok"]
         assert cli.err == f"scanconv: error: {shown['error']}\n"
+
+
+def test_a_command_that_needs_numpy_says_so_where_there_is_none(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import sys
+
+    monkeypatch.setitem(sys.modules, "numpy", None)  # as in Pyodide
+    shown = solve_page("sample 'x + y' --size 4x4 --levels 4")
+    assert shown == {
+        "ok": False,
+        "error": "this command needs numpy, which the browser's Python does not have: run it "
+        "with scanconv on a computer",
+    }

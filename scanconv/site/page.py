@@ -83,6 +83,12 @@ def solve_page(question: str) -> dict[str, Any]:
         return {"ok": False, "error": " ".join(str(err).split())}
     except RecursionError:
         return {"ok": False, "error": "input too deeply nested"}
+    except ImportError as err:  # numpy, for sample: Pyodide has none
+        return {
+            "ok": False,
+            "error": f"this command needs {err.name or 'a package'}, which the browser's Python "
+            "does not have: run it with scanconv on a computer",
+        }
     return {"ok": True, "title": solution.title, "html": html, "json": data, "question": question}
 
 

@@ -16,7 +16,16 @@ let nextId = 1;
 function setStatus(text, state) {
   status.textContent = text;
   document.body.dataset.state = state;
+  $("stop").hidden = state !== "working";
 }
+
+// A question that takes long (a huge circle) can be stopped: the worker is ended and a new
+// one started (Python loads again).
+$("stop").addEventListener("click", () => {
+  worker.terminate();
+  asked = null;
+  startWorker();
+});
 
 function startWorker() {
   ready = false;
@@ -35,6 +44,7 @@ function received(m) {
     if (asked) {
       asked.at = performance.now(); // the answer's own time, not the loading's
       worker.postMessage({ id: asked.id, question: asked.question });
+      setStatus("Working…", "working");
     }
   } else if (m.type === "failed") {
     setStatus("Python could not start: " + m.error, "failed");
@@ -82,7 +92,7 @@ function ask(question) {
   asked = { id: nextId++, question, at: performance.now() };
   if (ready) {
     worker.postMessage({ id: asked.id, question });
-    setStatus("Working…", "working");
+    setStatus("Working… (a large question can take a while)", "working");
   }
 }
 
