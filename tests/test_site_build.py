@@ -194,3 +194,17 @@ def test_a_command_that_needs_numpy_says_so_where_there_is_none(
         "error": "this command needs numpy, which the browser's Python does not have: run it "
         "with scanconv on a computer",
     }
+
+
+def test_a_dependency_that_is_not_installed_or_not_pure_python_is_refused(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    with pytest.raises(FetchError, match="is not installed"):
+        build.dependency_wheel("no-such-package-scanconv")
+    with pytest.raises(FetchError, match="compiled code"):
+        build.dependency_wheel("numpy")
+    filename, data = build.dependency_wheel("tabulate")
+    with zipfile.ZipFile(io.BytesIO(data)) as wheel:
+        names = wheel.namelist()
+    assert filename.startswith("tabulate-") and "tabulate/__init__.py" in names
+    assert not any(n.startswith("../") or "__pycache__" in n for n in names)

@@ -201,14 +201,18 @@ def dependency_wheel(name: str) -> tuple[str, bytes]:
         dist = metadata.distribution(name)
     except metadata.PackageNotFoundError:
         raise FetchError(f"{name} is not installed (pip install {name})") from None
+    if dist.files is None:
+        raise FetchError(f"{name}'s installed files are not listed (no RECORD); pip install it")
     files = []
-    for entry in dist.files or ():
+    for entry in dist.files:
         parts = Path(entry).parts
         if not parts or parts[0] == ".." or not _kept(parts):
             continue  # scripts outside site-packages, caches
         if parts[-1].endswith((".so", ".pyd", ".dylib")):
             raise FetchError(f"{name} has compiled code ({entry}); the site needs pure Python")
         files.append((Path(entry).as_posix(), Path(str(dist.locate_file(entry))).read_bytes()))
+    if not any(path.endswith(".py") for path, _ in files):
+        raise FetchError(f"{name} has no Python modules among its installed files")
     return wheel(dist.metadata["Name"], dist.version, files)
 
 
