@@ -237,13 +237,14 @@ class Expr:
     ValueError: expression 'log(t)' is undefined or infinite at t = -1
     """
 
-    __slots__ = ("_root", "rational", "size", "text", "variables")
+    __slots__ = ("_names", "_root", "rational", "size", "text", "variables")
 
     def __init__(self, text: str, variables: tuple[str, ...], root: _Node, size: int = 1) -> None:
         self.text = text
         """The expression as given."""
         self.variables = variables
         """The names it may use, in the caller's order."""
+        self._names = frozenset(variables)
         self.rational = root.rational
         """True if :meth:`exact` can evaluate it (rational operations only)."""
         self._root = root
@@ -269,7 +270,8 @@ class Expr:
         Raises ``ValueError`` if any result is not finite (domain error, division by zero,
         overflow).
         """
-        self._env(values)
+        if values.keys() != self._names:
+            self._env(values)  # raises TypeError naming what is missing or unexpected
         if all(isinstance(v, (int, float, Fraction)) for v in values.values()):
             return self._scalar({k: float(v) for k, v in values.items()})
         import numpy as np
