@@ -207,3 +207,21 @@ def test_the_shared_link_reopens_the_same_answer(browser: Any, origin: str, page
         assert width <= 390
     finally:
         again.close()
+
+
+def test_a_long_question_can_be_stopped_and_the_page_answers_again(
+    browser: Any, origin: str
+) -> None:
+    fresh = Site(browser, origin)
+    try:
+        fresh.page.wait_for_function("document.body.dataset.state === 'ready'", timeout=LOAD)
+        fresh.page.fill("#q", "circle 100000")  # seconds natively, far longer in WebAssembly
+        fresh.page.click("#go")
+        assert fresh.page.evaluate("document.body.dataset.state") == "working"
+        fresh.page.click("#stop")
+        assert fresh.page.evaluate("document.body.dataset.state") == "loading"
+        assert fresh.page.is_hidden("#stop")
+        assert fresh.ask("line 0 0 3 1 --algo dda") == _cli_json("line 0 0 3 1 --algo dda")
+        assert fresh.answers() == 1  # the stopped question never answered
+    finally:
+        fresh.close()

@@ -60,7 +60,7 @@ def _words(question: str) -> list[str]:
 
 def solve_page(question: str) -> dict[str, Any]:
     """The answer to ``question`` as the page shows it: ``{"ok": True, "title", "html",
-    "json", "question"}``, or ``{"ok": False, "error"}`` with scanconv's one-line message.
+    "json", "notes", "question"}`` (``notes``: what a large answer's page leaves out), or ``{"ok": False, "error"}`` with scanconv's one-line message.
 
     >>> r = solve_page("line 0 0 3 1 --algo dda")
     >>> r["ok"], r["title"], json.loads(r["json"])["algorithm"]
@@ -69,7 +69,7 @@ def solve_page(question: str) -> dict[str, Any]:
     "Missing argument 'Y2'."
     """
     from ..questions import parse, shown_with, solve
-    from ..render import Format, render
+    from ..render import Format, Notice, render
 
     if len(question) > MAX_QUESTION:
         return {"ok": False, "error": f"question too long (at most {MAX_QUESTION:,} characters)"}
@@ -77,7 +77,9 @@ def solve_page(question: str) -> dict[str, Any]:
         line = parse(_words(question))
         options = shown_with(line, "the page")
         solution = solve(line)
-        html = "".join(c for c in render(solution, Format.html, options) if isinstance(c, str))
+        chunks = list(render(solution, Format.html, options))
+        html = "".join(c for c in chunks if isinstance(c, str))
+        notes = [c.message for c in chunks if isinstance(c, Notice)]  # what the page leaves out
         data = "".join(c for c in render(solution, Format.json, options) if isinstance(c, str))
     except ValueError as err:
         return {"ok": False, "error": " ".join(str(err).split())}
@@ -89,7 +91,14 @@ def solve_page(question: str) -> dict[str, Any]:
             "error": f"this command needs {err.name or 'a package'}, which the browser's Python "
             "does not have: run it with scanconv on a computer",
         }
-    return {"ok": True, "title": solution.title, "html": html, "json": data, "question": question}
+    return {
+        "ok": True,
+        "title": solution.title,
+        "html": html,
+        "json": data,
+        "notes": notes,
+        "question": question,
+    }
 
 
 def warm() -> None:

@@ -59,6 +59,7 @@ function received(m) {
 function show(m, ms) {
   const frame = $("answer");
   $("error").hidden = m.ok;
+  $("notes").hidden = true;
   $("data").hidden = !m.ok;
   frame.hidden = !m.ok;
   if (!m.ok) {
@@ -66,6 +67,8 @@ function show(m, ms) {
     setStatus("That question has an error.", "error");
     return;
   }
+  $("notes").textContent = m.notes.join("; ");
+  $("notes").hidden = !m.notes.length;
   frame.onload = () => fit(frame);
   frame.srcdoc = m.html;
   $("json").textContent = m.json;
