@@ -19,8 +19,6 @@ from collections.abc import Iterator, Sequence
 from fractions import Fraction
 from typing import Any
 
-import numpy as np
-
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt_short, normalize, parse_number
 from ..core.records import Step
@@ -219,18 +217,18 @@ def basis(knots: Sequence[Number], p: int, n: int, t: Value) -> tuple[Value, ...
     return tuple(basis_levels(knots, p, n, t)[p][: n + 1])
 
 
-def basis_dense(knots: Sequence[Number], p: int, n: int, ts: np.ndarray) -> list[Any]:
-    """The same basis for a float array of ``t`` (dense sampling for the figure).
+def basis_float(knots: Sequence[Number], p: int, n: int, t: float) -> list[float]:
+    """The same basis in float64 at a float ``t`` (dense sampling for the figure): every
+    entry of every row computed, the right end closed.
 
-    >>> [w.tolist() for w in basis_dense((0, 0, 1, 1), 1, 1, np.array([0.0, 0.25, 1.0]))]
-    [[1.0, 0.75, 0.0], [0.0, 0.25, 1.0]]
+    >>> [basis_float((0, 0, 1, 1), 1, 1, t) for t in (0.0, 0.25, 1.0)]
+    [[1.0, 0.0], [0.75, 0.25], [0.0, 1.0]]
     """
     kf = [float(u) for u in knots]
-    s = np.searchsorted(kf, ts, side="right") - 1
-    s = np.where(ts >= kf[n + 1], last_span(kf, n), s)
-    row: list[Any] = [(s == i).astype(float) for i in range(len(kf) - 1)]
+    s = last_span(kf, n) if t >= kf[n + 1] else bisect.bisect_right(kf, t) - 1
+    row: list[Any] = [float(s == i) for i in range(len(kf) - 1)]
     for d in range(1, p + 1):
-        row = raise_degree(kf, d, ts, row)
+        row = raise_degree(kf, d, t, row)
     return row[: n + 1]
 
 

@@ -7,10 +7,9 @@ and ``decision`` ``None`` and ``(t, x(t), y(t))`` in ``extra``.
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Iterator
 from fractions import Fraction
-
-import numpy as np
 
 from ..core.checks import InputError
 from ..core.expr import Expr, compile_expr
@@ -23,25 +22,25 @@ from .curve_limits import (
     check_samples,
     norm_value,
 )
-from .sampling import curve_pixel, sample_ts
+from .sampling import curve_pixel, linspace, sample_ts
 
 CHUNK = 4096
-"""Samples evaluated together (one numpy call) by :func:`parametric`."""
+"""Samples evaluated together by :func:`parametric`."""
 
 
-def evaluate(f: Expr, ts: list[Value], floats: np.ndarray) -> list[Value]:
+def evaluate(f: Expr, ts: list[Value]) -> list[Value]:
     """``f`` at every ``t`` of a chunk: exactly where ``f`` is rational and ``t`` exact, else in
-    float64 with one numpy call for the whole chunk (``floats`` holds the same ``t`` as floats).
+    float64 (scalar arithmetic, no numpy: :meth:`~scanconv.core.expr.Expr.__call__`).
 
     >>> f = compile_expr("t**2", ("t",))
-    >>> evaluate(f, [Fraction(1, 2), 3], np.array([0.5, 3.0]))
+    >>> evaluate(f, [Fraction(1, 2), 3])
     [Fraction(1, 4), 9]
-    >>> evaluate(compile_expr("cos(t)", ("t",)), [0, 0], np.array([0.0, 0.0]))
+    >>> evaluate(compile_expr("cos(t)", ("t",)), [0, 0])
     [1.0, 1.0]
     """
     if f.rational and not isinstance(ts[0], float):
         return [norm_value(f.exact(t=Fraction(t))) for t in ts]
-    return [float(v) for v in f(t=floats)]
+    return [f(t=float(t)) for t in ts]
 
 
 def exact_work(fx: Expr, fy: Expr, samples: int) -> int:
@@ -90,7 +89,7 @@ def float_reason(fx: Expr, fy: Expr, t0: Value, t1: Value, samples: int) -> str:
 def check_float_path(fx: Expr, fy: Expr, t0: Value, t1: Value, samples: int) -> None:
     """Refuse at once a curve whose pixel path is certainly longer than
     :data:`~scanconv.algorithms.curve_limits.MAX_CURVE_PIXELS`, from its samples in float64
-    (one vectorised pass, milliseconds for 10**5 samples).
+    (one pass in float64).
 
     A float sample's pixel is at most one off the exact one in each coordinate, so the exact
     path after ``k`` steps is at least the float path minus ``2k``; only a curve that is too long
@@ -103,23 +102,21 @@ def check_float_path(fx: Expr, fy: Expr, t0: Value, t1: Value, samples: int) -> 
     ...
     scanconv.core.checks.InputError: the curve's pixel path is more than 1,000,000 pixels long (reached by t_2); use a smaller curve or t range
     """
-    ts = np.linspace(float(t0), float(t1), samples + 1)
-    try:
-        xs, ys = (np.broadcast_to(f(t=ts), ts.shape) for f in (fx, fy))
-    except ValueError:
-        return
-    with np.errstate(all="ignore"):
-        px, py = np.floor(xs + 0.5), np.floor(ys + 0.5)
-        steps = np.maximum(np.abs(np.diff(px)), np.abs(np.diff(py)))
-    if not np.isfinite(steps).all():
-        return
-    beyond = np.cumsum(steps) - 2 * np.arange(1, samples + 1) > MAX_CURVE_PIXELS
-    if beyond.any():
-        k = int(np.argmax(beyond)) + 1
-        raise InputError(
-            f"the curve's pixel path is more than {MAX_CURVE_PIXELS:,} pixels long "
-            f"(reached by t_{k}); use a smaller curve or t range"
-        )
+    length = 0
+    previous: tuple[int, int] | None = None
+    for k, t in enumerate(linspace(float(t0), float(t1), samples + 1)):
+        try:
+            here = (math.floor(fx(t=t) + 0.5), math.floor(fy(t=t) + 0.5))
+        except (ValueError, OverflowError):
+            return
+        if previous is not None:
+            length += max(abs(here[0] - previous[0]), abs(here[1] - previous[1]))
+            if length - 2 * k > MAX_CURVE_PIXELS:
+                raise InputError(
+                    f"the curve's pixel path is more than {MAX_CURVE_PIXELS:,} pixels long "
+                    f"(reached by t_{k}); use a smaller curve or t range"
+                )
+        previous = here
 
 
 def parametric(
@@ -159,9 +156,6 @@ def parametric(
     ts = sample_ts(t0, t1, samples)
     k = 0
     while chunk := list(itertools.islice(ts, CHUNK)):  # bounded: CHUNK values of t at a time
-        floats = np.array([float(t) for t in chunk])
-        for t, px, py in zip(
-            chunk, evaluate(fx, chunk, floats), evaluate(fy, chunk, floats), strict=True
-        ):
+        for t, px, py in zip(chunk, evaluate(fx, chunk), evaluate(fy, chunk), strict=True):
             yield Step(k, None, None, curve_pixel(px, py), (t, px, py))
             k += 1

@@ -13,6 +13,16 @@ if TYPE_CHECKING:
     import numpy as np
 
 
+def ramp_values(i: int, n: int, levels: int) -> list[int]:
+    """Row ``i`` of the ramp as a list (:func:`ramp_row` without numpy, for the answer's table).
+
+    >>> ramp_values(1, 8, 8)
+    [1, 2, 3, 4, 5, 6, 7, 6]
+    """
+    period = 2 * (levels - 1)
+    return [s if s <= levels - 1 else period - s for s in ((i + j) % period for j in range(n))]
+
+
 def ramp_row(i: int, n: int, levels: int) -> np.ndarray:
     """Row ``i`` of the ramp: ``i + j`` folded back at ``L - 1``, for ``j = 0 .. n - 1``.
 

@@ -14,11 +14,9 @@ curve is 8-connected; a pixel reached twice is plotted once (:func:`curve_pixels
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from fractions import Fraction
 from typing import Any
-
-import numpy as np
 
 from ..core.checks import InputError
 from ..core.numeric import COORD_LIMIT, fmt, normalize, round_half_up
@@ -117,7 +115,7 @@ def curve_pixels(*runs: Iterable[Pixel]) -> Iterator[Pixel]:
 
 
 def combine(weights: Sequence[Any], points: Sequence[Point]) -> tuple[Any, Any]:
-    """``sum w_i P_i`` for exact values, floats or numpy arrays of weights.
+    """``sum w_i P_i`` for exact values or floats of weights.
 
     >>> combine((Fraction(1, 4), Fraction(3, 4)), [(0, 0), (4, 2)])
     (3, Fraction(3, 2))
@@ -167,7 +165,27 @@ def path_bbox(steps: Iterable[Step], marks: Iterable[Pixel]) -> tuple[int, int, 
     return bbox([(x0, y0), (x1, y1), *marks])
 
 
-def dense_ts(t0: Value, t1: Value, samples: int) -> np.ndarray:
+def linspace(start: float, stop: float, count: int) -> list[float]:
+    """``count`` equally spaced floats from ``start`` to ``stop``, both included, as numpy's
+    ``linspace`` computes them (``start + k * step``, the last one ``stop``), without numpy.
+
+    >>> linspace(0.0, 1.0, 5)
+    [0.0, 0.25, 0.5, 0.75, 1.0]
+    """
+    div = count - 1
+    if div <= 0:
+        return [start][:count]
+    delta = stop - start
+    step = delta / div
+    if step == 0:  # numpy's rule for a denormal step
+        out = [k / div * delta + start for k in range(count)]
+    else:
+        out = [k * step + start for k in range(count)]
+    out[-1] = stop
+    return out
+
+
+def dense_ts(t0: Value, t1: Value, samples: int) -> list[float]:
     """Float values of t for the ideal curve under the pixels: 8 per sample step, between 129
     and :data:`DENSE_POINTS` of them.
 
@@ -175,16 +193,33 @@ def dense_ts(t0: Value, t1: Value, samples: int) -> np.ndarray:
     (129, 801, 2049)
     """
     count = min(max(8 * samples + 1, 129), DENSE_POINTS)
-    return np.linspace(float(t0), float(t1), count)
+    return linspace(float(t0), float(t1), count)
 
 
-def polyline(xs: np.ndarray, ys: np.ndarray) -> list[tuple[float, float]]:
-    """Coordinate arrays as a list of float points.
+def polyline(xs: Iterable[Any], ys: Iterable[Any]) -> list[tuple[float, float]]:
+    """Coordinate sequences as a list of float points.
 
-    >>> polyline(np.array([0.0, 1.5]), np.array([2.0, 3.0]))
+    >>> polyline([0.0, 1.5], [2.0, 3.0])
     [(0.0, 2.0), (1.5, 3.0)]
     """
     return [(float(x), float(y)) for x, y in zip(xs, ys, strict=True)]
+
+
+def dense_curve(
+    weights: Callable[[float], Sequence[Any]], points: Sequence[Point], ts: Iterable[float]
+) -> list[tuple[float, float]]:
+    """The float points ``sum_i w_i(t) P_i`` of a curve at every ``t`` of ``ts`` (the ideal
+    curve drawn under the pixels), from its weight functions.
+
+    >>> dense_curve(lambda t: (1 - t, t), [(0, 0), (4, 2)], [0.0, 0.5, 1.0])
+    [(0.0, 0.0), (2.0, 1.0), (4.0, 2.0)]
+    """
+    fpts = float_points(points)
+    out = []
+    for t in ts:
+        x, y = combine(weights(t), fpts)
+        out.append((float(x), float(y)))
+    return out
 
 
 def float_points(points: Iterable[Point]) -> list[tuple[float, float]]:

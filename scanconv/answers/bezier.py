@@ -27,9 +27,9 @@ from ..algorithms.sampling import (
     combine,
     curve_pixel,
     curve_pixels,
+    dense_curve,
     dense_ts,
     float_points,
-    polyline,
 )
 from ..core.records import Column, Quantity, Solution, Step, Table, heading, worked
 from ..core.working import tex_to_unicode
@@ -99,8 +99,7 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
 
     check_row(steps(), "Bezier curve")
 
-    ts = dense_ts(0, 1, samples)
-    dense = combine(bernstein(n, ts), float_points(pts))
+    dense = dense_curve(lambda t: bernstein(n, t), pts, dense_ts(0, 1, samples))
     derived = [
         *_bezier_derived(pts),
         step_quantity(0, 1, samples, "0", "1"),
@@ -130,7 +129,7 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
             "points (marked o in the grid).",
         ),
         marks=marks,
-        geometry={"polyline": polyline(*dense), "control": float_points(pts)},
+        geometry={"polyline": dense, "control": float_points(pts)},
     )
 
 

@@ -8,7 +8,7 @@ from fractions import Fraction
 from typing import Any, NamedTuple
 
 from ..algorithms.bspline import (
-    basis_dense,
+    basis_float,
     basis_levels,
     bspline,
     bspline_samples,
@@ -33,9 +33,9 @@ from ..algorithms.sampling import (
     combine,
     curve_pixel,
     curve_pixels,
+    dense_curve,
     dense_ts,
     float_points,
-    polyline,
 )
 from ..core.checks import InputError
 from ..core.numeric import Number
@@ -189,8 +189,7 @@ def bspline_solution(
             notes=_BSPLINE_NOTES,
         )
     marks = control_marks(pts)
-    ts = dense_ts(t0, t1, samples)
-    dense = combine(basis_dense(u, degree, n, ts), float_points(pts))
+    dense = dense_curve(lambda t: basis_float(u, degree, n, t), pts, dense_ts(t0, t1, samples))
     return Solution(
         primitive="curve",
         algorithm="bspline",
@@ -212,7 +211,7 @@ def bspline_solution(
             "first and last of them, an unclamped one in general through none.",
         ),
         marks=marks,
-        geometry={"polyline": polyline(*dense), "control": float_points(pts)},
+        geometry={"polyline": dense, "control": float_points(pts)},
     )
 
 

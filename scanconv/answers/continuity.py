@@ -6,8 +6,6 @@ from __future__ import annotations
 from collections.abc import Iterator, Sequence
 from typing import Any
 
-import numpy as np
-
 from ..algorithms.bezier import bernstein, bezier
 from ..algorithms.continuity import continuity_level, end_derivatives, same_direction
 from ..algorithms.curve_limits import (
@@ -19,7 +17,7 @@ from ..algorithms.curve_limits import (
     check_samples,
     check_weights,
 )
-from ..algorithms.sampling import bbox, combine, curve_pixels, dense_ts, float_points, polyline
+from ..algorithms.sampling import bbox, curve_pixels, dense_curve, dense_ts, float_points
 from ..core.records import Pixel, Quantity, Solution, Table, heading, worked
 from ._curve import JOIN_NOTE, control_marks, given_points, point_text
 
@@ -118,9 +116,10 @@ def _joined_polyline(
 ) -> list[tuple[float, float]]:
     """Both segments, sampled densely, as one polyline (for the figure)."""
     ts = dense_ts(0, 1, samples)
-    xa, ya = combine(bernstein(len(a_pts) - 1, ts), float_points(a_pts))
-    xb, yb = combine(bernstein(len(b_pts) - 1, ts), float_points(b_pts))
-    return polyline(np.concatenate([xa, xb]), np.concatenate([ya, yb]))
+    return [
+        *dense_curve(lambda t: bernstein(len(a_pts) - 1, t), a_pts, ts),
+        *dense_curve(lambda t: bernstein(len(b_pts) - 1, t), b_pts, ts),
+    ]
 
 
 def continuity_solution(

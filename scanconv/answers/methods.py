@@ -444,6 +444,7 @@ DOCUMENTS = {
     "check": "marks a student's table against a method's answer",
     "theory": "the notes' written answers (answers/topics: one Topic record each)",
     "exam": "the notes' exam as a sheet",
+    "site": "a static site whose page answers any question with the methods' records",
 }
 """The commands that have no method of their own: they assemble other answers."""
 

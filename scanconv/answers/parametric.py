@@ -322,7 +322,7 @@ def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples
     bbox = path_bbox(steps(), marks)
     try:
         ts = dense_ts(t0, t1, samples)
-        dense = polyline(fx(t=ts), fy(t=ts))
+        dense = polyline([fx(t=t) for t in ts], [fy(t=t) for t in ts])
     except ValueError:  # a singularity between the samples: draw the samples only
         dense = [(float(s.extra[1]), float(s.extra[2])) for s in steps()]
     derived = [

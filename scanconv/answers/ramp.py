@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ..algorithms.ramp import ramp_row, ramp_size
+from ..algorithms.ramp import ramp_size, ramp_values
 from ..algorithms.storage import bits_per_pixel
 from ..core.numeric import Number
 from ..core.records import ShadedMatrix, Solution, Table, worked
@@ -31,7 +31,7 @@ def ramp_solution(m: Number, n: Number, levels: Number) -> Solution:
     def rows() -> Iterator[tuple[int, ...]]:
         # ramp_solution(8, 8, 8) -> (0, 0 1 2 3 4 5 6 7), (1, 1 2 3 4 5 6 7 6), ...
         for i in range(M):
-            yield (i, *ramp_row(i, N, L).tolist())
+            yield (i, *ramp_values(i, N, L))
 
     bits_q = worked(
         "k",

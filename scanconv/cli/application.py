@@ -49,7 +49,7 @@ PANELS = (
             "antialias",
         ),
     ),
-    ("Theory and exam", ("color", "theory", "exam")),
+    ("Theory and exam", ("color", "theory", "exam", "site")),
 )
 
 EXAMPLES = """\b
@@ -168,6 +168,7 @@ TOPIC_MODULES: tuple[str, ...] = (
     "sheet",
     "practice",
     "check",
+    "site",
 )
 
 #: Which module defines each top-level command or group.
@@ -205,6 +206,7 @@ TOPIC_OF = {
     "color": "color",
     "theory": "theory",
     "exam": "exam",
+    "site": "site",
 }
 
 

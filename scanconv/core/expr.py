@@ -16,8 +16,9 @@ Limits (each refusal is a :class:`ValueError` with a one-line message naming the
 * a constant exponent must satisfy ``|exponent| <= MAX_EXPONENT`` (so ``9**9**9`` is refused at
   once) and a constant sub-expression must be a finite float.
 
-Evaluation (:meth:`Expr.__call__`) is in float64 through numpy ufuncs, so variables may be floats
-or numpy arrays (one value per sample or per pixel). **Domain errors are errors**: a result that
+Evaluation (:meth:`Expr.__call__`) is in float64: scalar values through :mod:`math` (no numpy
+needed: the exam answers run where numpy is not installed, in the browser), numpy arrays (one
+value per sample or per pixel) through numpy ufuncs, imported then. **Domain errors are errors**: a result that
 is not finite (``log(-1)``, ``sqrt(-1)``, ``1/0``, an overflowing ``**``) raises ``ValueError``
 naming the expression and the first variable values where it happens; nothing returns NaN.
 
@@ -39,11 +40,10 @@ from __future__ import annotations
 
 import ast
 import math
+import operator
 from collections.abc import Callable
 from fractions import Fraction
 from typing import Any
-
-import numpy as np
 
 MAX_LENGTH = 500
 """Longest accepted expression, in characters."""
@@ -61,26 +61,78 @@ MAX_BITS = 4096
 """Largest numerator or denominator (in bits) of an exact intermediate value."""
 
 FUNCTIONS: dict[str, Callable[[Any], Any]] = {
-    "sin": np.sin,
-    "cos": np.cos,
-    "tan": np.tan,
-    "sqrt": np.sqrt,
-    "exp": np.exp,
-    "log": np.log,
-    "abs": np.abs,
+    "sin": math.sin,
+    "cos": math.cos,
+    "tan": math.tan,
+    "sqrt": math.sqrt,
+    "exp": math.exp,
+    "log": math.log,
+    "abs": abs,
 }
-"""The callable functions, by name (numpy ufuncs, so arrays work)."""
+"""The callable functions, by name (for a scalar; :func:`_array_ops` holds their numpy ufuncs)."""
 
 CONSTANTS: dict[str, float] = {"pi": math.pi, "e": math.e}
 """The named constants."""
 
-_BINOPS: dict[type, tuple[str, Callable[[Any, Any], Any]]] = {
-    ast.Add: ("+", np.add),
-    ast.Sub: ("-", np.subtract),
-    ast.Mult: ("*", np.multiply),
-    ast.Div: ("/", np.divide),
-    ast.Pow: ("**", np.power),
+_BINOPS: dict[type, str] = {
+    ast.Add: "+",
+    ast.Sub: "-",
+    ast.Mult: "*",
+    ast.Div: "/",
+    ast.Pow: "**",
 }
+
+Ops = dict[str, Callable[..., Any]]
+"""The operations a compiled expression calls, by name: the functions, the binary operators
+and ``neg``; one table for scalars (:data:`_SCALAR_OPS`), one for arrays (:func:`_array_ops`)."""
+
+
+def _power(x: float, y: float) -> float:
+    """``x ** y`` in float64 as numpy's ``power`` gives it for a scalar exponent: ``x * x``
+    for 2, ``sqrt(x)`` for 1/2, ``1 / x`` for -1 (each correctly rounded, where ``pow`` may be
+    half an ulp off), ``pow`` otherwise; so a formula has the same value with numpy or without.
+
+    >>> _power(3.0, 2.0), _power(4.0, 0.5), _power(4.0, -1.0), _power(2.0, 10.0)
+    (9.0, 2.0, 0.25, 1024.0)
+    """
+    if y == 2.0:
+        return x * x
+    if y == 0.5:
+        return math.sqrt(x)
+    if y == -1.0:
+        return 1.0 / x
+    return math.pow(x, y)
+
+
+_SCALAR_OPS: Ops = {
+    **FUNCTIONS,
+    "neg": operator.neg,
+    "+": operator.add,
+    "-": operator.sub,
+    "*": operator.mul,
+    "/": operator.truediv,
+    "**": _power,
+}
+"""Scalar float64 arithmetic: :mod:`math` raises where numpy would give NaN or infinity
+(``log(-1)``, ``1/0``, ``exp(1000)``); both are the same domain error."""
+
+_SCALAR_ERRORS = (ValueError, ZeroDivisionError, OverflowError)
+
+_ARRAY_OPS: Ops = {}
+
+
+def _array_ops() -> Ops:
+    """The numpy ufuncs of every operation, imported on the first array evaluation."""
+    if not _ARRAY_OPS:
+        import numpy as np
+
+        _ARRAY_OPS.update(
+            sin=np.sin, cos=np.cos, tan=np.tan, sqrt=np.sqrt, exp=np.exp, log=np.log, abs=np.abs
+        )
+        _ARRAY_OPS.update({"neg": np.negative, "+": np.add, "-": np.subtract, "*": np.multiply})
+        _ARRAY_OPS.update({"/": np.divide, "**": np.power})
+    return _ARRAY_OPS
+
 
 _EXACT_BINOPS: dict[str, Callable[[Fraction, Fraction], Fraction]] = {
     "+": lambda a, b: a + b,
@@ -137,7 +189,8 @@ def _shown(text: str) -> str:
 class _Node:
     """One operation of a compiled expression.
 
-    ``value(env)`` evaluates in float64 (numpy); ``exact(env)`` over Fractions (only called when
+    ``value(env, ops)`` evaluates in float64 with ``ops`` (:data:`Ops`: math for a scalar, numpy
+    ufuncs for arrays); ``exact(env)`` over Fractions (only called when
     :attr:`rational` is true). ``const`` is the float value of a constant sub-expression.
     """
 
@@ -145,7 +198,7 @@ class _Node:
 
     def __init__(
         self,
-        value: Callable[[dict[str, Any]], Any],
+        value: Callable[[dict[str, Any], Ops], Any],
         exact: Callable[[dict[str, Fraction]], Fraction] | None,
         const: float | None = None,
     ) -> None:
@@ -184,13 +237,14 @@ class Expr:
     ValueError: expression 'log(t)' is undefined or infinite at t = -1
     """
 
-    __slots__ = ("_root", "rational", "size", "text", "variables")
+    __slots__ = ("_names", "_root", "rational", "size", "text", "variables")
 
     def __init__(self, text: str, variables: tuple[str, ...], root: _Node, size: int = 1) -> None:
         self.text = text
         """The expression as given."""
         self.variables = variables
         """The names it may use, in the caller's order."""
+        self._names = frozenset(variables)
         self.rational = root.rational
         """True if :meth:`exact` can evaluate it (rational operations only)."""
         self._root = root
@@ -216,10 +270,15 @@ class Expr:
         Raises ``ValueError`` if any result is not finite (domain error, division by zero,
         overflow).
         """
-        self._env(values)
+        if values.keys() != self._names:
+            self._env(values)  # raises TypeError naming what is missing or unexpected
+        if all(isinstance(v, (int, float, Fraction)) for v in values.values()):
+            return self._scalar({k: float(v) for k, v in values.items()})
+        import numpy as np
+
         env = {k: np.asarray(v, dtype=np.float64) for k, v in values.items()}
         with np.errstate(all="ignore"):
-            out = np.asarray(self._root.value(env), dtype=np.float64)
+            out = np.asarray(self._root.value(env, _array_ops()), dtype=np.float64)
         if env:
             shape = np.broadcast_shapes(*(a.shape for a in env.values()))
             if out.shape != shape:
@@ -236,6 +295,20 @@ class Expr:
             )
         if out.shape == ():
             return float(out)
+        return out
+
+    def _scalar(self, env: dict[str, float]) -> float:
+        """Evaluate at scalar values through :mod:`math` (no numpy)."""
+        try:
+            out = float(self._root.value(env, _SCALAR_OPS))
+        except _SCALAR_ERRORS:
+            out = math.nan
+        if not math.isfinite(out):
+            at = ", ".join(f"{k} = {v:.6g}" for k, v in env.items())
+            raise ValueError(
+                f"expression {_shown(self.text)} is undefined or infinite"
+                + (f" at {at}" if at else "")
+            )
         return out
 
     def exact(self, **values: int | Fraction) -> Fraction:
@@ -352,14 +425,14 @@ class _Compiler:
         if not math.isfinite(f):
             raise self.refuse("number too large")
         q = Fraction(value) if isinstance(value, int) else Fraction(repr(value))
-        return _Node(lambda env: f, lambda env: q, const=f)
+        return _Node(lambda env, ops: f, lambda env: q, const=f)
 
     def name(self, ident: str) -> _Node:
         if ident in self.variables:
-            return _Node(lambda env: env[ident], lambda env: env[ident])
+            return _Node(lambda env, ops: env[ident], lambda env: env[ident])
         if ident in CONSTANTS:
             c = CONSTANTS[ident]
-            return _Node(lambda env: c, None, const=c)
+            return _Node(lambda env, ops: c, None, const=c)
         if ident in FUNCTIONS:
             raise self.refuse(f"function {ident!r} must be called, as in {ident}(t)")
         allowed = ", ".join((*self.variables, *CONSTANTS))
@@ -373,7 +446,7 @@ class _Compiler:
             return child
         cv, ce = child.value, child.exact
         node = _Node(
-            lambda env: np.negative(cv(env)),
+            lambda env, ops: ops["neg"](cv(env, ops)),
             None if ce is None else (lambda env: -ce(env)),
         )
         return self.fold(node, child)
@@ -382,7 +455,7 @@ class _Compiler:
         if type(n.op) not in _BINOPS:
             hint = " (use ** for powers)" if isinstance(n.op, ast.BitXor) else ""
             raise self.refuse(f"operator {_REFUSED_OPS.get(type(n.op), '?')} is not allowed{hint}")
-        symbol, ufunc = _BINOPS[type(n.op)]
+        symbol = _BINOPS[type(n.op)]
         left, right = self.node(n.left), self.node(n.right)
         lv, rv, le, re_ = left.value, right.value, left.exact, right.exact
         exact: Callable[[dict[str, Fraction]], Fraction] | None = None
@@ -407,7 +480,7 @@ class _Compiler:
             def exact(env: dict[str, Fraction]) -> Fraction:
                 return _bounded(op(le(env), re_(env)))
 
-        node = _Node(lambda env: ufunc(lv(env), rv(env)), exact)
+        node = _Node(lambda env, ops: ops[symbol](lv(env, ops), rv(env, ops)), exact)
         return self.fold(node, left, right)
 
     def call(self, n: ast.Call) -> _Node:
@@ -423,21 +496,23 @@ class _Compiler:
         if n.keywords or len(n.args) != 1 or isinstance(n.args[0], ast.Starred):
             raise self.refuse(f"{fname}() takes exactly one argument")
         arg = self.node(n.args[0])
-        ufunc, av, ae = FUNCTIONS[fname], arg.value, arg.exact
+        av, ae = arg.value, arg.exact
         exact = None
         if fname == "abs" and ae is not None:
 
             def exact(env: dict[str, Fraction]) -> Fraction:
                 return abs(ae(env))
 
-        return self.fold(_Node(lambda env: ufunc(av(env)), exact), arg)
+        return self.fold(_Node(lambda env, ops: ops[fname](av(env, ops)), exact), arg)
 
     def fold(self, node: _Node, *children: _Node) -> _Node:
         """Evaluate a constant sub-expression now; refuse it if it is not a finite float."""
         if any(c.const is None for c in children):
             return node
-        with np.errstate(all="ignore"):
-            value = float(node.value({}))
+        try:
+            value = float(node.value({}, _SCALAR_OPS))
+        except _SCALAR_ERRORS:
+            value = math.nan
         if not math.isfinite(value):
             raise self.refuse("a constant part is undefined or too large")
         q: Fraction | None = None
@@ -447,7 +522,7 @@ class _Compiler:
             except (ValueError, ZeroDivisionError):
                 q = None
         exact = None if q is None else (lambda env, q=q: q)
-        return _Node(lambda env: value, exact, const=value)
+        return _Node(lambda env, ops: value, exact, const=value)
 
 
 def _fmt_const(v: float) -> str:

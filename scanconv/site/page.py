@@ -1,0 +1,120 @@
+"""What the site runs in the browser: one question in, the worked answer out.
+
+:func:`answer` takes a question as scanconv's own arguments (``line 2 2 10 6 --algo dda``,
+read by the library's parser, :mod:`scanconv.questions`, the same one ``sheet`` uses) and
+returns a JSON object: the answer's title, its HTML step-through page (``--format html``) and
+its data (``--format json``), or the one-line error scanconv gives for that question. Nothing
+here needs numpy, typer or rich (Pyodide has none of them).
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+EXAMPLES = (
+    "line 2 2 10 6 --algo bresenham",
+    "line 2 2 10 6 --algo dda",
+    "circle 8 --method midpoint",
+    "ellipse 8 6",
+    "bezier 0 0 1 2 3 3 4 0",
+    "bspline 0 0 1 2 3 3 4 0 5 2 --degree 2",
+    "clip line 7 9 11 4 --window 4 4 10 8",
+    "fill flood 2 0 4 2 2 4 0 2 --seed 2 2",
+    "polygon 1 1 9 1 9 7 5 3 1 7",
+    "compare line 2 2 8 5",
+    "theory bresenham-line",
+)
+"""Questions the page offers to try, one click each."""
+
+_DROPPED = ("--format", "-f", "--output", "-o", "--svg", "--png")
+
+MAX_QUESTION = 10_000
+"""Longest question accepted, in characters."""
+
+
+def _words(question: str) -> list[str]:
+    """The question's words, without a leading ``scanconv`` (a line copied from the cheat
+    sheet) and without the options that choose a format or a file (``--format``, ``-o``,
+    ``--svg``, ``--png``) and their values: the page shows the answer in its own formats.
+
+    >>> _words("scanconv line 2 2 10 6 -f json --svg=a.svg -o a.md")
+    ['line', '2', '2', '10', '6']
+    """
+    from ..questions.parser import split
+
+    words = split(question)
+    if words[:1] == ["scanconv"]:
+        words = words[1:]
+    out: list[str] = []
+    skip = False
+    for w in words:
+        if skip:
+            skip = False
+        elif w in _DROPPED:
+            skip = True
+        elif not w.startswith(tuple(f"{o}=" for o in _DROPPED)):
+            out.append(w)
+    return out
+
+
+def solve_page(question: str) -> dict[str, Any]:
+    """The answer to ``question`` as the page shows it: ``{"ok": True, "title", "html",
+    "json", "notes", "question"}`` (``notes``: what a large answer's page leaves out), or ``{"ok": False, "error"}`` with scanconv's one-line message.
+
+    >>> r = solve_page("line 0 0 3 1 --algo dda")
+    >>> r["ok"], r["title"], json.loads(r["json"])["algorithm"]
+    (True, 'Simple DDA line algorithm: (0, 0) to (3, 1)', 'dda')
+    >>> solve_page("line 2 2 10")["error"]
+    "Missing argument 'Y2'."
+    """
+    from ..questions import parse, shown_with, solve
+    from ..render import Format, Notice, render
+
+    if len(question) > MAX_QUESTION:
+        return {"ok": False, "error": f"question too long (at most {MAX_QUESTION:,} characters)"}
+    try:
+        line = parse(_words(question))
+        options = shown_with(line, "the page")
+        solution = solve(line)
+        chunks = list(render(solution, Format.html, options))
+        html = "".join(c for c in chunks if isinstance(c, str))
+        notes = [c.message for c in chunks if isinstance(c, Notice)]  # what the page leaves out
+        data = "".join(c for c in render(solution, Format.json, options) if isinstance(c, str))
+    except ValueError as err:
+        return {"ok": False, "error": " ".join(str(err).split())}
+    except RecursionError:
+        return {"ok": False, "error": "input too deeply nested"}
+    except ImportError as err:  # numpy, for sample: Pyodide has none
+        return {
+            "ok": False,
+            "error": f"this command needs {err.name or 'a package'}, which the browser's Python "
+            "does not have: run it with scanconv on a computer",
+        }
+    return {
+        "ok": True,
+        "title": solution.title,
+        "html": html,
+        "json": data,
+        "notes": notes,
+        "question": question,
+    }
+
+
+def warm() -> None:
+    """Answer a small question once, so that what every answer imports (the question
+    language, the HTML and JSON renderers, the MathML of the working) is loaded while the page
+    says it is loading, and the first answer takes what later ones do.
+
+    >>> warm()
+    """
+    solve_page(EXAMPLES[0])
+
+
+def answer(question: str) -> str:
+    """:func:`solve_page` as JSON text (what the page's worker hands to JavaScript).
+
+    >>> json.loads(answer("circle 0.5"))
+    {'ok': False, 'error': 'radius must be an integer, got 0.500'}
+    """
+    return json.dumps(solve_page(question))

@@ -1,0 +1,165 @@
+// scanconv's site: the page. Sends the question to the Python worker, shows the answer (the
+// step-through page in a frame, its data as JSON), keeps the question in the URL (#q=...)
+// so that the link reopens it, and turns a filled form into a question.
+const $ = (id) => document.getElementById(id);
+const box = $("q");
+const status = $("status");
+const started = performance.now();
+const timings = { ready: null, answers: [] };
+window.scanconvTimings = timings;
+
+let worker = null;
+let ready = false;
+let asked = null; // { id, question, at }
+let nextId = 1;
+
+function setStatus(text, state) {
+  status.textContent = text;
+  document.body.dataset.state = state;
+  $("stop").hidden = state !== "working";
+}
+
+// A question that takes long (a huge circle) can be stopped: the worker is ended and a new
+// one started (Python loads again).
+$("stop").addEventListener("click", () => {
+  worker.terminate();
+  asked = null;
+  startWorker();
+});
+
+function startWorker() {
+  ready = false;
+  worker = new Worker("worker.mjs", { type: "module" });
+  worker.onmessage = (event) => received(event.data);
+  worker.onerror = (event) => setStatus("Python could not start: " + event.message, "failed");
+  setStatus("Loading Python and scanconv (the first time takes a few seconds)…", "loading");
+}
+
+function received(m) {
+  if (m.type === "ready") {
+    ready = true;
+    timings.ready = performance.now() - started;
+    timings.phases = m.phases; // ms since the worker started: Python up, wheels in, scanconv imported
+    setStatus(`Ready (loaded in ${(timings.ready / 1000).toFixed(1)} s).`, "ready");
+    if (asked) {
+      asked.at = performance.now(); // the answer's own time, not the loading's
+      worker.postMessage({ id: asked.id, question: asked.question });
+      setStatus("Working…", "working");
+    }
+  } else if (m.type === "failed") {
+    setStatus("Python could not start: " + m.error, "failed");
+  } else if (m.type === "answer" && asked && m.id === asked.id) {
+    const ms = performance.now() - asked.at;
+    timings.answers.push({ question: asked.question, ms, sinceLoad: performance.now() - started });
+    asked = null;
+    show(m, ms);
+  }
+}
+
+function show(m, ms) {
+  const frame = $("answer");
+  $("error").hidden = m.ok;
+  $("notes").hidden = true;
+  $("data").hidden = !m.ok;
+  frame.hidden = !m.ok;
+  if (!m.ok) {
+    $("error").textContent = m.error;
+    setStatus("That question has an error.", "error");
+    return;
+  }
+  $("notes").textContent = m.notes.join("; ");
+  $("notes").hidden = !m.notes.length;
+  frame.onload = () => fit(frame);
+  frame.srcdoc = m.html;
+  $("json").textContent = m.json;
+  setStatus(`${m.title} (answered in ${Math.round(ms)} ms)`, "answered");
+}
+
+function fit(frame) {
+  const doc = frame.contentDocument;
+  if (!doc) return;
+  frame.style.height = doc.documentElement.scrollHeight + 24 + "px";
+  new ResizeObserver(() => {
+    frame.style.height = doc.documentElement.scrollHeight + 24 + "px";
+  }).observe(doc.body);
+}
+
+function ask(question) {
+  question = question.trim();
+  if (!question) return;
+  box.value = question;
+  const url = "#q=" + encodeURIComponent(question);
+  if (location.hash !== url) history.replaceState(null, "", url);
+  $("share").href = url;
+  $("share-row").hidden = false;
+  asked = { id: nextId++, question, at: performance.now() };
+  if (ready) {
+    worker.postMessage({ id: asked.id, question });
+    setStatus("Working… (a large question can take a while)", "working");
+  }
+}
+
+function fromHash() {
+  const m = location.hash.match(/^#q=(.*)$/);
+  if (m) ask(decodeURIComponent(m[1]));
+}
+
+// --- the forms ------------------------------------------------------------------------------
+const SAFE = /^[A-Za-z0-9_.,:\/+=@%^-]+$/;
+const quote = (w) => (SAFE.test(w) ? w : "'" + w.replace(/'/g, `'"'"'`) + "'");
+
+function formQuestion(fieldset) {
+  const words = fieldset.dataset.command.split(" ");
+  for (const field of fieldset.querySelectorAll("input, select")) {
+    const flag = field.dataset.flag;
+    if (field.type === "checkbox") {
+      const given = field.checked !== field.hasAttribute("data-default");
+      if (given) words.push(field.checked ? flag : field.dataset.off);
+      continue;
+    }
+    const value = field.value.trim();
+    if (!value) continue;
+    const parts = "split" in field.dataset ? value.split(/\s+/) : [value];
+    if ("repeat" in field.dataset) {
+      for (const p of parts) words.push(flag, p);
+    } else {
+      if (flag) words.push(flag);
+      words.push(...parts);
+    }
+  }
+  return words.map(quote).join(" ");
+}
+
+function chooseForm() {
+  const wanted = $("sc-command").value;
+  for (const f of document.querySelectorAll(".sc-form")) f.hidden = f.dataset.command !== wanted;
+}
+
+$("sc-command").addEventListener("change", chooseForm);
+$("form-go").addEventListener("click", () => {
+  const fieldset = document.querySelector(".sc-form:not([hidden])");
+  if (fieldset) ask(formQuestion(fieldset));
+});
+$("ask").addEventListener("submit", (event) => {
+  event.preventDefault();
+  ask(box.value);
+});
+for (const a of document.querySelectorAll("a.sc-example")) {
+  a.addEventListener("click", (event) => {
+    event.preventDefault();
+    ask(a.textContent);
+  });
+}
+$("copy").addEventListener("click", async () => {
+  try {
+    await navigator.clipboard.writeText(location.href);
+    $("copy").textContent = "Copied";
+  } catch {
+    $("copy").textContent = "Copy the address bar";
+  }
+});
+window.addEventListener("hashchange", fromHash);
+
+chooseForm();
+startWorker();
+fromHash();

@@ -1,0 +1,40 @@
+// scanconv's site: the Python worker. Loads the Pyodide runtime and the wheels from this
+// site's own folder (nothing from anywhere else), then answers each question it is sent with
+// scanconv.site.page.answer (scanconv's own question parser and renderers).
+import { loadPyodide } from "./pyodide/pyodide.mjs";
+
+let page = null;
+const waiting = [];
+
+async function start() {
+  const phases = {};
+  const mark = (name) => (phases[name] = Math.round(performance.now()));
+  const site = await (await fetch("site.json")).json();
+  const pyodide = await loadPyodide({ indexURL: new URL("./pyodide/", import.meta.url).href });
+  mark("python");
+  for (const wheel of site.wheels) {
+    const response = await fetch("wheels/" + wheel);
+    if (!response.ok) throw new Error(`wheels/${wheel}: HTTP ${response.status}`);
+    pyodide.unpackArchive(new Uint8Array(await response.arrayBuffer()), "wheel");
+  }
+  mark("wheels");
+  page = pyodide.pyimport("scanconv.site.page");
+  page.warm();
+  mark("scanconv");
+  postMessage({ type: "ready", phases });
+  while (waiting.length) answer(waiting.shift());
+}
+
+function answer(message) {
+  let result;
+  try {
+    result = JSON.parse(page.answer(message.question));
+  } catch (err) {
+    result = { ok: false, error: "scanconv failed: " + String(err).split("\n").pop() };
+  }
+  postMessage({ type: "answer", id: message.id, ...result });
+}
+
+onmessage = (event) => (page ? answer(event.data) : waiting.push(event.data));
+
+start().catch((err) => postMessage({ type: "failed", error: String(err) }));

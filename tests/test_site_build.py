@@ -1,0 +1,210 @@
+"""``scanconv site build DIR`` without the network: its bad input (exit 2), its failures
+(exit 1), the runtime's cache and checksum, the wheels, and all-or-nothing writing. The real
+build and the site in a browser: tests/test_site_browser.py."""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import json
+import tarfile
+import zipfile
+from pathlib import Path
+
+import pytest
+
+from scanconv.site import build
+from scanconv.site.build import FetchError, build_site, runtime_archive
+from scanconv.site.page import solve_page
+
+from .helpers import assert_refused, run
+
+
+def _fake_runtime() -> bytes:
+    """An npm-style tarball holding the runtime's files (their bytes are their names)."""
+    out = io.BytesIO()
+    with tarfile.open(fileobj=out, mode="w:gz") as tar:
+        for name in build.RUNTIME_FILES:
+            data = name.encode()
+            info = tarfile.TarInfo(f"package/{name}")
+            info.size = len(data)
+            tar.addfile(info, io.BytesIO(data))
+    return out.getvalue()
+
+
+@pytest.fixture
+def fake_runtime(monkeypatch: pytest.MonkeyPatch) -> bytes:
+    """The fake tarball, pinned as the runtime in place of the real one."""
+    data = _fake_runtime()
+    monkeypatch.setattr(build, "PYODIDE_SHA256", hashlib.sha256(data).hexdigest())
+    return data
+
+
+def _no_network(url: str) -> bytes:
+    raise AssertionError(f"fetched {url}")
+
+
+def _exam() -> str:
+    return "<!DOCTYPE html><title>exam</title>"
+
+
+def test_a_file_as_the_folder_is_refused(tmp_path: Path) -> None:
+    target = tmp_path / "notes.txt"
+    target.write_text("mine")
+    r = run("site", "build", str(target))
+    assert_refused(r, "is a file")
+    assert target.read_text() == "mine"
+
+
+def test_a_folder_of_other_files_is_refused_and_left_alone(tmp_path: Path) -> None:
+    (tmp_path / "homework.md").write_text("mine")
+    r = run("site", "build", str(tmp_path))
+    assert_refused(r, "not a scanconv site")
+    assert [p.name for p in tmp_path.iterdir()] == ["homework.md"]
+
+
+def test_a_missing_parent_is_exit_1_and_writes_nothing(tmp_path: Path) -> None:
+    r = run("site", "build", str(tmp_path / "missing" / "site"))
+    assert r.code == 1 and r.out == ""
+    assert r.err.startswith("scanconv: error: cannot write") and r.err.count("\n") == 1
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_unknown_options_are_bad_input(tmp_path: Path) -> None:
+    assert_refused(run("site", "build", str(tmp_path / "s"), "--bogus"), "--bogus")
+    assert_refused(run("site", "build"), "DIR")
+
+
+def test_the_runtime_is_read_from_the_cache_without_the_network(
+    tmp_path: Path, fake_runtime: bytes
+) -> None:
+    (tmp_path / f"pyodide-{build.PYODIDE_VERSION}.tgz").write_bytes(fake_runtime)
+    assert runtime_archive(tmp_path, _no_network) == fake_runtime
+
+
+def test_a_fetched_runtime_is_checked_then_cached(tmp_path: Path, fake_runtime: bytes) -> None:
+    fetched: list[str] = []
+
+    def fetch(url: str) -> bytes:
+        fetched.append(url)
+        return fake_runtime
+
+    assert runtime_archive(tmp_path / "cache", fetch) == fake_runtime
+    assert fetched == [build.PYODIDE_URL]
+    assert fetched[0].startswith("https://registry.npmjs.org/pyodide/-/pyodide-314.0.7.tgz")
+    assert runtime_archive(tmp_path / "cache", _no_network) == fake_runtime
+
+
+def test_a_runtime_with_another_checksum_is_refused_and_not_cached(
+    tmp_path: Path, fake_runtime: bytes
+) -> None:
+    with pytest.raises(FetchError, match="not the pinned"):
+        runtime_archive(tmp_path, lambda url: fake_runtime + b"tampered")
+    assert list(tmp_path.iterdir()) == []
+    # a damaged cache is fetched again
+    (tmp_path / f"pyodide-{build.PYODIDE_VERSION}.tgz").write_bytes(b"damaged")
+    assert runtime_archive(tmp_path, lambda url: fake_runtime) == fake_runtime
+
+
+def test_a_failed_fetch_leaves_no_folder(tmp_path: Path) -> None:
+    def offline(url: str) -> bytes:
+        raise OSError("network is unreachable")
+
+    with pytest.raises(FetchError, match="cannot fetch Pyodide"):
+        build_site(tmp_path / "site", _exam, cache=tmp_path / "cache", fetch=offline)
+    assert sorted(p.name for p in tmp_path.iterdir()) == []
+
+
+def test_the_site_from_a_fake_runtime(tmp_path: Path, fake_runtime: bytes) -> None:
+    built = build_site(tmp_path / "site", _exam, cache=tmp_path, fetch=lambda url: fake_runtime)
+    site = tmp_path / "site"
+    names = {p.relative_to(site).as_posix() for p in site.rglob("*") if p.is_file()}
+    manifest = json.loads((site / "site.json").read_text())
+    assert names == {
+        *(f"pyodide/{n}" for n in build.RUNTIME_FILES),
+        *(f"wheels/{w}" for w in manifest["wheels"]),
+        *build.STATIC,
+        "exam.html",
+        "site.json",
+    }
+    assert built.files == len(names)
+    assert built.size == sum((site / n).stat().st_size for n in names)
+    assert (site / "pyodide/pyodide.asm.wasm").read_bytes() == b"pyodide.asm.wasm"
+    assert (site / "exam.html").read_text() == _exam()
+    assert [w.split("-")[0] for w in manifest["wheels"]] == ["scanconv", "tabulate", "latex2mathml"]
+    with zipfile.ZipFile(site / "wheels" / manifest["wheels"][0]) as wheel:
+        members = set(wheel.namelist())
+    assert {"scanconv/site/page.py", "scanconv/__init__.pyi", "scanconv/data/exam.txt"} <= members
+    assert not any("__pycache__" in m for m in members)
+    assert (site / "index.html").read_text().count('class="sc-form"') > 40
+
+
+def test_a_rebuild_replaces_the_site_and_a_failed_one_keeps_it(
+    tmp_path: Path, fake_runtime: bytes, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    site = tmp_path / "site"
+    (tmp_path / f"pyodide-{build.PYODIDE_VERSION}.tgz").write_bytes(fake_runtime)
+    build_site(site, _exam, cache=tmp_path, fetch=_no_network)
+    (site / "stale.txt").write_text("from an older build")
+    build_site(site, lambda: "<p>new</p>", cache=tmp_path, fetch=_no_network)
+    assert not (site / "stale.txt").exists()
+    assert (site / "exam.html").read_text() == "<p>new</p>"
+
+    def broken(exam_html: str, archive: bytes):  # type: ignore[no-untyped-def]
+        yield "index.html", b"half"
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(build, "site_files", broken)
+    with pytest.raises(OSError):
+        build_site(site, lambda: "<p>newer</p>", cache=tmp_path, fetch=_no_network)
+    assert (site / "exam.html").read_text() == "<p>new</p>"
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        [site.name, f"pyodide-{build.PYODIDE_VERSION}.tgz"]
+    )
+
+
+def test_the_page_answers_what_the_cli_answers() -> None:
+    question = "ellipse 8 6 --no-grid"
+    shown = solve_page("scanconv " + question + " --format json -o x.json")
+    assert shown["ok"], shown
+    cli = run(*question.split(), "--format", "json")
+    assert cli.code == 0 and shown["json"] == cli.out
+    html = run(*question.split(), "--format", "html")
+    assert shown["html"] == html.out
+
+
+def test_the_page_words_bad_input_as_the_cli_does() -> None:
+    for question in ("line 2 2 10", "circle 0.5", "bezier 0 0 1", "clip line 1 2 3 4"):
+        cli = run(*question.split())
+        assert cli.code == 2
+        shown = solve_page(question)
+        assert not shown["ok"]
+        assert cli.err == f"scanconv: error: {shown['error']}\n"
+
+
+def test_a_command_that_needs_numpy_says_so_where_there_is_none(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import sys
+
+    monkeypatch.setitem(sys.modules, "numpy", None)  # as in Pyodide
+    shown = solve_page("sample 'x + y' --size 4x4 --levels 4")
+    assert shown == {
+        "ok": False,
+        "error": "this command needs numpy, which the browser's Python does not have: run it "
+        "with scanconv on a computer",
+    }
+
+
+def test_a_dependency_that_is_not_installed_or_not_pure_python_is_refused(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    with pytest.raises(FetchError, match="is not installed"):
+        build.dependency_wheel("no-such-package-scanconv")
+    with pytest.raises(FetchError, match="compiled code"):
+        build.dependency_wheel("numpy")
+    filename, data = build.dependency_wheel("tabulate")
+    with zipfile.ZipFile(io.BytesIO(data)) as wheel:
+        names = wheel.namelist()
+    assert filename.startswith("tabulate-") and "tabulate/__init__.py" in names
+    assert not any(n.startswith("../") or "__pycache__" in n for n in names)
