@@ -326,6 +326,8 @@ _PROCESS = (
            _A + "cyrus_beck:cyrus_beck_solution", _G + "cyrus_beck:cyrus_beck"),
     _plain("clip", "midpoint-subdivision", "midpoint subdivision line clipping",
            _A + "midpoint_clip:midpoint_clip_solution", _G + "midpoint_clip:subdivide"),
+    _plain("clip", "nicholl-lee-nicholl", "Nicholl-Lee-Nicholl line clipping",
+           _A + "nll:nll_solution", _G + "nll:nicholl_lee_nicholl"),
     _plain("clip", "weiler-atherton", "Weiler-Atherton polygon clipping (concave polygons)",
            _A + "weiler_atherton:weiler_atherton_solution", _G + "weiler_atherton:weiler_atherton"),
     _plain("clip", "sutherland-hodgman", "Sutherland-Hodgman polygon clipping",

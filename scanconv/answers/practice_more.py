@@ -1,6 +1,6 @@
 """Practice questions on the topics beyond the notes (:mod:`.practice` registers them):
 dithering, inside-outside tests, clipping (Cohen-Sutherland, Liang-Barsky, Cyrus-Beck,
-midpoint subdivision, Weiler-Atherton) and the frame buffer. Each topic walks its kinds as the
+midpoint subdivision, Weiler-Atherton, Nicholl-Lee-Nicholl) and the frame buffer. Each topic walks its kinds as the
 notes' topics do, so a few questions show every method; every question is worded with the
 method's own name (:mod:`.methods`)."""
 
@@ -92,6 +92,8 @@ def clipping(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion
         )
     x1 = rng.randrange(xmin - span // 2, xmin)
     y1 = rng.randrange(ymin, ymax)
+    if kind == "nicholl-lee-nicholl":  # P1 in an edge or a corner region, by the seed
+        y1 = rng.randrange(ymin, ymax + (ymax - ymin) // 2)
     x2 = rng.randrange(xmax + 1, xmax + span // 2 + 1)
     y2 = rng.randrange(ymin - (ymax - ymin) // 2, ymax + (ymax - ymin) // 2)
     ends = (str(x1), str(y1), str(x2), str(y2))
@@ -146,6 +148,7 @@ KINDS: dict[str, list[Any]] = {
         "cyrus-beck",
         "midpoint-subdivision",
         "weiler-atherton",
+        "nicholl-lee-nicholl",
     ],
     "framebuffer": ["load", "lut", "refresh", "interlaced"],
 }
