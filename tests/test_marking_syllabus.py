@@ -12,6 +12,8 @@ from fractions import Fraction as F
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from scanconv.answers.marking_table import canon
 from scanconv.questions.marking import check
@@ -205,3 +207,45 @@ def test_scanconv_own_table_scores_full(tmp_path: Path, question: str) -> None:
     out = run(*shlex.split(question), "--format", "csv").out
     data = _mark(tmp_path, out, question)
     assert data["score"] == data["out_of"] > 0
+
+
+CELLS = st.one_of(
+    st.integers(-(10**6), 10**6).map(str),
+    st.sampled_from(["", "-", "1/0", "(1, 2)", "entering", "0110", "1e30", "nan", "−3/4", "x"]),
+    st.text(max_size=6),
+)
+
+
+@settings(deadline=None, max_examples=60)
+@given(
+    question=st.sampled_from([CB_Q, NLL_Q, MID_Q, DITHER_Q, "framebuffer 1280 1024 8",
+                              "dither floyd-steinberg --image '100 100; 100 100' --top 255"]),
+    rows=st.lists(st.lists(CELLS, min_size=7, max_size=7), min_size=1, max_size=8),
+)  # fmt: skip
+def test_any_cells_are_marked_or_refused_in_one_line(question: str, rows: list) -> None:
+    """Whatever a student writes in the answer's columns, the marking ends with a score or an
+    InputError naming the problem, never another exception."""
+    import csv
+    import io
+    import shlex
+    import tempfile
+
+    from scanconv.answers.marking_table import table_model_for
+    from scanconv.core.checks import InputError
+    from scanconv.questions import parse, solve
+
+    solution = solve(parse(shlex.split(question)))
+    model = table_model_for(solution)
+    assert model is not None
+    out = io.StringIO()
+    w = csv.writer(out)
+    w.writerow(["k", *model.marked, "x"][:7])
+    w.writerows(rows)
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "s.csv"
+        path.write_text(out.getvalue(), encoding="utf-8")
+        try:
+            data = check(path, question).data
+        except InputError:
+            return
+    assert 0 <= data["score"] <= data["out_of"]
