@@ -175,7 +175,11 @@ def mark_table(
     if not marked:
         names = ", ".join(c.text for c in columns if c.key in model.marked)
         raise InputError(f"{name}: no column to mark: the answer's table has {names}", "answer")
-    titles = {c.key: c.text for c in columns}
+    texts = [c.text for c in columns]
+    titles = {
+        c.key: c.text if texts.count(c.text) == 1 else f"{c.text} ({c.key.replace('_', ' ')})"
+        for c in columns
+    }
     own: list[Row] = []
     verdicts: list[Verdict] = []
     for n, (where, cells) in enumerate(raw):
