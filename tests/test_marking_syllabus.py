@@ -249,3 +249,28 @@ def test_any_cells_are_marked_or_refused_in_one_line(question: str, rows: list) 
         except InputError:
             return
     assert 0 <= data["score"] <= data["out_of"]
+
+
+def test_midpoint_line_half_scale_follows_through(tmp_path: Path) -> None:
+    """(2, 2) to (10, 6) with d = F(M) unscaled: d0 = dy - dx/2 = 0, E adds dy = 4, NE adds
+    dy - dx = -4. The student writes the next d at (4, 3) as -3 and carries it on (-3, 1, -3,
+    ...): the same pixels; that row is wrong once, the rest right by follow-through."""
+    q = "line 2 2 10 6 --algo midpoint --scale half"
+    rows = [
+        (0, "NE", 2, 2, -4), (-4, "E", 3, 3, 0), (0, "NE", 4, 3, -3), (-3, "E", 5, 4, 1),
+        (1, "NE", 6, 4, -3), (-3, "E", 7, 5, 1), (1, "NE", 8, 5, -3), (-3, "E", 9, 6, 1),
+        (1, "NE", 10, 6, -3),
+    ]  # fmt: skip
+    text = "k,d_k,decision,x,y,d_{k+1}\n" + "".join(
+        f"{k},{d},{m},{x},{y},{n}\n" for k, (d, m, x, y, n) in enumerate(rows)
+    )
+    data = _mark(tmp_path, text, q)
+    assert (data["score"], data["out_of"]) == (7, 8)
+    right = "k,d_k,decision,x,y,d_{k+1}\n" + "".join(
+        f"{k},{d},{'NE' if d == 0 else 'E'},{x},{y},{-4 if d == 0 else 0}\n"
+        for k, (d, x, y) in enumerate(
+            [(0, 2, 2), (-4, 3, 3), (0, 4, 3), (-4, 5, 4), (0, 6, 4), (-4, 7, 5), (0, 8, 5),
+             (-4, 9, 6), (0, 10, 6)]
+        )
+    )  # fmt: skip
+    assert _mark(tmp_path, right, q)["score"] == 8
