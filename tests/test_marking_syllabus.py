@@ -274,3 +274,32 @@ def test_midpoint_line_half_scale_follows_through(tmp_path: Path) -> None:
         )
     )  # fmt: skip
     assert _mark(tmp_path, right, q)["score"] == 8
+
+
+INSIDE_Q = "inside 0 0 8 0 8 8 4 3 0 8 --points 1 1 4 5 6 2"
+
+
+def test_inside_verdicts_follow_the_students_counts(tmp_path: Path) -> None:
+    """The concave polygon (0,0) (8,0) (8,8) (4,3) (0,8): the ray from (1, 1) crosses BC
+    only (1 crossing, winding +1: inside by both rules); from (4, 5) it crosses BC (up) and
+    CD (down): 2, winding 0, outside; from (6, 2) BC: 1, +1, inside."""
+    right = (
+        "point,crossings,even-odd,winding number,nonzero\n"
+        "P1,1,inside,1,inside\nP2,2,outside,0,outside\nP3,1,inside,1,inside\n"
+    )
+    assert _mark(tmp_path, right, INSIDE_Q)["score"] == 3
+    # P2's crossings counted as 3 and called inside: the count is wrong once, the verdict
+    # follows from it
+    data = _mark(tmp_path, right.replace("P2,2,outside", "P2,3,inside"), INSIDE_Q)
+    assert (data["score"], data["out_of"]) == (2, 3)
+    assert data["first_error"].startswith("Row 2")
+    # a verdict against the row's own count is wrong
+    assert _mark(tmp_path, right.replace("P3,1,inside", "P3,1,outside"), INSIDE_Q)["score"] == 2
+
+
+def test_one_point_edge_table_is_chosen_by_its_headings(tmp_path: Path) -> None:
+    q = "inside 0 0 8 0 8 8 --points 1 1"
+    edges = run(*q.split(), "--format", "csv").out
+    assert _mark(tmp_path, edges, q)["score"] == 3  # the edge tests, not the verdicts
+    verdict = "point,crossings,even-odd,winding number,nonzero\nP1,1,inside,1,inside\n"
+    assert _mark(tmp_path, verdict, q)["score"] == 1

@@ -332,12 +332,12 @@ def mark_file(path: Path, solution: Solution) -> Marking:
     """Mark the student's file at ``path``: by its own columns where the method's table is
     not a pixel walk (:mod:`.marking_table`), else as a step table (:func:`mark`)."""
     from ..core.student_table import read_raw, read_table
-    from .marking_table import mark_table, table_model_for
+    from .marking_table import mark_table, table_models_for
 
-    model = table_model_for(solution)
-    if model is not None:
+    models = table_models_for(solution)
+    if models:
         headers, raw = read_raw(path)
-        return mark_table(headers, raw, solution, model, path.name)
+        return mark_table(headers, raw, solution, models, path.name)
     return mark(read_table(path), solution)
 
 

@@ -27,6 +27,7 @@ from .table_models import (
     DiffusionTable,
     DitherTable,
     FrameBufferTable,
+    InsideVerdictsTable,
     LineStyleTable,
     MidpointClipTable,
     NLLTable,
@@ -41,6 +42,23 @@ TABLE_RULES = (
     "gives from the student's own earlier cells (follow-through: one slip costs one row). A "
     "row past the end costs one mark, a missing row is wrong."
 )
+
+
+def table_models_for(solution: Solution) -> list[TableModel]:
+    """The tables of ``solution`` a student's table may be (the inside-outside test: the
+    verdicts, or one point's edge tests); the one whose columns the student's headings
+    match best is marked."""
+    if solution.primitive == "inside":
+        verdicts: list[TableModel] = [InsideVerdictsTable()]
+        if len(solution.tables) == 2:  # one point: its edge tests too
+            verdicts.append(
+                PlainRowsTable(
+                    "P1", ("straddles", "x", "crossing", "sign"), "Each edge's test stands alone."
+                )
+            )
+        return verdicts
+    one = table_model_for(solution)
+    return [] if one is None else [one]
 
 
 def table_model_for(solution: Solution) -> TableModel | None:
@@ -68,10 +86,8 @@ def table_model_for(solution: Solution) -> TableModel | None:
         return PlainRowsTable(None, ("row", "column"), "Each pixel stands alone.")
     if key == ("framebuffer", "arithmetic"):
         return FrameBufferTable()
-    if solution.primitive == "inside" and len(solution.tables) == 2:  # one point
-        return PlainRowsTable(
-            "P1", ("straddles", "x", "crossing", "sign"), "Each edge's test stands alone."
-        )
+    if solution.primitive == "inside":
+        return table_models_for(solution)[0]
     return None
 
 
@@ -80,6 +96,8 @@ def canon(value: Any) -> Any:
 
     >>> canon("-6/7"), canon("(270/7, 50)"), canon(" Entering "), canon("-")
     (Fraction(-6, 7), (Fraction(270, 7), Fraction(50, 1)), 'entering', None)
+    >>> canon("+1 (up)"), canon("Inside (odd)")
+    (Fraction(1, 1), 'inside')
     """
     if value is None or isinstance(value, bool):
         return None if value is None else Fraction(int(value))
@@ -92,6 +110,9 @@ def canon(value: Any) -> Any:
     text = " ".join(str(value).replace("\u2212", "-").split()).lower()
     if text in ("", "-", "\u2013"):
         return None
+    remark = re.fullmatch(r"(.*[^\s(])\s+\([^()]*\)", text)
+    if remark:  # "+1 (up)", "inside (odd)": the remark is not marked
+        return canon(remark[1])
     try:
         return parse_number(text, 10**24)
     except ValueError:
@@ -107,6 +128,13 @@ def canon(value: Any) -> Any:
 
 def _norm(text: str) -> str:
     return re.sub(r"\\text|[\s${}\\_*·.']", "", text).lower()
+
+
+def _answer_columns(solution: Solution, model: TableModel) -> tuple[Column, ...]:
+    if model.table is None:
+        return solution.columns
+    table = next((t for t in solution.tables if t.title.startswith(model.table)), None)
+    return () if table is None else table.columns
 
 
 def _answer(solution: Solution, model: TableModel) -> tuple[tuple[Column, ...], list[Row]]:
@@ -165,10 +193,17 @@ def mark_table(
     headers: Sequence[str],
     raw: Sequence[tuple[str, list[Any]]],
     solution: Solution,
-    model: TableModel,
+    models: Sequence[TableModel],
     name: str,
 ) -> Marking:
-    """Mark the student's rows ``raw`` (with their ``headers``) against ``solution``."""
+    """Mark the student's rows ``raw`` (with their ``headers``) against ``solution``'s table
+    of the model whose marked columns the headings match most."""
+
+    def matched(m: TableModel) -> int:
+        keys = _match(headers, _answer_columns(solution, m))
+        return sum(k in keys for k in m.marked)
+
+    model = max(models, key=matched)
     columns, answer = _answer(solution, model)
     keys = _match(headers, columns)
     marked = [k for k in model.marked if k in keys]

@@ -380,7 +380,7 @@ _DITHER = (
 
 _INSIDE = tuple(
     _plain("inside", rule_name, f"inside-outside test ({title})", _A + "inside:inside_solution",
-           _G + "inside:edge_tests", model="PlainRowsTable")
+           _G + "inside:edge_tests", model="InsideVerdictsTable")
     for rule_name, title in (("even-odd", "even-odd rule"), ("nonzero", "nonzero winding rule"))
 )  # fmt: skip
 

@@ -262,3 +262,26 @@ class FrameBufferTable(TableModel):
                 if isinstance(theirs, Fraction) and theirs:
                     exp["size"] = above * mine / theirs
         return exp
+
+
+class InsideVerdictsTable(TableModel):
+    """The inside-outside verdicts: the even-odd verdict from the row's own crossing count,
+    the nonzero verdict from its own winding number (a point on the boundary: the answer's)."""
+
+    table = "Verdicts"
+    marked = ("crossings", "even_odd", "winding", "nonzero")
+    rules = (
+        "The even-odd verdict follows from the row's own crossing count (odd: inside), the "
+        "nonzero verdict from its own winding number (not 0: inside)."
+    )
+
+    def expect(self, i: int, answer: Sequence[Row], own: Sequence[Row]) -> Row:
+        exp = dict(answer[i])
+        if exp.get("boundary") is not None:
+            return exp
+        crossings, winding = _given(own[i], "crossings", exp), _given(own[i], "winding", exp)
+        if isinstance(crossings, Fraction) and crossings.denominator == 1:
+            exp["even_odd"] = "inside" if crossings.numerator % 2 else "outside"
+        if isinstance(winding, Fraction):
+            exp["nonzero"] = "inside" if winding else "outside"
+        return exp
