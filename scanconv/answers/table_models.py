@@ -189,24 +189,32 @@ class DiffusionTable(TableModel):
         self, image: Sequence[Sequence[Any]], top: Any, data: dict[str, Any], compare: str
     ) -> None:
         self.image, self.top, self.data, self.compare = image, Fraction(top), data, compare
+        self._got: dict[tuple[int, int], Fraction] = {}
+        self._done = 0
 
-    def expect(self, i: int, answer: Sequence[Row], own: Sequence[Row]) -> Row:
+    def _spread(self, row: Row, answer: Row) -> None:
+        """Share the error the student wrote in ``row`` among the pixels it reaches."""
         from ..algorithms.dither import KERNELS, _share
 
+        err = _given(row, "error", answer)
+        if not isinstance(err, Fraction) or (self.data.get("carry") == "clamped" and err < 0):
+            return
+        ai, aj = int(answer["i"]), int(answer["j"])
+        direction = -1 if self.data.get("order") == "serpentine" and ai % 2 else 1
+        for s in KERNELS[self.data.get("kernel", "floyd-steinberg")]:
+            to = (ai + s.di, aj + s.dj * direction)
+            amount = _share(err, s.weight, self.data.get("arithmetic", "exact"))
+            self._got[to] = self._got.get(to, Fraction(0)) + amount
+
+    def expect(self, i: int, answer: Sequence[Row], own: Sequence[Row]) -> Row:
         exp = dict(answer[i])
-        shares = KERNELS[self.data.get("kernel", "floyd-steinberg")]
-        arithmetic = self.data.get("arithmetic", "exact")
+        if i < self._done or i == 0:
+            self._got, self._done = {}, 0
+        for n in range(self._done, i):  # the rows above, folded in once each, in order
+            self._spread(own[n], answer[n])
+        self._done = i
         at = (int(exp["i"]), int(exp["j"]))
-        received = Fraction(0)
-        for r, a in zip(own[:i], answer[:i], strict=False):
-            err = _given(r, "error", a)
-            if not isinstance(err, Fraction) or (self.data.get("carry") == "clamped" and err < 0):
-                continue
-            ai, aj = int(a["i"]), int(a["j"])
-            direction = -1 if self.data.get("order") == "serpentine" and ai % 2 else 1
-            for s in shares:
-                if (ai + s.di, aj + s.dj * direction) == at:
-                    received += _share(err, s.weight, arithmetic)
+        received = self._got.get(at, Fraction(0))
         exp["received"] = received
         exp["value"] = Fraction(self.image[at[0]][at[1]]) + _given(own[i], "received", exp)
         value = _given(own[i], "value", exp)
