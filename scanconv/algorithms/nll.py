@@ -210,8 +210,10 @@ def _from_inside(run: _Run) -> NLLResult:
     (x1, y1), (x2, y2) = p1, p2
     xmin, ymin, xmax, ymax = window
     slopes: tuple[tuple[str, Number], ...] = ()
-    if x2 == x1:
+    if x2 == x1:  # vertical: no slope, the direction decides
         edge = "T" if y2 > y1 else "B"
+        run.test("vertical, going up?", ("y2", y2), ("y1", y1))
+        run.so(f"P2 in region {edge}")
     else:
         side, top, bottom = ("R", "TR", "BR") if x2 > x1 else ("L", "TL", "BL")
         dx = (xmax if side == "R" else xmin) - x1
