@@ -476,7 +476,10 @@ PROCESS_VOCABULARY = {
         too_few=(("1", "2", "3", *WINDOW), "Missing argument"),
         too_many=(("1", "2", "3", "4", "5", *WINDOW), "unexpected extra argument"),
         wrong_type=(("1", "2", "3", "4", "--window", "0", "0", "4"), "requires 4 arguments"),
-        small={"--window": RECT_VALUES, "--method": ("cohen-sutherland", "liang-barsky")},
+        small={
+            "--window": RECT_VALUES,
+            "--method": ("cohen-sutherland", "liang-barsky", "nicholl-lee-nicholl"),
+        },
         positional=COORD,
     ),
     ("clip", "polygon"): Vocab(
@@ -523,7 +526,7 @@ PROCESS_VOCABULARY = {
             "--window": RECT_VALUES,
             "--viewport": RECT_VALUES,
             "--algo": ("bresenham", "dda", "basic"),
-            "--clip": ("cohen-sutherland", "liang-barsky"),
+            "--clip": ("cohen-sutherland", "liang-barsky", "nicholl-lee-nicholl"),
         },
         positional=COORD,
     ),

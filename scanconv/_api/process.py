@@ -67,7 +67,8 @@ def clip_line(
 
     ``method`` is ``cohen-sutherland``, ``liang-barsky``, ``cyrus-beck`` (the rectangle as a
     convex window; ``normals`` outward or inward, ``ends`` exact or truncated) or
-    ``midpoint-subdivision`` (``midpoint`` rounded, floor or exact).
+    ``midpoint-subdivision`` (``midpoint`` rounded, floor or exact) or
+    ``nicholl-lee-nicholl`` (P1's region, the slope tests, P2's region).
 
     >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8)).data["clipped"]
     [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
@@ -93,6 +94,10 @@ def clip_line(
         from ..answers.midpoint_clip import midpoint_clip_solution
 
         return midpoint_clip_solution(a, b, c, d, list(rect), midpoint=midpoint or "rounded")
+    if name == "nicholl-lee-nicholl":
+        from ..answers.nll import nll_solution
+
+        return nll_solution(a, b, c, d, rect)
     return clip_line_solution(a, b, c, d, rect, name)
 
 

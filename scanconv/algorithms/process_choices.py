@@ -13,6 +13,7 @@ class LineClipMethod(str, Enum):
     liang_barsky = "liang-barsky"
     cyrus_beck = "cyrus-beck"
     midpoint_subdivision = "midpoint-subdivision"
+    nicholl_lee_nicholl = "nicholl-lee-nicholl"
 
 
 class PolygonClipMethod(str, Enum):

@@ -40,7 +40,14 @@ from .shapes import (
 LINE_METHODS = tuple(m.value for m in LineClipMethod)
 """The line clipping methods, by name."""
 
-METHOD_NAMES = {"cohen-sutherland": "Cohen-Sutherland", "liang-barsky": "Liang-Barsky"}
+METHOD_NAMES = {
+    "cohen-sutherland": "Cohen-Sutherland",
+    "liang-barsky": "Liang-Barsky",
+    "cyrus-beck": "Cyrus-Beck",
+    "nicholl-lee-nicholl": "Nicholl-Lee-Nicholl",
+}
+"""The methods :func:`clip_line_parts` works (and ``pipeline line --clip`` takes); midpoint
+subdivision rounds its midpoints and may find several pieces, so the pipeline refuses it."""
 
 
 def code_text(code: int) -> str:
@@ -320,6 +327,12 @@ def check_method(method: str, param: str = "method") -> str:
             f"unknown line clipping method {method!r} (choose from {', '.join(LINE_METHODS)})",
             param,
         )
+    if param == "clip" and method not in METHOD_NAMES:
+        raise InputError(
+            f"the pipeline clips by {', '.join(METHOD_NAMES)}, not {method} (its rounded "
+            "midpoints may leave several pieces)",
+            param,
+        )
     return method
 
 
@@ -335,8 +348,46 @@ def clip_line_parts(
         lb = liang_barsky(p1, p2, w)
         d, t = lb_parts(p1, p2, w, lb)
         return d, t, lb.segment
+    if method in ("cyrus-beck", "nicholl-lee-nicholl"):
+        return _solution_parts(p1, p2, w, method)
     raise InputError(
         f"unknown line clipping method {method!r} (choose from {', '.join(LINE_METHODS)})", "method"
+    )
+
+
+def _solution_parts(
+    p1: Point, p2: Point, w: Rect, method: str
+) -> tuple[list[Quantity], list[Table], tuple[Point, Point] | None]:
+    """Cyrus-Beck's or NLL's working (without its last line, the clipped segment), tables and
+    segment, from its own answer (the rectangle as Cyrus-Beck's convex window)."""
+    if method == "cyrus-beck":
+        from .cyrus_beck import cyrus_beck_solution
+
+        corners = [w[0], w[1], w[2], w[1], w[2], w[3], w[0], w[3]]
+        sol = cyrus_beck_solution(*p1, *p2, corners)
+    else:
+        from .nll import nll_solution
+
+        sol = nll_solution(*p1, *p2, w)
+    seg = sol.data["clipped"]
+    segment = None if seg is None else ((seg[0][0], seg[0][1]), (seg[1][0], seg[1][1]))
+    return list(sol.derived[:-1]), list(sol.tables), segment
+
+
+def clipped_quantity(seg: tuple[Point, Point] | None) -> Quantity:
+    """The last line of a clipping answer: the clipped segment, or that it is rejected."""
+    if seg is None:
+        return Quantity(
+            "clipped",
+            None,
+            "the segment is rejected: no part of it is inside the window",
+            r"\text{rejected}",
+        )
+    return Quantity(
+        "clipped",
+        [list(seg[0]), list(seg[1])],
+        f"clipped segment: {pt_approx(seg[0])} to {pt_approx(seg[1])}",
+        f"\\text{{clipped segment: }} {pt(seg[0])} \\text{{ to }} {pt(seg[1])}",
     )
 
 
@@ -357,24 +408,7 @@ def clip_line_solution(
     w = check_rect(window, "window", "window")
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
     derived, tables, seg = clip_line_parts(p1, p2, w, method)
-    if seg is None:
-        derived.append(
-            Quantity(
-                "clipped",
-                None,
-                "the segment is rejected: no part of it is inside the window",
-                r"\text{rejected}",
-            )
-        )
-    else:
-        derived.append(
-            Quantity(
-                "clipped",
-                [list(seg[0]), list(seg[1])],
-                f"clipped segment: {pt_approx(seg[0])} to {pt_approx(seg[1])}",
-                f"\\text{{clipped segment: }} {pt(seg[0])} \\text{{ to }} {pt(seg[1])}",
-            )
-        )
+    derived.append(clipped_quantity(seg))
     notes = [
         "The window is closed: a point on an edge is inside (code 0000), so a segment along an edge or through a corner is kept.",
     ]

@@ -238,7 +238,11 @@ def ordered_solution(
         lambda: d.ordered(img, table, compare),
         ("value", "threshold", "output"),
         2,
-        {"matrix": [list(r) for r in dm], "thresholds": [list(r) for r in table]},
+        {
+            "matrix": [list(r) for r in dm],
+            "thresholds": [list(r) for r in table],
+            "compare": compare,
+        },
     )
 
 
@@ -322,7 +326,13 @@ def diffusion_solution(
         steps,
         ("received", "value", "output", "error", "carries"),
         2,
-        {"kernel": kernel, "order": order, "arithmetic": arithmetic, "carry": carry},
+        {
+            "kernel": kernel,
+            "order": order,
+            "arithmetic": arithmetic,
+            "carry": carry,
+            "compare": compare,
+        },
     )
 
 

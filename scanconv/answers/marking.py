@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Sequence
+from pathlib import Path
 
 from ..core.checks import InputError
 from ..core.records import Solution
@@ -52,6 +53,7 @@ __all__ = [
     "batch_solution",
     "expect",
     "mark",
+    "mark_file",
     "marking_solution",
     "model_for",
     "reached",
@@ -324,6 +326,19 @@ def mark(table: StudentTable, solution: Solution) -> Marking:
     if note:
         diagnosis = f"{note} {diagnosis}".strip()
     return _marking(verdicts, len(answer), right, marked, diagnosis, True, lay, start)
+
+
+def mark_file(path: Path, solution: Solution) -> Marking:
+    """Mark the student's file at ``path``: by its own columns where the method's table is
+    not a pixel walk (:mod:`.marking_table`), else as a step table (:func:`mark`)."""
+    from ..core.student_table import read_raw, read_table
+    from .marking_table import mark_table, table_models_for
+
+    models = table_models_for(solution)
+    if models:
+        headers, raw = read_raw(path)
+        return mark_table(headers, raw, solution, models, path.name)
+    return mark(read_table(path), solution)
 
 
 def _mark_plain(rows: list[Got], marked: set[str], solution: Solution) -> Marking:

@@ -25,6 +25,7 @@ from .models import (
     BresenhamLine,
     DDALine,
     GeneralCircle,
+    HalfScaledLine,
     MidpointCircle,
     MidpointEllipse,
     Model,
@@ -78,9 +79,12 @@ def model_for(solution: Solution, knobs: dict[str, str] | None = None) -> Model 
     if prim == "line" and "P1" in g and "P2" in g:
         (x1, y1), (x2, y2) = g["P1"], g["P2"]
         ends = _ends(solution)
-        if algo in ("bresenham", "midpoint") and ends is not None and k.get("scale") != "half":
-            # the midpoint line's d is Bresenham's p (its record names the same model)
-            m = BresenhamLine(*ends, k.get("tie", "step"), k.get("start", "swap"))
+        if algo in ("bresenham", "midpoint") and ends is not None:
+            # the midpoint line's d is Bresenham's p (its record names the same model), or
+            # half of it with --scale half
+            half = algo == "midpoint" and k.get("scale") == "half"
+            line = HalfScaledLine if half else BresenhamLine
+            m = line(*ends, k.get("tie", "step"), k.get("start", "swap"))
         elif algo == "dda":
             m = DDALine(x1, y1, x2, y2, k.get("rounding", "half-up"), k.get("start", "given"))
     elif prim == "circle" and "r" in g:

@@ -76,6 +76,13 @@ class Verdict(NamedTuple):
     """The fields that are wrong: ``pixel``, ``exact``, ``p``, ``decision``, ``p_next``."""
 
 
+class RowText(NamedTuple):
+    """A row of a table marked by its own columns (:mod:`.marking_table`), as words:
+    ``t = 2/7, type = entering``."""
+
+    text: str
+
+
 class Marking(NamedTuple):
     """A marked table."""
 
@@ -91,6 +98,8 @@ class Marking(NamedTuple):
     """What was marked: among ``pixel``, ``exact``, ``p``, ``decision``, ``p_next``."""
     skipped: str = ""
     """The given start row (shown, not scored)."""
+    rules: str = ""
+    """The marking rules in words, where they are not the pixel walk's."""
 
 
 class Layout(NamedTuple):

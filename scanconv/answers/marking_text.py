@@ -9,7 +9,7 @@ from collections.abc import Sequence
 from ..core.numeric import Number, fmt_short
 from ..core.records import Quantity, Solution, Table, heading
 from ..core.student_table import Cell
-from .marking_rows import Expected, Got, Marking, Verdict
+from .marking_rows import Expected, Got, Marking, RowText, Verdict
 from .models import State
 
 RULES = (
@@ -28,10 +28,12 @@ def _num(c: Cell | None) -> str:
     return "blank" if c is None else fmt_short(c.value)
 
 
-def got_text(got: Got | None, fields: Sequence[str]) -> str:
+def got_text(got: Got | RowText | None, fields: Sequence[str]) -> str:
     """A student's step in a few words: ``p = -8, E, (4, 3)``."""
     if got is None:
         return "-"
+    if isinstance(got, RowText):
+        return got.text
     parts = []
     for f in fields:
         if f == "p":
@@ -49,12 +51,14 @@ def got_text(got: Got | None, fields: Sequence[str]) -> str:
     return ", ".join(parts)
 
 
-def expected_text(exp: Expected | None, fields: Sequence[str]) -> str:
+def expected_text(exp: Expected | RowText | None, fields: Sequence[str]) -> str:
     """An expected step in the same words (``-`` where there is no value): the decision the
     rule takes, the point and the next p it reaches (a point or next p that follows from the
     student's own wrong decision is not marked wrong again, see :func:`..marking.expect`)."""
     if exp is None:
         return "-"
+    if isinstance(exp, RowText):
+        return exp.text
 
     def n(v: Number | None) -> str:
         return "-" if v is None else fmt_short(v)
@@ -183,12 +187,12 @@ def marking_solution(marking: Marking, solution: Solution, name: str, question: 
     if marking.diagnosis:
         notes.append(f"Diagnosis: {marking.diagnosis}")
     notes.append(
-        RULES
+        marking.rules or RULES
         if marking.follow_through
         else "This command is marked without follow-through: each row is compared with the "
         "answer's row in the same position."
     )
-    notes.append("Columns marked: " + ", ".join(NAMES[f] for f in fields) + ".")
+    notes.append("Columns marked: " + ", ".join(NAMES.get(f, f) for f in fields) + ".")
     return Solution(
         primitive="check",
         algorithm=solution.algorithm,

@@ -262,13 +262,16 @@ def _plain(
     *,
     raster: str | None = None,
     no_generator: str = "",
+    model: str | None = None,
 ) -> Method:
-    """A method with no derivation, pseudocode or marking model (each said why)."""
+    """A method with no derivation or pseudocode (each said why); ``model``: its table model
+    (:mod:`.table_models`, marked by its own columns), else why it has none."""
     missing = [
         ("derivation", _NO_DERIVATION),
         ("pseudocode", "the notes give it as prose steps, shown in the working"),
-        ("model", _NO_MODEL),
     ]
+    if model is None:
+        missing.append(("model", _NO_MODEL))
     if raster is None:
         missing.append(("raster", _NO_RASTER))
     if generator is None:
@@ -281,7 +284,7 @@ def _plain(
         generator,
         None,
         None,
-        None,
+        None if model is None else "scanconv.answers.table_models:" + model,
         raster,
         (),
         tuple(missing),
@@ -323,9 +326,13 @@ _PROCESS = (
     _plain("clip", "liang-barsky", "Liang-Barsky line clipping", _A + "clip:clip_line_solution",
            _G + "clipping:liang_barsky"),
     _plain("clip", "cyrus-beck", "Cyrus-Beck line clipping (any convex window)",
-           _A + "cyrus_beck:cyrus_beck_solution", _G + "cyrus_beck:cyrus_beck"),
+           _A + "cyrus_beck:cyrus_beck_solution", _G + "cyrus_beck:cyrus_beck",
+           model="CyrusBeckTable"),
     _plain("clip", "midpoint-subdivision", "midpoint subdivision line clipping",
-           _A + "midpoint_clip:midpoint_clip_solution", _G + "midpoint_clip:subdivide"),
+           _A + "midpoint_clip:midpoint_clip_solution", _G + "midpoint_clip:subdivide",
+           model="MidpointClipTable"),
+    _plain("clip", "nicholl-lee-nicholl", "Nicholl-Lee-Nicholl line clipping",
+           _A + "nll:nll_solution", _G + "nll:nicholl_lee_nicholl", model="NLLTable"),
     _plain("clip", "weiler-atherton", "Weiler-Atherton polygon clipping (concave polygons)",
            _A + "weiler_atherton:weiler_atherton_solution", _G + "weiler_atherton:weiler_atherton"),
     _plain("clip", "sutherland-hodgman", "Sutherland-Hodgman polygon clipping",
@@ -361,39 +368,44 @@ _IMAGE = (
 
 _DITHER = (
     _plain("dither", "threshold", "thresholding", _A + "dither:threshold_solution",
-           _G + "dither:threshold"),
+           _G + "dither:threshold", model="DitherTable"),
     _plain("dither", "ordered", "ordered dither (Bayer matrix)", _A + "dither:ordered_solution",
-           _G + "dither:ordered"),
+           _G + "dither:ordered", model="DitherTable"),
     _plain("dither", "floyd-steinberg", "Floyd-Steinberg error diffusion",
-           _A + "dither:diffusion_solution", _G + "dither:error_diffusion"),
+           _A + "dither:diffusion_solution", _G + "dither:error_diffusion",
+           model="DiffusionTable"),
     _plain("halftone", "pattern", "halftone patterns", _A + "dither:pattern_solution", None,
            no_generator="one pattern per level, from the Bayer matrix"),
 )  # fmt: skip
 
 _INSIDE = tuple(
     _plain("inside", rule_name, f"inside-outside test ({title})", _A + "inside:inside_solution",
-           _G + "inside:edge_tests")
+           _G + "inside:edge_tests", model="InsideVerdictsTable")
     for rule_name, title in (("even-odd", "even-odd rule"), ("nonzero", "nonzero winding rule"))
 )  # fmt: skip
 
 _FRAMEBUFFER = (
     _plain("framebuffer", "arithmetic", "frame-buffer arithmetic",
            _A + "framebuffer:framebuffer_solution", None,
-           no_generator="arithmetic, worked in one pass"),
+           no_generator="arithmetic, worked in one pass", model="FrameBufferTable"),
 )  # fmt: skip
 
 _ATTRIBUTES = (
     _plain("linestyle", "mask", "line style from a pixel mask",
-           _A + "attributes:line_style_solution", _G + "attributes:styled"),
+           _A + "attributes:line_style_solution", _G + "attributes:styled",
+           model="LineStyleTable"),
     _plain("thickline", "replication", "thick line by pixel replication",
-           _A + "attributes:thick_line_solution", _G + "attributes:thick"),
+           _A + "attributes:thick_line_solution", _G + "attributes:thick",
+           model="PlainRowsTable"),
     _plain("thickline", "brush", "thick line by a rectangular brush",
-           _A + "attributes:thick_line_solution", _G + "attributes:thick"),
+           _A + "attributes:thick_line_solution", _G + "attributes:thick",
+           model="PlainRowsTable"),
 )  # fmt: skip
 
 _CHARACTERS = (
     _plain("char", "bitmap", "bitmap character generation",
-           _A + "characters:bitmap_solution", _G + "characters:draw_bitmap"),
+           _A + "characters:bitmap_solution", _G + "characters:draw_bitmap",
+           model="PlainRowsTable"),
     _plain("char", "stroke", "stroke character generation",
            _A + "characters:stroke_solution", _G + "characters:draw_strokes"),
     _plain("char", "storage", "bitmap font storage",

@@ -177,6 +177,36 @@ class BresenhamLine(Model):
         return State(point, normalize(q), k=s.k + 1)
 
 
+class HalfScaledLine(BresenhamLine):
+    """The midpoint line with ``--scale half``: ``d = F(M)`` itself, half Bresenham's p
+    (``d0 = dy - dx/2``, increments ``dy`` and ``dy - dx``); the same decisions.
+
+    >>> [s.p for s in chain(HalfScaledLine(2, 2, 10, 6))][:3]
+    [0, -4, 0]
+    """
+
+    def __init__(
+        self, x1: int, y1: int, x2: int, y2: int, tie: str = "step", start: str = "swap"
+    ) -> None:
+        super().__init__(x1, y1, x2, y2, tie, start)
+        self.half: Number = Fraction(1, 2) if tie == "keep" else 0  # p < 1: d < 1/2
+
+    def decide(self, s: State) -> str | None:
+        if s.p is None:
+            return None
+        return self._moves()[0 if s.p < self.half else 1]
+
+    def rule(self, s: State) -> str:
+        return "" if s.p is None else _choice(s.p, self.half, self._moves())
+
+    def p0(self) -> Number:
+        return normalize(self.dmin - Fraction(self.n, 2))
+
+    def step(self, s: State, move: str | None) -> State | None:
+        t = super().step(s._replace(p=None if s.p is None else 2 * s.p), move)
+        return None if t is None or t.p is None else t._replace(p=normalize(Fraction(t.p) / 2))
+
+
 class NotesP0Line(BresenhamLine):
     """The notes' p0 (errata E1): ``2Δy(y0 + 1/2) - 2Δx(x0 + 1)`` with the start point's
     absolute coordinates (the major and minor axes for Δx and Δy), -28 for (2, 2) to (10, 6)."""

@@ -1,6 +1,8 @@
 """Practice questions on the topics beyond the notes (:mod:`.practice` registers them):
 dithering, inside-outside tests, clipping (Cohen-Sutherland, Liang-Barsky, Cyrus-Beck,
-midpoint subdivision, Weiler-Atherton) and the frame buffer. Each topic walks its kinds as the
+midpoint subdivision, Weiler-Atherton, Nicholl-Lee-Nicholl), the frame buffer, line
+attributes (dashed and dotted lines, thick lines), character generation (bitmap, stroke,
+storage) and the midpoint line. Each topic walks its kinds as the
 notes' topics do, so a few questions show every method; every question is worded with the
 method's own name (:mod:`.methods`)."""
 
@@ -92,6 +94,8 @@ def clipping(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion
         )
     x1 = rng.randrange(xmin - span // 2, xmin)
     y1 = rng.randrange(ymin, ymax)
+    if kind == "nicholl-lee-nicholl":  # P1 in an edge or a corner region, by the seed
+        y1 = rng.randrange(ymin, ymax + (ymax - ymin) // 2)
     x2 = rng.randrange(xmax + 1, xmax + span // 2 + 1)
     y2 = rng.randrange(ymin - (ymax - ymin) // 2, ymax + (ymax - ymin) // 2)
     ends = (str(x1), str(y1), str(x2), str(y2))
@@ -137,6 +141,97 @@ def framebuffer(rng: random.Random, difficulty: str, kind: str) -> PracticeQuest
     )
 
 
+def attributes(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    length = {"easy": 6, "exam": 10, "hard": 16}[difficulty]
+    x1, y1 = rng.randrange(0, 5), rng.randrange(0, 5)
+    x2, y2 = x1 + length, y1 + rng.randrange(1, length // 2 + 1)
+    ends = tuple(map(str, (x1, y1, x2, y2)))
+    line = f"the line from ({x1}, {y1}) to ({x2}, {y2})"
+    if kind in ("dashed", "dotted"):
+        mask = rng.choice(("1110", "11100", "111000")) if kind == "dashed" else "10"
+        return PracticeQuestion(
+            "attributes",
+            ("linestyle", *ends, "--mask", mask),
+            f"Draw {line} {kind} with the pixel mask {mask} (Bresenham's line algorithm): "
+            "give each pixel, its mask bit and whether it is drawn.",
+            6,
+            frozenset({kind}),
+        )
+    width = rng.choice((3, 5)) if difficulty != "easy" else 3
+    brush = kind == "brush"
+    how = f"a {width} x {width} square brush" if brush else "pixel replication"
+    return PracticeQuestion(
+        "attributes",
+        ("thickline", *ends, "--width", str(width), *(("--brush",) if brush else ())),
+        f"Draw {line} {width} pixels thick by {how}: give the pixels each step adds.",
+        6,
+        frozenset({kind}),
+    )
+
+
+_GLYPHS = "AEFHLTXZ"
+
+
+def characters(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    ch = rng.choice(_GLYPHS)
+    scale = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
+    if kind == "storage":
+        count = rng.choice((96, 128, 256))
+        w, h = rng.choice(((5, 7), (7, 9), (8, 8), (9, 14)))
+        return PracticeQuestion(
+            "characters",
+            ("char", "storage", str(count), str(w), str(h)),
+            f"A bitmap font holds {count} characters of {w} x {h} pixels, each row stored in "
+            "whole bytes: how many bytes does a character need, and the whole font?",
+            4,
+            frozenset({kind}),
+        )
+    x, y = rng.randrange(0, 6), rng.randrange(0, 6)
+    if kind == "bitmap":
+        return PracticeQuestion(
+            "characters",
+            (
+                "char",
+                "bitmap",
+                ch,
+                "--at",
+                str(x),
+                str(y),
+                *(("--scale", str(scale)) if scale > 1 else ()),
+            ),
+            f"Draw the character {ch} from its 5 x 7 bitmap with its bottom-left corner at "
+            f"({x}, {y}){f', scaled by {scale}' if scale > 1 else ''}: give the pixels of each set bit.",
+            6,
+            frozenset({kind}),
+        )
+    return PracticeQuestion(
+        "characters",
+        ("char", "stroke", ch, "--at", str(x), str(y), "--scale", str(scale + 1)),
+        f"Draw the stroke character {ch} at ({x}, {y}), scaled by {scale + 1}, each stroke by "
+        "Bresenham's line algorithm: give each stroke's end points and pixels.",
+        6,
+        frozenset({kind}),
+    )
+
+
+def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    """``kind``: ``octant 2, tie`` (a tie: d = 0 at some step)."""
+    from .practice import _line
+
+    q = _line(rng, difficulty, (int(kind.split()[1].rstrip(",")), kind.endswith("tie")))
+    algo = q.argv.index("--algo") + 1
+    x1, y1, x2, y2 = q.argv[1:5]
+    return PracticeQuestion(
+        "midpoint-line",
+        (*q.argv[:algo], "midpoint"),
+        f"Scan-convert the line from ({x1}, {y1}) to ({x2}, {y2}) with the midpoint line "
+        "algorithm (d = F(M) at the midpoint): give d, the pixel chosen and the next d at "
+        "each step.",
+        q.marks,
+        (q.features - {"dda", "bresenham"}) | {"midpoint", kind},
+    )
+
+
 KINDS: dict[str, list[Any]] = {
     "dither": ["ordered", "floyd-steinberg", "threshold"],
     "inside": [0, 1, 2, 3],
@@ -146,9 +241,33 @@ KINDS: dict[str, list[Any]] = {
         "cyrus-beck",
         "midpoint-subdivision",
         "weiler-atherton",
+        "nicholl-lee-nicholl",
     ],
     "framebuffer": ["load", "lut", "refresh", "interlaced"],
+    "attributes": ["dashed", "replication", "dotted", "brush"],
+    "characters": ["bitmap", "stroke", "storage"],
+    "midpoint-line": [
+        f"octant {o}{', tie' if tie else ''}"
+        for o, tie in (
+            (1, False),
+            (2, True),
+            (8, False),
+            (7, True),
+            (3, True),
+            (4, False),
+            (5, True),
+            (6, False),
+        )
+    ],  # a tie: d = 0 at some step (the tie convention decides)
 }
 """Each topic's kinds, walked in a seeded rotation."""
 
-MAKERS = {"dither": dither, "inside": inside, "clip": clipping, "framebuffer": framebuffer}
+MAKERS = {
+    "dither": dither,
+    "inside": inside,
+    "clip": clipping,
+    "framebuffer": framebuffer,
+    "attributes": attributes,
+    "characters": characters,
+    "midpoint-line": midpoint_line,
+}

@@ -109,8 +109,7 @@ def check(
     check_paths([("ANSWER", answer), ("--batch", batch)], [("--output", output)])
     brief = own.get("brief", brief)
     exact = own.get("exact", exact)
-    from ..answers.marking import mark, marking_solution
-    from ..core.student_table import read_table
+    from ..answers.marking import mark_file, marking_solution
 
     try:
         solution = solve(question)
@@ -119,7 +118,7 @@ def check(
             _batch(Path(batch), solution, text, fmt, output)
             return
         assert answer is not None
-        marking = mark(read_table(answer), solution)
+        marking = mark_file(answer, solution)
         result = marking_solution(marking, solution, answer.name, text)
     except ValueError as err:
         fail(" ".join(str(err).split()))
@@ -140,7 +139,7 @@ def _shown(name: str) -> str:
 
 
 def _mark_one(
-    path: Path, solution: Solution, mark: Any, read_table: Any
+    path: Path, solution: Solution, mark_file: Any
 ) -> tuple[str, int | None, int | None, str, str]:
     """One file's row of the score sheet; a file that cannot be marked gets a row saying why
     (the rest of the class is still marked)."""
@@ -149,7 +148,7 @@ def _mark_one(
         why = "a link (links are not followed)" if path.is_symlink() else "not a regular file"
         return (name, None, None, f"not marked: {why}", "")
     try:
-        m = mark(read_table(path), solution)
+        m = mark_file(path, solution)
     except ValueError as err:
         message = _shown(" ".join(str(err).split()))
         return (name, None, None, f"not marked: {message}", "")
@@ -161,8 +160,7 @@ def _batch(
 ) -> None:
     """Mark every file of ``folder`` and write one row each (exit 0 whatever the marks): CSV
     (the default, also on a terminal), JSON, or a table in the text formats."""
-    from ..answers.marking import mark
-    from ..core.student_table import read_table
+    from ..answers.marking import mark_file
     from ..render.budget import check_batch
     from ..render.marking import batch_csv, batch_json
 
@@ -175,7 +173,7 @@ def _batch(
         fail(f"--batch {folder}: no files to mark")
     sizes = [p.lstat().st_size for p in files if _regular(p)]
     check_batch(sizes, solution)  # before any file is read
-    results = [_mark_one(path, solution, mark, read_table) for path in files]
+    results = [_mark_one(path, solution, mark_file) for path in files]
     if chosen not in (Format.auto, Format.csv, Format.json):  # a table to read, not a sheet
         from ..answers.marking import batch_solution
 

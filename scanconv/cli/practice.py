@@ -50,6 +50,9 @@ class Topic(str, Enum):
     inside = "inside"
     clip = "clip"
     framebuffer = "framebuffer"
+    attributes = "attributes"
+    characters = "characters"
+    midpoint_line = "midpoint-line"
     all = "all"
 
 

@@ -169,7 +169,8 @@ def clip_line(
 ) -> Solution:
     """Clip the segment (X1, Y1)-(X2, Y2) against the window: region codes (T B R L) and one
     row per iteration (Cohen-Sutherland), the p_k, q_k table and u1, u2 (Liang-Barsky), t per
-    edge (Cyrus-Beck) or each midpoint and its outcode (midpoint subdivision).
+    edge (Cyrus-Beck), each midpoint and its outcode (midpoint subdivision) or P1's region, the
+    slope tests against the rays to the corners and P2's region (Nicholl-Lee-Nicholl).
 
     Example: scanconv clip line 7 9 11 4 --window 4 4 10 8 --method cohen-sutherland
     """

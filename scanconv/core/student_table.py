@@ -94,6 +94,18 @@ class StudentTable(NamedTuple):
 
 def read_table(path: Path) -> StudentTable:
     """Read and parse the student file at ``path`` (see :func:`parse_text`)."""
+    return parse_bytes(_read(path), path.name, path.suffix.lower())
+
+
+def read_raw(path: Path) -> tuple[list[str], list[tuple[str, list[Any]]]]:
+    """The student file's headings and rows as written (cells unread), for a table marked by
+    its own columns (:mod:`scanconv.answers.marking_table`); the same checks as
+    :func:`read_table`."""
+    name = path.name
+    return raw_text(_decode(_read(path), name), name, path.suffix.lower())
+
+
+def _read(path: Path) -> bytes:
     name = path.name
     try:
         size = os.stat(path).st_size
@@ -106,10 +118,9 @@ def read_table(path: Path) -> StudentTable:
                 "answer",
             )
         with open(path, "rb") as f:
-            data = f.read(MAX_TABLE_BYTES + 1)
+            return f.read(MAX_TABLE_BYTES + 1)
     except OSError as err:
         raise InputError(f"{name}: cannot read: {err.strerror or err}", "answer") from None
-    return parse_bytes(data, name, path.suffix.lower())
 
 
 def parse_bytes(data: bytes, name: str, suffix: str = "") -> StudentTable:
@@ -120,12 +131,16 @@ def parse_bytes(data: bytes, name: str, suffix: str = "") -> StudentTable:
     ...
     scanconv.core.checks.InputError: a.csv: a binary file, not a table
     """
+    return parse_text(_decode(data, name), name, suffix)
+
+
+def _decode(data: bytes, name: str) -> str:
     if len(data) > MAX_TABLE_BYTES:
         raise InputError(f"{name}: larger than {MAX_TABLE_BYTES} bytes", "answer")
     if b"\x00" in data[:8192]:
         raise InputError(f"{name}: a binary file, not a table", "answer")
     try:
-        text = data.decode("utf-8-sig")
+        return data.decode("utf-8-sig")
     except UnicodeDecodeError as err:
         line = data[: err.start].count(b"\n") + 1
         byte = data[err.start]
@@ -133,27 +148,29 @@ def parse_bytes(data: bytes, name: str, suffix: str = "") -> StudentTable:
             f"{name}, line {line}: not UTF-8 text (byte 0x{byte:02x}); save the file as UTF-8",
             "answer",
         ) from None
-    return parse_text(text, name, suffix)
 
 
 def parse_text(text: str, name: str, suffix: str = "") -> StudentTable:
     """Parse a table: JSON, a Markdown pipe table or CSV (by ``suffix``, else by its look)."""
+    return _build(name, *raw_text(text, name, suffix))
+
+
+def raw_text(text: str, name: str, suffix: str = "") -> tuple[list[str], list[RawRow]]:
+    """The headings and rows of a table in any of the formats (see :func:`parse_text`)."""
     if not text.strip():
         raise InputError(f"{name}: the file is empty", "answer")
     start = text.lstrip()[:1]
     if suffix == ".json" or (suffix not in (".csv", ".md", ".markdown") and start in "[{"):
-        headers, rows = _json_rows(text, name)
-    elif suffix in (".md", ".markdown") or (
+        return _json_rows(text, name)
+    if suffix in (".md", ".markdown") or (
         suffix not in (".csv", ".tsv", ".txt") and _SEPARATOR.search(text)
     ):
-        headers, rows = _markdown_rows(text, name)
-    elif suffix not in (".csv", ".tsv") and _RULE.search(text):
-        headers, rows = _plain_rows(text, name)
-    elif suffix not in (".csv", ".tsv", ".txt") and re.search(r"^\s*\|", text, re.M):
-        headers, rows = _markdown_rows(text, name)
-    else:
-        headers, rows = _csv_rows(text, name)
-    return _build(name, headers, rows)
+        return _markdown_rows(text, name)
+    if suffix not in (".csv", ".tsv") and _RULE.search(text):
+        return _plain_rows(text, name)
+    if suffix not in (".csv", ".tsv", ".txt") and re.search(r"^\s*\|", text, re.M):
+        return _markdown_rows(text, name)
+    return _csv_rows(text, name)
 
 
 # --- the three formats ------------------------------------------------------------------------

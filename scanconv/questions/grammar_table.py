@@ -259,7 +259,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('x2', (), 'number', required=True, metavar='x2'),
         Param('y2', (), 'number', required=True, metavar='y2'),
         Param('window', ('--window', '-w'), 'number', nargs=4, required=True),
-        Param('method', ('--method', '-m'), 'choice', default='cohen-sutherland', choices=('cohen-sutherland', 'liang-barsky', 'cyrus-beck', 'midpoint-subdivision')),
+        Param('method', ('--method', '-m'), 'choice', default='cohen-sutherland', choices=('cohen-sutherland', 'liang-barsky', 'cyrus-beck', 'midpoint-subdivision', 'nicholl-lee-nicholl')),
         Param('normals', ('--normals',), 'choice', choices=('outward', 'inward')),
         Param('ends', ('--ends',), 'choice', choices=('exact', 'truncated')),
         Param('midpoint', ('--midpoint',), 'choice', choices=('rounded', 'floor', 'exact')),
@@ -333,7 +333,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('window', ('--window', '-w'), 'number', nargs=4, required=True),
         Param('viewport', ('--viewport',), 'number', nargs=4, required=True),
         Param('algo', ('--algo', '-a'), 'choice', default='bresenham', choices=('bresenham', 'dda', 'basic', 'wu', 'midpoint')),
-        Param('clip', ('--clip',), 'choice', default='cohen-sutherland', choices=('cohen-sutherland', 'liang-barsky', 'cyrus-beck', 'midpoint-subdivision')),
+        Param('clip', ('--clip',), 'choice', default='cohen-sutherland', choices=('cohen-sutherland', 'liang-barsky', 'cyrus-beck', 'midpoint-subdivision', 'nicholl-lee-nicholl')),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('x1', 'y1', 'x2', 'y2', 'window', 'viewport', 'algo', 'clip'), ignore_unknown=True),
     ('pipeline', 'polygon'): Spec(('pipeline', 'polygon'), 'pipeline_polygon', (

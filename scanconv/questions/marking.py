@@ -63,7 +63,9 @@ def marking_answer(line: CommandLine) -> Solution:
         solution = solve(line)
     except ValueError as err:
         raise InputError(f"question: {err}", getattr(err, "param", None)) from None
-    if not solution.columns:
+    from ..answers.marking_table import table_model_for
+
+    if not solution.columns and table_model_for(solution) is None:
         raise InputError(f"the question {' '.join(line.words[:3])!r} has no step table to mark")
     return solution
 
@@ -79,9 +81,8 @@ def check(answer: str | os.PathLike[str], question: str | Sequence[str] | Soluti
     >>> m.data["score"], m.data["out_of"]
     (7, 8)
     """
-    from ..answers.marking import mark, marking_solution
+    from ..answers.marking import mark_file, marking_solution
     from ..core.records import Solution
-    from ..core.student_table import read_table
     from ..display import Answer
 
     if isinstance(question, Solution):
@@ -90,4 +91,4 @@ def check(answer: str | os.PathLike[str], question: str | Sequence[str] | Soluti
         words = split(question)
         solution, text = marking_question(words), " ".join(words)
     path = Path(answer)
-    return Answer.of(marking_solution(mark(read_table(path), solution), solution, path.name, text))
+    return Answer.of(marking_solution(mark_file(path, solution), solution, path.name, text))

@@ -225,6 +225,36 @@ def midpoint_subdivision() -> Solution:
     )
 
 
+def nicholl_lee_nicholl() -> Solution:
+    from ..nll import nll_solution
+
+    return answer(
+        "nicholl-lee-nicholl",
+        "Explain Nicholl-Lee-Nicholl line clipping",
+        definition=(
+            "Nicholl-Lee-Nicholl (NLL) clips a line against a rectangular window by first "
+            "finding the region of $P_1$ (inside, an edge region or a corner region) and then "
+            "the region of $P_2$ among the regions cut out by the rays from $P_1$ through the "
+            "window's four corners, found by comparing the slope of $P_1P_2$ with the rays' "
+            "slopes."
+        ),
+        paragraphs=(
+            "The region of $P_2$ names the edges the line crosses (LT: in through the left edge, "
+            "out through the top), so each intersection is computed once, never an "
+            "intersection outside the window as Cohen-Sutherland may compute.",
+            "It needs fewer comparisons and divisions than Cohen-Sutherland and Liang-Barsky, "
+            "but it works in two dimensions only: its regions do not extend to 3D.",
+        ),
+        examples=(
+            embed(
+                "the line (30, 60) to (60, 25) and the window (10, 10)-(50, 50) (scanconv clip "
+                "line 30 60 60 25 --window 10 10 50 50 --method nicholl-lee-nicholl)",
+                nll_solution(30, 60, 60, 25, (10, 10, 50, 50)),
+            ),
+        ),
+    )
+
+
 def midpoint_line() -> Solution:
     from ..line import line_solution
 
@@ -474,6 +504,7 @@ TOPICS = (
     _topic(
         "midpoint-subdivision", "Explain midpoint subdivision line clipping", midpoint_subdivision
     ),
+    _topic("nicholl-lee-nicholl", "Explain Nicholl-Lee-Nicholl line clipping", nicholl_lee_nicholl),
     _topic("midpoint-line", "Derive the midpoint line algorithm", midpoint_line),
     _topic("line-attributes", "Explain line attributes: line type and line width", line_attributes),
     _topic(
