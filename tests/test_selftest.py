@@ -298,12 +298,15 @@ def test_every_method_with_a_marking_model_has_the_test_and_no_other_of_its_comm
 
     with_model = set()
     for record in METHODS.values():
+        # a walk's model (a pixel from a decision on p); a table's own model (clipping,
+        # dithering, ...: scanconv.answers.table_models) marks columns, not steps to test
+        walk = (record.model or "").startswith("scanconv.answers.models:")
         if record.command not in ARGV:
-            assert record.model is None, record.key  # a new model: give it a page here
+            assert not walk, record.key  # a new model: give it a page here
             continue
         _, data = page_data(*ARGV[record.command](record.name))
-        assert (data is not None) == (record.model is not None), record.key
-        if record.model is not None:
+        assert (data is not None) == walk, record.key
+        if walk:
             with_model.add(record.key)
     assert with_model == {
         "line/dda", "line/bresenham", "line/midpoint", "circle/midpoint", "circle/bresenham",
