@@ -610,11 +610,12 @@ FILL_VOCABULARY = {
         ),
         too_few=(("1", "2", "3"), "Missing argument"),
         too_many=(("1", "2", "3", "4", "5"), "unexpected extra argument"),
-        wrong_type=(("0", "0", "8.5", "3", "--method", "wu"), "integer"),
+        wrong_type=(("0", "0", "8", "3", "--samples", "2.5"), "integer"),
         small={
             "--method": ("area", "supersample", "wu"),
             "--samples": SMALL_INT,
             "--levels": ("2", "4", "8"),
+            "--ends": ("full", "coverage"),
         },
         positional=COORD,
     ),

@@ -12,6 +12,7 @@ from .values import (
     PointsLike,
     _choice,
     _flat,
+    _maybe,
     _number,
     _numbers,
     _pair,
@@ -80,9 +81,12 @@ def antialias_line(
     method: AAMethod | str = "area",
     samples: NumberLike = 4,
     levels: NumberLike = 8,
+    ends: str | None = None,
 ) -> Solution:
     """An anti-aliased line (``scanconv antialias line``): ``method`` ``"wu"`` (Xiaolin Wu's
     algorithm), ``"area"`` or ``"supersample"`` (``samples`` x ``samples`` per pixel).
+    ``ends`` (Wu only): ``"full"`` (the default) or ``"coverage"`` (the end columns weighted
+    by the part of them the line covers, as Wikipedia's pseudocode).
 
     >>> [s.extra[4] for s in antialias_line(0, 0, 4, 1, method="wu").steps()]
     [1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4), 1]
@@ -95,6 +99,7 @@ def antialias_line(
         method=_choice(method, "method"),
         samples=_whole(samples, "samples"),
         levels=_whole(levels, "levels"),
+        ends=_maybe(ends, "ends"),
     )
 
 

@@ -173,6 +173,16 @@ KNOBS: dict[str, Knob] = {
         "last",
         ("circle/bresenham",),
     ),
+    "ends": Knob(
+        "ends",
+        {
+            "full": "Wu's end points drawn at full intensity (Wu 1991, Abrash 1992)",
+            "coverage": "Wu's end columns weighted by the part of them the line covers, "
+            "xgap = 1 - frac(x1 + 1/2) and frac(x2 + 1/2) (Wikipedia's pseudocode)",
+        },
+        "full",
+        ("antialias/wu",),
+    ),
     "update": Knob(
         "update",
         {

@@ -31,6 +31,13 @@ class AAMethod(str, Enum):
     wu = "wu"
 
 
+class WuEnds(str, Enum):
+    """Wu's end points (the ``ends`` convention, :data:`scanconv.algorithms.wu.ENDS`)."""
+
+    full = "full"
+    coverage = "coverage"
+
+
 class FillRule(str, Enum):
     """The fill rules, by the names the API and the CLI (``--rule``) take."""
 

@@ -11,7 +11,7 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.process_choices import AAMethod, FillRule, Order
+from ..algorithms.process_choices import AAMethod, FillRule, Order, WuEnds
 from ..core.records import Solution
 from ..questions import commands
 from .application import _subapp, app
@@ -46,6 +46,14 @@ Method = Annotated[
         "--method",
         "-m",
         help="area: exact covered area; supersample: N x N samples; wu: Wu's line (lines only).",
+    ),
+]
+Ends = Annotated[
+    WuEnds | None,
+    choice(
+        "--ends",
+        help="wu: end points at full intensity (full, the default) or weighted by the part of "
+        "the end column the line covers (coverage, as Wikipedia's pseudocode).",
     ),
 ]
 
@@ -154,13 +162,16 @@ def antialias_line(
     method: Method = AAMethod.area,
     samples: Samples = 4,
     levels: Levels = 8,
+    ends: Ends = None,
 ) -> Solution:
     """An anti-aliased line: Wu's algorithm (the two pixels of each step and their
     intensities), or a one-pixel-wide line by area sampling or supersampling.
 
     Example: scanconv antialias line 0 0 8 3 --method wu
     """
-    return api.antialias_line(x1, y1, x2, y2, method=method, samples=samples, levels=levels)
+    return api.antialias_line(
+        x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends
+    )
 
 
 @antialias_app.command("circle", context_settings=NUMERIC_ARGS)

@@ -370,8 +370,9 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('method', ('--method', '-m'), 'choice', default='area', choices=('area', 'supersample', 'wu')),
         Param('samples', ('--samples', '-n'), 'integer', default=4),
         Param('levels', ('--levels', '-L'), 'integer', default=8),
+        Param('ends', ('--ends',), 'choice', choices=('full', 'coverage')),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
-    ), own=('x1', 'y1', 'x2', 'y2', 'method', 'samples', 'levels'), ignore_unknown=True),
+    ), own=('x1', 'y1', 'x2', 'y2', 'method', 'samples', 'levels', 'ends'), ignore_unknown=True),
     ('antialias', 'circle'): Spec(('antialias', 'circle'), 'antialias_circle', (
         Param('r', (), 'number', required=True, metavar='r'),
         Param('center', ('--center', '-c'), 'number', nargs=2),
