@@ -616,6 +616,8 @@ FILL_VOCABULARY = {
             "--samples": SMALL_INT,
             "--levels": ("2", "4", "8"),
             "--ends": ("full", "coverage"),
+            "--width": ("1", "2", "1/2"),
+            "--across": ("minor", "perpendicular"),
         },
         positional=COORD,
     ),

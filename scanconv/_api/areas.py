@@ -20,7 +20,7 @@ from .values import (
 )
 
 if TYPE_CHECKING:
-    from ..algorithms.process_choices import AAMethod, FillRule, Order
+    from ..algorithms.process_choices import AAMethod, Across, FillRule, Order
     from ..core.records import Solution
 
 
@@ -82,11 +82,19 @@ def antialias_line(
     samples: NumberLike = 4,
     levels: NumberLike = 8,
     ends: str | None = None,
+    width: NumberLike = 1,
+    across: Across | str = "minor",
 ) -> Solution:
     """An anti-aliased line (``scanconv antialias line``): ``method`` ``"wu"`` (Xiaolin Wu's
     algorithm), ``"area"`` or ``"supersample"`` (``samples`` x ``samples`` per pixel).
     ``ends`` (Wu only): ``"full"`` (the default) or ``"coverage"`` (the end columns weighted
-    by the part of them the line covers, as Wikipedia's pseudocode).
+    by the part of them the line covers, as Wikipedia's pseudocode). ``width`` (area and
+    supersample): the line's width w, measured ``across`` the minor axis (``"minor"``, the
+    default) or ``"perpendicular"`` to the line.
+
+    >>> sol = antialias_line(0, 0, 4, 3, width=2, across="perpendicular")
+    >>> sol.derived[-2].text
+    'sum of I = 10 = the exact area of the shape'
 
     >>> [s.extra[4] for s in antialias_line(0, 0, 4, 1, method="wu").steps()]
     [1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4), 1]
@@ -100,6 +108,8 @@ def antialias_line(
         samples=_whole(samples, "samples"),
         levels=_whole(levels, "levels"),
         ends=_maybe(ends, "ends"),
+        width=_number(width, "width"),
+        across=_choice(across, "across"),
     )
 
 

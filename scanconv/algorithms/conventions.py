@@ -183,6 +183,17 @@ KNOBS: dict[str, Knob] = {
         "full",
         ("antialias/wu",),
     ),
+    "across": Knob(
+        "across",
+        {
+            "minor": "a line's width w measured along the minor axis: a parallelogram, each "
+            "column covered by w",
+            "perpendicular": "a line's width w measured perpendicular to it: a rectangle of "
+            "area w·L, its ends cut square",
+        },
+        "minor",
+        ("antialias/area", "antialias/supersample"),
+    ),
     "update": Knob(
         "update",
         {

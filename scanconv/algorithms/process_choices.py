@@ -38,6 +38,14 @@ class WuEnds(str, Enum):
     coverage = "coverage"
 
 
+class Across(str, Enum):
+    """How a line's width is measured (the ``across`` convention,
+    :data:`scanconv.algorithms.coverage.ACROSS`)."""
+
+    minor = "minor"
+    perpendicular = "perpendicular"
+
+
 class FillRule(str, Enum):
     """The fill rules, by the names the API and the CLI (``--rule``) take."""
 

@@ -172,7 +172,7 @@ def line_solution(
                 "the derivation and the pseudocode cover bresenham, dda and basic, not wu",
                 "derive" if derive else "pseudocode",
             )
-        from .antialias import wu_solution
+        from .antialias_wu import wu_solution
 
         return wu_solution(x1, y1, x2, y2)
     sol = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)

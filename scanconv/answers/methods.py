@@ -166,7 +166,7 @@ _LINE = (
         "line",
         "wu",
         "Xiaolin Wu's anti-aliased line",
-        _A + "antialias:wu_solution",
+        _A + "antialias_wu:wu_solution",
         _G + "wu:wu",
         None,
         None,

@@ -11,12 +11,12 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.process_choices import AAMethod, FillRule, Order, WuEnds
+from ..algorithms.process_choices import AAMethod, Across, FillRule, Order, WuEnds
 from ..core.records import Solution
 from ..questions import commands
 from .application import _subapp, app
 from .command import answers
-from .options import NUMERIC_ARGS, Center, Num, Vertices, choice, integer, number
+from .options import NUMERIC_ARGS, Center, Num, Vertices, choice, integer, num_option, number
 
 fill_app = _subapp(
     "fill", "Seed fills from a pixel: boundary fill and flood fill, 4- or 8-connected."
@@ -54,6 +54,24 @@ Ends = Annotated[
         "--ends",
         help="wu: end points at full intensity (full, the default) or weighted by the part of "
         "the end column the line covers (coverage, as Wikipedia's pseudocode).",
+    ),
+]
+
+Width = Annotated[
+    Fraction,
+    num_option(
+        "--width",
+        "-w",
+        help="area, supersample: the line's width w (default 1 pixel).",
+        metavar="W",
+    ),
+]
+AcrossOpt = Annotated[
+    Across,
+    choice(
+        "--across",
+        help="area, supersample: w measured along the minor axis (minor, the default: a "
+        "parallelogram) or perpendicular to the line (a rectangle).",
     ),
 ]
 
@@ -163,6 +181,8 @@ def antialias_line(
     samples: Samples = 4,
     levels: Levels = 8,
     ends: Ends = None,
+    width: Width = Fraction(1),
+    across: AcrossOpt = Across.minor,
 ) -> Solution:
     """An anti-aliased line: Wu's algorithm (the two pixels of each step and their
     intensities), or a one-pixel-wide line by area sampling or supersampling.
@@ -170,8 +190,9 @@ def antialias_line(
     Example: scanconv antialias line 0 0 8 3 --method wu
     """
     return api.antialias_line(
-        x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends
-    )
+        x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends, width=width,
+        across=across,
+    )  # fmt: skip
 
 
 @antialias_app.command("circle", context_settings=NUMERIC_ARGS)

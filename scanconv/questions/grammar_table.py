@@ -371,8 +371,10 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('samples', ('--samples', '-n'), 'integer', default=4),
         Param('levels', ('--levels', '-L'), 'integer', default=8),
         Param('ends', ('--ends',), 'choice', choices=('full', 'coverage')),
+        Param('width', ('--width', '-w'), 'number', default=Fraction(1, 1)),
+        Param('across', ('--across',), 'choice', default='minor', choices=('minor', 'perpendicular')),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
-    ), own=('x1', 'y1', 'x2', 'y2', 'method', 'samples', 'levels', 'ends'), ignore_unknown=True),
+    ), own=('x1', 'y1', 'x2', 'y2', 'method', 'samples', 'levels', 'ends', 'width', 'across'), ignore_unknown=True),
     ('antialias', 'circle'): Spec(('antialias', 'circle'), 'antialias_circle', (
         Param('r', (), 'number', required=True, metavar='r'),
         Param('center', ('--center', '-c'), 'number', nargs=2),

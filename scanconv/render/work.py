@@ -136,7 +136,10 @@ def _aa_line(a: Args) -> Work:
     if _choice(a, "method", "area") == "wu":  # two pixels a column, both ends a little more
         return Work("rows", 2 * rows + 4, None, "antialias_line/wu", param)
     x1, y1, x2, y2 = (_num(a, k) for k in ("x1", "y1", "x2", "y2"))
-    return _aa_cells(a, "antialias_line", param, abs(x2 - x1), abs(y2 - y1))
+    # a strip wider than the one pixel the margin of _aa_cells allows for widens the box
+    w = abs(_num(a, "width")) - 1 if a.get("width") is not None else Fraction(0)
+    w = w if w > 0 else Fraction(0)
+    return _aa_cells(a, "antialias_line", param, abs(x2 - x1) + w, abs(y2 - y1) + w)
 
 
 def _aa_cells(a: Args, command: str, param: str, width: Fraction, height: Fraction) -> Work:
