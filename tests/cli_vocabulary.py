@@ -612,10 +612,11 @@ FILL_VOCABULARY = {
         too_many=(("1", "2", "3", "4", "5"), "unexpected extra argument"),
         wrong_type=(("0", "0", "8", "3", "--samples", "2.5"), "integer"),
         small={
-            "--method": ("area", "supersample", "wu"),
+            "--method": ("area", "supersample", "wu", "subpixel"),
             "--samples": SMALL_INT,
             "--levels": ("2", "4", "8"),
             "--ends": ("full", "coverage"),
+            "--subgrid": ("span", "centre"),
             "--width": ("1", "2", "1/2"),
             "--across": ("minor", "perpendicular"),
         },

@@ -20,7 +20,7 @@ from .values import (
 )
 
 if TYPE_CHECKING:
-    from ..algorithms.process_choices import AAMethod, Across, FillRule, Order
+    from ..algorithms.process_choices import AAMethod, Across, FillRule, Order, Subgrid
     from ..core.records import Solution
 
 
@@ -79,18 +79,21 @@ def antialias_line(
     x2: NumberLike,
     y2: NumberLike,
     method: AAMethod | str = "area",
-    samples: NumberLike = 4,
+    samples: NumberLike | None = None,
     levels: NumberLike = 8,
     ends: str | None = None,
     width: NumberLike = 1,
     across: Across | str = "minor",
+    subgrid: Subgrid | str | None = None,
 ) -> Solution:
     """An anti-aliased line (``scanconv antialias line``): ``method`` ``"wu"`` (Xiaolin Wu's
     algorithm), ``"area"`` or ``"supersample"`` (``samples`` x ``samples`` per pixel).
     ``ends`` (Wu only): ``"full"`` (the default) or ``"coverage"`` (the end columns weighted
     by the part of them the line covers, as Wikipedia's pseudocode). ``width`` (area and
     supersample): the line's width w, measured ``across`` the minor axis (``"minor"``, the
-    default) or ``"perpendicular"`` to the line.
+    default) or ``"perpendicular"`` to the line. ``"subpixel"``: Hearn & Baker's
+    supersampling, Bresenham on the ``samples x samples`` sub-pixel grid (default 3; the
+    ``supersample`` default is 4), its ``subgrid`` ``"span"`` (the default) or ``"centre"``.
 
     >>> sol = antialias_line(0, 0, 4, 3, width=2, across="perpendicular")
     >>> sol.derived[-2].text
@@ -105,11 +108,12 @@ def antialias_line(
         "line",
         _numbers(x1=x1, y1=y1, x2=x2, y2=y2),
         method=_choice(method, "method"),
-        samples=_whole(samples, "samples"),
+        samples=None if samples is None else _whole(samples, "samples"),
         levels=_whole(levels, "levels"),
         ends=_maybe(ends, "ends"),
         width=_number(width, "width"),
         across=_choice(across, "across"),
+        subgrid=_maybe(subgrid, "subgrid"),
     )
 
 

@@ -194,6 +194,17 @@ KNOBS: dict[str, Knob] = {
         "minor",
         ("antialias/area", "antialias/supersample"),
     ),
+    "subgrid": Knob(
+        "subgrid",
+        {
+            "span": "the sub-pixel line from P1's first sub-pixel over every sub-column of the "
+            "end pixels, with the line's slope (the taught form of Hearn & Baker's figure)",
+            "centre": "the sub-pixel line between the end pixels' centre sub-pixels: the same "
+            "line (n odd)",
+        },
+        "span",
+        ("antialias/subpixel",),
+    ),
     "update": Knob(
         "update",
         {

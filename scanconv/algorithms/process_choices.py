@@ -29,6 +29,7 @@ class AAMethod(str, Enum):
     area = "area"
     supersample = "supersample"
     wu = "wu"
+    subpixel = "subpixel"
 
 
 class WuEnds(str, Enum):
@@ -44,6 +45,14 @@ class Across(str, Enum):
 
     minor = "minor"
     perpendicular = "perpendicular"
+
+
+class Subgrid(str, Enum):
+    """Where Hearn & Baker's sub-pixel line runs (the ``subgrid`` convention,
+    :data:`scanconv.algorithms.subpixel.SUBGRIDS`)."""
+
+    span = "span"
+    centre = "centre"
 
 
 class FillRule(str, Enum):

@@ -221,22 +221,44 @@ def antialias_solution(
     params: Sequence[Number],
     *,
     method: str = "area",
-    samples: int = 4,
+    samples: int | None = None,
     levels: int = 8,
     rule_name: str = "even-odd",
     ends: str | None = None,
     width: Number = 1,
     across: str = "minor",
+    subgrid: str | None = None,
 ) -> Solution:
     """Area sampling (``method="area"``) or ``samples x samples`` supersampling of a
     ``line`` (``x1 y1 x2 y2``), a ``circle`` (``r [xc yc]``) or a ``polygon`` (``x1 y1 ...``);
-    ``method="wu"``: Wu's line (:func:`wu_solution`, with its ``ends`` convention).
+    ``method="wu"``: Wu's line (:func:`wu_solution`, with its ``ends`` convention);
+    ``method="subpixel"``: Hearn & Baker's supersampling of a line, Bresenham on the
+    ``samples x samples`` sub-pixel grid (3 by default; ``subgrid`` convention). ``samples``
+    defaults to 4 for ``supersample``.
 
     >>> sol = antialias_solution("polygon", [0, 0, 2, 0, 2, 1, 0, 1])
     >>> [q.text for q in sol.derived][-2]
     'sum of I = 2 = the exact area of the shape'
     """
     L = check_levels(levels)
+    if method == "subpixel":
+        if shape != "line":
+            raise InputError(f"subpixel supersamples lines only, not a {shape}", "method")
+        if ends is not None or (width, across) != (1, "minor"):
+            raise InputError(
+                "the sub-pixel line is Bresenham's: no ends, width or across", "method"
+            )
+        from .subpixel import subpixel_solution
+
+        return subpixel_solution(
+            *_line_params(params), n=3 if samples is None else samples, levels=L,
+            subgrid=subgrid or "span",
+        )  # fmt: skip
+    if subgrid is not None:
+        raise InputError(
+            f"the subgrid convention is the subpixel method's, not {method}'s", "subgrid"
+        )
+    samples = 4 if samples is None else samples
     if method == "wu":
         if shape != "line":
             raise InputError(f"wu draws lines only, not a {shape}", "method")
@@ -250,7 +272,9 @@ def antialias_solution(
             f"unknown across {across!r} (choose from {', '.join(cov.ACROSS)})", "across"
         )
     if method not in ("area", "supersample"):
-        raise InputError(f"unknown method {method!r} (choose from area, supersample, wu)", "method")
+        raise InputError(
+            f"unknown method {method!r} (choose from area, supersample, wu, subpixel)", "method"
+        )
     n = cov.check_samples(samples) if method == "supersample" else 1
     check_rule(rule_name)
     if shape not in ("line", *_REGIONS):

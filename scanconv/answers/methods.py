@@ -318,6 +318,8 @@ _PROCESS = (
            _G + "coverage:supersample_coverage"),
     _plain("antialias", "wu", "Xiaolin Wu's anti-aliased line", _A + "antialias:antialias_solution",
            _G + "wu:wu", raster="scanconv.raster:line_aa"),
+    _plain("antialias", "subpixel", "supersampling on a sub-pixel grid (Hearn & Baker)",
+           _A + "antialias:antialias_solution", _G + "subpixel:walk"),
     _plain("clip", "cohen-sutherland", "Cohen-Sutherland line clipping",
            _A + "clip:clip_line_solution", _G + "clipping:cohen_sutherland"),
     _plain("clip", "liang-barsky", "Liang-Barsky line clipping", _A + "clip:clip_line_solution",

@@ -11,7 +11,7 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.process_choices import AAMethod, Across, FillRule, Order, WuEnds
+from ..algorithms.process_choices import AAMethod, Across, FillRule, Order, Subgrid, WuEnds
 from ..core.records import Solution
 from ..questions import commands
 from .application import _subapp, app
@@ -45,7 +45,8 @@ Method = Annotated[
     choice(
         "--method",
         "-m",
-        help="area: exact covered area; supersample: N x N samples; wu: Wu's line (lines only).",
+        help="area: exact covered area; supersample: N x N samples; wu: Wu's line; subpixel: "
+        "Hearn & Baker's Bresenham on sub-pixels (wu and subpixel: lines only).",
     ),
 ]
 Ends = Annotated[
@@ -72,6 +73,26 @@ AcrossOpt = Annotated[
         "--across",
         help="area, supersample: w measured along the minor axis (minor, the default: a "
         "parallelogram) or perpendicular to the line (a rectangle).",
+    ),
+]
+SubgridOpt = Annotated[
+    Subgrid | None,
+    choice(
+        "--subgrid",
+        help="subpixel: the sub-pixel line from P1's first sub-pixel over every sub-column of "
+        "the end pixels (span, the default) or between the end pixels' centre sub-pixels "
+        "(centre).",
+    ),
+]
+LineSamples = Annotated[
+    int | None,
+    typer.Option(
+        "--samples",
+        "-n",
+        parser=integer,
+        help="N x N samples (supersample, 1-16, default 4) or sub-pixels (subpixel, default 3) "
+        "per pixel.",
+        show_default=False,
     ),
 ]
 
@@ -178,20 +199,22 @@ def antialias_line(
     x2: Num,
     y2: Num,
     method: Method = AAMethod.area,
-    samples: Samples = 4,
+    samples: LineSamples = None,
     levels: Levels = 8,
     ends: Ends = None,
     width: Width = Fraction(1),
     across: AcrossOpt = Across.minor,
+    subgrid: SubgridOpt = None,
 ) -> Solution:
     """An anti-aliased line: Wu's algorithm (the two pixels of each step and their
-    intensities), or a one-pixel-wide line by area sampling or supersampling.
+    intensities), a line w wide by area sampling or supersampling, or Hearn & Baker's
+    supersampling (Bresenham on a 3 x 3 sub-pixel grid, the sub-pixels counted per pixel).
 
     Example: scanconv antialias line 0 0 8 3 --method wu
     """
     return api.antialias_line(
         x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends, width=width,
-        across=across,
+        across=across, subgrid=subgrid,
     )  # fmt: skip
 
 
