@@ -146,3 +146,18 @@ def test_the_budget_counts_the_width():
     assert narrow is not None and wide is not None and wide.rows > narrow.rows
     rows = len(list(api.antialias_line(0, 0, 40, 0, width=20).tables[0].rows()))
     assert rows <= wide.rows
+
+
+def test_a_question_file_takes_every_new_option(tmp_path):
+    questions = tmp_path / "aa.questions"
+    questions.write_text(
+        "antialias line 0 0 4 3 --across perpendicular --width 2\n"
+        "antialias line 0 1 10 2 --method wu --ends coverage\n"
+        "antialias line 0 0 2 1 --method subpixel --subgrid centre\n",
+        encoding="utf-8",
+    )
+    r = run("sheet", str(questions), "-f", "json")
+    assert r.code == 0, r.err
+    answers = [q["answer"] for q in json.loads(r.out)["questions"]]
+    assert [a["algorithm"] for a in answers] == ["area", "wu", "subpixel"]
+    assert answers[0]["conventions"] == {"across": "perpendicular"}
