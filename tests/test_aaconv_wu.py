@@ -170,3 +170,13 @@ def test_ends_with_another_method_is_refused():
     assert r.code == 2 and not r.out and "ends" in r.err and len(r.err.splitlines()) == 1
     r = run("antialias", "line", "0", "0", "5", "2", "--method", "wu", "--ends", "half")
     assert r.code == 2 and not r.out
+
+
+def test_line_algo_wu_takes_the_ends_convention_too():
+    line = json.loads(run("line", "0", "1", "10", "2", "--algo", "wu", "--ends", "coverage",
+                          "-f", "json").out)  # fmt: skip
+    aa = json.loads(run("antialias", "line", "0", "1", "10", "2", "--method", "wu", "--ends",
+                        "coverage", "-f", "json").out)  # fmt: skip
+    assert line["steps"] == aa["steps"] and line["conventions"] == {"ends": "coverage"}
+    r = run("line", "0", "1", "10", "2", "--ends", "coverage")
+    assert r.code == 2 and not r.out and "ends" in r.err

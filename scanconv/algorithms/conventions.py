@@ -181,7 +181,7 @@ KNOBS: dict[str, Knob] = {
             "xgap = 1 - frac(x1 + 1/2) and frac(x2 + 1/2) (Wikipedia's pseudocode)",
         },
         "full",
-        ("antialias/wu",),
+        ("antialias/wu", "line/wu"),
     ),
     "across": Knob(
         "across",

@@ -5,6 +5,19 @@ from __future__ import annotations
 
 from enum import Enum
 
+from .choices import WuEnds
+
+__all__ = [
+    "AAMethod",
+    "Across",
+    "FillRule",
+    "LineClipMethod",
+    "Order",
+    "PolygonClipMethod",
+    "Subgrid",
+    "WuEnds",
+]  # WuEnds lives with the line's choices (line --algo wu takes it)
+
 
 class LineClipMethod(str, Enum):
     """The line clipping methods, by the names the API and the CLI (``--method``) take."""
@@ -30,13 +43,6 @@ class AAMethod(str, Enum):
     supersample = "supersample"
     wu = "wu"
     subpixel = "subpixel"
-
-
-class WuEnds(str, Enum):
-    """Wu's end points (the ``ends`` convention, :data:`scanconv.algorithms.wu.ENDS`)."""
-
-    full = "full"
-    coverage = "coverage"
 
 
 class Across(str, Enum):
