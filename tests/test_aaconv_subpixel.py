@@ -4,6 +4,7 @@ published worked examples, Hearn & Baker's own description, and independent comp
 
 from __future__ import annotations
 
+import json
 import math
 from fractions import Fraction as F
 
@@ -141,3 +142,20 @@ def test_the_budget_bounds_the_rows():
     work = estimate("antialias_line", {"x1": 0, "y1": 0, "x2": 40, "y2": 13, "method": "subpixel"})
     sol = api.antialias_line(0, 0, 40, 13, method="subpixel")
     assert work is not None and len(list(sol.steps())) <= work.rows <= len(list(sol.steps())) + 3
+
+
+def test_check_marks_a_slip_in_the_sub_pixel_decision_table(tmp_path):
+    table = run("antialias", "line", "0", "0", "2", "1", "--method", "subpixel", "-f", "csv").out
+    rows = table.splitlines()
+    head = rows[0].split(",")
+    fourth = rows[4].split(",")
+    fourth[head.index("p")] = "8"  # a slip: p_3 = 0 + 8 - 16 = -8 written as 8
+    rows[4] = ",".join(fourth)
+    student = tmp_path / "student.csv"
+    student.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    r = run("check", str(student), "--", "antialias", "line", "0", "0", "2", "1", "--method",
+            "subpixel", "-f", "json")  # fmt: skip
+    assert r.code == 0, r.err
+    marked = json.loads(r.out)
+    assert marked["derived"]["score"] == "8/9"
+    assert any("Row 4" in n and "should be -8, not 8" in n for n in marked["notes"])
