@@ -617,6 +617,7 @@ FILL_VOCABULARY = {
             "--levels": ("2", "4", "8"),
             "--ends": ("full", "coverage"),
             "--subgrid": ("span", "centre"),
+            "--divide": ("n", "n2"),
             "--width": ("1", "2", "1/2"),
             "--across": ("minor", "perpendicular"),
         },

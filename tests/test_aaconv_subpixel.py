@@ -78,6 +78,9 @@ def test_centre_walk_is_bresenham_on_the_scaled_line(x1, y1, x2, y2, n):
         brute[(u // n, v // n)] = brute.get((u // n, v // n), 0) + 1
     sol = api.antialias_line(x1, y1, x2, y2, method="subpixel", samples=n, subgrid="centre")
     assert intensities(sol) == {p: F(k, n) for p, k in brute.items()}
+    nine = api.antialias_line(x1, y1, x2, y2, method="subpixel", samples=n, subgrid="centre",
+                              divide="n2")  # fmt: skip
+    assert intensities(nine) == {p: F(k, n * n) for p, k in brute.items()}  # count / n²
 
 
 @settings(deadline=None, max_examples=150)
@@ -121,6 +124,7 @@ def test_span_walk_is_the_nearest_sub_row_and_fills_every_sub_column(x1, y1, x2,
             "ends",
         ),
         (("antialias", "line", "0", "0", "4", "1", "--subgrid", "span"), "subgrid"),
+        (("antialias", "line", "0", "0", "4", "1", "--divide", "n2"), "divide"),
         (("antialias", "line", "0", "0", "20000", "1", "--method", "subpixel"), "10,000"),
         (("antialias", "line", "0", "0", "4.5", "1", "--method", "subpixel"), "integer"),
     ],
@@ -130,10 +134,12 @@ def test_bad_input_is_one_line_and_exit_2(args, word):
     assert r.code == 2 and not r.out and word in r.err and len(r.err.splitlines()) == 1
 
 
-def test_every_answer_names_its_subgrid():
+def test_every_answer_names_its_subgrid_and_divide():
     for subgrid, word in ((None, "subgrid = span, the default"), ("centre", "subgrid = centre")):
         sol = api.antialias_line(0, 0, 6, 2, method="subpixel", subgrid=subgrid)
-        assert word in sol.notes[0]
+        assert word in sol.notes[0] and "divide = n, the default" in sol.notes[1]
+    sol = api.antialias_line(0, 0, 6, 2, method="subpixel", divide="n2")
+    assert "divide = n2" in sol.notes[1] and sol.tables[0].columns[2].text == "I = c / 9"
 
 
 def test_the_budget_bounds_the_rows():

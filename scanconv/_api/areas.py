@@ -20,7 +20,7 @@ from .values import (
 )
 
 if TYPE_CHECKING:
-    from ..algorithms.process_choices import AAMethod, Across, FillRule, Order, Subgrid
+    from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid
     from ..core.records import Solution
 
 
@@ -85,6 +85,7 @@ def antialias_line(
     width: NumberLike = 1,
     across: Across | str = "minor",
     subgrid: Subgrid | str | None = None,
+    divide: Divide | str | None = None,
 ) -> Solution:
     """An anti-aliased line (``scanconv antialias line``): ``method`` ``"wu"`` (Xiaolin Wu's
     algorithm), ``"area"`` or ``"supersample"`` (``samples`` x ``samples`` per pixel).
@@ -93,7 +94,8 @@ def antialias_line(
     supersample): the line's width w, measured ``across`` the minor axis (``"minor"``, the
     default) or ``"perpendicular"`` to the line. ``"subpixel"``: Hearn & Baker's
     supersampling, Bresenham on the ``samples x samples`` sub-pixel grid (default 3; the
-    ``supersample`` default is 4), its ``subgrid`` ``"span"`` (the default) or ``"centre"``.
+    ``supersample`` default is 4), its ``subgrid`` ``"span"`` (the default) or ``"centre"``,
+    and ``divide``: ``I = c / n`` (``"n"``, the default) or ``c / n²`` (``"n2"``).
 
     >>> sol = antialias_line(0, 0, 4, 3, width=2, across="perpendicular")
     >>> sol.derived[-2].text
@@ -114,6 +116,7 @@ def antialias_line(
         width=_number(width, "width"),
         across=_choice(across, "across"),
         subgrid=_maybe(subgrid, "subgrid"),
+        divide=_maybe(divide, "divide"),
     )
 
 

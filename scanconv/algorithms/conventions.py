@@ -205,6 +205,15 @@ KNOBS: dict[str, Knob] = {
         "span",
         ("antialias/subpixel",),
     ),
+    "divide": Knob(
+        "divide",
+        {
+            "n": "a pixel's sub-pixel count c gives I = c / n: n levels above zero (Hearn & Baker)",
+            "n2": "a pixel's sub-pixel count c gives I = c / n², the fraction of its sub-pixels",
+        },
+        "n",
+        ("antialias/subpixel",),
+    ),
     "update": Knob(
         "update",
         {

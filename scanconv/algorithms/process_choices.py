@@ -61,6 +61,14 @@ class Subgrid(str, Enum):
     centre = "centre"
 
 
+class Divide(str, Enum):
+    """How a sub-pixel count becomes an intensity (the ``divide`` convention of
+    :func:`scanconv.answers.subpixel.subpixel_solution`)."""
+
+    n = "n"
+    n2 = "n2"
+
+
 class FillRule(str, Enum):
     """The fill rules, by the names the API and the CLI (``--rule``) take."""
 

@@ -228,6 +228,7 @@ def antialias_solution(
     width: Number = 1,
     across: str = "minor",
     subgrid: str | None = None,
+    divide: str | None = None,
 ) -> Solution:
     """Area sampling (``method="area"``) or ``samples x samples`` supersampling of a
     ``line`` (``x1 y1 x2 y2``), a ``circle`` (``r [xc yc]``) or a ``polygon`` (``x1 y1 ...``);
@@ -252,8 +253,12 @@ def antialias_solution(
 
         return subpixel_solution(
             *_line_params(params), n=3 if samples is None else samples, levels=L,
-            subgrid=subgrid or "span",
+            subgrid=subgrid or "span", divide=divide or "n",
         )  # fmt: skip
+    if divide is not None:
+        raise InputError(
+            f"the divide convention is the subpixel method's, not {method}'s", "divide"
+        )
     if subgrid is not None:
         raise InputError(
             f"the subgrid convention is the subpixel method's, not {method}'s", "subgrid"

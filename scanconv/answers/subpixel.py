@@ -24,6 +24,13 @@ from ..core.records import (
 )
 from .aa_common import SHADING, level_rule, picture, pixel_box
 
+DIVIDES = {
+    "n": "I = c / n, full intensity at n sub-pixels: n levels above zero (Hearn & Baker's "
+    "three settings for a 3 x 3 grid)",
+    "n2": "I = c / n², the fraction of the pixel's n² sub-pixels on the path",
+}
+"""How a pixel's count becomes its intensity (the ``divide`` convention), the default first."""
+
 
 def _signed(v: Number) -> str:
     """``+ 8`` or ``- 8``: a term added in the working.
@@ -35,7 +42,7 @@ def _signed(v: Number) -> str:
     return f"- {fmt_exact(-v)}" if v < 0 else f"+ {fmt_exact(v)}"
 
 
-def _derived(line: Any, n: int, x1: int, y1: int, subgrid: str, levels: int) -> list[Quantity]:
+def _derived(line: Any, n: int, subgrid: str, levels: int, per: int) -> list[Quantity]:
     maj, mnr = ("y", "x") if line.steep else ("x", "y")
     u1, v1 = line.u0 + line.du, normalize(line.v0 + line.dv)
     dv = abs(Fraction(line.dv))
@@ -65,7 +72,7 @@ def _derived(line: Any, n: int, x1: int, y1: int, subgrid: str, levels: int) -> 
              f"p_k \\ge 0: V \\text{{ stepped}},\\ p_{{k+1}} = p_k {_signed(2 * dv - 2 * line.du)}"),
         rule("pixel", f"\\text{{pixel}} = (\\lfloor U / {n} \\rfloor, \\lfloor V / {n} \\rfloor)"
              + (" \\text{ (U along y: swapped back)}" if line.steep else "")),
-        rule("intensity", f"I = c / {n} \\quad (c \\text{{ sub-pixels of the path in the pixel; "
+        rule("intensity", f"I = c / {per} \\quad (c \\text{{ sub-pixels of the path in the pixel; "
              f"at most {n}}})"),
         level_rule(levels),
     ]  # fmt: skip
@@ -73,10 +80,12 @@ def _derived(line: Any, n: int, x1: int, y1: int, subgrid: str, levels: int) -> 
 
 def subpixel_solution(
     x1: Number, y1: Number, x2: Number, y2: Number, n: int = 3, levels: int = 8,
-    subgrid: str = "span",
+    subgrid: str = "span", divide: str = "n",
 ) -> Solution:  # fmt: skip
     """Hearn & Baker's supersampling of the line between the pixels P1 and P2: Bresenham on the
-    ``n x n`` sub-pixel grid (:mod:`scanconv.algorithms.subpixel`), the counts, ``I = c / n``.
+    ``n x n`` sub-pixel grid (:mod:`scanconv.algorithms.subpixel`), the counts, ``I = c / n``
+    (``divide="n"``, Hearn & Baker's levels) or ``I = c / n²`` (``"n2"``, the fraction of the
+    pixel's sub-pixels).
 
     >>> sol = subpixel_solution(0, 0, 2, 1)
     >>> [(s.p, s.extra[:2]) for s in sol.steps()][:3]
@@ -89,6 +98,9 @@ def subpixel_solution(
     )
     n = cov.check_samples(n)
     L = check_levels(levels)
+    if divide not in DIVIDES:
+        raise InputError(f"unknown divide {divide!r} (choose from {', '.join(DIVIDES)})", "divide")
+    per = n if divide == "n" else n * n
     line = sub_line(ix1, iy1, ix2, iy2, n, subgrid)
     columns = max(abs(ix2 - ix1), abs(iy2 - iy1)) + 1
     if columns > cov.MAX_AA_CELLS:
@@ -98,7 +110,7 @@ def subpixel_solution(
             "line",
         )
     found = counts(line, n)
-    levels_of = {p: cov.quantize(Fraction(c, n), L) for p, c in found.items()}
+    levels_of = {p: cov.quantize(Fraction(c, per), L) for p, c in found.items()}
 
     def steps() -> Iterator[Step]:
         for k, p, u, v in walk(line):
@@ -106,12 +118,12 @@ def subpixel_solution(
 
     def rows() -> Iterator[tuple[Any, ...]]:
         for px, c in found.items():
-            yield (px, c, normalize(Fraction(c, n)), levels_of[px])
+            yield (px, c, normalize(Fraction(c, per)), levels_of[px])
 
     order: list[Pixel] = list(found)
     art = picture({p: lv for p, lv in levels_of.items() if lv}, L)
     maj, mnr = ("y", "x") if line.steep else ("x", "y")
-    return Solution(
+    sol = Solution(
         primitive="line",
         algorithm="subpixel",
         title=f"Supersampling on a {n} x {n} sub-pixel grid (Hearn & Baker): ({ix1}, {iy1}) to "
@@ -121,7 +133,7 @@ def subpixel_solution(
             worked("P2", (ix2, iy2), f"P_2 = ({ix2}, {iy2})"),
             worked("L", L, f"L = {L} \\text{{ levels}}"),
         ),
-        derived=tuple(_derived(line, n, ix1, iy1, subgrid, L)),
+        derived=tuple(_derived(line, n, subgrid, L, per)),
         columns=(
             heading("k", "k"),
             heading("p", "p_k"),
@@ -137,7 +149,7 @@ def subpixel_solution(
                 (
                     heading("pixel", r"\text{pixel } (x, y)"),
                     heading("count", "c"),
-                    heading("intensity", f"I = c / {n}", 3),
+                    heading("intensity", f"I = c / {per}", 3),
                     heading("level", r"\text{level}"),
                 ),
                 rows,
@@ -150,12 +162,14 @@ def subpixel_solution(
             + (", the default" if subgrid == "span" else "; the default is subgrid = span")
             + f"): {SUBGRIDS[subgrid]}.",
             f"Each row is one sub-pixel of the path; its pixel collects it. An {maj}-major path "
-            f"puts at most {n} sub-pixels in a pixel, so I = c / {n} gives {n} intensity "
-            "levels above zero (Hearn & Baker: three for a 3 x 3 grid). A tie (p = 0) steps V, "
-            "as the notes' Bresenham does.",
+            f"puts at most {n} sub-pixels in a pixel. Intensity (divide = {divide}"
+            + (", the default" if divide == "n" else "; the default is divide = n")
+            + f"): {DIVIDES[divide]}. A tie (p = 0) steps V, as the notes' Bresenham does.",
             SHADING,
         ),
         figures=(art,) if art else (),
         geometry={"line": (ix1, iy1, ix2, iy2), "shades": levels_of, "levels": L,
                   "numbering": "none"},
     )  # fmt: skip
+    sol.data = {**sol.data, "conventions": {"subgrid": subgrid, "divide": divide}}
+    return sol

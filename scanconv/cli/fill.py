@@ -11,7 +11,7 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.process_choices import AAMethod, Across, FillRule, Order, Subgrid, WuEnds
+from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid, WuEnds
 from ..core.records import Solution
 from ..questions import commands
 from .application import _subapp, app
@@ -82,6 +82,14 @@ SubgridOpt = Annotated[
         help="subpixel: the sub-pixel line from P1's first sub-pixel over every sub-column of "
         "the end pixels (span, the default) or between the end pixels' centre sub-pixels "
         "(centre).",
+    ),
+]
+DivideOpt = Annotated[
+    Divide | None,
+    choice(
+        "--divide",
+        help="subpixel: intensity c / n (n, the default: n levels above zero) or c / n^2 (n2: "
+        "the fraction of the pixel's sub-pixels).",
     ),
 ]
 LineSamples = Annotated[
@@ -205,6 +213,7 @@ def antialias_line(
     width: Width = Fraction(1),
     across: AcrossOpt = Across.minor,
     subgrid: SubgridOpt = None,
+    divide: DivideOpt = None,
 ) -> Solution:
     """An anti-aliased line: Wu's algorithm (the two pixels of each step and their
     intensities), a line w wide by area sampling or supersampling, or Hearn & Baker's
@@ -214,7 +223,7 @@ def antialias_line(
     """
     return api.antialias_line(
         x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends, width=width,
-        across=across, subgrid=subgrid,
+        across=across, subgrid=subgrid, divide=divide,
     )  # fmt: skip
 
 

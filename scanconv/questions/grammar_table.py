@@ -375,8 +375,9 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('width', ('--width', '-w'), 'number', default=Fraction(1, 1)),
         Param('across', ('--across',), 'choice', default='minor', choices=('minor', 'perpendicular')),
         Param('subgrid', ('--subgrid',), 'choice', choices=('span', 'centre')),
+        Param('divide', ('--divide',), 'choice', choices=('n', 'n2')),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
-    ), own=('x1', 'y1', 'x2', 'y2', 'method', 'samples', 'levels', 'ends', 'width', 'across', 'subgrid'), ignore_unknown=True),
+    ), own=('x1', 'y1', 'x2', 'y2', 'method', 'samples', 'levels', 'ends', 'width', 'across', 'subgrid', 'divide'), ignore_unknown=True),
     ('antialias', 'circle'): Spec(('antialias', 'circle'), 'antialias_circle', (
         Param('r', (), 'number', required=True, metavar='r'),
         Param('center', ('--center', '-c'), 'number', nargs=2),
