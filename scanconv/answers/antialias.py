@@ -216,6 +216,64 @@ def _intensity_table(
     )
 
 
+def _line_method(
+    shape: str, params: Sequence[Number], method: str, samples: int | None, L: int,
+    ends: str | None, width: Number, across: str, subgrid: str | None, divide: str | None,
+) -> Solution | None:  # fmt: skip
+    """The answer of a line-only method (``subpixel``, ``wu``), else ``None``; a convention
+    given to a method it is not of is refused by name."""
+    if method == "subpixel":
+        if shape != "line":
+            raise InputError(f"subpixel supersamples lines only, not a {shape}", "method")
+        if ends is not None or (width, across) != (1, "minor"):
+            raise InputError(
+                "the sub-pixel line is Bresenham's: no ends, width or across", "method"
+            )
+        from .subpixel import subpixel_solution
+
+        return subpixel_solution(
+            *_line_params(params),
+            n=3 if samples is None else samples,
+            levels=L,
+            subgrid=subgrid or "span",
+            divide=divide or "n",
+        )
+    for name, value in (("divide", divide), ("subgrid", subgrid)):
+        if value is not None:
+            raise InputError(
+                f"the {name} convention is the subpixel method's, not {method}'s", name
+            )
+    if method == "wu":
+        if shape != "line":
+            raise InputError(f"wu draws lines only, not a {shape}", "method")
+        if (width, across) != (1, "minor"):
+            raise InputError("Wu's line is one pixel wide: no width or across convention", "width")
+        return wu_solution(*_line_params(params), levels=L, ends=ends or "full")
+    if ends is not None:
+        raise InputError(f"the ends convention is Wu's line's, not {method}'s", "ends")
+    if across not in cov.ACROSS:
+        raise InputError(
+            f"unknown across {across!r} (choose from {', '.join(cov.ACROSS)})", "across"
+        )
+    return None  # fmt: skip
+
+
+def _region(
+    shape: str, params: Sequence[Number], method: str, n: int, rule_name: str, width: Number,
+    across: str,
+) -> _Region:  # fmt: skip
+    """The shape to sample; a width and its convention only for a line."""
+    if shape not in ("line", *_REGIONS):
+        raise InputError(f"unknown shape {shape!r} (choose from line, circle, polygon)", "shape")
+    if shape == "line":
+        return _line_region(params, method, n, rule_name, width, across)
+    if (width, across) != (1, "minor"):
+        raise InputError(
+            f"a width and its across convention are a line's, not a {shape}'s", "width"
+        )
+    return _REGIONS[shape](params, method, n, rule_name)
+
+
 def antialias_solution(
     shape: str,
     params: Sequence[Number],
@@ -242,56 +300,19 @@ def antialias_solution(
     'sum of I = 2 = the exact area of the shape'
     """
     L = check_levels(levels)
-    if method == "subpixel":
-        if shape != "line":
-            raise InputError(f"subpixel supersamples lines only, not a {shape}", "method")
-        if ends is not None or (width, across) != (1, "minor"):
-            raise InputError(
-                "the sub-pixel line is Bresenham's: no ends, width or across", "method"
-            )
-        from .subpixel import subpixel_solution
-
-        return subpixel_solution(
-            *_line_params(params), n=3 if samples is None else samples, levels=L,
-            subgrid=subgrid or "span", divide=divide or "n",
-        )  # fmt: skip
-    if divide is not None:
-        raise InputError(
-            f"the divide convention is the subpixel method's, not {method}'s", "divide"
-        )
-    if subgrid is not None:
-        raise InputError(
-            f"the subgrid convention is the subpixel method's, not {method}'s", "subgrid"
-        )
+    line_only = _line_method(
+        shape, params, method, samples, L, ends, width, across, subgrid, divide
+    )
+    if line_only is not None:
+        return line_only
     samples = 4 if samples is None else samples
-    if method == "wu":
-        if shape != "line":
-            raise InputError(f"wu draws lines only, not a {shape}", "method")
-        if (width, across) != (1, "minor"):
-            raise InputError("Wu's line is one pixel wide: no width or across convention", "width")
-        return wu_solution(*_line_params(params), levels=L, ends=ends or "full")
-    if ends is not None:
-        raise InputError(f"the ends convention is Wu's line's, not {method}'s", "ends")
-    if across not in cov.ACROSS:
-        raise InputError(
-            f"unknown across {across!r} (choose from {', '.join(cov.ACROSS)})", "across"
-        )
     if method not in ("area", "supersample"):
         raise InputError(
             f"unknown method {method!r} (choose from area, supersample, wu, subpixel)", "method"
         )
     n = cov.check_samples(samples) if method == "supersample" else 1
     check_rule(rule_name)
-    if shape not in ("line", *_REGIONS):
-        raise InputError(f"unknown shape {shape!r} (choose from line, circle, polygon)", "shape")
-    if shape == "line":
-        region = _line_region(params, method, n, rule_name, width, across)
-    elif (width, across) != (1, "minor"):
-        raise InputError(
-            f"a width and its across convention are a line's, not a {shape}'s", "width"
-        )
-    else:
-        region = _REGIONS[shape](params, method, n, rule_name)
+    region = _region(shape, params, method, n, rule_name, width, across)
     values, title = region.values, region.title
     derived = [*region.derived, *_sampling_rules(method, n)]
     notes = list(region.notes)

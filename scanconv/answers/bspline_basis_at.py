@@ -11,7 +11,7 @@ from ..algorithms.bspline import basis_levels, domain, span
 from ..algorithms.curve_limits import Value, check_exact, norm_value
 from ..core.checks import InputError
 from ..core.numeric import Number
-from ..core.records import Solution, Table, heading, worked
+from ..core.records import Quantity, Solution, Table, heading, worked
 from ._curve import knot_text, value_text
 from .bspline import _BSPLINE_NOTES, check_knot_list
 
@@ -50,43 +50,19 @@ def working(u: Sequence[Number], d: int, i: int, t: Value, row: Sequence[Value])
     return f"{left} + {right}"
 
 
-def bspline_basis_at_solution(degree: int, knots: Sequence[Number], t: Value) -> Solution:
-    """Every ``N_{i,d}(t)`` of a degree-``p`` basis on ``knots`` at one ``t`` in ``[u_0, u_m]``:
-    the Cox–de Boor triangle worked with its numbers, and ``N_{i,p}(t)`` for ``i = 0 .. n``.
-
-    Shene's knots {0, 0.25, 0.5, 0.75, 1}, p = 2, at t = 3/8: N_0,2 = 3/4, N_1,2 = 1/8.
-
-    >>> from fractions import Fraction as F
-    >>> sol = bspline_basis_at_solution(2, [0, F(1, 4), F(1, 2), F(3, 4), 1], F(3, 8))
-    >>> [str(v) for v in sol.data["basis"]]
-    ['3/4', '1/8']
-    """
-    u, m, n = check_knot_list(degree, knots)
-    if not u[0] <= t <= u[-1]:
-        raise InputError(
-            f"t must lie in the knot range [u_0, u_m] = [{value_text(u[0])}, "
-            f"{value_text(u[-1])}], got t = {value_text(t)}",
-            "t",
-        )
-    t = norm_value(t)
-    levels = basis_levels(u, degree, m - 1, t)
-    s = span(u, m - 1, t)
-    w = levels[degree][: n + 1]
-    check_exact(w, "the basis at this t")
+def _derived(
+    u: tuple[Number, ...], degree: int, t: Value, s: int, w: Sequence[Value]
+) -> tuple[Quantity, ...]:
+    """The knots, the number of functions, the span of t, the row N_(i,p)(t) and its sum."""
+    m, n = len(u) - 1, len(w) - 1
     total = norm_value(sum(w))
     d0, d1 = domain(u, degree, n)
     ts = value_text(t)
     closed = t >= u[-1]
-
-    def rows() -> Iterator[tuple[Any, ...]]:
-        for d in range(1, degree + 1):
-            for i in range(max(s - d, 0), min(s, m - 1 - d) + 1):
-                yield (d, i, working(u, d, i, t, levels[d - 1]), levels[d][i])
-
     values = ", ".join(f"N_{{{i},{degree}}} = {value_text(v)}" for i, v in enumerate(w) if v)
     values = (values + ", \\text{ every other is } 0") if values else "\\text{all } 0"
     inside = d0 <= t <= d1
-    derived = (
+    return (
         worked("knots", u, f"U = {knot_text(u)},\\ m = {m}"),
         worked(
             "n",
@@ -116,6 +92,39 @@ def bspline_basis_at_solution(degree: int, knots: Sequence[Number], t: Value) ->
             ),
         ),
     )
+
+
+def bspline_basis_at_solution(degree: int, knots: Sequence[Number], t: Value) -> Solution:
+    """Every ``N_{i,d}(t)`` of a degree-``p`` basis on ``knots`` at one ``t`` in ``[u_0, u_m]``:
+    the Cox–de Boor triangle worked with its numbers, and ``N_{i,p}(t)`` for ``i = 0 .. n``.
+
+    Shene's knots {0, 0.25, 0.5, 0.75, 1}, p = 2, at t = 3/8: N_0,2 = 3/4, N_1,2 = 1/8.
+
+    >>> from fractions import Fraction as F
+    >>> sol = bspline_basis_at_solution(2, [0, F(1, 4), F(1, 2), F(3, 4), 1], F(3, 8))
+    >>> [str(v) for v in sol.data["basis"]]
+    ['3/4', '1/8']
+    """
+    u, m, n = check_knot_list(degree, knots)
+    if not u[0] <= t <= u[-1]:
+        raise InputError(
+            f"t must lie in the knot range [u_0, u_m] = [{value_text(u[0])}, "
+            f"{value_text(u[-1])}], got t = {value_text(t)}",
+            "t",
+        )
+    t = norm_value(t)
+    levels = basis_levels(u, degree, m - 1, t)
+    s = span(u, m - 1, t)
+    w = levels[degree][: n + 1]
+    check_exact(w, "the basis at this t")
+    ts = value_text(t)
+
+    def rows() -> Iterator[tuple[Any, ...]]:
+        for d in range(1, degree + 1):
+            for i in range(max(s - d, 0), min(s, m - 1 - d) + 1):
+                yield (d, i, working(u, d, i, t, levels[d - 1]), levels[d][i])
+
+    derived = _derived(u, degree, t, s, w)
     formula = (
         "N_(i,d)(t) = (t - u_i)/(u_(i+d) - u_i)·N_(i,d-1)(t) + "
         "(u_(i+d+1) - t)/(u_(i+d+1) - u_(i+1))·N_(i+1,d-1)(t); only N_(s-d,d) .. N_(s,d) "

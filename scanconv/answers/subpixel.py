@@ -78,6 +78,34 @@ def _derived(line: Any, n: int, subgrid: str, levels: int, per: int) -> list[Qua
     ]  # fmt: skip
 
 
+def _notes(subgrid: str, divide: str, maj: str, n: int) -> tuple[str, ...]:
+    """The two conventions named, what a row is, and the shading."""
+    return (
+        f"Sub-grid (subgrid = {subgrid}"
+        + (", the default" if subgrid == "span" else "; the default is subgrid = span")
+        + f"): {SUBGRIDS[subgrid]}.",
+        f"Each row is one sub-pixel of the path; its pixel collects it. An {maj}-major path "
+        f"puts at most {n} sub-pixels in a pixel. Intensity (divide = {divide}"
+        + (", the default" if divide == "n" else "; the default is divide = n")
+        + f"): {DIVIDES[divide]}. A tie (p = 0) steps V, as the notes' Bresenham does.",
+        SHADING,
+    )
+
+
+def _count_table(rows: Any, per: int) -> Table:
+    """Each pixel's count c, its intensity c / per and its level."""
+    return Table(
+        "Sub-pixels per pixel and intensities",
+        (
+            heading("pixel", r"\text{pixel } (x, y)"),
+            heading("count", "c"),
+            heading("intensity", f"I = c / {per}", 3),
+            heading("level", r"\text{level}"),
+        ),
+        rows,
+    )
+
+
 def subpixel_solution(
     x1: Number, y1: Number, x2: Number, y2: Number, n: int = 3, levels: int = 8,
     subgrid: str = "span", divide: str = "n",
@@ -143,30 +171,10 @@ def subpixel_solution(
         ),
         extra_keys=("u", "v"),
         steps=steps,
-        tables=(
-            Table(
-                "Sub-pixels per pixel and intensities",
-                (
-                    heading("pixel", r"\text{pixel } (x, y)"),
-                    heading("count", "c"),
-                    heading("intensity", f"I = c / {per}", 3),
-                    heading("level", r"\text{level}"),
-                ),
-                rows,
-            ),
-        ),
+        tables=(_count_table(rows, per),),
         pixels=lambda: iter(order),
         bbox=pixel_box(order),
-        notes=(
-            f"Sub-grid (subgrid = {subgrid}"
-            + (", the default" if subgrid == "span" else "; the default is subgrid = span")
-            + f"): {SUBGRIDS[subgrid]}.",
-            f"Each row is one sub-pixel of the path; its pixel collects it. An {maj}-major path "
-            f"puts at most {n} sub-pixels in a pixel. Intensity (divide = {divide}"
-            + (", the default" if divide == "n" else "; the default is divide = n")
-            + f"): {DIVIDES[divide]}. A tie (p = 0) steps V, as the notes' Bresenham does.",
-            SHADING,
-        ),
+        notes=_notes(subgrid, divide, maj, n),
         figures=(art,) if art else (),
         geometry={"line": (ix1, iy1, ix2, iy2), "shades": levels_of, "levels": L,
                   "numbering": "none"},
