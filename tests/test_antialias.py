@@ -268,7 +268,6 @@ def test_the_answers_render_in_every_text_format(shape, params, method):
         (lambda: antialias_solution("circle", [50]), "pixel cells", "shape"),
         (lambda: antialias_solution("circle", [5], levels=1), "at least 2", "levels"),
         (lambda: antialias_solution("square", [5]), "unknown shape", "shape"),
-        (lambda: wu_solution(0, 0, Fraction(1, 2), 3), "integer", None),
     ],
 )
 def test_bad_input_is_refused(call, word, param):

@@ -12,6 +12,7 @@ from .values import (
     PointsLike,
     _choice,
     _flat,
+    _maybe,
     _number,
     _numbers,
     _pair,
@@ -19,7 +20,7 @@ from .values import (
 )
 
 if TYPE_CHECKING:
-    from ..algorithms.process_choices import AAMethod, FillRule, Order
+    from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid
     from ..core.records import Solution
 
 
@@ -78,11 +79,27 @@ def antialias_line(
     x2: NumberLike,
     y2: NumberLike,
     method: AAMethod | str = "area",
-    samples: NumberLike = 4,
+    samples: NumberLike | None = None,
     levels: NumberLike = 8,
+    ends: str | None = None,
+    width: NumberLike = 1,
+    across: Across | str = "minor",
+    subgrid: Subgrid | str | None = None,
+    divide: Divide | str | None = None,
 ) -> Solution:
     """An anti-aliased line (``scanconv antialias line``): ``method`` ``"wu"`` (Xiaolin Wu's
     algorithm), ``"area"`` or ``"supersample"`` (``samples`` x ``samples`` per pixel).
+    ``ends`` (Wu only): ``"full"`` (the default) or ``"coverage"`` (the end columns weighted
+    by the part of them the line covers, as Wikipedia's pseudocode). ``width`` (area and
+    supersample): the line's width w, measured ``across`` the minor axis (``"minor"``, the
+    default) or ``"perpendicular"`` to the line. ``"subpixel"``: Hearn & Baker's
+    supersampling, Bresenham on the ``samples x samples`` sub-pixel grid (default 3; the
+    ``supersample`` default is 4), its ``subgrid`` ``"span"`` (the default) or ``"centre"``,
+    and ``divide``: ``I = c / n`` (``"n"``, the default) or ``c / n²`` (``"n2"``).
+
+    >>> sol = antialias_line(0, 0, 4, 3, width=2, across="perpendicular")
+    >>> sol.derived[-2].text
+    'sum of I = 10 = the exact area of the shape'
 
     >>> [s.extra[4] for s in antialias_line(0, 0, 4, 1, method="wu").steps()]
     [1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4), 1]
@@ -93,8 +110,13 @@ def antialias_line(
         "line",
         _numbers(x1=x1, y1=y1, x2=x2, y2=y2),
         method=_choice(method, "method"),
-        samples=_whole(samples, "samples"),
+        samples=None if samples is None else _whole(samples, "samples"),
         levels=_whole(levels, "levels"),
+        ends=_maybe(ends, "ends"),
+        width=_number(width, "width"),
+        across=_choice(across, "across"),
+        subgrid=_maybe(subgrid, "subgrid"),
+        divide=_maybe(divide, "divide"),
     )
 
 

@@ -24,6 +24,7 @@ from .values import (
 )
 
 if TYPE_CHECKING:
+    from ..core.numeric import Number
     from ..core.records import Solution
 
 
@@ -167,6 +168,18 @@ def bspline(
     return _bspline(points, degree, knots, samples, basis_only=False)
 
 
+def _explicit_knots(knots: str | Sequence[NumberLike]) -> tuple[Number, ...]:
+    """The knot list of a basis without control points: an explicit one, never a name."""
+    spec = _knots(knots)
+    if isinstance(spec, str):
+        raise InputError(
+            "without control points the basis needs an explicit knot list "
+            f"(got {spec!r}: open and uniform are defined by the number of points)",
+            "knots",
+        )
+    return spec
+
+
 @answers
 def bspline_basis(
     points: PointsLike | None,
@@ -187,13 +200,7 @@ def bspline_basis(
     if not points:
         from ..answers.bspline import bspline_basis_knots_solution
 
-        spec = _knots(knots)
-        if isinstance(spec, str):
-            raise InputError(
-                "without control points the basis needs an explicit knot list "
-                f"(got {spec!r}: open and uniform are defined by the number of points)",
-                "knots",
-            )
+        spec = _explicit_knots(knots)
         return bspline_basis_knots_solution(
             _whole(degree, "degree"),
             spec,
@@ -204,22 +211,32 @@ def bspline_basis(
 
 @answers
 def bspline_at(
-    points: PointsLike,
+    points: PointsLike | None,
     t: FormulaLike,
     degree: NumberLike = 3,
     knots: str | Sequence[NumberLike] = "open",
 ) -> Solution:
     """One ``t``: the Cox-de Boor triangle and the weighted sum (``scanconv bspline --at``).
 
+    Without control points (``points`` empty or ``None``) the degree and an explicit knot list
+    define the basis, and every ``N_i,d(t)`` is worked (``scanconv bspline --basis --at``).
+
     >>> pts = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)]
     >>> list(bspline_at(pts, 1.5, 2).pixels())  # C(1.5) = (2.875, 2.5)
     [(3, 3)]
+    >>> [str(v) for v in bspline_at(None, "3/8", 2, [0, 0.25, 0.5, 0.75, 1]).data["basis"]]
+    ['3/4', '1/8']
     """
     from ..answers.bspline import bspline_at_solution
 
+    if not points:
+        from ..answers.bspline_basis_at import bspline_basis_at_solution
+
+        return bspline_basis_at_solution(
+            _whole(degree, "degree"), _explicit_knots(knots), _formula(t, "t")
+        )
     pts = _points(points)
-    spec = _knots(knots)
-    return bspline_at_solution(pts, _whole(degree, "degree"), spec, _formula(t, "t"))
+    return bspline_at_solution(pts, _whole(degree, "degree"), _knots(knots), _formula(t, "t"))
 
 
 @answers

@@ -25,6 +25,7 @@ def line(
     tie: Tie | str | None = None,
     start: Start | str | None = None,
     scale: str | None = None,
+    ends: str | None = None,
     convention: Convention | str | None = None,
     layout: Layout | str = "notes",
     derive: bool = False,
@@ -49,6 +50,9 @@ def line(
         coordinate, the DDA starts at P1 (``given``).
     scale : {"integer", "half"}, optional
         The midpoint line: d = 2F(M) in integers (default) or d = F(M) in halves.
+    ends : {"full", "coverage"}, optional
+        Wu's line: end points at full intensity (default) or weighted by the part of the end
+        column the line covers (xgap, as Wikipedia's pseudocode).
     convention : {"notes", "hearn-baker", "foley", "wikipedia"}, optional
         A named preset of the conventions above; a convention given alone overrides it.
     layout : {"notes", "textbook"}, default "notes"
@@ -91,6 +95,7 @@ def line(
         tie=_maybe(tie, "tie"),
         start=_maybe(start, "start"),
         scale=_maybe(scale, "scale"),
+        ends=_maybe(ends, "ends"),
         convention=_maybe(convention, "convention"),
         layout=_choice(layout, "layout"),
         derive=derive,

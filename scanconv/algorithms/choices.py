@@ -54,6 +54,13 @@ class LineScale(str, Enum):
     half = "half"
 
 
+class WuEnds(str, Enum):
+    """Wu's end points (the ``ends`` convention, :data:`scanconv.algorithms.wu.ENDS`)."""
+
+    full = "full"
+    coverage = "coverage"
+
+
 class Layout(str, Enum):
     """The step table's row shape: the notes' or the textbook's."""
 

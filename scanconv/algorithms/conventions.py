@@ -173,6 +173,47 @@ KNOBS: dict[str, Knob] = {
         "last",
         ("circle/bresenham",),
     ),
+    "ends": Knob(
+        "ends",
+        {
+            "full": "Wu's end points drawn at full intensity (Wu 1991, Abrash 1992)",
+            "coverage": "Wu's end columns weighted by the part of them the line covers, "
+            "xgap = 1 - frac(x1 + 1/2) and frac(x2 + 1/2) (Wikipedia's pseudocode)",
+        },
+        "full",
+        ("antialias/wu", "line/wu"),
+    ),
+    "across": Knob(
+        "across",
+        {
+            "minor": "a line's width w measured along the minor axis: a parallelogram, each "
+            "column covered by w",
+            "perpendicular": "a line's width w measured perpendicular to it: a rectangle of "
+            "area w·L, its ends cut square",
+        },
+        "minor",
+        ("antialias/area", "antialias/supersample"),
+    ),
+    "subgrid": Knob(
+        "subgrid",
+        {
+            "span": "the sub-pixel line from P1's first sub-pixel over every sub-column of the "
+            "end pixels, with the line's slope (the taught form of Hearn & Baker's figure)",
+            "centre": "the sub-pixel line between the end pixels' centre sub-pixels: the same "
+            "line (n odd)",
+        },
+        "span",
+        ("antialias/subpixel",),
+    ),
+    "divide": Knob(
+        "divide",
+        {
+            "n": "a pixel's sub-pixel count c gives I = c / n: n levels above zero (Hearn & Baker)",
+            "n2": "a pixel's sub-pixel count c gives I = c / n², the fraction of its sub-pixels",
+        },
+        "n",
+        ("antialias/subpixel",),
+    ),
     "update": Knob(
         "update",
         {

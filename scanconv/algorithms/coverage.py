@@ -79,20 +79,61 @@ def quantize(intensity: Number | float, levels: int) -> int:
     return round_half_up(Fraction(intensity) * (levels - 1))
 
 
-def line_strip(x1: Number, y1: Number, x2: Number, y2: Number) -> tuple[Point, ...]:
-    """The one-pixel-wide line as a polygon: the segment thickened by 1/2 on each side along
-    the minor axis (y when ``|Δy| <= |Δx|``), ending at the end points.
+ACROSS = {
+    "minor": "the strip w thick along the minor axis (y when |dy| <= |dx|), ends cut along it "
+    "at the end points: a parallelogram of area w·max(|dx|, |dy|), each column covered by w",
+    "perpendicular": "the rectangle w wide measured perpendicular to the line, ends cut square "
+    "at the end points: area w·L, L = sqrt(dx² + dy²)",
+}
+"""How a line's width is measured (the ``across`` convention), the default first."""
+
+
+def exact_sqrt(v: Number) -> Fraction | None:
+    """``sqrt(v)`` if it is rational, else ``None``.
+
+    >>> exact_sqrt(Fraction(25, 4)), exact_sqrt(2)
+    (Fraction(5, 2), None)
+    """
+    q = Fraction(v)
+    n, d = math.isqrt(q.numerator), math.isqrt(q.denominator)
+    return Fraction(n, d) if n * n == q.numerator and d * d == q.denominator else None
+
+
+def line_strip(
+    x1: Number, y1: Number, x2: Number, y2: Number, width: Number = 1, across: str = "minor"
+) -> tuple[Point, ...]:
+    """The line of width ``width`` as a polygon: ``across="minor"`` (the default) thickens the
+    segment by w/2 on each side along the minor axis (y when ``|Δy| <= |Δx|``), ending at the
+    end points; ``"perpendicular"`` by w/2 on each side along the line's unit normal. Where
+    ``sqrt(Δx² + Δy²)`` is irrational the normal's corners are the nearest doubles, as exact
+    fractions (:func:`exact_sqrt` says which).
 
     >>> line_strip(0, 0, 4, 1)
     ((0, Fraction(-1, 2)), (4, Fraction(1, 2)), (4, Fraction(3, 2)), (0, Fraction(1, 2)))
+    >>> line_strip(0, 0, 4, 3, 1, "perpendicular")
+    ((Fraction(3, 10), Fraction(-2, 5)), (Fraction(43, 10), Fraction(13, 5)), (Fraction(37, 10), Fraction(17, 5)), (Fraction(-3, 10), Fraction(2, 5)))
     """
     if (x1, y1) == (x2, y2):
         raise InputError("a line of length zero covers no area", "line")
+    if across not in ACROSS:
+        raise InputError(f"unknown across {across!r} (choose from {', '.join(ACROSS)})", "across")
+    if not width > 0:
+        raise InputError(f"the line width must be positive, got {width}", "width")
+    half = Fraction(width) / 2
+    dx, dy = Fraction(x2 - x1), Fraction(y2 - y1)
     pts: tuple[tuple[Number, Number], ...]
-    if abs(Fraction(y2 - y1)) <= abs(Fraction(x2 - x1)):
-        pts = ((x1, y1 - HALF), (x2, y2 - HALF), (x2, y2 + HALF), (x1, y1 + HALF))
+    if across == "perpendicular":
+        length = exact_sqrt(dx * dx + dy * dy)
+        if length is None:
+            inv = Fraction(1 / math.sqrt(float(dx * dx + dy * dy)))
+            nx, ny = -dy * half * inv, dx * half * inv
+        else:
+            nx, ny = -dy * half / length, dx * half / length
+        pts = ((x1 - nx, y1 - ny), (x2 - nx, y2 - ny), (x2 + nx, y2 + ny), (x1 + nx, y1 + ny))
+    elif abs(dy) <= abs(dx):
+        pts = ((x1, y1 - half), (x2, y2 - half), (x2, y2 + half), (x1, y1 + half))
     else:
-        pts = ((x1 + HALF, y1), (x2 + HALF, y2), (x2 - HALF, y2), (x1 - HALF, y1))
+        pts = ((x1 + half, y1), (x2 + half, y2), (x2 - half, y2), (x1 - half, y1))
     return tuple((normalize(x), normalize(y)) for x, y in pts)
 
 

@@ -5,6 +5,19 @@ from __future__ import annotations
 
 from enum import Enum
 
+from .choices import WuEnds
+
+__all__ = [
+    "AAMethod",
+    "Across",
+    "FillRule",
+    "LineClipMethod",
+    "Order",
+    "PolygonClipMethod",
+    "Subgrid",
+    "WuEnds",
+]  # WuEnds lives with the line's choices (line --algo wu takes it)
+
 
 class LineClipMethod(str, Enum):
     """The line clipping methods, by the names the API and the CLI (``--method``) take."""
@@ -30,6 +43,31 @@ class AAMethod(str, Enum):
     area = "area"
     supersample = "supersample"
     wu = "wu"
+    subpixel = "subpixel"
+
+
+class Across(str, Enum):
+    """How a line's width is measured (the ``across`` convention,
+    :data:`scanconv.algorithms.coverage.ACROSS`)."""
+
+    minor = "minor"
+    perpendicular = "perpendicular"
+
+
+class Subgrid(str, Enum):
+    """Where Hearn & Baker's sub-pixel line runs (the ``subgrid`` convention,
+    :data:`scanconv.algorithms.subpixel.SUBGRIDS`)."""
+
+    span = "span"
+    centre = "centre"
+
+
+class Divide(str, Enum):
+    """How a sub-pixel count becomes an intensity (the ``divide`` convention of
+    :func:`scanconv.answers.subpixel.subpixel_solution`)."""
+
+    n = "n"
+    n2 = "n2"
 
 
 class FillRule(str, Enum):

@@ -4,218 +4,32 @@ intensity table and a shaded picture)."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+import math
+from collections.abc import Iterator, Sequence
 from fractions import Fraction
 from typing import Any, NamedTuple
 
 from ..algorithms import coverage as cov
 from ..algorithms.image_limits import check_levels
 from ..algorithms.polygon import check_polygon, check_rule, vertices_from_coords
-from ..algorithms.wu import is_steep, wu
 from ..core.checks import InputError, check_integer
 from ..core.numeric import Number, fmt_exact, fmt_short, normalize
 from ..core.records import (
-    MAX_GRID_CELLS,
-    Column,
     Pixel,
     Quantity,
-    ShadedMatrix,
     Solution,
-    Step,
     Table,
     heading,
     rule,
     worked,
 )
+from .aa_common import SHADING
+from .aa_common import level_rule as _level_rule
+from .aa_common import picture as _picture
+from .aa_common import pixel_box as _bbox
+from .antialias_wu import wu_solution
 
-SHADING = (
-    "The picture draws the intensity as ink on white: shade = L - 1 - level, so a fully "
-    "covered pixel is the darkest character."
-)
-
-
-def _level_rule(levels: int) -> Quantity:
-    """``level = ⌊I·7 + 1/2⌋ (L = 8)``: round half up of I (L - 1)."""
-    return worked(
-        "levels",
-        levels,
-        f"\\text{{level}} = \\lfloor I \\cdot (L - 1) + 1/2 \\rfloor = \\lfloor I \\cdot {levels - 1} "
-        f"+ 1/2 \\rfloor \\quad (L = {levels})",
-    )
-
-
-def _picture(values: dict[Pixel, int], levels: int) -> ShadedMatrix | None:
-    """The shaded picture of ``pixel -> level`` (ink: shade L - 1 - level), row 0 the top."""
-    if not values:
-        return None
-    xs, ys = [p[0] for p in values], [p[1] for p in values]
-    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
-    if x1 - x0 + 1 > MAX_GRID_CELLS or y1 - y0 + 1 > MAX_GRID_CELLS:
-        return None
-    rows = tuple(
-        tuple(levels - 1 - values.get((x, y), 0) for x in range(x0, x1 + 1))
-        for y in range(y1, y0 - 1, -1)
-    )
-    return ShadedMatrix(rows, levels, x1 - x0 + 1)
-
-
-def _bbox(pixels: Sequence[Pixel]) -> tuple[int, int, int, int]:
-    if not pixels:
-        return (0, 0, 0, 0)
-    xs, ys = [p[0] for p in pixels], [p[1] for p in pixels]
-    return min(xs), min(ys), max(xs), max(ys)
-
-
-class _WuWalk(NamedTuple):
-    """Wu's walk along the major coordinate ``a`` (the minor one ``b``), from (a1, b1) to
-    (a2, b2) with a increasing."""
-
-    steep: bool
-    maj: str
-    mnr: str
-    lower: str
-    upper: str
-    a1: int
-    b1: int
-    a2: int
-    b2: int
-    swapped: bool
-
-
-def _wu_walk(ix1: int, iy1: int, ix2: int, iy2: int) -> _WuWalk:
-    steep = is_steep(ix1, iy1, ix2, iy2)
-    maj, mnr = ("y", "x") if steep else ("x", "y")
-    lower, upper = ("left", "right") if steep else ("lower", "upper")
-    (a1, b1), (a2, b2) = ((iy1, ix1), (iy2, ix2)) if steep else ((ix1, iy1), (ix2, iy2))
-    swapped = a2 < a1
-    if swapped:
-        a1, b1, a2, b2 = a2, b2, a1, b1
-    return _WuWalk(steep, maj, mnr, lower, upper, a1, b1, a2, b2, swapped)
-
-
-def _wu_derived(w: _WuWalk, levels: int) -> tuple[Quantity, ...]:
-    """Δ along both coordinates, the gradient, the minor coordinate and the split."""
-    maj, mnr, a1, b1 = w.maj, w.mnr, w.a1, w.b1
-    da, db = w.a2 - a1, w.b2 - b1
-    grad = normalize(Fraction(db, da)) if da else 0
-    return (
-        worked(f"d{maj}", da, f"\\Delta {maj} = {w.a2} - {_p(a1)} = {da}"),
-        worked(f"d{mnr}", db, f"\\Delta {mnr} = {w.b2} - {_p(b1)} = {db}"),
-        worked(
-            "gradient",
-            grad,
-            f"g = \\frac{{\\Delta {mnr}}}{{\\Delta {maj}}} = \\frac{{{db}}}{{{da}}} = {fmt_exact(grad)}"
-            if da
-            else r"g = 0 \text{ (a single point)}",
-        ),
-        rule(
-            "minor",
-            f"{mnr}_k = {mnr}_1 + g ({maj}_k - {maj}_1) = {b1} + {fmt_exact(grad)} ({maj}_k - {_p(a1)})",
-        ),
-        rule(
-            "split",
-            f"f = {mnr}_k - \\lfloor {mnr}_k \\rfloor,\\ I(\\text{{{w.lower}}}) = 1 - f,\\ "
-            f"I(\\text{{{w.upper}}}) = f",
-        ),
-        _level_rule(levels),
-    )
-
-
-def _wu_notes(w: _WuWalk) -> tuple[str, ...]:
-    return (
-        *((f"End points swapped so that {w.maj} increases along the walk.",) if w.swapped else ()),
-        "End points as in Wu (1991): integers, drawn at full intensity (f = 0 there, so the "
-        "second pixel of the first and last step has intensity 0).",
-        f"Each step's two intensities sum to 1: the line's ink is shared between the two "
-        f"pixels nearest to it along {w.mnr}, in proportion to its distance from each.",
-        "Wu keeps f as an integer error term of n bits and draws from both ends at once; the "
-        "table walks one way with f exact, and the levels are the intensities quantized.",
-        SHADING,
-    )
-
-
-def _wu_columns(w: _WuWalk) -> tuple[Column, ...]:
-    lower, upper = w.lower, w.upper
-    return (
-        heading("k", "k"),
-        heading(w.maj, f"{w.maj}_k"),
-        heading(w.mnr, f"{w.mnr}_k \\text{{ (exact)}}", 3),
-        heading("pixel_a", f"\\text{{{lower} pixel}}"),
-        heading("pixel_b", f"\\text{{{upper} pixel}}"),
-        heading("i_a", f"I(\\text{{{lower}}})", 3),
-        heading("i_b", f"I(\\text{{{upper}}})", 3),
-        heading("levels", f"\\text{{levels ({lower}, {upper})}}"),
-    )
-
-
-def _wu_shades(steps: Iterable[Step]) -> dict[Pixel, int]:
-    """Each pixel's level (a pixel both steps share keeps the larger)."""
-    values: dict[Pixel, int] = {}
-    for s in steps:
-        values[s.extra[2]] = s.extra[6][0]
-        values[s.extra[3]] = max(values.get(s.extra[3], 0), s.extra[6][1])
-    return values
-
-
-def wu_solution(x1: Number, y1: Number, x2: Number, y2: Number, levels: int = 8) -> Solution:
-    """Xiaolin Wu's anti-aliased line as a worked answer.
-
-    >>> sol = wu_solution(0, 0, 8, 3)
-    >>> [str(q.value) for q in sol.derived[:3]]
-    ['8', '3', '3/8']
-    >>> [s.extra[4:] for s in sol.steps()][1]
-    (Fraction(5, 8), Fraction(3, 8), (4, 3))
-    """
-    ix1, iy1, ix2, iy2 = (
-        check_integer(v, n) for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2"))
-    )
-    L = check_levels(levels)
-    w = _wu_walk(ix1, iy1, ix2, iy2)
-
-    def steps() -> Iterator[Step]:
-        for s in wu(ix1, iy1, ix2, iy2):
-            ia, ib = s.extra[4], s.extra[5]
-            levels_ab = (cov.quantize(ia, L), cov.quantize(ib, L))
-            yield Step(s.k, None, None, s.pixel, (*s.extra, levels_ab))
-
-    def pixels() -> Iterator[Pixel]:
-        for s in wu(ix1, iy1, ix2, iy2):
-            if s.extra[4]:
-                yield s.extra[2]
-            if s.extra[5]:
-                yield s.extra[3]
-
-    plotted = list(pixels()) if w.a2 - w.a1 < 4 * MAX_GRID_CELLS else []
-    values = _wu_shades(steps()) if plotted else {}
-    picture = _picture({p: v for p, v in values.items() if v}, L) if plotted else None
-    xs, ys = (ix1, ix2), (iy1, iy2)
-    return Solution(
-        primitive="line",
-        algorithm="wu",
-        title=f"Xiaolin Wu's anti-aliased line: ({ix1}, {iy1}) to ({ix2}, {iy2}), L = {L}",
-        given=(
-            worked("P1", (ix1, iy1), f"P_1 = ({ix1}, {iy1})"),
-            worked("P2", (ix2, iy2), f"P_2 = ({ix2}, {iy2})"),
-            worked("L", L, f"L = {L} \\text{{ levels}}"),
-        ),
-        derived=_wu_derived(w, L),
-        columns=_wu_columns(w),
-        extra_keys=(w.maj, w.mnr, "pixel_a", "pixel_b", "i_a", "i_b", "levels"),
-        steps=steps,
-        pixels=pixels,
-        bbox=(min(xs), min(ys), max(xs) + (1 if w.steep else 0), max(ys) + (0 if w.steep else 1)),
-        notes=_wu_notes(w),
-        figures=(picture,) if picture else (),
-        geometry={
-            "line": (ix1, iy1, ix2, iy2),
-            **({"shades": values, "levels": L, "numbering": "none"} if values else {}),
-        },
-    )
-
-
-def _p(v: Number) -> str:
-    s = fmt_short(v)
-    return f"({s})" if s.startswith("-") else s
+__all__ = ["antialias_solution", "wu_solution"]
 
 
 class _Region(NamedTuple):
@@ -244,25 +58,67 @@ def _coverage(
     return dict(cov.supersample_coverage(pts, n, rule_name)), None
 
 
-def _line_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
+def _line_region(
+    params: Sequence[Number], method: str, n: int, rule_name: str, width: Number, across: str
+) -> _Region:
     x1, y1, x2, y2 = _line_params(params)
-    pts = cov.line_strip(x1, y1, x2, y2)
-    minor = "y" if abs(Fraction(y2 - y1)) <= abs(Fraction(x2 - x1)) else "x"
-    strip = worked(
-        "strip",
-        pts,
-        "\\text{line one pixel wide along } "
-        + minor
-        + ": "
-        + ", ".join(f"({fmt_short(x)}, {fmt_short(y)})" for x, y in pts),
-    )
-    note = (
-        f"The line is the parallelogram one pixel thick along {minor}, from end point to "
-        "end point: exact, and each column along the line is covered by 1 in total."
-    )
+    pts = cov.line_strip(x1, y1, x2, y2, width, across)
+    dx, dy = Fraction(x2 - x1), Fraction(y2 - y1)
+    minor = "y" if abs(dy) <= abs(dx) else "x"
+    corners = ", ".join(f"({fmt_short(x)}, {fmt_short(y)})" for x, y in pts)
+    wide = "one pixel" if width == 1 else f"{fmt_short(width)} pixels"
+    exact_length = across == "minor" or cov.exact_sqrt(dx * dx + dy * dy) is not None
+    if across == "minor":
+        strip = worked("strip", pts, f"\\text{{line {wide} wide along }} {minor}: {corners}")
+        note = (
+            f"The line is the parallelogram {wide} thick along {minor}, from end point to "
+            f"end point: exact, and each column along the line is covered by "
+            f"{fmt_short(width)} in total."
+        )
+    else:
+        length = cov.exact_sqrt(dx * dx + dy * dy)
+        shown = (
+            fmt_short(length)
+            if length is not None
+            else f"{math.sqrt(float(dx * dx + dy * dy)):.4f}"
+        )
+        strip = worked(
+            "strip",
+            pts if exact_length else tuple((float(x), float(y)) for x, y in pts),
+            f"L = \\sqrt{{{fmt_short(dx)}^2 + {fmt_short(dy)}^2}} "
+            + ("= " if exact_length else "\\approx ")
+            + f"{shown};\\ \\text{{corners }} P \\pm (w/2) n,\\ n = (-\\Delta y, \\Delta x)/L: "
+            + (
+                corners
+                if exact_length
+                else ", ".join(f"({float(x):.4f}, {float(y):.4f})" for x, y in pts)
+            ),
+        )
+        note = (
+            f"The line is the rectangle {wide} wide measured perpendicular to it, its ends cut "
+            "square at the end points: its area is w·L"
+            + (
+                ", exact."
+                if exact_length
+                else "; L is irrational, so the corners are the nearest doubles and the "
+                "intensities floats."
+            )
+        )
+    named = (
+        f"Width (across = {across}"
+        + (", the default; across = perpendicular measures it square to the line)"
+           if across == "minor" else "; the default is across = minor, along the minor axis)")
+    )  # fmt: skip
     title = f"line ({fmt_short(x1)}, {fmt_short(y1)}) to ({fmt_short(x2)}, {fmt_short(y2)})"
+    if width != 1:
+        title += f", width {fmt_short(width)}"
     values, exact = _coverage(pts, method, n, rule_name)
-    return _Region(title, values, exact, [strip], [note], {"line": (x1, y1, x2, y2)})
+    if not exact_length and method == "area":  # samples are counted exactly either way
+        values, exact = {p: float(v) for p, v in values.items()}, None
+    return _Region(
+        title, values, exact, [strip], [f"{named}: {note[0].lower()}{note[1:]}"],
+        {"line": (x1, y1, x2, y2)},
+    )  # fmt: skip
 
 
 def _polygon_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
@@ -303,7 +159,7 @@ def _circle_region(params: Sequence[Number], method: str, n: int, rule_name: str
     return _Region(title, values, None, [ring], notes, {"circle": (xc, yc, r)})
 
 
-_REGIONS = {"line": _line_region, "polygon": _polygon_region, "circle": _circle_region}
+_REGIONS = {"polygon": _polygon_region, "circle": _circle_region}
 
 
 def _sampling_rules(method: str, n: int) -> list[Quantity]:
@@ -360,35 +216,103 @@ def _intensity_table(
     )
 
 
+def _line_method(
+    shape: str, params: Sequence[Number], method: str, samples: int | None, L: int,
+    ends: str | None, width: Number, across: str, subgrid: str | None, divide: str | None,
+) -> Solution | None:  # fmt: skip
+    """The answer of a line-only method (``subpixel``, ``wu``), else ``None``; a convention
+    given to a method it is not of is refused by name."""
+    if method == "subpixel":
+        if shape != "line":
+            raise InputError(f"subpixel supersamples lines only, not a {shape}", "method")
+        if ends is not None or (width, across) != (1, "minor"):
+            raise InputError(
+                "the sub-pixel line is Bresenham's: no ends, width or across", "method"
+            )
+        from .subpixel import subpixel_solution
+
+        return subpixel_solution(
+            *_line_params(params),
+            n=3 if samples is None else samples,
+            levels=L,
+            subgrid=subgrid or "span",
+            divide=divide or "n",
+        )
+    for name, value in (("divide", divide), ("subgrid", subgrid)):
+        if value is not None:
+            raise InputError(
+                f"the {name} convention is the subpixel method's, not {method}'s", name
+            )
+    if method == "wu":
+        if shape != "line":
+            raise InputError(f"wu draws lines only, not a {shape}", "method")
+        if (width, across) != (1, "minor"):
+            raise InputError("Wu's line is one pixel wide: no width or across convention", "width")
+        return wu_solution(*_line_params(params), levels=L, ends=ends or "full")
+    if ends is not None:
+        raise InputError(f"the ends convention is Wu's line's, not {method}'s", "ends")
+    if across not in cov.ACROSS:
+        raise InputError(
+            f"unknown across {across!r} (choose from {', '.join(cov.ACROSS)})", "across"
+        )
+    return None  # fmt: skip
+
+
+def _region(
+    shape: str, params: Sequence[Number], method: str, n: int, rule_name: str, width: Number,
+    across: str,
+) -> _Region:  # fmt: skip
+    """The shape to sample; a width and its convention only for a line."""
+    if shape not in ("line", *_REGIONS):
+        raise InputError(f"unknown shape {shape!r} (choose from line, circle, polygon)", "shape")
+    if shape == "line":
+        return _line_region(params, method, n, rule_name, width, across)
+    if (width, across) != (1, "minor"):
+        raise InputError(
+            f"a width and its across convention are a line's, not a {shape}'s", "width"
+        )
+    return _REGIONS[shape](params, method, n, rule_name)
+
+
 def antialias_solution(
     shape: str,
     params: Sequence[Number],
     *,
     method: str = "area",
-    samples: int = 4,
+    samples: int | None = None,
     levels: int = 8,
     rule_name: str = "even-odd",
+    ends: str | None = None,
+    width: Number = 1,
+    across: str = "minor",
+    subgrid: str | None = None,
+    divide: str | None = None,
 ) -> Solution:
     """Area sampling (``method="area"``) or ``samples x samples`` supersampling of a
     ``line`` (``x1 y1 x2 y2``), a ``circle`` (``r [xc yc]``) or a ``polygon`` (``x1 y1 ...``);
-    ``method="wu"``: Wu's line (:func:`wu_solution`).
+    ``method="wu"``: Wu's line (:func:`wu_solution`, with its ``ends`` convention);
+    ``method="subpixel"``: Hearn & Baker's supersampling of a line, Bresenham on the
+    ``samples x samples`` sub-pixel grid (3 by default; ``subgrid`` convention). ``samples``
+    defaults to 4 for ``supersample``.
 
     >>> sol = antialias_solution("polygon", [0, 0, 2, 0, 2, 1, 0, 1])
     >>> [q.text for q in sol.derived][-2]
     'sum of I = 2 = the exact area of the shape'
     """
     L = check_levels(levels)
-    if method == "wu":
-        if shape != "line":
-            raise InputError(f"wu draws lines only, not a {shape}", "method")
-        return wu_solution(*_line_params(params), levels=L)
+    line_only = _line_method(
+        shape, params, method, samples, L, ends, width, across, subgrid, divide
+    )
+    if line_only is not None:
+        return line_only
+    samples = 4 if samples is None else samples
     if method not in ("area", "supersample"):
-        raise InputError(f"unknown method {method!r} (choose from area, supersample, wu)", "method")
+        raise InputError(
+            f"unknown method {method!r} (choose from area, supersample, wu, subpixel)", "method"
+        )
     n = cov.check_samples(samples) if method == "supersample" else 1
     check_rule(rule_name)
-    if shape not in _REGIONS:
-        raise InputError(f"unknown shape {shape!r} (choose from line, circle, polygon)", "shape")
-    region = _REGIONS[shape](params, method, n, rule_name)
+    region = _region(shape, params, method, n, rule_name, width, across)
     values, title = region.values, region.title
     derived = [*region.derived, *_sampling_rules(method, n)]
     notes = list(region.notes)
@@ -402,7 +326,7 @@ def antialias_solution(
     order = list(values)
     picture = _picture({p: lv for p, lv in levels_of.items() if lv}, L)
     name = "Unweighted area sampling" if method == "area" else f"Supersampling {n} x {n}"
-    return Solution(
+    sol = Solution(
         primitive=shape,
         algorithm=method,
         title=f"{name}: {title}, L = {L}",
@@ -421,3 +345,6 @@ def antialias_solution(
         figures=(picture,) if picture else (),
         geometry={**region.geometry, "shades": levels_of, "levels": L, "numbering": "none"},
     )
+    if shape == "line":
+        sol.data = {**sol.data, "conventions": {"across": across}, "width": width}
+    return sol

@@ -355,18 +355,12 @@ def bspline_at_solution(
     )
 
 
-def bspline_basis_knots_solution(
-    degree: int, knots: Sequence[Number], samples: int | None = None
-) -> Solution:
-    """The basis functions ``N_{i,p}(t)`` of a degree and a knot vector alone (no control
-    points), tabulated over the whole knot range ``[u_0, u_m]``, as textbooks print them.
+def check_knot_list(degree: int, knots: Sequence[Number]) -> tuple[tuple[Number, ...], int, int]:
+    """A degree and an explicit knot vector alone, checked: ``(u, m, n)`` with ``u_0 .. u_m``
+    and ``n + 1 = m - p`` basis functions.
 
-    ``n + 1 = m - p`` functions; the rows sum to 1 only on the domain ``[u_p, u_{n+1}]``.
-
-    >>> from fractions import Fraction as F
-    >>> sol = bspline_basis_knots_solution(2, [0, F(1, 4), F(1, 2), F(3, 4), 1], 4)
-    >>> [tuple(str(v) for v in row[2:]) for row in sol.tables[0].rows()][1:4]
-    [('1/2', '0', '1/2'), ('1/2', '1/2', '1'), ('0', '1/2', '1/2')]
+    >>> check_knot_list(2, [0, 1, 2, 3, 4])
+    ((0, 1, 2, 3, 4), 4, 1)
     """
     if not 1 <= degree <= MAX_DEGREE:
         raise InputError(f"degree must satisfy 1 <= p <= {MAX_DEGREE}, got p = {degree}", "degree")
@@ -387,6 +381,23 @@ def bspline_basis_knots_solution(
             )
     if any(u.count(v) > degree + 1 for v in set(u)):
         raise InputError(f"a knot may repeat at most p + 1 = {degree + 1} times", "knots")
+    return u, m, n
+
+
+def bspline_basis_knots_solution(
+    degree: int, knots: Sequence[Number], samples: int | None = None
+) -> Solution:
+    """The basis functions ``N_{i,p}(t)`` of a degree and a knot vector alone (no control
+    points), tabulated over the whole knot range ``[u_0, u_m]``, as textbooks print them.
+
+    ``n + 1 = m - p`` functions; the rows sum to 1 only on the domain ``[u_p, u_{n+1}]``.
+
+    >>> from fractions import Fraction as F
+    >>> sol = bspline_basis_knots_solution(2, [0, F(1, 4), F(1, 2), F(3, 4), 1], 4)
+    >>> [tuple(str(v) for v in row[2:]) for row in sol.tables[0].rows()][1:4]
+    [('1/2', '0', '1/2'), ('1/2', '1/2', '1'), ('0', '1/2', '1/2')]
+    """
+    u, m, n = check_knot_list(degree, knots)
     t0, t1 = u[0], u[-1]
     samples = 2 * m if samples is None else check_samples(samples)
     check_weights(samples, n + 1)

@@ -127,6 +127,7 @@ def line_solution(
     tie: str | None = None,
     start: str | None = None,
     scale: str | None = None,
+    ends: str | None = None,
     convention: str | None = None,
     layout: str = "textbook",
     derive: bool = False,
@@ -136,7 +137,8 @@ def line_solution(
     """The worked solution of a line with one of :data:`ALGORITHMS`.
 
     ``rounding`` (dda, basic), ``tie`` (bresenham) and ``start`` (bresenham, dda: ``"swap"``
-    to walk from the end with the smaller major coordinate, ``"given"`` from P1) and ``scale`` (midpoint: ``"integer"`` d = 2F(M) or ``"half"`` d = F(M)) are the conventions
+    to walk from the end with the smaller major coordinate, ``"given"`` from P1) and ``scale`` (midpoint: ``"integer"`` d = 2F(M) or ``"half"`` d = F(M)) and ``ends`` (wu:
+    ``"full"`` or ``"coverage"``) are the conventions
     (:mod:`scanconv.algorithms.conventions`), ``convention`` a named preset; ``layout`` is
     ``"notes"`` (Bresenham: row k plots (x_k, y_k), row 0 the start pixel) or ``"textbook"``;
     ``derive`` adds the derivation, ``pseudocode`` the algorithm as a table; ``annotate``
@@ -165,22 +167,22 @@ def line_solution(
         "line",
         algo,
         convention,
-        {"rounding": rounding, "tie": tie, "start": start, "scale": scale},
+        {"rounding": rounding, "tie": tie, "start": start, "scale": scale, "ends": ends},
     )
-    if algo == "wu":  # anti-aliased: two pixels per step with their intensities, no conventions
+    if algo == "wu":  # anti-aliased: two pixels per step with their intensities, its ends knob
         if derive or pseudocode:
             raise InputError(
                 "the derivation and the pseudocode cover bresenham, dda and basic, not wu",
                 "derive" if derive else "pseudocode",
             )
-        from .antialias import wu_solution
+        from .antialias_wu import wu_solution
 
-        return wu_solution(x1, y1, x2, y2)
+        return wu_solution(x1, y1, x2, y2, ends=knobs["ends"])
     sol = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)
     if annotate:
-        ends = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
+        points = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
         extra = [convention_note("line", convention, knobs)]
-        erratum = line_errata(algo, ends)
+        erratum = line_errata(algo, points)
         if erratum:
             extra.append(erratum)
         sol.notes = (*sol.notes, *extra)

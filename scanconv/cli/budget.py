@@ -35,6 +35,8 @@ DOCUMENT_COMMANDS = {
     "sheet": "each question (check_question) and their total (render.budget.document)",
     "practice": "its questions go through the sheet's answer_questions, like a sheet's",
     "exam": "the exam book's questions go through the sheet's answer_questions",
+    "site": "a fixed build: the pinned runtime, three wheels and the exam book (exam's bound); "
+    "each question the page answers goes through scanconv.questions, which checks the budget",
     "check": "the question (check_question); --batch: render.budget.check_batch",
 }
 """The commands that run other commands as questions, and how their work is bounded."""

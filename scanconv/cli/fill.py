@@ -11,12 +11,12 @@ from typing import Annotated
 import typer
 
 from .. import _api as api
-from ..algorithms.process_choices import AAMethod, FillRule, Order
+from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid, WuEnds
 from ..core.records import Solution
 from ..questions import commands
 from .application import _subapp, app
 from .command import answers
-from .options import NUMERIC_ARGS, Center, Num, Vertices, choice, integer, number
+from .options import NUMERIC_ARGS, Center, Num, Vertices, choice, integer, num_option, number
 
 fill_app = _subapp(
     "fill", "Seed fills from a pixel: boundary fill and flood fill, 4- or 8-connected."
@@ -45,7 +45,62 @@ Method = Annotated[
     choice(
         "--method",
         "-m",
-        help="area: exact covered area; supersample: N x N samples; wu: Wu's line (lines only).",
+        help="area: exact covered area; supersample: N x N samples; wu: Wu's line; subpixel: "
+        "Hearn & Baker's Bresenham on sub-pixels (wu and subpixel: lines only).",
+    ),
+]
+Ends = Annotated[
+    WuEnds | None,
+    choice(
+        "--ends",
+        help="wu: end points at full intensity (full, the default) or weighted by the part of "
+        "the end column the line covers (coverage, as Wikipedia's pseudocode).",
+    ),
+]
+
+Width = Annotated[
+    Fraction,
+    num_option(
+        "--width",
+        "-w",
+        help="area, supersample: the line's width w (default 1 pixel).",
+        metavar="W",
+    ),
+]
+AcrossOpt = Annotated[
+    Across,
+    choice(
+        "--across",
+        help="area, supersample: w measured along the minor axis (minor, the default: a "
+        "parallelogram) or perpendicular to the line (a rectangle).",
+    ),
+]
+SubgridOpt = Annotated[
+    Subgrid | None,
+    choice(
+        "--subgrid",
+        help="subpixel: the sub-pixel line from P1's first sub-pixel over every sub-column of "
+        "the end pixels (span, the default) or between the end pixels' centre sub-pixels "
+        "(centre).",
+    ),
+]
+DivideOpt = Annotated[
+    Divide | None,
+    choice(
+        "--divide",
+        help="subpixel: intensity c / n (n, the default: n levels above zero) or c / n^2 (n2: "
+        "the fraction of the pixel's sub-pixels).",
+    ),
+]
+LineSamples = Annotated[
+    int | None,
+    typer.Option(
+        "--samples",
+        "-n",
+        parser=integer,
+        help="N x N samples (supersample, 1-16, default 4) or sub-pixels (subpixel, default 3) "
+        "per pixel.",
+        show_default=False,
     ),
 ]
 
@@ -152,15 +207,24 @@ def antialias_line(
     x2: Num,
     y2: Num,
     method: Method = AAMethod.area,
-    samples: Samples = 4,
+    samples: LineSamples = None,
     levels: Levels = 8,
+    ends: Ends = None,
+    width: Width = Fraction(1),
+    across: AcrossOpt = Across.minor,
+    subgrid: SubgridOpt = None,
+    divide: DivideOpt = None,
 ) -> Solution:
     """An anti-aliased line: Wu's algorithm (the two pixels of each step and their
-    intensities), or a one-pixel-wide line by area sampling or supersampling.
+    intensities), a line w wide by area sampling or supersampling, or Hearn & Baker's
+    supersampling (Bresenham on a 3 x 3 sub-pixel grid, the sub-pixels counted per pixel).
 
     Example: scanconv antialias line 0 0 8 3 --method wu
     """
-    return api.antialias_line(x1, y1, x2, y2, method=method, samples=samples, levels=levels)
+    return api.antialias_line(
+        x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends, width=width,
+        across=across, subgrid=subgrid, divide=divide,
+    )  # fmt: skip
 
 
 @antialias_app.command("circle", context_settings=NUMERIC_ARGS)

@@ -16,6 +16,7 @@ from ..algorithms.choices import (
     Rounding,
     Start,
     Tie,
+    WuEnds,
 )
 from ..core.records import Solution
 from .application import app
@@ -87,6 +88,14 @@ def line(
             help="midpoint: d = 2F(M), integers (integer, the default) or d = F(M), halves (half).",
         ),
     ] = None,
+    ends: Annotated[
+        WuEnds | None,
+        choice(
+            "--ends",
+            help="wu: end points at full intensity (full, the default) or weighted by the "
+            "part of the end column the line covers (coverage, as Wikipedia's pseudocode).",
+        ),
+    ] = None,
     convention: ConventionOpt = None,
     layout: LayoutOpt = Layout.notes,
     derive: DeriveOpt = False,
@@ -106,6 +115,7 @@ def line(
         tie=tie,
         start=start,
         scale=scale,
+        ends=ends,
         convention=convention,
         layout=layout,
         derive=derive,

@@ -321,9 +321,14 @@ fill_flood = _seed_fill("flood")
 
 
 def antialias_line(
-    x1: Any, y1: Any, x2: Any, y2: Any, method: Any, samples: Any, levels: Any
-) -> Solution:
-    return api.antialias_line(x1, y1, x2, y2, method=method, samples=samples, levels=levels)
+    x1: Any, y1: Any, x2: Any, y2: Any, method: Any, samples: Any, levels: Any,
+    ends: Any = None, width: Any = 1, across: Any = "minor", subgrid: Any = None,
+    divide: Any = None,
+) -> Solution:  # fmt: skip
+    return api.antialias_line(
+        x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends, width=width,
+        across=across, subgrid=subgrid, divide=divide,
+    )  # fmt: skip
 
 
 def antialias_circle(r: Any, center: Any, method: Any, samples: Any, levels: Any) -> Solution:

@@ -135,8 +135,14 @@ def _aa_line(a: Args) -> Work:
     rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
     if _choice(a, "method", "area") == "wu":  # two pixels a column, both ends a little more
         return Work("rows", 2 * rows + 4, None, "antialias_line/wu", param)
+    if _choice(a, "method", "area") == "subpixel":  # n sub-pixel rows per pixel column
+        n = int(_num(a, "samples")) if a.get("samples") is not None else 3
+        return Work("rows", n * rows + n, None, "antialias_line/subpixel", param)
     x1, y1, x2, y2 = (_num(a, k) for k in ("x1", "y1", "x2", "y2"))
-    return _aa_cells(a, "antialias_line", param, abs(x2 - x1), abs(y2 - y1))
+    # a strip wider than the one pixel the margin of _aa_cells allows for widens the box
+    w = abs(_num(a, "width")) - 1 if a.get("width") is not None else Fraction(0)
+    w = w if w > 0 else Fraction(0)
+    return _aa_cells(a, "antialias_line", param, abs(x2 - x1) + w, abs(y2 - y1) + w)
 
 
 def _aa_cells(a: Args, command: str, param: str, width: Fraction, height: Fraction) -> Work:
@@ -333,6 +339,9 @@ BOUNDED: dict[str, str] = {
 # fmt: off
 _OTHER_COSTS: dict[str, dict[str, float]] = {
     "antialias_line/wu": {"csv": 26.9, "json": 35.2, "plain": 38.8, "markdown": 41.9, "latex": 37.7, "html": 120.1, "rich": 558},
+    # subpixel: timed as scanconv antialias line 0 0 3000 1000 --method subpixel per format
+    # (9,003 sub-pixel rows and the pixel table, start-up subtracted); rich estimated
+    "antialias_line/subpixel": {"csv": 150, "json": 215, "plain": 385, "markdown": 590, "latex": 490, "html": 1100, "rich": 4000},
     "antialias_line/area": {"csv": 11.2, "json": 9.9, "plain": 8.7, "markdown": 10.6, "latex": 5.1, "html": 17.8, "rich": 75.2},
     "antialias_line/supersample": {"csv": 31.7, "json": 91.7, "plain": 127.8, "markdown": 58.8, "latex": 198, "html": 198, "rich": 3960},
     "antialias_circle/area": {"csv": 7.8, "json": 21.7, "plain": 28.6, "markdown": 23.5, "latex": 22.6, "html": 23.3, "rich": 155.9},
