@@ -11,8 +11,8 @@ from typing import Any
 
 from ..core.numeric import round_half_up
 from ..core.records import PixelFigure, ShadedMatrix, Solution
+from ..document.numbering import marks_label
 from . import Options
-from .cells import marks_label
 from .figure import CELL, extent, grey_of, numbering_legend, step_labels
 from .mathml import esc
 from .stepper import Stepping

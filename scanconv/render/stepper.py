@@ -16,9 +16,9 @@ from typing import Any, NamedTuple
 from ..core.numeric import fmt_pixel
 from ..core.records import Solution, Step, step_getter
 from ..core.working import tex_to_unicode
+from ..document.numbering import label_offset, mirror_images, step_labels
 from . import Options
 from .cells import cell, unicode_heading
-from .figure import label_offset, mirror_images, step_labels
 
 MAX_STEPS = 20_000
 """Steps the stepper goes through; a longer answer's later steps light at the last step."""

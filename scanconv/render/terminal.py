@@ -30,9 +30,10 @@ from rich.text import Text
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
 from ..core.working import visible
+from ..document.numbering import marks_label
 from . import Notice, Options
 from . import grid as gridmod
-from .cells import marks_label, note_unicode, numeric_column, unicode_heading, wrap_items
+from .cells import note_unicode, numeric_column, unicode_heading, wrap_items
 from .text import all_tables, figure_text, pixel_count
 
 CHUNK_ROWS = 1000

@@ -17,11 +17,11 @@ from itertools import islice
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Figure, ShadedMatrix, Solution, Table, step_getter
 from ..core.working import ascii_text, visible
+from ..document.numbering import marks_label
 from . import Notice, Options
 from . import grid as gridmod
 from .cells import (
     cell,
-    marks_label,
     note_segments,
     note_unicode,
     numeric_column,
