@@ -10,9 +10,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from enum import Enum
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..core.records import Solution
+
+if TYPE_CHECKING:
+    from ..document import Document
 
 
 class Format(str, Enum):
@@ -62,8 +65,11 @@ Chunk = Any  # str | Notice | a rich renderable
 """What a renderer yields."""
 
 
-def render(solution: Solution, fmt: Format, options: Options | None = None) -> Iterator[Chunk]:
-    """Render ``solution`` in ``fmt``: the single dispatch for every ``--format``.
+def render(
+    solution: Solution | Document, fmt: Format, options: Options | None = None
+) -> Iterator[Chunk]:
+    """Render ``solution`` (or its :class:`~scanconv.document.Document`) in ``fmt``: the single
+    dispatch for every ``--format``; each format is a mapping from the document's blocks.
 
     >>> from scanconv.answers.line import line_solution
     >>> chunks = render(line_solution("bresenham", 0, 0, 2, 1), Format.csv)
@@ -75,26 +81,29 @@ def render(solution: Solution, fmt: Format, options: Options | None = None) -> I
     options = options or Options()
     if fmt is Format.auto:
         raise ValueError("Format.auto must be resolved before rendering")
+    from ..document import as_document
+
+    doc = as_document(solution)
     if fmt is Format.csv:
         from .data import render_csv
 
-        return render_csv(solution)
+        return render_csv(doc)
     if fmt is Format.json:
         from .data import render_json
 
-        return render_json(solution)
+        return render_json(doc)
     if fmt is Format.latex:
         from .latex import render_latex
 
-        return render_latex(solution, options)
+        return render_latex(doc, options)
     if fmt is Format.html:
         from .html import render_html
 
-        return render_html(solution, options)
+        return render_html(doc.source, options)  # ported next
     if fmt is Format.rich:
         from .terminal import render_rich
 
-        return render_rich(solution, options)
+        return render_rich(doc, options)
     from .text import render_text
 
-    return render_text(solution, options, markdown=fmt is Format.markdown)
+    return render_text(doc, options, markdown=fmt is Format.markdown)

@@ -113,7 +113,16 @@ def note_unicode(note: str) -> str:
     >>> note_unicode(r"$p_k < 0$ chooses E, $p_k \\geq 0$ chooses NE")
     'pₖ < 0 chooses E, pₖ ≥ 0 chooses NE'
     """
-    return "".join(tex_to_unicode(t) if math else t for math, t in note_segments(note))
+    return segments_unicode(note_segments(note))
+
+
+def segments_unicode(segments: Iterable[tuple[bool, str]]) -> str:
+    """Prose segments (a :class:`~scanconv.document.Prose`'s) in Unicode, the math too.
+
+    >>> segments_unicode([(True, "p_k < 0"), (False, " chooses E")])
+    'pₖ < 0 chooses E'
+    """
+    return "".join(tex_to_unicode(t) if math else t for math, t in segments)
 
 
 _SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")

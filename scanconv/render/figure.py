@@ -47,6 +47,7 @@ from xml.sax.saxutils import escape
 
 from ..core.numeric import round_half_up
 from ..core.records import Pixel, Solution
+from ..document.numbering import label_offset as label_offset  # re-exported: its old home
 from ..document.numbering import numbering_legend, step_labels
 
 CELL = 32
