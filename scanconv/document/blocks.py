@@ -69,6 +69,11 @@ class StepTable(NamedTuple):
     region_p: tuple[str, ...] = ()
     """The TeX name of the decision parameter in each region (``p1_k``, ``p2_k``), region 1
     first; empty: the ``p`` column's own heading."""
+    symmetry: int = 1
+    """1, 4 or 8: how each row's point is mirrored into plotted pixels (with 4 or 8 the
+    point is relative to :attr:`center`, as the circle tables print it)."""
+    center: tuple[Any, Any] = (0, 0)
+    """The centre the point is mirrored about (with symmetry 4 or 8)."""
     offset: int = 0
     """1 when a row plots ``(x_{k+1}, y_{k+1})`` (the pixel its decision chose: the start
     pixel is plotted before row 0), else 0."""
@@ -109,10 +114,6 @@ class Pixels(NamedTuple):
     """Points drawn apart (control points, the centre)."""
     marks_label: str
     """What :attr:`marks` are (``"centre"``, ``"control point"``)."""
-    symmetry: int
-    """1, 4 or 8: how each step's point is mirrored into plotted pixels."""
-    center: tuple[Any, Any]
-    """The centre the point is mirrored about (with symmetry 4 or 8)."""
     ideal: dict[str, Any]
     """The ideal primitive drawn over the pixels (keys ``line``, ``circle``, ``ellipse``,
     ``polyline``, ``control``, as :attr:`Solution.geometry` documents them)."""

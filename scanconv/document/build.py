@@ -102,6 +102,8 @@ def _step_table(solution: Solution) -> StepTable:
         solution.show_steps,
         "column" if "region" in solution.extra_keys else "restart",
         region_p,
+        int(solution.geometry.get("symmetry", 1)),
+        solution.geometry.get("center", (0, 0)),
         label_offset(solution),
     )
 
@@ -115,8 +117,6 @@ def _pixels(solution: Solution, construction: str | None) -> Pixels:
         solution.bbox,
         solution.marks,
         marks_label(solution),
-        int(geometry.get("symmetry", 1)),
-        geometry.get("center", (0, 0)),
         {k: geometry[k] for k in IDEAL if k in geometry},
         str(geometry.get("polyline_name", "curve")),
         tuple(geometry.get("outline") or ()),

@@ -99,7 +99,7 @@ def render(
     if fmt is Format.html:
         from .html import render_html
 
-        return render_html(doc.source, options)  # ported next
+        return render_html(doc, options)
     if fmt is Format.rich:
         from .terminal import render_rich
 

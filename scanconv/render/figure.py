@@ -193,15 +193,25 @@ def extent(solution: Solution, pixels: Iterable[Pixel]) -> tuple[int, int, int, 
     >>> extent(sol, sol.pixels())
     (1, 1, 11, 7)
     """
+    geometry = solution.geometry
+    return cells_extent(pixels, (*solution.marks, *geometry.get("outline", ())), geometry)
+
+
+def cells_extent(
+    pixels: Iterable[Pixel], marks: Iterable[Pixel], ideal: dict[str, Any]
+) -> tuple[int, int, int, int]:
+    """``(xmin, ymin, xmax, ymax)`` of the cells that show ``pixels``, ``marks`` (the marked
+    points, an outline) and the ideal primitive, margin included.
+
+    >>> cells_extent([(2, 2), (5, 3)], [], {"line": (2, 2, 5, 3)})
+    (1, 1, 6, 4)
+    """
     xs: list[int] = []
     ys: list[int] = []
-    for x, y in pixels:
+    for x, y in (*pixels, *marks):
         xs.append(x)
         ys.append(y)
-    for x, y in (*solution.marks, *solution.geometry.get("outline", ())):
-        xs.append(x)
-        ys.append(y)
-    for fx, fy in _points(solution.geometry):
+    for fx, fy in _points(ideal):
         xs.append(round_half_up(fx))
         ys.append(round_half_up(fy))
     if not xs:
