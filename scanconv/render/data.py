@@ -25,10 +25,11 @@ from itertools import chain, islice
 from ..core.records import Solution
 from ..core.working import json_visible
 from ..document import Document, Given, Notes, Pixels, StepTable, Table, Working, as_document
+from . import Options
 from .cells import json_value, segments_unicode
 
 
-def render_csv(answer: Solution | Document) -> Iterator[str]:
+def render_csv(answer: Solution | Document, options: Options | None = None) -> Iterator[str]:
     """The step table as CSV (or, for an answer without one, its first secondary table)."""
     doc = as_document(answer)
     table: StepTable | None = doc.get(StepTable)
@@ -135,7 +136,7 @@ def _csv_cell(v: object) -> object:
     return "" if j is None else j
 
 
-def render_json(answer: Solution | Document) -> Iterator[str]:
+def render_json(answer: Solution | Document, options: Options | None = None) -> Iterator[str]:
     """The whole answer as one JSON object, steps streamed one per line."""
     doc = as_document(answer)
     d = json.dumps

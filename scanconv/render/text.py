@@ -284,6 +284,16 @@ def render_text(
         yield "\n"  # answers appended with >> stay apart
 
 
+def render_markdown(answer: Solution | Document, options: Options) -> Iterator[str | Notice]:
+    """The ``markdown`` format (:func:`render_text`)."""
+    return render_text(answer, options, markdown=True)
+
+
+def render_plain(answer: Solution | Document, options: Options) -> Iterator[str | Notice]:
+    """The ``plain`` format (:func:`render_text`)."""
+    return render_text(answer, options, markdown=False)
+
+
 def _md_title(block: Title, options: Options, drawn: list[str]) -> Iterator[str]:
     yield f"## {md_text(block.text)}\n\n"
 
