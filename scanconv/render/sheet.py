@@ -23,6 +23,7 @@ from typing import NamedTuple
 
 from ..core.records import Column, Solution
 from ..core.working import ascii_text, json_visible, visible
+from ..document import Given, as_document
 from . import Notice, Options
 from .cells import numeric_column
 from .text import md_text
@@ -268,8 +269,6 @@ def _parts(blank: Blank) -> list[tuple[list[int], str]]:
 def _markdown(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
-    from .text import table_lines
-
     section_level, level = _levels(sheet)
     if sheet.title:
         yield f"# {md_text(' '.join(sheet.title.split()))}\n\n{_intro(sheet, kind)}\n\n"
@@ -282,37 +281,55 @@ def _markdown(
                 yield f"{'#' * section_level} {md_text(section)}\n\n"
             yield f"{'#' * level} Question {q.number}{_marks(q.marks)}\n\n"
             if kind == "key":
-                if q.wording:
-                    yield f"> {md_text(q.wording)}\n\n"
-                yield md_code(q.command) + "\n\n"
-                first = True
-                for chunk in _answer_chunks(a, "markdown"):
-                    if first and isinstance(chunk, str) and chunk.startswith("## "):
-                        chunk = "#" * (level + 1) + chunk[2:]
-                    first = False
-                    yield chunk
-                continue
-            yield md_text(wording(a)) + "\n\n"
-            if a.solution.given:
-                given = ", ".join(f"${g.tex}$" for g in a.solution.given)
-                yield f"**Given:** {given}\n\n"
-            for blank in _blank_tables(a.solution):
-                for part, label in _parts(blank):
-                    yield f"**{md_text(label)}:**\n\n"
-                    cells = (
-                        [r[i] or " " * max(3, blank.widths[i]) for i in part]
-                        for r in _blank_rows(blank)
-                    )
-                    for line in table_lines(
-                        [f"${blank.columns[i].tex}$" for i in part],
-                        [numeric_column(blank.columns[i]) for i in part],
-                        cells,
-                        markdown=True,
-                    ):
-                        yield line + "\n"
-                    yield "\n"
-            if not _blank_tables(a.solution, count=False):
-                yield "**Answer:**\n\n" + "&nbsp;\n\n" * 6
+                yield from _md_key(a, level)
+            else:
+                yield from _md_worksheet(a)
+
+
+def _md_key(a: Answered, level: int) -> Iterator[str | Notice]:
+    """A key's question in Markdown: its wording, its command, its answer (the ``markdown``
+    format's mapping, the answer's title one level under the question's)."""
+    if a.question.wording:
+        yield f"> {md_text(a.question.wording)}\n\n"
+    yield md_code(a.question.command) + "\n\n"
+    first = True
+    for chunk in _answer_chunks(a, "markdown"):
+        if first and isinstance(chunk, str) and chunk.startswith("## "):
+            chunk = "#" * (level + 1) + chunk[2:]
+        first = False
+        yield chunk
+
+
+def _md_worksheet(a: Answered) -> Iterator[str]:
+    """A worksheet's question in Markdown: its wording, the given values, empty tables."""
+    from .text import table_lines
+
+    yield md_text(wording(a)) + "\n\n"
+    given = _given(a)
+    if given is not None:
+        yield f"**Given:** {', '.join(f'${g.tex}$' for g in given.quantities)}\n\n"
+    for blank in _blank_tables(a.solution):
+        for part, label in _parts(blank):
+            yield f"**{md_text(label)}:**\n\n"
+            cells = (
+                [r[i] or " " * max(3, blank.widths[i]) for i in part] for r in _blank_rows(blank)
+            )
+            for line in table_lines(
+                [f"${blank.columns[i].tex}$" for i in part],
+                [numeric_column(blank.columns[i]) for i in part],
+                cells,
+                markdown=True,
+            ):
+                yield line + "\n"
+            yield "\n"
+    if not _blank_tables(a.solution, count=False):
+        yield "**Answer:**\n\n" + "&nbsp;\n\n" * 6
+
+
+def _given(a: Answered) -> Given | None:
+    """The answer's :class:`~scanconv.document.Given` block, if it has one."""
+    given: Given | None = as_document(a.solution).get(Given)
+    return given
 
 
 def _plain(
