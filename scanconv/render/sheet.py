@@ -21,7 +21,7 @@ import shlex
 from collections.abc import Iterator, Sequence
 from typing import NamedTuple
 
-from ..core.records import Column, Solution
+from ..core.records import Column, Quantity, Solution
 from ..core.working import ascii_text, json_visible, visible
 from ..document import Given, as_document
 from . import Notice, Options
@@ -174,7 +174,7 @@ def wording(a: Answered) -> str:
         return a.question.wording
     tables = bool(_blank_tables(a.solution, count=False))
     todo = "Show your working and complete the table" if tables else "Show your working"
-    title = a.solution.title.rstrip(".")
+    title = as_document(a.solution).title.rstrip(".")
     return f"{title}. {todo}{'s' if len(_blank_tables(a.solution, False)) > 1 else ''}."
 
 
@@ -305,9 +305,8 @@ def _md_worksheet(a: Answered) -> Iterator[str]:
     from .text import table_lines
 
     yield md_text(wording(a)) + "\n\n"
-    given = _given(a)
-    if given is not None:
-        yield f"**Given:** {', '.join(f'${g.tex}$' for g in given.quantities)}\n\n"
+    if given_of(a):
+        yield f"**Given:** {', '.join(f'${g.tex}$' for g in given_of(a))}\n\n"
     for blank in _blank_tables(a.solution):
         for part, label in _parts(blank):
             yield f"**{md_text(label)}:**\n\n"
@@ -326,10 +325,10 @@ def _md_worksheet(a: Answered) -> Iterator[str]:
         yield "**Answer:**\n\n" + "&nbsp;\n\n" * 6
 
 
-def _given(a: Answered) -> Given | None:
-    """The answer's :class:`~scanconv.document.Given` block, if it has one."""
+def given_of(a: Answered) -> tuple[Quantity, ...]:
+    """The given values of the answer's :class:`~scanconv.document.Given` block (none: ``()``)."""
     given: Given | None = as_document(a.solution).get(Given)
-    return given
+    return given.quantities if given is not None else ()
 
 
 def _plain(
@@ -357,8 +356,8 @@ def _plain(
                 yield "\n"
                 continue
             yield ascii_text(wording(a)) + "\n\n"
-            if a.solution.given:
-                given = ", ".join(ascii_text(g.text) for g in a.solution.given)
+            if given_of(a):
+                given = ", ".join(ascii_text(g.text) for g in given_of(a))
                 yield f"Given: {given}\n\n"
             for blank in _blank_tables(a.solution):
                 yield f"{ascii_text(blank.title)}:\n"
@@ -410,7 +409,7 @@ def _json(sheet: Sheet, answered: Sequence[Answered], kind: str) -> str:
                 entry["command"] = q.command
                 entry["answer"] = json.loads("".join(render_json(a.solution)))
             else:
-                entry["given"] = [g.text for g in a.solution.given]
+                entry["given"] = [g.text for g in given_of(a)]
                 entry["tables"] = [
                     {"title": b.title, "columns": [c.key for c in b.columns], "rows": b.rows}
                     for b in _blank_tables(a.solution)
@@ -504,8 +503,8 @@ def _html_blank(a: Answered) -> Iterator[str]:
     """A worksheet question's given values and empty tables, in HTML."""
     from .mathml import esc as escape
 
-    if a.solution.given:
-        given = ", ".join(escape(g.text) for g in a.solution.given)
+    if given_of(a):
+        given = ", ".join(escape(g.text) for g in given_of(a))
         yield f"<p><strong>Given:</strong> {given}</p>\n"
     blanks = _blank_tables(a.solution)
     for blank in blanks:
