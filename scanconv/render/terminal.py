@@ -45,7 +45,7 @@ from ..document import (
 from . import Notice, Options
 from . import grid as gridmod
 from .cells import numeric_column, segments_unicode, unicode_heading, wrap_items
-from .text import figure_text, pixel_count, step_rows, table_rows
+from .text import figure_text, grid_block, pixel_count, step_rows, table_rows
 
 CHUNK_ROWS = 1000
 """A long table is printed as several boxed tables of this many rows each."""
@@ -203,15 +203,7 @@ def _pixels(block: Pixels, options: Options, width: int, drawn: list[list[str]])
             ("plain", "svg", "no-grid"),
         )
         return
-    grid = gridmod.render_grid(
-        block.pixels(),
-        block.bbox,
-        origin=options.origin,
-        marks=block.marks,
-        mark_label=block.marks_label,
-        compact=compact,
-    )
-    drawn.append(list(grid))
+    drawn.append([c for c in grid_block(block, options, compact=compact) if isinstance(c, str)])
 
 
 def _drawing(block: Drawing, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
