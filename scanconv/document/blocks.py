@@ -154,10 +154,6 @@ class Document(NamedTuple):
     title: str
     blocks: tuple[Block, ...]
     data: dict[str, Any]
-    source: Any = None
-    """The :class:`~scanconv.core.records.Solution` the document was built from, if any: read
-    only by the drawn figures (:mod:`scanconv.render.figure`, its TikZ form), which still
-    walk it."""
 
     def get(self, kind: type[Any]) -> Any:
         """The first block of type ``kind``, or ``None``."""

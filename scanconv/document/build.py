@@ -78,9 +78,8 @@ def document(solution: Solution) -> Document:
         blocks.append(_pixels(solution, "de Casteljau points" if points else None))
     blocks.extend(Drawing(f) for f in solution.figures)
     return Document(
-        solution.primitive, solution.algorithm, solution.title, tuple(blocks), solution.data,
-        solution,
-    )  # fmt: skip
+        solution.primitive, solution.algorithm, solution.title, tuple(blocks), solution.data
+    )
 
 
 def _step_table(solution: Solution) -> StepTable:

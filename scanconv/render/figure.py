@@ -47,8 +47,9 @@ from xml.sax.saxutils import escape
 
 from ..core.numeric import round_half_up
 from ..core.records import Pixel, Solution
-from ..document.numbering import label_offset as label_offset  # re-exported: its old home
-from ..document.numbering import numbering_legend, step_labels
+from ..document import Document, Pixels, as_document
+from ..document.numbering import label_offset as label_offset  # re-exported: their old home
+from ..document.numbering import step_labels as step_labels
 
 CELL = 32
 """Side of one pixel cell, in SVG user units (px)."""
@@ -185,16 +186,18 @@ def _points(geometry: dict[str, Any]) -> Iterator[tuple[float, float]]:
             yield float(x), float(y)
 
 
-def extent(solution: Solution, pixels: Iterable[Pixel]) -> tuple[int, int, int, int]:
-    """``(xmin, ymin, xmax, ymax)`` of the cells drawn, margin included.
+def extent(answer: Solution | Document, pixels: Iterable[Pixel]) -> tuple[int, int, int, int]:
+    """``(xmin, ymin, xmax, ymax)`` of the cells an answer's figure draws, margin included.
 
     >>> from scanconv.answers.line import line_solution
     >>> sol = line_solution("bresenham", 2, 2, 10, 6)
     >>> extent(sol, sol.pixels())
     (1, 1, 11, 7)
     """
-    geometry = solution.geometry
-    return cells_extent(pixels, (*solution.marks, *geometry.get("outline", ())), geometry)
+    block: Pixels | None = as_document(answer).get(Pixels)
+    if block is None:
+        return cells_extent(pixels, (), {})
+    return cells_extent(pixels, (*block.marks, *block.outline), block.ideal)
 
 
 def cells_extent(
@@ -252,8 +255,9 @@ class _Frame:
         return self.px(float(x)), self.py(float(y))
 
 
-def build(solution: Solution, origin: str = "bottom-left") -> Figure:
-    """Lay out the figure of ``solution`` (see the module's notes for what it shows).
+def build(answer: Solution | Document, origin: str = "bottom-left") -> Figure:
+    """Lay out the figure of an answer's :class:`~scanconv.document.Pixels` block (see the
+    module's notes for what it shows).
 
     Raises ``ValueError`` if the answer plots no pixels or the figure would be more than
     :data:`MAX_CELLS` cells wide or high.
@@ -263,10 +267,12 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
     >>> fig.count("pixel"), fig.count("ideal"), fig.count("step"), fig.height
     (9, 1, 9, 340.0)
     """
-    if solution.pixels is None:
+    doc = as_document(answer)
+    block: Pixels | None = doc.get(Pixels)
+    if block is None:
         raise ValueError("this answer plots no pixels, so there is no figure to draw")
-    pixels = list(dict.fromkeys(solution.pixels()))
-    cells = extent(solution, pixels)
+    pixels = list(dict.fromkeys(block.pixels()))
+    cells = cells_extent(pixels, (*block.marks, *block.outline), block.ideal)
     cols, rows = cells[2] - cells[0] + 1, cells[3] - cells[1] + 1
     if cols > MAX_CELLS or rows > MAX_CELLS:
         raise ValueError(
@@ -274,13 +280,13 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
             "draw a smaller primitive, or no figure"
         )
     f = _Frame(cells, origin == "top-left")
-    width = max(f.right + PAD_RIGHT, 16 + 8.4 * len(solution.title))
-    fig = Figure(float(width), float(f.bottom + PAD_BOTTOM), solution.title)
+    width = max(f.right + PAD_RIGHT, 16 + 8.4 * len(doc.title))
+    fig = Figure(float(width), float(f.bottom + PAD_BOTTOM), doc.title)
     add = fig.shapes.append
-    add(Shape("text", "title", (8, 22), solution.title, 14))
+    add(Shape("text", "title", (8, 22), doc.title, 14))
     half = -0.5 if f.top_left else 0.5
-    shades = solution.geometry.get("shades", {})
-    outline = list(dict.fromkeys(solution.geometry.get("outline", ())))
+    shades = block.shades or {}
+    outline = list(dict.fromkeys(block.outline))
     plotted = set(pixels)
     for x, y in outline:
         if (x, y) not in plotted:
@@ -288,7 +294,7 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
     for x, y in pixels:
         corner = (f.px(x - 0.5), f.py(y + half))
         if (x, y) in shades:
-            grey = grey_of(shades[(x, y)], int(solution.geometry["levels"]))
+            grey = grey_of(shades[(x, y)], block.levels)
             add(Shape("rect", "shade", corner, fill=grey))
         else:
             add(Shape("rect", "pixel", corner))
@@ -303,22 +309,22 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
         add(Shape("line", "axis", (f.px(0), f.top, f.px(0), f.bottom)))
     if f.y0 <= 0 <= f.y1:
         add(Shape("line", "axis", (f.left, f.py(0), f.right, f.py(0))))
-    _primitive(fig, solution.geometry, f)
+    _primitive(fig, block.ideal, f)
     arm = CELL * 0.22
-    for x, y in _marks(solution):
+    for x, y in _marks(block):
         cx, cy = f.pt(x, y)
         add(Shape("line", "mark", (cx - arm, cy - arm, cx + arm, cy + arm)))
         add(Shape("line", "mark", (cx - arm, cy + arm, cx + arm, cy - arm)))
-    labels = step_labels(solution)
+    labels = block.labels()
     for (x, y), k in labels.items():
         text = str(k)
         size = min(13.0, (CELL - 6) / (0.62 * len(text)))
         add(Shape("text", "step", (f.px(x), f.py(y) + 0.36 * size), text, size, "middle"))
-    for x, y in solution.geometry.get("control", ()):
+    for x, y in block.ideal.get("control", ()):
         # A ring, over the step number it may share a pixel with.
         add(Shape("circle", "control-point", (*f.pt(x, y), CELL * 0.3)))
     _axes(fig, f)
-    _legend(fig, solution, f.bottom, numbered=bool(labels))
+    _legend(fig, block, f.bottom, numbered=bool(labels))
     return fig
 
 
@@ -335,14 +341,14 @@ def grey_of(level: int, levels: int) -> str:
     return f"#{v:02x}{v:02x}{v:02x}"
 
 
-def _marks(solution: Solution) -> list[Pixel]:
+def _marks(block: Pixels) -> list[Pixel]:
     """The marked points still to draw: those that are not a control point's pixel (the
     control points are drawn exactly, on their polygon)."""
     control = {
         (round_half_up(Fraction(x)), round_half_up(Fraction(y)))
-        for x, y in solution.geometry.get("control", ())
+        for x, y in block.ideal.get("control", ())
     }
-    return [p for p in solution.marks if p not in control]
+    return [p for p in block.marks if p not in control]
 
 
 def _primitive(fig: Figure, geometry: dict[str, Any], f: _Frame) -> None:
@@ -383,26 +389,26 @@ def _axes(fig: Figure, f: _Frame) -> None:
     add(Shape("text", "tick", (f.left - 6, f.top - 6), ylabel, anchor="end"))
 
 
-def _legend(fig: Figure, solution: Solution, bottom: float, numbered: bool) -> None:
+def _legend(fig: Figure, block: Pixels, bottom: float, numbered: bool) -> None:
     """What the colours and numbers mean, wrapped to the figure's width."""
-    geometry = solution.geometry
-    if "shades" in geometry:
-        levels = int(geometry["levels"])
+    geometry = block.ideal
+    if block.shades is not None:
+        levels = block.levels
         parts = [f"grey: intensity level 0..{levels - 1} (black = {levels - 1})"]
     else:
         parts = ["filled: plotted pixel"]
-    if geometry.get("outline"):
-        parts.append(f"orange: {geometry.get('outline_name', 'outline')}")
+    if block.outline:
+        parts.append(f"orange: {block.outline_name}")
     if numbered:
-        parts.append(numbering_legend(solution))
+        parts.append(block.numbering())
     kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in geometry]
     if geometry.get("polyline"):
-        kinds.append(str(geometry.get("polyline_name", "curve")))
+        kinds.append(block.ideal_name)
     if kinds:
         parts.append(f"red: ideal {' and '.join(kinds)}")
     if geometry.get("control"):
         parts.append("green: control polygon and points")
-    if _marks(solution):
+    if _marks(block):
         parts.append("cross: marked point")
     room = max(int((fig.width - 16) / 6.2), 40)
     lines: list[str] = []
@@ -468,7 +474,7 @@ def to_svg(fig: Figure) -> str:
     return "\n".join(out) + "\n"
 
 
-def svg(solution: Solution, origin: str = "bottom-left") -> str:
+def svg(solution: Solution | Document, origin: str = "bottom-left") -> str:
     """The SVG figure of ``solution``: :func:`build` then :func:`to_svg`."""
     return to_svg(build(solution, origin))
 

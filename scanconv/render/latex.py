@@ -408,8 +408,8 @@ def _pixels(block: Pixels, options: Options, doc: Document) -> Iterator[str | No
         yield line + "\n"
     yield "\\par}\n"
     drawn = None
-    if options.grid and not too_large(block.bbox) and doc.source is not None:
-        drawn = tikz_grid(doc.source, options.origin)
+    if options.grid and not too_large(block.bbox):
+        drawn = tikz_grid(doc, options.origin)
     if drawn is not None:
         yield drawn
         return
