@@ -185,3 +185,11 @@ def test_every_format_is_declared_once_with_a_renderer_that_loads(fmt: Format) -
     assert callable(getattr(import_module(f"scanconv.render.{module}"), name))
     assert all(EXTENSIONS[ext] is fmt for ext in spec.extensions)
     assert DEFAULT_COSTS[fmt.value] == spec.row_cost
+
+
+def test_the_derivation_is_its_own_part_of_the_working() -> None:
+    working = document(line_solution("bresenham", 2, 2, 10, 6, derive=True)).get(Working)
+    assert working.quantities and working.derivation[0].key == "derivation"
+    assert all(q.key != "derivation" for q in working.quantities)
+    plain = document(line_solution("bresenham", 2, 2, 10, 6)).get(Working)
+    assert plain.derivation == () and plain.lines == plain.quantities

@@ -41,6 +41,14 @@ class Working(NamedTuple):
     """Derived quantities with their working, numbers substituted, in the answer's order."""
 
     quantities: tuple[Quantity, ...]
+    derivation: tuple[Quantity, ...] = ()
+    """The method's derivation with this input's numbers (``--derive``), its heading first;
+    empty: none. Written after :attr:`quantities`."""
+
+    @property
+    def lines(self) -> tuple[Quantity, ...]:
+        """Every line of the working, the derivation last."""
+        return self.quantities + self.derivation
 
 
 class Notes(NamedTuple):

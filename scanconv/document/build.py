@@ -13,7 +13,7 @@ from functools import partial
 from typing import Any
 
 from ..core import records
-from ..core.records import Solution
+from ..core.records import Quantity, Solution
 from .blocks import (
     Block,
     Document,
@@ -34,6 +34,10 @@ IDEAL = ("line", "circle", "ellipse", "polyline", "control")
 """The :attr:`Solution.geometry` keys that describe the ideal primitive."""
 
 _REGION = re.compile(r"Region (\d+) ")
+
+DERIVATION = "derivation"
+"""The key of the rule that heads a derivation in the working
+(:data:`scanconv.answers.theory.DERIVATION`)."""
 
 
 def prose(text: str) -> Prose:
@@ -65,7 +69,7 @@ def document(solution: Solution) -> Document:
     if solution.given:
         blocks.append(Given(solution.given))
     if solution.derived:
-        blocks.append(Working(solution.derived))
+        blocks.append(_working(solution.derived))
     if solution.notes:
         blocks.append(Notes(tuple(prose(n) for n in solution.notes)))
     if solution.columns or solution.steps is not records._no_steps:
@@ -80,6 +84,18 @@ def document(solution: Solution) -> Document:
     return Document(
         solution.primitive, solution.algorithm, solution.title, tuple(blocks), solution.data
     )
+
+
+def _working(derived: tuple[Quantity, ...]) -> Working:
+    """The working, its derivation (from the ``derivation`` rule on) apart.
+
+    >>> from scanconv.core.records import rule
+    >>> w = _working((rule("a", "a"), rule("derivation", "D"), rule("b", "b")))
+    >>> [q.key for q in w.quantities], [q.key for q in w.derivation]
+    (['a'], ['derivation', 'b'])
+    """
+    at = next((i for i, q in enumerate(derived) if q.key == DERIVATION), len(derived))
+    return Working(derived[:at], derived[at:])
 
 
 def _step_table(solution: Solution) -> StepTable:

@@ -144,7 +144,7 @@ def render_json(answer: Solution | Document, options: Options | None = None) -> 
     working: Working | None = doc.get(Working)
     notes: Notes | None = doc.get(Notes)
     table: StepTable | None = doc.get(StepTable)
-    derived = working.quantities if working else ()
+    derived = working.lines if working else ()
     head = {
         "primitive": doc.primitive,
         "algorithm": doc.algorithm,

@@ -252,7 +252,7 @@ def _given(block: Given, page: _Page) -> str:
 
 
 def _working(block: Working, page: _Page) -> str:
-    items = "".join(f"<li>{tex_math(q.tex, display=True)}</li>" for q in block.quantities)
+    items = "".join(f"<li>{tex_math(q.tex, display=True)}</li>" for q in block.lines)
     return f'<h3>Working</h3><ul class="sc-working">{items}</ul>'
 
 

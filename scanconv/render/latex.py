@@ -379,7 +379,7 @@ def _given(block: Given, options: Options, doc: Document) -> Iterator[str]:
 
 def _working(block: Working, options: Options, doc: Document) -> Iterator[str]:
     yield "\\paragraph{Working}\n\\begin{itemize}\n"
-    for q in block.quantities:
+    for q in block.lines:
         yield f"  \\item ${q.tex}$\n"
     yield "\\end{itemize}\n\n"
 

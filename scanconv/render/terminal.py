@@ -156,7 +156,7 @@ def _given(block: Given, options: Options, width: int, drawn: list[list[str]]) -
 
 def _working(block: Working, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
     yield Text("Working:", style="bold")
-    for q in block.quantities:
+    for q in block.lines:
         for line in wrap_text(unicode_heading(q.text), width, "      ", "  "):
             yield Text(line, style="cyan")
     yield Text("")

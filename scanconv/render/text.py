@@ -304,7 +304,7 @@ def _md_given(block: Given, options: Options, drawn: list[str]) -> Iterator[str]
 
 def _md_working(block: Working, options: Options, drawn: list[str]) -> Iterator[str]:
     yield "**Working:**\n\n"
-    for q in block.quantities:
+    for q in block.lines:
         yield f"- ${q.tex}$\n"
     yield "\n"
 
@@ -326,7 +326,7 @@ def _plain_given(block: Given, options: Options, drawn: list[str]) -> Iterator[s
 
 def _plain_working(block: Working, options: Options, drawn: list[str]) -> Iterator[str]:
     yield "Working:\n"
-    for q in block.quantities:
+    for q in block.lines:
         yield f"  {ascii_text(q.text)}\n"
     yield "\n"
 
