@@ -1,6 +1,10 @@
-"""Renderers: turn a :class:`~scanconv.core.records.Solution` into output, without printing.
+"""Renderers: turn an answer's :class:`~scanconv.document.Document` (or the
+:class:`~scanconv.core.records.Solution` it is built from) into output, without printing.
 
-:func:`render` is the one dispatch point for ``--format``. Every renderer is a generator that
+:func:`render` is the one dispatch point for ``--format``; :data:`FORMATS` declares every
+format once, and each format is one mapping from the document's block types to output
+(``text.PLAIN``, ``text.MARKDOWN``, ``latex.LATEX``, ``terminal.RICH``, ``html.HTML``; csv and
+json in :mod:`.data`). Every renderer is a generator that
 yields text chunks for stdout (each ending in a newline), :class:`Notice` objects for stderr,
 and, for the ``rich`` format only, rich renderables. The CLI writes them out; nothing here
 prints, and rich is imported only by the ``rich`` renderer.
