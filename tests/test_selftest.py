@@ -19,6 +19,7 @@ import pytest
 
 from scanconv.answers import circle, ellipse, line
 from scanconv.core.records import Solution
+from scanconv.document import StepTable, document
 from scanconv.render import Options
 from scanconv.render.html import answer_section, html_document, notebook_html
 from scanconv.render.selftest import selftest_data
@@ -46,7 +47,8 @@ DATA = re.compile(r'<script type="application/json" class="sc-testdata">(.*?)</s
 
 
 def descriptor(solution: Solution, options: Options | None = None) -> dict[str, Any] | None:
-    return selftest_data(solution, stepping(solution, options), options)
+    doc = document(solution)
+    return selftest_data(doc.get(StepTable), stepping(doc, options), options)
 
 
 def rounded(v: Fraction, how: str) -> int:

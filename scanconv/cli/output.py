@@ -16,7 +16,7 @@ from typing import IO, Any, NamedTuple, NoReturn
 import typer
 
 from ..core.records import Solution
-from ..render import Format, Notice, Options, render
+from ..render import FORMATS, Format, Notice, Options, render
 from .options import Origin
 
 PROG = "scanconv"
@@ -191,17 +191,8 @@ def terminal_width(stream: Any) -> int:
     return Console(file=stream if stream is not None else io.StringIO()).width
 
 
-#: The format a file's extension names.
-EXTENSIONS = {
-    ".md": Format.markdown,
-    ".markdown": Format.markdown,
-    ".tex": Format.latex,
-    ".csv": Format.csv,
-    ".json": Format.json,
-    ".txt": Format.plain,
-    ".html": Format.html,
-    ".htm": Format.html,
-}
+#: The format a file's extension names (:data:`scanconv.render.FORMATS`).
+EXTENSIONS = {ext: fmt for fmt, spec in FORMATS.items() for ext in spec.extensions}
 
 
 def format_for_file(fmt: Format, path: Path | None) -> Format:
@@ -219,7 +210,7 @@ def format_for_file(fmt: Format, path: Path | None) -> Format:
     named = EXTENSIONS.get(path.suffix.lower()) if path is not None else None
     if named is None or fmt is Format.auto:
         return named or fmt
-    if fmt is not named and named in (Format.latex, Format.csv, Format.json, Format.html):
+    if fmt is not named and FORMATS[named].binding:
         fail(f"--output {path} is {named.value} by its extension, but --format is {fmt.value}")
     return fmt
 

@@ -1,6 +1,10 @@
-"""Renderers: turn a :class:`~scanconv.core.records.Solution` into output, without printing.
+"""Renderers: turn an answer's :class:`~scanconv.document.Document` (or the
+:class:`~scanconv.core.records.Solution` it is built from) into output, without printing.
 
-:func:`render` is the one dispatch point for ``--format``. Every renderer is a generator that
+:func:`render` is the one dispatch point for ``--format``; :data:`FORMATS` declares every
+format once, and each format is one mapping from the document's block types to output
+(``text.PLAIN``, ``text.MARKDOWN``, ``latex.LATEX``, ``terminal.RICH``, ``html.HTML``; csv and
+json in :mod:`.data`). Every renderer is a generator that
 yields text chunks for stdout (each ending in a newline), :class:`Notice` objects for stderr,
 and, for the ``rich`` format only, rich renderables. The CLI writes them out; nothing here
 prints, and rich is imported only by the ``rich`` renderer.
@@ -8,11 +12,14 @@ prints, and rich is imported only by the ``rich`` renderer.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from enum import Enum
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..core.records import Solution
+
+if TYPE_CHECKING:
+    from ..document import Document
 
 
 class Format(str, Enum):
@@ -26,6 +33,45 @@ class Format(str, Enum):
     json = "json"
     plain = "plain"
     html = "html"
+
+
+class Spec(NamedTuple):
+    """What a format is, beside its renderer: one entry of :data:`FORMATS`."""
+
+    renderer: str
+    """``module:function`` in :mod:`scanconv.render`, called ``(document, options)`` and
+    yielding chunks; imported on first use (start-up time)."""
+    extensions: tuple[str, ...] = ()
+    """The file extensions that name it (``-o answer.tex``)."""
+    binding: bool = False
+    """A file whose extension names it refuses a ``--format`` that says otherwise."""
+    row_cost: float = 100.0
+    """Microseconds a table row, for a method the measured costs do not list (the budget)."""
+    matrix_cells: int | None = None
+    """Most cells of a matrix answer it prints; ``None``: as many as csv and json."""
+    table_rows: int | None = None
+    """Most step-table rows it prints; ``None``: the budget's limit for every format."""
+    document: bool = False
+    """A sheet, exam book or practice set may be written in it (the budget costs a
+    document's questions in the costliest such format)."""
+    streams: bool = False
+    """It streams at a few microseconds a cell: a budget refusal points to it."""
+
+
+FORMATS: dict[Format, Spec] = {
+    Format.rich: Spec("terminal:render_rich", (), False, 3000.0, 256 * 256, 10_000),
+    Format.latex: Spec("latex:render_latex", (".tex",), True, 100.0, 256 * 256, document=True),
+    Format.markdown: Spec(
+        "text:render_markdown", (".md", ".markdown"), False, 90.0, 256 * 256, document=True
+    ),
+    Format.plain: Spec("text:render_plain", (".txt",), False, 60.0, 1024 * 1024, document=True),
+    Format.csv: Spec("data:render_csv", (".csv",), True, 20.0, streams=True),
+    Format.json: Spec("data:render_json", (".json",), True, 60.0, document=True, streams=True),
+    Format.html: Spec("html:render_html", (".html", ".htm"), True, 150.0, document=True),
+}
+"""Every format but ``auto``, declared once: its renderer (a mapping from the document's
+blocks), its file extensions and its budget. The CLI's extension map and the work budget read
+this table; a new format is its :class:`Format` member, its entry here and its module."""
 
 
 class Options(NamedTuple):
@@ -62,8 +108,11 @@ Chunk = Any  # str | Notice | a rich renderable
 """What a renderer yields."""
 
 
-def render(solution: Solution, fmt: Format, options: Options | None = None) -> Iterator[Chunk]:
-    """Render ``solution`` in ``fmt``: the single dispatch for every ``--format``.
+def render(
+    solution: Solution | Document, fmt: Format, options: Options | None = None
+) -> Iterator[Chunk]:
+    """Render ``solution`` (or its :class:`~scanconv.document.Document`) in ``fmt``: the single
+    dispatch for every ``--format``; each format is a mapping from the document's blocks.
 
     >>> from scanconv.answers.line import line_solution
     >>> chunks = render(line_solution("bresenham", 0, 0, 2, 1), Format.csv)
@@ -75,26 +124,11 @@ def render(solution: Solution, fmt: Format, options: Options | None = None) -> I
     options = options or Options()
     if fmt is Format.auto:
         raise ValueError("Format.auto must be resolved before rendering")
-    if fmt is Format.csv:
-        from .data import render_csv
+    from importlib import import_module
 
-        return render_csv(solution)
-    if fmt is Format.json:
-        from .data import render_json
+    from ..document import as_document
 
-        return render_json(solution)
-    if fmt is Format.latex:
-        from .latex import render_latex
-
-        return render_latex(solution, options)
-    if fmt is Format.html:
-        from .html import render_html
-
-        return render_html(solution, options)
-    if fmt is Format.rich:
-        from .terminal import render_rich
-
-        return render_rich(solution, options)
-    from .text import render_text
-
-    return render_text(solution, options, markdown=fmt is Format.markdown)
+    module, name = FORMATS[fmt].renderer.split(":")
+    renderer: Callable[[Document, Options], Iterator[Chunk]]
+    renderer = getattr(import_module(f"{__name__}.{module}"), name)
+    return renderer(as_document(solution), options)

@@ -32,22 +32,21 @@ from collections.abc import Iterator, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from ..core.checks import InputError
-from . import Format
+from . import FORMATS, Format
 from .work import BYTES, COSTS, Work, estimate
 
 if TYPE_CHECKING:
     from ..core.records import Solution
 
 MATRIX_CELLS: dict[Format, int] = {
-    Format.rich: 256 * 256,
-    Format.latex: 256 * 256,
-    Format.markdown: 256 * 256,
-    Format.plain: 1024 * 1024,
+    f: spec.matrix_cells for f, spec in FORMATS.items() if spec.matrix_cells is not None
 }
 """Most cells of a matrix answer (``sample``, ``image ramp``) a format prints; csv and json
 print up to :data:`~scanconv.algorithms.image_limits.MAX_CELLS`."""
 
-TABLE_ROWS: dict[Format, int] = {Format.rich: 10_000}
+TABLE_ROWS: dict[Format, int] = {
+    f: spec.table_rows for f, spec in FORMATS.items() if spec.table_rows is not None
+}
 """Most step-table rows a format prints beyond :data:`ALL_ROWS`; the others stream up to it."""
 
 ALL_ROWS = 2_000_000
@@ -72,7 +71,7 @@ SHEET_SECONDS = 30
 """Most CPU seconds of estimated work of a whole document, each question costed in the
 costliest document format (:data:`DOCUMENT`)."""
 
-DOCUMENT = (Format.markdown, Format.latex, Format.html, Format.json, Format.plain)
+DOCUMENT = tuple(f for f, spec in FORMATS.items() if spec.document)
 """The formats a document is written in."""
 
 ROWS_IN_MEMORY = 500_000
@@ -84,14 +83,13 @@ LONG_TABLES = ("quantize",)
 2^24 rows (0.5 us a row), and those rows are the answer (with ``--range`` each row carries
 exact fractions: ``quantize/range`` keeps the budget of every format)."""
 
-DEFAULT_COSTS = {"csv": 20.0, "json": 60.0, "plain": 60.0, "markdown": 90.0, "latex": 100.0}
-DEFAULT_COSTS |= {"html": 150.0, "rich": 3000.0}
+DEFAULT_COSTS = {f.value: spec.row_cost for f, spec in FORMATS.items()}
 """Microseconds a row for a command/method missing from :data:`~scanconv.render.work.COSTS`."""
 
 MIN_COST = 0.2
 """The least cost of a row, in microseconds (a table printed without its rows still costs)."""
 
-UNLIMITED = (Format.csv, Format.json)
+UNLIMITED = tuple(f for f, spec in FORMATS.items() if spec.streams)
 """The formats a budget refusal points to: they stream at a few microseconds a cell."""
 
 

@@ -24,34 +24,36 @@ from itertools import chain, islice
 
 from ..core.records import Solution
 from ..core.working import json_visible
-from .cells import json_value, note_unicode
+from ..document import Document, Given, Notes, Pixels, StepTable, Table, Working, as_document
+from . import Options
+from .cells import json_value, segments_unicode
 
 
-def render_csv(solution: Solution) -> Iterator[str]:
+def render_csv(answer: Solution | Document, options: Options | None = None) -> Iterator[str]:
     """The step table as CSV (or, for an answer without one, its first secondary table)."""
-    if not solution.columns:
-        yield from _table_csv(solution)
+    doc = as_document(answer)
+    table: StepTable | None = doc.get(StepTable)
+    if table is None or not table.columns:
+        yield from _table_csv(doc.get(Table))
         return
-    keys = ["k", "p", "decision", "pixel", *solution.extra_keys]
-    shown = [c.key for c in solution.columns]
-    keys = [k for k in keys if k in shown or k in ("k", "pixel")]
+    shown = {c.key for c in table.columns} | {"k", "pixel"}
+    keys = [k for k in ("k", "p", "decision", "pixel", *table.extra_keys) if k in shown]
     header: list[str] = []
     for k in keys:
-        header.extend(pixel_names(solution.extra_keys) if k == "pixel" else (k,))
+        header.extend(pixel_names(table.extra_keys) if k == "pixel" else (k,))
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(header)
     yield buf.getvalue()
     index = {"k": 0, "p": 1, "decision": 2, "pixel": 3}
-    extra = {k: i for i, k in enumerate(solution.extra_keys)}
-    for step in solution.steps():
+    extra = {k: i for i, k in enumerate(table.extra_keys)}
+    for step in table.steps():
         row: list[object] = []
         for k in keys:
-            v = step[index[k]] if k in index else step.extra[extra[k]]
             if k == "pixel":
                 row.extend(step.pixel)
             else:
-                row.append(_csv_cell(v))
+                row.append(_csv_cell(step[index[k]] if k in index else step.extra[extra[k]]))
         buf.seek(0)
         buf.truncate()
         writer.writerow(row)
@@ -74,10 +76,9 @@ def pixel_names(extra_keys: tuple[str, ...]) -> tuple[str, str]:
     return ("x", "y")
 
 
-def _table_csv(solution: Solution) -> Iterator[str]:
-    if not solution.tables:
+def _table_csv(table: Table | None) -> Iterator[str]:
+    if table is None:
         return
-    table = solution.tables[0]
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow([c.key for c in table.columns])
@@ -135,25 +136,50 @@ def _csv_cell(v: object) -> object:
     return "" if j is None else j
 
 
-def render_json(solution: Solution) -> Iterator[str]:
-    """The whole solution as one JSON object, steps streamed one per line."""
+def render_json(answer: Solution | Document, options: Options | None = None) -> Iterator[str]:
+    """The whole answer as one JSON object, steps streamed one per line."""
+    doc = as_document(answer)
     d = json.dumps
+    given: Given | None = doc.get(Given)
+    working: Working | None = doc.get(Working)
+    notes: Notes | None = doc.get(Notes)
+    table: StepTable | None = doc.get(StepTable)
+    derived = working.lines if working else ()
     head = {
-        "primitive": solution.primitive,
-        "algorithm": solution.algorithm,
-        "title": solution.title,
-        "given": {q.key: json_value(q.value) for q in solution.given},
-        "derived": {q.key: json_value(q.value) for q in solution.derived},
-        "working": [q.text for q in solution.derived],
-        "notes": [note_unicode(n) for n in solution.notes],  # as "working": Unicode text
-        "columns": [c.key for c in solution.columns],
+        "primitive": doc.primitive,
+        "algorithm": doc.algorithm,
+        "title": doc.title,
+        "given": {q.key: json_value(q.value) for q in (given.quantities if given else ())},
+        "derived": {q.key: json_value(q.value) for q in derived},
+        "working": [q.text for q in derived],
+        "notes": [
+            segments_unicode(n.segments) for n in (notes.notes if notes else ())
+        ],  # as "working"
+        "columns": [c.key for c in (table.columns if table else ())],
     }
-    head.update({k: json_value(v) for k, v in solution.data.items()})
+    head.update({k: json_value(v) for k, v in doc.data.items()})
     yield json_visible(d(head, ensure_ascii=False))[:-1] + ',\n "steps": [\n'
-    has_p, has_decision = solution.has_p, solution.has_decision
-    keys = solution.extra_keys
+    if table is not None:
+        yield from _steps_json(table)
+    yield " ]"
+    pixels: Pixels | None = doc.get(Pixels)
+    if pixels is not None:
+        yield ',\n "pixels": ['
+        first = True
+        for p in pixels.pixels():
+            yield ("" if first else ", ") + f"[{p[0]}, {p[1]}]"
+            first = False
+        yield "]"
+    yield from _tables_json(doc.every(Table))
+    yield "}\n"
+
+
+def _steps_json(table: StepTable) -> Iterator[str]:
+    """The ``steps`` array's rows, one a line, and the line break after the last."""
+    d = json.dumps
+    has_p, has_decision, keys = table.has_p, table.has_decision, table.extra_keys
     first = True
-    for s in solution.steps():
+    for s in table.steps():
         obj: dict[str, object] = {"k": s.k}
         if has_p:
             obj["p"] = json_value(s.p)
@@ -164,25 +190,17 @@ def render_json(solution: Solution) -> Iterator[str]:
             obj[k] = json_value(v)
         yield ("  " if first else ",\n  ") + d(obj, ensure_ascii=False)
         first = False
-    yield ("\n" if not first else "") + " ]"
-    if solution.pixels is not None:
-        yield ',\n "pixels": ['
-        first = True
-        for p in solution.pixels():
-            yield ("" if first else ", ") + f"[{p[0]}, {p[1]}]"
-            first = False
-        yield "]"
-    yield from _tables_json(solution)
-    yield "}\n"
+    if not first:
+        yield "\n"
 
 
-def _tables_json(solution: Solution) -> Iterator[str]:
+def _tables_json(tables: list[Table]) -> Iterator[str]:
     """The ``tables`` field: the text one ``json.dumps`` would write, streamed row by row."""
-    if not solution.tables:
+    if not tables:
         return
     d = json.dumps
     yield ',\n "tables": ['
-    for n, t in enumerate(solution.tables):
+    for n, t in enumerate(tables):
         title = json_visible(d(t.title, ensure_ascii=False))
         columns = d([c.key for c in t.columns], ensure_ascii=False)
         yield f'{", " if n else ""}{{"title": {title}, "columns": {columns}, "rows": ['

@@ -47,6 +47,9 @@ from xml.sax.saxutils import escape
 
 from ..core.numeric import round_half_up
 from ..core.records import Pixel, Solution
+from ..document import Document, Pixels, as_document
+from ..document.numbering import label_offset as label_offset  # re-exported: their old home
+from ..document.numbering import step_labels as step_labels
 
 CELL = 32
 """Side of one pixel cell, in SVG user units (px)."""
@@ -164,125 +167,6 @@ class Figure:
         return sum(1 for s in self.shapes if s.cls == cls)
 
 
-# --- step numbers ------------------------------------------------------------------------------
-
-
-def mirror_images(pixel: Pixel, symmetry: int, center: tuple[Any, Any]) -> Iterator[Pixel]:
-    """The plotted pixels of a step's point.
-
-    Without symmetry the point is the pixel. With 4- or 8-way symmetry it is the point
-    relative to the centre, as the circle and ellipse tables print it (an octant point
-    ``(x, y)`` of the circle about the origin), and its images are ``(xc ± x, yc ± y)`` and,
-    for 8-way symmetry, ``(xc ± y, yc ± x)``, in the notes' order.
-
-    >>> list(mirror_images((3, 4), 1, (0, 0)))
-    [(3, 4)]
-    >>> list(mirror_images((2, 1), 4, (10, 5)))
-    [(12, 6), (8, 6), (12, 4), (8, 4)]
-    >>> sorted(set(mirror_images((3, 4), 8, (0, 0))))[:4]
-    [(-4, -3), (-4, 3), (-3, -4), (-3, 4)]
-    """
-    if symmetry not in (4, 8):
-        yield pixel
-        return
-    xc, yc = int(center[0]), int(center[1])
-    x, y = pixel
-    offsets = [(x, y), (-x, y), (x, -y), (-x, -y)]
-    if symmetry == 8:
-        offsets += [(y, x), (-y, x), (y, -x), (-y, -x)]
-    for ox, oy in offsets:
-        yield (xc + ox, yc + oy)
-
-
-def label_offset(solution: Solution) -> int:
-    """1 when the step table's pixel column is ``(x_{k+1}, y_{k+1})``, else 0.
-
-    >>> from scanconv.answers.line import line_solution
-    >>> label_offset(line_solution("bresenham", 2, 2, 10, 6)), label_offset(
-    ...     line_solution("dda", 2, 2, 10, 6))
-    (1, 0)
-    """
-    for c in solution.columns:
-        if c.key == "pixel":
-            return 1 if "k+1" in c.tex.replace(" ", "") else 0
-    return 0
-
-
-def numbering(solution: Solution) -> str:
-    """How :func:`step_labels` numbers the pixels: ``"row"`` (the table's k, or k + 1 when
-    its pixel column is ``(x_{k+1}, y_{k+1})``), ``"continued"`` (the table's k, but later
-    tables, the ellipse's region 2, carry on from the last number instead of starting again
-    at 0) or ``"order"`` (a curve: the plotting order, since several samples may land on one
-    pixel and the joining pixels have no sample).
-    """
-    if "numbering" in solution.geometry:
-        return str(solution.geometry["numbering"])
-    if solution.geometry.get("polyline") and int(solution.geometry.get("symmetry", 1)) == 1:
-        return "order"
-    previous = -1
-    for step in solution.steps():
-        if step.k <= previous:
-            return "continued"
-        previous = step.k
-    return "row"
-
-
-def numbering_legend(solution: Solution) -> str:
-    """What the numbers in the pixels mean (the legend of the figure and of the HTML grid).
-
-    >>> from scanconv.answers.line import line_solution
-    >>> numbering_legend(line_solution("bresenham", 2, 2, 10, 6))
-    'number: k + 1 for row k; 0: start'
-    """
-    how = numbering(solution)
-    if how == "order":
-        return f"number: {solution.geometry.get('order_name', 'plotting order')}"
-    if label_offset(solution):
-        return "number: k + 1 for row k; 0: start"
-    if how == "continued":
-        return "number: row k (region 2 counts on)"
-    return "number: row k of the step table"
-
-
-def step_labels(solution: Solution) -> dict[Pixel, int]:
-    """The step number of every plotted pixel that has one (see the module's notes and
-    :func:`numbering`).
-
-    >>> from scanconv.answers.line import line_solution
-    >>> labels = step_labels(line_solution("bresenham", 2, 2, 10, 6))
-    >>> labels[(2, 2)], labels[(3, 3)], labels[(10, 6)]
-    (0, 1, 8)
-    >>> step_labels(line_solution("dda", 2, 2, 10, 6))[(10, 6)]
-    8
-    """
-    plotted = set(solution.pixels()) if solution.pixels is not None else set()
-    labels: dict[Pixel, int] = {}
-    how = numbering(solution)
-    if how == "none":
-        return labels
-    if how == "order" and solution.pixels is not None:
-        for i, p in enumerate(solution.pixels()):
-            labels.setdefault(p, i)
-        return labels
-    offset = label_offset(solution)
-    symmetry = int(solution.geometry.get("symmetry", 1))
-    center = solution.geometry.get("center", (0, 0))
-    shift, previous, last = 0, -1, -1
-    for step in solution.steps():
-        if how == "continued" and step.k <= previous:
-            shift = last + 1 - step.k - offset
-        previous = step.k
-        number = step.k + offset + shift
-        last = max(last, number)
-        for p in mirror_images(step.pixel, symmetry, center):
-            if p in plotted:
-                labels.setdefault(p, number)
-    if offset:
-        for p in plotted:
-            labels.setdefault(p, 0)
-    return labels
-
-
 # --- layout ------------------------------------------------------------------------------------
 
 
@@ -302,23 +186,35 @@ def _points(geometry: dict[str, Any]) -> Iterator[tuple[float, float]]:
             yield float(x), float(y)
 
 
-def extent(solution: Solution, pixels: Iterable[Pixel]) -> tuple[int, int, int, int]:
-    """``(xmin, ymin, xmax, ymax)`` of the cells drawn, margin included.
+def extent(answer: Solution | Document, pixels: Iterable[Pixel]) -> tuple[int, int, int, int]:
+    """``(xmin, ymin, xmax, ymax)`` of the cells an answer's figure draws, margin included.
 
     >>> from scanconv.answers.line import line_solution
     >>> sol = line_solution("bresenham", 2, 2, 10, 6)
     >>> extent(sol, sol.pixels())
     (1, 1, 11, 7)
     """
+    block: Pixels | None = as_document(answer).get(Pixels)
+    if block is None:
+        return cells_extent(pixels, (), {})
+    return cells_extent(pixels, (*block.marks, *block.outline), block.ideal)
+
+
+def cells_extent(
+    pixels: Iterable[Pixel], marks: Iterable[Pixel], ideal: dict[str, Any]
+) -> tuple[int, int, int, int]:
+    """``(xmin, ymin, xmax, ymax)`` of the cells that show ``pixels``, ``marks`` (the marked
+    points, an outline) and the ideal primitive, margin included.
+
+    >>> cells_extent([(2, 2), (5, 3)], [], {"line": (2, 2, 5, 3)})
+    (1, 1, 6, 4)
+    """
     xs: list[int] = []
     ys: list[int] = []
-    for x, y in pixels:
+    for x, y in (*pixels, *marks):
         xs.append(x)
         ys.append(y)
-    for x, y in (*solution.marks, *solution.geometry.get("outline", ())):
-        xs.append(x)
-        ys.append(y)
-    for fx, fy in _points(solution.geometry):
+    for fx, fy in _points(ideal):
         xs.append(round_half_up(fx))
         ys.append(round_half_up(fy))
     if not xs:
@@ -359,8 +255,9 @@ class _Frame:
         return self.px(float(x)), self.py(float(y))
 
 
-def build(solution: Solution, origin: str = "bottom-left") -> Figure:
-    """Lay out the figure of ``solution`` (see the module's notes for what it shows).
+def build(answer: Solution | Document, origin: str = "bottom-left") -> Figure:
+    """Lay out the figure of an answer's :class:`~scanconv.document.Pixels` block (see the
+    module's notes for what it shows).
 
     Raises ``ValueError`` if the answer plots no pixels or the figure would be more than
     :data:`MAX_CELLS` cells wide or high.
@@ -370,10 +267,12 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
     >>> fig.count("pixel"), fig.count("ideal"), fig.count("step"), fig.height
     (9, 1, 9, 340.0)
     """
-    if solution.pixels is None:
+    doc = as_document(answer)
+    block: Pixels | None = doc.get(Pixels)
+    if block is None:
         raise ValueError("this answer plots no pixels, so there is no figure to draw")
-    pixels = list(dict.fromkeys(solution.pixels()))
-    cells = extent(solution, pixels)
+    pixels = list(dict.fromkeys(block.pixels()))
+    cells = cells_extent(pixels, (*block.marks, *block.outline), block.ideal)
     cols, rows = cells[2] - cells[0] + 1, cells[3] - cells[1] + 1
     if cols > MAX_CELLS or rows > MAX_CELLS:
         raise ValueError(
@@ -381,13 +280,13 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
             "draw a smaller primitive, or no figure"
         )
     f = _Frame(cells, origin == "top-left")
-    width = max(f.right + PAD_RIGHT, 16 + 8.4 * len(solution.title))
-    fig = Figure(float(width), float(f.bottom + PAD_BOTTOM), solution.title)
+    width = max(f.right + PAD_RIGHT, 16 + 8.4 * len(doc.title))
+    fig = Figure(float(width), float(f.bottom + PAD_BOTTOM), doc.title)
     add = fig.shapes.append
-    add(Shape("text", "title", (8, 22), solution.title, 14))
+    add(Shape("text", "title", (8, 22), doc.title, 14))
     half = -0.5 if f.top_left else 0.5
-    shades = solution.geometry.get("shades", {})
-    outline = list(dict.fromkeys(solution.geometry.get("outline", ())))
+    shades = block.shades or {}
+    outline = list(dict.fromkeys(block.outline))
     plotted = set(pixels)
     for x, y in outline:
         if (x, y) not in plotted:
@@ -395,7 +294,7 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
     for x, y in pixels:
         corner = (f.px(x - 0.5), f.py(y + half))
         if (x, y) in shades:
-            grey = grey_of(shades[(x, y)], int(solution.geometry["levels"]))
+            grey = grey_of(shades[(x, y)], block.levels)
             add(Shape("rect", "shade", corner, fill=grey))
         else:
             add(Shape("rect", "pixel", corner))
@@ -410,22 +309,22 @@ def build(solution: Solution, origin: str = "bottom-left") -> Figure:
         add(Shape("line", "axis", (f.px(0), f.top, f.px(0), f.bottom)))
     if f.y0 <= 0 <= f.y1:
         add(Shape("line", "axis", (f.left, f.py(0), f.right, f.py(0))))
-    _primitive(fig, solution.geometry, f)
+    _primitive(fig, block.ideal, f)
     arm = CELL * 0.22
-    for x, y in _marks(solution):
+    for x, y in _marks(block):
         cx, cy = f.pt(x, y)
         add(Shape("line", "mark", (cx - arm, cy - arm, cx + arm, cy + arm)))
         add(Shape("line", "mark", (cx - arm, cy + arm, cx + arm, cy - arm)))
-    labels = step_labels(solution)
+    labels = block.labels()
     for (x, y), k in labels.items():
         text = str(k)
         size = min(13.0, (CELL - 6) / (0.62 * len(text)))
         add(Shape("text", "step", (f.px(x), f.py(y) + 0.36 * size), text, size, "middle"))
-    for x, y in solution.geometry.get("control", ()):
+    for x, y in block.ideal.get("control", ()):
         # A ring, over the step number it may share a pixel with.
         add(Shape("circle", "control-point", (*f.pt(x, y), CELL * 0.3)))
     _axes(fig, f)
-    _legend(fig, solution, f.bottom, numbered=bool(labels))
+    _legend(fig, block, f.bottom, numbered=bool(labels))
     return fig
 
 
@@ -442,14 +341,14 @@ def grey_of(level: int, levels: int) -> str:
     return f"#{v:02x}{v:02x}{v:02x}"
 
 
-def _marks(solution: Solution) -> list[Pixel]:
+def _marks(block: Pixels) -> list[Pixel]:
     """The marked points still to draw: those that are not a control point's pixel (the
     control points are drawn exactly, on their polygon)."""
     control = {
         (round_half_up(Fraction(x)), round_half_up(Fraction(y)))
-        for x, y in solution.geometry.get("control", ())
+        for x, y in block.ideal.get("control", ())
     }
-    return [p for p in solution.marks if p not in control]
+    return [p for p in block.marks if p not in control]
 
 
 def _primitive(fig: Figure, geometry: dict[str, Any], f: _Frame) -> None:
@@ -490,26 +389,26 @@ def _axes(fig: Figure, f: _Frame) -> None:
     add(Shape("text", "tick", (f.left - 6, f.top - 6), ylabel, anchor="end"))
 
 
-def _legend(fig: Figure, solution: Solution, bottom: float, numbered: bool) -> None:
+def _legend(fig: Figure, block: Pixels, bottom: float, numbered: bool) -> None:
     """What the colours and numbers mean, wrapped to the figure's width."""
-    geometry = solution.geometry
-    if "shades" in geometry:
-        levels = int(geometry["levels"])
+    geometry = block.ideal
+    if block.shades is not None:
+        levels = block.levels
         parts = [f"grey: intensity level 0..{levels - 1} (black = {levels - 1})"]
     else:
         parts = ["filled: plotted pixel"]
-    if geometry.get("outline"):
-        parts.append(f"orange: {geometry.get('outline_name', 'outline')}")
+    if block.outline:
+        parts.append(f"orange: {block.outline_name}")
     if numbered:
-        parts.append(numbering_legend(solution))
+        parts.append(block.numbering())
     kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in geometry]
     if geometry.get("polyline"):
-        kinds.append(str(geometry.get("polyline_name", "curve")))
+        kinds.append(block.ideal_name)
     if kinds:
         parts.append(f"red: ideal {' and '.join(kinds)}")
     if geometry.get("control"):
         parts.append("green: control polygon and points")
-    if _marks(solution):
+    if _marks(block):
         parts.append("cross: marked point")
     room = max(int((fig.width - 16) / 6.2), 40)
     lines: list[str] = []
@@ -575,7 +474,7 @@ def to_svg(fig: Figure) -> str:
     return "\n".join(out) + "\n"
 
 
-def svg(solution: Solution, origin: str = "bottom-left") -> str:
+def svg(solution: Solution | Document, origin: str = "bottom-left") -> str:
     """The SVG figure of ``solution``: :func:`build` then :func:`to_svg`."""
     return to_svg(build(solution, origin))
 

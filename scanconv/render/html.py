@@ -48,15 +48,27 @@ sheet and the script.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import islice
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution, step_getter
+from ..document import (
+    Document,
+    Drawing,
+    Given,
+    Notes,
+    Pixels,
+    StepTable,
+    Table,
+    Title,
+    Working,
+    as_document,
+)
 from . import Notice, Options, stepper
 from .cells import cell, numeric_column
-from .mathml import esc, json_script, note_html, prose_html, tex_math
+from .mathml import esc, json_script, note_html, prose_html, prose_segments_html, tex_math
 from .selftest import selftest_html
 from .stepgrid import figure_svg, legend, step_grid
 from .stepper import column_label, stepping
@@ -95,12 +107,16 @@ PLAY_SECONDS = 20.0
 """Play takes about this long over the whole answer (at most 0.7 s, at least 15 ms a step)."""
 
 
+Positions = dict[int, tuple[int, int]]
+"""A table's rows that are stepper positions: ``{row index: (position, region)}``."""
+
+
 def _table(
     title: str | None,
     columns: Sequence[Column],
     rows: Iterable[Sequence[Any]],
     exact: bool,
-    positions: dict[int, tuple[int, int]] | None = None,
+    positions: Positions | None = None,
     total: int | None = None,
     at: int = 0,
 ) -> str:
@@ -112,46 +128,15 @@ def _table(
     it = iter(rows)
     head = list(islice(it, limit))
     more = next(it, None) is not None
-    right = [numeric_column(c) for c in shown_cols]
     heads = "".join(f"<th>{tex_math(c.tex)}</th>" for c in shown_cols)
     caption = f"<caption>{esc(title)}</caption>" if title else ""
-    lines: list[str] = []
     widths = [len(column_label(c.tex, None)) for c in shown_cols]
-    for i, row in enumerate(head):
-        attrs = ""
-        if positions is not None and i in positions:
-            p, region = positions[i]
-            classes = ("sc-r2 " if region > 1 else "") + ("sc-cur" if p == at else "")
-            attrs = f' data-pos="{p}"' + (f' class="{classes.strip()}"' if classes.strip() else "")
-        texts = [cell(v, c, exact) for v, c in zip(row, shown_cols, strict=False)]
-        for j, t in enumerate(texts):
-            widths[j] = max(widths[j], len(t))
-        tds = "".join(
-            f'<td class="sc-num">{prose_html(t)}</td>' if r else f"<td>{prose_html(t)}</td>"
-            for t, r in zip(texts, right, strict=False)
-        )
-        lines.append(f"<tr{attrs}>{tds}</tr>")
+    lines = [_row(i, row, shown_cols, exact, positions, at, widths) for i, row in enumerate(head)]
     if len(lines) <= CHUNK_ROWS:
         body = f'<div class="sc-tablebox"><table class="sc-table">{caption}<thead><tr>{heads}'
         body += "</tr></thead><tbody>" + "".join(lines) + "</tbody></table></div>"
     else:
-        # A long table: its header, then chunks of rows, each a table of the same fixed column
-        # widths that the browser lays out only when in view (content-visibility).
-        cols = "".join(f'<col style="width:calc({w + 1}ch + 1.2em)">' for w in widths)
-        total_width = f"calc({sum(widths) + len(widths)}ch + {1.2 * len(widths):.1f}em)"
-        fixed = f'class="sc-table sc-fixed" style="width:{total_width}"'
-        parts = [
-            f'<div class="sc-scroll"><table {fixed} data-head="1">{caption}<colgroup>{cols}'
-            f"</colgroup><thead><tr>{heads}</tr></thead></table>"
-        ]
-        for start in range(0, len(lines), CHUNK_ROWS):
-            chunk = "".join(lines[start : start + CHUNK_ROWS])
-            parts.append(
-                f'<div class="sc-chunk"><table {fixed}><colgroup>{cols}</colgroup>'
-                f"<tbody>{chunk}</tbody></table></div>"
-            )
-        parts.append("</div>")
-        body = "".join(parts)
+        body = _chunked(caption, heads, lines, widths)
     notes = []
     if more:
         of = f"of {total:,} rows" if total is not None else "rows of a longer table"
@@ -165,29 +150,78 @@ def _table(
     return body
 
 
-def _step_rows(solution: Solution) -> Iterator[tuple[Any, ...]]:
-    get = step_getter(solution.columns, solution.extra_keys)
-    for step in solution.steps():
+def _row(
+    i: int,
+    row: Sequence[Any],
+    columns: Sequence[Column],
+    exact: bool,
+    positions: Positions | None,
+    at: int,
+    widths: list[int],
+) -> str:
+    """One ``<tr>``, with its stepper position if it has one; widens ``widths`` to its cells."""
+    attrs = ""
+    if positions is not None and i in positions:
+        p, region = positions[i]
+        classes = ("sc-r2 " if region > 1 else "") + ("sc-cur" if p == at else "")
+        attrs = f' data-pos="{p}"' + (f' class="{classes.strip()}"' if classes.strip() else "")
+    texts = [cell(v, c, exact) for v, c in zip(row, columns, strict=False)]
+    for j, t in enumerate(texts):
+        widths[j] = max(widths[j], len(t))
+    tds = "".join(
+        f'<td class="sc-num">{prose_html(t)}</td>'
+        if numeric_column(c)
+        else f"<td>{prose_html(t)}</td>"
+        for t, c in zip(texts, columns, strict=False)
+    )
+    return f"<tr{attrs}>{tds}</tr>"
+
+
+def _chunked(caption: str, heads: str, lines: list[str], widths: list[int]) -> str:
+    """A long table: its header, then chunks of rows, each a table of the same fixed column
+    widths that the browser lays out only when in view (content-visibility)."""
+    cols = "".join(f'<col style="width:calc({w + 1}ch + 1.2em)">' for w in widths)
+    total_width = f"calc({sum(widths) + len(widths)}ch + {1.2 * len(widths):.1f}em)"
+    fixed = f'class="sc-table sc-fixed" style="width:{total_width}"'
+    parts = [
+        f'<div class="sc-scroll"><table {fixed} data-head="1">{caption}<colgroup>{cols}'
+        f"</colgroup><thead><tr>{heads}</tr></thead></table>"
+    ]
+    for start in range(0, len(lines), CHUNK_ROWS):
+        chunk = "".join(lines[start : start + CHUNK_ROWS])
+        parts.append(
+            f'<div class="sc-chunk"><table {fixed}><colgroup>{cols}</colgroup>'
+            f"<tbody>{chunk}</tbody></table></div>"
+        )
+    parts.append("</div>")
+    return "".join(parts)
+
+
+def _step_rows(table: StepTable) -> Iterator[tuple[Any, ...]]:
+    get = step_getter(table.columns, table.extra_keys)
+    for step in table.steps():
         yield get(step)
 
 
-def _mapped_tables(solution: Solution, count: int) -> dict[int, dict[int, int]] | None:
-    """When the step table is not shown (the ellipse's regions), which row of which secondary
-    table is which step: ``{table index: {row index: step index}}``; ``None`` if the tables do
-    not hold every step, in order."""
+def _mapped_tables(
+    table: StepTable, tables: list[Table], count: int
+) -> dict[int, dict[int, int]] | None:
+    """When the step table is not shown (the ellipse's regions), which row of which further
+    table is which step: ``{table index: {row index: step index}}``; ``None`` if the tables
+    do not hold every step, in order."""
     if count == 0:
         return None
-    keys = [c.key for c in solution.columns]
-    get = step_getter(solution.columns, solution.extra_keys)
-    steps = islice(solution.steps(), count)
+    keys = [c.key for c in table.columns]
+    get = step_getter(table.columns, table.extra_keys)
+    steps = islice(table.steps(), count)
     want = next(steps, None)
     s = 0
     found: dict[int, dict[int, int]] = {}
-    for t, table in enumerate(solution.tables):
-        shared = [(j, keys.index(c.key)) for j, c in enumerate(table.columns) if c.key in keys]
+    for t, further in enumerate(tables):
+        shared = [(j, keys.index(c.key)) for j, c in enumerate(further.columns) if c.key in keys]
         if not any(keys[i] == "pixel" for _, i in shared):
             continue
-        for r, row in enumerate(islice(table.rows(), stepper.MAX_TABLE_ROWS)):
+        for r, row in enumerate(islice(further.rows(), stepper.MAX_TABLE_ROWS)):
             if want is None:
                 break
             cells = get(want)
@@ -198,8 +232,178 @@ def _mapped_tables(solution: Solution, count: int) -> dict[int, dict[int, int]] 
     return found if want is None and s == count else None
 
 
+class _Page(NamedTuple):
+    """What the answer's blocks are written with: the options, the stepper's data (``None``:
+    no stepper), the position shown, which further-table rows are steps."""
+
+    options: Options
+    st: stepper.Stepping | None
+    at: int
+    steps: Positions
+    mapped: dict[int, dict[int, int]] | None
+    tables: list[Table]
+
+
+def _given(block: Given, page: _Page) -> str:
+    return (
+        '<p class="sc-given"><strong>Given:</strong> '
+        + ", ".join(tex_math(q.tex) for q in block.quantities)
+        + "</p>"
+    )
+
+
+def _working(block: Working, page: _Page) -> str:
+    items = "".join(f"<li>{tex_math(q.tex, display=True)}</li>" for q in block.lines)
+    return f'<h3>Working</h3><ul class="sc-working">{items}</ul>'
+
+
+def _notes(block: Notes, page: _Page) -> str:
+    items = "".join(f"<li>{prose_segments_html(n.segments)}</li>" for n in block.notes)
+    return f'<h3>Notes</h3><ul class="sc-notes">{items}</ul>'
+
+
+def _step_table(block: StepTable, page: _Page) -> str:
+    if not block.columns or not (block.shown or page.mapped is None):
+        return ""
+    title = "Step table" if block.shown else "Step table (the tables below split it up)"
+    total = page.st.total if page.st else None
+    rows = _step_rows(block)
+    return _table(
+        title, block.columns, rows, page.options.exact, page.steps or None, total, page.at
+    )
+
+
+def _further_table(block: Table, page: _Page) -> str:
+    t = next(i for i, table in enumerate(page.tables) if table is block)
+    st, positions = page.st, None
+    if st is not None and st.table == t:
+        if st.table_rows is not None:
+            positions = {r: (p, 1) for r, p in st.table_rows.items()}
+        else:
+            positions = {r: (r + 1, 1) for r in range(st.n)}
+    if page.mapped is not None and t in page.mapped:
+        positions = {r: page.steps[s] for r, s in page.mapped[t].items() if s in page.steps}
+    # a table stays whole (the symmetry table, a comparison); its box scrolls sideways
+    rows = block.rows()
+    return _table(block.title, block.columns, rows, page.options.exact, positions, None, page.at)
+
+
+def _pixels(block: Pixels, page: _Page) -> str:
+    st = page.st
+    if st is None:
+        return ""
+    count = st.total_pixels
+    listed = esc(", ".join(fmt_pixel(p) for p in st.pixels[:MAX_PIXEL_LIST]))
+    more = esc(f", \u2026 ({count - MAX_PIXEL_LIST:,} more)" if count > MAX_PIXEL_LIST else "")
+    text = f'<p class="sc-pixels">{listed}{more}</p>'
+    if count > 200:
+        text = f'<div class="sc-scroll sc-pixbox">{text}</div>'
+    return f"<h3>Pixels plotted ({count:,})</h3>{text}"
+
+
+def _nothing(block: Any, page: _Page) -> str:
+    return ""
+
+
+HTML: dict[type, Callable[[Any, _Page], str]] = {
+    Title: _nothing,  # the section's heading (answer_section)
+    Given: _given,
+    Working: _working,
+    Notes: _notes,
+    StepTable: _step_table,
+    Table: _further_table,
+    Pixels: _pixels,
+    Drawing: _nothing,  # beside the stepper or under the answer (_figures)
+}
+"""The ``html`` format's answer column: one handler per block type."""
+
+
+def _controls(st: stepper.Stepping, at: int) -> str:
+    """The stepper's buttons, slider, caption and key help."""
+    return (
+        '<div class="sc-controls" role="group" aria-label="step through the answer">'
+        '<button type="button" data-act="reset" title="Reset (Home)">Reset</button>'
+        '<button type="button" data-act="prev" title="Previous (\u2190)">\u25c0 Prev</button>'
+        '<button type="button" data-act="play" title="Play / Pause (space)" '
+        'aria-pressed="false">\u25b6 Play</button>'
+        '<button type="button" data-act="next" title="Next (\u2192)">Next \u25b6</button>'
+        '<button type="button" data-act="end" title="End">End</button>'
+        f'<input class="sc-slider" type="range" min="0" max="{st.n}" value="{at}" '
+        'step="1" aria-label="step">'
+        f'<output class="sc-pos">step {at} / {st.n}</output></div>'
+        f'<p class="sc-caption" aria-live="polite">{esc(st.captions[at])}</p>'
+        '<p class="sc-hover"></p>'
+        '<p class="sc-keys">Keys: \u2192 next, \u2190 previous, space play / pause, '
+        "Home reset, End last step. Click a table row to go to its step"
+        + ("; hover a pixel to see which step plotted it." if st.pixels else ".")
+        + "</p>"
+    )
+
+
+def _figures(doc: Document, options: Options) -> str:
+    """The answer's own figures, drawn (``""``: none, or no grid wanted)."""
+    drawings: list[Drawing] = doc.every(Drawing)
+    if not options.grid or not drawings:
+        return ""
+    return (
+        '<div class="sc-figures">'
+        + "".join(figure_svg(d.figure, options.origin) for d in drawings)
+        + "</div>"
+    )
+
+
+def _stepper_column(doc: Document, st: stepper.Stepping, page: _Page, said: list[str]) -> str:
+    """The stepper beside the answer: its grid (or a comparison's figures), its controls,
+    and what a large answer leaves out (into ``said``)."""
+    out = ['<div class="sc-stepper">']
+    if st.pixels:
+        svg, numbered = step_grid(doc, st, page.options, page.at)
+        out.append(svg)
+        out.append(legend(doc, st, numbered))
+    else:  # a comparison: its figures beside its table
+        out.append(_figures(doc, page.options))
+    out.append(_controls(st, page.at))
+    out.append(selftest_html(doc.get(StepTable), st, page.options))  # "Test yourself": selftest.py
+    if st.total > st.n and doc.get(StepTable) is not None and doc.get(StepTable).columns:
+        said.append(f"the stepper goes through the first {st.n:,} of {st.total:,} steps")
+    if st.total_pixels > len(st.pixels):
+        said.append(f"the grid draws the first {len(st.pixels):,} of {st.total_pixels:,} pixels")
+    if said:
+        out.append('<p class="sc-more">Large answer: ' + "; ".join(said) + ".</p>")
+    out.append("</div>")
+    return "".join(out)
+
+
+def _step_data(st: stepper.Stepping) -> str:
+    """The stepper's data for the script."""
+    play_ms = int(min(700, max(15, PLAY_SECONDS * 1000 / max(st.n, 1))))
+    data = {
+        "n": st.n,
+        "pos": st.pos,
+        "kind": st.kind,
+        "captions": st.captions,
+        "heads": st.heads,
+        "ms": play_ms,
+    }
+    return json_script(data)
+
+
+def _page_state(doc: Document, options: Options, at_end: bool) -> _Page:
+    """The stepper's data and which table rows are its positions."""
+    st = stepping(doc, options)
+    at = st.n if (st is not None and at_end) else 0
+    table: StepTable | None = doc.get(StepTable)
+    tables: list[Table] = doc.every(Table)
+    steps: Positions = {}
+    mapped = None
+    if st is not None and table is not None and table.columns:
+        steps = {i: (i + 1, st.row_region[i]) for i in range(st.n)}
+        mapped = None if table.shown else _mapped_tables(table, tables, st.n)
+    return _Page(options, st, at, steps, mapped, tables)
+
+
 def answer_section(
-    solution: Solution,
+    answer: Solution | Document,
     uid: str,
     options: Options | None = None,
     *,
@@ -218,10 +422,10 @@ def answer_section(
     pixel lit, as a notebook that runs no script shows it) instead of step 0; ``notices``
     collects what was left out.
     """
+    doc = as_document(answer)
     options = options or Options()
-    exact = options.exact
-    st = stepping(solution, options)
-    at = st.n if (st is not None and at_end) else 0
+    page = _page_state(doc, options, at_end)
+    st, at = page.st, page.at
     said: list[str] = []
     h = f"h{level}"
     out = [
@@ -231,121 +435,17 @@ def answer_section(
     ]
     if heading:
         out.append(f'<p class="sc-heading">{esc(heading)}</p>')
-    out.append(f'<{h} class="sc-title">{esc(solution.title)}</{h}>')
+    out.append(f'<{h} class="sc-title">{esc(doc.title)}</{h}>')
     out.append(f'<div class="sc-layout{"" if st else " sc-single"}"><div class="sc-answer">')
-    if solution.given:
-        out.append(
-            '<p class="sc-given"><strong>Given:</strong> '
-            + ", ".join(tex_math(q.tex) for q in solution.given)
-            + "</p>"
-        )
-    if solution.derived:
-        out.append('<h3>Working</h3><ul class="sc-working">')
-        out.extend(f"<li>{tex_math(q.tex, display=True)}</li>" for q in solution.derived)
-        out.append("</ul>")
-    if solution.notes:
-        out.append('<h3>Notes</h3><ul class="sc-notes">')
-        out.extend(f"<li>{note_html(n)}</li>" for n in solution.notes)
-        out.append("</ul>")
-    n_steps = st.n if st and solution.columns else 0
-    mapped = None if solution.show_steps else _mapped_tables(solution, n_steps)
-    step_positions: dict[int, tuple[int, int]] = {}
-    if st and solution.columns:
-        step_positions = {i: (i + 1, st.row_region[i]) for i in range(st.n)}
-    if solution.columns and (solution.show_steps or mapped is None):
-        title = "Step table" if solution.show_steps else "Step table (the tables below split it up)"
-        out.append(
-            _table(
-                title,
-                solution.columns,
-                _step_rows(solution),
-                exact,
-                step_positions or None,
-                st.total if st else None,
-                at,
-            )
-        )
-    for t, table in enumerate(solution.tables):
-        positions = None
-        if st is not None and st.table == t:
-            if st.table_rows is not None:
-                positions = {r: (p, 1) for r, p in st.table_rows.items()}
-            else:
-                positions = {r: (r + 1, 1) for r in range(st.n)}
-        if mapped is not None and t in mapped:
-            positions = {r: step_positions[s] for r, s in mapped[t].items() if s in step_positions}
-        # a table stays whole (the symmetry table, a comparison); its box scrolls sideways
-        out.append(_table(table.title, table.columns, table.rows(), exact, positions, None, at))
-    if solution.pixels is not None and st is not None:
-        count = st.total_pixels
-        listed = ", ".join(fmt_pixel(p) for p in st.pixels[:MAX_PIXEL_LIST])
-        more = f", \u2026 ({count - MAX_PIXEL_LIST:,} more)" if count > MAX_PIXEL_LIST else ""
-        out.append(
-            f"<h3>Pixels plotted ({count:,})</h3>"
-            + (
-                f'<div class="sc-scroll sc-pixbox"><p class="sc-pixels">{esc(listed)}{esc(more)}'
-                "</p></div>"
-                if count > 200
-                else f'<p class="sc-pixels">{esc(listed)}{esc(more)}</p>'
-            )
-        )
+    out.extend(HTML[type(block)](block, page) for block in doc.blocks)
     out.append("</div>")
     if st is not None:
-        out.append('<div class="sc-stepper">')
-        if st.pixels:
-            svg, numbered = step_grid(solution, st, options, at)
-            out.append(svg)
-            out.append(legend(solution, st, numbered))
-        elif options.grid and solution.figures:  # a comparison: its figures beside its table
-            out.append('<div class="sc-figures">')
-            out.extend(figure_svg(fig, options.origin) for fig in solution.figures)
-            out.append("</div>")
-        out.append(
-            '<div class="sc-controls" role="group" aria-label="step through the answer">'
-            '<button type="button" data-act="reset" title="Reset (Home)">Reset</button>'
-            '<button type="button" data-act="prev" title="Previous (\u2190)">\u25c0 Prev</button>'
-            '<button type="button" data-act="play" title="Play / Pause (space)" '
-            'aria-pressed="false">\u25b6 Play</button>'
-            '<button type="button" data-act="next" title="Next (\u2192)">Next \u25b6</button>'
-            '<button type="button" data-act="end" title="End">End</button>'
-            f'<input class="sc-slider" type="range" min="0" max="{st.n}" value="{at}" '
-            'step="1" aria-label="step">'
-            f'<output class="sc-pos">step {at} / {st.n}</output></div>'
-        )
-        out.append(f'<p class="sc-caption" aria-live="polite">{esc(st.captions[at])}</p>')
-        out.append('<p class="sc-hover"></p>')
-        out.append(
-            '<p class="sc-keys">Keys: \u2192 next, \u2190 previous, space play / pause, '
-            "Home reset, End last step. Click a table row to go to its step"
-            + ("; hover a pixel to see which step plotted it." if st.pixels else ".")
-            + "</p>"
-        )
-        out.append(selftest_html(solution, st, options))  # "Test yourself" (issue 31): selftest.py
-        if st.total > st.n and solution.columns:
-            said.append(f"the stepper goes through the first {st.n:,} of {st.total:,} steps")
-        if st.total_pixels > len(st.pixels):
-            said.append(
-                f"the grid draws the first {len(st.pixels):,} of {st.total_pixels:,} pixels"
-            )
-        if said:
-            out.append('<p class="sc-more">Large answer: ' + "; ".join(said) + ".</p>")
-        out.append("</div>")
+        out.append(_stepper_column(doc, st, page, said))
     out.append("</div>")
-    if options.grid and solution.figures and not (st is not None and not st.pixels):
-        out.append('<div class="sc-figures">')
-        out.extend(figure_svg(fig, options.origin) for fig in solution.figures)
-        out.append("</div>")
+    if st is None or st.pixels:  # a comparison's figures are beside its table
+        out.append(_figures(doc, options))
     if st is not None:
-        play_ms = int(min(700, max(15, PLAY_SECONDS * 1000 / max(st.n, 1))))
-        data = {
-            "n": st.n,
-            "pos": st.pos,
-            "kind": st.kind,
-            "captions": st.captions,
-            "heads": st.heads,
-            "ms": play_ms,
-        }
-        out.append(json_script(data))
+        out.append(_step_data(st))
     out.append("</section>")
     if notices is not None:
         notices.extend(said)
@@ -402,12 +502,11 @@ def html_document(
     return page("\n".join(body), title)
 
 
-def render_html(solution: Solution, options: Options) -> Iterator[str | Notice]:
+def render_html(answer: Solution | Document, options: Options) -> Iterator[str | Notice]:
     """The ``html`` format: the whole page, then a notice for what it left out."""
+    doc = as_document(answer)
     said: list[str] = []
-    text = page(
-        answer_section(solution, "sc1", options, notices=said), solution.title or "scanconv"
-    )
+    text = page(answer_section(doc, "sc1", options, notices=said), doc.title or "scanconv")
     yield text
     for n in said:
         yield Notice(f"the page shows part of a large answer: {n}")
@@ -416,7 +515,7 @@ def render_html(solution: Solution, options: Options) -> Iterator[str | Notice]:
 _counter = iter(range(1, 1 << 62))
 
 
-def notebook_html(solution: Solution, options: Options | None = None) -> str:
+def notebook_html(solution: Solution | Document, options: Options | None = None) -> str:
     """One answer for a Jupyter cell: its style (scoped to ``.scanconv``), the section with a
     unique id, written at its last step (so an untrusted notebook, which runs no script, shows
     the whole answer), and the script, which starts only sections not started yet and binds

@@ -21,16 +21,30 @@ TikZ (:mod:`scanconv.render.tikz`); a figure too large to draw stays a typewrite
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from functools import partial
 from itertools import chain, islice
+from typing import Any
 
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
 from ..core.working import tex_text
+from ..document import (
+    Document,
+    Drawing,
+    Given,
+    Notes,
+    Pixels,
+    StepTable,
+    Table,
+    Title,
+    Working,
+    as_document,
+)
 from . import Notice, Options
 from .cells import note_segments, numeric_column, prose_math, wrap_items
 from .grid import too_large
-from .text import Rows, all_tables, figure_text, grid_block, pixel_count
+from .text import Rows, figure_text, grid_block, pixel_count, step_rows, table_rows
 from .tikz import tikz_figure, tikz_grid
 
 _MATH_CELL = re.compile(r"(?=[-(0-9])(?:[-+*/(), ]|[0-9]+(?:\.[0-9]+)?|sqrt|[a-z]{1,2}(?![a-z.]))+")
@@ -337,59 +351,98 @@ def note_tex(note: str) -> str:
     >>> note_tex("$p_k < 0$ chooses E; 50% of it")
     '$p_k < 0$ chooses E; 50\\\\% of it'
     """
-    return "".join(f"${t}$" if math else tex_text(t) for math, t in note_segments(note))
+    return prose_tex_segments(note_segments(note))
 
 
-def render_latex(solution: Solution, options: Options) -> Iterator[str | Notice]:
-    """The worked solution as a LaTeX fragment."""
+def prose_tex_segments(segments: Iterable[tuple[bool, str]]) -> str:
+    """Prose segments (a :class:`~scanconv.document.Prose`'s) in LaTeX: math as math, the
+    text escaped."""
+    return "".join(f"${t}$" if math else tex_text(t) for math, t in segments)
+
+
+def render_latex(answer: Solution | Document, options: Options) -> Iterator[str | Notice]:
+    """The worked answer as a LaTeX fragment: each block by :data:`LATEX`."""
+    doc = as_document(answer)
     yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}\n"
     yield NEED
-    yield f"\\subsection*{{{tex_text(solution.title)}}}\n\n"
-    if solution.given:
-        yield "\\paragraph{Given} " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
-    if solution.derived:
-        yield "\\paragraph{Working}\n\\begin{itemize}\n"
-        for q in solution.derived:
-            yield f"  \\item ${q.tex}$\n"
-        yield "\\end{itemize}\n\n"
-    for note in solution.notes:
-        yield f"\\noindent {note_tex(note)}\\par\n"
-    if solution.notes:
-        yield "\n"
-    for title, cols, rows in all_tables(solution, options.exact):
-        yield from _tables(title or "Step table", cols, rows)
-    if solution.pixels is not None:
-        yield f"\\paragraph{{Pixels plotted ({pixel_count(solution)})}}\n"
-        yield "{\\raggedright\n"
-        for line in wrap_items(f"${fmt_pixel(p)}$" for p in solution.pixels()):
-            yield line + "\n"
-        yield "\\par}\n"
-    yield from _figures(solution, options)
+    for block in doc.blocks:
+        yield from LATEX[type(block)](block, options, doc)
 
 
-def _figures(solution: Solution, options: Options) -> Iterator[str | Notice]:
-    """The pixel grid drawn with TikZ (:mod:`scanconv.render.tikz`), then the answer's own
-    figures (a two-set pixel figure, an image's grey levels) drawn too; a figure too large
-    to draw stays a typewriter picture, and the grid is left out with a notice saying why."""
+def _title(block: Title, options: Options, doc: Document) -> Iterator[str]:
+    yield f"\\subsection*{{{tex_text(block.text)}}}\n\n"
+
+
+def _given(block: Given, options: Options, doc: Document) -> Iterator[str]:
+    yield "\\paragraph{Given} " + ", ".join(f"${q.tex}$" for q in block.quantities) + "\n\n"
+
+
+def _working(block: Working, options: Options, doc: Document) -> Iterator[str]:
+    yield "\\paragraph{Working}\n\\begin{itemize}\n"
+    for q in block.lines:
+        yield f"  \\item ${q.tex}$\n"
+    yield "\\end{itemize}\n\n"
+
+
+def _notes(block: Notes, options: Options, doc: Document) -> Iterator[str]:
+    for note in block.notes:
+        yield f"\\noindent {prose_tex_segments(note.segments)}\\par\n"
+    yield "\n"
+
+
+def _step_table(block: StepTable, options: Options, doc: Document) -> Iterator[str]:
+    if block.columns and block.shown:
+        yield from _tables("Step table", block.columns, partial(step_rows, block, options.exact))
+
+
+def _table(block: Table, options: Options, doc: Document) -> Iterator[str]:
+    yield from _tables(block.title, block.columns, partial(table_rows, block, options.exact))
+
+
+def _pixels(block: Pixels, options: Options, doc: Document) -> Iterator[str | Notice]:
+    """The pixel list, then the grid drawn with TikZ (:mod:`scanconv.render.tikz`); a grid
+    too large to draw stays a typewriter picture, or is left out with a notice saying why."""
+    yield f"\\paragraph{{Pixels plotted ({pixel_count(block)})}}\n"
+    yield "{\\raggedright\n"
+    for line in wrap_items(f"${fmt_pixel(p)}$" for p in block.pixels()):
+        yield line + "\n"
+    yield "\\par}\n"
     drawn = None
-    if options.grid and solution.pixels is not None and not too_large(solution.bbox):
-        drawn = tikz_grid(solution, options.origin)
+    if options.grid and not too_large(block.bbox):
+        drawn = tikz_grid(doc, options.origin)
     if drawn is not None:
         yield drawn
-    else:
-        chunks = list(grid_block(solution, options))
-        lines = [c for c in chunks if isinstance(c, str)]
-        if max((len(line) for line in lines), default=0) > _GRID_SIZES[-1][0]:
-            lines = [c for c in grid_block(solution, options, compact=True) if isinstance(c, str)]
-        yield from (c for c in chunks if isinstance(c, Notice))
-        yield from _verbatim(lines)
+        return
+    chunks = list(grid_block(block, options))
+    lines = [c for c in chunks if isinstance(c, str)]
+    if max((len(line) for line in lines), default=0) > _GRID_SIZES[-1][0]:
+        lines = [c for c in grid_block(block, options, compact=True) if isinstance(c, str)]
+    yield from (c for c in chunks if isinstance(c, Notice))
+    yield from _verbatim(lines)
+
+
+def _drawing(block: Drawing, options: Options, doc: Document) -> Iterator[str]:
+    """One of the answer's own figures (a two-set pixel figure, an image's grey levels)
+    drawn with TikZ; one too large to draw stays a typewriter picture."""
     if options.grid:
-        for figure in solution.figures:
-            picture = tikz_figure(figure, options.origin)
-            if picture is None:
-                yield from _verbatim(figure_text(figure, options.origin))
-            else:
-                yield picture
+        picture = tikz_figure(block.figure, options.origin)
+        if picture is None:
+            yield from _verbatim(figure_text(block.figure, options.origin))
+        else:
+            yield picture
+
+
+LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = {
+    Title: _title,
+    Given: _given,
+    Working: _working,
+    Notes: _notes,
+    StepTable: _step_table,
+    Table: _table,
+    Pixels: _pixels,
+    Drawing: _drawing,
+}
+"""The ``latex`` format: one handler per block type."""
 
 
 def _verbatim(lines: Sequence[str]) -> Iterator[str]:

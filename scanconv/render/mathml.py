@@ -13,6 +13,7 @@ from __future__ import annotations
 import html as htmlmod
 import json
 import re
+from collections.abc import Iterable
 from typing import Any
 
 from ..core.working import UNSAFE as _CONTROLS
@@ -181,9 +182,13 @@ def note_html(note: str) -> str:
     >>> note_html("if $p < 0$ & so on")[:12], note_html("if $p < 0$ & so on")[-12:]
     ('if <math xml', ' &amp; so on')
     """
-    return "".join(
-        tex_math(part) if is_math else esc(part) for is_math, part in note_segments(note)
-    )
+    return prose_segments_html(note_segments(note))
+
+
+def prose_segments_html(segments: Iterable[tuple[bool, str]]) -> str:
+    """Prose segments (a :class:`~scanconv.document.Prose`'s): the text escaped, the math as
+    MathML."""
+    return "".join(tex_math(part) if is_math else esc(part) for is_math, part in segments)
 
 
 def prose_html(text: str) -> str:

@@ -26,9 +26,10 @@ model's own move and point, the DDA's rounding the table's pixel); a page where 
 given no button, like a page without a model.
 
 >>> from scanconv.answers.line import line_solution
+>>> from scanconv.document import StepTable, document
 >>> from scanconv.render.stepper import stepping
 >>> s = line_solution("bresenham", 2, 2, 10, 6)
->>> d = selftest_data(s, stepping(s))
+>>> d = selftest_data(document(s).get(StepTable), stepping(s))
 >>> d["rules"][0]["neg"], d["rules"][0]["pos"], d["rules"][0]["moves"]
 ('E', 'NE', {'E': [1, 0], 'NE': [1, 1]})
 >>> {k: d["rows"][3][k] for k in ("name", "at", "p", "d", "to")}
@@ -42,9 +43,9 @@ from itertools import islice
 from typing import Any
 
 from ..algorithms.conventions import ROUNDINGS
-from ..answers.marking_diagnose import model_for
 from ..answers.models import DDALine, Model, State, chain
-from ..core.records import Solution, Step
+from ..core.records import Step
+from ..document import StepTable
 from . import Options
 from .cells import cell
 from .mathml import esc, json_script
@@ -111,15 +112,15 @@ def _layout(states: list[State], records: list[Step]) -> str | None:
     return None
 
 
-def _stem(solution: Solution) -> str:
+def _stem(table: StepTable) -> str:
     """The TeX of the parameter's column without its ``_k`` (``p``, ``d``)."""
-    col = next((c for c in solution.columns if c.key == "p"), None)
+    col = next((c for c in table.columns if c.key == "p"), None)
     tex = col.tex if col is not None else "p_k"
     return tex[:-2] if tex.endswith("_k") else tex
 
 
-def _text(value: Any, solution: Solution, key: str, exact: bool) -> str:
-    col = next((c for c in solution.columns if c.key == key), None)
+def _text(value: Any, table: StepTable, key: str, exact: bool) -> str:
+    col = next((c for c in table.columns if c.key == key), None)
     return str(value) if col is None else cell(value, col, exact)
 
 
@@ -135,13 +136,13 @@ def _dda(model: DDALine, states: list[State]) -> dict[str, Any] | None:
 
 
 def _rows(
-    model: Model, solution: Solution, states: list[State], records: list[Step], layout: str,
+    model: Model, table: StepTable, states: list[State], records: list[Step], layout: str,
     options: Options,
 ) -> tuple[list[dict[str, Any]], list[dict[str, Any]]] | None:  # fmt: skip
     """The quiz's rows and rules; ``None`` if a rule does not give the model's own step."""
     rules: list[dict[str, Any]] = []
     rows: list[dict[str, Any]] = []
-    stem = _stem(solution)
+    stem = _stem(table)
     steps = len(records) - 1 if layout == "at" else len(records)
     for j in range(min(steps, len(states) - 1, MAX_QUESTIONS)):
         s, t = states[j], states[j + 1]
@@ -151,15 +152,15 @@ def _rows(
             "at": list(s.point),
             "to": list(t.point),
             "p": frac(s.p),
-            "pt": _text(s.p, solution, "p", options.exact),
+            "pt": _text(s.p, table, "p", options.exact),
             "reg": s.region,
         }
         if isinstance(model, DDALine):
             assert s.exact is not None and t.exact is not None
             row["xy"] = [frac(v) for v in s.exact]
             row["nxy"] = [frac(v) for v in t.exact]
-            row["xyt"] = [_text(v, solution, "x", options.exact) for v in s.exact]
-            row["nxyt"] = [_text(v, solution, "x", options.exact) for v in t.exact]
+            row["xyt"] = [_text(v, table, "x", options.exact) for v in s.exact]
+            row["nxyt"] = [_text(v, table, "x", options.exact) for v in t.exact]
             row["name"] = f"(x{_sub(records[j].k + 1)}, y{_sub(records[j].k + 1)})"
             rows.append(row)
             continue
@@ -183,25 +184,26 @@ def _sub(k: int) -> str:
     return str(k).translate(str.maketrans("0123456789-", "₀₁₂₃₄₅₆₇₈₉₋"))
 
 
-def selftest_data(solution: Solution, st: Stepping | None, options: Options | None = None) -> dict[str, Any] | None:  # fmt: skip
-    """The quiz's JSON data for ``solution`` (``None``: no step table or no rule: no button)."""
+def selftest_data(table: StepTable | None, st: Stepping | None, options: Options | None = None) -> dict[str, Any] | None:  # fmt: skip
+    """The quiz's JSON data for an answer's step ``table`` (``None``: no step table or no rule:
+    no button)."""
     options = options or Options()
-    if st is None or st.table is not None or not solution.columns or not st.pixels:
+    if st is None or st.table is not None or table is None or not table.columns or not st.pixels:
         return None
-    model = model_for(solution)
+    model = table.model() if table.model is not None else None
     if model is None:
         return None
     limit = min(st.n, MAX_QUESTIONS + 1)
-    records = list(islice(solution.steps(), limit))
+    records = list(islice(table.steps(), limit))
     states = list(chain(model, limit + 2))
     layout = _layout(states, records)
     if layout is None:
         return None
-    built = _rows(model, solution, states, records, layout, options)
+    built = _rows(model, table, states, records, layout, options)
     if built is None or not built[0]:
         return None
     rows, rules = built
-    centre = solution.geometry.get("center") or (0, 0)
+    centre = table.center or (0, 0)
     data: dict[str, Any] | None = {"kind": "decide", "rules": rules}
     if isinstance(model, DDALine):
         data = _dda(model, states[: len(rows) + 1])
@@ -213,16 +215,18 @@ def selftest_data(solution: Solution, st: Stepping | None, options: Options | No
             "rows": rows,
             "centre": [int(c) for c in centre] if ok else None,
             "down": options.origin == "top-left",
-            "next": next((i for i, c in enumerate(solution.columns) if c.key == "p_next"), None),
+            "next": next((i for i, c in enumerate(table.columns) if c.key == "p_next"), None),
         }
     )
     return data
 
 
-def selftest_html(solution: Solution, st: Stepping | None, options: Options | None = None) -> str:
+def selftest_html(
+    table: StepTable | None, st: Stepping | None, options: Options | None = None
+) -> str:
     """The "Test yourself" button, its panel (filled in by the script) and its data; ``""``
     when the answer has no rule to test against."""
-    data = selftest_data(solution, st, options)
+    data = selftest_data(table, st, options)
     if data is None:
         return ""
     n = len(data["rows"])

@@ -22,8 +22,9 @@ import shlex
 from collections.abc import Iterator, Sequence
 from typing import NamedTuple
 
-from ..core.records import Column, Solution
+from ..core.records import Column, Quantity, Solution
 from ..core.working import ascii_text, json_visible, visible
+from ..document import Given, as_document
 from . import Notice, Options
 from .cells import numeric_column
 from .text import md_text
@@ -178,7 +179,7 @@ def wording(a: Answered) -> str:
         return a.question.wording
     tables = bool(_blank_tables(a.solution, count=False))
     todo = "Show your working and complete the table" if tables else "Show your working"
-    title = a.solution.title.rstrip(".")
+    title = as_document(a.solution).title.rstrip(".")
     return f"{title}. {todo}{'s' if len(_blank_tables(a.solution, False)) > 1 else ''}."
 
 
@@ -273,8 +274,6 @@ def _parts(blank: Blank) -> list[tuple[list[int], str]]:
 def _markdown(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
-    from .text import table_lines
-
     section_level, level = _levels(sheet)
     if sheet.title:
         yield f"# {md_text(' '.join(sheet.title.split()))}\n\n{_intro(sheet, kind)}\n\n"
@@ -287,37 +286,54 @@ def _markdown(
                 yield f"{'#' * section_level} {md_text(section)}\n\n"
             yield f"{'#' * level} Question {q.number}{_marks(q.marks)}\n\n"
             if kind == "key":
-                if q.wording:
-                    yield f"> {md_text(q.wording)}\n\n"
-                yield md_code(q.command) + "\n\n"
-                first = True
-                for chunk in _answer_chunks(a, "markdown"):
-                    if first and isinstance(chunk, str) and chunk.startswith("## "):
-                        chunk = "#" * (level + 1) + chunk[2:]
-                    first = False
-                    yield chunk
-                continue
-            yield md_text(wording(a)) + "\n\n"
-            if a.solution.given:
-                given = ", ".join(f"${g.tex}$" for g in a.solution.given)
-                yield f"**Given:** {given}\n\n"
-            for blank in _blank_tables(a.solution):
-                for part, label in _parts(blank):
-                    yield f"**{md_text(label)}:**\n\n"
-                    cells = (
-                        [r[i] or " " * max(3, blank.widths[i]) for i in part]
-                        for r in _blank_rows(blank)
-                    )
-                    for line in table_lines(
-                        [f"${blank.columns[i].tex}$" for i in part],
-                        [numeric_column(blank.columns[i]) for i in part],
-                        cells,
-                        markdown=True,
-                    ):
-                        yield line + "\n"
-                    yield "\n"
-            if not _blank_tables(a.solution, count=False):
-                yield "**Answer:**\n\n" + "&nbsp;\n\n" * 6
+                yield from _md_key(a, level)
+            else:
+                yield from _md_worksheet(a)
+
+
+def _md_key(a: Answered, level: int) -> Iterator[str | Notice]:
+    """A key's question in Markdown: its wording, its command, its answer (the ``markdown``
+    format's mapping, the answer's title one level under the question's)."""
+    if a.question.wording:
+        yield f"> {md_text(a.question.wording)}\n\n"
+    yield md_code(a.question.command) + "\n\n"
+    first = True
+    for chunk in _answer_chunks(a, "markdown"):
+        if first and isinstance(chunk, str) and chunk.startswith("## "):
+            chunk = "#" * (level + 1) + chunk[2:]
+        first = False
+        yield chunk
+
+
+def _md_worksheet(a: Answered) -> Iterator[str]:
+    """A worksheet's question in Markdown: its wording, the given values, empty tables."""
+    from .text import table_lines
+
+    yield md_text(wording(a)) + "\n\n"
+    if given_of(a):
+        yield f"**Given:** {', '.join(f'${g.tex}$' for g in given_of(a))}\n\n"
+    for blank in _blank_tables(a.solution):
+        for part, label in _parts(blank):
+            yield f"**{md_text(label)}:**\n\n"
+            cells = (
+                [r[i] or " " * max(3, blank.widths[i]) for i in part] for r in _blank_rows(blank)
+            )
+            for line in table_lines(
+                [f"${blank.columns[i].tex}$" for i in part],
+                [numeric_column(blank.columns[i]) for i in part],
+                cells,
+                markdown=True,
+            ):
+                yield line + "\n"
+            yield "\n"
+    if not _blank_tables(a.solution, count=False):
+        yield "**Answer:**\n\n" + "&nbsp;\n\n" * 6
+
+
+def given_of(a: Answered) -> tuple[Quantity, ...]:
+    """The given values of the answer's :class:`~scanconv.document.Given` block (none: ``()``)."""
+    given: Given | None = as_document(a.solution).get(Given)
+    return given.quantities if given is not None else ()
 
 
 def _plain(
@@ -345,8 +361,8 @@ def _plain(
                 yield "\n"
                 continue
             yield ascii_text(wording(a)) + "\n\n"
-            if a.solution.given:
-                given = ", ".join(ascii_text(g.text) for g in a.solution.given)
+            if given_of(a):
+                given = ", ".join(ascii_text(g.text) for g in given_of(a))
                 yield f"Given: {given}\n\n"
             for blank in _blank_tables(a.solution):
                 yield f"{ascii_text(blank.title)}:\n"
@@ -398,7 +414,7 @@ def _json(sheet: Sheet, answered: Sequence[Answered], kind: str) -> str:
                 entry["command"] = q.command
                 entry["answer"] = json.loads("".join(render_json(a.solution)))
             else:
-                entry["given"] = [g.text for g in a.solution.given]
+                entry["given"] = [g.text for g in given_of(a)]
                 entry["tables"] = [
                     {"title": b.title, "columns": [c.key for c in b.columns], "rows": b.rows}
                     for b in _blank_tables(a.solution)
@@ -492,8 +508,8 @@ def _html_blank(a: Answered) -> Iterator[str]:
     """A worksheet question's given values and empty tables, in HTML."""
     from .mathml import esc as escape
 
-    if a.solution.given:
-        given = ", ".join(escape(g.text) for g in a.solution.given)
+    if given_of(a):
+        given = ", ".join(escape(g.text) for g in given_of(a))
         yield f"<p><strong>Given:</strong> {given}</p>\n"
     blanks = _blank_tables(a.solution)
     for blank in blanks:

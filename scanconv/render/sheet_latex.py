@@ -19,6 +19,7 @@ import re
 from collections.abc import Iterator, Sequence
 
 from ..core.working import tex_text
+from ..document import Pixels, as_document
 from . import Notice
 from .latex import KEEP_ROWS, NEED
 from .sheet import (
@@ -32,6 +33,7 @@ from .sheet import (
     _intro,
     _marks,
     _room,
+    given_of,
     wording,
 )
 
@@ -127,11 +129,11 @@ def _key(a: Answered) -> Iterator[str | Notice]:
 
 def _worksheet(a: Answered) -> Iterator[str]:
     yield tex_text(wording(a)) + "\\par\\medskip\n"
-    if a.solution.given:
-        given = ", ".join(f"${g.tex}$" for g in a.solution.given)
+    if given_of(a):
+        given = ", ".join(f"${g.tex}$" for g in given_of(a))
         yield f"\\paragraph{{Given}} {given}\n\n"
     blanks = _blank_tables(a.solution)
-    drawing = a.solution.pixels is not None
+    drawing = as_document(a.solution).get(Pixels) is not None
     lines = WORKING_LINES if blanks or drawing else 2 * WORKING_LINES
     yield (
         "\\paragraph{Working}\\mbox{}\\par\\nopagebreak\n\\noindent\\fbox{\\parbox[t]"

@@ -6,14 +6,15 @@ scale that fits any size.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from fractions import Fraction
 from typing import Any
 
 from ..core.numeric import round_half_up
-from ..core.records import PixelFigure, ShadedMatrix, Solution
+from ..core.records import Pixel, PixelFigure, ShadedMatrix
+from ..document import Document, Pixels, Table
 from . import Options
-from .cells import marks_label
-from .figure import CELL, extent, grey_of, numbering_legend, step_labels
+from .figure import CELL, cells_extent, grey_of
 from .mathml import esc
 from .stepper import Stepping
 
@@ -150,12 +151,12 @@ def _primitive(geometry: dict[str, Any], f: _Frame) -> list[str]:
     return out
 
 
-def _marks(solution: Solution, f: _Frame) -> list[str]:
+def _marks(block: Pixels, f: _Frame) -> list[str]:
     out: list[str] = []
-    control = solution.geometry.get("control") or ()
+    control = block.ideal.get("control") or ()
     on_control = {(round_half_up(Fraction(x)), round_half_up(Fraction(y))) for x, y in control}
     arm = max(f.s * 0.22, 2.0)
-    for x, y in solution.marks:
+    for x, y in block.marks:
         if (x, y) in on_control:
             continue
         cx, cy = f.px(x), f.py(y)
@@ -171,12 +172,13 @@ def _marks(solution: Solution, f: _Frame) -> list[str]:
     return out
 
 
-def _levels(solution: Solution, f: _Frame) -> list[str]:
-    """De Casteljau's intermediate points at ``--at`` (a table whose rows hold points)."""
+def _levels(tables: list[Table], f: _Frame) -> list[str]:
+    """Construction points drawn over the grid: the rows of :attr:`Table.points` tables (de
+    Casteljau's intermediate points at ``--at``)."""
     out: list[str] = []
-    if solution.algorithm != "de-casteljau":
-        return out
-    for table in solution.tables:
+    for table in tables:
+        if not table.points:
+            continue
         for row in table.rows():
             points = [
                 v
@@ -202,16 +204,15 @@ def _svg_open(f: _Frame, cls: str, label: str) -> str:
     )
 
 
-def step_grid(solution: Solution, st: Stepping, options: Options, at: int = 0) -> tuple[str, bool]:
+def step_grid(doc: Document, st: Stepping, options: Options, at: int = 0) -> tuple[str, bool]:
     """The stepper's SVG (the grid, every drawn pixel, lit by the script, the primitive), and
     whether it numbers the pixels."""
-    cells = extent(solution, st.pixels) if st.pixels else solution.bbox
+    block: Pixels = doc.get(Pixels)
+    outline = list(dict.fromkeys(block.outline))
+    cells = cells_extent(st.pixels, (*block.marks, *block.outline), block.ideal)
     f = _Frame(cells, options.origin == "top-left", 620.0)
-    shades = solution.geometry.get("shades") or {}
-    levels = int(solution.geometry.get("levels", 2))
-    outline = list(dict.fromkeys(solution.geometry.get("outline") or ()))
     plotted = set(st.pixels)
-    out = [_svg_open(f, "sc-stepgrid", f"pixel grid of {solution.title}")]
+    out = [_svg_open(f, "sc-stepgrid", f"pixel grid of {doc.title}")]
     for x, y in outline:
         if (x, y) not in plotted:
             cx, cy = f.corner(x, y)
@@ -219,7 +220,21 @@ def step_grid(solution: Solution, st: Stepping, options: Options, at: int = 0) -
                 f'<rect class="sc-outline" x="{_n(cx)}" y="{_n(cy)}" '
                 f'width="{_n(f.s)}" height="{_n(f.s)}"/>'
             )
-    edge = set(outline)
+    out.extend(_cells(block, st, f, set(outline), at))
+    out.extend(_grid_lines(f))
+    out.extend(_primitive(block.ideal, f))
+    out.extend(_levels(doc.every(Table), f))
+    out.extend(_marks(block, f))
+    labels = _labels(block, st, f, at)
+    out.extend(labels)
+    out.extend(_axes(f))
+    out.append("</svg>")
+    return "".join(out), bool(labels)
+
+
+def _cells(block: Pixels, st: Stepping, f: _Frame, edge: set[Pixel], at: int) -> Iterator[str]:
+    """A ``<rect>`` for every drawn pixel, classed by when it lights and what it is."""
+    shades = block.shades or {}
     s = _n(f.s)
     for i, (x, y) in enumerate(st.pixels):
         cx, cy = f.corner(x, y)
@@ -230,63 +245,62 @@ def step_grid(solution: Solution, st: Stepping, options: Options, at: int = 0) -
             cls += " sc-r2"
         if (x, y) in edge:
             cls += " sc-edge"
-        style = f' style="fill:{grey_of(shades[(x, y)], levels)}"' if (x, y) in shades else ""
-        out.append(
+        grey = f' style="fill:{grey_of(shades[(x, y)], block.levels)}"' if (x, y) in shades else ""
+        yield (
             f'<rect class="{cls}" data-i="{i}" data-x="{x}" data-y="{y}" x="{_n(cx)}" '
-            f'y="{_n(cy)}" width="{s}" height="{s}"{style}/>'
+            f'y="{_n(cy)}" width="{s}" height="{s}"{grey}/>'
         )
-    out.extend(_grid_lines(f))
-    out.extend(_primitive(solution.geometry, f))
-    out.extend(_levels(solution, f))
-    out.extend(_marks(solution, f))
-    numbered = False
-    if f.cols <= LABELS and f.rows <= LABELS and len(st.pixels) <= 4 * LABELS * LABELS:
-        labels = step_labels(solution) if solution.pixels is not None else {}
-        for i, p in enumerate(st.pixels):
-            if p not in labels:
-                continue
-            text = str(labels[p])
-            size = min(13.0, (f.s - 6) / (0.62 * len(text)))
-            if size < 6:
-                continue
-            numbered = True
-            lit = " on" if st.pos[i] <= at else ""
-            out.append(
-                f'<text class="sc-lb{lit}" data-i="{i}" x="{_n(f.px(p[0]))}" '
-                f'y="{_n(f.py(p[1]) + 0.36 * size)}" font-size="{_n(size)}" '
-                f'text-anchor="middle">{text}</text>'
-            )
-    out.extend(_axes(f))
-    out.append("</svg>")
-    return "".join(out), numbered
 
 
-def legend(solution: Solution, st: Stepping, numbered: bool) -> str:
-    geometry = solution.geometry
+def _labels(block: Pixels, st: Stepping, f: _Frame, at: int) -> list[str]:
+    """The step numbers written in the pixels, when the grid is small enough to read them."""
+    out: list[str] = []
+    if f.cols > LABELS or f.rows > LABELS or len(st.pixels) > 4 * LABELS * LABELS:
+        return out
+    labels = block.labels()
+    for i, p in enumerate(st.pixels):
+        if p not in labels:
+            continue
+        text = str(labels[p])
+        size = min(13.0, (f.s - 6) / (0.62 * len(text)))
+        if size < 6:
+            continue
+        lit = " on" if st.pos[i] <= at else ""
+        out.append(
+            f'<text class="sc-lb{lit}" data-i="{i}" x="{_n(f.px(p[0]))}" '
+            f'y="{_n(f.py(p[1]) + 0.36 * size)}" font-size="{_n(size)}" '
+            f'text-anchor="middle">{text}</text>'
+        )
+    return out
+
+
+def legend(doc: Document, st: Stepping, numbered: bool) -> str:
+    """The key under the stepper's grid: what each colour and mark stands for."""
+    block: Pixels = doc.get(Pixels)
+    ideal = block.ideal
     parts = ['<i style="background:var(--sc-px)"></i>plotted pixel']
     if any(st.kind):
         parts.append('<i style="background:var(--sc-mirror)"></i>mirror image')
     if any(r > 1 for r in st.region):
         parts.append('<i style="background:var(--sc-r2)"></i>region 2')
     parts.append('<i style="background:#fff;border:2px solid var(--sc-new)"></i>this step')
-    if geometry.get("outline"):
-        name = esc(str(geometry.get("outline_name", "outline")))
-        parts.append(f'<i style="background:#f4b183"></i>{name}')
-    if "shades" in geometry:
-        parts.append(f"grey: intensity level (black = {int(geometry['levels']) - 1})")
-    kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in geometry]
-    if geometry.get("polyline"):
-        kinds.append(str(geometry.get("polyline_name", "curve")))
+    if block.outline:
+        parts.append(f'<i style="background:#f4b183"></i>{esc(block.outline_name)}')
+    if block.shades is not None:
+        parts.append(f"grey: intensity level (black = {block.levels - 1})")
+    kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in ideal]
+    if ideal.get("polyline"):
+        kinds.append(block.ideal_name)
     if kinds:
         parts.append(f'<i style="background:#d62728"></i>ideal {esc(" and ".join(kinds))}')
-    if geometry.get("control"):
+    if ideal.get("control"):
         parts.append('<i style="background:#2ca02c"></i>control polygon')
-    if solution.algorithm == "de-casteljau":
-        parts.append('<i style="background:#7b3294"></i>de Casteljau points')
-    if solution.marks and not geometry.get("control"):
-        parts.append(f"\u00d7 {esc(marks_label(solution))}")
+    if block.construction:
+        parts.append(f'<i style="background:#7b3294"></i>{esc(block.construction)}')
+    if block.marks and not ideal.get("control"):
+        parts.append(f"\u00d7 {esc(block.marks_label)}")
     if numbered:
-        parts.append(esc(numbering_legend(solution)))
+        parts.append(esc(block.numbering()))
     return '<p class="sc-legend">' + "".join(f"<span>{p}</span>" for p in parts) + "</p>"
 
 

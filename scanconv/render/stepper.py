@@ -1,10 +1,11 @@
 """What the HTML page steps through: positions, the pixels each lights, the captions.
 
-:func:`stepping` reads a :class:`~scanconv.core.records.Solution` into a :class:`Stepping`
+:func:`stepping` reads an answer's :class:`~scanconv.document.Document` into a :class:`Stepping`
 (see :mod:`scanconv.render.html` for what a position is): the step records with their pixels
 (and mirror images), the pixels alone in plotting order for an answer without a step table,
 or the rows of a comparison's side-by-side table. The captions give each decision with its
-numbers, in Unicode.
+numbers, in Unicode. It reads the blocks' declared structure (the step table's regions,
+symmetry and pixel offset, a table's ``stepped`` flag), never an answer's name.
 """
 
 from __future__ import annotations
@@ -14,11 +15,12 @@ from itertools import islice
 from typing import Any, NamedTuple
 
 from ..core.numeric import fmt_pixel
-from ..core.records import Solution, Step, step_getter
+from ..core.records import Pixel, Solution, Step, step_getter
 from ..core.working import tex_to_unicode
+from ..document import Document, Pixels, StepTable, Table, as_document
+from ..document.numbering import mirror_images
 from . import Options
 from .cells import cell, unicode_heading
-from .figure import label_offset, mirror_images, step_labels
 
 MAX_STEPS = 20_000
 """Steps the stepper goes through; a longer answer's later steps light at the last step."""
@@ -110,150 +112,231 @@ def _sign(value: Any) -> str:
 _CORE = ("k", "p", "decision", "pixel", "region")
 
 
-def _step_caption(
-    solution: Solution, step: Step, region: int, symmetry: int, center: Any, exact: bool
-) -> tuple[str, str]:
-    """The caption of one step, and its short name."""
-    columns = {c.key: c for c in solution.columns}
-    get = step_getter(solution.columns, solution.extra_keys)
-    cells = dict(zip((c.key for c in solution.columns), get(step), strict=True))
-    head = f"row k = {step.k}" if "k" in columns else f"step {step.k}"
-    if region > 1 or "region" in columns:
-        head = f"region {region}, {head}"
-    decided = ""
+def _decided(table: StepTable, step: Step, region: int, exact: bool) -> str:
+    """What a row decided, in words: ``p₃ = −2 < 0, so E`` (or ``move E``)."""
+    columns = {c.key: c for c in table.columns}
     if step.p is not None and "p" in columns:
         p_tex = columns["p"].tex
-        if "region" in columns:  # the region's own name of p (p1_k, p2_k), from its table
-            for table in solution.tables:
-                if table.title.startswith(f"Region {region} "):
-                    p_tex = next((c.tex for c in table.columns if c.key == "p"), p_tex)
-        decided = f"{column_label(p_tex, step.k)} = {with_minus(cell(step.p, columns['p'], exact))}"
-        decided += _sign(step.p)
-        if step.decision is not None:
-            decided += f", so {step.decision}"
-    elif step.decision is not None:
-        decided = f"move {step.decision}"
+        if 0 < region <= len(table.region_p):  # the region's own name of p (p1_k, p2_k)
+            p_tex = table.region_p[region - 1]
+        said = f"{column_label(p_tex, step.k)} = {with_minus(cell(step.p, columns['p'], exact))}"
+        said += _sign(step.p)
+        return said + (f", so {step.decision}" if step.decision is not None else "")
+    if step.decision is not None:
+        return f"move {step.decision}"
+    return ""
+
+
+def _plotted(table: StepTable, step: Step) -> str:
+    """What a row plots, in words (a point and its mirror images, or a pixel)."""
+    if table.symmetry in (4, 8):
+        first = next(mirror_images(step.pixel, table.symmetry, table.center))
+        return (
+            f"point {with_minus(fmt_pixel(step.pixel))} about the centre: plot "
+            f"{with_minus(fmt_pixel(first))} and its {table.symmetry - 1} mirror images (lighter)"
+        )
+    return f"plot {with_minus(fmt_pixel(step.pixel))}"
+
+
+def _step_caption(table: StepTable, step: Step, region: int, exact: bool) -> tuple[str, str]:
+    """The caption of one row, and its short name."""
+    keys = [c.key for c in table.columns]
+    head = f"row k = {step.k}" if "k" in keys else f"step {step.k}"
+    if region > 1 or "region" in keys:
+        head = f"region {region}, {head}"
+    decided = _decided(table, step, region, exact)
     # A row that plots (x_{k+1}, y_{k+1}) plots what its decision chose; one that plots
     # (x_k, y_k) decides the move to the next row's pixel.
-    before = label_offset(solution) == 1
+    before = table.offset == 1
     if decided and not before and step.decision is not None:
         decided += " for the next pixel"
     parts: list[str] = [decided] if decided and before else []
-    if symmetry in (4, 8):
-        first = next(mirror_images(step.pixel, symmetry, center))
-        parts.append(
-            f"point {with_minus(fmt_pixel(step.pixel))} about the centre: plot "
-            f"{with_minus(fmt_pixel(first))} and its {symmetry - 1} mirror images (lighter)"
-        )
-    else:
-        parts.append(f"plot {with_minus(fmt_pixel(step.pixel))}")
+    parts.append(_plotted(table, step))
     if decided and not before:
         parts.append(decided)
-    for key, column in columns.items():
-        if key in _CORE:
-            continue
-        text = cell(cells[key], column, exact)
-        if text != "-":
+    cells = table_cells(table, step)
+    for column, value in zip(table.columns, cells, strict=True):
+        text = cell(value, column, exact)
+        if column.key not in _CORE and text != "-":
             parts.append(f"{column_label(column.tex, step.k)} = {with_minus(text)}")
     return f"{head[0].upper()}{head[1:]}: " + "; ".join(parts) + ".", head
 
 
-def stepping(solution: Solution, options: Options | None = None) -> Stepping | None:
-    """The stepper's data for ``solution``, or ``None`` if it has neither steps nor pixels."""
+def table_cells(table: StepTable, step: Step) -> tuple[Any, ...]:
+    """A row's values in the step table's column order."""
+    return step_getter(table.columns, table.extra_keys)(step)
+
+
+def _regions(table: StepTable, steps: list[Step]) -> list[int]:
+    """The region of each row, as :attr:`StepTable.regions` says to read it."""
+    if table.regions == "column":
+        at = table.extra_keys.index("region")
+        return [int(step.extra[at]) for step in steps]
+    out: list[int] = []
+    current, previous = 1, None
+    for step in steps:
+        if table.regions == "restart" and previous is not None and step.k <= previous:
+            current += 1
+        previous = step.k
+        out.append(current)
+    return out
+
+
+def stepping(answer: Solution | Document, options: Options | None = None) -> Stepping | None:
+    """The stepper's data for an answer, or ``None`` if it has neither steps nor pixels."""
+    doc = as_document(answer)
     exact = bool(options and options.exact)
-    plotted_all = solution.pixels() if solution.pixels is not None else iter(())
-    pixels = list(dict.fromkeys(islice(plotted_all, MAX_PIXELS)))
-    total_pixels = len(pixels) + sum(1 for _ in plotted_all)
-    has_steps = bool(solution.columns)
-    steps_iter = solution.steps() if has_steps else iter(())
-    steps = list(islice(steps_iter, MAX_STEPS))
-    total_steps = len(steps) + sum(1 for _ in steps_iter)
+    block: Pixels | None = doc.get(Pixels)
+    pixels: list[Pixel] = []
+    total_pixels = 0
+    if block is not None:
+        plotted = block.pixels()
+        pixels = list(dict.fromkeys(islice(plotted, MAX_PIXELS)))
+        total_pixels = len(pixels) + sum(1 for _ in plotted)
+    table: StepTable | None = doc.get(StepTable)
+    steps: list[Step] = []
+    total_steps = 0
+    if table is not None and table.columns:
+        rows = table.steps()
+        steps = list(islice(rows, MAX_STEPS))
+        total_steps = len(steps) + sum(1 for _ in rows)
     if not steps and not pixels:
-        return _table_stepping(solution, exact)
+        return _table_stepping(doc.every(Table), exact)
+    if table is None or not steps:
+        return _pixel_stepping(doc, block, pixels, total_pixels)
+    return _step_stepping(table, block, steps, total_steps, pixels, total_pixels, exact)
+
+
+def _pixel_stepping(
+    doc: Document, block: Pixels | None, pixels: list[Pixel], total_pixels: int
+) -> Stepping:
+    """A pixel stepper: one pixel a position, in plotting order."""
+    labels = block.labels() if block is not None else {}
+    captions = ["Start: nothing plotted yet; Next (\u2192) plots the first pixel."]
+    heads = ["start"]
+    for i, p in enumerate(pixels):
+        number = labels.get(p)
+        extra = f" (number {number} in the grid)" if number is not None else ""
+        captions.append(f"Pixel {i + 1} of {len(pixels)}: plot {with_minus(fmt_pixel(p))}{extra}.")
+        heads.append(f"pixel {i + 1}")
+    found = _pixel_rows(doc.every(Table), pixels)
+    return Stepping(
+        n=len(pixels),
+        total=total_pixels,
+        pixels=pixels,
+        pos=list(range(1, len(pixels) + 1)),
+        kind=[0] * len(pixels),
+        region=[1] * len(pixels),
+        captions=captions,
+        heads=heads,
+        row_pos=[],
+        row_region=[],
+        total_pixels=total_pixels,
+        table=found[0] if found else None,
+        table_rows=found[1] if found else None,
+    )
+
+
+class _Lit(NamedTuple):
+    """When each drawn pixel lights (-1: not yet known), whether it is a mirror image, and
+    its region."""
+
+    pos: list[int]
+    kind: list[int]
+    region: list[int]
+
+
+def _light(table: StepTable, steps: list[Step], regions: list[int], pixels: list[Pixel]) -> _Lit:
+    """Each drawn pixel lit by the first row that plots it (its point or a mirror image)."""
     index = {p: i for i, p in enumerate(pixels)}
-    pos = [-1] * len(pixels)
-    kind = [0] * len(pixels)
-    region = [1] * len(pixels)
-    if not steps:  # a pixel stepper: one pixel a position, in plotting order
-        labels = step_labels(solution) if solution.pixels is not None else {}
-        captions = ["Start: nothing plotted yet; Next (\u2192) plots the first pixel."]
-        heads = ["start"]
-        for i, p in enumerate(pixels):
-            pos[i] = i + 1
-            number = labels.get(p)
-            extra = f" (number {number} in the grid)" if number is not None else ""
-            captions.append(
-                f"Pixel {i + 1} of {len(pixels)}: plot {with_minus(fmt_pixel(p))}{extra}."
-            )
-            heads.append(f"pixel {i + 1}")
-        found = _pixel_rows(solution, pixels)
-        return Stepping(
-            len(pixels), total_pixels, pixels, pos, kind, region, captions, heads, [], [],
-            total_pixels, found[0] if found else None, found[1] if found else None,
-        )  # fmt: skip
-    symmetry = int(solution.geometry.get("symmetry", 1))
-    center = solution.geometry.get("center", (0, 0))
-    has_region = "region" in solution.extra_keys
+    lit = _Lit([-1] * len(pixels), [0] * len(pixels), [1] * len(pixels))
+    for n, (step, region) in enumerate(zip(steps, regions, strict=True), 1):
+        for j, p in enumerate(mirror_images(step.pixel, table.symmetry, table.center)):
+            at = index.get(p)
+            if at is not None and lit.pos[at] < 0:
+                lit.pos[at], lit.kind[at], lit.region[at] = n, (0 if j == 0 else 1), region
+    return lit
+
+
+def _start(table: StepTable, pixels: list[Pixel], lit: _Lit) -> str:
+    """Light the start pixel (and its mirror images) at position 0 when the rows plot
+    ``(x_{k+1}, y_{k+1})``; the start caption."""
+    before = [i for i in range(len(pixels)) if lit.pos[i] < 0]
+    if not (table.offset and before):
+        return "Start: nothing plotted yet; Next (\u2192) plots row 0."
+    start = pixels[before[0]]
+    lit.pos[before[0]] = 0
+    symmetry, center = table.symmetry, table.center
+    if symmetry in (4, 8):  # the start point's mirror images are plotted with it
+        index = {p: i for i, p in enumerate(pixels)}
+        rel = (start[0] - int(center[0]), start[1] - int(center[1]))
+        for q in mirror_images(rel, symmetry, center):
+            at = index.get(q)
+            if at is not None and lit.pos[at] < 0:
+                lit.pos[at], lit.kind[at] = 0, 1
+    also = " and its mirror images" if symmetry in (4, 8) else ""
+    return (
+        f"Start: plot {with_minus(fmt_pixel(start))}{also}, plotted before row 0 "
+        "(each row plots the next pixel)."
+    )
+
+
+def _joins(lit: _Lit, last: int) -> None:
+    """Pixels no row plots (a curve's joining pixels) light with the next row that does."""
+    following = last
+    for i in range(len(lit.pos) - 1, -1, -1):
+        if lit.pos[i] < 0:
+            lit.pos[i] = following
+            if i > 0:
+                lit.region[i] = lit.region[i - 1] if lit.pos[i - 1] >= 0 else lit.region[i]
+        else:
+            following = lit.pos[i]
+
+
+def _step_stepping(
+    table: StepTable,
+    block: Pixels | None,
+    steps: list[Step],
+    total_steps: int,
+    pixels: list[Pixel],
+    total_pixels: int,
+    exact: bool,
+) -> Stepping:
+    """A step stepper: position n is the n-th row of the step table."""
+    regions = _regions(table, steps)
+    lit = _light(table, steps, regions, pixels)
     captions = [""]
     heads = ["start"]
-    row_region: list[int] = []
-    current_region, previous_k = 1, None
-    for n, step in enumerate(steps, 1):
-        if has_region:
-            current_region = int(step.extra[solution.extra_keys.index("region")])
-        elif previous_k is not None and step.k <= previous_k:
-            current_region += 1
-        previous_k = step.k
-        row_region.append(current_region)
-        for j, p in enumerate(mirror_images(step.pixel, symmetry, center)):
-            at = index.get(p)
-            if at is not None and pos[at] < 0:
-                pos[at], kind[at], region[at] = n, (0 if j == 0 else 1), current_region
-        caption, head = _step_caption(solution, step, current_region, symmetry, center, exact)
+    for step, region in zip(steps, regions, strict=True):
+        caption, head = _step_caption(table, step, region, exact)
         captions.append(caption)
         heads.append(head)
+    captions[0] = _start(table, pixels, lit)
     n_last = len(steps)
-    before = [i for i in range(len(pixels)) if pos[i] < 0]
-    if label_offset(solution) and before:
-        start = pixels[before[0]]
-        pos[before[0]] = 0
-        if symmetry in (4, 8):  # the start point's mirror images are plotted with it
-            rel = (start[0] - int(center[0]), start[1] - int(center[1]))
-            for q in mirror_images(rel, symmetry, center):
-                at = index.get(q)
-                if at is not None and pos[at] < 0:
-                    pos[at], kind[at] = 0, 1
-        also = " and its mirror images" if symmetry in (4, 8) else ""
-        captions[0] = (
-            f"Start: plot {with_minus(fmt_pixel(start))}{also}, plotted before row 0 "
-            "(each row plots the next pixel)."
-        )
-    else:
-        captions[0] = "Start: nothing plotted yet; Next (\u2192) plots row 0."
-    following = n_last
-    for i in range(len(pixels) - 1, -1, -1):  # joining pixels light with the next step's
-        if pos[i] < 0:
-            pos[i] = following
-            if i > 0:
-                region[i] = region[i - 1] if pos[i - 1] >= 0 else region[i]
-        else:
-            following = pos[i]
+    _joins(lit, n_last)
     if total_steps > len(steps):
         captions[-1] += f" (The stepper stops here: the answer has {total_steps:,} steps.)"
     return Stepping(
-        n_last, total_steps, pixels, pos, kind, region, captions, heads,
-        list(range(1, n_last + 1)), row_region, total_pixels,
-    )  # fmt: skip
+        n=n_last,
+        total=total_steps,
+        pixels=pixels,
+        pos=lit.pos,
+        kind=lit.kind,
+        region=lit.region,
+        captions=captions,
+        heads=heads,
+        row_pos=list(range(1, n_last + 1)),
+        row_region=regions,
+        total_pixels=total_pixels,
+    )
 
 
-def _pixel_rows(
-    solution: Solution, pixels: list[tuple[int, int]]
-) -> tuple[int, dict[int, int]] | None:
-    """A secondary table with a column that takes the pixels in plotting order (a fill's
+def _pixel_rows(tables: list[Table], pixels: list[Pixel]) -> tuple[int, dict[int, int]] | None:
+    """A further table with a column that takes the pixels in plotting order (a fill's
     trace; the pixel as a point or as its text): ``(table index, {row: position})``, the first
     row naming pixel i at position i + 1.
     """
-    for t, table in enumerate(solution.tables):
+    for t, table in enumerate(tables):
         rows = list(islice(table.rows(), MAX_TABLE_ROWS))
         for j in range(len(table.columns)):
             found: dict[int, int] = {}
@@ -267,12 +350,13 @@ def _pixel_rows(
     return None
 
 
-def _table_stepping(solution: Solution, exact: bool) -> Stepping | None:
-    """A comparison (no steps, no pixels of its own): its first table's rows, one a step, each
-    caption naming every method's value in that row."""
-    if solution.algorithm != "compare" or not solution.tables:
+def _table_stepping(tables: list[Table], exact: bool) -> Stepping | None:
+    """An answer that plots nothing but has a :attr:`Table.stepped` table (a comparison): its
+    rows, one a step, each caption naming every method's value in that row."""
+    at = next((t for t, table in enumerate(tables) if table.stepped), None)
+    if at is None:
         return None
-    table = solution.tables[0]
+    table = tables[at]
     rows = list(islice(table.rows(), MAX_TABLE_ROWS))
     if not rows:
         return None
@@ -288,4 +372,4 @@ def _table_stepping(solution: Solution, exact: bool) -> Stepping | None:
         captions.append(f"Row {i}: " + "; ".join(said) + ".")
         heads.append(f"row {i}")
     n = len(rows)
-    return Stepping(n, n, [], [], [], [], captions, heads, [], [], 0, table=0)
+    return Stepping(n, n, [], [], [], [], captions, heads, [], [], 0, table=at)

@@ -18,7 +18,7 @@ pixel lists like ``[(1, 2)]`` are never read as markup or emoji.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import islice
 from typing import Any
 
@@ -30,10 +30,22 @@ from rich.text import Text
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
 from ..core.working import visible
+from ..document import (
+    Document,
+    Drawing,
+    Given,
+    Notes,
+    Pixels,
+    StepTable,
+    Table,
+    Title,
+    Working,
+    as_document,
+)
 from . import Notice, Options
 from . import grid as gridmod
-from .cells import marks_label, note_unicode, numeric_column, unicode_heading, wrap_items
-from .text import all_tables, figure_text, pixel_count
+from .cells import numeric_column, segments_unicode, unicode_heading, wrap_items
+from .text import figure_text, grid_block, pixel_count, step_rows, table_rows
 
 CHUNK_ROWS = 1000
 """A long table is printed as several boxed tables of this many rows each."""
@@ -109,48 +121,114 @@ def wrap_text(text: str, width: int, indent: str = "", first: str = "") -> list[
     return [x.replace("\0", " ") for x in lines]
 
 
-def render_rich(solution: Solution, options: Options) -> Iterator[Any]:
-    """The worked solution as rich renderables, every line at most ``options.width`` wide."""
+def render_rich(answer: Solution | Document, options: Options) -> Iterator[Any]:
+    """The worked answer as rich renderables, every line at most ``options.width`` wide:
+    each block by :data:`RICH`, then the drawings (the grid, the figures)."""
     width = options.width or DEFAULT_WIDTH
-    for line in wrap_text(visible(solution.title), width, "  "):
+    drawn: list[list[str]] = []
+    for block in as_document(answer).blocks:
+        if options.brief and isinstance(block, Given | Working | Notes):
+            continue
+        yield from RICH[type(block)](block, options, width, drawn)
+    for i, lines in enumerate(drawn):
+        if i:
+            yield Text("")
+        yield from _grid_text(lines, width)
+    if drawn:
+        yield Text("")
+
+
+def _title(block: Title, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
+    for line in wrap_text(visible(block.text), width, "  "):
         yield Text(line, style="bold underline")
     yield Text("")
-    if not options.brief:
-        yield from _derivation(solution, width)
-    for title, cols, rows in all_tables(solution, options.exact):
-        yield from _tables(title or "Step table", tuple(cols), rows(), width)
-    if solution.pixels is not None:
-        yield Text(f"Pixels plotted ({pixel_count(solution)}):", style="bold")
-        for line in wrap_items((fmt_pixel(p) for p in solution.pixels()), width=width - 3):
-            yield Text("  " + line)
-        yield Text("")
-    yield from _figures(solution, options, width)
 
 
-def _derivation(solution: Solution, width: int) -> Iterator[Text]:
-    """The given values, the working and the notes, as the documents show them."""
-    if solution.given:
-        text = "Given: " + ", ".join(unicode_heading(q.text) for q in solution.given)
-        for i, line in enumerate(wrap_text(text, width, "  ")):
-            t = Text(line)
-            if i == 0:
-                t.stylize("bold", 0, len("Given:"))
-            yield t
-        yield Text("")
-    if solution.derived:
-        yield Text("Working:", style="bold")
-        for q in solution.derived:
-            for line in wrap_text(unicode_heading(q.text), width, "      ", "  "):
-                yield Text(line, style="cyan")
-        yield Text("")
-    if solution.notes:
-        yield Text("Notes:", style="bold")
-        for note in solution.notes:
-            for line in wrap_text(
-                visible(unicode_heading(note_unicode(note))), width, "    ", "  - "
-            ):
-                yield Text(line)
-        yield Text("")
+def _given(block: Given, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
+    text = "Given: " + ", ".join(unicode_heading(q.text) for q in block.quantities)
+    for i, line in enumerate(wrap_text(text, width, "  ")):
+        t = Text(line)
+        if i == 0:
+            t.stylize("bold", 0, len("Given:"))
+        yield t
+    yield Text("")
+
+
+def _working(block: Working, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
+    yield Text("Working:", style="bold")
+    for q in block.lines:
+        for line in wrap_text(unicode_heading(q.text), width, "      ", "  "):
+            yield Text(line, style="cyan")
+    yield Text("")
+
+
+def _notes(block: Notes, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
+    yield Text("Notes:", style="bold")
+    for note in block.notes:
+        text = visible(unicode_heading(segments_unicode(note.segments)))
+        for line in wrap_text(text, width, "    ", "  - "):
+            yield Text(line)
+    yield Text("")
+
+
+def _step_table(
+    block: StepTable, options: Options, width: int, drawn: list[list[str]]
+) -> Iterator[Any]:
+    if block.columns and block.shown:
+        yield from _tables("Step table", block.columns, step_rows(block, options.exact), width)
+
+
+def _table(block: Table, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
+    yield from _tables(block.title, block.columns, table_rows(block, options.exact), width)
+
+
+def _pixels(block: Pixels, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
+    """The pixel list, then the grid (into ``drawn``) fitted to ``width`` or left out with a
+    notice saying how to see it."""
+    yield Text(f"Pixels plotted ({pixel_count(block)}):", style="bold")
+    for line in wrap_items((fmt_pixel(p) for p in block.pixels()), width=width - 3):
+        yield Text("  " + line)
+    yield Text("")
+    if not options.grid:
+        return
+    reason = gridmod.too_large(block.bbox)
+    if reason:
+        yield Notice(reason)
+        return
+    compact = gridmod.width(block.bbox) > width
+    if compact and gridmod.width(block.bbox, compact=True) > width:
+        yield Notice(
+            f"grid left out: {gridmod.width(block.bbox, compact=True)} characters "
+            f"wide, the terminal has {width}",
+            ("plain", "svg", "no-grid"),
+        )
+        return
+    drawn.append([c for c in grid_block(block, options, compact=compact) if isinstance(c, str)])
+
+
+def _drawing(block: Drawing, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
+    """One of the answer's figures (into ``drawn``), or a notice if it is too wide."""
+    lines = figure_text(block.figure, options.origin) if options.grid else []
+    if not lines:
+        return
+    drawing = [x for x in lines if "|" in x or x.lstrip().startswith("+")]
+    if max((cell_len(x) for x in drawing), default=0) > width:
+        yield Notice(f"a figure is left out: wider than the terminal's {width} columns", ("plain",))
+        return
+    drawn.append(lines)
+
+
+RICH: dict[type, Callable[[Any, Options, int, list[list[str]]], Iterator[Any]]] = {
+    Title: _title,
+    Given: _given,
+    Working: _working,
+    Notes: _notes,
+    StepTable: _step_table,
+    Table: _table,
+    Pixels: _pixels,
+    Drawing: _drawing,
+}
+"""The ``rich`` format: one handler per block type."""
 
 
 def _tables(
@@ -185,54 +263,6 @@ def _tables(
         first = False
         if len(chunk) < CHUNK_ROWS:
             return
-
-
-def _figures(solution: Solution, options: Options, width: int) -> Iterator[Any]:
-    """The pixel grid and the answer's own figures, each fitted to ``width`` or left out
-    with a notice saying how to see it."""
-    drawn: list[list[str]] = []
-    if options.grid and solution.pixels is not None:
-        reason = gridmod.too_large(solution.bbox)
-        if reason:
-            yield Notice(reason)
-        else:
-            compact = gridmod.width(solution.bbox) > width
-            if compact and gridmod.width(solution.bbox, compact=True) > width:
-                yield Notice(
-                    f"grid left out: {gridmod.width(solution.bbox, compact=True)} characters "
-                    f"wide, the terminal has {width}",
-                    ("plain", "svg", "no-grid"),
-                )
-            else:
-                drawn.append(
-                    gridmod.render_grid(
-                        solution.pixels(),
-                        solution.bbox,
-                        origin=options.origin,
-                        marks=solution.marks,
-                        mark_label=marks_label(solution),
-                        compact=compact,
-                    )
-                )
-    if options.grid:
-        for figure in solution.figures:
-            lines = figure_text(figure, options.origin)
-            if not lines:
-                continue
-            drawing = [x for x in lines if "|" in x or x.lstrip().startswith("+")]
-            if max((cell_len(x) for x in drawing), default=0) > width:
-                yield Notice(
-                    f"a figure is left out: wider than the terminal's {width} columns",
-                    ("plain",),
-                )
-                continue
-            drawn.append(lines)
-    for i, lines in enumerate(drawn):
-        if i:
-            yield Text("")
-        yield from _grid_text(lines, width)
-    if drawn:
-        yield Text("")
 
 
 def _grid_text(lines: Iterable[str], width: int) -> Iterator[Text]:

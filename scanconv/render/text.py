@@ -13,19 +13,33 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from functools import partial
 from itertools import islice
+from typing import Any
 
 from ..core.numeric import fmt_pixel
-from ..core.records import Column, Figure, ShadedMatrix, Solution, Table, step_getter
+from ..core.records import Column, Figure, ShadedMatrix, Solution, step_getter
+from ..core.records import Table as CoreTable
 from ..core.working import ascii_text, visible
+from ..document import (
+    Document,
+    Drawing,
+    Given,
+    Notes,
+    Pixels,
+    Prose,
+    StepTable,
+    Table,
+    Title,
+    Working,
+    as_document,
+)
 from . import Notice, Options
 from . import grid as gridmod
 from .cells import (
     cell,
-    marks_label,
     note_segments,
-    note_unicode,
     numeric_column,
     prose_math,
+    segments_unicode,
     wrap_items,
 )
 from .shade import matrix_lines
@@ -138,71 +152,53 @@ def _tabulated(
     yield from table.splitlines()
 
 
-def step_rows(
-    solution: Solution, columns: Sequence[Column], exact: bool = False
-) -> Iterator[list[str]]:
+def step_rows(table: StepTable, exact: bool = False) -> Iterator[list[str]]:
     """Display cells of every step, in column order."""
-    get = step_getter(columns, solution.extra_keys)
-    for step in solution.steps():
+    columns = table.columns
+    get = step_getter(columns, table.extra_keys)
+    for step in table.steps():
         yield [cell(v, c, exact) for v, c in zip(get(step), columns, strict=True)]
 
 
-def table_rows(table: Table, exact: bool = False) -> Iterator[list[str]]:
+def table_rows(table: Table | CoreTable, exact: bool = False) -> Iterator[list[str]]:
     """Display cells of a secondary table."""
     for row in table.rows():
         yield [cell(v, c, exact) for v, c in zip(row, table.columns, strict=True)]
 
 
-def pixel_lines(solution: Solution) -> Iterator[str]:
+def pixel_lines(pixels: Pixels) -> Iterator[str]:
     """The plotted pixels, wrapped, in plotting order."""
-    if solution.pixels is None:
-        return iter(())
-    return wrap_items(fmt_pixel(p) for p in solution.pixels())
+    return wrap_items(fmt_pixel(p) for p in pixels.pixels())
 
 
-def pixel_count(solution: Solution) -> int:
+def pixel_count(pixels: Pixels) -> int:
     """How many pixels are plotted (runs the generator once more; constant memory)."""
-    return 0 if solution.pixels is None else sum(1 for _ in solution.pixels())
+    return sum(1 for _ in pixels.pixels())
 
 
 def grid_block(
-    solution: Solution, options: Options, *, compact: bool = False
+    pixels: Pixels | None, options: Options, *, compact: bool = False
 ) -> Iterator[str | Notice]:
     """The grid lines (one-character cells with ``compact``), or a :class:`Notice` saying
     why it was left out."""
-    if not options.grid or solution.pixels is None:
+    if not options.grid or pixels is None:
         return
-    reason = gridmod.too_large(solution.bbox)
+    reason = gridmod.too_large(pixels.bbox)
     if reason:
         yield Notice(reason)
         return
     yield from gridmod.render_grid(
-        solution.pixels(),
-        solution.bbox,
+        pixels.pixels(),
+        pixels.bbox,
         origin=options.origin,
-        marks=solution.marks,
-        mark_label=marks_label(solution),
+        marks=pixels.marks,
+        mark_label=pixels.marks_label,
         compact=compact,
     )
 
 
-def figure_lines(
-    solution: Solution, options: Options, *, compact: bool = False
-) -> tuple[list[str], list[Notice]]:
-    """The ASCII figures under the answer (the pixel grid, a custom figure) and notices."""
-    chunks = list(grid_block(solution, options, compact=compact))
-    lines = [c for c in chunks if isinstance(c, str)]
-    if options.grid:
-        for figure in solution.figures:
-            drawn = figure_text(figure, options.origin)
-            if drawn and lines:
-                lines.append("")
-            lines.extend(drawn)
-    return lines, [c for c in chunks if isinstance(c, Notice)]
-
-
 def figure_text(figure: Figure, origin: str) -> list[str]:
-    """The text lines of one of :attr:`Solution.figures <scanconv.core.records.Solution.figures>`."""
+    """The text lines of a :class:`~scanconv.document.Drawing`'s figure."""
     if isinstance(figure, ShadedMatrix):
         return matrix_lines(figure)
     return gridmod.figure_grid(figure, origin)
@@ -213,23 +209,14 @@ Rows = Callable[[], Iterator[list[str]]]
 
 
 def all_tables(
-    solution: Solution, exact: bool = False
+    answer: Solution | Document, exact: bool = False
 ) -> Iterator[tuple[str | None, Sequence[Column], Rows]]:
-    """``(title, columns, rows)`` of the step table (if any) and every secondary table."""
-    if solution.columns and solution.show_steps:
-        yield None, solution.columns, partial(step_rows, solution, solution.columns, exact)
-    for table in solution.tables:
-        yield table.title, table.columns, partial(table_rows, table, exact)
-
-
-def _parts(
-    name: str, cols: Sequence[Column], rows: Rows, *, markdown: bool
-) -> Iterator[tuple[list[int], str, Iterator[list[str]]]]:
-    """The parts a table is set in: one, whole, in markdown and plain alike. A table that
-    belongs together (a comparison, the circle's 9-column symmetry table) stays one table,
-    as the PDF sets it; pandoc and a browser wrap or scroll it (the terminal's own format,
-    ``rich``, fits its width by splitting, :mod:`.terminal`)."""
-    yield list(range(len(cols))), name, rows()
+    """``(title, columns, rows)`` of the step table (if shown) and every further table."""
+    for block in as_document(answer).blocks:
+        if isinstance(block, StepTable) and block.columns and block.shown:
+            yield None, block.columns, partial(step_rows, block, exact)
+        elif isinstance(block, Table):
+            yield block.title, block.columns, partial(table_rows, block, exact)
 
 
 _MD_SPECIAL = None
@@ -259,6 +246,11 @@ def md_text(text: str) -> str:
     return _MD_LINKS.sub(lambda m: "\\:" if m.group(1) else m.group(2) + "\\.", text)
 
 
+def prose_md(note: Prose) -> str:
+    """A note's segments in Markdown: the math as ``$...$``, the text escaped."""
+    return "".join(f"${t}$" if math else md_text(t) for math, t in note.segments)
+
+
 def note_md(note: str) -> str:
     """A note in Markdown: its ``$...$`` formulas kept as math, its text escaped.
 
@@ -268,65 +260,162 @@ def note_md(note: str) -> str:
     return "".join(f"${t}$" if math else md_text(t) for math, t in note_segments(note))
 
 
-def render_text(solution: Solution, options: Options, *, markdown: bool) -> Iterator[str | Notice]:
-    """Markdown or plain text, one line per chunk."""
-    if markdown:
-        yield f"## {md_text(solution.title)}\n\n"
-        if solution.given:
-            yield "**Given:** " + ", ".join(f"${q.tex}$" for q in solution.given) + "\n\n"
-        if solution.derived:
-            yield "**Working:**\n\n"
-            for q in solution.derived:
-                yield f"- ${q.tex}$\n"
-            yield "\n"
-        for i, note in enumerate(solution.notes):
-            yield f"{'>' + chr(10) if i else ''}> {note_md(note)}\n"
-        if solution.notes:
-            yield "\n"
-    else:
-        heading_line = ascii_text(solution.title)
-        yield f"{heading_line}\n{'=' * len(heading_line)}\n\n"
-        if solution.given:
-            yield "Given: " + ", ".join(ascii_text(q.text) for q in solution.given) + "\n\n"
-        if solution.derived:
-            yield "Working:\n"
-            for q in solution.derived:
-                yield f"  {ascii_text(q.text)}\n"
-            yield "\n"
-        if solution.notes:
-            yield "Notes:\n"
-            for note in solution.notes:
-                yield f"  - {ascii_text(note_unicode(note))}\n"
-            yield "\n"
+Handler = Callable[[Any, Options, list[str]], Iterator[str | Notice]]
+"""A format's handler of one block type: ``(block, options, drawn)``, yielding chunks; the
+drawings (the grid, the figures) go into ``drawn``, set together after the last block."""
 
-    def heading(col: Column) -> str:
-        return f"${col.tex}$" if markdown else ascii_text(col.text)
 
-    for title, cols, rows in all_tables(solution, options.exact):
-        name = title or "Step table"
-        for part, label, part_rows in _parts(name, cols, rows, markdown=markdown):
-            yield f"**{label}:**\n\n" if markdown else f"{ascii_text(label)}:\n"
-            part_cols = [cols[i] for i in part]
-            for line in table_lines(
-                [heading(c) for c in part_cols],
-                [numeric_column(c) for c in part_cols],
-                part_rows if markdown else ([ascii_text(c) for c in r] for r in part_rows),
-                markdown=markdown,
-            ):
-                yield line + "\n"
-            yield "\n"
-    if solution.pixels is not None:
-        count = pixel_count(solution)
-        yield f"**Pixels plotted ({count}):**\n\n" if markdown else f"Pixels plotted ({count}):\n"
-        for line in pixel_lines(solution):
-            yield (line if markdown else "  " + line) + "\n"
-    lines, notices = figure_lines(solution, options)
-    yield from notices
-    if lines:
+def render_text(
+    answer: Solution | Document, options: Options, *, markdown: bool
+) -> Iterator[str | Notice]:
+    """Markdown or plain text, one line per chunk: each block by the format's mapping
+    (:data:`MARKDOWN`, :data:`PLAIN`), then the drawings."""
+    mapping = MARKDOWN if markdown else PLAIN
+    drawn: list[str] = []
+    for block in as_document(answer).blocks:
+        yield from mapping[type(block)](block, options, drawn)
+    if drawn:
         yield "\n" + ("```text\n" if markdown else "")
-        for line in lines:
+        for line in drawn:
             yield line + "\n"
         if markdown:
             yield "```\n"
     if markdown:
         yield "\n"  # answers appended with >> stay apart
+
+
+def render_markdown(answer: Solution | Document, options: Options) -> Iterator[str | Notice]:
+    """The ``markdown`` format (:func:`render_text`)."""
+    return render_text(answer, options, markdown=True)
+
+
+def render_plain(answer: Solution | Document, options: Options) -> Iterator[str | Notice]:
+    """The ``plain`` format (:func:`render_text`)."""
+    return render_text(answer, options, markdown=False)
+
+
+def _md_title(block: Title, options: Options, drawn: list[str]) -> Iterator[str]:
+    yield f"## {md_text(block.text)}\n\n"
+
+
+def _md_given(block: Given, options: Options, drawn: list[str]) -> Iterator[str]:
+    yield "**Given:** " + ", ".join(f"${q.tex}$" for q in block.quantities) + "\n\n"
+
+
+def _md_working(block: Working, options: Options, drawn: list[str]) -> Iterator[str]:
+    yield "**Working:**\n\n"
+    for q in block.lines:
+        yield f"- ${q.tex}$\n"
+    yield "\n"
+
+
+def _md_notes(block: Notes, options: Options, drawn: list[str]) -> Iterator[str]:
+    for i, note in enumerate(block.notes):
+        yield f"{'>' + chr(10) if i else ''}> {prose_md(note)}\n"
+    yield "\n"
+
+
+def _plain_title(block: Title, options: Options, drawn: list[str]) -> Iterator[str]:
+    heading_line = ascii_text(block.text)
+    yield f"{heading_line}\n{'=' * len(heading_line)}\n\n"
+
+
+def _plain_given(block: Given, options: Options, drawn: list[str]) -> Iterator[str]:
+    yield "Given: " + ", ".join(ascii_text(q.text) for q in block.quantities) + "\n\n"
+
+
+def _plain_working(block: Working, options: Options, drawn: list[str]) -> Iterator[str]:
+    yield "Working:\n"
+    for q in block.lines:
+        yield f"  {ascii_text(q.text)}\n"
+    yield "\n"
+
+
+def _plain_notes(block: Notes, options: Options, drawn: list[str]) -> Iterator[str]:
+    yield "Notes:\n"
+    for note in block.notes:
+        yield f"  - {ascii_text(segments_unicode(note.segments))}\n"
+    yield "\n"
+
+
+def _text_table(
+    name: str, cols: Sequence[Column], rows: Iterator[list[str]], *, markdown: bool
+) -> Iterator[str]:
+    """One table, whole, in markdown or plain alike: a table that belongs together (a
+    comparison, the circle's 9-column symmetry table) stays one table, as the PDF sets it;
+    pandoc and a browser wrap or scroll it (``rich`` fits its width by splitting)."""
+    yield f"**{name}:**\n\n" if markdown else f"{ascii_text(name)}:\n"
+    for line in table_lines(
+        [f"${c.tex}$" if markdown else ascii_text(c.text) for c in cols],
+        [numeric_column(c) for c in cols],
+        rows if markdown else ([ascii_text(c) for c in r] for r in rows),
+        markdown=markdown,
+    ):
+        yield line + "\n"
+    yield "\n"
+
+
+def _step_table(markdown: bool) -> Handler:
+    def handle(block: StepTable, options: Options, drawn: list[str]) -> Iterator[str]:
+        if block.columns and block.shown:
+            rows = step_rows(block, options.exact)
+            yield from _text_table("Step table", block.columns, rows, markdown=markdown)
+
+    return handle
+
+
+def _table(markdown: bool) -> Handler:
+    def handle(block: Table, options: Options, drawn: list[str]) -> Iterator[str]:
+        rows = table_rows(block, options.exact)
+        yield from _text_table(block.title, block.columns, rows, markdown=markdown)
+
+    return handle
+
+
+def _pixels(markdown: bool) -> Handler:
+    def handle(block: Pixels, options: Options, drawn: list[str]) -> Iterator[str | Notice]:
+        count = pixel_count(block)
+        yield f"**Pixels plotted ({count}):**\n\n" if markdown else f"Pixels plotted ({count}):\n"
+        for line in pixel_lines(block):
+            yield (line if markdown else "  " + line) + "\n"
+        for c in grid_block(block, options):
+            if isinstance(c, Notice):
+                yield c
+            else:
+                drawn.append(c)
+
+    return handle
+
+
+def _drawing(block: Drawing, options: Options, drawn: list[str]) -> Iterator[str]:
+    if options.grid:
+        lines = figure_text(block.figure, options.origin)
+        if lines and drawn:
+            drawn.append("")
+        drawn.extend(lines)
+    return iter(())
+
+
+MARKDOWN: dict[type, Handler] = {
+    Title: _md_title,
+    Given: _md_given,
+    Working: _md_working,
+    Notes: _md_notes,
+    StepTable: _step_table(True),
+    Table: _table(True),
+    Pixels: _pixels(True),
+    Drawing: _drawing,
+}
+"""The ``markdown`` format: one handler per block type."""
+
+PLAIN: dict[type, Handler] = {
+    Title: _plain_title,
+    Given: _plain_given,
+    Working: _plain_working,
+    Notes: _plain_notes,
+    StepTable: _step_table(False),
+    Table: _table(False),
+    Pixels: _pixels(False),
+    Drawing: _drawing,
+}
+"""The ``plain`` format: one handler per block type."""

@@ -22,6 +22,7 @@ from fractions import Fraction
 from ..core.numeric import round_half_up
 from ..core.records import PixelFigure, ShadedMatrix, Solution
 from ..core.working import tex_text
+from ..document import Document
 from .figure import CELL, PAINT, Figure, Shape, build
 
 SCALE = 0.45
@@ -42,7 +43,7 @@ EMPTY = frozenset({"cell", "axis", "tick"})
 
 
 def tikz_grid(
-    solution: Solution, origin: str = "bottom-left", *, empty: bool = False
+    solution: Solution | Document, origin: str = "bottom-left", *, empty: bool = False
 ) -> str | None:
     """The answer's figure as a TikZ picture with its caption in a minipage (never split
     over a page), or ``None`` when it has no figure (no pixels, or too large to draw).

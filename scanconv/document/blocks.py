@@ -1,0 +1,175 @@
+"""The typed blocks of an answer document (see :mod:`scanconv.document`).
+
+Each block is a NamedTuple (cheap to define and to build: start-up time counts) holding data
+only: numbers stay exact, math stays TeX math, tables are row factories (a fresh iterator on
+every call, so a format that streams a table of millions of rows does so in constant memory).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator
+from typing import Any, NamedTuple
+
+from ..core.records import Column, Figure, Pixel, Quantity, Step
+
+Segments = tuple[tuple[bool, str], ...]
+"""Prose with math: ``(is_math, text)`` pairs, the math as TeX (``(True, "p_k < 0")``)."""
+
+
+class Prose(NamedTuple):
+    """A sentence with formulas in it (a note): its source and its segments."""
+
+    source: str
+    """The text as the answer wrote it (``$...$`` around its TeX formulas)."""
+    segments: Segments
+    """Text and math, in order: a format escapes the text and sets the math as math."""
+
+
+class Title(NamedTuple):
+    """The answer's one-line heading, in ASCII."""
+
+    text: str
+
+
+class Given(NamedTuple):
+    """The problem's input, as the answer states it (each with its TeX and Unicode)."""
+
+    quantities: tuple[Quantity, ...]
+
+
+class Working(NamedTuple):
+    """Derived quantities with their working, numbers substituted, in the answer's order."""
+
+    quantities: tuple[Quantity, ...]
+    derivation: tuple[Quantity, ...] = ()
+    """The method's derivation with this input's numbers (``--derive``), its heading first;
+    empty: none. Written after :attr:`quantities`."""
+
+    @property
+    def lines(self) -> tuple[Quantity, ...]:
+        """Every line of the working, the derivation last."""
+        return self.quantities + self.derivation
+
+
+class Notes(NamedTuple):
+    """Remarks under the working (swapped end points, tie rules, conventions)."""
+
+    notes: tuple[Prose, ...]
+
+
+class StepTable(NamedTuple):
+    """The step table: one row per :class:`~scanconv.core.records.Step`."""
+
+    columns: tuple[Column, ...]
+    """The shown columns, in the notes' order (empty: the answer has steps but no table)."""
+    extra_keys: tuple[str, ...]
+    """Names of the values in :attr:`Step.extra`, in order."""
+    steps: Callable[[], Iterator[Step]]
+    """A fresh generator of the rows on every call."""
+    shown: bool = True
+    """``False``: the document formats leave the table out because later :class:`Table`
+    blocks show the same rows split up (the ellipse's two regions); csv, json and the
+    stepper still read every row."""
+    regions: str = "restart"
+    """How the rows fall into regions (the ellipse's region 2 is coloured apart):
+    ``"column"``: the ``region`` value of each row; ``"restart"``: a new region wherever
+    ``k`` starts again; ``"none"``: one region."""
+    region_p: tuple[str, ...] = ()
+    """The TeX name of the decision parameter in each region (``p1_k``, ``p2_k``), region 1
+    first; empty: the ``p`` column's own heading."""
+    symmetry: int = 1
+    """1, 4 or 8: how each row's point is mirrored into plotted pixels (with 4 or 8 the
+    point is relative to :attr:`center`, as the circle tables print it)."""
+    center: tuple[Any, Any] = (0, 0)
+    """The centre the point is mirrored about (with symmetry 4 or 8)."""
+    offset: int = 0
+    """1 when a row plots ``(x_{k+1}, y_{k+1})`` (the pixel its decision chose: the start
+    pixel is plotted before row 0), else 0."""
+    model: Callable[[], Any] | None = None
+    """The walk's marking model (:mod:`scanconv.answers.models`), built on first call; ``None``
+    or a call returning ``None``: no rule a step can be judged by (the test-yourself mode)."""
+
+    @property
+    def has_p(self) -> bool:
+        """Whether the table has a decision-parameter column."""
+        return any(c.key == "p" for c in self.columns)
+
+    @property
+    def has_decision(self) -> bool:
+        """Whether the table has a decision column."""
+        return any(c.key == "decision" for c in self.columns)
+
+
+class Table(NamedTuple):
+    """A further table (the symmetry table, a region's rows, a comparison, a fill's trace)."""
+
+    title: str
+    columns: tuple[Column, ...]
+    rows: Callable[[], Iterable[tuple[Any, ...]]]
+    """A fresh iterable of rows on every call; cells by position."""
+    stepped: bool = False
+    """The stepper goes through this table one row a step (a comparison: the methods side by
+    side, nothing plotted)."""
+    points: bool = False
+    """Its rows hold construction points to draw over the grid (de Casteljau's levels)."""
+
+
+class Pixels(NamedTuple):
+    """The plotted pixels, with what the grid needs to draw, number and mark them."""
+
+    pixels: Callable[[], Iterator[Pixel]]
+    """A fresh generator of every plotted pixel, once each, in plotting order."""
+    bbox: tuple[int, int, int, int]
+    """``(xmin, ymin, xmax, ymax)`` of the pixels, known without running the steps."""
+    marks: tuple[Pixel, ...]
+    """Points drawn apart (control points, the centre)."""
+    marks_label: str
+    """What :attr:`marks` are (``"centre"``, ``"control point"``)."""
+    ideal: dict[str, Any]
+    """The ideal primitive drawn over the pixels (keys ``line``, ``circle``, ``ellipse``,
+    ``polyline``, ``control``, as :attr:`Solution.geometry` documents them)."""
+    ideal_name: str
+    """What the ideal curve is called in a legend (``"curve"``, ``"Bezier curve"``)."""
+    outline: tuple[Pixel, ...]
+    """Pixels drawn as an outline under the plotted ones (a fill's boundary)."""
+    outline_name: str
+    """What the outline is called in a legend."""
+    shades: dict[Pixel, int] | None
+    """Grey level of each shaded pixel (anti-aliasing); ``None``: the pixels are not shaded."""
+    levels: int
+    """The number of grey levels of :attr:`shades`."""
+    labels: Callable[[], dict[Pixel, int]]
+    """The step number of each plotted pixel that has one (computed on demand)."""
+    numbering: Callable[[], str]
+    """What those numbers mean, for a legend (computed on demand)."""
+    construction: str | None = None
+    """A legend's name for the construction points of :attr:`Table.points` tables."""
+
+
+class Drawing(NamedTuple):
+    """A figure drawn under the grid (a two-set pixel figure, a shaded matrix)."""
+
+    figure: Figure
+
+
+Block = Title | Given | Working | Notes | StepTable | Table | Pixels | Drawing
+"""Any block of a document."""
+
+
+class Document(NamedTuple):
+    """One answer as typed blocks, in reading order; :attr:`data` carries the record fields
+    (for json) that no block shows."""
+
+    primitive: str
+    algorithm: str
+    title: str
+    blocks: tuple[Block, ...]
+    data: dict[str, Any]
+
+    def get(self, kind: type[Any]) -> Any:
+        """The first block of type ``kind``, or ``None``."""
+        return next((b for b in self.blocks if isinstance(b, kind)), None)
+
+    def every(self, kind: type[Any]) -> list[Any]:
+        """Every block of type ``kind``, in order."""
+        return [b for b in self.blocks if isinstance(b, kind)]
