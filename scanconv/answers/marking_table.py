@@ -215,24 +215,7 @@ def mark_table(
         c.key: c.text if texts.count(c.text) == 1 else f"{c.text} ({c.key.replace('_', ' ')})"
         for c in columns
     }
-    own: list[Row] = []
-    verdicts: list[Verdict] = []
-    for n, (where, cells) in enumerate(raw):
-        row = {k: canon(v) for k, v in zip(keys, cells, strict=False) if k is not None}
-        own.append(row)
-        got = RowText(", ".join(f"{titles[k]} = {_show(row.get(k))}" for k in marked))
-        if n >= len(answer):
-            verdicts.append(Verdict(n + 1, where, got, None, "extra"))  # type: ignore[arg-type]
-            continue
-        exp = {k: canon(v) for k, v in model.expect(n, answer, own).items()}
-        wrong = tuple(k for k in marked if row.get(k) not in (exp.get(k), answer[n].get(k)))
-        follows = any(row.get(k) != answer[n].get(k) for k in marked)
-        mark = "wrong" if wrong else "right (follow-through)" if follows else "right"
-        shown = RowText(", ".join(f"{titles[k]} = {_show(exp.get(k))}" for k in marked))
-        verdicts.append(Verdict(n + 1, where, got, shown, mark, wrong))  # type: ignore[arg-type]
-    for n in range(len(raw), len(answer)):
-        shown = RowText(", ".join(f"{titles[k]} = {_show(answer[n].get(k))}" for k in marked))
-        verdicts.append(Verdict(n + 1, "-", None, shown, "missing"))  # type: ignore[arg-type]
+    verdicts = _verdicts(raw, keys, marked, titles, model, answer)
     right = sum(v.mark.startswith("right") for v in verdicts[: len(answer)])
     right = max(0, right - max(0, len(raw) - len(answer)))
     first = next((v for v in verdicts if not v.mark.startswith("right")), None)
@@ -247,6 +230,38 @@ def mark_table(
         "",
         f"{TABLE_RULES} {model.rules}",
     )
+
+
+def _verdicts(
+    raw: Sequence[tuple[str, list[Any]]],
+    keys: Sequence[str | None],
+    marked: list[str],
+    titles: dict[str, str],
+    model: TableModel,
+    answer: list[Row],
+) -> list[Verdict]:
+    """Each student row judged against what the model expects after the student's own rows
+    (follow-through), then a "missing" verdict for each answer row the student left out."""
+
+    def text(row: Row) -> RowText:
+        return RowText(", ".join(f"{titles[k]} = {_show(row.get(k))}" for k in marked))
+
+    own: list[Row] = []
+    verdicts: list[Verdict] = []
+    for n, (where, cells) in enumerate(raw):
+        row = {k: canon(v) for k, v in zip(keys, cells, strict=False) if k is not None}
+        own.append(row)
+        if n >= len(answer):
+            verdicts.append(Verdict(n + 1, where, text(row), None, "extra"))  # type: ignore[arg-type]
+            continue
+        exp = {k: canon(v) for k, v in model.expect(n, answer, own).items()}
+        wrong = tuple(k for k in marked if row.get(k) not in (exp.get(k), answer[n].get(k)))
+        follows = any(row.get(k) != answer[n].get(k) for k in marked)
+        mark = "wrong" if wrong else "right (follow-through)" if follows else "right"
+        verdicts.append(Verdict(n + 1, where, text(row), text(exp), mark, wrong))  # type: ignore[arg-type]
+    for n in range(len(raw), len(answer)):
+        verdicts.append(Verdict(n + 1, "-", None, text(answer[n]), "missing"))  # type: ignore[arg-type]
+    return verdicts
 
 
 def _first_error(v: Verdict | None, titles: dict[str, str]) -> str:
