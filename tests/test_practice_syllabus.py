@@ -1,5 +1,5 @@
 """Practice on the syllabus topics added with issue 30 (scanconv.answers.practice_more): line
-attributes, characters, the midpoint line and NLL clipping: the same seed gives the same
+attributes, characters, the midpoint line, anti-aliasing and NLL clipping: the same seed gives the same
 questions, every kind comes in as many questions, each is worded with its method and answered
 by scanconv, and the CLI writes a worksheet and its key."""
 
@@ -14,7 +14,7 @@ from scanconv.answers.practice_more import KINDS
 
 from .helpers import run
 
-NEW = ("attributes", "characters", "midpoint-line")
+NEW = ("attributes", "characters", "midpoint-line", "antialias")
 
 
 def test_the_topics_are_offered() -> None:
@@ -46,6 +46,12 @@ def test_the_wording_names_the_method() -> None:
         assert q.argv[0] in ("linestyle", "thickline")
         assert ("mask" in q.wording) == (q.argv[0] == "linestyle")
         assert ("brush" in q.wording) == ("--brush" in q.argv)
+    for q in practice("antialias", 8, seed=1):
+        wu, coverage = "wu" in q.argv, "coverage" in q.argv
+        assert ("Wu's anti-aliased line algorithm" in q.wording) == wu
+        assert ("weighted by the part of their column" in q.wording) == coverage
+        assert ("3 x 3 sub-pixel grid (Hearn & Baker)" in q.wording) == ("subpixel" in q.argv)
+        assert ("area sampling" in q.wording) == ("area" in q.argv)
     nll = [q for q in practice("clip", 6, seed=3) if "nicholl-lee-nicholl" in q.argv]
     assert nll and "Nicholl-Lee-Nicholl line clipping" in nll[0].wording
 

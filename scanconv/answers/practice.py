@@ -32,7 +32,7 @@ from ..core.checks import InputError
 
 TOPICS: tuple[str, ...] = ("line", "circle", "ellipse", "bezier", "bspline", "storage", "quantize")
 TOPICS += ("dither", "inside", "clip", "framebuffer")  # beyond the notes: .practice_more
-TOPICS += ("attributes", "characters", "midpoint-line")
+TOPICS += ("attributes", "characters", "midpoint-line", "antialias")
 """The topics a practice set can draw from (``all``: every one, lines most often)."""
 DIFFICULTIES = ("easy", "exam", "hard")
 MAX_COUNT = 200

@@ -2,7 +2,8 @@
 dithering, inside-outside tests, clipping (Cohen-Sutherland, Liang-Barsky, Cyrus-Beck,
 midpoint subdivision, Weiler-Atherton, Nicholl-Lee-Nicholl), the frame buffer, line
 attributes (dashed and dotted lines, thick lines), character generation (bitmap, stroke,
-storage) and the midpoint line. Each topic walks its kinds as the
+storage), the midpoint line and anti-aliasing (Wu's line with either end-point convention,
+area sampling, Hearn & Baker's sub-pixel supersampling). Each topic walks its kinds as the
 notes' topics do, so a few questions show every method; every question is worded with the
 method's own name (:mod:`.methods`)."""
 
@@ -169,6 +170,40 @@ def attributes(rng: random.Random, difficulty: str, kind: str) -> PracticeQuesti
     )
 
 
+_AA_ASK = {
+    "wu": "each column's two pixels and their intensities",
+    "wu-coverage": "each column's two pixels and their intensities",
+    "area": "the intensity of each pixel the line covers",
+    "subpixel": "the sub-pixel decision table and each pixel's count and intensity",
+}
+
+
+def antialias(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    length = {"easy": 3, "exam": 6, "hard": 9}[difficulty]
+    x1, y1 = rng.randrange(0, 5), rng.randrange(0, 5)
+    x2, y2 = x1 + length, y1 + rng.randrange(1, length)
+    if rng.random() < 0.5:  # steep half the time
+        x2, y2 = x1 + (y2 - y1), y1 + length
+    name = "wu" if kind == "wu-coverage" else kind
+    argv: tuple[str, ...] = ("antialias", "line", str(x1), str(y1), str(x2), str(y2))
+    argv += ("--method", name, *(("--ends", "coverage") if kind == "wu-coverage" else ()))
+    title = method("antialias", name).title
+    how = {
+        "wu": f"with {title} algorithm",
+        "wu-coverage": f"with {title} algorithm, the end points weighted by the part of their "
+        "column the line covers",
+        "area": f"anti-aliased by {title} (the line one pixel thick)",
+        "subpixel": "anti-aliased by " + title.replace("a sub-pixel", "a 3 x 3 sub-pixel"),
+    }[kind]
+    return PracticeQuestion(
+        "antialias",
+        argv,
+        f"Draw the line from ({x1}, {y1}) to ({x2}, {y2}) {how}: give {_AA_ASK[kind]}.",
+        8 if difficulty == "easy" else 10,
+        frozenset({kind, *(("steep",) if y2 - y1 > x2 - x1 else ())}),
+    )
+
+
 _GLYPHS = "AEFHLTXZ"
 
 
@@ -246,6 +281,7 @@ KINDS: dict[str, list[Any]] = {
     "framebuffer": ["load", "lut", "refresh", "interlaced"],
     "attributes": ["dashed", "replication", "dotted", "brush"],
     "characters": ["bitmap", "stroke", "storage"],
+    "antialias": ["wu", "area", "subpixel", "wu-coverage"],
     "midpoint-line": [
         f"octant {o}{', tie' if tie else ''}"
         for o, tie in (
@@ -270,4 +306,5 @@ MAKERS = {
     "attributes": attributes,
     "characters": characters,
     "midpoint-line": midpoint_line,
+    "antialias": antialias,
 }

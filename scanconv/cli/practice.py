@@ -53,6 +53,7 @@ class Topic(str, Enum):
     attributes = "attributes"
     characters = "characters"
     midpoint_line = "midpoint-line"
+    antialias = "antialias"
     all = "all"
 
 
