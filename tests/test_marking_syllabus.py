@@ -199,7 +199,8 @@ def test_a_table_with_no_column_of_the_answer_is_refused(tmp_path: Path) -> None
 @pytest.mark.parametrize(
     "question",
     [CB_Q, NLL_Q, DITHER_Q, MID_Q, "thickline 0 0 8 3 --width 3", "char bitmap A",
-     "inside 0 0 8 0 8 8 --points 1 1", "dither threshold --image '10 200; 130 90' --top 255 --at 128"],
+     "inside 0 0 8 0 8 8 --points 1 1", "dither threshold --image '10 200; 130 90' --top 255 --at 128",
+     "halftone 2", "halftone 4", "char stroke A", "char storage 96 5 7"],
 )  # fmt: skip
 def test_scanconv_own_table_scores_full(tmp_path: Path, question: str) -> None:
     import shlex
@@ -303,3 +304,16 @@ def test_one_point_edge_table_is_chosen_by_its_headings(tmp_path: Path) -> None:
     assert _mark(tmp_path, edges, q)["score"] == 3  # the edge tests, not the verdicts
     verdict = "point,crossings,even-odd,winding number,nonzero\nP1,1,inside,1,inside\n"
     assert _mark(tmp_path, verdict, q)["score"] == 1
+
+
+def test_halftone_patterns_and_font_storage_one_slip_costs_one_row(tmp_path: Path) -> None:
+    """Rows that stand alone (each level's pattern; each packing's sizes): a wrong pattern or a
+    wrong byte count costs its own row and nothing else."""
+    right = "level,pattern,on\n0,0 0 / 0 0,0\n1,1 0 / 0 0,1\n2,1 0 / 0 1,2\n3,1 1 / 0 1,3\n4,1 1 / 1 1,4\n"
+    assert _mark(tmp_path, right, "halftone 2")["score"] == 5
+    data = _mark(tmp_path, right.replace("2,1 0 / 0 1,2", "2,1 1 / 0 0,2"), "halftone 2")
+    assert (data["score"], data["out_of"]) == (4, 5) and data["first_error"].startswith("Row 3")
+    storage = "packing,glyph,bits,bytes\nrows,56,5376,672\ncolumns,40,3840,480\nbits,35,3360,420\n"
+    assert _mark(tmp_path, storage, "char storage 96 5 7")["score"] == 3
+    data = _mark(tmp_path, storage.replace("5376,672", "5376,5376"), "char storage 96 5 7")
+    assert (data["score"], data["out_of"]) == (2, 3) and data["first_error"].startswith("Row 1")

@@ -61,6 +61,9 @@ def table_models_for(solution: Solution) -> list[TableModel]:
     return [] if one is None else [one]
 
 
+_EACH_PACKING = "Each packing's sizes stand alone (a glyph's bits, the font's bits and bytes)."
+
+
 def table_model_for(solution: Solution) -> TableModel | None:
     """The table model of ``solution``'s method, or ``None`` (a pixel walk, or unmarked)."""
     key = (solution.primitive, solution.algorithm)
@@ -84,6 +87,13 @@ def table_model_for(solution: Solution) -> TableModel | None:
         return PlainRowsTable(None, ("added",), "Each step's added pixels stand alone.")
     if key == ("characters", "bitmap"):
         return PlainRowsTable(None, ("row", "column"), "Each pixel stands alone.")
+    if key == ("characters", "stroke"):
+        return PlainRowsTable(None, ("segment", "pixels"), "Each stroke's pixels stand alone.")
+    if key == ("characters", "storage"):
+        return PlainRowsTable("Every packing", ("glyph", "bits", "bytes"), _EACH_PACKING)
+    if key == ("dither", "pattern") and solution.tables:
+        title = solution.tables[0].title.split(" (")[0]  # "4 x 4 patterns"
+        return PlainRowsTable(title, ("pattern", "on"), "Each level's pattern stands alone.")
     if key == ("framebuffer", "arithmetic"):
         return FrameBufferTable()
     if solution.primitive == "inside":

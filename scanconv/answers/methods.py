@@ -377,7 +377,7 @@ _DITHER = (
            _A + "dither:diffusion_solution", _G + "dither:error_diffusion",
            model="DiffusionTable"),
     _plain("halftone", "pattern", "halftone patterns", _A + "dither:pattern_solution", None,
-           no_generator="one pattern per level, from the Bayer matrix"),
+           no_generator="one pattern per level, from the Bayer matrix", model="PlainRowsTable"),
 )  # fmt: skip
 
 _INSIDE = tuple(
@@ -409,10 +409,11 @@ _CHARACTERS = (
            _A + "characters:bitmap_solution", _G + "characters:draw_bitmap",
            model="PlainRowsTable"),
     _plain("char", "stroke", "stroke character generation",
-           _A + "characters:stroke_solution", _G + "characters:draw_strokes"),
+           _A + "characters:stroke_solution", _G + "characters:draw_strokes",
+           model="PlainRowsTable"),
     _plain("char", "storage", "bitmap font storage",
            _A + "characters:font_storage_solution", None,
-           no_generator="arithmetic, worked in one pass"),
+           no_generator="arithmetic, worked in one pass", model="PlainRowsTable"),
 )  # fmt: skip
 
 # fmt: off
