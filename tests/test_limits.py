@@ -50,6 +50,8 @@ NOT_INPUT_LIMITS = {
     "render.stepper.MAX_PIXELS",
     "render.stepper.MAX_STEPS",
     "render.stepper.MAX_TABLE_ROWS",
+    "render.selftest.MAX_QUESTIONS",  # the test-yourself mode asks the rows the page writes
+    "render.lms.MAX_GAPS",  # a quiz question of more blanks is an essay (docs/lms.md)
 }
 
 SHEETS = ROOT / "tests" / "data" / "sheet"  # question files beyond the sheet's limits

@@ -208,3 +208,11 @@ def test_a_dependency_that_is_not_installed_or_not_pure_python_is_refused(
         names = wheel.namelist()
     assert filename.startswith("tabulate-") and "tabulate/__init__.py" in names
     assert not any(n.startswith("../") or "__pycache__" in n for n in names)
+
+
+def test_a_question_longer_than_a_sheet_line_is_refused_by_the_page() -> None:
+    from scanconv.questions.files import MAX_LINE_CHARS
+    from scanconv.site.page import solve_page
+
+    got = solve_page("line 2 2 10 6 " + "x" * MAX_LINE_CHARS)
+    assert got["ok"] is False and f"at most {MAX_LINE_CHARS:,} characters" in got["error"]

@@ -12,6 +12,8 @@ from __future__ import annotations
 import json
 from typing import Any
 
+from ..questions.files import MAX_LINE_CHARS  # a question in the box is a line of a sheet
+
 EXAMPLES = (
     "line 2 2 10 6 --algo bresenham",
     "line 2 2 10 6 --algo dda",
@@ -28,9 +30,6 @@ EXAMPLES = (
 """Questions the page offers to try, one click each."""
 
 _DROPPED = ("--format", "-f", "--output", "-o", "--svg", "--png")
-
-MAX_QUESTION = 10_000
-"""Longest question accepted, in characters."""
 
 
 def _words(question: str) -> list[str]:
@@ -71,8 +70,8 @@ def solve_page(question: str) -> dict[str, Any]:
     from ..questions import parse, shown_with, solve
     from ..render import Format, Notice, render
 
-    if len(question) > MAX_QUESTION:
-        return {"ok": False, "error": f"question too long (at most {MAX_QUESTION:,} characters)"}
+    if len(question) > MAX_LINE_CHARS:
+        return {"ok": False, "error": f"question too long (at most {MAX_LINE_CHARS:,} characters)"}
     try:
         line = parse(_words(question))
         options = shown_with(line, "the page")
