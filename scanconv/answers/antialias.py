@@ -69,7 +69,7 @@ def _line_region(
     wide = "one pixel" if width == 1 else f"{fmt_short(width)} pixels"
     exact_length = across == "minor" or cov.exact_sqrt(dx * dx + dy * dy) is not None
     if across == "minor":
-        strip = worked("strip", pts, f"\\text{{line {wide} wide along }} {minor}: {corners}")
+        strip = [worked("strip", pts, f"\\text{{line {wide} wide along }} {minor}: {corners}")]
         note = (
             f"The line is the parallelogram {wide} thick along {minor}, from end point to "
             f"end point: exact, and each column along the line is covered by "
@@ -82,18 +82,25 @@ def _line_region(
             if length is not None
             else f"{math.sqrt(float(dx * dx + dy * dy)):.4f}"
         )
-        strip = worked(
-            "strip",
-            pts if exact_length else tuple((float(x), float(y)) for x, y in pts),
-            f"L = \\sqrt{{{fmt_short(dx)}^2 + {fmt_short(dy)}^2}} "
-            + ("= " if exact_length else "\\approx ")
-            + f"{shown};\\ \\text{{corners }} P \\pm (w/2) n,\\ n = (-\\Delta y, \\Delta x)/L: "
-            + (
-                corners
-                if exact_length
-                else ", ".join(f"({float(x):.4f}, {float(y):.4f})" for x, y in pts)
+        at = [
+            f"({fmt_short(x)}, {fmt_short(y)})" if exact_length else f"({float(x):.4f}, {float(y):.4f})"
+            for x, y in pts
+        ]  # fmt: skip
+        strip = [  # one line per end: four points with decimals overrun a printed line
+            worked(
+                "length",
+                length if length is not None else math.sqrt(float(dx * dx + dy * dy)),
+                f"L = \\sqrt{{{fmt_short(dx)}^2 + {fmt_short(dy)}^2}} "
+                + ("= " if exact_length else "\\approx ")
+                + f"{shown},\\ n = (-\\Delta y, \\Delta x)/L",
             ),
-        )
+            worked(
+                "strip",
+                pts if exact_length else tuple((float(x), float(y)) for x, y in pts),
+                f"\\text{{corners }} P_1 \\pm (w/2) n: {at[0]}, {at[3]}",
+            ),
+            worked("strip_end", (), f"\\text{{corners }} P_2 \\pm (w/2) n: {at[1]}, {at[2]}"),
+        ]
         note = (
             f"The line is the rectangle {wide} wide measured perpendicular to it, its ends cut "
             "square at the end points: its area is w·L"
@@ -116,7 +123,7 @@ def _line_region(
     if not exact_length and method == "area":  # samples are counted exactly either way
         values, exact = {p: float(v) for p, v in values.items()}, None
     return _Region(
-        title, values, exact, [strip], [f"{named}: {note[0].lower()}{note[1:]}"],
+        title, values, exact, strip, [f"{named}: {note[0].lower()}{note[1:]}"],
         {"line": (x1, y1, x2, y2)},
     )  # fmt: skip
 
@@ -326,16 +333,18 @@ def antialias_solution(
     order = list(values)
     picture = _picture({p: lv for p, lv in levels_of.items() if lv}, L)
     name = "Unweighted area sampling" if method == "area" else f"Supersampling {n} x {n}"
+    drawn = title.split(", width ")[0]  # the width is given on its own (a line of print)
     sol = Solution(
         primitive=shape,
         algorithm=method,
         title=f"{name}: {title}, L = {L}",
         given=(
-            Quantity("shape", shape, f"shape: {title}", f"\\text{{shape: {title}}}"),
+            Quantity("shape", shape, f"shape: {drawn}", f"\\text{{shape: {drawn}}}"),
             Quantity(
                 "method", method, f"method: {name.lower()}", f"\\text{{method: {name.lower()}}}"
             ),
             worked("L", L, f"L = {L} \\text{{ levels}}"),
+            *((worked("w", width, f"w = {fmt_short(width)}"),) if width != 1 else ()),
         ),
         derived=tuple(derived),
         notes=tuple(notes),

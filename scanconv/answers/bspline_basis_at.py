@@ -59,8 +59,9 @@ def _derived(
     d0, d1 = domain(u, degree, n)
     ts = value_text(t)
     closed = t >= u[-1]
-    values = ", ".join(f"N_{{{i},{degree}}} = {value_text(v)}" for i, v in enumerate(w) if v)
-    values = (values + ", \\text{ every other is } 0") if values else "\\text{all } 0"
+    shown = [f"N_{{{i},{degree}}} = {value_text(v)}" for i, v in enumerate(w) if v]
+    shown.append("\\text{every other is } 0" if shown else "\\text{all } 0")
+    rows = [", ".join(shown[i : i + 3]) for i in range(0, len(shown), 3)]  # 3 a printed line
     inside = d0 <= t <= d1
     return (
         worked("knots", u, f"U = {knot_text(u)},\\ m = {m}"),
@@ -78,7 +79,8 @@ def _derived(
             + f" u_{{{s + 1}}} = {value_text(u[s + 1])}:\\ N_{{{s},0}}({ts}) = 1, "
             "\\text{ every other } N_{i,0} = 0",
         ),
-        worked("basis", tuple(w), f"N_{{i,{degree}}}({ts}):\\ {values}"),
+        worked("basis", tuple(w), f"N_{{i,{degree}}}({ts}):\\ {rows[0]}"),
+        *(worked(f"basis_{k + 2}", (), f"\\quad {row}") for k, row in enumerate(rows[1:])),
         worked(
             "sum",
             total,

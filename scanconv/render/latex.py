@@ -374,7 +374,17 @@ def _title(block: Title, options: Options, doc: Document) -> Iterator[str]:
 
 
 def _given(block: Given, options: Options, doc: Document) -> Iterator[str]:
-    yield "\\paragraph{Given} " + ", ".join(f"${q.tex}$" for q in block.quantities) + "\n\n"
+    """The given values in one paragraph; a value that is only words (``\\text{shape: ...}``)
+    is set as text, so the line can break inside it (a box of math cannot)."""
+    items = []
+    for q in block.quantities:
+        words = _ONLY_TEXT.fullmatch(q.tex)
+        items.append(words.group(1) if words else f"${q.tex}$")
+    yield "\\paragraph{Given} " + ", ".join(items) + "\n\n"
+
+
+_ONLY_TEXT = re.compile(r"\\text\{([^{}$]*)\}")
+"""A formula that is one ``\\text{...}`` with no braces or math inside: its words, as text."""
 
 
 def _working(block: Working, options: Options, doc: Document) -> Iterator[str]:
