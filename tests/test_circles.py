@@ -150,6 +150,7 @@ def test_nearest_pixel_methods_are_within_half_a_pixel_radially(method, r):
         assert max(0, 2 * r - 1) ** 2 <= 4 * (x * x + y * y) <= (2 * r + 1) ** 2
 
 
+@pytest.mark.slow  # about a second of CPU
 def test_pixel_order_is_the_documented_one():
     """Rebuilt with a full set: each octant point's 8 images in order, first occurrence only."""
     for method, rounding in VARIANTS:
@@ -315,6 +316,7 @@ def test_symmetric_dda_is_the_exact_recurrence():
         assert math.floor(x + half) > math.floor(y + half)  # stopped at the first point past 45°
 
 
+@pytest.mark.slow  # about a second of CPU
 def test_symmetric_dda_trunc_and_largest_radius():
     for s in symmetric_dda(37, "trunc"):
         assert s.pixel == (math.floor(s.extra[0]), math.floor(s.extra[1]))
