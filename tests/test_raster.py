@@ -3,6 +3,12 @@
 Each closed form in :mod:`scanconv.raster` is checked against the step generator it replaces
 (``Solution.pixels()``), on thousands of random inputs and on the degenerate cases, and the
 integer helper against Python's exact integers. No timing here: see ``benchmarks/bench.py``.
+
+Example counts (issue 29, a suite within 5 minutes): the line property ran 1,000 examples per
+algorithm, the floor-sum and isqrt helpers 600 and 500; 300 each now (200 for the fractional
+lines), with the degenerate cases pinned by ``@example``. The same closed forms are compared
+with the generators again through every golden case and the CLI's own tests, and the inner
+loop runs 20 examples of each.
 """
 
 from __future__ import annotations
@@ -46,7 +52,7 @@ def generator_pixels(algo: str, *line: int | Fraction) -> list[tuple[int, int]]:
 
 
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
-@settings(max_examples=1000, deadline=None)
+@settings(max_examples=300, deadline=None)  # was 1000: see the module's note
 @given(x1=coord, y1=coord, x2=coord, y2=coord)
 @example(x1=3, y1=3, x2=3, y2=3)  # single point
 @example(x1=-4, y1=2, x2=9, y2=2)  # horizontal
@@ -72,7 +78,7 @@ def test_line_far_from_the_origin(algo, x1, y1, dx, dy):
 
 
 @pytest.mark.parametrize("algo", ["dda", "basic"])
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=200, deadline=None)  # was 400: see the module's note
 @given(x1=frac, y1=frac, x2=frac, y2=frac)
 @example(x1=Fraction(1, 2), y1=Fraction(1, 2), x2=Fraction(1, 2), y2=Fraction(1, 2))
 @example(x1=Fraction(0), y1=Fraction(0), x2=Fraction(3, 2), y2=Fraction(4))
@@ -171,7 +177,7 @@ def _expected(alpha: Fraction, beta: Fraction, n: int, offset: int, sign: int) -
     return [offset + sign * math.floor(alpha + beta * k) for k in range(n)]
 
 
-@settings(max_examples=600, deadline=None)
+@settings(max_examples=300, deadline=None)  # was 600: see the module's note
 @given(
     num=st.integers(-(10**30), 10**30),
     den=st.one_of(st.integers(1, 1000), st.integers(1, 10**20)),
@@ -330,7 +336,7 @@ def _odd_count(d: int, p: int, q: int, strict: bool) -> int:
     return (top + 1) // 2
 
 
-@settings(max_examples=500, deadline=None)
+@settings(max_examples=300, deadline=None)  # was 500: see the module's note
 @given(
     p=st.integers(0, 10**9),
     q=st.integers(1, 10**9),
