@@ -51,6 +51,7 @@ def generator_pixels(algo: str, *line: int | Fraction) -> list[tuple[int, int]]:
 # --- lines ------------------------------------------------------------------------------------
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
 @settings(max_examples=300, deadline=None)  # was 1000: see the module's note
 @given(x1=coord, y1=coord, x2=coord, y2=coord)
@@ -66,6 +67,7 @@ def test_line_matches_generator(algo, x1, y1, x2, y2):
     )
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
 @settings(max_examples=200, deadline=None)
 @given(x1=far, y1=far, dx=short, dy=short)
@@ -77,6 +79,7 @@ def test_line_far_from_the_origin(algo, x1, y1, dx, dy):
     )
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", ["dda", "basic"])
 @settings(max_examples=200, deadline=None)  # was 400: see the module's note
 @given(x1=frac, y1=frac, x2=frac, y2=frac)
@@ -88,6 +91,7 @@ def test_fractional_line_matches_generator(algo, x1, y1, x2, y2):
     )
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
 @pytest.mark.parametrize(
     "end",
@@ -114,6 +118,7 @@ def test_bresenham_equals_skimage_when_walking_the_same_way(x1, y1, dx, dy):
     assert np.array_equal(xs, cc) and np.array_equal(ys, rr)
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", ["bresenham", "dda"])
 @settings(max_examples=200, deadline=None)
 @given(x1=short, y1=short, x2=short, y2=short)
@@ -251,6 +256,7 @@ def test_circle_every_small_radius():
             assert as_pixels(raster.circle(r, *centre)) == expected, (r, centre)
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @settings(max_examples=300, deadline=None)
 @given(r=st.integers(0, 1500), xc=st.integers(-(10**9), 10**9), yc=st.integers(-(10**9), 10**9))
 def test_circle_matches_both_generators(r, xc, yc):
@@ -288,6 +294,7 @@ def test_circle_rejects_bad_input():
 # --- ellipses ---------------------------------------------------------------------------------
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 def test_ellipse_every_small_pair_of_semi_axes():
     for rx in range(40):
         for ry in range(40):
