@@ -4,8 +4,20 @@ from __future__ import annotations
 
 import os
 import shutil
+import sys
 from collections.abc import Iterator
+from pathlib import Path
 from typing import Any
+
+# PYTHONDONTWRITEBYTECODE (set on this project's shared machine) made every pytest process,
+# each xdist worker included, compile scanconv and rewrite the test modules' asserts anew:
+# 8 s of CPU a process, a quarter of the inner loop. The compiled files go to a cache under
+# .pytest_cache instead (never beside the sources, which the setting keeps clean), and the
+# processes the tests start read them there (PYTHONPYCACHEPREFIX; they still write none).
+if sys.dont_write_bytecode and not sys.pycache_prefix:
+    sys.pycache_prefix = str(Path(__file__).resolve().parent.parent / ".pytest_cache" / "pyc")
+    os.environ["PYTHONPYCACHEPREFIX"] = sys.pycache_prefix
+    sys.dont_write_bytecode = False
 
 # typer reads these at import time: plain, 80-column help, no terminal detection games.
 os.environ.setdefault("TERM", "dumb")

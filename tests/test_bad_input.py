@@ -3,7 +3,8 @@
 The commands are enumerated from the typer app (``tests/cli_vocabulary.py``), so a new command
 is walked automatically, and :func:`test_every_command_has_a_vocabulary` fails until it has a
 vocabulary entry. The classes: non-numeric, NaN, +-inf, empty, too few values, too many values,
-out of range, wrong type, unknown option, unknown choice.
+out of range, wrong type, unknown option, unknown choice. Each run has a hard limit
+(:func:`tests.helpers.run_limited`): a case that escaped its refusal cannot hang the sweep.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from __future__ import annotations
 import pytest
 
 from .cli_vocabulary import ARGUMENTLESS, VOCABULARY, Argv, choices, commands, options
-from .helpers import assert_refused, run
+from .helpers import assert_refused, run_limited
 
 pytestmark = pytest.mark.slow
 
@@ -87,13 +88,13 @@ def test_the_valid_invocations_are_valid(path):
     if vocab is None:
         pytest.skip("no vocabulary (see test_every_command_has_a_vocabulary)")
     for argv in vocab.valid:
-        r = run(*path, *argv, "--format", "plain")
+        r = run_limited(*path, *argv, "--format", "plain")
         assert r.code == 0, (argv, r.err)
         assert r.out
 
 
 @pytest.mark.parametrize(("path", "argv", "words"), _cases())
 def test_bad_input_is_exit_2_one_line_naming_it(path, argv, words):
-    r = run(*path, *argv)
+    r = run_limited(*path, *argv)
     assert_refused(r)
     assert any(w.lower() in r.err.lower() for w in words), (words, r.err)

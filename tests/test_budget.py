@@ -206,6 +206,7 @@ def test_the_same_request_is_accepted_in_csv_and_starts_at_once():
     assert r.code == 0 and r.out.startswith("{")
 
 
+@pytest.mark.slow  # about a second of CPU
 def test_at_the_budget_is_accepted():
     check_matrix(256, 256, Format.rich)
     check_matrix(1024, 1024, Format.plain)
@@ -309,6 +310,7 @@ def _exact_levels(text: str, m: int, n: int, levels: int, domain, origin: str) -
     )
 
 
+@pytest.mark.slow  # about a second of CPU
 def test_float_levels_equal_exact_levels_on_random_formulas():
     """Before the boundary check, 8 of these 320 formulas had a level off by one."""
     rng = random.Random(19)
@@ -339,6 +341,7 @@ def test_a_boundary_that_float64_gets_wrong_is_exact():
     assert s.f_min == Fraction(1, 3) and s.checked > 0
 
 
+@pytest.mark.slow  # about a second of CPU
 def test_too_many_boundary_cells_keep_float_levels_and_say_so():
     from scanconv.answers.sample import sample_solution
 
@@ -352,6 +355,7 @@ def test_too_many_boundary_cells_keep_float_levels_and_say_so():
 LONG_POLYNOMIAL = "+".join(f"{i + 1}*t**{i}" for i in range(40))
 
 
+@pytest.mark.slow  # about a second of CPU
 def test_beyond_the_exact_budget_the_curve_is_computed_in_float64():
     fx, fy = compile_expr(LONG_POLYNOMIAL, ("t",)), compile_expr("t", ("t",))
     assert exact_values(fx, fy, 0, 1, 100)

@@ -4,6 +4,10 @@ Every wrong table in ``tests/data/check/`` was written by hand from the mistake 
 arithmetic is in the comments of :data:`DIAGNOSES`), never by running scanconv with a bug.
 The step models that follow-through re-runs are checked against the library's own tables in
 every octant and for every convention knob.
+
+The two random-input properties (any bytes, any table) run 100 examples each (300 before issue
+29's suite targets); the hand-written wrong tables and ``test_marking_trust`` cover the
+reader's known hazards one by one.
 """
 
 from __future__ import annotations
@@ -545,7 +549,7 @@ def test_the_api_marks_against_a_question_or_a_solution():
     assert by_solution.data["first_error"] == by_words.data["first_error"]
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=100, deadline=None)  # was 300: see the module's note
 @given(st.binary(max_size=300))
 def test_any_bytes_are_a_table_or_one_input_error(data):
     from scanconv.core.student_table import parse_bytes
@@ -585,7 +589,8 @@ def _tables(draw):
     return "\n".join(lines) + "\n"
 
 
-@settings(max_examples=300, deadline=None)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@settings(max_examples=100, deadline=None)  # was 300: see the module's note
 @given(_tables(), st.sampled_from(QUESTIONS))
 def test_any_table_is_marked_or_refused_in_one_line(text, question):
     try:

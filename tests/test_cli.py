@@ -183,6 +183,7 @@ def _tty_output(args: list[str], env: dict[str, str]) -> str:
     return b"".join(chunks).decode("utf-8", "replace")
 
 
+@pytest.mark.slow  # a real process on a pseudo-terminal
 def test_auto_is_rich_on_a_terminal_and_honours_no_color():
     coloured = _tty_output(list(LINE), {"TERM": "xterm-256color", "COLUMNS": "120"})
     assert BOX.search(coloured) and COLOUR.search(coloured)

@@ -5,6 +5,11 @@ a clipped segment lies in the closed window and on the original segment; Sutherl
 output for a convex polygon has the area of its intersection with the window, computed here
 independently (the convex hull of the vertices inside the other shape and the edge crossings).
 Textbook examples are checked value by value, each with its source.
+
+Example counts (issue 29, a suite within 5 minutes): 100 a property (they were 200 to 400);
+Liang–Barsky is also compared on random segments with Cyrus–Beck (``test_cyrus_beck``, 200
+examples) and the midpoint subdivision (``test_midpoint_clip``), so Cohen–Sutherland and
+Liang–Barsky together meet about 450 random segments a run.
 """
 
 from __future__ import annotations
@@ -60,8 +65,9 @@ def on_segment(q, a, b):
 # --- properties -------------------------------------------------------------------------------
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.slow
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=100, deadline=None)  # was 400: see the module's note
 @given(point, point, windows())
 def test_cohen_sutherland_and_liang_barsky_agree_exactly(p1, p2, w):
     cs, lb = cohen_sutherland(p1, p2, w), liang_barsky(p1, p2, w)
@@ -70,8 +76,9 @@ def test_cohen_sutherland_and_liang_barsky_agree_exactly(p1, p2, w):
     assert len(cs.iterations) <= 4
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.slow
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=100, deadline=None)  # was 400: see the module's note
 @given(point, point, windows())
 def test_a_clipped_segment_is_inside_the_window_and_on_the_line(p1, p2, w):
     r = liang_barsky(p1, p2, w)
@@ -90,8 +97,9 @@ def test_a_clipped_segment_is_inside_the_window_and_on_the_line(p1, p2, w):
         assert r.segment[1] == p2
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.slow
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=100, deadline=None)  # was 300: see the module's note
 @given(point, point, windows())
 def test_region_codes_follow_the_tbrl_bits(p, _q, w):
     code = region_code(p, w)
@@ -159,8 +167,9 @@ def intersection_area(poly, w):
     return abs(polygon_area(h)) if len(h) >= 3 else 0
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.slow
-@settings(max_examples=250, deadline=None)
+@settings(max_examples=100, deadline=None)  # was 250: see the module's note
 @given(st.lists(point, min_size=3, max_size=9), windows())
 def test_sutherland_hodgman_of_a_convex_polygon_is_the_intersection(points, w):
     poly = hull(points)
@@ -174,8 +183,9 @@ def test_sutherland_hodgman_of_a_convex_polygon_is_the_intersection(points, w):
         assert not overlapping_edges(out, w)
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.slow
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)  # was 200: see the module's note
 @given(st.lists(point, min_size=3, max_size=9), windows())
 def test_sutherland_hodgman_keeps_a_polygon_inside_the_window(points, w):
     poly = hull(points)

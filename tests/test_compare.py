@@ -47,6 +47,7 @@ def test_positive_slope_all_agree_and_say_so():
     assert solution.data["columns_differing"] == 0
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @settings(max_examples=150, deadline=None)
 @given(st.tuples(*[st.integers(-12, 12)] * 4))
 def test_integer_lines_differ_only_at_ties(ends):

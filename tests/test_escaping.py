@@ -25,6 +25,7 @@ no ``<script>`` element from user text.
 from __future__ import annotations
 
 import csv
+import functools
 import io
 import json
 import os
@@ -146,7 +147,10 @@ def _html(page: str) -> _Tags:
     return parser
 
 
+@functools.lru_cache(maxsize=8)
 def _markdown_html(markdown: str) -> _Tags:
+    """The Markdown through pandoc, parsed (cached: each sheet case compares its page with the
+    same harmless sheet's; the result is only read)."""
     proc = subprocess.run(
         [_pandoc(), "-f", "markdown", "-t", "html"],
         input=markdown,

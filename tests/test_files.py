@@ -3,6 +3,7 @@ atomically: complete or not at all, an existing file never truncated, no tempora
 behind; a path that cannot be written is exit 1 with one line. Special files (/dev/null, a
 FIFO) are written into, and a symlink's target is replaced, not the link. (The special-file
 case is tested with a FIFO, never with /dev/null: a regression, run as root, would replace it.)
+The in-process runs have a hard limit (:func:`tests.helpers.run_limited`).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from pathlib import Path
 import pytest
 
 from .cli_vocabulary import VOCABULARY, commands, file_options
-from .helpers import run
+from .helpers import run_limited
 
 pytestmark = pytest.mark.slow
 
@@ -59,7 +60,7 @@ def test_writes_the_file_complete_and_leaves_nothing_else(path, option, tmp_path
     _needs_pillow(option)
     target = tmp_path / "answer"
     target.write_text(PRECIOUS)
-    r = run(*_args(path, option, target))
+    r = run_limited(*_args(path, option, target))
     assert r.code == 0, r.err
     data = target.read_bytes()
     if option == "--output":
@@ -84,7 +85,7 @@ def test_an_unwritable_path_is_exit_1_with_one_line(path, option, tmp_path):
     blocker = tmp_path / "a-file"
     blocker.write_text(PRECIOUS)
     for target in (tmp_path / "missing" / "x", blocker / "x"):
-        r = run(*_args(path, option, target))
+        r = run_limited(*_args(path, option, target))
         assert r.code == 1, (target, r.code, r.err)
         assert r.err.startswith("scanconv: error: cannot write") and r.err.count("\n") == 1
         assert str(target) in r.err
@@ -101,7 +102,7 @@ def test_bad_input_never_touches_an_existing_file(path, option, tmp_path):
     target.write_text(PRECIOUS)
     argv = _args(path, option, target)
     argv[len(path)] = "nan"  # the first value of a valid invocation, made bad
-    r = run(*argv)
+    r = run_limited(*argv)
     assert r.code == 2 and r.out == "" and r.err.count("\n") == 1, r.err
     assert target.read_text() == PRECIOUS
     _only(tmp_path, "keep")
@@ -140,7 +141,7 @@ def test_a_failure_while_writing_leaves_the_old_file_whole(
     target.write_text(PRECIOUS)
     real_fdopen = os.fdopen
     monkeypatch.setattr(os, "fdopen", lambda *a, **k: _FailingFile(real_fdopen(*a, **k), budget))
-    r = run(*_args(path, option, target))
+    r = run_limited(*_args(path, option, target))
     assert r.code == 1, (r.code, r.err)
     assert "No space left on device" in r.err and r.err.count("\n") == 1
     assert target.read_text() == PRECIOUS
@@ -157,7 +158,7 @@ def test_a_failed_rename_leaves_the_old_file_whole(path, option, tmp_path, monke
         raise OSError(errno.EXDEV, "Invalid cross-device link")
 
     monkeypatch.setattr(os, "replace", no_rename)
-    r = run(*_args(path, option, target))
+    r = run_limited(*_args(path, option, target))
     assert r.code == 1 and "cannot write" in r.err and r.err.count("\n") == 1
     assert target.read_text() == PRECIOUS
     _only(tmp_path, "keep")
@@ -168,7 +169,7 @@ def test_a_symlink_keeps_pointing_at_the_new_file(tmp_path):
     real.write_text(PRECIOUS)
     link = tmp_path / "link.md"
     link.symlink_to(real.name)
-    r = run("line", "2", "2", "10", "6", "-f", "csv", "--output", str(link))
+    r = run_limited("line", "2", "2", "10", "6", "-f", "csv", "--output", str(link))
     assert r.code == 0, r.err
     assert link.is_symlink() and real.read_text().startswith("k,p,decision")
     _only(tmp_path, "link.md", "real.md")
@@ -180,7 +181,7 @@ def test_a_fifo_is_written_into_not_replaced(tmp_path):
     received: list[bytes] = []
     reader = threading.Thread(target=lambda: received.append(fifo.read_bytes()), daemon=True)
     reader.start()
-    r = run("line", "2", "2", "10", "6", "-f", "csv", "--output", str(fifo))
+    r = run_limited("line", "2", "2", "10", "6", "-f", "csv", "--output", str(fifo))
     reader.join(timeout=30)
     assert r.code == 0, r.err
     assert received and received[0].startswith(b"k,p,decision,x,y,p_next\n")

@@ -13,22 +13,31 @@ import sys
 import pytest
 
 LONG_LINE = ["line", "0", "0", "1000000", "3"]
+#: Each case is a real shell pipeline (two processes, about 0.3 s of CPU): the first stays in
+#: the inner loop, the others run in the whole suite (``slow``).
+SLOW = pytest.mark.slow
 PIPES = [
     pytest.param([*LONG_LINE, "--format", "json"], '{"primitive": "line"', id="line json"),
-    pytest.param([*LONG_LINE, "--format", "markdown"], "## Bresenham", id="line markdown"),
-    pytest.param([*LONG_LINE, "--format", "plain"], "Bresenham", id="line plain"),
-    pytest.param([*LONG_LINE, "--format", "latex"], "% scanconv", id="line latex"),
+    pytest.param(
+        [*LONG_LINE, "--format", "markdown"], "## Bresenham", id="line markdown", marks=SLOW
+    ),
+    pytest.param([*LONG_LINE, "--format", "plain"], "Bresenham", id="line plain", marks=SLOW),
+    pytest.param([*LONG_LINE, "--format", "latex"], "% scanconv", id="line latex", marks=SLOW),
     # rich prints at most 10,000 rows (scanconv.render.budget): the longest line it takes
-    pytest.param(["line", "0", "0", "9999", "3", "--format", "rich"], "Bresenham", id="line rich"),
+    pytest.param(
+        ["line", "0", "0", "9999", "3", "--format", "rich"], "Bresenham", id="line rich", marks=SLOW
+    ),
     pytest.param(
         ["bezier", "0", "0", "300", "900", "1000", "0", "--samples", "30000", "--format", "csv"],
         "k,x,y,t,B0,B1,B2,x_t,y_t",
         id="bezier csv",
+        marks=SLOW,
     ),
     pytest.param(
         ["parametric", "circle", "--radius", "1000", "-n", "20000", "--format", "markdown"],
         "## Parametric circle",
         id="parametric circle markdown",
+        marks=SLOW,
     ),
 ]
 
@@ -48,6 +57,7 @@ def test_head_closes_the_pipe_and_scanconv_exits_quietly(args, first):
     assert proc.stderr == "", proc.stderr  # no BrokenPipeError, no "Exception ignored"
 
 
+@pytest.mark.slow
 def test_the_help_into_a_closed_pipe_is_quiet() -> None:
     """``scanconv | true``: the bare command's help into a pipe whose reader has gone exits
     0 with nothing on stderr (it printed a BrokenPipeError traceback)."""

@@ -3,6 +3,12 @@
 Each closed form in :mod:`scanconv.raster` is checked against the step generator it replaces
 (``Solution.pixels()``), on thousands of random inputs and on the degenerate cases, and the
 integer helper against Python's exact integers. No timing here: see ``benchmarks/bench.py``.
+
+Example counts (issue 29, a suite within 5 minutes): the line property ran 1,000 examples per
+algorithm, the floor-sum and isqrt helpers 600 and 500; 300 each now (200 for the fractional
+lines), with the degenerate cases pinned by ``@example``. The same closed forms are compared
+with the generators again through every golden case and the CLI's own tests, and the inner
+loop runs 20 examples of each.
 """
 
 from __future__ import annotations
@@ -48,8 +54,9 @@ def generator_pixels(algo: str, *line: int | Fraction) -> list[tuple[int, int]]:
 # --- lines ------------------------------------------------------------------------------------
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
-@settings(max_examples=1000, deadline=None)
+@settings(max_examples=300, deadline=None)  # was 1000: see the module's note
 @given(x1=coord, y1=coord, x2=coord, y2=coord)
 @example(x1=3, y1=3, x2=3, y2=3)  # single point
 @example(x1=-4, y1=2, x2=9, y2=2)  # horizontal
@@ -63,6 +70,7 @@ def test_line_matches_generator(algo, x1, y1, x2, y2):
     )
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
 @settings(max_examples=200, deadline=None)
 @given(x1=far, y1=far, dx=short, dy=short)
@@ -74,8 +82,9 @@ def test_line_far_from_the_origin(algo, x1, y1, dx, dy):
     )
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", ["dda", "basic"])
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=200, deadline=None)  # was 400: see the module's note
 @given(x1=frac, y1=frac, x2=frac, y2=frac)
 @example(x1=Fraction(1, 2), y1=Fraction(1, 2), x2=Fraction(1, 2), y2=Fraction(1, 2))
 @example(x1=Fraction(0), y1=Fraction(0), x2=Fraction(3, 2), y2=Fraction(4))
@@ -85,6 +94,7 @@ def test_fractional_line_matches_generator(algo, x1, y1, x2, y2):
     )
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
 @pytest.mark.parametrize(
     "end",
@@ -111,6 +121,7 @@ def test_bresenham_equals_skimage_when_walking_the_same_way(x1, y1, dx, dy):
     assert np.array_equal(xs, cc) and np.array_equal(ys, rr)
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("algo", ["bresenham", "dda"])
 @settings(max_examples=200, deadline=None)
 @given(x1=short, y1=short, x2=short, y2=short)
@@ -174,7 +185,7 @@ def _expected(alpha: Fraction, beta: Fraction, n: int, offset: int, sign: int) -
     return [offset + sign * math.floor(alpha + beta * k) for k in range(n)]
 
 
-@settings(max_examples=600, deadline=None)
+@settings(max_examples=300, deadline=None)  # was 600: see the module's note
 @given(
     num=st.integers(-(10**30), 10**30),
     den=st.one_of(st.integers(1, 1000), st.integers(1, 10**20)),
@@ -248,6 +259,7 @@ def test_circle_every_small_radius():
             assert as_pixels(raster_conic.circle(r, *centre)) == expected, (r, centre)
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @settings(max_examples=300, deadline=None)
 @given(r=st.integers(0, 1500), xc=st.integers(-(10**9), 10**9), yc=st.integers(-(10**9), 10**9))
 def test_circle_matches_both_generators(r, xc, yc):
@@ -285,6 +297,7 @@ def test_circle_rejects_bad_input():
 # --- ellipses ---------------------------------------------------------------------------------
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 def test_ellipse_every_small_pair_of_semi_axes():
     for rx in range(40):
         for ry in range(40):
@@ -333,7 +346,7 @@ def _odd_count(d: int, p: int, q: int, strict: bool) -> int:
     return (top + 1) // 2
 
 
-@settings(max_examples=500, deadline=None)
+@settings(max_examples=300, deadline=None)  # was 500: see the module's note
 @given(
     p=st.integers(0, 10**9),
     q=st.integers(1, 10**9),

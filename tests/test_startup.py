@@ -40,7 +40,14 @@ def loaded_after(*args: str) -> set[str]:
     return set(filter(None, names.split(",")))
 
 
-@pytest.mark.parametrize("fmt", ["plain", "csv", "json", "latex"])
+#: Each probe is a fresh interpreter (about 0.3 s of CPU): one stays in the inner loop, the
+#: others run in the whole suite.
+SLOW = pytest.mark.slow
+
+
+@pytest.mark.parametrize(
+    "fmt", ["plain", *(pytest.param(f, marks=SLOW) for f in ("csv", "json", "latex"))]
+)
 def test_text_formats_load_no_numpy_rich_tabulate_or_pydantic(fmt):
     """pydantic would come with typer 0.29, which pyproject.toml excludes for its start-up."""
     assert (
@@ -48,16 +55,19 @@ def test_text_formats_load_no_numpy_rich_tabulate_or_pydantic(fmt):
     )
 
 
+@SLOW
 def test_only_markdown_loads_tabulate():
     """tabulate pads the Markdown tables; its import (importlib.metadata) is paid there only."""
     assert loaded_after("line", "2", "2", "10", "6", "--format", "markdown") == {"tabulate"}
 
 
+@SLOW
 def test_only_html_loads_latex2mathml():
     """latex2mathml (about 55 ms: importlib.metadata) is imported by the html format only."""
     assert loaded_after("line", "2", "2", "10", "6", "--format", "html") == {"latex2mathml"}
 
 
+@SLOW
 def test_rich_format_loads_rich():
     """The probe can see a heavy import when one happens."""
     assert "rich" in loaded_after("line", "2", "2", "10", "6", "--format", "rich")
@@ -84,7 +94,10 @@ print(*sorted(c.__name__ for c in callbacks if "parameters" in vars(c)))
 
 @pytest.mark.parametrize(
     ("args", "built"),
-    [(["line", "2", "2", "10", "6"], "line"), (["parametric", "circle"], "parametric_circle")],
+    [
+        (["line", "2", "2", "10", "6"], "line"),
+        pytest.param(["parametric", "circle"], "parametric_circle", marks=SLOW),
+    ],
 )
 def test_only_the_named_command_works_out_its_signature(args, built):
     """``@answers`` adds the shared options when typer first reads a command's signature, so
@@ -94,6 +107,10 @@ def test_only_the_named_command_works_out_its_signature(args, built):
     assert out.stdout.split() == [built], out.stderr
 
 
+WHOLE = typer.main.get_command(app)
+"""The whole group, built once (building it is most of each help comparison's cost)."""
+
+
 def _help(command: object, args: list[str]) -> str:
     out = io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.suppress(SystemExit):
@@ -101,26 +118,24 @@ def _help(command: object, args: list[str]) -> str:
     return out.getvalue()
 
 
-@pytest.mark.parametrize("name", sorted(typer.main.get_command(app).commands))  # type: ignore[attr-defined]
+@pytest.mark.parametrize("name", sorted(WHOLE.commands))  # type: ignore[attr-defined]
 def test_help_is_the_same_as_with_the_whole_group(name):
-    whole = typer.main.get_command(app)
     alone = _command_for([name, "--help"])
     assert list(alone.commands) == [name]
-    assert _help(alone, [name, "--help"]) == _help(whole, [name, "--help"]) != ""
+    assert _help(alone, [name, "--help"]) == _help(WHOLE, [name, "--help"]) != ""
 
 
 GROUPED = sorted(
     (group, name)
-    for group, sub in typer.main.get_command(app).commands.items()  # type: ignore[attr-defined]
+    for group, sub in WHOLE.commands.items()  # type: ignore[attr-defined]
     for name in getattr(sub, "commands", {})
 )
 
 
 @pytest.mark.parametrize(("group", "name"), GROUPED, ids=[" ".join(p) for p in GROUPED])
 def test_a_command_of_a_group_is_built_alone_with_the_same_help(group, name):
-    whole = typer.main.get_command(app)
     alone = _command_for([group, name, "--help"])
     assert list(alone.commands) == [group]
     assert list(alone.commands[group].commands) == [name]
     args = [group, name, "--help"]
-    assert _help(alone, args) == _help(whole, args) != ""
+    assert _help(alone, args) == _help(WHOLE, args) != ""
