@@ -317,3 +317,20 @@ def test_halftone_patterns_and_font_storage_one_slip_costs_one_row(tmp_path: Pat
     assert _mark(tmp_path, storage, "char storage 96 5 7")["score"] == 3
     data = _mark(tmp_path, storage.replace("5376,672", "5376,5376"), "char storage 96 5 7")
     assert (data["score"], data["out_of"]) == (2, 3) and data["first_error"].startswith("Row 1")
+
+
+def test_cox_de_boor_triangle_follows_the_students_lower_degree(tmp_path: Path) -> None:
+    """N_{0,2} = 5/4·N_{0,1} + 1/4·N_{1,1} at t = 2.5 on knots 0..5 (span 2): with the
+    student's N_{1,1} = 1/4 (a slip), N_{0,2} = 1/16 follows and is right."""
+    q = "bspline --basis --degree 2 --knots 0,1,2,3,4,5 --at 2.5"
+    right = "d,i,N\n1,1,0.5\n1,2,0.5\n2,0,0.125\n2,1,0.75\n2,2,0.125\n"
+    assert _mark(tmp_path, right, q)["score"] == 5
+    slip = right.replace("1,1,0.5", "1,1,0.25")
+    data = _mark(tmp_path, slip, q)
+    assert (data["score"], data["out_of"]) == (4, 5) and data["first_error"].startswith("Row 1")
+    # N_{0,2} and N_{1,2} as the slip gives them: 1/16 and 9/16 (= 3/4·1/4 + 3/4·1/2)
+    carried = slip.replace("2,0,0.125", "2,0,0.0625").replace("2,1,0.75", "2,1,0.5625")
+    data = _mark(tmp_path, carried, q)
+    assert (data["score"], data["out_of"]) == (4, 5)
+    # a wrong N_{2,2} that follows from nothing is charged
+    assert _mark(tmp_path, right.replace("2,2,0.125", "2,2,0.5"), q)["score"] == 4

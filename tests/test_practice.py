@@ -157,6 +157,7 @@ COMMANDS = {
     "attributes": {"linestyle", "thickline"},
     "characters": {"char"},
     "midpoint-line": {"line"},
+    "dither": {"dither", "halftone"},
 }
 
 

@@ -23,6 +23,7 @@ from ..core.numeric import fmt_short, parse_number
 from ..core.records import Column, Solution
 from .marking_rows import Marking, RowText, Verdict
 from .table_models import (
+    CoxDeBoorTable,
     CyrusBeckTable,
     DiffusionTable,
     DitherTable,
@@ -91,6 +92,10 @@ def table_model_for(solution: Solution) -> TableModel | None:
         return PlainRowsTable(None, ("segment", "pixels"), "Each stroke's pixels stand alone.")
     if key == ("characters", "storage"):
         return PlainRowsTable("Every packing", ("glyph", "bits", "bytes"), _EACH_PACKING)
+    if key == ("curve", "bspline-basis-at"):
+        found = {q.key: q.value for q in solution.derived}
+        t = next(q.value for q in solution.given if q.key == "t")
+        return CoxDeBoorTable(found["knots"], t, int(found["span"]))
     if key == ("dither", "pattern") and solution.tables:
         title = solution.tables[0].title.split(" (")[0]  # "4 x 4 patterns"
         return PlainRowsTable(title, ("pattern", "on"), "Each level's pattern stands alone.")

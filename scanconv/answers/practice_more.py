@@ -21,6 +21,16 @@ def _image(rng: random.Random, rows: int, cols: int) -> str:
 
 
 def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    if kind == "halftone":
+        n = 4 if difficulty == "hard" else 2
+        return PracticeQuestion(
+            "dither",
+            ("halftone", str(n)),
+            f"How many gray levels does a {n} x {n} halftone cell of a bilevel display give? "
+            "Draw the pattern of each level (from the Bayer matrix): which pixels are on.",
+            6 if n == 2 else 10,
+            frozenset({kind}),
+        )
     rows, cols = {"easy": (2, 2), "exam": (2, 4), "hard": (4, 4)}[difficulty]
     image = _image(rng, rows, cols)
     argv: tuple[str, ...] = ("dither", kind, "--image", image, "--top", "255")
@@ -268,7 +278,7 @@ def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQue
 
 
 KINDS: dict[str, list[Any]] = {
-    "dither": ["ordered", "floyd-steinberg", "threshold"],
+    "dither": ["ordered", "floyd-steinberg", "threshold", "halftone"],
     "inside": [0, 1, 2, 3],
     "clip": [
         "cohen-sutherland",

@@ -293,3 +293,45 @@ class InsideVerdictsTable(TableModel):
         if isinstance(winding, Fraction):
             exp["nonzero"] = "inside" if winding else "outside"
         return exp
+
+
+class CoxDeBoorTable(TableModel):
+    """The Cox-de Boor triangle at one t: each ``N_{i,d}`` from the student's own
+    ``N_{i,d-1}`` and ``N_{i+1,d-1}`` (the rows above as written; a value not in the table is
+    0, and ``N_{i,0}`` is 1 on the span of t only), by the knots' own weights."""
+
+    table = "Cox–de Boor at t"
+    marked = ("N",)
+    rules = (
+        "Each value of degree d follows by the Cox-de Boor recursion (the knots' weights, "
+        "0/0 = 0) from the two values of degree d - 1 below it, as written in the rows above."
+    )
+
+    def __init__(self, knots: Sequence[Any], t: Any, span: int) -> None:
+        self.u = [Fraction(v) for v in knots]
+        self.t, self.span = Fraction(t), span
+
+    def _weight(self, num: Fraction, lo: int, hi: int) -> Fraction:
+        den = self.u[hi] - self.u[lo]
+        return num / den if den else Fraction(0)
+
+    def expect(self, i: int, answer: Sequence[Row], own: Sequence[Row]) -> Row:
+        exp = dict(answer[i])
+        d, j = answer[i].get("d"), answer[i].get("i")
+        if not isinstance(d, Fraction) or not isinstance(j, Fraction) or d < 1:
+            return exp
+        d, j = int(d), int(j)
+
+        def lower(k: int) -> Fraction:
+            if d == 1:
+                return Fraction(int(k == self.span))
+            for m in range(i):  # the row above that holds N_{k,d-1}, as the student wrote it
+                if answer[m].get("d") == d - 1 and answer[m].get("i") == k:
+                    mine = own[m].get("N")
+                    return mine if isinstance(mine, Fraction) else Fraction(answer[m]["N"])
+            return Fraction(0)
+
+        left = self._weight(self.t - self.u[j], j, j + d) * lower(j)
+        right = self._weight(self.u[j + d + 1] - self.t, j + 1, j + d + 1) * lower(j + 1)
+        exp["N"] = left + right
+        return exp
