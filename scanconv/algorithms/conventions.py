@@ -13,8 +13,6 @@ its values, a default (the course notes' own rule) and the methods it applies to
 {'tie': 'step', 'p0': '5/4-r', 'loop': 'strict', 'update': 'old'}
 """
 
-from __future__ import annotations
-
 from collections.abc import Callable, Mapping
 from typing import NamedTuple
 

@@ -6,8 +6,6 @@ answer writes above the table. Coordinates are ``(x, y)`` with y up (see
 :mod:`scanconv.core.records`).
 """
 
-from __future__ import annotations
-
 import math
 from collections.abc import Iterator
 from fractions import Fraction

@@ -1,7 +1,5 @@
 """The worked answer of a line: given and derived values around a line algorithm's steps."""
 
-from __future__ import annotations
-
 from collections.abc import Iterator
 from fractions import Fraction
 from typing import NamedTuple

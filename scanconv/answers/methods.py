@@ -31,8 +31,6 @@ scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from b
 ('midpoint',)
 """
 
-from __future__ import annotations
-
 import importlib
 from typing import Any, NamedTuple
 

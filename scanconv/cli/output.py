@@ -5,8 +5,6 @@ The renderers never print; they return generators, and :func:`emit` writes what 
 A failure to write is exit status 1.
 """
 
-from __future__ import annotations
-
 import os
 import sys
 from collections.abc import Callable, Iterable

@@ -10,8 +10,6 @@ answer shows around those steps (given values, derived quantities with numbers s
 column headings, the plotted pixels) without ever formatting or printing anything itself.
 """
 
-from __future__ import annotations
-
 from collections.abc import Callable, Iterable, Iterator
 from enum import Enum
 from typing import Any, NamedTuple
@@ -40,7 +38,7 @@ class Move(str, Enum):
     SE = "SE"
 
     @classmethod
-    def from_delta(cls, dx: int, dy: int) -> Move:
+    def from_delta(cls, dx: int, dy: int) -> "Move":
         """The move for a unit step ``(dx, dy)``.
 
         >>> Move.from_delta(1, -1)

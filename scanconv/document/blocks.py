@@ -5,8 +5,6 @@ only: numbers stay exact, math stays TeX math, tables are row factories (a fresh
 every call, so a format that streams a table of millions of rows does so in constant memory).
 """
 
-from __future__ import annotations
-
 from collections.abc import Callable, Iterable, Iterator
 from typing import Any, NamedTuple
 

@@ -2,8 +2,6 @@
 them (:class:`Param`) and a command (:class:`Spec`). The table of every command is
 :mod:`.grammar_table`, generated from the command line's declarations."""
 
-from __future__ import annotations
-
 from typing import Any, NamedTuple
 
 

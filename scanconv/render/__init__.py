@@ -10,8 +10,6 @@ and, for the ``rich`` format only, rich renderables. The CLI writes them out; no
 prints, and rich is imported only by the ``rich`` renderer.
 """
 
-from __future__ import annotations
-
 from collections.abc import Callable, Iterator
 from enum import Enum
 from typing import TYPE_CHECKING, Any, NamedTuple
@@ -109,7 +107,7 @@ Chunk = Any  # str | Notice | a rich renderable
 
 
 def render(
-    solution: Solution | Document, fmt: Format, options: Options | None = None
+    solution: "Solution | Document", fmt: Format, options: Options | None = None
 ) -> Iterator[Chunk]:
     """Render ``solution`` (or its :class:`~scanconv.document.Document`) in ``fmt``: the single
     dispatch for every ``--format``; each format is a mapping from the document's blocks.

@@ -19,8 +19,6 @@ Work(kind='rows', rows=1000001, cols=None, key='line/wu', param='x2', weight=1.0
 4096
 """
 
-from __future__ import annotations
-
 import math
 from collections.abc import Callable, Iterable, Mapping
 from fractions import Fraction
