@@ -14,7 +14,7 @@ own earlier cells (follow-through, so one slip is charged once). The result is a
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from fractions import Fraction
 from typing import Any
 
@@ -62,19 +62,37 @@ def table_models_for(solution: Solution) -> list[TableModel]:
     return [] if one is None else [one]
 
 
-_EACH_PACKING = "Each packing's sizes stand alone (a glyph's bits, the font's bits and bytes)."
+_ROW_ALONE: dict[tuple[str, str], Callable[[], TableModel]] = {
+    ("clip", "cyrus-beck"): CyrusBeckTable,
+    ("clip", "nicholl-lee-nicholl"): NLLTable,
+    ("clip", "midpoint-subdivision"): MidpointClipTable,
+    ("line", "style"): LineStyleTable,
+    ("framebuffer", "arithmetic"): FrameBufferTable,
+    **dict.fromkeys(
+        [("line", "replication"), ("line", "brush")],  # a thick line, either way
+        lambda: PlainRowsTable(None, ("added",), "Each step's added pixels stand alone."),
+    ),
+    ("characters", "bitmap"): lambda: PlainRowsTable(
+        None, ("row", "column"), "Each pixel stands alone."
+    ),
+    ("characters", "stroke"): lambda: PlainRowsTable(
+        None, ("segment", "pixels"), "Each stroke's pixels stand alone."
+    ),
+    ("characters", "storage"): lambda: PlainRowsTable(
+        "Every packing",
+        ("glyph", "bits", "bytes"),
+        "Each packing's sizes stand alone (a glyph's bits, the font's bits and bytes).",
+    ),
+}
+"""The table models that need nothing of the answer but its method, by (primitive, algorithm)."""
 
 
 def table_model_for(solution: Solution) -> TableModel | None:
     """The table model of ``solution``'s method, or ``None`` (a pixel walk, or unmarked)."""
     key = (solution.primitive, solution.algorithm)
     data = solution.data
-    if key == ("clip", "cyrus-beck"):
-        return CyrusBeckTable()
-    if key == ("clip", "nicholl-lee-nicholl"):
-        return NLLTable()
-    if key == ("clip", "midpoint-subdivision"):
-        return MidpointClipTable()
+    if key in _ROW_ALONE:
+        return _ROW_ALONE[key]()
     if key == ("dither", "ordered"):
         return DitherTable(data.get("compare", ">"))
     if key == ("dither", "threshold"):
@@ -82,16 +100,6 @@ def table_model_for(solution: Solution) -> TableModel | None:
     if key == ("dither", "floyd-steinberg"):
         given = {q.key: q.value for q in solution.given}
         return DiffusionTable(given["image"], given["top"], data, data.get("compare", ">="))
-    if key == ("line", "style"):
-        return LineStyleTable()
-    if solution.primitive == "line" and key[1] in ("replication", "brush"):
-        return PlainRowsTable(None, ("added",), "Each step's added pixels stand alone.")
-    if key == ("characters", "bitmap"):
-        return PlainRowsTable(None, ("row", "column"), "Each pixel stands alone.")
-    if key == ("characters", "stroke"):
-        return PlainRowsTable(None, ("segment", "pixels"), "Each stroke's pixels stand alone.")
-    if key == ("characters", "storage"):
-        return PlainRowsTable("Every packing", ("glyph", "bits", "bytes"), _EACH_PACKING)
     if key == ("curve", "bspline-basis-at"):
         found = {q.key: q.value for q in solution.derived}
         t = next(q.value for q in solution.given if q.key == "t")
@@ -99,8 +107,6 @@ def table_model_for(solution: Solution) -> TableModel | None:
     if key == ("dither", "pattern") and solution.tables:
         title = solution.tables[0].title.split(" (")[0]  # "4 x 4 patterns"
         return PlainRowsTable(title, ("pattern", "on"), "Each level's pattern stands alone.")
-    if key == ("framebuffer", "arithmetic"):
-        return FrameBufferTable()
     if solution.primitive == "inside":
         return table_models_for(solution)[0]
     return None
