@@ -19,6 +19,7 @@ import pytest
 from scanconv.algorithms.conventions import ROUNDINGS
 
 from .helpers import run
+from .test_browser import Opened  # the page opener with its request and console logs
 
 pytestmark = pytest.mark.external  # chromium (external tests are slow too: conftest)
 
@@ -37,20 +38,11 @@ CELL = """([x, y]) => {
 }"""
 
 
-class Quiz:
-    """A page open in the browser, in test mode."""
+class Quiz(Opened):
+    """A page open in the browser (with its requests and console messages), in test mode."""
 
     def __init__(self, browser: Any, path: Path, width: int = 1280) -> None:
-        self.page = browser.new_page(viewport={"width": width, "height": 900})
-        self.requests: list[str] = []
-        self.errors: list[str] = []
-        self.page.on("request", lambda r: self.requests.append(r.url))
-        self.page.on(
-            "console", lambda m: self.errors.append(m.text) if m.type in ("error", "warning") else 0
-        )
-        self.page.on("pageerror", lambda e: self.errors.append(str(e)))
-        self.page.goto(path.as_uri())
-        self.page.wait_for_selector("section.scanconv[data-ready]")
+        super().__init__(browser, path, width)
 
     def start(self) -> None:
         self.page.focus("[data-selftest]")
