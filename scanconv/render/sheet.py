@@ -19,7 +19,7 @@ from __future__ import annotations
 import json
 import re
 import shlex
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import NamedTuple
 
 from ..core.records import Column, Quantity, Solution
@@ -84,7 +84,6 @@ class Answered(NamedTuple):
 
 
 KINDS = ("key", "worksheet")
-FORMATS = ("markdown", "plain", "latex", "json", "html", "moodle", "gift")
 
 
 def sheet_document(
@@ -96,28 +95,19 @@ def sheet_document(
     standalone: bool = False,
     notices: list[str] | None = None,
 ) -> str:
-    """The whole sheet as one string. A ``ValueError`` raised while an answer is worked out
-    names the question's line (``SOURCE:LINE: ...``). Notices (a grid left out) are added to
-    ``notices``, prefixed with the question's number.
+    """The whole sheet as one string, in the document format ``fmt`` (its writer is its
+    :data:`scanconv.render.FORMATS` entry's ``sheet``). A ``ValueError`` raised while an
+    answer is worked out names the question's line (``SOURCE:LINE: ...``). Notices (a grid
+    left out) are added to ``notices``, prefixed with the question's number.
     """
+    from . import FORMATS, formats, load
+
     if kind not in KINDS:
         raise ValueError(f"unknown sheet kind {kind!r}: key or worksheet")
-    if fmt in ("moodle", "gift"):  # a quiz file for an LMS: scanconv.render.lms
-        from .lms import quiz_document
-
-        return quiz_document(sheet, answered, fmt, notices)
-    if fmt == "json":
-        return _json(sheet, answered, kind)
-    if fmt == "html":
-        return _html(sheet, answered, kind, notices)
-    if fmt == "latex":
-        from .sheet_latex import latex_sheet
-
-        writer = latex_sheet
-    elif fmt in ("markdown", "plain"):
-        writer = _markdown if fmt == "markdown" else _plain
-    else:
-        raise ValueError(f"unknown sheet format {fmt!r}: one of {', '.join(FORMATS)}")
+    spec = FORMATS.get(fmt)
+    if spec is None or not spec.sheet:
+        raise ValueError(f"unknown sheet format {fmt!r}: one of {', '.join(formats('document'))}")
+    writer: SheetWriter = load(spec.sheet)
     out: list[str] = []
     for chunk in writer(sheet, answered, kind, standalone):
         if isinstance(chunk, Notice):
@@ -126,6 +116,11 @@ def sheet_document(
         else:
             out.append(chunk)
     return "".join(out)
+
+
+SheetWriter = Callable[[Sheet, Sequence[Answered], str, bool], Iterator["str | Notice"]]
+"""A document format's writer (its :data:`scanconv.render.FORMATS` entry's ``sheet``):
+``(sheet, answered, kind, standalone)`` to text chunks and notices."""
 
 
 class _Guard:
@@ -271,9 +266,10 @@ def _parts(blank: Blank) -> list[tuple[list[int], str]]:
     return [(list(range(len(blank.columns))), blank.title)]
 
 
-def _markdown(
+def markdown_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
+    """The sheet in Markdown: each key's answer through the ``markdown`` mapping."""
     section_level, level = _levels(sheet)
     if sheet.title:
         yield f"# {md_text(' '.join(sheet.title.split()))}\n\n{_intro(sheet, kind)}\n\n"
@@ -336,9 +332,10 @@ def given_of(a: Answered) -> tuple[Quantity, ...]:
     return given.quantities if given is not None else ()
 
 
-def _plain(
+def plain_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
+    """The sheet in plain text: each key's answer through the ``plain`` mapping."""
     from .text import table_lines
 
     if sheet.title:
@@ -395,8 +392,11 @@ def _room(chars: int) -> int:
 # --- json ---------------------------------------------------------------------------------------
 
 
-def _json(sheet: Sheet, answered: Sequence[Answered], kind: str) -> str:
-    """One JSON object: the sheet's title, kind and total marks, and its questions."""
+def json_sheet(
+    sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
+) -> Iterator[str]:
+    """One JSON object: the sheet's title, kind and total marks, and its questions (each
+    key's answer through the ``json`` mapping)."""
     from .data import render_json
 
     questions = []
@@ -426,103 +426,4 @@ def _json(sheet: Sheet, answered: Sequence[Answered], kind: str) -> str:
         "total_marks": sheet.total_marks,
         "questions": questions,
     }
-    return json_visible(json.dumps(document, ensure_ascii=False, indent=1)) + "\n"
-
-
-# --- html ---------------------------------------------------------------------------------------
-
-_SHEET_CSS = """\
-.sc-sheet{font-family:"DejaVu Sans",system-ui,sans-serif;color:#1b1b1b;line-height:1.45}
-.sc-sheet h1{font-size:1.6em;margin:.2em 0 .3em 0}
-.sc-sheet h2.sc-section{font-size:1.35em;margin:1.2em 0 .4em 0}
-.sc-sheet h2.sc-q,.sc-sheet h3.sc-q{font-size:1.2em;margin:1.2em 0 .3em 0}
-.sc-sheet .sc-wording{font-style:italic}
-.sc-sheet code{font-family:"DejaVu Sans Mono",monospace;background:#f4f4f4;padding:0 .25em}
-.sc-sheet table.sc-blank{border-collapse:collapse;margin:.4em 0 1em 0}
-.sc-sheet table.sc-blank th,.sc-sheet table.sc-blank td{border:1px solid #555;\
-padding:.2em .5em;height:1.9em;text-align:center}
-.sc-sheet .sc-answer-space{height:12em;border:1px dashed #999;margin:.4em 0 1em 0}
-@media print{.sc-sheet>.sc-question~.sc-question{break-before:page}}
-"""
-
-
-def _html(sheet: Sheet, answered: Sequence[Answered], kind: str, notices: list[str] | None) -> str:
-    """The sheet as one self-contained HTML page: every text from the question file and every
-    value escaped; a page break before each question when printed. The key's answers are the
-    stepping answers of :mod:`scanconv.render.html` (each with its own stepper)."""
-    from .mathml import esc as escape
-
-    title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
-    style = f"<style>\n{_SHEET_CSS}</style>\n"
-    if kind == "key":
-        from .html import answer_section, page_head
-        from .page_assets import JS
-
-        head = page_head(title).replace("</head>", style + "</head>", 1)
-    else:
-        head = (
-            '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
-            '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
-            f"<title>{escape(title)}</title>\n{style}</head>\n"
-        )
-    parts = [head, '<body>\n<main class="sc-sheet">\n']
-    if sheet.title:
-        parts.append(f"<h1>{escape(title)}</h1>\n")
-    parts.append(f"<p>{escape(_intro(sheet, kind))}</p>\n")
-    section = ""
-    level = 3 if any(q.section for q in sheet.questions) else 2
-    for a in answered:
-        q = a.question
-        with _Guard(sheet, q):
-            if q.section and q.section != section:
-                section = q.section
-                parts.append(f'<h2 class="sc-section">{escape(section)}</h2>\n')
-            parts.append(f'<section class="sc-question" id="q{q.number}">\n')
-            marks = escape(_marks(q.marks))
-            parts.append(f'<h{level} class="sc-q">Question {q.number}{marks}</h{level}>\n')
-            if kind == "key":
-                if q.wording:
-                    parts.append(f'<p class="sc-wording">{escape(q.wording)}</p>\n')
-                parts.append(f"<p><code>{escape(q.command)}</code></p>\n")
-                found: list[str] = []
-                parts.append(
-                    answer_section(
-                        a.solution, f"sc{q.number}", a.options, level=level + 1, notices=found
-                    )
-                )
-                parts.append("\n")
-                if notices is not None:
-                    notices.extend(f"question {q.number}: {n}" for n in found)
-            else:
-                parts.append(f'<p class="sc-wording">{escape(wording(a))}</p>\n')
-                parts.extend(_html_blank(a))
-            parts.append("</section>\n")
-    parts.append("</main>\n")
-    if kind == "key":
-        parts.append(f"<script>{JS}</script>\n")
-    parts.append("</body>\n</html>\n")
-    return "".join(parts)
-
-
-def _html_blank(a: Answered) -> Iterator[str]:
-    """A worksheet question's given values and empty tables, in HTML."""
-    from .mathml import esc as escape
-
-    if given_of(a):
-        given = ", ".join(escape(g.text) for g in given_of(a))
-        yield f"<p><strong>Given:</strong> {given}</p>\n"
-    blanks = _blank_tables(a.solution)
-    for blank in blanks:
-        yield f"<p><strong>{escape(blank.title)}:</strong></p>\n"
-        yield '<table class="sc-blank">\n<thead><tr>'
-        yield "".join(f"<th>{escape(c.text)}</th>" for c in blank.columns)
-        yield "</tr></thead>\n<tbody>\n"
-        for row in _blank_rows(blank):
-            cells = (
-                f'<td style="min-width:{_room(w) * 0.6:.1f}em">{escape(c)}</td>'
-                for c, w in zip(row, blank.widths, strict=True)
-            )
-            yield "<tr>" + "".join(cells) + "</tr>\n"
-        yield "</tbody>\n</table>\n"
-    if not blanks:
-        yield '<p><strong>Answer:</strong></p>\n<div class="sc-answer-space"></div>\n'
+    yield json_visible(json.dumps(document, ensure_ascii=False, indent=1)) + "\n"
