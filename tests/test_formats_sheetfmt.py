@@ -4,6 +4,7 @@ choices, its extension map and its one rule of format conflicts are read from it
 
 from __future__ import annotations
 
+import io
 from importlib import import_module
 from pathlib import Path
 
@@ -11,7 +12,7 @@ import pytest
 
 from scanconv.cli.sheet import answer_questions, read_questions
 from scanconv.render import EXTENSIONS, FORMATS, Format, formats, load
-from scanconv.render.sheet import sheet_document
+from scanconv.render.sheet import Answered, sheet_document
 
 from .helpers import assert_refused, run
 
@@ -132,3 +133,72 @@ def test_the_key_file_of_practice_goes_by_the_same_extension_map(tmp_path: Path)
         assert key.stat().st_size > 0
     r = run("practice", "--seed", "2", "-n", "1", "--key", str(tmp_path / "key.csv"))
     assert_refused(r, "unknown extension .csv", *FORMATS["gift"].extensions)
+
+
+# --- the Question block: a sheet's question through each format's mapping ----------------------
+
+
+def _answered(text: str = "> Draw <it> & *show* `DDA` {x}.\n[3] line 0 0 3 1\n") -> list[Answered]:
+    sheet = read_questions(text, "q.txt")
+    return answer_questions(sheet.questions)
+
+
+@pytest.mark.parametrize("fmt", [Format.markdown, Format.plain, Format.latex, Format.rich])
+def test_a_key_document_renders_its_question_then_its_answer(fmt: Format) -> None:
+    from rich.console import Console
+
+    from scanconv.document import Question, Title
+    from scanconv.render import Options, render
+    from scanconv.render.sheet import key_document
+
+    (a,) = _answered()
+    doc = key_document(a, 3)
+    assert isinstance(doc.blocks[0], Question) and doc.blocks[0].heading == "Question 1 (3 marks)"
+    assert doc.get(Title).level == 4
+    chunks = list(render(doc, fmt, Options(width=100)))
+    if fmt is Format.rich:
+        console = Console(width=100, record=True, file=io.StringIO())
+        for c in chunks:
+            console.print(c)
+        text = console.export_text()
+    else:
+        text = "".join(c for c in chunks if isinstance(c, str))
+    heading, title = text.index("Question 1 (3 marks)"), text.index("Bresenham")
+    assert heading < text.index("scanconv line 0 0 3 1") < title
+    assert "Draw <it>" not in text or fmt in (Format.plain, Format.rich)  # escaped where it must be
+
+
+def test_the_sheet_key_is_the_question_blocks_through_the_mappings() -> None:
+    """A markdown key is, question by question, the key document rendered by the markdown
+    format: the same bytes, so a format's sheet adds only its sections and title."""
+    from scanconv.render import Options, render
+    from scanconv.render.sheet import key_document
+
+    answered = _answered("[2] line 0 0 3 1\ncircle 2\n")
+    sheet = read_questions("[2] line 0 0 3 1\ncircle 2\n", "q.txt")
+    whole = sheet_document(sheet, answered, "key", "markdown")
+    parts = [
+        "".join(
+            c for c in render(key_document(a), Format.markdown, Options()) if isinstance(c, str)
+        )
+        for a in answered
+    ]
+    assert whole == "".join(parts)
+    assert whole.count("## Question ") == 2 and whole.count("### ") >= 2
+
+
+def test_the_question_heading_is_escaped_by_each_format() -> None:
+    from scanconv.document import Question
+    from scanconv.render.html import question_html
+    from scanconv.render.latex import LATEX
+    from scanconv.render.text import MARKDOWN, PLAIN
+
+    block = Question(2, 1, "a <b> & $c$ _d_ \u202e", "scanconv line 0 0 3 1 --algo dda", 2)
+    html = question_html(block)
+    assert "&lt;b&gt; &amp;" in html and "<b>" not in html and "Question 2 (1 mark)" in html
+    tex = "".join(str(c) for c in LATEX[Question](block, None, None))  # type: ignore[arg-type]
+    assert "\\$c\\$" in tex and "\\_d\\_" in tex and "-{}-algo" in tex
+    md = "".join(MARKDOWN[Question](block, None, []))  # type: ignore[arg-type]
+    assert "\\<b\\>" in md and "\\$c\\$" in md and "`scanconv line 0 0 3 1 --algo dda`" in md
+    plain = "".join(PLAIN[Question](block, None, []))  # type: ignore[arg-type]
+    assert plain.isascii() and "Question 2 (1 mark)\n-------------------\n" in plain

@@ -17,14 +17,15 @@ sections, wording, command lines) is escaped for every format.
 from __future__ import annotations
 
 import json
-import re
 import shlex
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from itertools import chain
 from typing import NamedTuple
 
 from ..core.records import Column, Quantity, Solution
-from ..core.working import ascii_text, json_visible, visible
-from ..document import Given, as_document
+from ..core.working import ascii_text, json_visible
+from ..document import Document, Given, Title, as_document
+from ..document import Question as QuestionBlock
 from . import Notice, Options
 from .cells import numeric_column
 from .text import md_text
@@ -138,20 +139,52 @@ class _Guard:
             raise ValueError(f"{self.where}: {' '.join(str(err).split())}") from None
 
 
-def _answer_chunks(a: Answered, fmt: str) -> Iterator[str | Notice]:
+def question_block(a: Answered, level: int = 2, *, key: bool = True) -> QuestionBlock:
+    """The :class:`~scanconv.document.Question` block of ``a``: its number and marks and, on a
+    key, its wording and command line (a worksheet words the question its own way)."""
+    q = a.question
+    if not key:
+        return QuestionBlock(q.number, q.marks, level=level)
+    return QuestionBlock(q.number, q.marks, q.wording, q.command, level)
+
+
+def key_document(a: Answered, level: int = 2, *, question: bool = True) -> Document:
+    """The answer's document as a key shows it: its :class:`~scanconv.document.Question`
+    block first (with ``question``) and its title one level under the question's."""
+    doc = as_document(a.solution)
+    blocks = tuple(b._replace(level=level + 1) if isinstance(b, Title) else b for b in doc.blocks)
+    head = (question_block(a, level),) if question else ()
+    return doc._replace(blocks=head + blocks)
+
+
+def _answer_chunks(a: Answered, fmt: str, document: Document) -> Iterator[str | Notice]:
+    """``document`` (a key's answer) through the mapping of ``fmt``, its notices naming the
+    question."""
     from . import Format, render
 
-    for chunk in render(a.solution, Format(fmt), a.options):
+    for chunk in render(document, Format(fmt), a.options):
         if isinstance(chunk, Notice):
             yield Notice(f"question {a.question.number}: {chunk.message}", chunk.ways)
         else:
             yield chunk
 
 
-def _marks(marks: int | None) -> str:
-    if marks is None:
-        return ""
-    return f" ({marks} mark{'' if marks == 1 else 's'})"
+def each_question(
+    sheet: Sheet,
+    answered: Sequence[Answered],
+    section: Callable[[str], str],
+    body: Callable[[Answered], Iterable[str | Notice]],
+) -> Iterator[str | Notice]:
+    """The questions in order: the ``section`` heading where a section starts, then each
+    question's ``body``; an error in it names the question's line (:class:`_Guard`)."""
+    current = ""
+    for a in answered:
+        q = a.question
+        with _Guard(sheet, q):
+            if q.section and q.section != current:
+                current = q.section
+                yield section(current)
+            yield from body(a)
 
 
 def _intro(sheet: Sheet, kind: str) -> str:
@@ -241,18 +274,6 @@ def _blank_rows(blank: Blank) -> Iterator[list[str]]:
 # --- markdown and plain -------------------------------------------------------------------------
 
 
-def md_code(text: str) -> str:
-    """``text`` as an inline code span, fenced with more backticks than it holds.
-
-    >>> md_code("a ` b")
-    '`` a ` b ``'
-    """
-    runs = [len(r) for r in re.findall(r"`+", text)]
-    fence = "`" * (max(runs, default=0) + 1)
-    pad = " " if runs or text.startswith("`") else ""
-    return f"{fence}{pad}{visible(text)}{pad}{fence}"
-
-
 def _levels(sheet: Sheet) -> tuple[int, int]:
     """The heading level of a section and of a question (questions under sections go one
     deeper)."""
@@ -269,36 +290,23 @@ def _parts(blank: Blank) -> list[tuple[list[int], str]]:
 def markdown_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
-    """The sheet in Markdown: each key's answer through the ``markdown`` mapping."""
+    """The sheet in Markdown: each question and its answer through the ``markdown`` mapping
+    (the answer's title one level under the question's)."""
+    from .text import MARKDOWN
+
     section_level, level = _levels(sheet)
     if sheet.title:
         yield f"# {md_text(' '.join(sheet.title.split()))}\n\n{_intro(sheet, kind)}\n\n"
-    section = ""
-    for a in answered:
-        q = a.question
-        with _Guard(sheet, q):
-            if q.section and q.section != section:
-                section = q.section
-                yield f"{'#' * section_level} {md_text(section)}\n\n"
-            yield f"{'#' * level} Question {q.number}{_marks(q.marks)}\n\n"
-            if kind == "key":
-                yield from _md_key(a, level)
-            else:
-                yield from _md_worksheet(a)
 
+    def body(a: Answered) -> Iterator[str | Notice]:
+        if kind == "key":
+            return _answer_chunks(a, "markdown", key_document(a, level))
+        head = MARKDOWN[QuestionBlock](question_block(a, level, key=False), a.options, [])
+        return chain(head, _md_worksheet(a))
 
-def _md_key(a: Answered, level: int) -> Iterator[str | Notice]:
-    """A key's question in Markdown: its wording, its command, its answer (the ``markdown``
-    format's mapping, the answer's title one level under the question's)."""
-    if a.question.wording:
-        yield f"> {md_text(a.question.wording)}\n\n"
-    yield md_code(a.question.command) + "\n\n"
-    first = True
-    for chunk in _answer_chunks(a, "markdown"):
-        if first and isinstance(chunk, str) and chunk.startswith("## "):
-            chunk = "#" * (level + 1) + chunk[2:]
-        first = False
-        yield chunk
+    yield from each_question(
+        sheet, answered, lambda s: f"{'#' * section_level} {md_text(s)}\n\n", body
+    )
 
 
 def _md_worksheet(a: Answered) -> Iterator[str]:
@@ -335,46 +343,47 @@ def given_of(a: Answered) -> tuple[Quantity, ...]:
 def plain_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
-    """The sheet in plain text: each key's answer through the ``plain`` mapping."""
-    from .text import table_lines
+    """The sheet in plain text: each question and its answer through the ``plain`` mapping."""
+    from .text import PLAIN
 
     if sheet.title:
         title = ascii_text(" ".join(sheet.title.split()))
         yield f"{title}\n{'#' * len(title)}\n\n{_intro(sheet, kind)}\n\n"
-    section = ""
-    for a in answered:
-        q = a.question
-        with _Guard(sheet, q):
-            if q.section and q.section != section:
-                section = q.section
-                yield f"{ascii_text(section)}\n{'*' * len(ascii_text(section))}\n\n"
-            head = f"Question {q.number}{_marks(q.marks)}"
-            yield f"{head}\n{'-' * len(head)}\n\n"
-            if kind == "key":
-                if q.wording:
-                    yield ascii_text(q.wording) + "\n\n"
-                yield f"$ {ascii_text(q.command)}\n\n"
-                yield from _answer_chunks(a, "plain")
-                yield "\n"
-                continue
-            yield ascii_text(wording(a)) + "\n\n"
-            if given_of(a):
-                given = ", ".join(ascii_text(g.text) for g in given_of(a))
-                yield f"Given: {given}\n\n"
-            for blank in _blank_tables(a.solution):
-                yield f"{ascii_text(blank.title)}:\n"
-                cells = ([c or "_" * max(3, w) for c, w in zip(r, blank.widths, strict=True)]
-                         for r in _blank_rows(blank))  # fmt: skip
-                for line in table_lines(
-                    [ascii_text(c.text) for c in blank.columns],
-                    [numeric_column(c) for c in blank.columns],
-                    cells,
-                    markdown=False,
-                ):
-                    yield line + "\n"
-                yield "\n"
-            if not _blank_tables(a.solution, count=False):
-                yield "Answer:\n" + "\n" * 6
+
+    def body(a: Answered) -> Iterator[str | Notice]:
+        if kind == "key":
+            return chain(_answer_chunks(a, "plain", key_document(a)), "\n")
+        head = PLAIN[QuestionBlock](question_block(a, key=False), a.options, [])
+        return chain(head, _plain_worksheet(a))
+
+    def section(name: str) -> str:
+        return f"{ascii_text(name)}\n{'*' * len(ascii_text(name))}\n\n"
+
+    yield from each_question(sheet, answered, section, body)
+
+
+def _plain_worksheet(a: Answered) -> Iterator[str]:
+    """A worksheet's question in plain text: its wording, the given values, empty tables."""
+    from .text import table_lines
+
+    yield ascii_text(wording(a)) + "\n\n"
+    if given_of(a):
+        given = ", ".join(ascii_text(g.text) for g in given_of(a))
+        yield f"Given: {given}\n\n"
+    for blank in _blank_tables(a.solution):
+        yield f"{ascii_text(blank.title)}:\n"
+        cells = ([c or "_" * max(3, w) for c, w in zip(r, blank.widths, strict=True)]
+                 for r in _blank_rows(blank))  # fmt: skip
+        for line in table_lines(
+            [ascii_text(c.text) for c in blank.columns],
+            [numeric_column(c) for c in blank.columns],
+            cells,
+            markdown=False,
+        ):
+            yield line + "\n"
+        yield "\n"
+    if not _blank_tables(a.solution, count=False):
+        yield "Answer:\n" + "\n" * 6
 
 
 # --- latex: scanconv.render.sheet_latex ---------------------------------------------------

@@ -9,18 +9,21 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 
+from ..document import Question as QuestionBlock
 from . import Notice
+from .html import answer_section, question_html
 from .mathml import esc as escape
 from .sheet import (
     Answered,
     Sheet,
     _blank_rows,
     _blank_tables,
-    _Guard,
     _intro,
-    _marks,
+    _levels,
     _room,
+    each_question,
     given_of,
+    question_block,
     wording,
 )
 
@@ -49,7 +52,7 @@ def html_sheet(
     title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
     style = f"<style>\n{_SHEET_CSS}</style>\n"
     if kind == "key":
-        from .html import answer_section, page_head
+        from .html import page_head
         from .page_assets import JS
 
         head = page_head(title).replace("</head>", style + "</head>", 1)
@@ -63,33 +66,27 @@ def html_sheet(
     if sheet.title:
         yield f"<h1>{escape(title)}</h1>\n"
     yield f"<p>{escape(_intro(sheet, kind))}</p>\n"
-    section = ""
-    level = 3 if any(q.section for q in sheet.questions) else 2
-    for a in answered:
+    level = _levels(sheet)[1]
+
+    def body(a: Answered) -> Iterator[str | Notice]:
         q = a.question
-        with _Guard(sheet, q):
-            if q.section and q.section != section:
-                section = q.section
-                yield f'<h2 class="sc-section">{escape(section)}</h2>\n'
-            yield f'<section class="sc-question" id="q{q.number}">\n'
-            marks = escape(_marks(q.marks))
-            yield f'<h{level} class="sc-q">Question {q.number}{marks}</h{level}>\n'
-            if kind == "key":
-                if q.wording:
-                    yield f'<p class="sc-wording">{escape(q.wording)}</p>\n'
-                yield f"<p><code>{escape(q.command)}</code></p>\n"
-                found: list[str] = []
-                yield (
-                    answer_section(
-                        a.solution, f"sc{q.number}", a.options, level=level + 1, notices=found
-                    )
-                )
-                yield "\n"
-                yield from (Notice(f"question {q.number}: {n}") for n in found)
-            else:
-                yield f'<p class="sc-wording">{escape(wording(a))}</p>\n'
-                yield from _html_blank(a)
-            yield "</section>\n"
+        yield f'<section class="sc-question" id="q{q.number}">\n'
+        if kind == "key":
+            yield question_html(question_block(a, level))
+            found: list[str] = []
+            yield answer_section(
+                a.solution, f"sc{q.number}", a.options, level=level + 1, notices=found
+            )
+            yield "\n"
+            yield from (Notice(f"question {q.number}: {n}") for n in found)
+        else:
+            yield question_html(QuestionBlock(q.number, q.marks, wording(a), level=level))
+            yield from _html_blank(a)
+        yield "</section>\n"
+
+    yield from each_question(
+        sheet, answered, lambda s: f'<h2 class="sc-section">{escape(s)}</h2>\n', body
+    )
     yield "</main>\n"
     if kind == "key":
         yield f"<script>{JS}</script>\n"
