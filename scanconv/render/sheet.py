@@ -1,13 +1,16 @@
 """Sheets: many answers in one document, as an answer key or as a worksheet for students.
 
 :func:`sheet_document` renders a whole sheet in memory (so nothing is written when a question
-turns out bad) in ``markdown``, ``plain``, ``latex`` (a fragment, or a complete document with
-``standalone``; written by :mod:`scanconv.render.sheet_latex`), ``json`` and ``html``, and as
-a quiz file for an LMS, ``moodle`` (Moodle XML) or ``gift`` (:mod:`scanconv.render.lms`). A key is each question's number,
-marks, wording and command line, then its full worked answer, as the single-answer renderers
-write it. A worksheet is the question in words, the given values and, for each table of the
-answer, an empty table with the answer's columns and number of rows (the ``k`` column, which
-only numbers the rows, filled in); nothing of the answer itself.
+turns out bad) in any format whose :data:`scanconv.render.FORMATS` entry names a document
+writer (its ``sheet``): ``markdown`` and ``plain`` and ``json`` here, ``latex`` (a fragment,
+or a complete document with ``standalone``) in :mod:`scanconv.render.sheet_latex`, ``html`` in
+:mod:`scanconv.render.sheet_html`, and the quiz files for an LMS, ``moodle`` (Moodle XML) and
+``gift`` (:mod:`scanconv.render.lms`). A sheet is a list of documents: a key is, for each
+question, its answer's document headed by a :class:`~scanconv.document.Question` block (its
+number, marks, wording and command line: :func:`key_document`), rendered by the format's own
+mapping, as a single answer is. A worksheet is the question in words, the given values and,
+for each table of the answer, an empty table with the answer's columns and number of rows (the
+``k`` column, which only numbers the rows, filled in); nothing of the answer itself.
 
 The records :class:`Question`, :class:`Sheet` and :class:`Answered` are what
 :mod:`scanconv.cli.sheet` reads a question file into. Text from the question file (the title,
