@@ -43,7 +43,8 @@ def test_the_command_checks_lint_format_types_and_coverage():
         "ruff format --check .",
         "mypy",
         "lint-imports --no-cache",
-        "pytest --cov --cov-fail-under=90 -n auto",
+        "python -m slipcover --source scanconv --json --out .coverage.json -m pytest -n auto",
+        "python tests/coverage_floor.py .coverage.json 90",
     ]
     pyproject = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
     assert re.search(r'\[tool\.coverage\.run\]\nsource = \["scanconv"\]', pyproject)
@@ -52,11 +53,19 @@ def test_the_command_checks_lint_format_types_and_coverage():
 
 @pytest.mark.parametrize(
     "failing",
-    [None, "ruff check", "ruff format", "mypy", "lint-imports --no-cache", "pytest --cov"],
+    [
+        None,
+        "ruff check",
+        "ruff format",
+        "mypy",
+        "lint-imports --no-cache",
+        "python -m",  # the tests under SlipCover
+        "python tests/coverage_floor.py",  # coverage under 90 %
+    ],
     ids=str,
 )
 def test_any_failing_check_fails_the_run(failing, tmp_path):
-    for tool in ("ruff", "mypy", "lint-imports", "pytest"):
+    for tool in ("ruff", "mypy", "lint-imports", "python"):
         stub = tmp_path / tool
         stub.write_text(STUB)
         stub.chmod(0o755)
@@ -80,7 +89,8 @@ def test_any_failing_check_fails_the_run(failing, tmp_path):
             "ruff format --check .",
             "mypy",
             "lint-imports --no-cache",
-            "pytest --cov --cov-fail-under=90 -n auto",
+            "python -m slipcover --source scanconv --json --out .coverage.json -m pytest -n auto",
+            "python tests/coverage_floor.py .coverage.json 90",
         ]
     else:
         assert proc.returncode != 0, ran
