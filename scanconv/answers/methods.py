@@ -2,7 +2,8 @@
 
 Every method of every command is one :class:`Method` record in :data:`METHODS`, keyed
 ``"command/method"``. A record holds or names (as ``"module:attribute"``, imported on first
-use by :meth:`Method.load`, so that reading the table costs no start-up time):
+use by :meth:`Method.load` through :func:`scanconv.core.lazy.load`, so that reading the
+table costs no start-up time):
 
 - ``answer``: the function that builds the worked answer;
 - ``generator``: the step generator (an algorithm yielding one step record at a time);
@@ -31,9 +32,9 @@ scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from b
 ('midpoint',)
 """
 
-import importlib
 from typing import Any, NamedTuple
 
+from ..core import lazy
 from ..core.checks import InputError
 
 PIECES = ("answer", "generator", "derivation", "pseudocode", "model", "raster")
@@ -93,8 +94,7 @@ class Method(NamedTuple):
         if ref is None:
             why = self.reason(piece) or "not available"
             raise InputError(f"{self.command} {self.name} has no {piece}: {why}", "method")
-        module, _, attr = ref.partition(":")
-        return getattr(importlib.import_module(module), attr)
+        return lazy.load(ref)
 
 
 _NO_DERIVATION = "the notes derive no decision parameter for it"

@@ -14,6 +14,7 @@ from collections.abc import Callable, Iterator
 from enum import Enum
 from typing import TYPE_CHECKING, Any, NamedTuple
 
+from ..core import lazy
 from ..core.records import Solution
 
 if TYPE_CHECKING:
@@ -122,11 +123,8 @@ def render(
     options = options or Options()
     if fmt is Format.auto:
         raise ValueError("Format.auto must be resolved before rendering")
-    from importlib import import_module
-
     from ..document import as_document
 
-    module, name = FORMATS[fmt].renderer.split(":")
     renderer: Callable[[Document, Options], Iterator[Chunk]]
-    renderer = getattr(import_module(f"{__name__}.{module}"), name)
+    renderer = lazy.load(f"{__name__}.{FORMATS[fmt].renderer}")
     return renderer(as_document(solution), options)
