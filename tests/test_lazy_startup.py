@@ -140,3 +140,30 @@ def test_the_integer_shortcut_accepts_what_the_pattern_accepts(text):
         assert isinstance(outcome, str)  # refused, as the pattern refuses it
     elif s and re.fullmatch(r"[+-]?\d+", s):
         assert outcome == Fraction(s) or "out of range" in str(outcome)
+
+
+# --- the program freezes its start-up; an in-process call does not -------------------------------
+
+
+def test_an_in_process_run_leaves_the_callers_collector_alone(capsys):
+    import gc
+
+    from scanconv.cli import main
+
+    before = gc.get_freeze_count()
+    assert main(["line", "0", "0", "3", "1", "--format", "csv"]) == 0
+    assert gc.get_freeze_count() == before
+    assert capsys.readouterr().out.startswith("k,")
+
+
+def test_the_program_freezes_what_its_start_up_made():
+    code = (
+        "import gc, sys\n"
+        "from scanconv.cli import main\n"
+        "sys.argv = ['scanconv', 'line', '0', '0', '3', '1', '--format', 'csv']\n"
+        "status = main()\n"
+        "print(status, gc.get_freeze_count() > 1000, file=sys.stderr)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stderr.split() == ["0", "True"]
+    assert out.stdout.startswith("k,")
