@@ -167,3 +167,12 @@ def test_the_program_freezes_what_its_start_up_made():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stderr.split() == ["0", "True"]
     assert out.stdout.startswith("k,")
+
+
+def test_a_lazy_module_reads_its_module_live(monkeypatch):
+    from scanconv.core import numeric
+
+    stand_in = lazy._LazyModule("scanconv.core.numeric")
+    assert stand_in.COORD_LIMIT == numeric.COORD_LIMIT
+    monkeypatch.setattr(numeric, "COORD_LIMIT", 7)
+    assert stand_in.COORD_LIMIT == 7

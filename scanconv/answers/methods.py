@@ -32,10 +32,15 @@ scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from b
 ('midpoint',)
 """
 
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..core import lazy
 from ..core.checks import InputError
+
+if TYPE_CHECKING:
+    from ..algorithms import conventions
+else:
+    conventions = lazy.module("scanconv.algorithms.conventions")  # knobs only
 
 PIECES = ("answer", "generator", "derivation", "pseudocode", "model", "raster")
 """The named pieces of a record, each ``"module:attribute"`` or ``None`` (with a reason)."""
@@ -76,9 +81,9 @@ class Method(NamedTuple):
     @property
     def knobs(self) -> tuple[str, ...]:
         """The conventions that apply to this method, by knob name."""
-        from ..algorithms.conventions import KNOBS
-
-        return tuple(n for n, k in KNOBS.items() if k.applies_to(self.command, self.name))
+        return tuple(
+            n for n, k in conventions.KNOBS.items() if k.applies_to(self.command, self.name)
+        )
 
     def reason(self, piece: str) -> str | None:
         """Why ``piece`` is absent (``None`` when it is there or unexplained)."""

@@ -14,6 +14,7 @@ import sys
 from typing import Any
 
 import typer
+from typer._click import exceptions as click_exc  # typer vendors click
 
 from ..questions.words import MINUS, NONFINITE, students, usage_message
 from . import output
@@ -94,8 +95,6 @@ def main(argv: list[str] | None = None) -> int:
 def _run(command: Any, argv: list[str]) -> int:
     """Run one command; its exit status, with bad input, signals and write failures turned
     into one line on stderr (:func:`_status`). A closed pipe is quiet, the help too."""
-    from typer._click import exceptions as click_exc  # typer vendors click
-
     try:
         try:
             result = command.main(args=argv, prog_name=PROG, standalone_mode=False)
@@ -112,8 +111,6 @@ def _run(command: Any, argv: list[str]) -> int:
 
 def _status(err: BaseException) -> int:
     """The exit status of an exception a command raised, its one line written to stderr."""
-    from typer._click import exceptions as click_exc  # typer vendors click
-
     if isinstance(err, click_exc.UsageError):
         note(f"error: {_usage_message(err)}")
         return 2

@@ -39,12 +39,16 @@ Fraction(5, 2)
 Fraction(1, 2)
 """
 
+from __future__ import annotations
+
 import importlib
-import re
 import sys
-import types
-from collections.abc import Callable, Mapping
-from typing import Any, cast
+
+TYPE_CHECKING = False  # not typing's: ``import scanconv`` loads this module and no more
+if TYPE_CHECKING:
+    import re
+    from collections.abc import Callable, Mapping
+    from typing import Any
 
 __all__ = ["attach_stub", "load", "module", "pattern", "stub_exports"]
 
@@ -61,13 +65,16 @@ def load(ref: str) -> Any:
     return getattr(found, attr) if attr else found
 
 
-class _LazyModule(types.ModuleType):
-    """A stand-in for a module, replaced by it on first attribute read (:func:`module`)."""
+class _LazyModule(type(sys)):  # type: ignore[misc]  # types.ModuleType
+    """A stand-in for a module that imports it on the first attribute read and reads every
+    attribute from it, live (a test's ``monkeypatch`` of the module is seen) (:func:`module`)."""
+
+    _lazy_real: Any = None
 
     def __getattr__(self, attr: str) -> Any:
-        real = importlib.import_module(self.__name__)
-        vars(self).update(vars(real))  # later reads are plain attribute reads
-        return getattr(real, attr)
+        if self._lazy_real is None:
+            self._lazy_real = importlib.import_module(self.__name__)
+        return getattr(self._lazy_real, attr)
 
     def __repr__(self) -> str:
         return f"<lazy module {self.__name__!r}>"
@@ -98,14 +105,18 @@ class _LazyPattern:
         return f"lazy.pattern({self._args[0]!r})"
 
 
-def pattern(regex: str, flags: int = 0) -> "re.Pattern[str]":
+def pattern(regex: str, flags: int = 0) -> re.Pattern[str]:
     """``re.compile(regex, flags)``, compiled when one of its methods is first used.
 
     >>> digits = pattern("[0-9]+")
     >>> digits.findall("a1b22"), digits.pattern
     (['1', '22'], '[0-9]+')
     """
-    return cast("re.Pattern[str]", _LazyPattern(regex, flags))
+    return _LazyPattern(regex, flags)  # type: ignore[return-value]  # it stands in for one
+
+
+if not TYPE_CHECKING:
+    re = module("re")
 
 
 # --- the public names of a package, from its stub ------------------------------------------------

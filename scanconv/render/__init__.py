@@ -18,7 +18,10 @@ from ..core import lazy
 from ..core.records import Solution
 
 if TYPE_CHECKING:
+    from .. import document
     from ..document import Document
+else:
+    document = lazy.module("scanconv.document")  # what render needs; Format alone does not
 
 
 class Format(str, Enum):
@@ -123,8 +126,6 @@ def render(
     options = options or Options()
     if fmt is Format.auto:
         raise ValueError("Format.auto must be resolved before rendering")
-    from ..document import as_document
-
     renderer: Callable[[Document, Options], Iterator[Chunk]]
     renderer = lazy.load(f"{__name__}.{FORMATS[fmt].renderer}")
-    return renderer(as_document(solution), options)
+    return renderer(document.as_document(solution), options)
