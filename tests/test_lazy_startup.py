@@ -176,3 +176,10 @@ def test_a_lazy_module_reads_its_module_live(monkeypatch):
     assert stand_in.COORD_LIMIT == numeric.COORD_LIMIT
     monkeypatch.setattr(numeric, "COORD_LIMIT", 7)
     assert stand_in.COORD_LIMIT == 7
+
+
+def test_every_ascii_form_is_ascii():
+    """ascii_text's one-table path relies on it (a form left non-ASCII would become ``?``)."""
+    from scanconv.core.working import _ASCII
+
+    assert all(word.isascii() and word for word in _ASCII.values())

@@ -144,6 +144,12 @@ _ASCII = {
 for _name, _letter in _GREEK.items():  # the other Greek letters by name
     _ASCII.setdefault(_letter, _name)
 
+_NAMES = {c: w for c, w in _ASCII.items() if len(w) > 1 and w.isalpha()}
+"""The characters written as a name (``ε`` as ``eps``), which a letter after them is spaced
+from (``eps y``)."""
+_ASCII_TABLE = {ord(c): w for c, w in _ASCII.items() if not c.isascii()}
+""":data:`_ASCII` as a ``str.translate`` table."""
+
 _SUB = {
     **dict(zip("0123456789", "₀₁₂₃₄₅₆₇₈₉", strict=True)),
     **dict(zip("+-−=()", "₊₋₋₌₍₎", strict=True)),
@@ -209,7 +215,15 @@ def ascii_text(s: str) -> str:
     """
     if s.isascii():
         return s if s.isprintable() else s.translate(_UNSAFE_TO_ASK)
-    s = _runs(_runs(s, _FROM_SUB, _sub_ascii), _FROM_SUP, _sup_ascii)
+    if not _FROM_SUB.keys().isdisjoint(s):
+        s = _runs(s, _FROM_SUB, _sub_ascii)
+    if not _FROM_SUP.keys().isdisjoint(s):
+        s = _runs(s, _FROM_SUP, _sup_ascii)
+    if _NAMES.keys().isdisjoint(s):  # no name that may need a space after it: one table
+        out = s.translate(_ASCII_TABLE)
+        if not out.isascii():  # a character with no ASCII form
+            out = "".join(c if c.isascii() else "?" for c in out)
+        return out.translate(_UNSAFE_TO_ASK)
     out = []
     for i, ch in enumerate(s):
         word = ch if ch.isascii() else _ASCII.get(ch, "?")
