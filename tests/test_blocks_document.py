@@ -176,14 +176,13 @@ def test_the_html_page_of_a_hand_made_document_steps_through_its_rows() -> None:
 def test_every_format_is_declared_once_with_a_renderer_that_loads(fmt: Format) -> None:
     from importlib import import_module
 
-    from scanconv.cli.output import EXTENSIONS
-    from scanconv.render import FORMATS
+    from scanconv.render import EXTENSIONS, FORMATS
     from scanconv.render.budget import DEFAULT_COSTS
 
     spec = FORMATS[fmt]
     module, name = spec.renderer.split(":")
     assert callable(getattr(import_module(f"scanconv.render.{module}"), name))
-    assert all(EXTENSIONS[ext] is fmt for ext in spec.extensions)
+    assert all(EXTENSIONS[ext] == fmt for ext in spec.extensions)
     assert DEFAULT_COSTS[fmt.value] == spec.row_cost
 
 

@@ -15,6 +15,7 @@ import json
 import re
 import shutil
 import subprocess
+import sys
 import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from fractions import Fraction
@@ -28,6 +29,9 @@ from hypothesis import strategies as st
 from scanconv.cli.sheet import answer_questions, read_questions
 from scanconv.render.lms import MAX_GAPS, TOLERANCE, decimal_text, number_gap
 from scanconv.render.sheet import LABELS, sheet_document
+
+SCANCONV = (sys.executable, "-m", "scanconv")
+"""The CLI of the Python running the tests (not whatever ``scanconv`` is first on PATH)."""
 
 # --- the Moodle XML reader ----------------------------------------------------------------------
 
@@ -394,7 +398,7 @@ def test_notice_for_an_essay_fallback(tmp_path: Path) -> None:
     questions.write_text("line 0 0 200 3\nline 2 2 10 6\n", encoding="utf-8")
     out = tmp_path / "quiz.xml"
     done = subprocess.run(
-        ["scanconv", "sheet", str(questions), "-o", str(out)], capture_output=True, text=True
+        [*SCANCONV, "sheet", str(questions), "-o", str(out)], capture_output=True, text=True
     )
     assert done.returncode == 0 and done.stdout == ""
     assert f"more than {MAX_GAPS} blanks" in done.stderr
@@ -406,7 +410,7 @@ def test_practice_writes_both_quiz_files(tmp_path: Path, gift_reader: GiftReader
     gift_file, xml_file = tmp_path / "quiz.gift", tmp_path / "quiz.xml"
     qfile = tmp_path / "q.txt"
     done = subprocess.run(
-        ["scanconv", "practice", "--topic", "line", "-n", "3", "--seed", "4",
+        [*SCANCONV, "practice", "--topic", "line", "-n", "3", "--seed", "4",
          "-o", str(gift_file), "--key", str(xml_file), "--questions", str(qfile)],
         capture_output=True, text=True,
     )  # fmt: skip
@@ -421,7 +425,7 @@ def test_a_contradicting_format_is_refused(tmp_path: Path) -> None:
     questions.write_text("line 2 2 10 6\n", encoding="utf-8")
     out = tmp_path / "quiz.xml"
     done = subprocess.run(
-        ["scanconv", "sheet", str(questions), "--format", "gift", "-o", str(out)],
+        [*SCANCONV, "sheet", str(questions), "--format", "gift", "-o", str(out)],
         capture_output=True, text=True,
     )  # fmt: skip
     assert done.returncode == 2 and done.stdout == "" and not out.exists()

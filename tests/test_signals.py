@@ -124,7 +124,7 @@ def test_a_signal_at_any_moment_leaves_each_file_old_or_whole(tmp_path):
     """Figures are written first, then the answer: signals at moments spread over the run."""
     pytest.importorskip("PIL")
     files = {"svg": tmp_path / "f.svg", "png": tmp_path / "f.png", "json": tmp_path / "a.json"}
-    args = ["line", "0", "0", "150", "90", "--svg", str(files["svg"]), "--png", str(files["png"])]
+    args = ["line", "0", "0", "80", "48", "--svg", str(files["svg"]), "--png", str(files["png"])]
     args += ["--output", str(files["json"])]
     # how long a whole run takes, to spread the signals over it
     start = time.monotonic()

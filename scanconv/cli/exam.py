@@ -16,18 +16,9 @@ from typing import Annotated
 import typer
 
 from .application import app
-from .output import fail
-from .sheet import (
-    Answered,
-    Sheet,
-    SheetFormat,
-    SheetFormatOpt,
-    SheetOutputOpt,
-    answer_questions,
-    read_questions,
-    sheet_format,
-    write_document,
-)
+from .options import DocumentFormatOpt, OutputOpt
+from .output import document_format, fail
+from .sheet import Answered, Sheet, answer_questions, read_questions, write_document
 
 EXAM_FILE = "exam.txt"
 """The question file, in the package ``scanconv.data``."""
@@ -229,8 +220,8 @@ def exam(
             "image-representation, line-drawing, dda, bresenham, circle-drawing, 14).",
         ),
     ] = None,
-    fmt: SheetFormatOpt = SheetFormat.auto,
-    output: SheetOutputOpt = None,
+    fmt: DocumentFormatOpt = "auto",
+    output: OutputOpt = None,
     standalone: Annotated[
         bool,
         typer.Option("--standalone", help="LaTeX: a complete document (preamble, contents)."),
@@ -253,13 +244,14 @@ def exam(
     shown under it.
     Example: scanconv exam --format latex --standalone -o exam.tex
     """
+    name = document_format(fmt, output)
     try:
         if source:
             text = exam_text()
         elif only_contents:
-            text = contents(section, sheet_format(fmt, output))
+            text = contents(section, name)
         else:
-            text = book(section, sheet_format(fmt, output), standalone=standalone)
+            text = book(section, name, standalone=standalone)
     except ValueError as err:
         fail(" ".join(str(err).split()))
     write_document(text, output)

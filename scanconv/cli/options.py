@@ -21,10 +21,11 @@ from typing import Annotated, Any
 
 import typer
 from typer._click.exceptions import NoSuchOption  # typer vendors click
+from typer._types import TyperChoice
 
 from ..core.numeric import parse_number
 from ..questions.words import looks_like_option
-from ..render import Format
+from ..render import Format, formats
 
 #: Commands that take numbers as positional arguments accept negative ones (``-3``) too.
 NUMERIC_ARGS: dict[str, Any] = {"ignore_unknown_options": True}
@@ -174,6 +175,17 @@ FormatOpt = Annotated[
     Format,
     choice("--format", "-f", help="Output format. auto: rich on a terminal, markdown otherwise."),
 ]
+DocumentFormatOpt = Annotated[
+    str,
+    typer.Option(
+        "--format",
+        "-f",
+        click_type=TyperChoice(("auto", *formats("document")), case_sensitive=False),
+        help="Output format; auto: from the --output file's extension, else markdown.",
+    ),
+]
+"""``--format`` of every document command (sheet, exam, practice), declared once: ``auto`` and
+the formats :data:`scanconv.render.FORMATS` gives a document writer."""
 GridOpt = Annotated[bool, typer.Option("--grid/--no-grid", help="Draw the text pixel grid.")]
 PictureOpt = Annotated[bool, typer.Option("--grid/--no-grid", help="Draw the shaded text picture.")]
 OriginOpt = Annotated[

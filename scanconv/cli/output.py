@@ -18,7 +18,7 @@ import typer
 
 from ..core import lazy
 from ..core.records import Solution
-from ..render import FORMATS, Format, Notice, Options, render
+from ..render import EXTENSIONS, FORMATS, Format, Notice, Options, render
 from .options import Origin
 
 if TYPE_CHECKING:
@@ -196,28 +196,51 @@ def terminal_width(stream: Any) -> int:
     return rich_console.Console(file=stream if stream is not None else io.StringIO()).width
 
 
-#: The format a file's extension names (:data:`scanconv.render.FORMATS`).
-EXTENSIONS = {ext: fmt for fmt, spec in FORMATS.items() for ext in spec.extensions}
+def named_format(fmt: str, path: Path | None) -> str | None:
+    """The format the extension of ``path`` names (:data:`scanconv.render.EXTENSIONS`), or
+    ``None``: the one rule of format conflicts, for every command (answers and documents). A
+    ``--format`` that contradicts a ``.tex``, ``.csv``, ``.json``, ``.html``, ``.xml`` (Moodle
+    XML) or ``.gift`` file (a binding extension) is refused (exit 2, nothing written); ``.md``
+    and ``.txt`` files take any format.
+
+    >>> named_format("auto", Path("a.tex")), named_format("csv", Path("notes.md"))
+    ('latex', 'markdown')
+    """
+    named = EXTENSIONS.get(path.suffix.lower()) if path is not None else None
+    if named is not None and fmt not in ("auto", named) and FORMATS[named].binding:
+        fail(f"--output {path} is {named} by its extension, but --format is {fmt}")
+    return named
 
 
 def format_for_file(fmt: Format, path: Path | None) -> Format:
-    """The format of ``-o path``: the one ``--format`` names, else the extension's
-    (``answer.tex``: latex, ``a.csv``: csv, ``a.json``: json, ``a.md``: markdown, ``a.txt``:
-    plain, ``a.html``: html). A ``--format`` that contradicts a ``.tex``, ``.csv``, ``.json`` or
-    ``.html`` file is refused (exit 2, nothing written); ``.md`` and ``.txt`` files take any
-    format.
+    """The format of a single answer written to ``-o path``: the one ``--format`` names, else
+    the extension's if it names a single-answer format (``answer.tex``: latex, ``a.csv``: csv,
+    ``a.json``: json, ``a.md``: markdown, ``a.txt``: plain, ``a.html``: html), else ``auto``;
+    conflicts are refused by :func:`named_format`.
 
     >>> format_for_file(Format.auto, Path("answer.tex")).value
     'latex'
     >>> format_for_file(Format.csv, Path("notes.md")).value
     'csv'
     """
-    named = EXTENSIONS.get(path.suffix.lower()) if path is not None else None
-    if named is None or fmt is Format.auto:
-        return named or fmt
-    if fmt is not named and FORMATS[named].binding:
-        fail(f"--output {path} is {named.value} by its extension, but --format is {fmt.value}")
-    return fmt
+    named = named_format(fmt.value, path)
+    if fmt is not Format.auto or named is None or not FORMATS[named].renderer:
+        return fmt
+    return Format(named)
+
+
+def document_format(fmt: str, path: Path | None) -> str:
+    """The format of a document (a sheet, the exam book, a practice set) written to ``-o
+    path``: ``--format``, else the extension's if it names a document format, else markdown;
+    conflicts are refused by :func:`named_format`.
+
+    >>> document_format("auto", Path("key.tex")), document_format("json", None)
+    ('latex', 'json')
+    """
+    named = named_format(fmt, path)
+    if fmt != "auto":
+        return fmt
+    return named if named is not None and FORMATS[named].sheet else "markdown"
 
 
 def write_figures(solution: Solution, origin: Origin, svg: Path | None, png: Path | None) -> None:

@@ -20,20 +20,9 @@ from typing import Annotated, NamedTuple
 import typer
 
 from .application import app
-from .options import integer
-from .output import check_paths, fail, note, write_all
-from .sheet import (
-    SHEET_EXTENSIONS,
-    SheetFormat,
-    SheetFormatOpt,
-    SheetOutputOpt,
-    answer_questions,
-    pdf_file,
-    read_questions,
-    sheet_format,
-    text_file,
-    write_document,
-)
+from .options import DocumentFormatOpt, OutputOpt, integer
+from .output import check_paths, document_format, fail, note, write_all
+from .sheet import answer_questions, pdf_file, read_questions, text_file, write_document
 
 
 class Topic(str, Enum):
@@ -106,8 +95,8 @@ def practice(
             "integers) or hard (13-20 steps, negative coordinates).",
         ),
     ] = Difficulty.exam,
-    fmt: SheetFormatOpt = SheetFormat.auto,
-    output: SheetOutputOpt = None,
+    fmt: DocumentFormatOpt = "auto",
+    output: OutputOpt = None,
     key: Annotated[
         str | None,
         typer.Option(
@@ -141,8 +130,8 @@ def practice(
     ] = None,
 ) -> None:
     """Practice questions from a seed, as a worksheet and its answer key."""
-    seed = _checked(count, seed, output, key, questions, pdf)
-    docs = _documents(topic, count, seed, difficulty, fmt, output, key, pdf, standalone)
+    seed, name = _checked(count, seed, fmt, output, key, questions, pdf)
+    docs = _documents(topic, count, seed, difficulty, name, output, key, pdf, standalone)
     files = [pdf_file(pdf, docs.worksheet_tex)] if docs.worksheet_tex is not None and pdf else []
     if key is not None and docs.key_text is not None:
         files.append(
@@ -153,20 +142,21 @@ def practice(
     if output is not None:
         files.append(text_file(output, docs.worksheet))
     write_all(files)  # every file or none
-    if output is None and not (pdf is not None and fmt is SheetFormat.auto):
+    if output is None and not (pdf is not None and fmt == "auto"):
         write_document(docs.worksheet, None)  # unless only the PDF of the worksheet was asked for
 
 
 def _checked(
     count: int,
     seed: int | None,
+    fmt: str,
     output: Path | None,
     key: str | None,
     questions: str | None,
     pdf: str | None,
-) -> int:
-    """The seed (a new one, announced, when none is given), once the outputs and the count
-    are checked: every refusal before any work."""
+) -> tuple[int, str]:
+    """The seed (a new one, announced, when none is given) and the worksheet's format, once
+    the outputs, their formats and the count are checked: every refusal before any work."""
     from ..answers.practice import MAX_COUNT
 
     for name, value in (("--key", key), ("--questions", questions), ("--pdf", pdf)):
@@ -174,6 +164,11 @@ def _checked(
             fail(f"{name} needs a file name")
     outputs = [("--output", output), ("--key", key), ("--questions", questions), ("--pdf", pdf)]
     check_paths([], outputs)
+    name = document_format(fmt, output)
+    try:
+        _key_format(key or "")
+    except ValueError as err:
+        fail(str(err))
     if not 1 <= count <= MAX_COUNT:  # checked before a seed is chosen and announced
         fail(f"--count must be 1 to {MAX_COUNT} (got {count})")
     if seed is None:
@@ -183,7 +178,7 @@ def _checked(
         note(f"seed {seed} (give --seed {seed} for the same questions)")
     elif not 0 <= seed <= SEED_RANGE:
         fail(f"--seed must be 0 to {SEED_RANGE:,} (got {seed})")
-    return seed
+    return seed, name
 
 
 class _Documents(NamedTuple):
@@ -199,7 +194,7 @@ def _documents(
     count: int,
     seed: int,
     difficulty: Difficulty,
-    fmt: SheetFormat,
+    name: str,
     output: Path | None,
     key: str | None,
     pdf: str | None,
@@ -216,7 +211,6 @@ def _documents(
         text = question_file(chosen, title)
         sheet = read_questions(text, "practice")
         answered = answer_questions(sheet.questions, "practice")
-        name = sheet_format(fmt, output)
         worksheet = sheet_document(sheet, answered, "worksheet", name, standalone=standalone)
         worksheet_tex = None
         if pdf is not None:
@@ -238,17 +232,19 @@ def _documents(
 
 
 def _key_format(path: str) -> str:
-    """The format of the ``--key`` file, by its extension (markdown if it has none).
+    """The format of the ``--key`` file, by its extension (:data:`scanconv.render.EXTENSIONS`;
+    markdown if it has none).
 
     >>> _key_format("key.tex"), _key_format("KEY.PDF"), _key_format("key")
     ('latex', 'pdf', 'markdown')
     """
+    from ..render import EXTENSIONS, FORMATS, formats
+
     suffix = Path(path).suffix.lower()
     if suffix == ".pdf":
         return "pdf"
-    if suffix and suffix not in SHEET_EXTENSIONS:
-        raise ValueError(
-            f"--key {path}: unknown extension {suffix} "
-            "(.md, .tex, .json, .html, .txt, .pdf, .xml, .gift)"
-        )
-    return SHEET_EXTENSIONS.get(suffix, "markdown")
+    named = EXTENSIONS.get(suffix)
+    if suffix and (named is None or not FORMATS[named].sheet):
+        known = ", ".join(e for f in formats("document") for e in FORMATS[f].extensions[:1])
+        raise ValueError(f"--key {path}: unknown extension {suffix} ({known}, .pdf)")
+    return named or "markdown"

@@ -24,7 +24,6 @@ file are the sheet's.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from enum import Enum
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
@@ -43,7 +42,8 @@ from ..render import Options
 from ..render.sheet import Answered, Question, Sheet
 from .application import app
 from .budget import check_question
-from .output import Pending, check_paths, fail, note, write_all, write_atomic
+from .options import DocumentFormatOpt, OutputOpt
+from .output import Pending, check_paths, document_format, fail, note, write_all, write_atomic
 
 if TYPE_CHECKING:
     from ..core.records import Solution
@@ -108,73 +108,6 @@ def _answer_all(questions: Iterable[Question], source: str) -> list[Answered]:
 
 
 # --- the command ----------------------------------------------------------------------------
-
-
-class SheetFormat(str, Enum):
-    """The formats of a sheet."""
-
-    auto = "auto"
-    markdown = "markdown"
-    latex = "latex"
-    html = "html"
-    json = "json"
-    plain = "plain"
-    moodle = "moodle"
-    gift = "gift"
-
-
-SheetFormatOpt = Annotated[
-    SheetFormat,
-    typer.Option(
-        "--format",
-        "-f",
-        case_sensitive=False,
-        help="Output format; auto: from the --output file's extension, else markdown.",
-    ),
-]
-"""``--format`` of every document command (sheet, exam, practice), declared once."""
-
-SheetOutputOpt = Annotated[
-    Path | None,
-    typer.Option(
-        "--output",
-        "-o",
-        dir_okay=False,
-        help="Write to this file (atomically: complete or not at all) instead of stdout.",
-    ),
-]
-"""``--output`` of every document command, declared once."""
-
-#: The format a file's extension names.
-SHEET_EXTENSIONS = {
-    ".md": "markdown",
-    ".markdown": "markdown",
-    ".tex": "latex",
-    ".html": "html",
-    ".htm": "html",
-    ".json": "json",
-    ".txt": "plain",
-    ".xml": "moodle",
-    ".gift": "gift",
-}
-
-
-def sheet_format(fmt: SheetFormat, output: Path | None) -> str:
-    """The format of the sheet: ``--format``, else the output file's extension, else
-    markdown. A ``--format`` that contradicts a ``.tex``, ``.html`` or ``.json`` file is
-    refused, and so is one that contradicts a quiz file (``.xml``: Moodle XML, ``.gift``).
-
-    >>> sheet_format(SheetFormat.auto, Path("key.tex")), sheet_format(SheetFormat.json, None)
-    ('latex', 'json')
-    """
-    named = SHEET_EXTENSIONS.get(output.suffix.lower()) if output is not None else None
-    if fmt is SheetFormat.auto:
-        return named or "markdown"
-    if named in ("latex", "html", "json", "moodle", "gift") and named != fmt.value:
-        raise ValueError(
-            f"--output {output} is {named} by its extension, but --format is {fmt.value}"
-        )
-    return str(fmt.value)
 
 
 def build(path: str) -> tuple[Sheet, list[Answered]]:
@@ -274,8 +207,8 @@ def sheet(
             "or the answer key (the default).",
         ),
     ] = False,
-    fmt: SheetFormatOpt = SheetFormat.auto,
-    output: SheetOutputOpt = None,
+    fmt: DocumentFormatOpt = "auto",
+    output: OutputOpt = None,
     standalone: Annotated[
         bool,
         typer.Option(
@@ -299,8 +232,8 @@ def sheet(
     if pdf == "":
         fail("--pdf needs a file name")
     check_paths([("QUESTIONS", questions)], [("--output", output), ("--pdf", pdf)])
+    name = document_format(fmt, output)
     try:
-        name = sheet_format(fmt, output)
         sheet, answered = build(questions)
         notices: list[str] = []
         text = sheet_document(sheet, answered, kind, name, standalone=standalone, notices=notices)
@@ -309,7 +242,7 @@ def sheet(
             latex = sheet_document(sheet, answered, kind, "latex", standalone=True)
     except ValueError as err:
         fail(" ".join(str(err).split()))
-    write_outputs(text, output, latex, pdf, quiet=fmt is SheetFormat.auto)
+    write_outputs(text, output, latex, pdf, quiet=fmt == "auto")
     for message in dict.fromkeys(notices):
         note(message)
 

@@ -220,10 +220,10 @@ def ascii_text(s: str) -> str:
     if not _FROM_SUP.keys().isdisjoint(s):
         s = _runs(s, _FROM_SUP, _sup_ascii)
     if _NAMES.keys().isdisjoint(s):  # no name that may need a space after it: one table
-        out = s.translate(_ASCII_TABLE)
-        if not out.isascii():  # a character with no ASCII form
-            out = "".join(c if c.isascii() else "?" for c in out)
-        return out.translate(_UNSAFE_TO_ASK)
+        text = s.translate(_ASCII_TABLE)
+        if not text.isascii():  # a character with no ASCII form
+            text = "".join(c if c.isascii() else "?" for c in text)
+        return text.translate(_UNSAFE_TO_ASK)
     out = []
     for i, ch in enumerate(s):
         word = ch if ch.isascii() else _ASCII.get(ch, "?")

@@ -27,6 +27,35 @@ class Title(NamedTuple):
     """The answer's one-line heading, in ASCII."""
 
     text: str
+    level: int = 2
+    """Its heading's level: 2 for an answer alone, one deeper under a :class:`Question`'s
+    heading (a format with fewer levels maps it to its own)."""
+
+
+class Question(NamedTuple):
+    """A question of a document (a sheet, the exam book, a practice set), above its answer:
+    its number, marks, wording and the command line that answers it."""
+
+    number: int
+    marks: int | None = None
+    wording: str = ""
+    """The question in words, as the question file gives it; ``""``: none shown."""
+    command: str = ""
+    """The command line that answers it (``scanconv line 2 2 10 6``); ``""``: not shown (a
+    worksheet)."""
+    level: int = 2
+    """Its heading's level (3 under the document's sections)."""
+
+    @property
+    def heading(self) -> str:
+        """The heading's text.
+
+        >>> Question(3, 4).heading, Question(1, 1).heading, Question(2).heading
+        ('Question 3 (4 marks)', 'Question 1 (1 mark)', 'Question 2')
+        """
+        if self.marks is None:
+            return f"Question {self.number}"
+        return f"Question {self.number} ({self.marks} mark{'' if self.marks == 1 else 's'})"
 
 
 class Given(NamedTuple):
@@ -150,7 +179,7 @@ class Drawing(NamedTuple):
     figure: Figure
 
 
-Block = Title | Given | Working | Notes | StepTable | Table | Pixels | Drawing
+Block = Question | Title | Given | Working | Notes | StepTable | Table | Pixels | Drawing
 """Any block of a document."""
 
 

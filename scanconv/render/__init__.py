@@ -1,10 +1,12 @@
 """Renderers: turn an answer's :class:`~scanconv.document.Document` (or the
 :class:`~scanconv.core.records.Solution` it is built from) into output, without printing.
 
-:func:`render` is the one dispatch point for ``--format``; :data:`FORMATS` declares every
-format once, and each format is one mapping from the document's block types to output
-(``text.PLAIN``, ``text.MARKDOWN``, ``latex.LATEX``, ``terminal.RICH``, ``html.HTML``; csv and
-json in :mod:`.data`). Every renderer is a generator that
+:data:`FORMATS` declares every format once, single answers and documents (sheets, the exam
+book, practice sets, quiz files) alike. :func:`render` is the one dispatch point for a single
+answer's ``--format`` (:func:`scanconv.render.sheet.sheet_document` for a document's), and each
+format is one mapping from the document's block types to output (``text.PLAIN``,
+``text.MARKDOWN``, ``latex.LATEX``, ``terminal.RICH``, ``html.HTML``; csv and json in
+:mod:`.data`). Every renderer is a generator that
 yields text chunks for stdout (each ending in a newline), :class:`Notice` objects for stderr,
 and, for the ``rich`` format only, rich renderables. The CLI writes them out; nothing here
 prints, and rich is imported only by the ``rich`` renderer.
@@ -25,7 +27,9 @@ else:
 
 
 class Format(str, Enum):
-    """Output formats. ``auto`` is resolved by the CLI before :func:`render` is called."""
+    """The formats of a single answer: ``auto`` and every :data:`FORMATS` entry with a
+    renderer (a test holds the two together). ``auto`` is resolved by the CLI before
+    :func:`render` is called."""
 
     auto = "auto"
     rich = "rich"
@@ -38,42 +42,94 @@ class Format(str, Enum):
 
 
 class Spec(NamedTuple):
-    """What a format is, beside its renderer: one entry of :data:`FORMATS`."""
+    """What a format is and what it writes: one entry of :data:`FORMATS`."""
 
-    renderer: str
-    """``module:function`` in :mod:`scanconv.render`, called ``(document, options)`` and
-    yielding chunks; imported on first use (start-up time)."""
+    renderer: str = ""
+    """``module:function`` in :mod:`scanconv.render` writing a single answer, called
+    ``(document, options)`` and yielding chunks; imported on first use (start-up time).
+    ``""``: it writes no single answer (a quiz file)."""
     extensions: tuple[str, ...] = ()
-    """The file extensions that name it (``-o answer.tex``)."""
+    """The file extensions that name it (``-o answer.tex``), for every command."""
     binding: bool = False
-    """A file whose extension names it refuses a ``--format`` that says otherwise."""
+    """A file whose extension names it refuses a ``--format`` that says otherwise (every
+    command: answers and documents alike)."""
     row_cost: float = 100.0
     """Microseconds a table row, for a method the measured costs do not list (the budget)."""
     matrix_cells: int | None = None
     """Most cells of a matrix answer it prints; ``None``: as many as csv and json."""
     table_rows: int | None = None
     """Most step-table rows it prints; ``None``: the budget's limit for every format."""
-    document: bool = False
-    """A sheet, exam book or practice set may be written in it (the budget costs a
-    document's questions in the costliest such format)."""
+    sheet: str = ""
+    """``module:function`` in :mod:`scanconv.render` writing a whole document (a sheet, the
+    exam book, a practice set), called ``(sheet, answered, kind, standalone)`` and yielding
+    text and :class:`Notice` chunks (:func:`scanconv.render.sheet.sheet_document`); each
+    answer in it goes through a single-answer mapping. ``""``: no documents in it."""
     streams: bool = False
     """It streams at a few microseconds a cell: a budget refusal points to it."""
 
+    @property
+    def serves(self) -> tuple[str, ...]:
+        """What it writes: ``"answer"`` (a single answer), ``"document"`` (a sheet, exam
+        book or practice set), or both.
 
-FORMATS: dict[Format, Spec] = {
-    Format.rich: Spec("terminal:render_rich", (), False, 3000.0, 256 * 256, 10_000),
-    Format.latex: Spec("latex:render_latex", (".tex",), True, 100.0, 256 * 256, document=True),
-    Format.markdown: Spec(
-        "text:render_markdown", (".md", ".markdown"), False, 90.0, 256 * 256, document=True
+        >>> FORMATS["latex"].serves, FORMATS["csv"].serves, FORMATS["gift"].serves
+        (('answer', 'document'), ('answer',), ('document',))
+        """
+        return ("answer",) * bool(self.renderer) + ("document",) * bool(self.sheet)
+
+
+FORMATS: dict[str, Spec] = {
+    "rich": Spec("terminal:render_rich", (), False, 3000.0, 256 * 256, 10_000),
+    "latex": Spec(
+        "latex:render_latex", (".tex",), True, 100.0, 256 * 256, sheet="sheet_latex:latex_sheet"
     ),
-    Format.plain: Spec("text:render_plain", (".txt",), False, 60.0, 1024 * 1024, document=True),
-    Format.csv: Spec("data:render_csv", (".csv",), True, 20.0, streams=True),
-    Format.json: Spec("data:render_json", (".json",), True, 60.0, document=True, streams=True),
-    Format.html: Spec("html:render_html", (".html", ".htm"), True, 150.0, document=True),
+    "markdown": Spec(
+        "text:render_markdown",
+        (".md", ".markdown"),
+        False,
+        90.0,
+        256 * 256,
+        sheet="sheet:markdown_sheet",
+    ),
+    "plain": Spec(
+        "text:render_plain", (".txt",), False, 60.0, 1024 * 1024, sheet="sheet:plain_sheet"
+    ),
+    "csv": Spec("data:render_csv", (".csv",), True, 20.0, streams=True),
+    "json": Spec(
+        "data:render_json", (".json",), True, 60.0, sheet="sheet:json_sheet", streams=True
+    ),
+    "html": Spec("html:render_html", (".html", ".htm"), True, 150.0, sheet="sheet_html:html_sheet"),
+    "moodle": Spec(extensions=(".xml",), binding=True, sheet="moodle:moodle_sheet"),
+    "gift": Spec(extensions=(".gift",), binding=True, sheet="gift:gift_sheet"),
 }
-"""Every format but ``auto``, declared once: its renderer (a mapping from the document's
-blocks), its file extensions and its budget. The CLI's extension map and the work budget read
-this table; a new format is its :class:`Format` member, its entry here and its module."""
+"""Every format, declared once by its name (``auto`` aside): what it writes (its single-answer
+renderer, a mapping from the document's blocks, and its document writer), its file
+extensions, whether they bind, and its budget. The :class:`Format` members are its
+single-answer formats; the CLI's ``--format`` choices, its extension map (:data:`EXTENSIONS`)
+and its one rule of format conflicts, and the work budget read this table. A new format is
+its module and its entry here (and a :class:`Format` member if it writes single answers)."""
+
+EXTENSIONS: dict[str, str] = {
+    ext: name for name, spec in FORMATS.items() for ext in spec.extensions
+}
+"""The format a file's extension names, for every command (``.tex``: ``latex``, ``.xml``:
+``moodle``)."""
+
+
+def formats(serving: str) -> tuple[str, ...]:
+    """The names of the formats that write ``serving`` (``"answer"`` or ``"document"``), in
+    the order of :data:`FORMATS`.
+
+    >>> formats("document")
+    ('latex', 'markdown', 'plain', 'json', 'html', 'moodle', 'gift')
+    """
+    return tuple(name for name, spec in FORMATS.items() if serving in spec.serves)
+
+
+def load(entry: str) -> Any:
+    """The function an entry of :data:`FORMATS` names (``"text:render_plain"``), imported on
+    first use (:func:`scanconv.core.lazy.load`: start-up time)."""
+    return lazy.load(f"{__name__}.{entry}")
 
 
 class Options(NamedTuple):
@@ -126,6 +182,5 @@ def render(
     options = options or Options()
     if fmt is Format.auto:
         raise ValueError("Format.auto must be resolved before rendering")
-    renderer: Callable[[Document, Options], Iterator[Chunk]]
-    renderer = lazy.load(f"{__name__}.{FORMATS[fmt].renderer}")
+    renderer: Callable[[Document, Options], Iterator[Chunk]] = load(FORMATS[fmt].renderer)
     return renderer(document.as_document(solution), options)

@@ -39,13 +39,17 @@ if TYPE_CHECKING:
     from ..core.records import Solution
 
 MATRIX_CELLS: dict[Format, int] = {
-    f: spec.matrix_cells for f, spec in FORMATS.items() if spec.matrix_cells is not None
+    Format(f): spec.matrix_cells
+    for f, spec in FORMATS.items()
+    if spec.renderer and spec.matrix_cells is not None
 }
 """Most cells of a matrix answer (``sample``, ``image ramp``) a format prints; csv and json
 print up to :data:`~scanconv.algorithms.image_limits.MAX_CELLS`."""
 
 TABLE_ROWS: dict[Format, int] = {
-    f: spec.table_rows for f, spec in FORMATS.items() if spec.table_rows is not None
+    Format(f): spec.table_rows
+    for f, spec in FORMATS.items()
+    if spec.renderer and spec.table_rows is not None
 }
 """Most step-table rows a format prints beyond :data:`ALL_ROWS`; the others stream up to it."""
 
@@ -71,8 +75,8 @@ SHEET_SECONDS = 30
 """Most CPU seconds of estimated work of a whole document, each question costed in the
 costliest document format (:data:`DOCUMENT`)."""
 
-DOCUMENT = tuple(f for f, spec in FORMATS.items() if spec.document)
-"""The formats a document is written in."""
+DOCUMENT = tuple(Format(f) for f, spec in FORMATS.items() if spec.renderer and spec.sheet)
+"""The formats a document's answers are written in (a quiz file's feedback is ``plain``)."""
 
 ROWS_IN_MEMORY = 500_000
 """Most rows :meth:`scanconv.display.Answer.rows` builds as a list of dictionaries (about
@@ -83,13 +87,13 @@ LONG_TABLES = ("quantize",)
 2^24 rows (0.5 us a row), and those rows are the answer (with ``--range`` each row carries
 exact fractions: ``quantize/range`` keeps the budget of every format)."""
 
-DEFAULT_COSTS = {f.value: spec.row_cost for f, spec in FORMATS.items()}
+DEFAULT_COSTS = {f: spec.row_cost for f, spec in FORMATS.items() if spec.renderer}
 """Microseconds a row for a command/method missing from :data:`~scanconv.render.work.COSTS`."""
 
 MIN_COST = 0.2
 """The least cost of a row, in microseconds (a table printed without its rows still costs)."""
 
-UNLIMITED = tuple(f for f, spec in FORMATS.items() if spec.streams)
+UNLIMITED = tuple(Format(f) for f, spec in FORMATS.items() if spec.streams)
 """The formats a budget refusal points to: they stream at a few microseconds a cell."""
 
 

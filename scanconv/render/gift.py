@@ -21,10 +21,15 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator, Sequence
+from typing import TYPE_CHECKING
 
 from ..core.working import visible
-from .lms import Gap, GapTable, Piece, QuizQuestion
+from .lms import Gap, GapTable, Piece, QuizQuestion, quiz
 from .mathml import esc
+
+if TYPE_CHECKING:
+    from . import Notice
+    from .sheet import Answered, Sheet
 
 HINTS = {
     "number": "A decimal (to 3 decimals or more where it is not exact).",
@@ -120,3 +125,11 @@ def gift(questions: Sequence[QuizQuestion]) -> str:
             feedback = f"<pre>{gift_text(q.feedback)}</pre>"
             out.append(f"::{gift_plain(q.name)}::[html]{_stem(q)}{{\n####[html]{feedback}}}\n\n")
     return "".join(out)
+
+
+def gift_sheet(
+    sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
+) -> Iterator[str | Notice]:
+    """The ``gift`` document writer (:data:`scanconv.render.FORMATS`): the sheet as a GIFT
+    quiz (a key and a worksheet are the same quiz)."""
+    return quiz(sheet, answered, gift)

@@ -60,6 +60,7 @@ from ..document import (
     Given,
     Notes,
     Pixels,
+    Question,
     StepTable,
     Table,
     Title,
@@ -305,7 +306,20 @@ def _nothing(block: Any, page: _Page) -> str:
     return ""
 
 
+def question_html(block: Question, page: _Page | None = None) -> str:
+    """A question's heading, its wording and its command line (a sheet's, above its answer's
+    section)."""
+    h = f"h{block.level}"
+    out = f'<{h} class="sc-q">{esc(block.heading)}</{h}>\n'
+    if block.wording:
+        out += f'<p class="sc-wording">{esc(block.wording)}</p>\n'
+    if block.command:
+        out += f"<p><code>{esc(block.command)}</code></p>\n"
+    return out
+
+
 HTML: dict[type, Callable[[Any, _Page], str]] = {
+    Question: question_html,
     Title: _nothing,  # the section's heading (answer_section)
     Given: _given,
     Working: _working,

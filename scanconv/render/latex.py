@@ -35,6 +35,7 @@ from ..document import (
     Given,
     Notes,
     Pixels,
+    Question,
     StepTable,
     Table,
     Title,
@@ -370,7 +371,27 @@ def render_latex(answer: Solution | Document, options: Options) -> Iterator[str 
 
 
 def _title(block: Title, options: Options, doc: Document) -> Iterator[str]:
-    yield f"\\subsection*{{{tex_text(block.text)}}}\n\n"
+    unit = "subsection" if block.level <= 2 else "subsubsection"
+    yield f"\\{unit}*{{{tex_text(block.text)}}}\n\n"
+
+
+def _question(block: Question, options: Options, doc: Document) -> Iterator[str]:
+    """A question's heading (a ``\\subsection*``: a document's sections are
+    ``\\section*``), its wording and its command line."""
+    yield f"\\subsection*{{{tex_text(block.heading)}}}\n"
+    if block.wording:
+        yield f"\\emph{{{tex_text(block.wording)}}}\\par\\medskip\n"
+    if block.command:
+        yield tex_command(block.command) + "\n\n"
+
+
+def tex_command(command: str) -> str:
+    r"""A command line in typewriter type, breakable at its spaces, every hyphen kept.
+
+    >>> tex_command("scanconv sample 'x_1 % 2' --size 4")
+    "{\\raggedright\\ttfamily scanconv sample 'x\\_1 \\% 2' -{}-size 4\\par}"
+    """
+    return "{\\raggedright\\ttfamily " + tex_text(command) + "\\par}"
 
 
 def _given(block: Given, options: Options, doc: Document) -> Iterator[str]:
@@ -443,6 +464,7 @@ def _drawing(block: Drawing, options: Options, doc: Document) -> Iterator[str]:
 
 
 LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = {
+    Question: _question,
     Title: _title,
     Given: _given,
     Working: _working,

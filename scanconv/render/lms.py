@@ -28,12 +28,14 @@ essay question with the key as its feedback (the last with a notice).
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from decimal import Decimal
 from fractions import Fraction
 from typing import Any, NamedTuple
 
 from ..core.records import Column, Move, Solution, step_getter
+from ..document import Document, Given, StepTable, Table, Working, as_document
+from . import Notice
 from .sheet import Answered, Sheet, _Guard
 
 TOLERANCE = "0.0005"
@@ -257,22 +259,26 @@ def _gap_table(
     return GapTable(title, tuple(c.text for c in columns), tuple(out))
 
 
-def gap_tables(solution: Solution, limit: int = MAX_GAPS) -> tuple[GapTable, ...] | None:
-    """The answer's tables with their answer cells as gaps (the module docstring's rules);
-    ``None`` when they would hold more than ``limit`` gaps (found out without building
-    more)."""
+def gap_tables(answer: Solution | Document, limit: int = MAX_GAPS) -> tuple[GapTable, ...] | None:
+    """The answer's tables (its document's :class:`~scanconv.document.StepTable` and
+    :class:`~scanconv.document.Table` blocks) with their answer cells as gaps (the module
+    docstring's rules); ``None`` when they would hold more than ``limit`` gaps (found out
+    without building more)."""
     from .sheet import LABELS
 
+    doc = as_document(answer)
     room = [limit]
     tables = []
+    step: StepTable | None = doc.get(StepTable)
     try:
-        if solution.columns:
-            get = step_getter(solution.columns, solution.extra_keys)
-            labelled = solution.columns[0].key in LABELS
-            rows = (get(step) for step in solution.steps())
-            tables.append(_gap_table("Step table", solution.columns, rows, labelled, room))
-        for table in solution.tables:
-            if not solution.show_steps and table.columns and table.columns[0].key == "k":
+        if step is not None and step.columns:
+            get = step_getter(step.columns, step.extra_keys)
+            labelled = step.columns[0].key in LABELS
+            rows = (get(s) for s in step.steps())
+            tables.append(_gap_table("Step table", step.columns, rows, labelled, room))
+        for table in doc.every(Table):
+            split = step is not None and not step.shown
+            if split and table.columns and table.columns[0].key == "k":
                 continue  # the step table, split (the ellipse's regions): asked once
             tables.append(_gap_table(table.title, table.columns, table.rows(), True, room))
     except _TooMany:
@@ -291,17 +297,17 @@ def gaps(tables: Iterable[GapTable]) -> Iterator[Gap]:
 # --- questions ----------------------------------------------------------------------------------
 
 
-def quiz_document(
-    sheet: Sheet, answered: Sequence[Answered], fmt: str, notices: list[str] | None = None
-) -> str:
-    """The sheet as a quiz file, ``fmt`` ``moodle`` (Moodle XML) or ``gift``: the one entry
-    of :func:`scanconv.render.sheet.sheet_document` for both (a key and a worksheet are the
-    same quiz: the LMS holds the answers and shows them after the attempt)."""
-    from .gift import gift
-    from .moodle import moodle_xml
-
+def quiz(
+    sheet: Sheet, answered: Sequence[Answered], write: Callable[[Sequence[QuizQuestion]], str]
+) -> Iterator[str | Notice]:
+    """The sheet as a quiz file written by ``write`` (:func:`scanconv.render.moodle.moodle_xml`
+    or :func:`scanconv.render.gift.gift`), then the notices: what the ``moodle`` and ``gift``
+    document writers share (a key and a worksheet are the same quiz: the LMS holds the
+    answers and shows them after the attempt)."""
+    notices: list[str] = []
     questions = quiz_questions(sheet, answered, notices)
-    return moodle_xml(questions) if fmt == "moodle" else gift(questions)
+    yield write(questions)
+    yield from (Notice(n) for n in notices)
 
 
 def quiz_questions(
@@ -318,20 +324,23 @@ def quiz_questions(
 
 
 def _quiz_question(title: str, a: Answered, notices: list[str] | None) -> QuizQuestion:
-    from . import Format, Notice, render
+    """One quiz question, from the answer's document: its title, Given and Working blocks,
+    its tables (:func:`gap_tables`) and the ``plain`` mapping's key as the feedback."""
+    from . import Format, render
     from .sheet import wording
 
     q = a.question
+    doc = as_document(a.solution)
     key: list[str] = []
-    for chunk in render(a.solution, Format("plain"), a.options):
+    for chunk in render(doc, Format("plain"), a.options):
         if isinstance(chunk, Notice):
             if notices is not None:
                 notices.append(f"question {q.number}: {chunk.message}")
         else:
             key.append(chunk)
     tables: tuple[GapTable, ...] | None = ()
-    if a.solution.primitive != "theory":
-        tables = gap_tables(a.solution, MAX_GAPS)
+    if doc.primitive != "theory":
+        tables = gap_tables(doc, MAX_GAPS)
     if tables is None:
         if notices is not None:
             notices.append(
@@ -341,17 +350,19 @@ def _quiz_question(title: str, a: Answered, notices: list[str] | None) -> QuizQu
         tables = ()
     if not any(True for _ in gaps(tables)):
         tables = ()
-    name = f"Q{q.number} {a.solution.title}"
+    name = f"Q{q.number} {doc.title}"
     if title:
         name = f"{' '.join(title.split())}: {name}"
+    given: Given | None = doc.get(Given)
+    working: Working | None = doc.get(Working)
     return QuizQuestion(
         name=name[:250],
         wording=wording(a),
-        given=tuple(g.text for g in a.solution.given),
+        given=tuple(g.text for g in given.quantities) if given is not None else (),
         tables=tables,
         feedback=f"$ {q.command}\n\n" + "".join(key).rstrip("\n") + "\n",
         marks=q.marks,
-        working=(f"$ {q.command}", *(d.text for d in a.solution.derived)),
+        working=(f"$ {q.command}", *(d.text for d in (working.lines if working else ()))),
     )
 
 

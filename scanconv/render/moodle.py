@@ -21,10 +21,15 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator, Sequence
+from typing import TYPE_CHECKING
 
 from ..core.working import UNSAFE
-from .lms import INSTRUCTIONS, Gap, GapTable, Piece, QuizQuestion
+from .lms import INSTRUCTIONS, Gap, GapTable, Piece, QuizQuestion, quiz
 from .mathml import esc
+
+if TYPE_CHECKING:
+    from . import Notice
+    from .sheet import Answered, Sheet
 
 _XML_ILLEGAL = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
 
@@ -142,3 +147,11 @@ def moodle_xml(questions: Sequence[QuizQuestion]) -> str:
     """The quiz file: every question, in order."""
     head = '<?xml version="1.0" encoding="UTF-8"?>\n<quiz>\n'
     return head + "".join(_question(q) for q in questions) + "</quiz>\n"
+
+
+def moodle_sheet(
+    sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
+) -> Iterator[str | Notice]:
+    """The ``moodle`` document writer (:data:`scanconv.render.FORMATS`): the sheet as a
+    Moodle XML quiz (a key and a worksheet are the same quiz)."""
+    return quiz(sheet, answered, moodle_xml)

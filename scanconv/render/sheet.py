@@ -1,13 +1,16 @@
 """Sheets: many answers in one document, as an answer key or as a worksheet for students.
 
 :func:`sheet_document` renders a whole sheet in memory (so nothing is written when a question
-turns out bad) in ``markdown``, ``plain``, ``latex`` (a fragment, or a complete document with
-``standalone``; written by :mod:`scanconv.render.sheet_latex`), ``json`` and ``html``, and as
-a quiz file for an LMS, ``moodle`` (Moodle XML) or ``gift`` (:mod:`scanconv.render.lms`). A key is each question's number,
-marks, wording and command line, then its full worked answer, as the single-answer renderers
-write it. A worksheet is the question in words, the given values and, for each table of the
-answer, an empty table with the answer's columns and number of rows (the ``k`` column, which
-only numbers the rows, filled in); nothing of the answer itself.
+turns out bad) in any format whose :data:`scanconv.render.FORMATS` entry names a document
+writer (its ``sheet``): ``markdown`` and ``plain`` and ``json`` here, ``latex`` (a fragment,
+or a complete document with ``standalone``) in :mod:`scanconv.render.sheet_latex`, ``html`` in
+:mod:`scanconv.render.sheet_html`, and the quiz files for an LMS, ``moodle`` (Moodle XML) and
+``gift`` (:mod:`scanconv.render.lms`). A sheet is a list of documents: a key is, for each
+question, its answer's document headed by a :class:`~scanconv.document.Question` block (its
+number, marks, wording and command line: :func:`key_document`), rendered by the format's own
+mapping, as a single answer is. A worksheet is the question in words, the given values and,
+for each table of the answer, an empty table with the answer's columns and number of rows (the
+``k`` column, which only numbers the rows, filled in); nothing of the answer itself.
 
 The records :class:`Question`, :class:`Sheet` and :class:`Answered` are what
 :mod:`scanconv.cli.sheet` reads a question file into. Text from the question file (the title,
@@ -17,14 +20,15 @@ sections, wording, command lines) is escaped for every format.
 from __future__ import annotations
 
 import json
-import re
 import shlex
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from itertools import chain
 from typing import NamedTuple
 
 from ..core.records import Column, Quantity, Solution
-from ..core.working import ascii_text, json_visible, visible
-from ..document import Given, as_document
+from ..core.working import ascii_text, json_visible
+from ..document import Document, Given, Title, as_document
+from ..document import Question as QuestionBlock
 from . import Notice, Options
 from .cells import numeric_column
 from .text import md_text
@@ -84,7 +88,6 @@ class Answered(NamedTuple):
 
 
 KINDS = ("key", "worksheet")
-FORMATS = ("markdown", "plain", "latex", "json", "html", "moodle", "gift")
 
 
 def sheet_document(
@@ -96,28 +99,19 @@ def sheet_document(
     standalone: bool = False,
     notices: list[str] | None = None,
 ) -> str:
-    """The whole sheet as one string. A ``ValueError`` raised while an answer is worked out
-    names the question's line (``SOURCE:LINE: ...``). Notices (a grid left out) are added to
-    ``notices``, prefixed with the question's number.
+    """The whole sheet as one string, in the document format ``fmt`` (its writer is its
+    :data:`scanconv.render.FORMATS` entry's ``sheet``). A ``ValueError`` raised while an
+    answer is worked out names the question's line (``SOURCE:LINE: ...``). Notices (a grid
+    left out) are added to ``notices``, prefixed with the question's number.
     """
+    from . import FORMATS, formats, load
+
     if kind not in KINDS:
         raise ValueError(f"unknown sheet kind {kind!r}: key or worksheet")
-    if fmt in ("moodle", "gift"):  # a quiz file for an LMS: scanconv.render.lms
-        from .lms import quiz_document
-
-        return quiz_document(sheet, answered, fmt, notices)
-    if fmt == "json":
-        return _json(sheet, answered, kind)
-    if fmt == "html":
-        return _html(sheet, answered, kind, notices)
-    if fmt == "latex":
-        from .sheet_latex import latex_sheet
-
-        writer = latex_sheet
-    elif fmt in ("markdown", "plain"):
-        writer = _markdown if fmt == "markdown" else _plain
-    else:
-        raise ValueError(f"unknown sheet format {fmt!r}: one of {', '.join(FORMATS)}")
+    spec = FORMATS.get(fmt)
+    if spec is None or not spec.sheet:
+        raise ValueError(f"unknown sheet format {fmt!r}: one of {', '.join(formats('document'))}")
+    writer: SheetWriter = load(spec.sheet)
     out: list[str] = []
     for chunk in writer(sheet, answered, kind, standalone):
         if isinstance(chunk, Notice):
@@ -126,6 +120,11 @@ def sheet_document(
         else:
             out.append(chunk)
     return "".join(out)
+
+
+SheetWriter = Callable[[Sheet, Sequence[Answered], str, bool], Iterator["str | Notice"]]
+"""A document format's writer (its :data:`scanconv.render.FORMATS` entry's ``sheet``):
+``(sheet, answered, kind, standalone)`` to text chunks and notices."""
 
 
 class _Guard:
@@ -143,20 +142,52 @@ class _Guard:
             raise ValueError(f"{self.where}: {' '.join(str(err).split())}") from None
 
 
-def _answer_chunks(a: Answered, fmt: str) -> Iterator[str | Notice]:
+def question_block(a: Answered, level: int = 2, *, key: bool = True) -> QuestionBlock:
+    """The :class:`~scanconv.document.Question` block of ``a``: its number and marks and, on a
+    key, its wording and command line (a worksheet words the question its own way)."""
+    q = a.question
+    if not key:
+        return QuestionBlock(q.number, q.marks, level=level)
+    return QuestionBlock(q.number, q.marks, q.wording, q.command, level)
+
+
+def key_document(a: Answered, level: int = 2, *, question: bool = True) -> Document:
+    """The answer's document as a key shows it: its :class:`~scanconv.document.Question`
+    block first (with ``question``) and its title one level under the question's."""
+    doc = as_document(a.solution)
+    blocks = tuple(b._replace(level=level + 1) if isinstance(b, Title) else b for b in doc.blocks)
+    head = (question_block(a, level),) if question else ()
+    return doc._replace(blocks=head + blocks)
+
+
+def _answer_chunks(a: Answered, fmt: str, document: Document) -> Iterator[str | Notice]:
+    """``document`` (a key's answer) through the mapping of ``fmt``, its notices naming the
+    question."""
     from . import Format, render
 
-    for chunk in render(a.solution, Format(fmt), a.options):
+    for chunk in render(document, Format(fmt), a.options):
         if isinstance(chunk, Notice):
             yield Notice(f"question {a.question.number}: {chunk.message}", chunk.ways)
         else:
             yield chunk
 
 
-def _marks(marks: int | None) -> str:
-    if marks is None:
-        return ""
-    return f" ({marks} mark{'' if marks == 1 else 's'})"
+def each_question(
+    sheet: Sheet,
+    answered: Sequence[Answered],
+    section: Callable[[str], str],
+    body: Callable[[Answered], Iterable[str | Notice]],
+) -> Iterator[str | Notice]:
+    """The questions in order: the ``section`` heading where a section starts, then each
+    question's ``body``; an error in it names the question's line (:class:`_Guard`)."""
+    current = ""
+    for a in answered:
+        q = a.question
+        with _Guard(sheet, q):
+            if q.section and q.section != current:
+                current = q.section
+                yield section(current)
+            yield from body(a)
 
 
 def _intro(sheet: Sheet, kind: str) -> str:
@@ -246,18 +277,6 @@ def _blank_rows(blank: Blank) -> Iterator[list[str]]:
 # --- markdown and plain -------------------------------------------------------------------------
 
 
-def md_code(text: str) -> str:
-    """``text`` as an inline code span, fenced with more backticks than it holds.
-
-    >>> md_code("a ` b")
-    '`` a ` b ``'
-    """
-    runs = [len(r) for r in re.findall(r"`+", text)]
-    fence = "`" * (max(runs, default=0) + 1)
-    pad = " " if runs or text.startswith("`") else ""
-    return f"{fence}{pad}{visible(text)}{pad}{fence}"
-
-
 def _levels(sheet: Sheet) -> tuple[int, int]:
     """The heading level of a section and of a question (questions under sections go one
     deeper)."""
@@ -271,38 +290,26 @@ def _parts(blank: Blank) -> list[tuple[list[int], str]]:
     return [(list(range(len(blank.columns))), blank.title)]
 
 
-def _markdown(
+def markdown_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
+    """The sheet in Markdown: each question and its answer through the ``markdown`` mapping
+    (the answer's title one level under the question's)."""
+    from .text import MARKDOWN
+
     section_level, level = _levels(sheet)
     if sheet.title:
         yield f"# {md_text(' '.join(sheet.title.split()))}\n\n{_intro(sheet, kind)}\n\n"
-    section = ""
-    for a in answered:
-        q = a.question
-        with _Guard(sheet, q):
-            if q.section and q.section != section:
-                section = q.section
-                yield f"{'#' * section_level} {md_text(section)}\n\n"
-            yield f"{'#' * level} Question {q.number}{_marks(q.marks)}\n\n"
-            if kind == "key":
-                yield from _md_key(a, level)
-            else:
-                yield from _md_worksheet(a)
 
+    def body(a: Answered) -> Iterator[str | Notice]:
+        if kind == "key":
+            return _answer_chunks(a, "markdown", key_document(a, level))
+        head = MARKDOWN[QuestionBlock](question_block(a, level, key=False), a.options, [])
+        return chain(head, _md_worksheet(a))
 
-def _md_key(a: Answered, level: int) -> Iterator[str | Notice]:
-    """A key's question in Markdown: its wording, its command, its answer (the ``markdown``
-    format's mapping, the answer's title one level under the question's)."""
-    if a.question.wording:
-        yield f"> {md_text(a.question.wording)}\n\n"
-    yield md_code(a.question.command) + "\n\n"
-    first = True
-    for chunk in _answer_chunks(a, "markdown"):
-        if first and isinstance(chunk, str) and chunk.startswith("## "):
-            chunk = "#" * (level + 1) + chunk[2:]
-        first = False
-        yield chunk
+    yield from each_question(
+        sheet, answered, lambda s: f"{'#' * section_level} {md_text(s)}\n\n", body
+    )
 
 
 def _md_worksheet(a: Answered) -> Iterator[str]:
@@ -336,48 +343,50 @@ def given_of(a: Answered) -> tuple[Quantity, ...]:
     return given.quantities if given is not None else ()
 
 
-def _plain(
+def plain_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
-    from .text import table_lines
+    """The sheet in plain text: each question and its answer through the ``plain`` mapping."""
+    from .text import PLAIN
 
     if sheet.title:
         title = ascii_text(" ".join(sheet.title.split()))
         yield f"{title}\n{'#' * len(title)}\n\n{_intro(sheet, kind)}\n\n"
-    section = ""
-    for a in answered:
-        q = a.question
-        with _Guard(sheet, q):
-            if q.section and q.section != section:
-                section = q.section
-                yield f"{ascii_text(section)}\n{'*' * len(ascii_text(section))}\n\n"
-            head = f"Question {q.number}{_marks(q.marks)}"
-            yield f"{head}\n{'-' * len(head)}\n\n"
-            if kind == "key":
-                if q.wording:
-                    yield ascii_text(q.wording) + "\n\n"
-                yield f"$ {ascii_text(q.command)}\n\n"
-                yield from _answer_chunks(a, "plain")
-                yield "\n"
-                continue
-            yield ascii_text(wording(a)) + "\n\n"
-            if given_of(a):
-                given = ", ".join(ascii_text(g.text) for g in given_of(a))
-                yield f"Given: {given}\n\n"
-            for blank in _blank_tables(a.solution):
-                yield f"{ascii_text(blank.title)}:\n"
-                cells = ([c or "_" * max(3, w) for c, w in zip(r, blank.widths, strict=True)]
-                         for r in _blank_rows(blank))  # fmt: skip
-                for line in table_lines(
-                    [ascii_text(c.text) for c in blank.columns],
-                    [numeric_column(c) for c in blank.columns],
-                    cells,
-                    markdown=False,
-                ):
-                    yield line + "\n"
-                yield "\n"
-            if not _blank_tables(a.solution, count=False):
-                yield "Answer:\n" + "\n" * 6
+
+    def body(a: Answered) -> Iterator[str | Notice]:
+        if kind == "key":
+            return chain(_answer_chunks(a, "plain", key_document(a)), "\n")
+        head = PLAIN[QuestionBlock](question_block(a, key=False), a.options, [])
+        return chain(head, _plain_worksheet(a))
+
+    def section(name: str) -> str:
+        return f"{ascii_text(name)}\n{'*' * len(ascii_text(name))}\n\n"
+
+    yield from each_question(sheet, answered, section, body)
+
+
+def _plain_worksheet(a: Answered) -> Iterator[str]:
+    """A worksheet's question in plain text: its wording, the given values, empty tables."""
+    from .text import table_lines
+
+    yield ascii_text(wording(a)) + "\n\n"
+    if given_of(a):
+        given = ", ".join(ascii_text(g.text) for g in given_of(a))
+        yield f"Given: {given}\n\n"
+    for blank in _blank_tables(a.solution):
+        yield f"{ascii_text(blank.title)}:\n"
+        cells = ([c or "_" * max(3, w) for c, w in zip(r, blank.widths, strict=True)]
+                 for r in _blank_rows(blank))  # fmt: skip
+        for line in table_lines(
+            [ascii_text(c.text) for c in blank.columns],
+            [numeric_column(c) for c in blank.columns],
+            cells,
+            markdown=False,
+        ):
+            yield line + "\n"
+        yield "\n"
+    if not _blank_tables(a.solution, count=False):
+        yield "Answer:\n" + "\n" * 6
 
 
 # --- latex: scanconv.render.sheet_latex ---------------------------------------------------
@@ -395,8 +404,11 @@ def _room(chars: int) -> int:
 # --- json ---------------------------------------------------------------------------------------
 
 
-def _json(sheet: Sheet, answered: Sequence[Answered], kind: str) -> str:
-    """One JSON object: the sheet's title, kind and total marks, and its questions."""
+def json_sheet(
+    sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
+) -> Iterator[str]:
+    """One JSON object: the sheet's title, kind and total marks, and its questions (each
+    key's answer through the ``json`` mapping)."""
     from .data import render_json
 
     questions = []
@@ -426,103 +438,4 @@ def _json(sheet: Sheet, answered: Sequence[Answered], kind: str) -> str:
         "total_marks": sheet.total_marks,
         "questions": questions,
     }
-    return json_visible(json.dumps(document, ensure_ascii=False, indent=1)) + "\n"
-
-
-# --- html ---------------------------------------------------------------------------------------
-
-_SHEET_CSS = """\
-.sc-sheet{font-family:"DejaVu Sans",system-ui,sans-serif;color:#1b1b1b;line-height:1.45}
-.sc-sheet h1{font-size:1.6em;margin:.2em 0 .3em 0}
-.sc-sheet h2.sc-section{font-size:1.35em;margin:1.2em 0 .4em 0}
-.sc-sheet h2.sc-q,.sc-sheet h3.sc-q{font-size:1.2em;margin:1.2em 0 .3em 0}
-.sc-sheet .sc-wording{font-style:italic}
-.sc-sheet code{font-family:"DejaVu Sans Mono",monospace;background:#f4f4f4;padding:0 .25em}
-.sc-sheet table.sc-blank{border-collapse:collapse;margin:.4em 0 1em 0}
-.sc-sheet table.sc-blank th,.sc-sheet table.sc-blank td{border:1px solid #555;\
-padding:.2em .5em;height:1.9em;text-align:center}
-.sc-sheet .sc-answer-space{height:12em;border:1px dashed #999;margin:.4em 0 1em 0}
-@media print{.sc-sheet>.sc-question~.sc-question{break-before:page}}
-"""
-
-
-def _html(sheet: Sheet, answered: Sequence[Answered], kind: str, notices: list[str] | None) -> str:
-    """The sheet as one self-contained HTML page: every text from the question file and every
-    value escaped; a page break before each question when printed. The key's answers are the
-    stepping answers of :mod:`scanconv.render.html` (each with its own stepper)."""
-    from .mathml import esc as escape
-
-    title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
-    style = f"<style>\n{_SHEET_CSS}</style>\n"
-    if kind == "key":
-        from .html import answer_section, page_head
-        from .page_assets import JS
-
-        head = page_head(title).replace("</head>", style + "</head>", 1)
-    else:
-        head = (
-            '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
-            '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
-            f"<title>{escape(title)}</title>\n{style}</head>\n"
-        )
-    parts = [head, '<body>\n<main class="sc-sheet">\n']
-    if sheet.title:
-        parts.append(f"<h1>{escape(title)}</h1>\n")
-    parts.append(f"<p>{escape(_intro(sheet, kind))}</p>\n")
-    section = ""
-    level = 3 if any(q.section for q in sheet.questions) else 2
-    for a in answered:
-        q = a.question
-        with _Guard(sheet, q):
-            if q.section and q.section != section:
-                section = q.section
-                parts.append(f'<h2 class="sc-section">{escape(section)}</h2>\n')
-            parts.append(f'<section class="sc-question" id="q{q.number}">\n')
-            marks = escape(_marks(q.marks))
-            parts.append(f'<h{level} class="sc-q">Question {q.number}{marks}</h{level}>\n')
-            if kind == "key":
-                if q.wording:
-                    parts.append(f'<p class="sc-wording">{escape(q.wording)}</p>\n')
-                parts.append(f"<p><code>{escape(q.command)}</code></p>\n")
-                found: list[str] = []
-                parts.append(
-                    answer_section(
-                        a.solution, f"sc{q.number}", a.options, level=level + 1, notices=found
-                    )
-                )
-                parts.append("\n")
-                if notices is not None:
-                    notices.extend(f"question {q.number}: {n}" for n in found)
-            else:
-                parts.append(f'<p class="sc-wording">{escape(wording(a))}</p>\n')
-                parts.extend(_html_blank(a))
-            parts.append("</section>\n")
-    parts.append("</main>\n")
-    if kind == "key":
-        parts.append(f"<script>{JS}</script>\n")
-    parts.append("</body>\n</html>\n")
-    return "".join(parts)
-
-
-def _html_blank(a: Answered) -> Iterator[str]:
-    """A worksheet question's given values and empty tables, in HTML."""
-    from .mathml import esc as escape
-
-    if given_of(a):
-        given = ", ".join(escape(g.text) for g in given_of(a))
-        yield f"<p><strong>Given:</strong> {given}</p>\n"
-    blanks = _blank_tables(a.solution)
-    for blank in blanks:
-        yield f"<p><strong>{escape(blank.title)}:</strong></p>\n"
-        yield '<table class="sc-blank">\n<thead><tr>'
-        yield "".join(f"<th>{escape(c.text)}</th>" for c in blank.columns)
-        yield "</tr></thead>\n<tbody>\n"
-        for row in _blank_rows(blank):
-            cells = (
-                f'<td style="min-width:{_room(w) * 0.6:.1f}em">{escape(c)}</td>'
-                for c, w in zip(row, blank.widths, strict=True)
-            )
-            yield "<tr>" + "".join(cells) + "</tr>\n"
-        yield "</tbody>\n</table>\n"
-    if not blanks:
-        yield '<p><strong>Answer:</strong></p>\n<div class="sc-answer-space"></div>\n'
+    yield json_visible(json.dumps(document, ensure_ascii=False, indent=1)) + "\n"

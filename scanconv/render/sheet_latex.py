@@ -20,8 +20,9 @@ from collections.abc import Iterator, Sequence
 
 from ..core.working import tex_text
 from ..document import Pixels, as_document
+from ..document import Question as QuestionBlock
 from . import Notice
-from .latex import KEEP_ROWS, NEED
+from .latex import KEEP_ROWS, LATEX, NEED
 from .sheet import (
     Answered,
     Blank,
@@ -31,9 +32,10 @@ from .sheet import (
     _blank_tables,
     _Guard,
     _intro,
-    _marks,
     _room,
     given_of,
+    key_document,
+    question_block,
     wording,
 )
 
@@ -62,15 +64,6 @@ or less than this share of a page for a question that cannot fit beside another 
 
 WORKING_LINES = 8
 """The height of a worksheet's box for the working, in lines."""
-
-
-def tex_command(command: str) -> str:
-    r"""A command line in typewriter type, breakable at its spaces, every hyphen kept.
-
-    >>> tex_command("scanconv sample 'x_1 % 2' --size 4")
-    "{\\raggedright\\ttfamily scanconv sample 'x\\_1 \\% 2' -{}-size 4\\par}"
-    """
-    return "{\\raggedright\\ttfamily " + tex_text(command) + "\\par}"
 
 
 def height(tex: str) -> float:
@@ -102,7 +95,10 @@ def latex_sheet(
             if q.section and q.section != section:
                 section = q.section
                 body.append(f"\\section*{{\\raggedright {tex_text(section)}}}\n")
-            body.append(f"\\subsection*{{Question {q.number}{_marks(q.marks)}}}\n")
+            head = question_block(a, key=kind == "key")
+            doc = as_document(a.solution)
+            heading = LATEX[QuestionBlock](head, a.options, doc)
+            body.extend(c for c in heading if isinstance(c, str))
             for chunk in _key(a) if kind == "key" else _worksheet(a):
                 (notices if isinstance(chunk, Notice) else body).append(chunk)  # type: ignore[arg-type]
             if n:
@@ -115,15 +111,11 @@ def latex_sheet(
 
 
 def _key(a: Answered) -> Iterator[str | Notice]:
-    q = a.question
-    if q.wording:
-        yield f"\\emph{{{tex_text(q.wording)}}}\\par\\medskip\n"
-    yield tex_command(q.command) + "\n\n"
-    for chunk in _answer_chunks(a, "latex"):
+    """A key's answer through the ``latex`` mapping, its title a ``\\subsubsection*`` under
+    the question's heading (the fragment's header comment left out)."""
+    for chunk in _answer_chunks(a, "latex", key_document(a, question=False)):
         if isinstance(chunk, str) and chunk.startswith("% scanconv answer"):
             continue
-        if isinstance(chunk, str) and chunk.startswith("\\subsection*{"):
-            chunk = "\\subsubsection*{" + chunk[len("\\subsection*{") :]
         yield chunk
 
 

@@ -36,6 +36,7 @@ from ..document import (
     Given,
     Notes,
     Pixels,
+    Question,
     StepTable,
     Table,
     Title,
@@ -144,6 +145,16 @@ def _title(block: Title, options: Options, width: int, drawn: list[list[str]]) -
     yield Text("")
 
 
+def _question(
+    block: Question, options: Options, width: int, drawn: list[list[str]]
+) -> Iterator[Any]:
+    yield Text(visible(block.heading), style="bold")
+    for text in (block.wording, block.command):
+        for line in wrap_text(visible(text), width, "  ") if text else ():
+            yield Text(line)
+    yield Text("")
+
+
 def _given(block: Given, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
     text = "Given: " + ", ".join(unicode_heading(q.text) for q in block.quantities)
     for i, line in enumerate(wrap_text(text, width, "  ")):
@@ -219,6 +230,7 @@ def _drawing(block: Drawing, options: Options, width: int, drawn: list[list[str]
 
 
 RICH: dict[type, Callable[[Any, Options, int, list[list[str]]], Iterator[Any]]] = {
+    Question: _question,
     Title: _title,
     Given: _given,
     Working: _working,

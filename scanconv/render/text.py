@@ -26,6 +26,7 @@ from ..document import (
     Notes,
     Pixels,
     Prose,
+    Question,
     StepTable,
     Table,
     Title,
@@ -295,7 +296,29 @@ def render_plain(answer: Solution | Document, options: Options) -> Iterator[str 
 
 
 def _md_title(block: Title, options: Options, drawn: list[str]) -> Iterator[str]:
-    yield f"## {md_text(block.text)}\n\n"
+    yield f"{'#' * block.level} {md_text(block.text)}\n\n"
+
+
+def _md_question(block: Question, options: Options, drawn: list[str]) -> Iterator[str]:
+    yield f"{'#' * block.level} {md_text(block.heading)}\n\n"
+    if block.wording:
+        yield f"> {md_text(block.wording)}\n\n"
+    if block.command:
+        yield md_code(block.command) + "\n\n"
+
+
+def md_code(text: str) -> str:
+    """``text`` as an inline code span, fenced with more backticks than it holds.
+
+    >>> md_code("a ` b")
+    '`` a ` b ``'
+    """
+    import re
+
+    runs = [len(r) for r in re.findall(r"`+", text)]
+    fence = "`" * (max(runs, default=0) + 1)
+    pad = " " if runs or text.startswith("`") else ""
+    return f"{fence}{pad}{visible(text)}{pad}{fence}"
 
 
 def _md_given(block: Given, options: Options, drawn: list[str]) -> Iterator[str]:
@@ -318,6 +341,15 @@ def _md_notes(block: Notes, options: Options, drawn: list[str]) -> Iterator[str]
 def _plain_title(block: Title, options: Options, drawn: list[str]) -> Iterator[str]:
     heading_line = ascii_text(block.text)
     yield f"{heading_line}\n{'=' * len(heading_line)}\n\n"
+
+
+def _plain_question(block: Question, options: Options, drawn: list[str]) -> Iterator[str]:
+    head = ascii_text(block.heading)
+    yield f"{head}\n{'-' * len(head)}\n\n"
+    if block.wording:
+        yield ascii_text(block.wording) + "\n\n"
+    if block.command:
+        yield f"$ {ascii_text(block.command)}\n\n"
 
 
 def _plain_given(block: Given, options: Options, drawn: list[str]) -> Iterator[str]:
@@ -397,6 +429,7 @@ def _drawing(block: Drawing, options: Options, drawn: list[str]) -> Iterator[str
 
 
 MARKDOWN: dict[type, Handler] = {
+    Question: _md_question,
     Title: _md_title,
     Given: _md_given,
     Working: _md_working,
@@ -409,6 +442,7 @@ MARKDOWN: dict[type, Handler] = {
 """The ``markdown`` format: one handler per block type."""
 
 PLAIN: dict[type, Handler] = {
+    Question: _plain_question,
     Title: _plain_title,
     Given: _plain_given,
     Working: _plain_working,
