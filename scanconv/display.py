@@ -24,11 +24,23 @@ k,p,decision,x,y,p_next
 
 from __future__ import annotations
 
+import functools
+import inspect
 from collections.abc import Callable
-from typing import Any, ParamSpec
+from typing import TYPE_CHECKING, Any, ParamSpec
 
+from .core import lazy
 from .core.checks import InputError
 from .core.records import Solution, step_getter
+from .render import Format, Notice, Options, render
+from .render.budget import check_rows_in_memory, check_work
+
+if TYPE_CHECKING:
+    from .render import grid as text_grid
+    from .render import html
+else:  # the text grid and the notebook's page: only when asked for
+    text_grid = lazy.module("scanconv.render.grid")
+    html = lazy.module("scanconv.render.html")
 
 P = ParamSpec("P")
 
@@ -72,8 +84,6 @@ class Answer(Solution):
     ) -> str:
         """The answer as text in ``fmt`` (``markdown``, ``latex``, ``plain``, ``csv``,
         ``json``): the same text ``scanconv ... --format fmt`` prints."""
-        from .render import Format, Notice, Options, render
-
         try:
             chosen = Format(fmt)
         except ValueError:
@@ -87,18 +97,14 @@ class Answer(Solution):
 
     def grid(self, origin: str = "bottom-left") -> str:
         """The text pixel grid (empty if the answer plots no pixels or the grid is too large)."""
-        from .render.grid import render_grid, too_large
-
-        if self.pixels is None or too_large(self.bbox):
+        if self.pixels is None or text_grid.too_large(self.bbox):
             return ""
-        lines = render_grid(self.pixels(), self.bbox, origin=origin, marks=self.marks)
+        lines = text_grid.render_grid(self.pixels(), self.bbox, origin=origin, marks=self.marks)
         return "\n".join(lines) + "\n"
 
     def rows(self) -> list[dict[str, Any]]:
         """The step table as dictionaries keyed by column key, exact values as computed
         (decisions as their names)."""
-        from .render import Format
-
         self.check_budget(Format.json, in_memory=True)
         get = step_getter(self.columns, self.extra_keys)
         keys = [c.key for c in self.columns]
@@ -131,11 +137,8 @@ class Answer(Solution):
     def _repr_html_(self) -> str:
         """The interactive step-through page as a notebook fragment: its own unique id, its
         style scoped to it, its keys bound to it (see :func:`scanconv.render.html.notebook_html`)."""
-        from .render import Format
-        from .render.html import notebook_html
-
         self.check_budget(Format.html)
-        return notebook_html(self)
+        return html.notebook_html(self)
 
 
 def answers(fn: Callable[P, Solution]) -> Callable[P, Answer]:
@@ -143,7 +146,6 @@ def answers(fn: Callable[P, Solution]) -> Callable[P, Answer]:
     pickles), with the function's own signature, its return shown as ``Answer``. Bad input
     is always an :class:`~scanconv.core.checks.InputError` (a ``ValueError`` with ``.param``:
     the parameter, or ``None`` when no single one is at fault)."""
-    import functools
 
     @functools.wraps(fn)
     def ask(*args: P.args, **kwargs: P.kwargs) -> Answer:
@@ -173,10 +175,6 @@ def check_recipe(recipe: Recipe, fmt: Any, *, in_memory: bool = False) -> None:
     ...
     scanconv.render.budget.BudgetError: the table has about 1,000,000,001 rows; no format prints more than 2,000,000 (a minute of output)
     """
-    import inspect
-
-    from .render.budget import check_rows_in_memory, check_work
-
     call, args, kwargs = recipe
     try:
         bound = inspect.signature(call).bind(*args, **dict(kwargs))

@@ -92,4 +92,5 @@ def test_import_scanconv_is_lazy():
         "('numpy', 'rich', 'typer', 'fractions')))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    assert out.stdout.strip() == "['scanconv']"
+    # scanconv.core.lazy: the lazy-loading mechanism that loads every other name
+    assert out.stdout.strip() == "['scanconv', 'scanconv.core', 'scanconv.core.lazy']"

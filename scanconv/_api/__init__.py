@@ -19,12 +19,12 @@ Render a solution with :func:`scanconv.render.render`, or read it directly:
 [(0, 5), (1, 5), (2, 5), (3, 4)]
 
 Every name is listed once, in ``__init__.pyi`` (what type checkers read), and imported from
-there on first use by the package's one lazy-loading mechanism (:func:`scanconv._attach_stub`),
+there on first use by the package's one lazy-loading mechanism (:func:`scanconv.core.lazy.attach_stub`),
 so importing this module, or one command's function, stays cheap.
 """
 
 from __future__ import annotations
 
-from .. import _attach_stub
+from ..core.lazy import attach_stub
 
-__getattr__, __dir__ = _attach_stub(__name__, __file__)
+__getattr__, __dir__ = attach_stub(__name__, __file__)

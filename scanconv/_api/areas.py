@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from ..core import lazy
 from ..display import answers
 from .values import (
     NumberLike,
@@ -21,7 +22,14 @@ from .values import (
 
 if TYPE_CHECKING:
     from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid
+    from ..answers import antialias as answers_antialias
+    from ..answers import fill as answers_fill
+    from ..answers import polygon as answers_polygon
     from ..core.records import Solution
+else:  # each command's answer module, loaded by its first call
+    answers_antialias = lazy.module("scanconv.answers.antialias")
+    answers_fill = lazy.module("scanconv.answers.fill")
+    answers_polygon = lazy.module("scanconv.answers.polygon")
 
 
 @answers
@@ -33,9 +41,7 @@ def polygon(vertices: PointsLike, rule: FillRule | str = "even-odd") -> Solution
     >>> list(sol.pixels())
     [(0, 0), (1, 0), (2, 0), (3, 0), (1, 1), (2, 1), (3, 1), (2, 2)]
     """
-    from ..answers.polygon import polygon_solution
-
-    return polygon_solution(_flat(vertices, "vertices"), _choice(rule, "rule"))
+    return answers_polygon.polygon_solution(_flat(vertices, "vertices"), _choice(rule, "rule"))
 
 
 @answers
@@ -57,11 +63,9 @@ def fill(
     >>> sorted(fill("flood", (1, 1), rows="####/#..#/####").pixels())
     [(1, 1), (2, 1)]
     """
-    from ..answers.fill import seed_fill_solution
-
     texts = None if rows is None else ([rows] if isinstance(rows, str) else list(rows))
     sx, sy = _pair(seed, "seed")
-    return seed_fill_solution(
+    return answers_fill.seed_fill_solution(
         _choice(method, "method"),
         (_whole(sx, "seed"), _whole(sy, "seed")),
         vertices=None if vertices is None else _flat(vertices, "vertices"),
@@ -104,9 +108,7 @@ def antialias_line(
     >>> [s.extra[4] for s in antialias_line(0, 0, 4, 1, method="wu").steps()]
     [1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4), 1]
     """
-    from ..answers.antialias import antialias_solution
-
-    return antialias_solution(
+    return answers_antialias.antialias_solution(
         "line",
         _numbers(x1=x1, y1=y1, x2=x2, y2=y2),
         method=_choice(method, "method"),
@@ -133,9 +135,7 @@ def antialias_circle(
     >>> round(sum(float(v) for _, v, *_ in antialias_circle(3).tables[0].rows()), 6)
     18.849556
     """
-    from ..answers.antialias import antialias_solution
-
-    return antialias_solution(
+    return answers_antialias.antialias_solution(
         "circle",
         (_number(r, "r"), *_pair(center, "center")),
         method=_choice(method, "method"),
@@ -158,9 +158,7 @@ def antialias_polygon(
     >>> antialias_polygon([(0, 0), (2, 0), (2, 1), (0, 1)]).derived[-2].value
     2
     """
-    from ..answers.antialias import antialias_solution
-
-    return antialias_solution(
+    return answers_antialias.antialias_solution(
         "polygon",
         _flat(vertices, "vertices"),
         method=_choice(method, "method"),

@@ -7,11 +7,17 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from ..core import lazy
 from ..display import answers
 from .values import NumberLike, _number
 
 if TYPE_CHECKING:
+    from ..answers import color as answers_color
+    from ..answers import topics as answers_topics
     from ..core.records import Solution
+else:  # each command's answer module, loaded by its first call
+    answers_color = lazy.module("scanconv.answers.color")
+    answers_topics = lazy.module("scanconv.answers.topics")
 
 
 @answers
@@ -30,12 +36,11 @@ def color(
     >>> color("rgb", 51, 102, 153, to="cmy").data["cmy"]
     [Fraction(4, 5), Fraction(3, 5), Fraction(2, 5)]
     """
-    from ..answers.color import color_solution
     from ..core.checks import check_whole
 
     targets = [to] if isinstance(to, str) else list(to)
     b = _number(bits, "bits")
-    return color_solution(
+    return answers_color.color_solution(
         model,
         [_number(v, "values") for v in values],
         [t for spec in targets for t in spec.replace(",", " ").split()],
@@ -52,6 +57,4 @@ def theory(topic: str) -> Solution:
     >>> theory("symmetry").tables[-1].title
     'The eight images of (2, 5) about the centre (0, 0)'
     """
-    from ..answers.topics import theory_solution
-
-    return theory_solution(topic)
+    return answers_topics.theory_solution(topic)

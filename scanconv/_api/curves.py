@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
+from ..core import lazy
 from ..core.checks import InputError
 from ..display import answers
 from .values import (
@@ -24,8 +25,21 @@ from .values import (
 )
 
 if TYPE_CHECKING:
+    from ..answers import bezier as answers_bezier
+    from ..answers import bspline as answers_bspline
+    from ..answers import bspline_basis_at as answers_bspline_basis_at
+    from ..answers import continuity as answers_continuity
+    from ..answers import local_control as answers_local_control
+    from ..answers import parametric as answers_parametric
     from ..core.numeric import Number
     from ..core.records import Solution
+else:  # each command's answer module, loaded by its first call
+    answers_bezier = lazy.module("scanconv.answers.bezier")
+    answers_bspline = lazy.module("scanconv.answers.bspline")
+    answers_bspline_basis_at = lazy.module("scanconv.answers.bspline_basis_at")
+    answers_continuity = lazy.module("scanconv.answers.continuity")
+    answers_local_control = lazy.module("scanconv.answers.local_control")
+    answers_parametric = lazy.module("scanconv.answers.parametric")
 
 
 @answers
@@ -132,10 +146,11 @@ def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
     [(0, 0), (0, 1), (1, 1), (1, 2), (2, 2), (3, 2), (4, 1), (4, 0)]
     """
     from ..algorithms.curve_limits import DEFAULT_SAMPLES
-    from ..answers.bezier import bezier_solution
 
     pts = _points(points)
-    return bezier_solution(pts, _whole(DEFAULT_SAMPLES if samples is None else samples, "samples"))
+    return answers_bezier.bezier_solution(
+        pts, _whole(DEFAULT_SAMPLES if samples is None else samples, "samples")
+    )
 
 
 @answers
@@ -145,10 +160,8 @@ def bezier_at(points: PointsLike, t: FormulaLike) -> Solution:
     >>> list(bezier_at([0, 0, 1, 2, 3, 3, 4, 0], "1/2").pixels())  # B(1/2) = (2, 1.875)
     [(2, 2)]
     """
-    from ..answers.bezier import bezier_at_solution
-
     pts = _points(points)
-    return bezier_at_solution(pts, _formula(t, "t"))
+    return answers_bezier.bezier_at_solution(pts, _formula(t, "t"))
 
 
 @answers
@@ -198,10 +211,8 @@ def bspline_basis(
     9
     """
     if not points:
-        from ..answers.bspline import bspline_basis_knots_solution
-
         spec = _explicit_knots(knots)
-        return bspline_basis_knots_solution(
+        return answers_bspline.bspline_basis_knots_solution(
             _whole(degree, "degree"),
             spec,
             None if samples is None else _whole(samples, "samples"),
@@ -227,16 +238,14 @@ def bspline_at(
     >>> [str(v) for v in bspline_at(None, "3/8", 2, [0, 0.25, 0.5, 0.75, 1]).data["basis"]]
     ['3/4', '1/8']
     """
-    from ..answers.bspline import bspline_at_solution
-
     if not points:
-        from ..answers.bspline_basis_at import bspline_basis_at_solution
-
-        return bspline_basis_at_solution(
+        return answers_bspline_basis_at.bspline_basis_at_solution(
             _whole(degree, "degree"), _explicit_knots(knots), _formula(t, "t")
         )
     pts = _points(points)
-    return bspline_at_solution(pts, _whole(degree, "degree"), _knots(knots), _formula(t, "t"))
+    return answers_bspline.bspline_at_solution(
+        pts, _whole(degree, "degree"), _knots(knots), _formula(t, "t")
+    )
 
 
 @answers
@@ -249,11 +258,10 @@ def continuity(
     'C1'
     """
     from ..algorithms.curve_limits import DEFAULT_SAMPLES
-    from ..answers.continuity import continuity_solution
 
     a, b = _points(first, "first"), _points(second, "second")
     steps = _whole(DEFAULT_SAMPLES if samples is None else samples, "samples")
-    return continuity_solution(a, b, steps)
+    return answers_continuity.continuity_solution(a, b, steps)
 
 
 @answers
@@ -274,11 +282,10 @@ def local_control(
     (8, 2)
     """
     from ..algorithms.curve_limits import DEFAULT_SAMPLES
-    from ..answers.local_control import local_control_solution
 
     pts = _points(points)
     spec = _knots(knots)
-    return local_control_solution(
+    return answers_local_control.local_control_solution(
         pts,
         _whole(index, "index"),
         _pair(moved, "moved"),
@@ -294,9 +301,7 @@ def _parametric(
     samples: NumberLike | None,
     **given: Any,
 ) -> Solution:
-    from ..answers.parametric import parametric_solution
-
-    return parametric_solution(
+    return answers_parametric.parametric_solution(
         kind,
         t_range=None if t_range is None else _bounds(t_range),
         samples=None if samples is None else _whole(samples, "samples"),
@@ -312,11 +317,9 @@ def _bspline(
     *,
     basis_only: bool,
 ) -> Solution:
-    from ..answers.bspline import bspline_solution
-
     pts = _points(points)
     spec = _knots(knots)
-    return bspline_solution(
+    return answers_bspline.bspline_solution(
         pts,
         _whole(degree, "degree"),
         spec,

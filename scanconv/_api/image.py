@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ..core import lazy
 from ..display import answers
 from .values import (
     FormulaLike,
@@ -18,7 +19,16 @@ from .values import (
 )
 
 if TYPE_CHECKING:
+    from ..answers import quantize as answers_quantize
+    from ..answers import ramp as answers_ramp
+    from ..answers import sample as answers_sample
+    from ..answers import storage as answers_storage
     from ..core.records import Solution
+else:  # each command's answer module, loaded by its first call
+    answers_quantize = lazy.module("scanconv.answers.quantize")
+    answers_ramp = lazy.module("scanconv.answers.ramp")
+    answers_sample = lazy.module("scanconv.answers.sample")
+    answers_storage = lazy.module("scanconv.answers.storage")
 
 
 @answers
@@ -38,9 +48,7 @@ def storage(
     >>> storage(1024, 768, levels=256).data["sizes"]["KiB"]
     Fraction(768, 1)
     """
-    from ..answers.storage import storage_solution
-
-    return storage_solution(
+    return answers_storage.storage_solution(
         *_numbers(m=m, n=n),
         levels=_optional(levels, "levels"),
         bits=_optional(bits, "bits"),
@@ -65,9 +73,7 @@ def quantize(
     >>> [row[-1] for row in quantize(2, (0, 255)).tables[0].rows()]
     [32, 96, 160, 224]
     """
-    from ..answers.quantize import quantize_solution
-
-    return quantize_solution(
+    return answers_quantize.quantize_solution(
         _number(bits, "bits"),
         None if value_range is None else _pair(value_range, "value_range"),
         integer=integer,
@@ -93,7 +99,6 @@ def sample(
     (0, 4, 4, 5, 5, 6, 6, 7, 7)
     """
     from ..algorithms.sample import sample_levels
-    from ..answers.sample import sample_solution
 
     m, n = _size(size)
     sampled = sample_levels(
@@ -105,7 +110,7 @@ def sample(
         value_range=None if value_range is None else _formulas(value_range, "value_range", 2),
         origin=_choice(origin, "origin"),
     )
-    return sample_solution(sampled)
+    return answers_sample.sample_solution(sampled)
 
 
 @answers
@@ -115,7 +120,5 @@ def ramp(size: str | int | tuple[int, int] = "8", levels: NumberLike = 8) -> Sol
     >>> next(iter(ramp(8, 8).tables[0].rows()))
     (0, 0, 1, 2, 3, 4, 5, 6, 7)
     """
-    from ..answers.ramp import ramp_solution
-
     m, n = _size(size)
-    return ramp_solution(m, n, _number(levels, "levels"))
+    return answers_ramp.ramp_solution(m, n, _number(levels, "levels"))

@@ -7,13 +7,33 @@ from enum import Enum
 from typing import TYPE_CHECKING
 
 from ..algorithms.choices import LineAlgorithm
+from ..core import lazy
 from ..core.checks import InputError
 from ..display import answers
 from .values import NumberLike, PointsLike, _choice, _flat, _numbers, _rect
 
 if TYPE_CHECKING:
     from ..algorithms.process_choices import LineClipMethod, PolygonClipMethod
+    from ..answers import clip as answers_clip
+    from ..answers import clip_polygon as answers_clip_polygon
+    from ..answers import cyrus_beck as answers_cyrus_beck
+    from ..answers import midpoint_clip as answers_midpoint_clip
+    from ..answers import nll as answers_nll
+    from ..answers import pipeline as answers_pipeline
+    from ..answers import transform as answers_transform
+    from ..answers import viewport as answers_viewport
+    from ..answers import weiler_atherton as answers_weiler_atherton
     from ..core.records import Solution
+else:  # each command's answer module, loaded by its first call
+    answers_clip = lazy.module("scanconv.answers.clip")
+    answers_clip_polygon = lazy.module("scanconv.answers.clip_polygon")
+    answers_cyrus_beck = lazy.module("scanconv.answers.cyrus_beck")
+    answers_midpoint_clip = lazy.module("scanconv.answers.midpoint_clip")
+    answers_nll = lazy.module("scanconv.answers.nll")
+    answers_pipeline = lazy.module("scanconv.answers.pipeline")
+    answers_transform = lazy.module("scanconv.answers.transform")
+    answers_viewport = lazy.module("scanconv.answers.viewport")
+    answers_weiler_atherton = lazy.module("scanconv.answers.weiler_atherton")
 
 
 @answers
@@ -28,9 +48,9 @@ def transform(
     >>> transform([(0, 0), (4, 0)], "rotate 90 about 2 1, translate 3 0").data["after"]
     [[6, -1], [6, 3]]
     """
-    from ..answers.transform import transform_solution
-
-    return transform_solution(_flat(points, "points"), transforms, inverse_too=bool(inverse))
+    return answers_transform.transform_solution(
+        _flat(points, "points"), transforms, inverse_too=bool(inverse)
+    )
 
 
 @answers
@@ -43,9 +63,7 @@ def viewport(
     >>> viewport((0, 0, 10, 10), (100, 100, 150, 200), [(5, 5)]).data["mapped"]
     [[125, 150]]
     """
-    from ..answers.viewport import viewport_solution
-
-    return viewport_solution(
+    return answers_viewport.viewport_solution(
         _flat(points, "points"), _rect(window, "window"), _rect(viewport, "viewport")
     )
 
@@ -75,30 +93,24 @@ def clip_line(
     >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8), "cyrus-beck").data["clipped"]
     [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
     """
-    from ..answers.clip import clip_line_solution
-
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     rect = _rect(window, "window")
     name = _choice(method, "method")
     _only(name, {"normals": normals, "ends": ends}, "cyrus-beck")
     _only(name, {"midpoint": midpoint}, "midpoint-subdivision")
     if name == "cyrus-beck":
-        from ..answers.cyrus_beck import cyrus_beck_solution
-
         x0, y0, x1_, y1_ = rect
         corners = [x0, y0, x1_, y0, x1_, y1_, x0, y1_]
-        return cyrus_beck_solution(
+        return answers_cyrus_beck.cyrus_beck_solution(
             a, b, c, d, corners, normals=normals or "outward", ends=ends or "exact"
         )
     if name == "midpoint-subdivision":
-        from ..answers.midpoint_clip import midpoint_clip_solution
-
-        return midpoint_clip_solution(a, b, c, d, list(rect), midpoint=midpoint or "rounded")
+        return answers_midpoint_clip.midpoint_clip_solution(
+            a, b, c, d, list(rect), midpoint=midpoint or "rounded"
+        )
     if name == "nicholl-lee-nicholl":
-        from ..answers.nll import nll_solution
-
-        return nll_solution(a, b, c, d, rect)
-    return clip_line_solution(a, b, c, d, rect, name)
+        return answers_nll.nll_solution(a, b, c, d, rect)
+    return answers_clip.clip_line_solution(a, b, c, d, rect, name)
 
 
 def _only(method: str, given: dict[str, str | None], owner: str) -> None:
@@ -125,10 +137,10 @@ def clip_convex(
     >>> clip_convex(-1, 2, 9, 2, [(0, 0), (8, 0), (0, 8)]).data["clipped"]
     [[0, 2], [6, 2]]
     """
-    from ..answers.cyrus_beck import cyrus_beck_solution
-
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
-    return cyrus_beck_solution(a, b, c, d, _flat(window, "window"), normals=normals, ends=ends)
+    return answers_cyrus_beck.cyrus_beck_solution(
+        a, b, c, d, _flat(window, "window"), normals=normals, ends=ends
+    )
 
 
 @answers
@@ -145,21 +157,19 @@ def clip_polygon(
     >>> clip_polygon([(0, 0), (8, 0), (8, 8)], (2, 1, 9, 3), "weiler-atherton").data["polygons"]
     [[[8, 1], [8, 3], [3, 3], [2, 2], [2, 1]]]
     """
-    from ..answers.clip_polygon import clip_polygon_solution
-
     name = _choice(method, "method")
     flat, rect = _flat(vertices, "vertices"), _rect(window, "window")
     if name == "weiler-atherton":
-        from ..answers.weiler_atherton import weiler_atherton_solution
-
         x0, y0, x1, y1 = rect
-        return weiler_atherton_solution(flat, [x0, y0, x1, y0, x1, y1, x0, y1])
+        return answers_weiler_atherton.weiler_atherton_solution(
+            flat, [x0, y0, x1, y0, x1, y1, x0, y1]
+        )
     if name != "sutherland-hodgman":
         raise InputError(
             f"unknown polygon clipping method {name!r} (sutherland-hodgman, weiler-atherton)",
             "method",
         )
-    return clip_polygon_solution(flat, rect)
+    return answers_clip_polygon.clip_polygon_solution(flat, rect)
 
 
 @answers
@@ -179,10 +189,8 @@ def pipeline_line(
     >>> pipeline_line(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10)).data["rounded"]
     [[0, 3], [20, 8]]
     """
-    from ..answers.pipeline import pipeline_line_solution
-
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
-    return pipeline_line_solution(
+    return answers_pipeline.pipeline_line_solution(
         a,
         b,
         c,
@@ -208,9 +216,7 @@ def pipeline_polygon(
     >>> pipeline_polygon([(-2, 0), (6, 0), (2, 6)], (0, 0, 4, 4), (0, 0, 8, 8)).data["device"][2]
     [0, 6]
     """
-    from ..answers.pipeline import pipeline_polygon_solution
-
-    return pipeline_polygon_solution(
+    return answers_pipeline.pipeline_polygon_solution(
         _flat(vertices, "vertices"),
         _rect(window, "window"),
         _rect(viewport, "viewport"),

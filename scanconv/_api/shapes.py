@@ -5,12 +5,22 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..algorithms.choices import Convention, Layout, LineAlgorithm, Rounding, Start, Tie
+from ..core import lazy
 from ..display import answers
 from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _pair
 
 if TYPE_CHECKING:
     from ..algorithms.circle_choices import P0, CircleMethod, Loop, Update
+    from ..answers import circle as answers_circle
+    from ..answers import compare as answers_compare
+    from ..answers import ellipse as answers_ellipse
+    from ..answers import line as answers_line
     from ..core.records import Solution
+else:  # each command's answer module, loaded by its first call
+    answers_circle = lazy.module("scanconv.answers.circle")
+    answers_compare = lazy.module("scanconv.answers.compare")
+    answers_ellipse = lazy.module("scanconv.answers.ellipse")
+    answers_line = lazy.module("scanconv.answers.line")
 
 
 @answers
@@ -85,10 +95,8 @@ def line(
     >>> list(line(0, 0, 4, 2, tie="keep").pixels())
     [(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)]
     """
-    from ..answers.line import line_solution
-
     coords = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
-    return line_solution(
+    return answers_line.line_solution(
         _choice(algo, "algo"),
         *coords,
         rounding=_maybe(rounding, "rounding"),
@@ -176,11 +184,9 @@ def circle(
     >>> circle(5, (10, 10), method="trig", rounding="trunc").data["rounding"]
     'trunc'
     """
-    from ..answers.circle import circle_solution
-
     radius = _number(r, "r")
     xc, yc = _pair(center, "center")
-    return circle_solution(
+    return answers_circle.circle_solution(
         _choice(method, "method"),
         radius,
         xc,
@@ -250,11 +256,9 @@ def ellipse(
     >>> sorted(ellipse(2, 1).pixels())
     [(-2, 0), (-1, -1), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 1), (2, 0)]
     """
-    from ..answers.ellipse import ellipse_solution
-
     a, b = _numbers(rx=rx, ry=ry)
     xc, yc = _pair(center, "center")
-    return ellipse_solution(
+    return answers_ellipse.ellipse_solution(
         a,
         b,
         xc,
@@ -278,10 +282,8 @@ def compare_lines(
     >>> len(list(compare_lines(2, 8, 10, 4).tables[0].rows()))  # x = 2 .. 10
     9
     """
-    from ..answers.compare import compare_lines as solution
-
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
-    return solution(a, b, c, d, theory=theory)
+    return answers_compare.compare_lines(a, b, c, d, theory=theory)
 
 
 @answers
@@ -291,9 +293,7 @@ def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
     >>> len(list(compare_circles(10).tables[0].rows()))
     8
     """
-    from ..answers.compare import compare_circles as solution
-
-    return solution(_number(r, "r"), theory=theory)
+    return answers_compare.compare_circles(_number(r, "r"), theory=theory)
 
 
 @answers
@@ -303,6 +303,4 @@ def compare_curves() -> Solution:
     >>> compare_curves().title
     'Bezier vs B-spline curves'
     """
-    from ..answers.compare import compare_curves as solution
-
-    return solution()
+    return answers_compare.compare_curves()

@@ -7,6 +7,7 @@ import re
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from ..core import lazy
 from ..core.checks import InputError
 from ..display import answers
 from .values import (
@@ -23,8 +24,19 @@ from .values import (
 )
 
 if TYPE_CHECKING:
+    from ..answers import attributes as answers_attributes
+    from ..answers import characters as answers_characters
+    from ..answers import dither as answers_dither
+    from ..answers import framebuffer as answers_framebuffer
+    from ..answers import inside as answers_inside
     from ..core.numeric import Number
     from ..core.records import Solution
+else:  # each command's answer module, loaded by its first call
+    answers_attributes = lazy.module("scanconv.answers.attributes")
+    answers_characters = lazy.module("scanconv.answers.characters")
+    answers_dither = lazy.module("scanconv.answers.dither")
+    answers_framebuffer = lazy.module("scanconv.answers.framebuffer")
+    answers_inside = lazy.module("scanconv.answers.inside")
 
 MAX_GLYPH = 64
 """The largest glyph drawn from rows given (64 x 64 bits; scaled at most 16 times)."""
@@ -77,9 +89,7 @@ def dither_threshold(
     >>> dither_threshold("10 200; 128 127", at=128).data["output"]
     [[0, 1], [1, 0]]
     """
-    from ..answers.dither import threshold_solution
-
-    return threshold_solution(
+    return answers_dither.threshold_solution(
         _matrix(image, "image"),
         _number(top, "top"),
         _optional(at, "at"),
@@ -111,9 +121,7 @@ def dither_ordered(
     >>> dither_ordered([[1, 2], [3, 4]], 2, 4).data["output"]
     [[1, 0], [0, 1]]
     """
-    from ..answers.dither import ordered_solution
-
-    return ordered_solution(
+    return answers_dither.ordered_solution(
         _matrix(image, "image"),
         _dither_matrix(matrix),
         _number(top, "top"),
@@ -140,9 +148,7 @@ def dither_diffusion(
     >>> dither_diffusion("100 100; 100 100").data["output"]
     [[0, 1], [0, 0]]
     """
-    from ..answers.dither import diffusion_solution
-
-    return diffusion_solution(
+    return answers_dither.diffusion_solution(
         _matrix(image, "image"),
         _number(top, "top"),
         kernel=_choice(kernel, "kernel"),
@@ -161,9 +167,7 @@ def halftone(n: NumberLike, *, level: NumberLike | None = None, bits: NumberLike
     >>> [r[0] for r in halftone(2).tables[0].rows()]
     [0, 1, 2, 3, 4]
     """
-    from ..answers.dither import pattern_solution
-
-    return pattern_solution(
+    return answers_dither.pattern_solution(
         _whole(n, "n"),
         None if level is None else _whole(level, "level"),
         _whole(bits, "bits"),
@@ -185,9 +189,7 @@ def inside(
     >>> [r[3] for r in inside([0, 0, 6, 0, 6, 6, 3, 2, 0, 6], [(3, 1), (3, 4)]).tables[-1].rows()]
     ['inside (odd)', 'outside (even)']
     """
-    from ..answers.inside import inside_solution
-
-    return inside_solution(
+    return answers_inside.inside_solution(
         _flat(vertices, "vertices"),
         _flat(points, "points"),
         rule_name=_choice(rule, "rule"),
@@ -213,9 +215,7 @@ def framebuffer(
     >>> framebuffer(640, 480, 8).data["size_bits"]
     2457600
     """
-    from ..answers.framebuffer import framebuffer_solution
-
-    return framebuffer_solution(
+    return answers_framebuffer.framebuffer_solution(
         *_numbers(width=width, height=height, bits=bits),
         lut=_optional(lut, "lut"),
         rate=_optional(rate, "rate"),
@@ -242,12 +242,10 @@ def line_style(
     >>> list(line_style(0, 0, 7, 2, "110").pixels())
     [(0, 0), (1, 0), (3, 1), (4, 1), (6, 2), (7, 2)]
     """
-    from ..answers.attributes import line_style_solution
-
     if not isinstance(mask, str):
         raise InputError(f"mask must be a string of 1s and 0s, got {mask!r}", "mask")
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
-    return line_style_solution(
+    return answers_attributes.line_style_solution(
         a,
         b,
         c,
@@ -274,10 +272,10 @@ def thick_line(
     >>> len(list(thick_line(0, 0, 4, 1, 3).pixels()))
     15
     """
-    from ..answers.attributes import thick_line_solution
-
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
-    return thick_line_solution(a, b, c, d, _whole(width, "width"), brush=bool(brush))
+    return answers_attributes.thick_line_solution(
+        a, b, c, d, _whole(width, "width"), brush=bool(brush)
+    )
 
 
 def _at(at: PointLike) -> tuple[int, int]:
@@ -306,14 +304,12 @@ def char_bitmap(
     >>> len(list(char_bitmap("L").pixels()))
     11
     """
-    from ..answers.characters import bitmap_solution
-
     x0, y0 = _at(at)
     if isinstance(rows, str):
         rows = [r.strip() for r in re.split(r"[/;]", rows) if r.strip()]
     if rows is not None and (len(rows) > MAX_GLYPH or any(len(r) > MAX_GLYPH for r in rows)):
         raise InputError(f"a glyph is at most {MAX_GLYPH} x {MAX_GLYPH} bits", "rows")
-    return bitmap_solution(
+    return answers_characters.bitmap_solution(
         _char(char),
         rows=None if rows is None else list(rows),
         x0=x0,
@@ -332,10 +328,8 @@ def char_stroke(
     >>> [s.pixel for s in char_stroke("T").steps()]
     [(0, 6), (2, 6)]
     """
-    from ..answers.characters import stroke_solution
-
     x0, y0 = _at(at)
-    return stroke_solution(
+    return answers_characters.stroke_solution(
         _char(char), x0=x0, y0=y0, scale=_whole(scale, "scale"), algo=_choice(algo, "algo")
     )
 
@@ -350,9 +344,7 @@ def char_storage(
     >>> char_storage(128, 5, 7).data["bits"]
     7168
     """
-    from ..answers.characters import font_storage_solution
-
-    return font_storage_solution(
+    return answers_characters.font_storage_solution(
         _whole(count, "count"),
         _whole(width, "width"),
         _whole(height, "height"),

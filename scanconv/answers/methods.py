@@ -2,7 +2,8 @@
 
 Every method of every command is one :class:`Method` record in :data:`METHODS`, keyed
 ``"command/method"``. A record holds or names (as ``"module:attribute"``, imported on first
-use by :meth:`Method.load`, so that reading the table costs no start-up time):
+use by :meth:`Method.load` through :func:`scanconv.core.lazy.load`, so that reading the
+table costs no start-up time):
 
 - ``answer``: the function that builds the worked answer;
 - ``generator``: the step generator (an algorithm yielding one step record at a time);
@@ -31,10 +32,15 @@ scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from b
 ('midpoint',)
 """
 
-import importlib
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
+from ..core import lazy
 from ..core.checks import InputError
+
+if TYPE_CHECKING:
+    from ..algorithms import conventions
+else:
+    conventions = lazy.module("scanconv.algorithms.conventions")  # knobs only
 
 PIECES = ("answer", "generator", "derivation", "pseudocode", "model", "raster")
 """The named pieces of a record, each ``"module:attribute"`` or ``None`` (with a reason)."""
@@ -75,9 +81,9 @@ class Method(NamedTuple):
     @property
     def knobs(self) -> tuple[str, ...]:
         """The conventions that apply to this method, by knob name."""
-        from ..algorithms.conventions import KNOBS
-
-        return tuple(n for n, k in KNOBS.items() if k.applies_to(self.command, self.name))
+        return tuple(
+            n for n, k in conventions.KNOBS.items() if k.applies_to(self.command, self.name)
+        )
 
     def reason(self, piece: str) -> str | None:
         """Why ``piece`` is absent (``None`` when it is there or unexplained)."""
@@ -93,8 +99,7 @@ class Method(NamedTuple):
         if ref is None:
             why = self.reason(piece) or "not available"
             raise InputError(f"{self.command} {self.name} has no {piece}: {why}", "method")
-        module, _, attr = ref.partition(":")
-        return getattr(importlib.import_module(module), attr)
+        return lazy.load(ref)
 
 
 _NO_DERIVATION = "the notes derive no decision parameter for it"

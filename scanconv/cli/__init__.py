@@ -9,6 +9,7 @@ each a thin mapping from flags to a :mod:`scanconv._api` function.
 
 from typing import Any
 
+from .application import register
 from .entry import main
 
 __all__ = ["app", "main"]
@@ -18,7 +19,5 @@ def __getattr__(name: str) -> Any:
     """``scanconv.cli.app``: the typer app with every command registered (``main`` registers
     only the command it runs)."""
     if name == "app":
-        from .application import register
-
         return register()
     raise AttributeError(f"module 'scanconv.cli' has no attribute {name!r}")

@@ -14,6 +14,7 @@ import typer
 from typer.core import TyperGroup
 
 from .. import __version__
+from ..core import lazy
 from .output import PROG
 
 _SETTINGS: dict[str, Any] = {
@@ -218,9 +219,7 @@ def register(argv: list[str] | None = None) -> typer.Typer:
     >>> register(["line", "2", "2", "10", "6"]) is app
     True
     """
-    import importlib
-
     named = TOPIC_OF.get(argv[0]) if argv else None
     for module in TOPIC_MODULES if named is None else (named,):
-        importlib.import_module(f"{__package__}.{module}")
+        lazy.load(f"{__package__}.{module}")
     return app

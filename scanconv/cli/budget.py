@@ -15,7 +15,10 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from ..render.budget import BudgetError, check_work
+from ..render.budget import check_question as check_in_document
 from ..render.work import ESTIMATES, Work
+from ..render.work import estimate as library_estimate
 from .output import Output, format_for_file, resolve
 
 __all__ = ["DOCUMENT_COMMANDS", "ESTIMATES", "LIBRARY_NAMES", "check", "check_question"]
@@ -65,8 +68,6 @@ def estimate(name: str, arguments: Mapping[str, Any]) -> Work | None:
     >>> estimate("sample", {"size": "4096"}).cols
     4096
     """
-    from ..render.work import estimate as library_estimate
-
     return library_estimate(*library_call(name, arguments))
 
 
@@ -80,8 +81,6 @@ def check(name: str, arguments: Mapping[str, Any], out: Output) -> None:
     ValueError: a 4096 x 4096 matrix is 16,777,216 cells; the rich, latex and markdown formats print at most 65,536: use --format csv or json
     >>> check("sample", {"size": "4096"}, Output(fmt=Format.csv))
     """
-    from ..render.budget import BudgetError, check_work
-
     fmt = resolve(format_for_file(out.fmt, out.output), out.output is not None)
     function, args = library_call(name, arguments)
     try:
@@ -93,9 +92,6 @@ def check(name: str, arguments: Mapping[str, Any], out: Output) -> None:
 def check_question(name: str, arguments: Mapping[str, Any]) -> None:
     """Refuse (``ValueError``, one line) a question beyond the budget of a document, alone
     or with the questions before it (:func:`scanconv.render.budget.document`)."""
-    from ..render.budget import BudgetError
-    from ..render.budget import check_question as check_in_document
-
     try:
         check_in_document(*library_call(name, arguments))
     except BudgetError as err:

@@ -9,17 +9,26 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from ..core import lazy
 from ..core.records import Solution
 from ..questions.marking import marking_answer, marking_line
 from ..render import Format
+from ..render.budget import check_batch
 from .application import app
 from .budget import check_question
 from .options import BriefOpt, ExactOpt, FormatOpt, OutputOpt
 from .output import Output, check_paths, emit, fail, format_for_file, write_atomic
+
+if TYPE_CHECKING:
+    from ..answers import marking
+    from ..render import marking as marking_formats
+else:  # what marking a file needs: only the runs that mark one
+    marking = lazy.module("scanconv.answers.marking")
+    marking_formats = lazy.module("scanconv.render.marking")
 
 #: Output options written after the question still belong to ``check`` (the question's own
 #: answer is never written): ``check a.csv -- line 2 2 10 6 -f md`` is markdown.
@@ -109,8 +118,6 @@ def check(
     check_paths([("ANSWER", answer), ("--batch", batch)], [("--output", output)])
     brief = own.get("brief", brief)
     exact = own.get("exact", exact)
-    from ..answers.marking import mark_file, marking_solution
-
     try:
         solution = solve(question)
         text = " ".join(question)
@@ -118,8 +125,8 @@ def check(
             _batch(Path(batch), solution, text, fmt, output)
             return
         assert answer is not None
-        marking = mark_file(answer, solution)
-        result = marking_solution(marking, solution, answer.name, text)
+        marked = marking.mark_file(answer, solution)
+        result = marking.marking_solution(marked, solution, answer.name, text)
     except ValueError as err:
         fail(" ".join(str(err).split()))
     emit(result, Output(fmt=fmt, output=output, brief=brief, exact=exact))
@@ -160,10 +167,6 @@ def _batch(
 ) -> None:
     """Mark every file of ``folder`` and write one row each (exit 0 whatever the marks): CSV
     (the default, also on a terminal), JSON, or a table in the text formats."""
-    from ..answers.marking import mark_file
-    from ..render.budget import check_batch
-    from ..render.marking import batch_csv, batch_json
-
     chosen = format_for_file(fmt, output)
     try:
         files = sorted(p for p in folder.iterdir() if not p.name.startswith("."))
@@ -173,13 +176,14 @@ def _batch(
         fail(f"--batch {folder}: no files to mark")
     sizes = [p.lstat().st_size for p in files if _regular(p)]
     check_batch(sizes, solution)  # before any file is read
-    results = [_mark_one(path, solution, mark_file) for path in files]
+    results = [_mark_one(path, solution, marking.mark_file) for path in files]
     if chosen not in (Format.auto, Format.csv, Format.json):  # a table to read, not a sheet
-        from ..answers.marking import batch_solution
-
-        emit(batch_solution(results, solution, question), Output(fmt=chosen, output=output))
+        emit(marking.batch_solution(results, solution, question), Output(fmt=chosen, output=output))
         return
-    rows = batch_json(results, question) if chosen is Format.json else batch_csv(results)
+    if chosen is Format.json:
+        rows = marking_formats.batch_json(results, question)
+    else:
+        rows = marking_formats.batch_csv(results)
     text = "".join(rows)
     if output is None:
         sys.stdout.write(text)

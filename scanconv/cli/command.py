@@ -14,12 +14,12 @@ from __future__ import annotations
 import functools
 import inspect
 from collections.abc import Callable, Iterable
-from typing import Any, get_args, get_type_hints
+from typing import TYPE_CHECKING, Any, get_args, get_type_hints
 
 from typer.models import OptionInfo, ParameterInfo
 
+from ..core import lazy
 from ..core.records import Solution
-from ..questions.grammar import ALIASES
 from ..render import Format
 from .budget import check as check_budget
 from .options import (
@@ -36,6 +36,11 @@ from .options import (
     SvgOpt,
 )
 from .output import Output, emit, fail
+
+if TYPE_CHECKING:
+    from ..questions import grammar
+else:
+    grammar = lazy.module("scanconv.questions.grammar")  # its aliases: bad input only
 
 SHARED = ("fmt", "grid", "origin", "output", "brief", "exact", "explain", "svg", "png")
 """The shared output options, in the order they are listed after a command's own."""
@@ -159,7 +164,7 @@ def flag_for(param: str | None, params: Iterable[inspect.Parameter]) -> str | No
     if param is None:
         return None
     by_name = {p.name: p for p in params}
-    found = by_name.get(param) or by_name.get(ALIASES.get(param, ""))
+    found = by_name.get(param) or by_name.get(grammar.ALIASES.get(param, ""))
     if found is None:
         return None
     info = next((m for m in get_args(found.annotation)[1:] if isinstance(m, ParameterInfo)), None)

@@ -10,12 +10,14 @@ fails when the two differ, and ``python -m scanconv.cli.grammar`` prints the mod
 
 from __future__ import annotations
 
+import inspect
 from enum import Enum
 from typing import Any
 
 import typer
 
 from ..questions.grammar import Param, Spec
+from .application import app, register
 from .command import SHARED, Command
 
 
@@ -73,10 +75,6 @@ def _walk(group: typer.Typer, path: tuple[str, ...]) -> Any:
 def declared() -> tuple[dict[tuple[str, ...], Spec], tuple[str, ...]]:
     """The answering commands' grammar, by command path, and the commands that are not
     questions (they write documents or mark: ``sheet``, ``check``, ...)."""
-    import inspect
-
-    from .application import app, register
-
     register(None)
     specs: dict[tuple[str, ...], Spec] = {}
     others: list[str] = []

@@ -1,7 +1,5 @@
 """``scanconv line``."""
 
-from __future__ import annotations
-
 from fractions import Fraction
 from typing import Annotated
 

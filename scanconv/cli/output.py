@@ -5,17 +5,32 @@ The renderers never print; they return generators, and :func:`emit` writes what 
 A failure to write is exit status 1.
 """
 
+import io
 import os
+import signal
+import stat
 import sys
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import IO, Any, NamedTuple, NoReturn
+from typing import IO, TYPE_CHECKING, Any, NamedTuple, NoReturn
 
 import typer
 
+from ..core import lazy
 from ..core.records import Solution
 from ..render import EXTENSIONS, FORMATS, Format, Notice, Options, render
 from .options import Origin
+
+if TYPE_CHECKING:
+    import tempfile
+
+    from rich import console as rich_console
+
+    from ..render import figure
+else:  # each only on the path that uses it (start-up time)
+    tempfile = lazy.module("tempfile")  # a file output
+    rich_console = lazy.module("rich.console")  # the terminal format
+    figure = lazy.module("scanconv.render.figure")  # --svg, --png
 
 PROG = "scanconv"
 
@@ -87,8 +102,6 @@ class Interrupted(SystemExit):
         self.signum = signum
 
     def __str__(self) -> str:
-        import signal
-
         name = signal.Signals(self.signum).name
         return f"{'interrupted' if name == 'SIGINT' else 'terminated'} ({name})"
 
@@ -110,8 +123,6 @@ def on_signal(signum: int, frame: Any) -> None:
 def catch_signals() -> Callable[[], None]:
     """Install :func:`on_signal` for SIGINT and SIGTERM; return what restores the previous
     handlers. Outside the main thread signals are left alone."""
-    import signal
-
     global _signalled
     _signalled = False
     previous: dict[int, Any] = {}
@@ -138,9 +149,9 @@ def _write(chunks: Iterable[Any], out: Any, width: int | None = None) -> None:
             note(notice_text(chunk))
         else:
             if console is None:
-                from rich.console import Console
-
-                console = Console(file=out, highlight=False, emoji=False, markup=False, width=width)
+                console = rich_console.Console(
+                    file=out, highlight=False, emoji=False, markup=False, width=width
+                )
                 console.on_broken_pipe = _broken_pipe  # type: ignore[method-assign]
             console.print(chunk)
 
@@ -182,11 +193,7 @@ def emit(solution: Solution, out: Output) -> None:
 def terminal_width(stream: Any) -> int:
     """The width the rich format fits: the terminal's, or ``COLUMNS``, or 80 (rich's own
     rule, so the answer and the console that prints it agree)."""
-    import io
-
-    from rich.console import Console
-
-    return Console(file=stream if stream is not None else io.StringIO()).width
+    return rich_console.Console(file=stream if stream is not None else io.StringIO()).width
 
 
 def named_format(fmt: str, path: Path | None) -> str | None:
@@ -238,8 +245,6 @@ def document_format(fmt: str, path: Path | None) -> str:
 
 def write_figures(solution: Solution, origin: Origin, svg: Path | None, png: Path | None) -> None:
     """Draw the figure of ``solution`` and write it, atomically, as SVG and/or PNG."""
-    from ..render import figure
-
     fig = figure.build(solution, origin.value)
     if svg is not None:
         text = figure.to_svg(fig)
@@ -307,8 +312,6 @@ def write_all(files: Iterable[Pending]) -> None:
 
 def _is_special(path: Path) -> bool:
     """Whether ``path`` exists and is not a regular file (a device, a FIFO)."""
-    import stat
-
     try:
         return not stat.S_ISREG(os.stat(path).st_mode)
     except OSError:  # missing (or unreadable): created, or the error is reported then
@@ -318,8 +321,6 @@ def _is_special(path: Path) -> bool:
 def _stage(path: Path, fill: Callable[[IO[Any]], object], binary: bool) -> tuple[str, Path, Path]:
     """Write the whole of ``path``'s content to a temporary file in its directory: the
     temporary file, the target (a symlink's target: the link is kept) and ``path``."""
-    import tempfile  # here, not at the top: only a file output needs it (start-up time)
-
     target = Path(os.path.realpath(path))
     blocked = _block_signals()  # a signal between creating the temporary and naming it: later
     try:
@@ -377,14 +378,10 @@ def _identity(path: Any) -> Any:
 
 def _block_signals() -> Any:
     """Hold SIGINT and SIGTERM back (they stay pending); returns the mask to restore."""
-    import signal
-
     return signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
 
 
 def _unblock_signals(mask: Any) -> None:
-    import signal
-
     signal.pthread_sigmask(signal.SIG_SETMASK, mask)
 
 

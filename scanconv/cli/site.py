@@ -9,12 +9,21 @@ partial one, is left behind.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
+from ..core import lazy
+from ..core.checks import InputError
 from .application import app
 from .output import fail, note
+
+if TYPE_CHECKING:
+    from ..site import build as site_build
+    from . import exam
+else:  # the site's builder and the exam book: only ``site build`` needs them
+    site_build = lazy.module("scanconv.site.build")
+    exam = lazy.module("scanconv.cli.exam")
 
 site_app = typer.Typer(
     help="A static site that answers questions in the browser, with nothing to install.",
@@ -53,15 +62,11 @@ def build(
     Serve it with any static host, or locally: python -m http.server -d DIR.
     Example: scanconv site build site
     """
-    from ..core.checks import InputError
-    from ..site.build import FetchError, build_site
-    from .exam import book
-
     try:
-        built = build_site(folder, lambda: book(None, "html"), cache=cache)
+        built = site_build.build_site(folder, lambda: exam.book(None, "html"), cache=cache)
     except InputError as err:
         fail(" ".join(str(err).split()))
-    except FetchError as err:
+    except site_build.FetchError as err:
         fail(str(err), 1)
     except OSError as err:
         fail(f"cannot write {folder}: {err.strerror or err}", 1)

@@ -3,21 +3,25 @@ with a live example."""
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from .. import _api as api
+from ..core import lazy
 from ..core.records import Solution
 from .application import app
 from .command import answers
 
+if TYPE_CHECKING:
+    from ..answers import topics
+else:
+    topics = lazy.module("scanconv.answers.topics")  # --list only
+
 
 def _list(value: bool) -> None:
     if value:
-        from ..answers.topics import topics
-
-        found = topics()
+        found = topics.topics()
         width = max(len(t.name) for t in found)
         for t in found:
             typer.echo(f"{t.name.ljust(width)}  {t.title}")

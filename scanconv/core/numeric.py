@@ -10,8 +10,9 @@ wrong pixels for the notes' own DDA example; it is never used here.
 
 from __future__ import annotations
 
-import re
 from fractions import Fraction
+
+from . import lazy
 
 Number = int | Fraction
 """An exact value: what every step record holds."""
@@ -20,7 +21,7 @@ Number = int | Fraction
 #: Beyond it even a streamed table would take hours, and the bulk rasterizers use int64.
 COORD_LIMIT = 10**9
 
-_NUMBER = re.compile(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d{1,3})?|[+-]?\d+/\d+")
+_NUMBER = lazy.pattern(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d{1,3})?|[+-]?\d+/\d+")
 _MAX_LITERAL = 40
 
 
@@ -97,7 +98,8 @@ def parse_number(text: str, limit: int = COORD_LIMIT) -> Fraction:
         raise ValueError("empty value where a number is expected")
     if len(s) > _MAX_LITERAL:
         raise ValueError(f"number literal longer than {_MAX_LITERAL} characters")
-    if not _NUMBER.fullmatch(s):
+    whole = s[1:] if s[0] in "+-" else s  # an integer ([+-]?\d+) needs no pattern
+    if not whole.isdecimal() and not _NUMBER.fullmatch(s):
         low = s.lower().lstrip("+-")
         if low in ("nan", "inf", "infinity"):
             raise ValueError(f"{s!r} is not a finite number")

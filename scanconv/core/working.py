@@ -34,16 +34,23 @@ sign stays ``-`` (as in the numbers the tables print), so the ASCII is unchanged
 
 from __future__ import annotations
 
-import re
+from collections.abc import Callable
 
+from . import lazy
 from .tex_escape import tex_text as tex_text  # the LaTeX escaper, with the working
 
 # --- Characters no output may carry as they are ----------------------------------------------
 
-UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]")
+_UNSAFE_RANGES: tuple[tuple[int, int], ...] = ((0x00, 0x08), (0x0B, 0x1F), (0x7F, 0x9F))
+_UNSAFE_RANGES += ((0x61C, 0x61C), (0x200E, 0x200F), (0x202A, 0x202E), (0x2066, 0x2069))
+
+UNSAFE = lazy.pattern("[" + "".join(f"{chr(a)}-{chr(b)}" for a, b in _UNSAFE_RANGES) + "]")
 """Control characters (a terminal escape sequence, a bell) and the bidirectional controls
 (U+202E RIGHT-TO-LEFT OVERRIDE and kin, which make text read differently from what it holds):
 user text never carries them into any format. Tab and newline are left to each format."""
+
+_UNSAFE_TO_ASK = {c: "?" for a, b in _UNSAFE_RANGES for c in range(a, b + 1)}
+""":data:`UNSAFE` as a ``str.translate`` table to ``?`` (no pattern to compile on the way)."""
 
 
 def visible(text: str) -> str:
@@ -58,7 +65,7 @@ def visible(text: str) -> str:
     return UNSAFE.sub("\ufffd", _BREAKS.sub(" ", text))
 
 
-_BREAKS = re.compile(r"\r\n|[\t\n\r]")
+_BREAKS = lazy.pattern(r"\r\n|[\t\n\r]")
 
 
 def json_visible(text: str) -> str:
@@ -137,6 +144,12 @@ _ASCII = {
 for _name, _letter in _GREEK.items():  # the other Greek letters by name
     _ASCII.setdefault(_letter, _name)
 
+_NAMES = {c: w for c, w in _ASCII.items() if len(w) > 1 and w.isalpha()}
+"""The characters written as a name (``ε`` as ``eps``), which a letter after them is spaced
+from (``eps y``)."""
+_ASCII_TABLE = {ord(c): w for c, w in _ASCII.items() if not c.isascii()}
+""":data:`_ASCII` as a ``str.translate`` table."""
+
 _SUB = {
     **dict(zip("0123456789", "₀₁₂₃₄₅₆₇₈₉", strict=True)),
     **dict(zip("+-−=()", "₊₋₋₌₍₎", strict=True)),
@@ -153,13 +166,27 @@ _SUP = {
 
 _FROM_SUB = {v: k for k, v in _SUB.items() if k != "−"}
 _FROM_SUP = {v: k for k, v in _SUP.items() if k != "−"}
-_SUB_RUN = re.compile("[" + "".join(_FROM_SUB) + "]+")
-_SUP_RUN = re.compile("[" + "".join(_FROM_SUP) + "]+")
 
 
-def _sub_ascii(m: re.Match[str]) -> str:
-    run = "".join(_FROM_SUB[c] for c in m.group())
-    before = m.string[m.start() - 1 : m.start()]
+def _runs(s: str, chars: dict[str, str], ascii: Callable[[str, str], str]) -> str:
+    """``s`` with each run of the keys of ``chars`` replaced by ``ascii(run, before)``, where
+    ``run`` is the run in ASCII and ``before`` the character before it (``""`` at the start)."""
+    out: list[str] = []
+    i, n = 0, len(s)
+    while i < n:
+        j = i
+        while j < n and s[j] in chars:
+            j += 1
+        if j == i:
+            out.append(s[i])
+            i += 1
+        else:
+            out.append(ascii("".join(chars[c] for c in s[i:j]), s[i - 1 : i]))
+            i = j
+    return "".join(out)
+
+
+def _sub_ascii(run: str, before: str) -> str:
     if run.isdigit() and before and not before.isdigit():
         return run  # p₀ -> p0, log₂ -> log2
     if run.isalnum():
@@ -167,8 +194,7 @@ def _sub_ascii(m: re.Match[str]) -> str:
     return "_{" + run + "}"  # xₖ₊₁ -> x_{k+1}
 
 
-def _sup_ascii(m: re.Match[str]) -> str:
-    run = "".join(_FROM_SUP[c] for c in m.group())
+def _sup_ascii(run: str, before: str) -> str:
     if run.isalnum() or (run[0] == "-" and run[1:].isalnum()):
         return "^" + run  # r² -> r^2, 2⁻ⁿ -> 2^-n
     if run[0] == "(" and run[-1] == ")" and "(" not in run[1:-1]:
@@ -188,16 +214,23 @@ def ascii_text(s: str) -> str:
     'x_k + eps y_k, dx'
     """
     if s.isascii():
-        return s if s.isprintable() else UNSAFE.sub("?", s)
-    s = _SUB_RUN.sub(_sub_ascii, s)
-    s = _SUP_RUN.sub(_sup_ascii, s)
+        return s if s.isprintable() else s.translate(_UNSAFE_TO_ASK)
+    if not _FROM_SUB.keys().isdisjoint(s):
+        s = _runs(s, _FROM_SUB, _sub_ascii)
+    if not _FROM_SUP.keys().isdisjoint(s):
+        s = _runs(s, _FROM_SUP, _sup_ascii)
+    if _NAMES.keys().isdisjoint(s):  # no name that may need a space after it: one table
+        text = s.translate(_ASCII_TABLE)
+        if not text.isascii():  # a character with no ASCII form
+            text = "".join(c if c.isascii() else "?" for c in text)
+        return text.translate(_UNSAFE_TO_ASK)
     out = []
     for i, ch in enumerate(s):
         word = ch if ch.isascii() else _ASCII.get(ch, "?")
         if len(word) > 1 and word.isalpha() and s[i + 1 : i + 2].isalpha():
             word += " "  # ε y as "eps y", never "epsy"
         out.append(word)
-    return UNSAFE.sub("?", "".join(out))
+    return "".join(out).translate(_UNSAFE_TO_ASK)
 
 
 # --- TeX -> Unicode --------------------------------------------------------------------------
@@ -257,7 +290,7 @@ _TEXT_SYMBOLS = {
 }
 """Text-mode symbols (what :func:`tex_text` writes for ``\\ ~ ^ < > |``)."""
 _SPACING = {" ": " ", ",": " ", ";": " ", ":": " ", ">": " ", "!": ""}
-_CONTROL_WORD = re.compile(r"\\([A-Za-z]+)")
+_ASCII_LETTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")
 _PASS_SUP = ("°", "′", "″")
 _OPERATORS = set(" +-−·×/=<>≤≥,;:")
 
@@ -533,8 +566,14 @@ class _Reader:
 
     def _letter_like_follows(self) -> bool:
         """True if a letter-like control word or a function name comes next."""
-        m = _CONTROL_WORD.match(self.s, self.i)
-        return m is not None and (m.group(1) in _LETTERS or m.group(1) in _FUNCTIONS)
+        s, i = self.s, self.i
+        if not s.startswith("\\", i):
+            return False
+        end = i + 1
+        while end < len(s) and s[end] in _ASCII_LETTERS:
+            end += 1
+        word = s[i + 1 : end]  # the control word's name (\\([A-Za-z]+)), or empty
+        return word != "" and (word in _LETTERS or word in _FUNCTIONS)
 
 
 def tex_to_unicode(tex: str) -> str:

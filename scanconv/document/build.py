@@ -8,11 +8,10 @@ instead.
 
 from __future__ import annotations
 
-import re
 from functools import partial
 from typing import Any
 
-from ..core import records
+from ..core import lazy, records
 from ..core.records import Quantity, Solution
 from .blocks import (
     Block,
@@ -33,7 +32,7 @@ from .prose import note_segments
 IDEAL = ("line", "circle", "ellipse", "polyline", "control")
 """The :attr:`Solution.geometry` keys that describe the ideal primitive."""
 
-_REGION = re.compile(r"Region (\d+) ")
+_REGION = lazy.pattern(r"Region (\d+) ")
 
 DERIVATION = "derivation"
 """The key of the rule that heads a derivation in the working

@@ -140,7 +140,7 @@ def marks_label(solution: Solution) -> str:
     if any(k in geometry for k in ("circle", "ellipse", "center")):
         return "centre"
     for note in solution.notes:  # "The centre is marked o in the grid."
-        said = re.search(r"\b[Tt]he (\w+) is marked o\b", note)
+        said = "is marked o" in note and re.search(r"\b[Tt]he (\w+) is marked o\b", note)
         if said:
             return said.group(1)
     return "marked point"

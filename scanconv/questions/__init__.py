@@ -19,6 +19,6 @@ declarations, and a test keeps the two equal.
 (1, 0)
 """
 
-from .. import _attach_stub
+from ..core.lazy import attach_stub
 
-__getattr__, __dir__ = _attach_stub(__name__, __file__)
+__getattr__, __dir__ = attach_stub(__name__, __file__)

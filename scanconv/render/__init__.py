@@ -16,10 +16,14 @@ from collections.abc import Callable, Iterator
 from enum import Enum
 from typing import TYPE_CHECKING, Any, NamedTuple
 
+from ..core import lazy
 from ..core.records import Solution
 
 if TYPE_CHECKING:
+    from .. import document
     from ..document import Document
+else:
+    document = lazy.module("scanconv.document")  # what render needs; Format alone does not
 
 
 class Format(str, Enum):
@@ -124,11 +128,8 @@ def formats(serving: str) -> tuple[str, ...]:
 
 def load(entry: str) -> Any:
     """The function an entry of :data:`FORMATS` names (``"text:render_plain"``), imported on
-    first use (start-up time)."""
-    from importlib import import_module
-
-    module, name = entry.split(":")
-    return getattr(import_module(f"{__name__}.{module}"), name)
+    first use (:func:`scanconv.core.lazy.load`: start-up time)."""
+    return lazy.load(f"{__name__}.{entry}")
 
 
 class Options(NamedTuple):
@@ -181,7 +182,5 @@ def render(
     options = options or Options()
     if fmt is Format.auto:
         raise ValueError("Format.auto must be resolved before rendering")
-    from ..document import as_document
-
     renderer: Callable[[Document, Options], Iterator[Chunk]] = load(FORMATS[fmt].renderer)
-    return renderer(as_document(solution), options)
+    return renderer(document.as_document(solution), options)

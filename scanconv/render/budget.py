@@ -31,12 +31,22 @@ import itertools
 from collections.abc import Iterator, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from ..core import lazy
 from ..core.checks import InputError
 from . import FORMATS, Format
 from .work import BYTES, COSTS, Work, estimate
 
 if TYPE_CHECKING:
+    from ..algorithms import image_limits as algorithms_image_limits
+    from ..answers import marking as answers_marking
+    from ..core import student_table as core_student_table
     from ..core.records import Solution
+    from . import stepper
+else:  # the limits of the checks that only some answers reach, loaded by their first use
+    algorithms_image_limits = lazy.module("scanconv.algorithms.image_limits")
+    answers_marking = lazy.module("scanconv.answers.marking")
+    core_student_table = lazy.module("scanconv.core.student_table")
+    stepper = lazy.module("scanconv.render.stepper")
 
 MATRIX_CELLS: dict[Format, int] = {
     Format(f): spec.matrix_cells
@@ -214,9 +224,7 @@ def _memory_limit(work: Work, fmt: Format) -> int:
 def _held_rows(fmt: Format) -> int:
     """How many rows ``fmt`` holds at most (the html page steps through at most
     :data:`~scanconv.render.stepper.MAX_STEPS`)."""
-    from .stepper import MAX_STEPS
-
-    return MAX_STEPS if fmt is Format.html else ALL_ROWS
+    return stepper.MAX_STEPS if fmt is Format.html else ALL_ROWS
 
 
 def check_work(name: str, arguments: Mapping[str, Any], fmt: Format | None) -> Work | None:
@@ -251,9 +259,7 @@ def check_work(name: str, arguments: Mapping[str, Any], fmt: Format | None) -> W
 
 
 def _check_matrix(work: Work, fmt: Format | None) -> None:
-    from ..algorithms.image_limits import MAX_CELLS
-
-    if fmt is None or work.size > MAX_CELLS:
+    if fmt is None or work.size > algorithms_image_limits.MAX_CELLS:
         return  # beyond the input limit: the function refuses it, naming that limit
     try:
         check_matrix(work.rows, work.cols or 1, fmt)
@@ -417,9 +423,6 @@ def check_batch(sizes: Sequence[int], question: Solution | int) -> None:
     ...
     scanconv.core.checks.InputError: the folder holds 40 files: against a question of 9,999 rows they are about 90 s of marking; a batch does at most 40 s (mark the folder in parts)
     """
-    from ..answers.marking import MAX_QUESTION_ROWS
-    from ..core.student_table import MAX_TABLE_ROWS
-
     if len(sizes) > BATCH_FILES:
         raise InputError(
             f"the folder holds {len(sizes):,} files; a batch marks at most {BATCH_FILES:,} "
@@ -429,8 +432,10 @@ def check_batch(sizes: Sequence[int], question: Solution | int) -> None:
     if isinstance(question, int):
         q = question
     else:
-        q = sum(1 for _ in itertools.islice(question.steps(), MAX_QUESTION_ROWS + 1))
-    rows = sum(min(MAX_TABLE_ROWS, size // 8 + 1) + q for size in sizes)
+        q = sum(
+            1 for _ in itertools.islice(question.steps(), answers_marking.MAX_QUESTION_ROWS + 1)
+        )
+    rows = sum(min(core_student_table.MAX_TABLE_ROWS, size // 8 + 1) + q for size in sizes)
     seconds = (len(sizes) * MARK_FILE_US + rows * MARK_ROW_US) / 1e6
     if seconds > BATCH_SECONDS:
         raise InputError(

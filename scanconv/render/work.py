@@ -22,11 +22,29 @@ Work(kind='rows', rows=1000001, cols=None, key='line/wu', param='x2', weight=1.0
 import math
 from collections.abc import Callable, Iterable, Mapping
 from fractions import Fraction
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..answers.methods import METHODS
+from ..core import lazy
 from ..core.checks import InputError
 from ..core.numeric import COORD_LIMIT
+
+if TYPE_CHECKING:
+    from ..algorithms import circles as algorithms_circles
+    from ..algorithms import coverage as algorithms_coverage
+    from ..algorithms import curve_limits as algorithms_curve_limits
+    from ..algorithms import ellipses as algorithms_ellipses
+    from ..algorithms import image_limits as algorithms_image_limits
+    from ..algorithms import polygon as algorithms_polygon
+    from ..answers import compare as answers_compare
+else:  # each estimate's own limits, loaded by its first use
+    algorithms_circles = lazy.module("scanconv.algorithms.circles")
+    algorithms_coverage = lazy.module("scanconv.algorithms.coverage")
+    algorithms_curve_limits = lazy.module("scanconv.algorithms.curve_limits")
+    algorithms_ellipses = lazy.module("scanconv.algorithms.ellipses")
+    algorithms_image_limits = lazy.module("scanconv.algorithms.image_limits")
+    algorithms_polygon = lazy.module("scanconv.algorithms.polygon")
+    answers_compare = lazy.module("scanconv.answers.compare")
 
 
 class Work(NamedTuple):
@@ -105,12 +123,10 @@ def _line(a: Args) -> Work:
 
 def _circle(a: Args) -> Work:
     # one octant: x runs from 0 to r/sqrt(2)
-    from ..algorithms.circles import SDDA_MAX_RADIUS
-
     rows = math.ceil(abs(_num(a, "r")) / math.sqrt(2)) + 1
     method = _choice(a, "method", "midpoint")
     if method == "symmetric-dda":
-        _within(_num(a, "r"), SDDA_MAX_RADIUS)
+        _within(_num(a, "r"), algorithms_circles.SDDA_MAX_RADIUS)
     # the symmetric DDA's exact values gain about 2 bits a step: a row costs in proportion
     # to the rows before it (r = 16383: 15 s and 1.4 GB as html)
     weight = max(1.0, rows / 1000) if method == "symmetric-dda" else 1.0
@@ -120,10 +136,8 @@ def _circle(a: Args) -> Work:
 def _ellipse(a: Args) -> Work:
     # region 1 ends where the slope is -1, at x = rx^2 / sqrt(rx^2 + ry^2); region 2 has about
     # ry^2 / sqrt(rx^2 + ry^2) steps (ellipse 20000 20000: 28,285 rows)
-    from ..algorithms.ellipses import MAX_AXIS
-
     rx, ry = abs(float(_num(a, "rx"))), abs(float(_num(a, "ry")))
-    _within(max(rx, ry), MAX_AXIS)
+    _within(max(rx, ry), algorithms_ellipses.MAX_AXIS)
     h = math.hypot(rx, ry) or 1.0
     rows = math.ceil((rx * rx + ry * ry) / h) + 2
     return Work("rows", rows, None, "ellipse/midpoint", "rx" if rx >= ry else "ry")
@@ -147,10 +161,8 @@ def _aa_cells(a: Args, command: str, param: str, width: Fraction, height: Fracti
     """Area sampling and supersampling: a row per pixel of the shape's box (the command
     refuses a box beyond :data:`~scanconv.algorithms.coverage.MAX_AA_CELLS`); a row of N x N
     supersampling costs N^2 samples (measured at N = 16)."""
-    from ..algorithms.coverage import MAX_AA_CELLS
-
     method = _choice(a, "method", "area")
-    cells = min((math.ceil(width) + 2) * (math.ceil(height) + 2), MAX_AA_CELLS)
+    cells = min((math.ceil(width) + 2) * (math.ceil(height) + 2), algorithms_coverage.MAX_AA_CELLS)
     weight = 1.0
     if method == "supersample":
         n = int(_num(a, "samples")) if a.get("samples") is not None else 4
@@ -184,11 +196,9 @@ def _pipeline_polygon(a: Args) -> Work:
 
 def _samples(key: str, default: int = 16, points: str | None = None) -> Callable[[Args], Work]:
     def rows(a: Args) -> Work:
-        from ..algorithms.curve_limits import MAX_SAMPLES
-
         n = a.get("samples")
         count = default if n is None else int(_num(a, "samples"))
-        _within(count, MAX_SAMPLES)
+        _within(count, algorithms_curve_limits.MAX_SAMPLES)
         weight = 1.0
         if points is not None and a.get(points) is not None:  # a row has a weight per point
             weight = max(1.0, len(_flat(a[points])) / 8)
@@ -206,42 +216,34 @@ def _parametric_line(a: Args) -> Work:
 
 def _polygon(a: Args) -> Work:
     # one row per scan line of the vertices' y extent (and a few for the edge table)
-    from ..algorithms.polygon import MAX_FILL_CELLS
-
     v = _coords(a, "vertices")
     xs, ys = v[0::2], v[1::2]
-    _within((max(xs) - min(xs) + 1) * (max(ys) - min(ys) + 1), MAX_FILL_CELLS)
+    _within((max(xs) - min(xs) + 1) * (max(ys) - min(ys) + 1), algorithms_polygon.MAX_FILL_CELLS)
     return Work("rows", math.ceil(max(ys) - min(ys)) + 1, None, "polygon/scan-line", "vertices")
 
 
 def _quantize(a: Args) -> Work:
-    from ..algorithms.image_limits import MAX_BITS
-
     bits = int(_num(a, "bits"))
-    _within(bits, MAX_BITS)
+    _within(bits, algorithms_image_limits.MAX_BITS)
     ranged = "/range" if a.get("value_range") else ""
     return Work("rows", 1 << bits if 0 < bits <= 64 else 0, None, "quantize" + ranged, "bits")
 
 
 def _matrix(default: str) -> Callable[[Args], Work]:
     def cells(a: Args) -> Work:
-        from ..algorithms.image_limits import parse_size
-
         size = a.get("size") or default
         if isinstance(size, (tuple, list)):
             m, n = (int(v) for v in size)
         else:
-            m, n = parse_size(str(size))
+            m, n = algorithms_image_limits.parse_size(str(size))
         return Work("matrix", m, n, "matrix", "size")
 
     return cells
 
 
 def _compare_line(a: Args) -> Work:
-    from ..answers.compare import MAX_LENGTH
-
     rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
-    _within(rows - 1, MAX_LENGTH)
+    _within(rows - 1, answers_compare.MAX_LENGTH)
     return Work("rows", rows, None, "compare_lines", param)
 
 

@@ -13,8 +13,7 @@ only when asked for (:func:`theory_solution`).
 
 from __future__ import annotations
 
-import importlib
-
+from ...core import lazy
 from ...core.checks import InputError
 from ...core.records import Solution
 from ._build import Topic
@@ -26,9 +25,7 @@ notes) last."""
 
 def topics() -> list[Topic]:
     """Every topic, in the notes' order."""
-    return [
-        t for section in SECTIONS for t in importlib.import_module(f"{__name__}.{section}").TOPICS
-    ]
+    return [t for section in SECTIONS for t in lazy.load(f"{__name__}.{section}:TOPICS")]
 
 
 def topic(name: str) -> Topic:
