@@ -111,28 +111,40 @@ class Typeset:
 
 
 def typeset(scratch: Path, tex: str, *, passes: int = 1, pdf: bool = True) -> Typeset:
-    """``tex`` through pdflatex (``-halt-on-error``, batch mode: the log alone). With two
-    passes the first is a draft (it writes the ``.aux`` and ``.toc`` the second reads:
-    longtable's column widths, the contents); ``pdf=False`` makes the last one a draft too
-    (no PDF written, none read back)."""
+    """``tex`` through pdflatex (``-halt-on-error``, batch mode: the log alone), in at most
+    ``passes`` passes. A pass whose log asks for no rerun (longtable's widths settled, no
+    label changed) in a document without contents ends the runs: one more would set the same
+    pages. A pass that is not the last is a draft (no PDF written: it writes the ``.aux`` and
+    ``.toc`` the next one reads) when the document has a longtable or contents; and every
+    pass is a draft with ``pdf=False`` (no PDF read back)."""
     exe = tool("pdflatex")
+    rerun_likely = "\\tableofcontents" in tex or "\\begin{longtable}" in tex
+
+    def one(folder: Path, draft: bool) -> tuple[int, str]:
+        proc = subprocess.run(
+            [exe, "-halt-on-error", "-interaction=batchmode"]
+            + (["-draftmode"] if draft else [])
+            + ["doc.tex"],
+            cwd=folder,
+            capture_output=True,
+            timeout=600,
+            check=False,
+        )
+        (folder / "code").write_text(str(proc.returncode))
+        return proc.returncode, (folder / "doc.log").read_text(encoding="utf-8", errors="replace")
 
     def make(folder: Path) -> None:
         (folder / "doc.tex").write_text(tex, encoding="utf-8")
         for n in range(passes):
-            draft = n < passes - 1 or not pdf
-            proc = subprocess.run(
-                [exe, "-halt-on-error", "-interaction=batchmode"]
-                + (["-draftmode"] if draft else [])
-                + ["doc.tex"],
-                cwd=folder,
-                capture_output=True,
-                timeout=600,
-                check=False,
-            )
-            (folder / "code").write_text(str(proc.returncode))
-            if proc.returncode:
-                break
+            last = n == passes - 1
+            draft = not pdf or (not last and rerun_likely)
+            code, log = one(folder, draft)
+            if code or last:
+                return
+            if "\\tableofcontents" not in tex and "Rerun" not in log:  # settled
+                if draft and pdf:
+                    one(folder, False)
+                return
 
     folder = _cached(scratch, ["pdflatex", str(passes), str(pdf), tex], make)
     log = (folder / "doc.log").read_text(encoding="utf-8", errors="replace")

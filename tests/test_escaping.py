@@ -140,7 +140,7 @@ ARTICLE += "\\begin{document}\n"
 def _typeset_not_executed(tmp_path: Path, preamble: str, body: str, every: Sequence[str]) -> None:
     """``body`` compiles after ``preamble`` and reads or runs nothing: checked on one document
     of all the test's cases (``every``), and on ``body`` alone when that one fails."""
-    typeset_each(tmp_path, preamble, body, every, lambda done: _not_executed(done.log))
+    typeset_each(tmp_path, preamble, body, every, lambda done: _not_executed(done.log), pdf=False)
 
 
 def _not_executed(log: str) -> None:
