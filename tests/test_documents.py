@@ -16,7 +16,9 @@ pdflatex the LaTeX tests skip, except in CI, where they fail.
 
 from __future__ import annotations
 
+import functools
 import re
+from collections.abc import Callable
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -204,17 +206,42 @@ def _compile(tmp_path: Path, *fragments: str) -> str:
     return done.log
 
 
-def _latex(name: str) -> str:
-    result = run(*CASES[name], "--format", "latex")
+@functools.cache
+def _answer(*args: str) -> str:
+    result = run(*args, "--format", "latex")
     assert result.code == 0, result.err
     return result.out
 
 
+def _latex(name: str) -> str:
+    return _answer(*CASES[name])
+
+
+#: The answers of the tests below that each check one answer's width (typeset with the cases).
+WIDE = (("circle", "10"), ("line", "0", "0", "24", "4"), ("circle", "20"))
+
+
+def _every() -> list[str]:
+    """The cases and the wide answers: one document sets them all, each from a new page."""
+    return [_latex(n) for n in _cases()] + [_answer(*args) for args in WIDE]
+
+
+def _fits_within(margin: float | None) -> Callable[[Typeset], None]:
+    """The check of a typeset answer: a PDF, and no line more than ``margin`` pt too wide
+    (``None``: no overfull line at all)."""
+
+    def fits(done: Typeset) -> None:
+        assert done.pdf.stat().st_size > 1000
+        wide = overfull(done.log)
+        assert not [v for v in wide if margin is None or v > margin], "a line past the margin"
+
+    return fits
+
+
 def test_latex_fragments_compile(tmp_path: Path) -> None:
-    fragments = [_latex(name) for name in _cases()]
-    for fragment in fragments:
-        assert fragment.startswith("% scanconv answer; needs \\usepackage{booktabs,amsmath")
-    log = _compile(tmp_path, batch(fragments))  # the document test_latex_fits_the_page_width sets
+    for name in _cases():
+        assert _latex(name).startswith("% scanconv answer; needs \\usepackage{booktabs,amsmath")
+    log = _compile(tmp_path, batch(_every()))  # the document test_latex_fits_the_page_width sets
     assert "Undefined control sequence" not in log and "Missing $ inserted" not in log
 
 
@@ -227,13 +254,7 @@ FITTING = list(CASES)
 def test_latex_fits_the_page_width(tmp_path: Path, name: str) -> None:
     """Every case typeset from a page of its own in one document; a case alone when that
     document has a line past the margin (the failure names it)."""
-
-    def fits(done: Typeset) -> None:
-        assert done.pdf.stat().st_size > 1000
-        assert not [v for v in overfull(done.log) if v > 1], "a line runs past the right margin"
-
-    every = [_latex(n) for n in FITTING if n in _cases()]
-    typeset_each(tmp_path, PREAMBLE, _latex(name), every, fits, passes=2)
+    typeset_each(tmp_path, PREAMBLE, _latex(name), _every(), _fits_within(1), passes=2)
 
 
 def test_latex_wide_short_table_is_set_whole_never_in_parts(tmp_path: Path) -> None:
@@ -242,13 +263,12 @@ def test_latex_wide_short_table_is_set_whole_never_in_parts(tmp_path: Path) -> N
     from scanconv.answers.circle import circle_solution
 
     (table,) = circle_solution("midpoint", 10).tables
-    out = run("circle", "10", "--format", "latex").out
+    out = _answer("circle", "10")
     assert ", part 1 of" not in out
     whole = out.split("8-way symmetry about the centre (0, 0)")[1].split("\\end{tabular}")[0]
     assert "\\resizebox{\\linewidth}" in whole
     assert whole.count("\\\\\n") == 1 + sum(1 for _ in table.rows())  # heading and rows
-    log = _compile(tmp_path, out)
-    assert not [v for v in overfull(log) if v > 1]
+    typeset_each(tmp_path, PREAMBLE, out, _every(), _fits_within(1), passes=2)
 
 
 def test_latex_long_answer_breaks_pixels_and_pages(tmp_path: Path) -> None:
@@ -263,10 +283,9 @@ def test_latex_long_answer_breaks_pixels_and_pages(tmp_path: Path) -> None:
 
 def test_latex_wide_grid_is_drawn_to_fit(tmp_path: Path) -> None:
     """Issue 27: the grid is drawn (TikZ), scaled to the text width, never typewriter text."""
-    result = run("line", "0", "0", "24", "4", "--format", "latex")
-    assert "\\begin{tikzpicture}" in result.out and "\\begin{verbatim}" not in result.out
-    log = _compile(tmp_path, result.out)
-    assert not [v for v in overfull(log) if v > 1]
+    out = _answer("line", "0", "0", "24", "4")
+    assert "\\begin{tikzpicture}" in out and "\\begin{verbatim}" not in out
+    typeset_each(tmp_path, PREAMBLE, out, _every(), _fits_within(1), passes=2)
 
 
 # --- the terminal: the full answer by default, --brief for the answer alone ------------------------
@@ -363,7 +382,6 @@ def test_every_golden_latex_answer_in_one_document_sets_cleanly(tmp_path: Path) 
 
 
 def test_latex_radius_20_grid_fits_the_margin(tmp_path: Path) -> None:
-    result = run("circle", "20", "--format", "latex")
-    assert "\\begin{minipage}" in result.out
-    log = _compile(tmp_path, result.out)
-    assert not overfull(log)
+    out = _answer("circle", "20")
+    assert "\\begin{minipage}" in out
+    typeset_each(tmp_path, PREAMBLE, out, _every(), _fits_within(None), passes=2)
