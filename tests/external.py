@@ -200,10 +200,7 @@ def pdftotext(scratch: Path, pdf: Path) -> str:
 
     def make(folder: Path) -> None:
         (folder / "in.pdf").write_bytes(data)
-        text = subprocess.run(
-            [exe, "-layout", "in.pdf", "out.txt"], cwd=folder, check=True, timeout=120
-        )
-        del text
+        subprocess.run([exe, "-layout", "in.pdf", "out.txt"], cwd=folder, check=True, timeout=120)
 
     folder = _cached(scratch, ["pdftotext -layout", data], make)
     return (folder / "out.txt").read_text(encoding="utf-8")
