@@ -127,11 +127,12 @@ def check_every_step(page: Opened, answer: dict[str, Any], **mirror: Any) -> Non
     """Step forward with → through the whole answer and back with ←, checking each step."""
     n = len(answer["steps"])
     page.key("Home")
+    before = page.state()["pos"]
     for k in [*range(n + 1), *range(n - 1, -1, -1)]:
-        before = page.state()["pos"]
         if before != k:
             page.key("ArrowRight" if before < k else "ArrowLeft")
         st = page.state()
+        before = st["pos"]  # the page's own position, read once a step
         assert st["pos"] == st["slider"] == k
         assert st["rows"] == ([k] if k else [])
         assert as_set(st["lit"]) == expected_lit(answer, k, **mirror), k

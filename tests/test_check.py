@@ -434,12 +434,12 @@ def test_the_options_may_follow_the_question(tmp_path):
     assert target.read_text().startswith("## Marking")
 
 
-def test_markdown_renders_through_pandoc():
+def test_markdown_renders_through_pandoc(tmp_path):
     pytest.importorskip("pypandoc")
     from .test_documents import _to_html
 
     html, warnings = _to_html(
-        run("check", str(DATA / "slip.csv"), "--", *LINE, "-f", "md").out, "gfm"
+        tmp_path, run("check", str(DATA / "slip.csv"), "--", *LINE, "-f", "md").out, "gfm"
     )
     assert "[WARNING]" not in warnings
     assert html.tables and len(html.tables[0]["rows"]) == 9
@@ -448,13 +448,14 @@ def test_markdown_renders_through_pandoc():
 @pytest.mark.external
 @pytest.mark.slow
 def test_latex_compiles(tmp_path):
-    from .test_documents import _compile, _overfull
+    from .external import overfull
+    from .test_documents import _compile
 
     fragments = [
         run("check", str(DATA / name), "--", *q, "-f", "latex").out for name, q, _ in DIAGNOSES[:6]
     ]
     log = _compile(tmp_path, *fragments)
-    assert "Undefined control sequence" not in log and not _overfull(log)
+    assert "Undefined control sequence" not in log and not overfull(log)
 
 
 # --- batches ----------------------------------------------------------------------------------

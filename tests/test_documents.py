@@ -16,10 +16,9 @@ pdflatex the LaTeX tests skip, except in CI, where they fail.
 
 from __future__ import annotations
 
-import os
+import functools
 import re
-import shutil
-import subprocess
+from collections.abc import Callable
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -31,6 +30,7 @@ from scanconv.core.records import Solution
 from scanconv.render import grid as gridmod
 
 from .cli_vocabulary import DOCUMENTS, NOT_WALKED
+from .external import Typeset, batch, overfull, pandoc_with_warnings, typeset, typeset_each
 from .helpers import run
 
 pytestmark = pytest.mark.external  # pdflatex, pandoc (external tests are slow too: conftest)
@@ -78,18 +78,6 @@ def _markdown(name: str) -> str:
 
 
 # --- markdown through pandoc ---------------------------------------------------------------------
-
-
-def _pandoc() -> str:
-    try:
-        import pypandoc
-
-        return str(pypandoc.get_pandoc_path())
-    except (ImportError, OSError):
-        found = shutil.which("pandoc")
-        if not found:
-            pytest.skip("pandoc not installed (pip install pypandoc_binary)")
-        return found
 
 
 class _Html(HTMLParser):
@@ -148,24 +136,17 @@ class _Html(HTMLParser):
             self.text_outside_math.append(data)
 
 
-def _to_html(markdown: str, dialect: str) -> tuple[_Html, str]:
-    proc = subprocess.run(
-        [_pandoc(), "-f", dialect, "-t", "html", "--mathml"],
-        input=markdown,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=True,
-    )
+def _to_html(scratch: Path, markdown: str, dialect: str) -> tuple[_Html, str]:
+    out, warnings = pandoc_with_warnings(scratch, markdown, dialect, "html", "--mathml")
     parser = _Html()
-    parser.feed(proc.stdout)
-    return parser, proc.stderr
+    parser.feed(out)
+    return parser, warnings
 
 
 @pytest.mark.parametrize("dialect", ["markdown", "gfm"])
 @pytest.mark.parametrize("name", _cases())
-def test_markdown_renders_through_pandoc(name: str, dialect: str) -> None:
-    html, warnings = _to_html(_markdown(name), dialect)
+def test_markdown_renders_through_pandoc(tmp_path: Path, name: str, dialect: str) -> None:
+    html, warnings = _to_html(tmp_path, _markdown(name), dialect)
     assert "[WARNING]" not in warnings, warnings  # e.g. "Could not convert TeX math"
     assert "$" not in "".join(html.text_outside_math), "a $...$ was not read as math"
     assert html.tables, "the step table did not become an HTML table"
@@ -177,10 +158,10 @@ def test_markdown_renders_through_pandoc(name: str, dialect: str) -> None:
 
 
 @pytest.mark.parametrize("name", ["line-bresenham", "line-dda", "line-basic", "compare-line"])
-def test_markdown_survives_exactly(name: str) -> None:
+def test_markdown_survives_exactly(tmp_path: Path, name: str) -> None:
     """Counted from the Solution: one <math> per formula, one row per step, the same grid."""
     solution = _solution(name)
-    html, _ = _to_html(_markdown(name), "gfm")
+    html, _ = _to_html(tmp_path, _markdown(name), "gfm")
     tables = ([solution.columns] if solution.columns else []) + [t.columns for t in solution.tables]
     from scanconv.render.cells import note_segments
 
@@ -216,52 +197,51 @@ PREAMBLE = r"""\documentclass{article}
 """
 
 
-def _pdflatex() -> str:
-    found = shutil.which("pdflatex")
-    if not found:
-        if os.environ.get("CI"):
-            pytest.fail("pdflatex missing in CI: .ci/run installs texlive-latex-base")
-        pytest.skip("pdflatex not installed (apt-get install texlive-latex-base)")
-    return found
-
-
 def _compile(tmp_path: Path, *fragments: str) -> str:
-    """Compile the fragments in a minimal article; return the log."""
-    names = []
-    for i, text in enumerate(fragments):
-        (tmp_path / f"answer{i}.tex").write_text(text, encoding="utf-8")
-        names.append(f"\\input{{answer{i}}}")
-    doc = PREAMBLE + "\n".join(names) + "\n\\end{document}\n"
-    (tmp_path / "doc.tex").write_text(doc, encoding="utf-8")
-    for _ in range(2):  # longtable settles its column widths on the second run
-        proc = subprocess.run(
-            [_pdflatex(), "-halt-on-error", "-interaction=nonstopmode", "doc.tex"],
-            cwd=tmp_path,
-            capture_output=True,
-            text=True,
-            timeout=300,
-        )
-        if proc.returncode:
-            break
-    log = (tmp_path / "doc.log").read_text(encoding="utf-8", errors="replace")
-    assert proc.returncode == 0, log[-3000:]
-    assert (tmp_path / "doc.pdf").stat().st_size > 1000
-    return log
+    """Compile the fragments in a minimal article (two passes: longtable settles its column
+    widths on the second); return the log."""
+    done = typeset(tmp_path, PREAMBLE + "\n".join(fragments) + "\n\\end{document}\n", passes=2)
+    assert done.code == 0, done.log[-3000:]
+    assert done.pdf.stat().st_size > 1000
+    return done.log
 
 
-def _overfull(log: str) -> list[float]:
-    """How far (pt) each overfull line sticks out past the margin."""
-    return [float(v) for v in re.findall(r"Overfull \\hbox \(([\d.]+)pt too wide\)", log)]
+@functools.cache
+def _answer(*args: str) -> str:
+    result = run(*args, "--format", "latex")
+    assert result.code == 0, result.err
+    return result.out
+
+
+def _latex(name: str) -> str:
+    return _answer(*CASES[name])
+
+
+#: The answers of the tests below that each check one answer's width (typeset with the cases).
+WIDE = (("circle", "10"), ("line", "0", "0", "24", "4"), ("circle", "20"))
+
+
+def _every() -> list[str]:
+    """The cases and the wide answers: one document sets them all, each from a new page."""
+    return [_latex(n) for n in _cases()] + [_answer(*args) for args in WIDE]
+
+
+def _fits_within(margin: float | None) -> Callable[[Typeset], None]:
+    """The check of a typeset answer: a PDF, and no line more than ``margin`` pt too wide
+    (``None``: no overfull line at all)."""
+
+    def fits(done: Typeset) -> None:
+        assert done.pdf.stat().st_size > 1000
+        wide = overfull(done.log)
+        assert not [v for v in wide if margin is None or v > margin], "a line past the margin"
+
+    return fits
 
 
 def test_latex_fragments_compile(tmp_path: Path) -> None:
-    fragments = []
     for name in _cases():
-        result = run(*CASES[name], "--format", "latex")
-        assert result.code == 0, result.err
-        assert result.out.startswith("% scanconv answer; needs \\usepackage{booktabs,amsmath")
-        fragments.append(result.out)
-    log = _compile(tmp_path, *fragments)
+        assert _latex(name).startswith("% scanconv answer; needs \\usepackage{booktabs,amsmath")
+    log = _compile(tmp_path, batch(_every()))  # the document test_latex_fits_the_page_width sets
     assert "Undefined control sequence" not in log and "Missing $ inserted" not in log
 
 
@@ -272,9 +252,9 @@ FITTING = list(CASES)
 
 @pytest.mark.parametrize("name", [n for n in FITTING if n in _cases()])
 def test_latex_fits_the_page_width(tmp_path: Path, name: str) -> None:
-    result = run(*CASES[name], "--format", "latex")
-    log = _compile(tmp_path, result.out)
-    assert not [v for v in _overfull(log) if v > 1], "a line runs past the right margin"
+    """Every case typeset from a page of its own in one document; a case alone when that
+    document has a line past the margin (the failure names it)."""
+    typeset_each(tmp_path, PREAMBLE, _latex(name), _every(), _fits_within(1), passes=2)
 
 
 def test_latex_wide_short_table_is_set_whole_never_in_parts(tmp_path: Path) -> None:
@@ -283,13 +263,12 @@ def test_latex_wide_short_table_is_set_whole_never_in_parts(tmp_path: Path) -> N
     from scanconv.answers.circle import circle_solution
 
     (table,) = circle_solution("midpoint", 10).tables
-    out = run("circle", "10", "--format", "latex").out
+    out = _answer("circle", "10")
     assert ", part 1 of" not in out
     whole = out.split("8-way symmetry about the centre (0, 0)")[1].split("\\end{tabular}")[0]
     assert "\\resizebox{\\linewidth}" in whole
     assert whole.count("\\\\\n") == 1 + sum(1 for _ in table.rows())  # heading and rows
-    log = _compile(tmp_path, out)
-    assert not [v for v in _overfull(log) if v > 1]
+    typeset_each(tmp_path, PREAMBLE, out, _every(), _fits_within(1), passes=2)
 
 
 def test_latex_long_answer_breaks_pixels_and_pages(tmp_path: Path) -> None:
@@ -297,17 +276,16 @@ def test_latex_long_answer_breaks_pixels_and_pages(tmp_path: Path) -> None:
     page (longtable) instead of running off the page's bottom or right edge."""
     result = run("line", "0", "0", "50", "10", "--format", "latex", "--no-grid")
     log = _compile(tmp_path, result.out)
-    assert not _overfull(log) and "Overfull \\vbox" not in log
+    assert not overfull(log) and "Overfull \\vbox" not in log
     pages = re.search(r"Output written on doc\.pdf \((\d+) pages?", log)
     assert pages and int(pages.group(1)) >= 2
 
 
 def test_latex_wide_grid_is_drawn_to_fit(tmp_path: Path) -> None:
     """Issue 27: the grid is drawn (TikZ), scaled to the text width, never typewriter text."""
-    result = run("line", "0", "0", "24", "4", "--format", "latex")
-    assert "\\begin{tikzpicture}" in result.out and "\\begin{verbatim}" not in result.out
-    log = _compile(tmp_path, result.out)
-    assert not [v for v in _overfull(log) if v > 1]
+    out = _answer("line", "0", "0", "24", "4")
+    assert "\\begin{tikzpicture}" in out and "\\begin{verbatim}" not in out
+    typeset_each(tmp_path, PREAMBLE, out, _every(), _fits_within(1), passes=2)
 
 
 # --- the terminal: the full answer by default, --brief for the answer alone ------------------------
@@ -400,11 +378,10 @@ def test_every_golden_latex_answer_in_one_document_sets_cleanly(tmp_path: Path) 
         grids = result.out.count("\\begin{verbatim}") + result.out.count("\\begin{tikzpicture}")
         assert result.out.count("\\begin{minipage}{\\linewidth}") == grids, path.name
     log = _compile(tmp_path, *fragments)
-    assert _overfull(log) == [], "overfull boxes"
+    assert overfull(log) == [], "overfull boxes"
 
 
 def test_latex_radius_20_grid_fits_the_margin(tmp_path: Path) -> None:
-    result = run("circle", "20", "--format", "latex")
-    assert "\\begin{minipage}" in result.out
-    log = _compile(tmp_path, result.out)
-    assert not _overfull(log)
+    out = _answer("circle", "20")
+    assert "\\begin{minipage}" in out
+    typeset_each(tmp_path, PREAMBLE, out, _every(), _fits_within(None), passes=2)

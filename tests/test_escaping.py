@@ -31,7 +31,7 @@ import json
 import os
 import re
 import shutil
-import subprocess
+from collections.abc import Sequence
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -39,6 +39,7 @@ import pytest
 
 from scanconv.render import Format
 
+from .external import pandoc, typeset_each
 from .helpers import run
 
 pytestmark = pytest.mark.slow
@@ -74,27 +75,6 @@ FORMULAS = ["t**2+t**3", "(t*t\n+t)", "-1+t", "+t", "t*(t)*t", "1e1*t  -  t"]
 EMPHASIS = ("t**2+t**3", "t*(t)*t")
 
 ANSWER_FORMATS = [f for f in Format if f is not Format.auto]
-
-
-def _pandoc() -> str:
-    try:
-        import pypandoc
-
-        return str(pypandoc.get_pandoc_path())
-    except (ImportError, OSError):
-        found = shutil.which("pandoc")
-        if not found:
-            pytest.skip("pandoc not installed (pip install pypandoc_binary)")
-        return found
-
-
-def _pdflatex() -> str:
-    found = shutil.which("pdflatex")
-    if not found:
-        if os.environ.get("CI"):
-            pytest.fail("pdflatex missing in CI")
-        pytest.skip("pdflatex not installed")
-    return found
 
 
 class _Tags(HTMLParser):
@@ -147,33 +127,20 @@ def _html(page: str) -> _Tags:
     return parser
 
 
-@functools.lru_cache(maxsize=8)
-def _markdown_html(markdown: str) -> _Tags:
-    """The Markdown through pandoc, parsed (cached: each sheet case compares its page with the
-    same harmless sheet's; the result is only read)."""
-    proc = subprocess.run(
-        [_pandoc(), "-f", "markdown", "-t", "html"],
-        input=markdown,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=True,
-    )
-    return _html(proc.stdout)
+def _markdown_html(scratch: Path, markdown: str) -> _Tags:
+    """The Markdown through pandoc (once per text in a run: each sheet case compares its page
+    with the same harmless sheet's), parsed."""
+    return _html(pandoc(scratch, markdown, "markdown", "html"))
 
 
-def _compile(tmp_path: Path, document: str) -> str:
-    (tmp_path / "doc.tex").write_text(document, encoding="utf-8")
-    proc = subprocess.run(
-        [_pdflatex(), "-halt-on-error", "-interaction=nonstopmode", "doc.tex"],
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    log = (tmp_path / "doc.log").read_text(encoding="utf-8", errors="replace")
-    assert proc.returncode == 0, log[-3000:]
-    return log
+ARTICLE = "\\documentclass{article}\n\\usepackage{booktabs,amsmath,longtable,array,tikz}\n"
+ARTICLE += "\\begin{document}\n"
+
+
+def _typeset_not_executed(tmp_path: Path, preamble: str, body: str, every: Sequence[str]) -> None:
+    """``body`` compiles after ``preamble`` and reads or runs nothing: checked on one document
+    of all the test's cases (``every``), and on ``body`` alone when that one fails."""
+    typeset_each(tmp_path, preamble, body, every, lambda done: _not_executed(done.log), pdf=False)
 
 
 def _not_executed(log: str) -> None:
@@ -196,15 +163,14 @@ def _check_format(
     """The format-specific checks of an accepted answer."""
     _no_control_characters(out)
     if fmt is Format.markdown:
-        page = _markdown_html(out)
+        page = _markdown_html(tmp_path, out)
         assert not page.in_headings, f"markup from user text in a heading: {page.in_headings}"
         assert "script" not in page.tags
         if table_rows is not None:
             cells = [n for n in page.rows if n]
             assert len(set(cells)) == 1 and len(cells) >= table_rows, page.rows
     elif fmt is Format.latex:
-        doc = "\\documentclass{article}\n\\usepackage{booktabs,amsmath,longtable,array,tikz}\n"
-        _not_executed(_compile(tmp_path, doc + "\\begin{document}\n" + out + "\\end{document}\n"))
+        _typeset_not_executed(tmp_path, ARTICLE, out, _formula_latex())
     elif fmt is Format.json:
         json.loads(out)
     elif fmt is Format.csv:
@@ -251,21 +217,31 @@ def _formula_cases() -> list:
     ]
 
 
+def _formula_args(formula: str, fmt: str) -> tuple[list[str], list[str]]:
+    """The two commands that take a formula: a parametric curve and a sampled field."""
+    parametric = ["parametric", "custom", "--x", formula, "--y", "t", "-n", "4", "--no-grid"]
+    sample = ["sample", formula.replace("t", "x"), "--size", "3", "-L", "2"]
+    return [*parametric, "-f", fmt], [*sample, "-f", fmt]
+
+
+@functools.cache
+def _formula_latex() -> tuple[str, ...]:
+    """Every accepted formula's LaTeX answers (typeset together)."""
+    return tuple(run(*a).out for f in FORMULAS for a in _formula_args(f, "latex"))
+
+
 @pytest.mark.parametrize(("formula", "fmt"), _formula_cases())
 def test_accepted_formulas_are_escaped_in_every_format(formula, fmt, tmp_path):
-    r = run(
-        "parametric", "custom", "--x", formula, "--y", "t", "-n", "4", "-f", fmt.value, "--no-grid"
-    )
+    parametric, sample = _formula_args(formula, fmt.value)
+    r = run(*parametric)
     assert r.code == 0, r.err
-    harmless = run(
-        "parametric", "custom", "--x", "t", "--y", "t", "-n", "4", "-f", fmt.value, "--no-grid"
-    )
+    harmless = run(*_formula_args("t", fmt.value)[0])
     _check_format(fmt, r.out, tmp_path, table_rows=5, baseline=harmless.out)
     if fmt is Format.json:
         assert json.loads(r.out)["x_formula"] == formula
-    r = run("sample", formula.replace("t", "x"), "--size", "3", "-L", "2", "-f", fmt.value)
+    r = run(*sample)
     assert r.code == 0, r.err
-    harmless = run("sample", "x", "--size", "3", "-L", "2", "-f", fmt.value)
+    harmless = run(*_formula_args("x", fmt.value)[1])
     _check_format(fmt, r.out, tmp_path, table_rows=None, baseline=harmless.out)
 
 
@@ -290,6 +266,26 @@ def _sheet_file(tmp_path: Path, text: str) -> Path:
     return path
 
 
+def _document(tex: str) -> tuple[str, str]:
+    """A standalone document's preamble (to ``\\begin{document}``) and body."""
+    preamble, rest = tex.split("\\begin{document}\n", 1)
+    return preamble + "\\begin{document}\n", rest.rsplit("\\end{document}", 1)[0]
+
+
+@functools.cache
+def _sheet_latex(base: Path) -> tuple[str, ...]:
+    """The body of every sheet case's standalone LaTeX (typeset together); ``base`` is this
+    process's base temporary folder."""
+    bodies = []
+    for n, text in enumerate(CORPUS):
+        folder = base / "escaping-sheets"
+        (folder / str(n)).mkdir(parents=True)
+        r = run("sheet", str(_sheet_file(folder / str(n), text)), "-f", "latex", "--standalone")
+        if r.code == 0:  # a NUL byte is refused
+            bodies.append(_document(r.out)[1])
+    return tuple(bodies)
+
+
 def _sheet_cases():
     for text in CORPUS:
         for fmt in SHEET_FORMATS:
@@ -297,7 +293,7 @@ def _sheet_cases():
 
 
 @pytest.mark.parametrize(("text", "fmt"), list(_sheet_cases()))
-def test_sheet_titles_sections_and_wording_are_escaped(text, fmt, tmp_path):
+def test_sheet_titles_sections_and_wording_are_escaped(text, fmt, tmp_path, tmp_path_factory):
     path = _sheet_file(tmp_path, text)
     args = ["sheet", str(path), "-f", fmt]
     r = run(*args, *(["--standalone"] if fmt in ("latex", "html") else []))
@@ -307,13 +303,15 @@ def test_sheet_titles_sections_and_wording_are_escaped(text, fmt, tmp_path):
     assert r.code == 0, r.err
     _no_control_characters(r.out)
     if fmt == "markdown":
-        page = _markdown_html(r.out)
+        page = _markdown_html(tmp_path, r.out)
         assert "script" not in page.tags and "img" not in page.tags and "a" not in page.tags
         plain = run("sheet", str(_sheet_file(tmp_path, "plain words")), "-f", fmt)
-        assert page.rows == _markdown_html(plain.out).rows  # the same tables, none broken
+        assert page.rows == _markdown_html(tmp_path, plain.out).rows  # the same tables, none broken
         assert page.tags.count("h1") == 1 and page.tags.count("h2") == 1
     elif fmt == "latex":
-        _not_executed(_compile(tmp_path, r.out))
+        preamble, body = _document(r.out)
+        every = _sheet_latex(tmp_path_factory.getbasetemp())
+        _typeset_not_executed(tmp_path, preamble, body, every)
     elif fmt == "json":
         data = json.loads(r.out)
         assert isinstance(data["title"], str) and data["questions"][0]["command"].startswith(
@@ -353,5 +351,5 @@ def test_batch_csv_neutralises_formula_cells_from_file_names(tmp_path):
         assert not cell.startswith(("=", "+", "-", "@", "\t", "\r")), cell
     r = run("check", "--batch", str(folder), "-f", "markdown", "--", "line", "2", "2", "10", "6")
     assert r.code == 0, r.err
-    page = _markdown_html(r.out)
+    page = _markdown_html(tmp_path, r.out)
     assert len({n for n in page.rows if n}) == 1, page.rows  # '|' in a name breaks no row

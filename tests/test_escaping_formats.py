@@ -11,14 +11,13 @@ from __future__ import annotations
 
 import json
 import re
-import shutil
-import subprocess
 from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
 
 from scanconv.render.latex import _cell
+from tests.external import typeset
 from tests.helpers import run
 from tests.test_print import Visible
 
@@ -67,31 +66,17 @@ def test_latex_score_table_never_sets_a_name_in_math(tmp_path: Path) -> None:
     assert "\\textbackslash{}input" in out  # the name is shown, as text
 
 
-def _pdflatex() -> str:
-    found = shutil.which("pdflatex")
-    if not found:
-        pytest.skip("pdflatex not installed")
-    return found
-
-
 @pytest.mark.external
 @pytest.mark.slow
 def test_latex_score_table_reads_no_file_when_compiled(tmp_path: Path) -> None:
     body = _batch(_folder(tmp_path, *TEX_NAMES), "latex")
-    doc = tmp_path / "s.tex"
-    doc.write_text(
+    done = typeset(
+        tmp_path,
         "\\documentclass{article}\\usepackage{booktabs,amsmath,longtable,tikz}\n"
-        f"\\begin{{document}}\n{body}\\end{{document}}\n"
+        f"\\begin{{document}}\n{body}\\end{{document}}\n",
     )
-    subprocess.run(
-        [_pdflatex(), "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error", doc.name],
-        cwd=tmp_path,
-        capture_output=True,
-        timeout=120,
-        check=False,
-    )
-    log = (tmp_path / "s.log").read_text(errors="replace")
-    assert (tmp_path / "s.pdf").exists(), log[-2000:]
+    log = done.log
+    assert done.pdf.exists(), log[-2000:]
     assert "/etc/hostname" not in log and "/etc/passwd" not in log, log[-2000:]
 
 

@@ -12,13 +12,12 @@ text, without MathML and scripts, holds no raw TeX.
 from __future__ import annotations
 
 import re
-import shutil
-import subprocess
 from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
 
+from tests.external import pandoc, pdftotext, typeset
 from tests.helpers import run
 
 QUESTIONS = """\
@@ -39,43 +38,20 @@ EN_DASH_OPTION = re.compile(r"[–—][a-z]")
 TYPEWRITER_ROW = re.compile(r"^\s*-?\d+ \|[ .#o@]+$", re.MULTILINE)
 
 
-def _tool(name: str) -> str:
-    found = shutil.which(name)
-    if not found:
-        pytest.skip(f"{name} not installed (apt-get install texlive-pictures poppler-utils)")
-    return found
+def _compile(folder: Path, tex: str) -> tuple[Path, str]:
+    """Two passes (longtable settles its widths on the second): the PDF and the last log."""
+    done = typeset(folder, tex, passes=2)
+    assert done.code == 0, done.log[-3000:]
+    return done.pdf, done.log
 
 
-def _compile(folder: Path, tex: str, name: str) -> tuple[Path, str]:
-    (folder / f"{name}.tex").write_text(tex, encoding="utf-8")
-    for _ in range(2):  # longtable settles its widths on the second run
-        proc = subprocess.run(
-            [_tool("pdflatex"), "-halt-on-error", "-interaction=nonstopmode", f"{name}.tex"],
-            cwd=folder,
-            capture_output=True,
-            text=True,
-            timeout=300,
-            check=False,
-        )
-        log = (folder / f"{name}.log").read_text(encoding="utf-8", errors="replace")
-        assert proc.returncode == 0, log[-3000:]
-    return folder / f"{name}.pdf", log
-
-
-def _pages(pdf: Path) -> list[str]:
+def _pages(folder: Path, pdf: Path) -> list[str]:
     """The text of each page, in reading order (``pdftotext -layout`` keeps table rows)."""
-    text = subprocess.run(
-        [_tool("pdftotext"), "-layout", str(pdf), "-"],
-        capture_output=True,
-        text=True,
-        check=True,
-        timeout=120,
-    ).stdout
-    return text.split("\f")[:-1]
+    return pdftotext(folder, pdf).split("\f")[:-1]
 
 
-def _assert_print_clean(pdf: Path, log: str, *, worksheet: bool = False) -> list[str]:
-    pages = _pages(pdf)
+def _assert_print_clean(folder: Path, pdf: Path, log: str, *, worksheet: bool = False) -> list[str]:
+    pages = _pages(folder, pdf)
     assert pages
     text = "\n".join(pages)
     assert "Overfull" not in log, re.findall(r"Overfull.*", log)[:5]
@@ -106,8 +82,8 @@ def test_exam_book_prints_clean(tmp_path: Path) -> None:
     r = run("exam", "--format", "latex", "--standalone")
     assert r.code == 0, r.err
     assert "\\begin{verbatim}" not in r.out  # every grid and figure drawn
-    pdf, log = _compile(tmp_path, r.out, "exam")
-    pages = _assert_print_clean(pdf, log)
+    pdf, log = _compile(tmp_path, r.out)
+    pages = _assert_print_clean(tmp_path, pdf, log)
     text = "\n".join(pages)
     assert "--window" in text and "--algo" in text  # options as typed, hyphens kept
     assert "1. Geometric description" in text  # the five stages as text, not math
@@ -119,8 +95,8 @@ def test_answer_key_prints_clean(tmp_path: Path, questions: Path) -> None:
     r = run("sheet", str(questions), "--key", "--format", "latex", "--standalone")
     assert r.code == 0, r.err
     assert r.out.count("\\begin{tikzpicture}") >= 5  # a drawn grid for every drawing question
-    pdf, log = _compile(tmp_path, r.out, "key")
-    text = "\n".join(_assert_print_clean(pdf, log))
+    pdf, log = _compile(tmp_path, r.out)
+    text = "\n".join(_assert_print_clean(tmp_path, pdf, log))
     assert "scanconv line 2 2 10 6 --algo dda" in text
     # The comparison is one table: its DDA and Bresenham columns side by side.
     assert ", part 1 of" not in text
@@ -132,8 +108,8 @@ def test_answer_key_prints_clean(tmp_path: Path, questions: Path) -> None:
 def test_worksheet_prints_with_empty_grids_and_tables(tmp_path: Path, questions: Path) -> None:
     r = run("sheet", str(questions), "--worksheet", "--format", "latex", "--standalone")
     assert r.code == 0, r.err
-    pdf, log = _compile(tmp_path, r.out, "worksheet")
-    text = "\n".join(_assert_print_clean(pdf, log, worksheet=True))
+    pdf, log = _compile(tmp_path, r.out)
+    text = "\n".join(_assert_print_clean(tmp_path, pdf, log, worksheet=True))
     drawing = 4  # the two lines and the two circles; the comparison has no grid of its own
     assert text.count("Plot the pixels on this grid.") == drawing
     assert text.count("Working") == 5
@@ -209,11 +185,10 @@ def test_exam_book_html_shows_no_raw_tex() -> None:
 @pytest.mark.external
 @pytest.mark.parametrize("name", ["line", "circle-foley", "general", "compare", "symmetric-dda"])
 @pytest.mark.parametrize("flavour", ["markdown", "gfm"])
-def test_markdown_through_pandoc_shows_no_raw_tex(name: str, flavour: str) -> None:
+def test_markdown_through_pandoc_shows_no_raw_tex(tmp_path: Path, name: str, flavour: str) -> None:
     """The Markdown homework through ``pandoc --mathml`` reads like the PDF: math as math."""
-    pypandoc = pytest.importorskip("pypandoc")
     r = run(*HTML_PAGES[name], "--format", "markdown")
     assert r.code == 0, r.err
-    html = pypandoc.convert_text(r.out, "html", format=flavour, extra_args=["--mathml"])
+    html = pandoc(tmp_path, r.out, flavour, "html", "--mathml")
     text = _visible(html)
     assert not re.findall(r"\^|_\{|\\frac|\\text|\$|\\[a-zA-Z]+", text)

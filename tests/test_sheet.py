@@ -12,7 +12,6 @@ import json
 import os
 import re
 import shutil
-import subprocess
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -21,6 +20,7 @@ import pytest
 from scanconv.cli.sheet import QuestionError, answer_questions, read_questions
 from scanconv.render.sheet import md_text, sheet_document
 
+from .external import typeset
 from .helpers import assert_refused, run
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -444,16 +444,10 @@ def _pdflatex() -> str:
 
 
 def _compile(tmp_path: Path, tex: str) -> str:
-    (tmp_path / "doc.tex").write_text(tex, encoding="utf-8")
-    for _ in range(2):
-        proc = subprocess.run(
-            [_pdflatex(), "-halt-on-error", "-interaction=nonstopmode", "doc.tex"],
-            cwd=tmp_path,
-            capture_output=True,
-            timeout=300,
-        )
-        assert proc.returncode == 0, proc.stdout[-3000:]
-    return (tmp_path / "doc.log").read_text(encoding="utf-8", errors="replace")
+    """Two passes (longtable's widths); the last log."""
+    done = typeset(tmp_path, tex, passes=2)
+    assert done.code == 0, done.log[-3000:]
+    return done.log
 
 
 @pytest.mark.external

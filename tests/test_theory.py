@@ -5,8 +5,6 @@ from __future__ import annotations
 
 import json
 import re
-import shutil
-import subprocess
 from pathlib import Path
 
 import pytest
@@ -18,6 +16,7 @@ from scanconv.render import Format, render
 from scanconv.render.latex import split_columns
 from scanconv.render.text import table_rows
 
+from .external import typeset
 from .helpers import assert_refused, run
 from .notes_questions import NOTES, notes_questions
 
@@ -145,24 +144,13 @@ def test_the_cli_lists_and_refuses() -> None:
 @pytest.mark.external
 @pytest.mark.slow
 def test_every_answer_compiles_with_pdflatex_without_overfull_boxes(tmp_path: Path) -> None:
-    pdflatex = shutil.which("pdflatex")
-    if not pdflatex:
-        pytest.skip("pdflatex not installed (apt-get install texlive-latex-base)")
     from scanconv.render.sheet_latex import PREAMBLE  # the exam book's: \emergencystretch=3em
 
     body = "\n".join(_text(theory_solution(n), Format.latex) for n in NAMES)
     doc = PREAMBLE + body + "\n\\end{document}\n"
-    (tmp_path / "doc.tex").write_text(doc, encoding="utf-8")
-    for _ in range(2):
-        proc = subprocess.run(
-            [pdflatex, "-halt-on-error", "-interaction=nonstopmode", "doc.tex"],
-            cwd=tmp_path,
-            capture_output=True,
-            text=True,
-            timeout=300,
-        )
-    log = (tmp_path / "doc.log").read_text(encoding="utf-8", errors="replace")
-    assert proc.returncode == 0, log[-2000:]
+    done = typeset(tmp_path, doc, passes=2, pdf=False)  # longtable's widths; no PDF read
+    log = done.log
+    assert done.code == 0, log[-2000:]
     assert "Overfull" not in log, re.findall(r"Overfull.*", log)[:5]
 
 
