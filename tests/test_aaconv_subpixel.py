@@ -62,6 +62,7 @@ def test_hearn_bakers_stated_levels_appear_on_a_line_from_10_20():
 pixels_ = st.integers(-8, 8)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @settings(deadline=None, max_examples=150)
 @given(pixels_, pixels_, pixels_, pixels_, st.sampled_from([1, 3, 5]))
 def test_centre_walk_is_bresenham_on_the_scaled_line(x1, y1, x2, y2, n):
@@ -83,6 +84,7 @@ def test_centre_walk_is_bresenham_on_the_scaled_line(x1, y1, x2, y2, n):
     assert intensities(nine) == {p: F(k, n * n) for p, k in brute.items()}  # count / n²
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @settings(deadline=None, max_examples=150)
 @given(pixels_, pixels_, pixels_, pixels_, st.integers(1, 5))
 def test_span_walk_is_the_nearest_sub_row_and_fills_every_sub_column(x1, y1, x2, y2, n):

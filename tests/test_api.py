@@ -393,6 +393,7 @@ def test_the_api_and_the_cli_give_the_same_answer(path, argv, name, args, kwargs
     assert _json(getattr(scanconv, name)(*args, **kwargs)) == cli.out
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_every_command_and_every_function_has_a_case():
     paths = {path for path, _ in commands()} - DOCUMENTS
     assert paths == {path for path, *_ in CASES}
@@ -444,6 +445,7 @@ def test_bad_input_is_an_input_error_naming_the_parameter(call, param, words):
     assert info.value.param == param and words in str(info.value), str(info.value)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_importing_the_api_imports_no_answer_module():
     """The library is imported inside the functions: start-up stays cheap."""
     import subprocess

@@ -66,6 +66,7 @@ def test_the_output_may_not_be_the_students_file(tmp_path: Path) -> None:
     assert answer.read_bytes() == before
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_messages_stay_one_short_line(tmp_path: Path) -> None:
     """A heading of 20,000 columns, a JSON number of 5,000 digits: one line naming the file."""
     wide = tmp_path / "wide.csv"

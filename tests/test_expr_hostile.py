@@ -145,6 +145,7 @@ CHILD = textwrap.dedent(
 )
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_the_cli_refuses_them_all_within_1_gib_and_a_small_peak():
     """Through the command line, in a process capped at 1 GiB of address space: every formula
     is one line of error, exit 2, and the process's peak resident size stays small."""

@@ -326,6 +326,7 @@ dither floyd-steinberg --image '98 240 243 203; 77 118 77 199' --top 255
 """
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_moodle_cloze_blanks_hold_the_json_key() -> None:
     xml, _, answers = documents(EXAMPLES)
     assert_moodle_key(xml, answers)
@@ -341,6 +342,7 @@ def test_moodle_cloze_blanks_hold_the_json_key() -> None:
     assert dda.blanks[6] == Blank("NUMERICAL", 1, (("0.428571", TOLERANCE),))  # x_1 = 3/7
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_gift_read_back_by_gift_pegjs_holds_the_json_key(gift_reader: GiftReader) -> None:
     _, text, answers = documents(EXAMPLES)
     assert_gift_key(gift_reader, text, answers)
@@ -352,6 +354,7 @@ def test_gift_read_back_by_gift_pegjs_holds_the_json_key(gift_reader: GiftReader
     assert first["choices"] == {"type": "range", "number": 0, "range": 0}
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_the_ellipse_asks_its_step_table_once() -> None:
     """The ellipse's region tables split the step table: asked once, with the regions."""
     xml, _, answers = documents("ellipse 7 8\nellipse 4 5 --center 9 3\n")
@@ -361,6 +364,7 @@ def test_the_ellipse_asks_its_step_table_once() -> None:
     assert "<th>region</th><th>k</th>" in first.text
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_other_tables_are_blanks_too(gift_reader: GiftReader) -> None:
     """Secondary tables: clipping parameters given as text ("2/47"), a storage table's
     sizes ("~0.05722"), verdict words, points written as text."""
@@ -377,6 +381,7 @@ def test_other_tables_are_blanks_too(gift_reader: GiftReader) -> None:
     assert ("0.05722", "0.000005") in sizes and ("480000", "0") in sizes
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_questions_without_tables_are_essays(gift_reader: GiftReader) -> None:
     """A theory question, and one with more blanks than a question holds: an essay question
     whose general feedback and grader's information are the key."""
@@ -391,6 +396,7 @@ def test_questions_without_tables_are_essays(gift_reader: GiftReader) -> None:
     assert "Definition" in parsed[0]["globalFeedback"]["text"]
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_notice_for_an_essay_fallback(tmp_path: Path) -> None:
     """The CLI: -o quiz.xml chooses Moodle XML by the one extension map; an answer too large
     for blanks is said on stderr."""
@@ -405,6 +411,7 @@ def test_notice_for_an_essay_fallback(tmp_path: Path) -> None:
     assert [q.type for q in read_moodle(out.read_text(encoding="utf-8"))] == ["essay", "cloze"]
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_practice_writes_both_quiz_files(tmp_path: Path, gift_reader: GiftReader) -> None:
     """practice: the worksheet as GIFT, the key as Moodle XML, from the same questions."""
     gift_file, xml_file = tmp_path / "quiz.gift", tmp_path / "quiz.xml"
@@ -420,6 +427,7 @@ def test_practice_writes_both_quiz_files(tmp_path: Path, gift_reader: GiftReader
     assert_gift_key(gift_reader, gift_file.read_text(encoding="utf-8"), answers)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_a_contradicting_format_is_refused(tmp_path: Path) -> None:
     questions = tmp_path / "q.txt"
     questions.write_text("line 2 2 10 6\n", encoding="utf-8")
@@ -464,6 +472,7 @@ def test_random_lines_and_circles_hold_the_key(
 fractions = st.fractions(min_value=-(10**6), max_value=10**6, max_denominator=10**4)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @settings(max_examples=300, deadline=None)
 @given(fractions)
 def test_the_tolerance_rule(value: Fraction) -> None:

@@ -111,6 +111,7 @@ def _no(mode: int) -> bool:
     return False
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_version_and_help_in_process():
     r = run("--version")
     assert r.code == 0 and r.out.startswith("scanconv ") and r.err == ""

@@ -399,6 +399,7 @@ def test_each_common_mistake_is_diagnosed(tmp_path, question, text, marks, words
     assert words in result["diagnosis"], result["diagnosis"]
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_the_batch_csv_gives_each_file_its_single_run_score(tmp_path):
     folder = tmp_path / "class"
     folder.mkdir()

@@ -166,6 +166,7 @@ def _visible(html: str) -> str:
     return "".join(page.parts)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.parametrize("name", HTML_PAGES)
 def test_html_page_shows_no_raw_tex(name: str) -> None:
     r = run(*HTML_PAGES[name], "--format", "html")
@@ -175,6 +176,7 @@ def test_html_page_shows_no_raw_tex(name: str) -> None:
     assert not raw, (raw[:5], [ln for ln in text.splitlines() if re.search(r"\^|_\{", ln)][:3])
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_exam_book_html_shows_no_raw_tex() -> None:
     r = run("exam", "--format", "html", "--section", "circle")
     assert r.code == 0, r.err

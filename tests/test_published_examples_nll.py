@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import json
 
+import pytest
+
 from .helpers import run
 
 #: Georgia Tech's D(4), printed row by row (the same as Bayer's, scanconv's --matrix 4).
@@ -27,6 +29,7 @@ def _image(rows: tuple[tuple[int, ...], ...]) -> str:
     return "; ".join(" ".join(map(str, r)) for r in rows)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_gatech_ordered_dither_rule_and_matrix() -> None:
     """http://www.cc.gatech.edu/gvu/multimedia/nsfmmedia/cware/graphics/notes/ragra/flpol/flpol05.html
     "i = x mod 4, j = y mod 4; then if I(x, y) > D(i, j) the point (x, y) is

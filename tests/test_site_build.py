@@ -115,6 +115,7 @@ def test_a_failed_fetch_leaves_no_folder(tmp_path: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == []
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_the_site_from_a_fake_runtime(tmp_path: Path, fake_runtime: bytes) -> None:
     built = build_site(tmp_path / "site", _exam, cache=tmp_path, fetch=lambda url: fake_runtime)
     site = tmp_path / "site"
@@ -139,6 +140,7 @@ def test_the_site_from_a_fake_runtime(tmp_path: Path, fake_runtime: bytes) -> No
     assert (site / "index.html").read_text().count('class="sc-form"') > 40
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_a_rebuild_replaces_the_site_and_a_failed_one_keeps_it(
     tmp_path: Path, fake_runtime: bytes, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -163,6 +165,7 @@ def test_a_rebuild_replaces_the_site_and_a_failed_one_keeps_it(
     )
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_the_page_answers_what_the_cli_answers() -> None:
     question = "ellipse 8 6 --no-grid"
     shown = solve_page("scanconv " + question + " --format json -o x.json")
@@ -196,6 +199,7 @@ def test_a_command_that_needs_numpy_says_so_where_there_is_none(
     }
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_a_dependency_that_is_not_installed_or_not_pure_python_is_refused(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:

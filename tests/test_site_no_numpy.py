@@ -111,6 +111,7 @@ def test_every_command_has_a_question_or_a_reason() -> None:
     assert not covered & set(NEEDS_NUMPY)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_the_child_cannot_import_numpy() -> None:
     probe = 'import sys; sys.modules["numpy"] = None\ntry:\n import numpy\nexcept ImportError:\n print("refused")'
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True)
