@@ -28,7 +28,7 @@ from pathlib import Path
 
 from ..core.checks import InputError
 from ..core.records import Solution
-from ..core.student_table import Cell, StudentTable
+from ..core.student_table import Cell, StudentTable, read_raw, read_table
 from .marking_diagnose import OTHER_FORM, diagnose, model_for, other_form, states_steps
 from .marking_rows import (
     LAYOUTS,
@@ -331,7 +331,6 @@ def mark(table: StudentTable, solution: Solution) -> Marking:
 def mark_file(path: Path, solution: Solution) -> Marking:
     """Mark the student's file at ``path``: by its own columns where the method's table is
     not a pixel walk (:mod:`.marking_table`), else as a step table (:func:`mark`)."""
-    from ..core.student_table import read_raw, read_table
     from .marking_table import mark_table, table_models_for
 
     models = table_models_for(solution)
