@@ -16,6 +16,7 @@ from .. import _api as api
 from .._api.color_theory import color as color_api
 from .._api.color_theory import theory as theory_api
 from ..core.checks import InputError
+from ..core.numeric import parse_number
 from .words import UsageError, no_such_option, number
 
 if TYPE_CHECKING:
@@ -158,8 +159,6 @@ def compare_curves() -> Solution:
 
 
 def _is_number(word: str) -> bool:
-    from ..core.numeric import parse_number
-
     try:
         parse_number(word)
     except ValueError:
