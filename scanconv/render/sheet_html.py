@@ -11,7 +11,7 @@ from collections.abc import Iterator, Sequence
 
 from ..document import Question as QuestionBlock
 from . import Notice
-from .html import answer_section, question_html
+from .html import answer_section, page_head, question_html
 from .mathml import esc as escape
 from .sheet import (
     Answered,
@@ -52,7 +52,6 @@ def html_sheet(
     title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
     style = f"<style>\n{_SHEET_CSS}</style>\n"
     if kind == "key":
-        from .html import page_head
         from .page_assets import JS
 
         head = page_head(title).replace("</head>", style + "</head>", 1)
