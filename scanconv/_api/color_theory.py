@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..core import lazy
+from ..core.checks import check_whole
 from ..display import answers
 from .values import NumberLike, _number
 
@@ -36,8 +37,6 @@ def color(
     >>> color("rgb", 51, 102, 153, to="cmy").data["cmy"]
     [Fraction(4, 5), Fraction(3, 5), Fraction(2, 5)]
     """
-    from ..core.checks import check_whole
-
     targets = [to] if isinstance(to, str) else list(to)
     b = _number(bits, "bits")
     return answers_color.color_solution(

@@ -25,6 +25,11 @@ from .values import (
 )
 
 if TYPE_CHECKING:
+    from ..algorithms import curve_limits
+else:
+    curve_limits = lazy.module("scanconv.algorithms.curve_limits")
+
+if TYPE_CHECKING:
     from ..answers import bezier as answers_bezier
     from ..answers import bspline as answers_bspline
     from ..answers import bspline_basis_at as answers_bspline_basis_at
@@ -145,11 +150,9 @@ def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
     >>> list(bezier([(0, 0), (1, 2), (3, 3), (4, 0)], 8).pixels())
     [(0, 0), (0, 1), (1, 1), (1, 2), (2, 2), (3, 2), (4, 1), (4, 0)]
     """
-    from ..algorithms.curve_limits import DEFAULT_SAMPLES
-
     pts = _points(points)
     return answers_bezier.bezier_solution(
-        pts, _whole(DEFAULT_SAMPLES if samples is None else samples, "samples")
+        pts, _whole(curve_limits.DEFAULT_SAMPLES if samples is None else samples, "samples")
     )
 
 
@@ -257,10 +260,8 @@ def continuity(
     >>> continuity([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)]).data["continuity"]
     'C1'
     """
-    from ..algorithms.curve_limits import DEFAULT_SAMPLES
-
     a, b = _points(first, "first"), _points(second, "second")
-    steps = _whole(DEFAULT_SAMPLES if samples is None else samples, "samples")
+    steps = _whole(curve_limits.DEFAULT_SAMPLES if samples is None else samples, "samples")
     return answers_continuity.continuity_solution(a, b, steps)
 
 
@@ -281,8 +282,6 @@ def local_control(
     >>> sol.data["bezier_samples_moved"], sol.data["bspline_samples_moved"]
     (8, 2)
     """
-    from ..algorithms.curve_limits import DEFAULT_SAMPLES
-
     pts = _points(points)
     spec = _knots(knots)
     return answers_local_control.local_control_solution(
@@ -291,7 +290,7 @@ def local_control(
         _pair(moved, "moved"),
         _whole(degree, "degree"),
         spec,
-        _whole(DEFAULT_SAMPLES if samples is None else samples, "samples"),
+        _whole(curve_limits.DEFAULT_SAMPLES if samples is None else samples, "samples"),
     )
 
 

@@ -19,6 +19,11 @@ from .values import (
 )
 
 if TYPE_CHECKING:
+    from ..algorithms import sample as algorithms_sample
+else:
+    algorithms_sample = lazy.module("scanconv.algorithms.sample")
+
+if TYPE_CHECKING:
     from ..answers import quantize as answers_quantize
     from ..answers import ramp as answers_ramp
     from ..answers import sample as answers_sample
@@ -98,10 +103,8 @@ def sample(
     >>> next(iter(sample("x + y", "8x8", 8).tables[0].rows()))
     (0, 4, 4, 5, 5, 6, 6, 7, 7)
     """
-    from ..algorithms.sample import sample_levels
-
     m, n = _size(size)
-    sampled = sample_levels(
+    sampled = algorithms_sample.sample_levels(
         expr,
         m,
         n,

@@ -8,8 +8,18 @@ from enum import Enum
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
+from ..core import lazy
 from ..core.checks import InputError
 from ..core.numeric import COORD_LIMIT, Number, fmt_short, parse_number
+
+if TYPE_CHECKING:
+    from ..algorithms import bspline, curve_limits, image_limits
+    from ..core import expr
+else:
+    bspline = lazy.module("scanconv.algorithms.bspline")
+    curve_limits = lazy.module("scanconv.algorithms.curve_limits")
+    image_limits = lazy.module("scanconv.algorithms.image_limits")
+    expr = lazy.module("scanconv.core.expr")
 
 if TYPE_CHECKING:
     from decimal import Decimal
@@ -103,10 +113,8 @@ def _formula(value: FormulaLike, param: str) -> Any:
     """A value of a parameter such as ``t``: a number, or a constant expression (exact when it
     is rational; ``"pi/4"`` is a float)."""
     if isinstance(value, str):
-        from ..core.expr import parse_exact
-
         try:
-            parsed: Any = parse_exact(value)
+            parsed: Any = expr.parse_exact(value)
         except ValueError as err:
             raise InputError(str(err), param) from None
     else:
@@ -120,12 +128,10 @@ def _formulas(values: Sequence[FormulaLike], param: str, count: int) -> tuple[An
     """``domain`` and ``value_range`` of :func:`sample`: numbers or constant expressions."""
     if isinstance(values, str) or len(values) != count:
         raise InputError(f"{param} takes {count} values, got {values!r}", param)
-    from ..core.expr import parse_exact
-
     out = []
     for v in values:
         try:
-            out.append(parse_exact(v) if isinstance(v, str) else _number(v, param))
+            out.append(expr.parse_exact(v) if isinstance(v, str) else _number(v, param))
         except ValueError as err:
             raise InputError(str(err), param) from None
     return tuple(out)
@@ -141,8 +147,6 @@ def _bounds(values: TRangeLike) -> tuple[Any, Any]:
 
 def _points(values: PointsLike, param: str = "points") -> list[Any]:
     """Control points, as pairs or flat, as the library's exact pairs."""
-    from ..algorithms.curve_limits import pairs
-
     flat: list[Any] = []
     for v in values:
         if not isinstance(v, tuple | list):
@@ -152,7 +156,7 @@ def _points(values: PointsLike, param: str = "points") -> list[Any]:
         else:
             raise InputError(f"a point is a pair (x, y), got {v!r}", param)
     try:
-        return pairs([_number(v, param) for v in flat])
+        return curve_limits.pairs([_number(v, param) for v in flat])
     except InputError:
         raise
     except ValueError as err:
@@ -162,20 +166,16 @@ def _points(values: PointsLike, param: str = "points") -> list[Any]:
 def _knots(value: str | Sequence[NumberLike]) -> str | tuple[Number, ...]:
     if not isinstance(value, str):
         return tuple(_number(v, "knots") for v in value)
-    from ..algorithms.bspline import parse_knots
-
     try:
-        return parse_knots(value)
+        return bspline.parse_knots(value)
     except ValueError as err:
         raise InputError(str(err), "knots") from None
 
 
 def _size(value: str | int | tuple[int, int]) -> tuple[int, int]:
     if isinstance(value, str):
-        from ..algorithms.image_limits import parse_size
-
         try:
-            return parse_size(value)
+            return image_limits.parse_size(value)
         except ValueError as err:
             raise InputError(str(err), "size") from None
     if isinstance(value, tuple):

@@ -39,7 +39,7 @@ from fractions import Fraction
 from typing import NamedTuple
 
 from ..core.numeric import Number, normalize
-from .clipping import Edge, Point, Rect, boundary, crossing
+from .clipping import Edge, Point, Rect, boundary, crossing, region_code
 
 CORNER_NAMES = ("TL", "TR", "BR", "BL")
 EDGE_OF = {"L": Edge.LEFT, "R": Edge.RIGHT, "B": Edge.BOTTOM, "T": Edge.TOP}
@@ -136,8 +136,6 @@ def _cross(p1: Point, p2: Point, edge: str, window: Rect) -> Point:
 
 
 def _code(p: Point, window: Rect) -> str:
-    from .clipping import region_code
-
     return f"{region_code(p, window):04b}"
 
 

@@ -14,10 +14,16 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
+from ..core import lazy
 from ..core.checks import InputError, check_positive
 from ..core.numeric import Number, fmt, fmt_short, normalize
 from .image_limits import check_cells, check_levels
 from .quantize import Quantizer, level_dtype
+
+if TYPE_CHECKING:
+    from ..core import expr as core_expr
+else:
+    core_expr = lazy.module("scanconv.core.expr")
 
 if TYPE_CHECKING:
     import numpy as np
@@ -146,15 +152,13 @@ def sample_levels(
     """
     import numpy as np
 
-    from ..core.expr import compile_expr
-
     M = check_positive(m, "M (rows)", param="m")
     N = check_positive(n, "N (columns)", param="n")
     L = check_levels(levels)
     check_cells(M, N)
     if origin not in ORIGINS:
         raise InputError(f"unknown origin {origin!r} (choose from {', '.join(ORIGINS)})", "origin")
-    f = compile_expr(expr, ("x", "y"))
+    f = core_expr.compile_expr(expr, ("x", "y"))
     x0, x1, y0, y1 = domain if domain is not None else (0, N - 1, 0, M - 1)
     xs = sample_axis(x0, x1, N, "x")
     ys = sample_axis(y0, y1, M, "y")

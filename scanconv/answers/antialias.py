@@ -7,11 +7,12 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator, Sequence
 from fractions import Fraction
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..algorithms import coverage as cov
 from ..algorithms.image_limits import check_levels
 from ..algorithms.polygon import check_polygon, check_rule, vertices_from_coords
+from ..core import lazy
 from ..core.checks import InputError, check_integer
 from ..core.numeric import Number, fmt_exact, fmt_short, normalize
 from ..core.records import (
@@ -28,6 +29,11 @@ from .aa_common import level_rule as _level_rule
 from .aa_common import picture as _picture
 from .aa_common import pixel_box as _bbox
 from .antialias_wu import wu_solution
+
+if TYPE_CHECKING:
+    from . import subpixel
+else:
+    subpixel = lazy.module("scanconv.answers.subpixel")
 
 __all__ = ["antialias_solution", "wu_solution"]
 
@@ -236,9 +242,7 @@ def _line_method(
             raise InputError(
                 "the sub-pixel line is Bresenham's: no ends, width or across", "method"
             )
-        from .subpixel import subpixel_solution
-
-        return subpixel_solution(
+        return subpixel.subpixel_solution(
             *_line_params(params),
             n=3 if samples is None else samples,
             levels=L,

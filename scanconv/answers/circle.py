@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 from ..algorithms.circles import (
     ALIASES,
@@ -18,6 +19,7 @@ from ..algorithms.circles import (
     symmetric_pixels,
 )
 from ..algorithms.conventions import ROUNDING_TEXT, convention_note, resolve, rounder
+from ..core import lazy
 from ..core.checks import InputError, check_integer
 from ..core.numeric import (
     Number,
@@ -37,6 +39,11 @@ from ..core.records import (
 )
 from .circle_float import Parts, pixels_of, polynomial_parts, sdda_parts, trig_parts
 from .errata import circle_errata
+
+if TYPE_CHECKING:
+    from . import theory
+else:  # only --derive and --algorithm need it
+    theory = lazy.module("scanconv.answers.theory")
 
 SYMMETRY_HEADS = (
     "(x_c+x, y_c+y)",
@@ -145,8 +152,6 @@ def _theory(
     """The working with ``--derive``'s derivation added, and ``--algorithm``'s table."""
     if not (derive or pseudocode):
         return derived, ()
-    from . import theory  # here: only --derive and --algorithm need it
-
     if derive:
         derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
     code = theory.circle_code(method, knobs) if pseudocode else None
@@ -262,8 +267,6 @@ def _once_each(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
 
 
 def _derivation(method: str, r: int, knobs: dict[str, str]) -> tuple[Quantity, ...]:
-    from . import theory  # here: only --derive and --algorithm need it
-
     if method == "midpoint":
         return theory.midpoint_circle_derivation(r, knobs["p0"])
     if method == "general":

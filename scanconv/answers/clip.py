@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..algorithms.clipping import (
     EDGES,
@@ -23,6 +23,7 @@ from ..algorithms.clipping import (
     liang_barsky,
 )
 from ..algorithms.process_choices import LineClipMethod
+from ..core import lazy
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt_paren, fmt_short, normalize
 from ..core.records import Column, Quantity, Solution, Table
@@ -36,6 +37,12 @@ from .shapes import (
     rect_quantity,
     rect_text,
 )
+
+if TYPE_CHECKING:
+    from . import cyrus_beck, nll
+else:
+    cyrus_beck = lazy.module("scanconv.answers.cyrus_beck")
+    nll = lazy.module("scanconv.answers.nll")
 
 LINE_METHODS = tuple(m.value for m in LineClipMethod)
 """The line clipping methods, by name."""
@@ -361,14 +368,10 @@ def _solution_parts(
     """Cyrus-Beck's or NLL's working (without its last line, the clipped segment), tables and
     segment, from its own answer (the rectangle as Cyrus-Beck's convex window)."""
     if method == "cyrus-beck":
-        from .cyrus_beck import cyrus_beck_solution
-
         corners = [w[0], w[1], w[2], w[1], w[2], w[3], w[0], w[3]]
-        sol = cyrus_beck_solution(*p1, *p2, corners)
+        sol = cyrus_beck.cyrus_beck_solution(*p1, *p2, corners)
     else:
-        from .nll import nll_solution
-
-        sol = nll_solution(*p1, *p2, w)
+        sol = nll.nll_solution(*p1, *p2, w)
     seg = sol.data["clipped"]
     segment = None if seg is None else ((seg[0][0], seg[0][1]), (seg[1][0], seg[1][1]))
     return list(sol.derived[:-1]), list(sol.tables), segment

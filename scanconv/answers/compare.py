@@ -15,12 +15,23 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ..core.checks import InputError
+from ..core import lazy
+from ..core.checks import InputError, check_integer
 from ..core.numeric import Number, fmt, fmt_short, normalize
 from ..core.records import Pixel, PixelFigure, Solution, Table, heading, rule
 from .methods import METHODS, compared
+
+if TYPE_CHECKING:
+    from ..algorithms import circles
+    from . import circle, line
+    from . import theory as th
+else:
+    circles = lazy.module("scanconv.algorithms.circles")
+    circle = lazy.module("scanconv.answers.circle")
+    th = lazy.module("scanconv.answers.theory")
+    line = lazy.module("scanconv.answers.line")
 
 LINE_METHODS = compared("line")
 """The line algorithms compared, in the order of the table's columns (their records' order)."""
@@ -146,8 +157,6 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool =
     (3, Fraction(15, 2), 8, 8, 7, 'tie')
     (4, 7, 7, 7, 7, None)
     """
-    from .line import line_solution
-
     length = max(abs(Fraction(x2 - x1)), abs(Fraction(y2 - y1)))
     if length > MAX_LENGTH:
         raise InputError(
@@ -156,7 +165,7 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool =
         )
     integer = all(_is_int(v) for v in (x1, y1, x2, y2))
     methods = LINE_METHODS if integer else LINE_METHODS[:2]
-    sols = {m: line_solution(m, x1, y1, x2, y2) for m in methods}
+    sols = {m: line.line_solution(m, x1, y1, x2, y2) for m in methods}
     dx, dy = Fraction(x2 - x1), Fraction(y2 - y1)
     steep = abs(dy) > abs(dx)
     maj, mnr = ("y", "x") if steep else ("x", "y")
@@ -348,18 +357,16 @@ def compare_circles(r: Number, theory: bool = False) -> Solution:
     2 5 5 5 5 5, 4 SDDA twice
     3 4 4 4 4 4, 3 SDDA twice
     """
-    from ..algorithms.circles import SDDA_MAX_RADIUS, sqrt6
-    from ..core.checks import check_integer
-    from .circle import circle_solution
-
     ir = check_integer(r, "radius", negative=False, param="r")
     if ir > MAX_RADIUS:
         raise InputError(
             f"compare circle: the radius must be at most {MAX_RADIUS} (got {ir}; "
             "every method runs before the first row)"
         )
-    methods = tuple(m for m in CIRCLE_METHODS if m != "symmetric-dda" or ir <= SDDA_MAX_RADIUS)
-    sols = {m: circle_solution(m, ir) for m in methods}
+    methods = tuple(
+        m for m in CIRCLE_METHODS if m != "symmetric-dda" or ir <= circles.SDDA_MAX_RADIUS
+    )
+    sols = {m: circle.circle_solution(m, ir) for m in methods}
 
     def octant(m: str) -> dict[int, list[int]]:
         pts = sorted(
@@ -372,7 +379,7 @@ def compare_circles(r: Number, theory: bool = False) -> Solution:
     last = {m: max(cols[m], default=-1) for m in methods}
 
     def exact(x: int) -> Number:
-        return normalize(sqrt6(ir * ir - x * x))
+        return normalize(circles.sqrt6(ir * ir - x * x))
 
     def rows() -> Iterator[tuple[Any, ...]]:
         for x in xs:
@@ -491,8 +498,6 @@ def _octant_samples(sol: Solution, x: int) -> Iterator[tuple[Any, Any]]:
 
 def _theory(kind: str, wanted: bool) -> tuple[Table, ...]:
     """The points the notes' comparison questions expect, as a table (``theory=True``)."""
-    from . import theory as th
-
     if not wanted:
         return ()
     if kind == "line":
@@ -516,8 +521,6 @@ def compare_curves() -> Solution:
     >>> len(list(compare_curves().tables[0].rows()))
     5
     """
-    from . import theory as th
-
     return Solution(
         primitive="curve",
         algorithm="compare",

@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from fractions import Fraction
 from itertools import dropwhile, takewhile
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from ..algorithms.conventions import convention_note, resolve
 from ..algorithms.ellipses import (
@@ -17,6 +17,7 @@ from ..algorithms.ellipses import (
     region1_end,
     symmetric_pixels,
 )
+from ..core import lazy
 from ..core.checks import InputError, check_integer
 from ..core.numeric import Number, fmt_paren, fmt_short, round_c_cast
 from ..core.records import (
@@ -31,6 +32,11 @@ from ..core.records import (
     worked,
 )
 from .circle import symmetry_table
+
+if TYPE_CHECKING:
+    from . import theory
+else:  # only --derive and --algorithm need it
+    theory = lazy.module("scanconv.answers.theory")
 
 # --- the Solution -----------------------------------------------------------------------------
 
@@ -226,8 +232,6 @@ def ellipse_solution(
     notes = _notes(e)
     if annotate:
         notes.append(convention_note("ellipse", convention, knobs))
-    if derive or pseudocode:
-        from . import theory  # here: only --derive and --algorithm need it
     if derive:
         derived = (*derived, theory.DERIVATION, *theory.ellipse_derivation(e.rx, e.ry))
 

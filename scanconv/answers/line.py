@@ -2,7 +2,7 @@
 
 from collections.abc import Iterator
 from fractions import Fraction
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from ..algorithms.conventions import ROUNDING_TEXT, convention_note, resolve
 from ..algorithms.lines import (
@@ -18,6 +18,7 @@ from ..algorithms.lines import (
     orient,
     orient_from_p1,
 )
+from ..core import lazy
 from ..core.checks import InputError
 from ..core.numeric import (
     Number,
@@ -31,6 +32,12 @@ from ..core.numeric import (
 from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, rule, worked
 from .errata import line_errata
 from .methods import method
+
+if TYPE_CHECKING:
+    from . import antialias_wu, theory
+else:  # theory: only --derive and --algorithm; Wu: only --algo wu
+    theory = lazy.module("scanconv.answers.theory")
+    antialias_wu = lazy.module("scanconv.answers.antialias_wu")
 
 # --- Solutions: the exam answer around the steps -------------------------------------------
 
@@ -173,9 +180,7 @@ def line_solution(
                 "the derivation and the pseudocode cover bresenham, dda and basic, not wu",
                 "derive" if derive else "pseudocode",
             )
-        from .antialias_wu import wu_solution
-
-        return wu_solution(x1, y1, x2, y2, ends=knobs["ends"])
+        return antialias_wu.wu_solution(x1, y1, x2, y2, ends=knobs["ends"])
     sol = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)
     if annotate:
         points = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
@@ -202,8 +207,6 @@ def _theory(
     code: bool,
 ) -> None:
     """Add the derivation (derived items) and the pseudocode (a table) to ``sol``."""
-    from . import theory  # here: only --derive and --algorithm need it
-
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
     steep = abs_value(dy) > abs_value(dx)
     sign = -1 if (dx > 0 > dy or dy > 0 > dx) else 1

@@ -25,10 +25,12 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
+from ..core import lazy
 from ..core.checks import InputError
 from ..core.records import Solution
-from ..core.student_table import Cell, StudentTable
+from ..core.student_table import Cell, StudentTable, read_raw, read_table
 from .marking_diagnose import OTHER_FORM, diagnose, model_for, other_form, states_steps
 from .marking_rows import (
     LAYOUTS,
@@ -45,6 +47,11 @@ from .marking_rows import (
 )
 from .marking_text import batch_solution, explain, marking_solution, safe_text
 from .models import DDALine, Model, State, chain
+
+if TYPE_CHECKING:
+    from . import marking_table
+else:
+    marking_table = lazy.module("scanconv.answers.marking_table")
 
 __all__ = [
     "MAX_QUESTION_ROWS",
@@ -331,13 +338,10 @@ def mark(table: StudentTable, solution: Solution) -> Marking:
 def mark_file(path: Path, solution: Solution) -> Marking:
     """Mark the student's file at ``path``: by its own columns where the method's table is
     not a pixel walk (:mod:`.marking_table`), else as a step table (:func:`mark`)."""
-    from ..core.student_table import read_raw, read_table
-    from .marking_table import mark_table, table_models_for
-
-    models = table_models_for(solution)
+    models = marking_table.table_models_for(solution)
     if models:
         headers, raw = read_raw(path)
-        return mark_table(headers, raw, solution, models, path.name)
+        return marking_table.mark_table(headers, raw, solution, models, path.name)
     return mark(read_table(path), solution)
 
 

@@ -16,8 +16,9 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterator, Sequence
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from ..core import lazy
 from ..core.checks import InputError
 from ..core.numeric import fmt_short, parse_number
 from ..core.records import Column, Solution
@@ -36,6 +37,11 @@ from .table_models import (
     Row,
     TableModel,
 )
+
+if TYPE_CHECKING:
+    from . import marking
+else:
+    marking = lazy.module("scanconv.answers.marking")
 
 TABLE_RULES = (
     "Marking rules: each row is compared with the answer's row in the same place; a row is "
@@ -168,12 +174,12 @@ def _answer(solution: Solution, model: TableModel) -> tuple[tuple[Column, ...], 
             for c in solution.columns:
                 yield getattr(s, c.key) if c.key in keys else s.extra[extra.index(c.key)]
 
-        from .marking import MAX_QUESTION_ROWS
-
         rows = []
         for n, s in enumerate(solution.steps()):
-            if n > MAX_QUESTION_ROWS:
-                raise InputError(f"the question's table has more than {MAX_QUESTION_ROWS} rows")
+            if n > marking.MAX_QUESTION_ROWS:
+                raise InputError(
+                    f"the question's table has more than {marking.MAX_QUESTION_ROWS} rows"
+                )
             rows.append(tuple(cells(s)))
         columns = solution.columns
     else:

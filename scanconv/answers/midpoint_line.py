@@ -7,11 +7,18 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 from ..algorithms.lines import bresenham_terms, orient
 from ..algorithms.midpoint_line import halve
+from ..core import lazy
 from ..core.numeric import Number, fmt_short
 from ..core.records import Column, Quantity, Solution, Step, rule, worked
+
+if TYPE_CHECKING:
+    from . import line
+else:
+    line = lazy.module("scanconv.answers.line")
 
 
 def _renamed(c: Column) -> Column:
@@ -90,10 +97,8 @@ def midpoint_answer(
     >>> print(sol.derived[7].text)
     d₀ = 2F(x₁ + 1, y₁ + 1/2) = 2Δy - Δx = 2·4 - 8 = 0
     """
-    from .line import line_solution  # the same steps and shape as Bresenham's
-
     tie, scale = knobs["tie"], knobs["scale"]
-    base = line_solution("bresenham", x1, y1, x2, y2, tie=tie, layout=layout)
+    base = line.line_solution("bresenham", x1, y1, x2, y2, tie=tie, layout=layout)
     ix1, iy1, ix2, iy2 = int(x1), int(y1), int(x2), int(y2)
     o = orient(ix1, iy1, ix2, iy2)
 

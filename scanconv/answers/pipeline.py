@@ -11,10 +11,11 @@ the question gives.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..algorithms.lines import ALGORITHMS
 from ..algorithms.transform import Rect, rect_outline, viewport_scale
+from ..core import lazy
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt_short, normalize, round_half_up
 from ..core.records import Column, Pixel, Quantity, Solution, Table, step_getter
@@ -23,6 +24,11 @@ from .clip_polygon import check_vertices, polygon_parts
 from .line import line_solution
 from .shapes import check_rect, fits, point_quantity, pt, pt_approx, rect_quantity, rect_text
 from .viewport import mapping_table, scale_parts
+
+if TYPE_CHECKING:
+    from ..algorithms import polygon
+else:
+    polygon = lazy.module("scanconv.algorithms.polygon")
 
 
 def _round_work(name: str, p: tuple[Number, Number], r: Pixel) -> Quantity:
@@ -235,9 +241,7 @@ _FILL_COLUMNS = (
 
 
 def _fill_rows(vertices: Sequence[tuple[Number, Number]], rule: str) -> Iterator[tuple]:
-    from ..algorithms.polygon import scanline_fill
-
-    for s in scanline_fill(vertices, rule):
+    for s in polygon.scanline_fill(vertices, rule):
         yield (
             s.y,
             ", ".join(fmt_short(a.x) for a in s.active) or "-",
@@ -251,10 +255,8 @@ def _fill_stage(
 ) -> Callable[[], Iterator[Pixel]] | None:
     """Stage 3 with ``fill``: the scan-line fill of the exact device polygon (its table and
     note added), or ``None`` (noted) when the clipped polygon has no area."""
-    from ..algorithms.polygon import check_polygon, fill_pixels
-
     try:
-        pts, _ = check_polygon(dev)
+        pts, _ = polygon.check_polygon(dev)
     except InputError as err:
         if "degenerate" not in str(err):
             raise
@@ -268,26 +270,24 @@ def _fill_stage(
     notes.append(
         "A pixel is filled when its centre is inside: a span [xa, xb) fills ceil(xa) .. ceil(xb) - 1, and an edge counts on the scan lines y_min <= y < y_max (so shared edges are filled once)."
     )
-    return lambda: iter(fill_pixels(pts, rule))
+    return lambda: iter(polygon.fill_pixels(pts, rule))
 
 
 def _outline_stage(
     dev: list[tuple[Number, Number]], rounded: list[tuple[int, int]]
 ) -> Callable[[], Iterator[Pixel]]:
     """Stage 3 without ``fill``: the edges by Bresenham between the rounded vertices."""
-    from ..algorithms.polygon import MAX_FILL_CELLS, outline_pixels
-
     length = sum(
         max(abs(rounded[i][0] - rounded[i - 1][0]), abs(rounded[i][1] - rounded[i - 1][1]))
         for i in range(len(rounded))
     )
-    if length > MAX_FILL_CELLS:
+    if length > polygon.MAX_FILL_CELLS:
         raise InputError(
             f"the outline in the viewport has about {length:,} pixels; at most "
-            f"{MAX_FILL_CELLS:,} are drawn",
+            f"{polygon.MAX_FILL_CELLS:,} are drawn",
             "viewport",
         )
-    return lambda: iter(outline_pixels(dev))
+    return lambda: iter(polygon.outline_pixels(dev))
 
 
 def pipeline_polygon_solution(
@@ -309,12 +309,12 @@ def pipeline_polygon_solution(
     >>> len(list(sol.pixels()))
     63
     """
-    from ..algorithms.polygon import RULES
-
     w = check_rect(window, "window", "window")
     v = check_rect(viewport, "viewport", "viewport")
-    if rule not in RULES:
-        raise InputError(f"unknown fill rule {rule!r} (choose from {', '.join(RULES)})", "rule")
+    if rule not in polygon.RULES:
+        raise InputError(
+            f"unknown fill rule {rule!r} (choose from {', '.join(polygon.RULES)})", "rule"
+        )
     vertices = check_vertices(coords)
     derived = [_stage("1. clip in world coordinates (Sutherland-Hodgman)")]
     clip_work, clip_tables, final, notes = polygon_parts(vertices, w)

@@ -26,9 +26,15 @@ from __future__ import annotations
 import random
 from collections.abc import Callable, Iterator
 from fractions import Fraction
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
+from ..core import lazy
 from ..core.checks import InputError
+
+if TYPE_CHECKING:
+    from . import practice_more
+else:
+    practice_more = lazy.module("scanconv.answers.practice_more")
 
 TOPICS: tuple[str, ...] = ("line", "circle", "ellipse", "bezier", "bspline", "storage", "quantize")
 TOPICS += ("dither", "inside", "clip", "framebuffer")  # beyond the notes: .practice_more
@@ -339,9 +345,7 @@ def _kinds(topic: str, rng: random.Random) -> list:
     if topic == "line":
         return _line_kinds(rng)
     if topic not in _MAKERS:  # the topics beyond the notes
-        from .practice_more import KINDS
-
-        kinds = KINDS[topic]
+        kinds = practice_more.KINDS[topic]
         start = rng.randrange(len(kinds))
         return kinds[start:] + kinds[:start]
     pairs: dict[str, list] = {
@@ -395,9 +399,7 @@ def practice(
     kinds = {t: _cycle(_kinds(t, rng)) for t in dict.fromkeys(topics)}
     makers = dict(_MAKERS)
     if any(t not in makers for t in topics):
-        from .practice_more import MAKERS
-
-        makers.update(MAKERS)  # type: ignore[arg-type]
+        makers.update(practice_more.MAKERS)  # type: ignore[arg-type]
     return [
         makers[t](rng, difficulty, next(kinds[t]))
         for t in (topics[i % len(topics)] for i in range(count))

@@ -13,7 +13,7 @@ import random
 from typing import Any
 
 from .methods import method
-from .practice import PracticeQuestion
+from .practice import PracticeQuestion, _line
 
 
 def _image(rng: random.Random, rows: int, cols: int) -> str:
@@ -261,8 +261,6 @@ def characters(rng: random.Random, difficulty: str, kind: str) -> PracticeQuesti
 
 def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     """``kind``: ``octant 2, tie`` (a tie: d = 0 at some step)."""
-    from .practice import _line
-
     q = _line(rng, difficulty, (int(kind.split()[1].rstrip(",")), kind.endswith("tie")))
     algo = q.argv.index("--algo") + 1
     x1, y1, x2, y2 = q.argv[1:5]

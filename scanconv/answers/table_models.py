@@ -22,7 +22,14 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+from ..core import lazy
+
+if TYPE_CHECKING:
+    from ..algorithms import dither
+else:
+    dither = lazy.module("scanconv.algorithms.dither")
 
 Row = dict[str, Any]
 """A row's cells by column key: exact numbers (``Fraction``), pairs, or lower-case text."""
@@ -194,16 +201,14 @@ class DiffusionTable(TableModel):
 
     def _spread(self, row: Row, answer: Row) -> None:
         """Share the error the student wrote in ``row`` among the pixels it reaches."""
-        from ..algorithms.dither import KERNELS, _share
-
         err = _given(row, "error", answer)
         if not isinstance(err, Fraction) or (self.data.get("carry") == "clamped" and err < 0):
             return
         ai, aj = int(answer["i"]), int(answer["j"])
         direction = -1 if self.data.get("order") == "serpentine" and ai % 2 else 1
-        for s in KERNELS[self.data.get("kernel", "floyd-steinberg")]:
+        for s in dither.KERNELS[self.data.get("kernel", "floyd-steinberg")]:
             to = (ai + s.di, aj + s.dj * direction)
-            amount = _share(err, s.weight, self.data.get("arithmetic", "exact"))
+            amount = dither._share(err, s.weight, self.data.get("arithmetic", "exact"))
             self._got[to] = self._got.get(to, Fraction(0)) + amount
 
     def expect(self, i: int, answer: Sequence[Row], own: Sequence[Row]) -> Row:

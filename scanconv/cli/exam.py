@@ -15,6 +15,8 @@ from typing import Annotated
 
 import typer
 
+from ..core.working import tex_text
+from ..render.sheet import md_text, sheet_document
 from .application import app
 from .options import DocumentFormatOpt, OutputOpt
 from .output import document_format, fail
@@ -77,8 +79,6 @@ def _words(s: str) -> list[str]:
 
 def _contents(answered: list[Answered], fmt: str) -> str:
     """The table of contents of the book in ``fmt`` (markdown or plain)."""
-    from ..render.sheet import md_text
-
     lines = ["## Contents", ""] if fmt == "markdown" else ["Contents", "--------", ""]
     section = None
     for a in answered:
@@ -136,8 +136,6 @@ def _with_contents(document: str, answered: list[Answered], fmt: str, title: boo
         return "\n".join([*lines[: at + 2], *contents, "", *lines[at + 2 :]])
     if fmt != "latex":
         return document
-    from ..core.working import tex_text
-
     wording = {a.question.number: " ".join(a.question.wording.split()) for a in answered}
     out: list[str] = []
     placed = not title  # the title is a \section* too: the contents come after it
@@ -187,8 +185,6 @@ def contents(section: str | None, fmt: str) -> str:
             + "\n"
         )
     if fmt == "latex":
-        from ..core.working import tex_text
-
         lines = ["\\section*{Contents}", "\\begin{itemize}"]
         for q in sheet.questions:
             lines.append(f"  \\item {q.number}. {tex_text(' '.join(q.wording.split()))}")
@@ -200,8 +196,6 @@ def contents(section: str | None, fmt: str) -> str:
 
 def book(section: str | None, fmt: str, *, standalone: bool = False) -> str:
     """The exam book (or one section of it) as one document in ``fmt``."""
-    from ..render.sheet import sheet_document
-
     sheet = exam_sheet(section)
     answered = answer_questions(sheet.questions, sheet.source)
     document = sheet_document(sheet, answered, "key", fmt, standalone=standalone)

@@ -15,14 +15,22 @@ from __future__ import annotations
 
 from enum import Enum
 from pathlib import Path
-from typing import Annotated, NamedTuple
+from typing import TYPE_CHECKING, Annotated, NamedTuple
 
 import typer
 
+from ..core import lazy
+from ..render import EXTENSIONS, FORMATS, formats
+from ..render.sheet import sheet_document
 from .application import app
 from .options import DocumentFormatOpt, OutputOpt, integer
 from .output import check_paths, document_format, fail, note, write_all
 from .sheet import answer_questions, pdf_file, read_questions, text_file, write_document
+
+if TYPE_CHECKING:
+    from ..answers import practice as answers_practice
+else:  # the generator: not for --help
+    answers_practice = lazy.module("scanconv.answers.practice")
 
 
 class Topic(str, Enum):
@@ -157,8 +165,6 @@ def _checked(
 ) -> tuple[int, str]:
     """The seed (a new one, announced, when none is given) and the worksheet's format, once
     the outputs, their formats and the count are checked: every refusal before any work."""
-    from ..answers.practice import MAX_COUNT
-
     for name, value in (("--key", key), ("--questions", questions), ("--pdf", pdf)):
         if value == "":
             fail(f"{name} needs a file name")
@@ -169,8 +175,9 @@ def _checked(
         _key_format(key or "")
     except ValueError as err:
         fail(str(err))
-    if not 1 <= count <= MAX_COUNT:  # checked before a seed is chosen and announced
-        fail(f"--count must be 1 to {MAX_COUNT} (got {count})")
+    # checked before a seed is chosen and announced
+    if not 1 <= count <= answers_practice.MAX_COUNT:
+        fail(f"--count must be 1 to {answers_practice.MAX_COUNT} (got {count})")
     if seed is None:
         import secrets
 
@@ -201,14 +208,10 @@ def _documents(
     standalone: bool,
 ) -> _Documents:
     """The question file, the worksheet (and its LaTeX for --pdf) and the key."""
-    from ..answers.practice import practice as generate
-    from ..answers.practice import question_file
-    from ..render.sheet import sheet_document
-
     try:
-        chosen = generate(topic.value, count, seed, difficulty.value)
+        chosen = answers_practice.practice(topic.value, count, seed, difficulty.value)
         title = f"Practice: {topic.value}, {difficulty.value}, seed {seed}"
-        text = question_file(chosen, title)
+        text = answers_practice.question_file(chosen, title)
         sheet = read_questions(text, "practice")
         answered = answer_questions(sheet.questions, "practice")
         worksheet = sheet_document(sheet, answered, "worksheet", name, standalone=standalone)
@@ -238,8 +241,6 @@ def _key_format(path: str) -> str:
     >>> _key_format("key.tex"), _key_format("KEY.PDF"), _key_format("key")
     ('latex', 'pdf', 'markdown')
     """
-    from ..render import EXTENSIONS, FORMATS, formats
-
     suffix = Path(path).suffix.lower()
     if suffix == ".pdf":
         return "pdf"

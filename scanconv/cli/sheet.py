@@ -39,7 +39,8 @@ from ..questions.files import (
     strip_comment,
 )
 from ..render import Options
-from ..render.sheet import Answered, Question, Sheet
+from ..render.budget import document
+from ..render.sheet import Answered, Question, Sheet, sheet_document
 from .application import app
 from .budget import check_question
 from .options import DocumentFormatOpt, OutputOpt
@@ -88,8 +89,6 @@ def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -
     ...
     scanconv.questions.files.QuestionError: q.txt:3: radius must be an integer, got 0.500
     """
-    from ..render.budget import document
-
     with document():
         return _answer_all(questions, source)
 
@@ -226,8 +225,6 @@ def sheet(
     ] = None,
 ) -> None:
     """Answer every question of a question file in one document."""
-    from ..render.sheet import sheet_document
-
     kind = "worksheet" if worksheet else "key"
     if pdf == "":
         fail("--pdf needs a file name")

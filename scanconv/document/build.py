@@ -9,7 +9,7 @@ instead.
 from __future__ import annotations
 
 from functools import partial
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..core import lazy, records
 from ..core.records import Quantity, Solution
@@ -28,6 +28,11 @@ from .blocks import (
 )
 from .numbering import label_offset, marks_label, numbering_legend, step_labels
 from .prose import note_segments
+
+if TYPE_CHECKING:
+    from ..answers import marking_diagnose
+else:
+    marking_diagnose = lazy.module("scanconv.answers.marking_diagnose")
 
 IDEAL = ("line", "circle", "ellipse", "polyline", "control")
 """The :attr:`Solution.geometry` keys that describe the ideal primitive."""
@@ -125,9 +130,7 @@ def _step_table(solution: Solution) -> StepTable:
 
 def _model(solution: Solution) -> Any:
     """The marking model of ``solution``'s walk (loaded on first use: start-up time)."""
-    from ..answers.marking_diagnose import model_for
-
-    return model_for(solution)
+    return marking_diagnose.model_for(solution)
 
 
 def _pixels(solution: Solution, construction: str | None) -> Pixels:

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..core.checks import InputError
+from ..display import Answer
 from ..render import Options
 from .commands import BODIES
 from .grammar import error_message
@@ -72,7 +73,5 @@ def answer(question: str | Sequence[str]) -> Answer:
     ...
     scanconv.questions.words.UsageError: Invalid value for '--algo' / '-a': 'zzz' is not one of 'bresenham', 'dda', 'basic', 'wu', 'midpoint'.
     """
-    from ..display import Answer
-
     solution = solve(parse(question))
     return solution if isinstance(solution, Answer) else Answer.of(solution)

@@ -15,8 +15,15 @@ from typing import TYPE_CHECKING, Any
 from .. import _api as api
 from .._api.color_theory import color as color_api
 from .._api.color_theory import theory as theory_api
+from ..core import lazy
 from ..core.checks import InputError
+from ..core.numeric import parse_number
 from .words import UsageError, no_such_option, number
+
+if TYPE_CHECKING:
+    from ..answers import transform as answers_transform
+else:
+    answers_transform = lazy.module("scanconv.answers.transform")
 
 if TYPE_CHECKING:
     from ..core.records import Solution
@@ -158,8 +165,6 @@ def compare_curves() -> Solution:
 
 
 def _is_number(word: str) -> bool:
-    from ..core.numeric import parse_number
-
     try:
         parse_number(word)
     except ValueError:
@@ -177,10 +182,8 @@ def _check_word(word: str) -> None:
             raise UsageError(f"Invalid value: {err}") from None
     if not word.startswith("-") or word.split("=", 1)[0] in TRANSFORM_WORDS or _is_number(word):
         return
-    from ..answers.transform import parse_angle
-
     try:
-        parse_angle(word)
+        answers_transform.parse_angle(word)
     except ValueError:
         raise no_such_option(word.split("=", 1)[0]) from None
 

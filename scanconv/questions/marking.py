@@ -8,15 +8,21 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..core import lazy
 from ..core.checks import InputError
+from ..core.records import Solution
+from ..display import Answer
 from .answering import solve
 from .grammar_table import NOT_QUESTIONS, SPECS
 from .parser import HELP, CommandLine, parse, split
 from .words import students
 
 if TYPE_CHECKING:
-    from ..core.records import Solution
-    from ..display import Answer
+    from ..answers import marking as answers_marking
+    from ..answers import marking_table
+else:  # only the runs that mark a file
+    answers_marking = lazy.module("scanconv.answers.marking")
+    marking_table = lazy.module("scanconv.answers.marking_table")
 
 
 def marking_question(question: str | Sequence[str]) -> Solution:
@@ -63,9 +69,7 @@ def marking_answer(line: CommandLine) -> Solution:
         solution = solve(line)
     except ValueError as err:
         raise InputError(f"question: {err}", getattr(err, "param", None)) from None
-    from ..answers.marking_table import table_model_for
-
-    if not solution.columns and table_model_for(solution) is None:
+    if not solution.columns and marking_table.table_model_for(solution) is None:
         raise InputError(f"the question {' '.join(line.words[:3])!r} has no step table to mark")
     return solution
 
@@ -81,14 +85,14 @@ def check(answer: str | os.PathLike[str], question: str | Sequence[str] | Soluti
     >>> m.data["score"], m.data["out_of"]
     (7, 8)
     """
-    from ..answers.marking import mark_file, marking_solution
-    from ..core.records import Solution
-    from ..display import Answer
-
     if isinstance(question, Solution):
         solution, text = question, question.title
     else:
         words = split(question)
         solution, text = marking_question(words), " ".join(words)
     path = Path(answer)
-    return Answer.of(marking_solution(mark_file(path, solution), solution, path.name, text))
+    return Answer.of(
+        answers_marking.marking_solution(
+            answers_marking.mark_file(path, solution), solution, path.name, text
+        )
+    )

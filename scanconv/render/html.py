@@ -50,8 +50,9 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import islice
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
+from ..core import lazy
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution, step_getter
 from ..document import (
@@ -73,6 +74,11 @@ from .mathml import esc, json_script, note_html, prose_html, prose_segments_html
 from .selftest import selftest_html
 from .stepgrid import figure_svg, legend, step_grid
 from .stepper import column_label, stepping
+
+if TYPE_CHECKING:
+    from . import page_assets
+else:
+    page_assets = lazy.module("scanconv.render.page_assets")
 
 __all__ = [
     "answer_section",
@@ -468,22 +474,20 @@ def answer_section(
 
 def page_head(title: str) -> str:
     """The document's head: charset, title, the style sheet."""
-    from .page_assets import CSS, PAGE_CSS, PLAIN
-
     return (
         '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
         '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
         '<meta name="generator" content="scanconv">\n'
-        f"<title>{esc(title)}</title>\n<style>\n{CSS}{PAGE_CSS}</style>\n"
-        f"<noscript><style>\n{PLAIN}</style></noscript>\n</head>\n"
+        f"<title>{esc(title)}</title>\n<style>\n{page_assets.CSS}{page_assets.PAGE_CSS}</style>\n"
+        f"<noscript><style>\n{page_assets.PLAIN}</style></noscript>\n</head>\n"
     )
 
 
 def page(body: str, title: str) -> str:
     """A whole page around ``body`` (answer sections): head, body, the stepper's script."""
-    from .page_assets import JS
-
-    return f"{page_head(title)}<body>\n{body}\n<script>{JS}</script>\n</body>\n</html>\n"
+    return (
+        f"{page_head(title)}<body>\n{body}\n<script>{page_assets.JS}</script>\n</body>\n</html>\n"
+    )
 
 
 def html_document(
@@ -536,8 +540,6 @@ def notebook_html(solution: Solution | Document, options: Options | None = None)
     the keys to the section itself (click it, then use the arrows)."""
     import secrets
 
-    from .page_assets import CSS, JS
-
     uid = f"scanconv-{next(_counter)}-{secrets.token_hex(4)}"
     section = answer_section(solution, uid, options, keys="root", at_end=True)
-    return f'<div class="scanconv-cell"><style>{CSS}</style>{section}<script>{JS}</script></div>'
+    return f'<div class="scanconv-cell"><style>{page_assets.CSS}</style>{section}<script>{page_assets.JS}</script></div>'

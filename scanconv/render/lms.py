@@ -35,8 +35,8 @@ from typing import Any, NamedTuple
 
 from ..core.records import Column, Move, Solution, step_getter
 from ..document import Document, Given, StepTable, Table, Working, as_document
-from . import Notice
-from .sheet import Answered, Sheet, _Guard
+from . import Format, Notice, render
+from .sheet import LABELS, Answered, Sheet, _Guard, wording
 
 TOLERANCE = "0.0005"
 """The tolerance of a number gap whose value has more than 3 decimals: any answer within it of
@@ -264,8 +264,6 @@ def gap_tables(answer: Solution | Document, limit: int = MAX_GAPS) -> tuple[GapT
     :class:`~scanconv.document.Table` blocks) with their answer cells as gaps (the module
     docstring's rules); ``None`` when they would hold more than ``limit`` gaps (found out
     without building more)."""
-    from .sheet import LABELS
-
     doc = as_document(answer)
     room = [limit]
     tables = []
@@ -326,9 +324,6 @@ def quiz_questions(
 def _quiz_question(title: str, a: Answered, notices: list[str] | None) -> QuizQuestion:
     """One quiz question, from the answer's document: its title, Given and Working blocks,
     its tables (:func:`gap_tables`) and the ``plain`` mapping's key as the feedback."""
-    from . import Format, render
-    from .sheet import wording
-
     q = a.question
     doc = as_document(a.solution)
     key: list[str] = []

@@ -23,15 +23,21 @@ import json
 import shlex
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import chain
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
+from ..core import lazy
 from ..core.records import Column, Quantity, Solution
 from ..core.working import ascii_text, json_visible
 from ..document import Document, Given, Title, as_document
 from ..document import Question as QuestionBlock
-from . import Notice, Options
+from . import FORMATS, Format, Notice, Options, formats, load, render
 from .cells import numeric_column
-from .text import md_text
+from .text import MARKDOWN, PLAIN, all_tables, md_text, table_lines
+
+if TYPE_CHECKING:
+    from . import data
+else:
+    data = lazy.module("scanconv.render.data")  # the json sheet only
 
 
 class Question(NamedTuple):
@@ -104,8 +110,6 @@ def sheet_document(
     answer is worked out names the question's line (``SOURCE:LINE: ...``). Notices (a grid
     left out) are added to ``notices``, prefixed with the question's number.
     """
-    from . import FORMATS, formats, load
-
     if kind not in KINDS:
         raise ValueError(f"unknown sheet kind {kind!r}: key or worksheet")
     spec = FORMATS.get(fmt)
@@ -163,8 +167,6 @@ def key_document(a: Answered, level: int = 2, *, question: bool = True) -> Docum
 def _answer_chunks(a: Answered, fmt: str, document: Document) -> Iterator[str | Notice]:
     """``document`` (a key's answer) through the mapping of ``fmt``, its notices naming the
     question."""
-    from . import Format, render
-
     for chunk in render(document, Format(fmt), a.options):
         if isinstance(chunk, Notice):
             yield Notice(f"question {a.question.number}: {chunk.message}", chunk.ways)
@@ -236,8 +238,6 @@ level ``r``, an image's row ``i``, a quantization level's number, a storage unit
 
 def _blank_tables(solution: Solution, count: bool = True) -> list[Blank]:
     """The tables of the answer, emptied: title, columns, row count and cell widths."""
-    from .text import all_tables
-
     out = []
     for title, columns, rows in all_tables(solution):
         n = 0
@@ -295,8 +295,6 @@ def markdown_sheet(
 ) -> Iterator[str | Notice]:
     """The sheet in Markdown: each question and its answer through the ``markdown`` mapping
     (the answer's title one level under the question's)."""
-    from .text import MARKDOWN
-
     section_level, level = _levels(sheet)
     if sheet.title:
         yield f"# {md_text(' '.join(sheet.title.split()))}\n\n{_intro(sheet, kind)}\n\n"
@@ -314,8 +312,6 @@ def markdown_sheet(
 
 def _md_worksheet(a: Answered) -> Iterator[str]:
     """A worksheet's question in Markdown: its wording, the given values, empty tables."""
-    from .text import table_lines
-
     yield md_text(wording(a)) + "\n\n"
     if given_of(a):
         yield f"**Given:** {', '.join(f'${g.tex}$' for g in given_of(a))}\n\n"
@@ -347,8 +343,6 @@ def plain_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
     """The sheet in plain text: each question and its answer through the ``plain`` mapping."""
-    from .text import PLAIN
-
     if sheet.title:
         title = ascii_text(" ".join(sheet.title.split()))
         yield f"{title}\n{'#' * len(title)}\n\n{_intro(sheet, kind)}\n\n"
@@ -367,8 +361,6 @@ def plain_sheet(
 
 def _plain_worksheet(a: Answered) -> Iterator[str]:
     """A worksheet's question in plain text: its wording, the given values, empty tables."""
-    from .text import table_lines
-
     yield ascii_text(wording(a)) + "\n\n"
     if given_of(a):
         given = ", ".join(ascii_text(g.text) for g in given_of(a))
@@ -409,8 +401,6 @@ def json_sheet(
 ) -> Iterator[str]:
     """One JSON object: the sheet's title, kind and total marks, and its questions (each
     key's answer through the ``json`` mapping)."""
-    from .data import render_json
-
     questions = []
     for a in answered:
         q = a.question
@@ -424,7 +414,7 @@ def json_sheet(
             }
             if kind == "key":
                 entry["command"] = q.command
-                entry["answer"] = json.loads("".join(render_json(a.solution)))
+                entry["answer"] = json.loads("".join(data.render_json(a.solution)))
             else:
                 entry["given"] = [g.text for g in given_of(a)]
                 entry["tables"] = [

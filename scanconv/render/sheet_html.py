@@ -8,10 +8,12 @@ for a worksheet, the question, the given values and each table of the answer emp
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
+from typing import TYPE_CHECKING
 
+from ..core import lazy
 from ..document import Question as QuestionBlock
 from . import Notice
-from .html import answer_section, question_html
+from .html import answer_section, page_head, question_html
 from .mathml import esc as escape
 from .sheet import (
     Answered,
@@ -26,6 +28,11 @@ from .sheet import (
     question_block,
     wording,
 )
+
+if TYPE_CHECKING:
+    from . import page_assets
+else:
+    page_assets = lazy.module("scanconv.render.page_assets")
 
 _SHEET_CSS = """\
 .sc-sheet{font-family:"DejaVu Sans",system-ui,sans-serif;color:#1b1b1b;line-height:1.45}
@@ -52,9 +59,6 @@ def html_sheet(
     title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
     style = f"<style>\n{_SHEET_CSS}</style>\n"
     if kind == "key":
-        from .html import page_head
-        from .page_assets import JS
-
         head = page_head(title).replace("</head>", style + "</head>", 1)
     else:
         head = (
@@ -89,7 +93,7 @@ def html_sheet(
     )
     yield "</main>\n"
     if kind == "key":
-        yield f"<script>{JS}</script>\n"
+        yield f"<script>{page_assets.JS}</script>\n"
     yield "</body>\n</html>\n"
 
 

@@ -22,7 +22,7 @@ from ..core.working import tex_text
 from ..document import Pixels, as_document
 from ..document import Question as QuestionBlock
 from . import Notice
-from .latex import KEEP_ROWS, LATEX, NEED
+from .latex import KEEP_ROWS, LATEX, NEED, math_cell
 from .sheet import (
     Answered,
     Blank,
@@ -38,6 +38,7 @@ from .sheet import (
     question_block,
     wording,
 )
+from .tikz import tikz_grid
 
 PREAMBLE = (
     r"""\RequirePackage{fix-cm}
@@ -135,8 +136,6 @@ def _worksheet(a: Answered) -> Iterator[str]:
     for blank in blanks:
         yield from _latex_blank(blank)
     if drawing:
-        from .tikz import tikz_grid
-
         grid = tikz_grid(a.solution, a.options.origin, empty=True)
         if grid is not None:
             yield "\\paragraph{Pixel grid}\\mbox{}\\par\\nopagebreak\n" + grid
@@ -148,8 +147,6 @@ def _tex_label(text: str) -> str:
     >>> _tex_label("-3"), _tex_label("KB_2")
     ('$-3$', 'KB\\_2')
     """
-    from .latex import math_cell
-
     return f"${text}$" if math_cell(text) else tex_text(text)
 
 

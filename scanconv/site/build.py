@@ -32,10 +32,18 @@ from collections.abc import Callable, Iterable
 from html import escape
 from importlib import metadata, resources
 from pathlib import Path
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from .. import __version__
+from ..core import lazy
 from ..core.checks import InputError
+
+if TYPE_CHECKING:
+    from . import forms as site_forms
+    from . import page
+else:
+    site_forms = lazy.module("scanconv.site.forms")
+    page = lazy.module("scanconv.site.page")
 
 PYODIDE_VERSION = "314.0.7"
 """The Pyodide release the site runs (Python 3.14; the npm package ``pyodide``)."""
@@ -221,16 +229,13 @@ def dependency_wheel(name: str) -> tuple[str, bytes]:
 
 def index_html() -> str:
     """The page: the question box, the examples and a form per command."""
-    from .forms import forms
-    from .page import EXAMPLES
-
     template = (resources.files(__package__) / "static" / "index.html").read_text("utf-8")
-    examples = " ".join(f'<a class="sc-example" href="#">{escape(q)}</a>' for q in EXAMPLES)
+    examples = " ".join(f'<a class="sc-example" href="#">{escape(q)}</a>' for q in page.EXAMPLES)
     fills = {
         "{version}": escape(__version__),
         "{pyodide}": PYODIDE_VERSION,
         "{examples}": examples,
-        "{forms}": forms(),
+        "{forms}": site_forms.forms(),
     }
     for key, value in fills.items():
         template = template.replace(key, value)

@@ -10,9 +10,18 @@ here needs numpy, typer or rich (Pyodide has none of them).
 from __future__ import annotations
 
 import json
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from ..core import lazy
 from ..questions.files import MAX_LINE_CHARS  # a question in the box is a line of a sheet
+from ..render import Format, Notice, render
+
+if TYPE_CHECKING:
+    from .. import questions
+    from ..questions import parser
+else:
+    questions = lazy.module("scanconv.questions")
+    parser = lazy.module("scanconv.questions.parser")
 
 EXAMPLES = (
     "line 2 2 10 6 --algo bresenham",
@@ -40,9 +49,7 @@ def _words(question: str) -> list[str]:
     >>> _words("scanconv line 2 2 10 6 -f json --svg=a.svg -o a.md")
     ['line', '2', '2', '10', '6']
     """
-    from ..questions.parser import split
-
-    words = split(question)
+    words = parser.split(question)
     if words[:1] == ["scanconv"]:
         words = words[1:]
     out: list[str] = []
@@ -67,15 +74,12 @@ def solve_page(question: str) -> dict[str, Any]:
     >>> solve_page("line 2 2 10")["error"]
     "Missing argument 'Y2'."
     """
-    from ..questions import parse, shown_with, solve
-    from ..render import Format, Notice, render
-
     if len(question) > MAX_LINE_CHARS:
         return {"ok": False, "error": f"question too long (at most {MAX_LINE_CHARS:,} characters)"}
     try:
-        line = parse(_words(question))
-        options = shown_with(line, "the page")
-        solution = solve(line)
+        line = questions.parse(_words(question))
+        options = questions.shown_with(line, "the page")
+        solution = questions.solve(line)
         chunks = list(render(solution, Format.html, options))
         html = "".join(c for c in chunks if isinstance(c, str))
         notes = [c.message for c in chunks if isinstance(c, Notice)]  # what the page leaves out

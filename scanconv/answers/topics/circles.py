@@ -3,9 +3,17 @@ equation, 8-way symmetry, the general method, the symmetric DDA and Bresenham's 
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ...algorithms.circles import images
+from ...core import lazy
 from ...core.records import Solution
 from ._build import Topic, answer, embed, figure, text_table
+
+if TYPE_CHECKING:
+    from .. import circle
+else:
+    circle = lazy.module("scanconv.answers.circle")
 
 SECTION = "circle-drawing"
 
@@ -29,8 +37,6 @@ _ALGORITHM = (
 
 
 def equation() -> Solution:
-    from ..circle import circle_solution
-
     return answer(
         "circle-equation",
         "What is the equation of a circle?",
@@ -55,7 +61,7 @@ def equation() -> Solution:
         examples=(
             embed(
                 "the circle of radius 5 (scanconv circle 5)",
-                circle_solution("midpoint", 5),
+                circle.circle_solution("midpoint", 5),
                 working=False,
             ),
         ),
@@ -104,8 +110,6 @@ def symmetry() -> Solution:
 
 
 def general() -> Solution:
-    from ..circle import circle_solution
-
     return answer(
         "general-circle",
         "Explain the general method of circle drawing",
@@ -144,15 +148,13 @@ def general() -> Solution:
         examples=(
             embed(
                 "radius 5 by the general method (scanconv circle 5 --method general)",
-                circle_solution("general", 5),
+                circle.circle_solution("general", 5),
             ),
         ),
     )
 
 
 def symmetric_dda() -> Solution:
-    from ..circle import circle_solution
-
     return answer(
         "symmetric-dda",
         "Explain the symmetric DDA algorithm for circles",
@@ -179,15 +181,13 @@ def symmetric_dda() -> Solution:
         examples=(
             embed(
                 "radius 5 by the symmetric DDA (scanconv circle 5 --method symmetric-dda)",
-                circle_solution("symmetric-dda", 5),
+                circle.circle_solution("symmetric-dda", 5),
             ),
         ),
     )
 
 
 def bresenham() -> Solution:
-    from ..circle import circle_solution
-
     return answer(
         "bresenham-circle",
         "Explain Bresenham's circle drawing algorithm",
@@ -215,7 +215,7 @@ def bresenham() -> Solution:
         examples=(
             embed(
                 "radius 5 (scanconv circle 5 --method bresenham)",
-                circle_solution("bresenham", 5),
+                circle.circle_solution("bresenham", 5),
             ),
         ),
     )

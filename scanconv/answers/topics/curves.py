@@ -3,8 +3,22 @@ Bezier method and the B-spline method."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from ...core import lazy
 from ...core.records import Solution
 from ._build import Topic, answer, embed, listing, text_table
+
+if TYPE_CHECKING:
+    from .. import bezier as answers_bezier
+    from .. import bspline as answers_bspline
+    from .. import continuity as answers_continuity
+    from .. import parametric as answers_parametric
+else:
+    answers_bezier = lazy.module("scanconv.answers.bezier")
+    answers_bspline = lazy.module("scanconv.answers.bspline")
+    answers_continuity = lazy.module("scanconv.answers.continuity")
+    answers_parametric = lazy.module("scanconv.answers.parametric")
 
 SECTION = "14-marks"
 
@@ -13,8 +27,6 @@ _SPLINE = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)]
 
 
 def curves() -> Solution:
-    from ..continuity import continuity_solution
-
     continuity = text_table(
         "Classification by continuity (the notes)",
         ["class", "what is continuous at a join"],
@@ -49,15 +61,15 @@ def curves() -> Solution:
             embed(
                 "two quadratic Bezier pieces joined at (2, 0) (scanconv continuity 0 0 1 1 2 0 : "
                 "2 0 3 -1 4 0)",
-                continuity_solution([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)]),
+                answers_continuity.continuity_solution(
+                    [(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)]
+                ),
             ),
         ),
     )
 
 
 def parametric() -> Solution:
-    from ..parametric import parametric_solution
-
     forms = text_table(
         "Parametric equations of the common curves (the notes' examples)",
         ["curve", "x(t)", "y(t)", "range of t"],
@@ -91,15 +103,13 @@ def parametric() -> Solution:
         examples=(
             embed(
                 "the line (0, 0) to (10, 4) (scanconv parametric line 0 0 10 4)",
-                parametric_solution("line", points=(0, 0, 10, 4)),
+                answers_parametric.parametric_solution("line", points=(0, 0, 10, 4)),
             ),
         ),
     )
 
 
 def bezier() -> Solution:
-    from ..bezier import bezier_solution
-
     return answer(
         "bezier",
         "Bezier method",
@@ -130,15 +140,13 @@ def bezier() -> Solution:
             embed(
                 "the cubic with control points (0, 0), (1, 2), (3, 3), (4, 0) "
                 "(scanconv bezier 0 0 1 2 3 3 4 0 --samples 8)",
-                bezier_solution(_CONTROL, 8),
+                answers_bezier.bezier_solution(_CONTROL, 8),
             ),
         ),
     )
 
 
 def bspline() -> Solution:
-    from ..bspline import bspline_solution
-
     compare = text_table(
         "Comparison: Bezier vs B-spline (the notes' table)",
         ["feature", "Bezier curve", "B-spline"],
@@ -180,7 +188,7 @@ def bspline() -> Solution:
             embed(
                 "a cubic B-spline on 5 control points, open knots (scanconv bspline 0 0 1 2 3 3 "
                 "4 0 5 2 --degree 3 --samples 8)",
-                bspline_solution(_SPLINE, 3, "open", 8),
+                answers_bspline.bspline_solution(_SPLINE, 3, "open", 8),
             ),
         ),
     )

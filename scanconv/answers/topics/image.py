@@ -3,9 +3,21 @@ and quantization, the storage formula and the RGB colour model."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ...algorithms.storage import bits_per_pixel, storage_bits
+from ...core import lazy
 from ...core.records import Solution
 from ._build import Topic, answer, embed, text_table
+
+if TYPE_CHECKING:
+    from .. import color, quantize, ramp
+    from .. import storage as answers_storage
+else:
+    color = lazy.module("scanconv.answers.color")
+    quantize = lazy.module("scanconv.answers.quantize")
+    ramp = lazy.module("scanconv.answers.ramp")
+    answers_storage = lazy.module("scanconv.answers.storage")
 
 SECTION = "image-representation"
 
@@ -23,8 +35,6 @@ _PARAMETERS = text_table(
 
 
 def image() -> Solution:
-    from ..ramp import ramp_solution
-
     return answer(
         "image",
         "Define image and image representation",
@@ -49,7 +59,7 @@ def image() -> Solution:
         examples=(
             embed(
                 "the notes' 8 × 8 image of L = 8 gray levels (scanconv image ramp)",
-                ramp_solution(8, 8, 8),
+                ramp.ramp_solution(8, 8, 8),
                 working=False,
             ),
         ),
@@ -57,10 +67,8 @@ def image() -> Solution:
 
 
 def types() -> Solution:
-    from ..color import color_solution
-
     rgb = (51, 102, 153)
-    colour = color_solution("rgb", list(rgb), ["grey"])
+    colour = color.color_solution("rgb", list(rgb), ["grey"])
     one = text_table(
         "One pixel of each type, and its bits",
         ["image", "pixel value", "bits", "bits per pixel"],
@@ -117,8 +125,6 @@ def types() -> Solution:
 
 
 def sampling() -> Solution:
-    from ..quantize import quantize_solution
-
     return answer(
         "sampling-quantization",
         "What are sampling and quantization? Explain",
@@ -145,15 +151,13 @@ def sampling() -> Solution:
         examples=(
             embed(
                 "3-bit quantization, 8 gray levels (scanconv quantize --bits 3)",
-                quantize_solution(3),
+                quantize.quantize_solution(3),
             ),
         ),
     )
 
 
 def storage() -> Solution:
-    from ..storage import storage_solution
-
     return answer(
         "storage-formula",
         "Write the storage requirement formula for an image",
@@ -170,7 +174,7 @@ def storage() -> Solution:
         examples=(
             embed(
                 "a 1024 × 768 image with L = 256 (scanconv storage 1024 768 --levels 256)",
-                storage_solution(1024, 768, levels=256),
+                answers_storage.storage_solution(1024, 768, levels=256),
             ),
         ),
     )
@@ -193,8 +197,6 @@ _PRIMARIES = text_table(
 
 
 def rgb() -> Solution:
-    from ..color import color_solution
-
     return answer(
         "rgb-model",
         "Explain RGB color model with example",
@@ -223,7 +225,7 @@ def rgb() -> Solution:
         examples=(
             embed(
                 "the colour (51, 102, 153) (scanconv color rgb 51 102 153 --to cmy)",
-                color_solution("rgb", [51, 102, 153], ["cmy"]),
+                color.color_solution("rgb", [51, 102, 153], ["cmy"]),
             ),
         ),
     )

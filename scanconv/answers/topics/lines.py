@@ -3,9 +3,17 @@ algorithm and how the other octants are handled."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from ...core import lazy
 from ...core.numeric import fmt_short
 from ...core.records import Pixel, Solution
 from ._build import Topic, answer, embed, figure, text_table
+
+if TYPE_CHECKING:
+    from .. import line as answers_line
+else:
+    answers_line = lazy.module("scanconv.answers.line")
 
 SECTION = "line-drawing"
 
@@ -24,8 +32,6 @@ def _bbox(pixels: list[Pixel]) -> tuple[int, int, int, int]:
 
 
 def line() -> Solution:
-    from ..line import line_solution
-
     return answer(
         "line",
         "Define line. Explain need of line drawing",
@@ -54,7 +60,7 @@ def line() -> Solution:
             embed(
                 "the notes' line (2, 2) to (8, 5) by the basic concept (scanconv line 2 2 8 5 "
                 "--algo basic)",
-                line_solution("basic", 2, 2, 8, 5),
+                answers_line.line_solution("basic", 2, 2, 8, 5),
             ),
         ),
     )
@@ -70,12 +76,10 @@ _CASES = (
 
 
 def cases() -> Solution:
-    from ..line import line_solution
-
     rows = []
     every: list[Pixel] = []
     for name, cond, inc, major, (x1, y1, x2, y2) in _CASES:
-        sol = line_solution("dda", x1, y1, x2, y2)
+        sol = answers_line.line_solution("dda", x1, y1, x2, y2)
         m = next(q.value for q in sol.derived if q.key == "m")
         every.extend(_pixels(sol))
         rows.append((name, cond, inc, major, f"({x1}, {y1}) to ({x2}, {y2})", fmt_short(m)))
@@ -109,8 +113,6 @@ def cases() -> Solution:
 
 
 def dda() -> Solution:
-    from ..line import line_solution
-
     return answer(
         "dda",
         "Describe the DDA algorithm for line drawing",
@@ -151,15 +153,13 @@ def dda() -> Solution:
         examples=(
             embed(
                 "the notes' line (2, 2) to (10, 6) by DDA (scanconv line 2 2 10 6 --algo dda)",
-                line_solution("dda", 2, 2, 10, 6, pseudocode=True),
+                answers_line.line_solution("dda", 2, 2, 10, 6, pseudocode=True),
             ),
         ),
     )
 
 
 def bresenham() -> Solution:
-    from ..line import line_solution
-
     return answer(
         "bresenham-line",
         "Explain Bresenham's line drawing algorithm",
@@ -203,7 +203,7 @@ def bresenham() -> Solution:
         examples=(
             embed(
                 "the notes' line (2, 2) to (10, 6) (scanconv line 2 2 10 6 --algo bresenham)",
-                line_solution("bresenham", 2, 2, 10, 6, pseudocode=True),
+                answers_line.line_solution("bresenham", 2, 2, 10, 6, pseudocode=True),
             ),
         ),
     )
@@ -223,12 +223,10 @@ _OCTANTS = (
 
 
 def octants() -> Solution:
-    from ..line import line_solution
-
     rules, rows = [], []
     every: list[Pixel] = []
     for n, (x2, y2), cond, rule in _OCTANTS:
-        pixels = _pixels(line_solution("bresenham", 0, 0, x2, y2))
+        pixels = _pixels(answers_line.line_solution("bresenham", 0, 0, x2, y2))
         every.extend(p for p in pixels if p not in every)
         rules.append((n, cond, rule))
         rows.append((n, f"({x2}, {y2})", _compact(pixels)))

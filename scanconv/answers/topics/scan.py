@@ -3,9 +3,19 @@ two kinds of technique and the raster display."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from ...core import lazy
 from ...core.numeric import fmt_short
 from ...core.records import Solution, Table, heading
 from ._build import Example, Topic, answer, embed, text_table
+
+if TYPE_CHECKING:
+    from .. import antialias, line, pipeline
+else:
+    antialias = lazy.module("scanconv.answers.antialias")
+    line = lazy.module("scanconv.answers.line")
+    pipeline = lazy.module("scanconv.answers.pipeline")
 
 SECTION = "scan-conversion"
 
@@ -22,8 +32,6 @@ _PRIMITIVES = text_table(
 
 
 def define() -> Solution:
-    from ..line import line_solution
-
     return answer(
         "scan-conversion",
         "Define scan conversion",
@@ -49,7 +57,7 @@ def define() -> Solution:
         examples=(
             embed(
                 "the line (2, 2) to (10, 6) scan converted by Bresenham's algorithm",
-                line_solution("bresenham", 2, 2, 10, 6),
+                line.line_solution("bresenham", 2, 2, 10, 6),
                 working=False,
             ),
         ),
@@ -57,8 +65,6 @@ def define() -> Solution:
 
 
 def need() -> Solution:
-    from ..line import line_solution
-
     return answer(
         "need-for-scan-conversion",
         "Explain the need for scan conversion",
@@ -84,7 +90,7 @@ def need() -> Solution:
         examples=(
             embed(
                 "the notes' line (2, 2) to (8, 5) by the basic concept, y = 2 + 0.5(x - 2)",
-                line_solution("basic", 2, 2, 8, 5),
+                line.line_solution("basic", 2, 2, 8, 5),
             ),
         ),
     )
@@ -104,9 +110,7 @@ def _pair(p: list) -> str:
 
 
 def process() -> Solution:
-    from ..pipeline import pipeline_line_solution
-
-    sol = pipeline_line_solution(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10))
+    sol = pipeline.pipeline_line_solution(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10))
     clipped, device, rounded = sol.data["clipped"], sol.data["device"], sol.data["rounded"]
     count = sum(1 for _ in sol.pixels()) if sol.pixels else 0
     here = (
@@ -151,11 +155,8 @@ def process() -> Solution:
 
 
 def techniques() -> Solution:
-    from ..antialias import antialias_solution
-    from ..line import line_solution
-
-    dda = line_solution("dda", 2, 2, 10, 6)
-    area = antialias_solution("line", [2, 2, 10, 6], method="area")
+    dda = line.line_solution("dda", 2, 2, 10, 6)
+    area = antialias.antialias_solution("line", [2, 2, 10, 6], method="area")
     cover: dict[int, list[str]] = {}
     for row in area.tables[0].rows():
         (i, j), value = row[0], row[1]

@@ -7,10 +7,45 @@ computed by scanconv."""
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
+from ...core import lazy
 from ...core.records import Solution
 from ._build import Example, Topic, answer, text_table
 from ._build import embed as _embed
+
+if TYPE_CHECKING:
+    from .. import (
+        antialias,
+        attributes,
+        clip,
+        dither,
+        fill,
+        framebuffer,
+        inside,
+        line,
+        midpoint_clip,
+        nll,
+        transform,
+    )
+    from .. import characters as answers_characters
+    from .. import cyrus_beck as answers_cyrus_beck
+    from .. import weiler_atherton as answers_weiler_atherton
+else:
+    antialias = lazy.module("scanconv.answers.antialias")
+    attributes = lazy.module("scanconv.answers.attributes")
+    answers_characters = lazy.module("scanconv.answers.characters")
+    clip = lazy.module("scanconv.answers.clip")
+    answers_cyrus_beck = lazy.module("scanconv.answers.cyrus_beck")
+    dither = lazy.module("scanconv.answers.dither")
+    fill = lazy.module("scanconv.answers.fill")
+    framebuffer = lazy.module("scanconv.answers.framebuffer")
+    inside = lazy.module("scanconv.answers.inside")
+    line = lazy.module("scanconv.answers.line")
+    midpoint_clip = lazy.module("scanconv.answers.midpoint_clip")
+    nll = lazy.module("scanconv.answers.nll")
+    transform = lazy.module("scanconv.answers.transform")
+    answers_weiler_atherton = lazy.module("scanconv.answers.weiler_atherton")
 
 SECTION = "beyond-the-notes"
 
@@ -25,8 +60,6 @@ def embed(label: str, sol: Solution, *, plot: bool = True, tables: bool = True) 
 
 
 def dithering() -> Solution:
-    from ..dither import ordered_solution, pattern_solution
-
     return answer(
         "halftoning-dithering",
         "Explain halftoning and dithering techniques",
@@ -56,17 +89,15 @@ def dithering() -> Solution:
             embed(
                 "ordered dither of a 2 x 4 image with the 2 x 2 Bayer matrix (scanconv dither "
                 "ordered --image '10 200 30 180; 60 90 250 5')",
-                ordered_solution([[10, 200, 30, 180], [60, 90, 250, 5]], 2, 255),
+                dither.ordered_solution([[10, 200, 30, 180], [60, 90, 250, 5]], 2, 255),
                 plot=False,
             ),
-            embed("the 2 x 2 halftone patterns (scanconv halftone 2)", pattern_solution(2)),
+            embed("the 2 x 2 halftone patterns (scanconv halftone 2)", dither.pattern_solution(2)),
         ),
     )
 
 
 def error_diffusion() -> Solution:
-    from ..dither import diffusion_solution
-
     return answer(
         "error-diffusion",
         "Explain Floyd-Steinberg error diffusion",
@@ -90,7 +121,7 @@ def error_diffusion() -> Solution:
             embed(
                 "a 2 x 2 image of 100 on 0 .. 255 (scanconv dither floyd-steinberg --image "
                 "'100 100; 100 100')",
-                diffusion_solution([[100, 100], [100, 100]], 255),
+                dither.diffusion_solution([[100, 100], [100, 100]], 255),
                 plot=False,
             ),
         ),
@@ -98,8 +129,6 @@ def error_diffusion() -> Solution:
 
 
 def inside_outside() -> Solution:
-    from ..inside import inside_solution
-
     return answer(
         "inside-outside",
         "Explain inside-outside tests: the odd-even rule and the nonzero winding rule",
@@ -132,15 +161,13 @@ def inside_outside() -> Solution:
             embed(
                 "a concave polygon and two points (scanconv inside 0 0 6 0 6 6 3 2 0 6 --points "
                 "3 1 3 4)",
-                inside_solution([0, 0, 6, 0, 6, 6, 3, 2, 0, 6], [3, 1, 3, 4]),
+                inside.inside_solution([0, 0, 6, 0, 6, 6, 3, 2, 0, 6], [3, 1, 3, 4]),
             ),
         ),
     )
 
 
 def weiler_atherton() -> Solution:
-    from ..weiler_atherton import weiler_atherton_solution
-
     return answer(
         "weiler-atherton",
         "Explain Weiler-Atherton polygon clipping",
@@ -165,7 +192,7 @@ def weiler_atherton() -> Solution:
             embed(
                 "a U shape clipped to y >= 4 (scanconv clip polygon 0 0 8 0 8 8 6 8 6 2 2 2 2 8 "
                 "0 8 --window -1 4 9 9 --method weiler-atherton)",
-                weiler_atherton_solution(
+                answers_weiler_atherton.weiler_atherton_solution(
                     [0, 0, 8, 0, 8, 8, 6, 8, 6, 2, 2, 2, 2, 8, 0, 8], [-1, 4, 9, 4, 9, 9, -1, 9]
                 ),
             ),
@@ -174,8 +201,6 @@ def weiler_atherton() -> Solution:
 
 
 def cyrus_beck() -> Solution:
-    from ..cyrus_beck import cyrus_beck_solution
-
     return answer(
         "cyrus-beck",
         "Explain Cyrus-Beck line clipping",
@@ -194,15 +219,13 @@ def cyrus_beck() -> Solution:
         examples=(
             embed(
                 "a triangle window (scanconv clip convex -1 2 9 2 --window-vertices 0 0 8 0 0 8)",
-                cyrus_beck_solution(-1, 2, 9, 2, [0, 0, 8, 0, 0, 8]),
+                answers_cyrus_beck.cyrus_beck_solution(-1, 2, 9, 2, [0, 0, 8, 0, 0, 8]),
             ),
         ),
     )
 
 
 def midpoint_subdivision() -> Solution:
-    from ..midpoint_clip import midpoint_clip_solution
-
     return answer(
         "midpoint-subdivision",
         "Explain midpoint subdivision line clipping",
@@ -219,15 +242,13 @@ def midpoint_subdivision() -> Solution:
             embed(
                 "the line (-4, 2) to (4, 2) and the window (0, 0)-(8, 8) (scanconv clip line "
                 "-4 2 4 2 --window 0 0 8 8 --method midpoint-subdivision)",
-                midpoint_clip_solution(-4, 2, 4, 2, [0, 0, 8, 8]),
+                midpoint_clip.midpoint_clip_solution(-4, 2, 4, 2, [0, 0, 8, 8]),
             ),
         ),
     )
 
 
 def nicholl_lee_nicholl() -> Solution:
-    from ..nll import nll_solution
-
     return answer(
         "nicholl-lee-nicholl",
         "Explain Nicholl-Lee-Nicholl line clipping",
@@ -249,15 +270,13 @@ def nicholl_lee_nicholl() -> Solution:
             embed(
                 "the line (30, 60) to (60, 25) and the window (10, 10)-(50, 50) (scanconv clip "
                 "line 30 60 60 25 --window 10 10 50 50 --method nicholl-lee-nicholl)",
-                nll_solution(30, 60, 60, 25, (10, 10, 50, 50)),
+                nll.nll_solution(30, 60, 60, 25, (10, 10, 50, 50)),
             ),
         ),
     )
 
 
 def midpoint_line() -> Solution:
-    from ..line import line_solution
-
     return answer(
         "midpoint-line",
         "Derive the midpoint line algorithm",
@@ -275,15 +294,13 @@ def midpoint_line() -> Solution:
         examples=(
             embed(
                 "the line (2, 2) to (10, 6) (scanconv line 2 2 10 6 --algo midpoint)",
-                line_solution("midpoint", 2, 2, 10, 6),
+                line.line_solution("midpoint", 2, 2, 10, 6),
             ),
         ),
     )
 
 
 def line_attributes() -> Solution:
-    from ..attributes import line_style_solution, thick_line_solution
-
     return answer(
         "line-attributes",
         "Explain line attributes: line type and line width",
@@ -301,11 +318,11 @@ def line_attributes() -> Solution:
         examples=(
             embed(
                 "a dashed line (scanconv linestyle 0 0 10 4 --mask 1110)",
-                line_style_solution(0, 0, 10, 4, "1110"),
+                attributes.line_style_solution(0, 0, 10, 4, "1110"),
             ),
             embed(
                 "a thick line (scanconv thickline 0 0 6 2 --width 3)",
-                thick_line_solution(0, 0, 6, 2, 3),
+                attributes.thick_line_solution(0, 0, 6, 2, 3),
                 plot=False,
             ),
         ),
@@ -313,8 +330,6 @@ def line_attributes() -> Solution:
 
 
 def characters() -> Solution:
-    from ..characters import bitmap_solution, font_storage_solution
-
     return answer(
         "character-generation",
         "Explain character generation methods: bitmap and stroke",
@@ -336,18 +351,16 @@ def characters() -> Solution:
             ),
         ),
         examples=(
-            embed("a 5 x 7 'A' (scanconv char bitmap A)", bitmap_solution("A")),
+            embed("a 5 x 7 'A' (scanconv char bitmap A)", answers_characters.bitmap_solution("A")),
             embed(
                 "128 glyphs of 5 x 7 (scanconv char storage 128 5 7)",
-                font_storage_solution(128, 5, 7),
+                answers_characters.font_storage_solution(128, 5, 7),
             ),
         ),
     )
 
 
 def frame_buffer() -> Solution:
-    from ..framebuffer import framebuffer_solution
-
     return answer(
         "frame-buffer",
         "What is a frame buffer? Find its size for a resolution",
@@ -364,15 +377,13 @@ def frame_buffer() -> Solution:
             embed(
                 "1280 x 1024 at 8 bits, a 24-bit LUT, 60 Hz (scanconv framebuffer 1280 1024 8 "
                 "--lut 24 --refresh 60)",
-                framebuffer_solution(1280, 1024, 8, lut=24, refresh=60),
+                framebuffer.framebuffer_solution(1280, 1024, 8, lut=24, refresh=60),
             ),
         ),
     )
 
 
 def clipping() -> Solution:
-    from ..clip import clip_line_solution
-
     return answer(
         "clipping",
         "What is clipping? Compare Cohen-Sutherland and Liang-Barsky",
@@ -396,7 +407,7 @@ def clipping() -> Solution:
             embed(
                 "MU's line (30, 60)-(60, 25) and window (10, 10)-(50, 50) (scanconv clip line 30 "
                 "60 60 25 --window 10 10 50 50)",
-                clip_line_solution(30, 60, 60, 25, (10, 10, 50, 50), "cohen-sutherland"),
+                clip.clip_line_solution(30, 60, 60, 25, (10, 10, 50, 50), "cohen-sutherland"),
                 tables=False,
             ),
         ),
@@ -404,8 +415,6 @@ def clipping() -> Solution:
 
 
 def fills() -> Solution:
-    from ..fill import seed_fill_solution
-
     return answer(
         "flood-boundary-fill",
         "Differentiate flood fill and boundary fill",
@@ -430,15 +439,13 @@ def fills() -> Solution:
             embed(
                 "a 4-connected boundary fill (scanconv fill boundary --rows '#####/#...#/#####' "
                 "--seed 1 1)",
-                seed_fill_solution("boundary", (1, 1), rows=["#####", "#...#", "#####"]),
+                fill.seed_fill_solution("boundary", (1, 1), rows=["#####", "#...#", "#####"]),
             ),
         ),
     )
 
 
 def transformations() -> Solution:
-    from ..transform import transform_solution
-
     return answer(
         "transformations",
         "Explain 2D transformations in homogeneous coordinates",
@@ -455,15 +462,15 @@ def transformations() -> Solution:
             embed(
                 "a triangle rotated 90 degrees about (2, 1), then moved by (3, 0) (scanconv "
                 "transform 0 0 4 0 4 3 --rotate 90 --about 2 1 --translate 3 0)",
-                transform_solution([0, 0, 4, 0, 4, 3], "rotate 90 about 2 1, translate 3 0"),
+                transform.transform_solution(
+                    [0, 0, 4, 0, 4, 3], "rotate 90 about 2 1, translate 3 0"
+                ),
             ),
         ),
     )
 
 
 def anti_aliasing() -> Solution:
-    from ..antialias import wu_solution
-
     return answer(
         "anti-aliasing",
         "What is aliasing? Explain anti-aliasing techniques",
@@ -481,7 +488,7 @@ def anti_aliasing() -> Solution:
         examples=(
             embed(
                 "Wu's line (0, 0) to (8, 3) (scanconv line 0 0 8 3 --algo wu)",
-                wu_solution(0, 0, 8, 3),
+                antialias.wu_solution(0, 0, 8, 3),
             ),
         ),
     )
