@@ -93,20 +93,10 @@ _GREEK = {
             "pi rho varsigma sigma tau upsilon phi chi psi omega".split()
         )
     },
-    "varepsilon": "ε",
-    "epsilon": "ε",
-    "vartheta": "ϑ",
-    "varphi": "φ",
-    "Gamma": "Γ",
-    "Delta": "Δ",
-    "Theta": "Θ",
-    "Lambda": "Λ",
-    "Xi": "Ξ",
-    "Pi": "Π",
-    "Sigma": "Σ",
-    "Phi": "Φ",
-    "Psi": "Ψ",
-    "Omega": "Ω",
+    **dict(zip("varepsilon epsilon vartheta varphi".split(), "εεϑφ", strict=True)),
+    **dict(
+        zip("Gamma Delta Theta Lambda Xi Pi Sigma Phi Psi Omega".split(), "ΓΔΘΛΞΠΣΦΨΩ", strict=True)
+    ),
 }
 
 _ASCII = {
