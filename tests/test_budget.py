@@ -206,7 +206,6 @@ def test_the_same_request_is_accepted_in_csv_and_starts_at_once():
     assert r.code == 0 and r.out.startswith("{")
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.slow  # about a second of CPU
 def test_at_the_budget_is_accepted():
     check_matrix(256, 256, Format.rich)

@@ -98,7 +98,6 @@ def test_ellipse_loop_changes_region_one_only_on_an_equal_boundary(rx, ry):
 halves = st.fractions(min_value=-30, max_value=30, max_denominator=4)
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(halves, halves, halves, halves, st.sampled_from(sorted(ROUNDINGS)))
 def test_dda_rounding_changes_pixels_only_at_halves_or_negatives(x1, y1, x2, y2, rounding):
     base = list(lines.dda(x1, y1, x2, y2))

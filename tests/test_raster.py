@@ -27,6 +27,7 @@ from scanconv.algorithms import (
     raster,
     raster_conic,
 )  # the modules themselves: constants are patched
+from scanconv.algorithms.ellipses import quadrant_points, symmetric_pixels
 from scanconv.answers.circle import circle_solution
 from scanconv.answers.ellipse import ellipse_solution
 from scanconv.answers.line import line_solution
@@ -246,9 +247,16 @@ def test_floor_affine_fixed_point_at_its_limit(c, a, share, sign):
 @pytest.mark.parametrize("sign", [1, -1])
 def test_floor_affine_every_path(alpha, beta, n, path, sign):
     offset = 123
-    assert raster._affine_path(*_numerators(alpha, beta, sign, offset), n) == path
-    got = raster._floor_affine(alpha, beta, n, offset=offset, sign=sign)
-    assert got.tolist() == _expected(alpha, beta, n, offset, sign)
+    a, b, c = _numerators(alpha, beta, sign, offset)
+    assert raster._affine_path(a, b, c, n) == path
+    got = raster._floor_affine(alpha, beta, n, offset=offset, sign=sign).tolist()
+    # every value against the same floor in Python's integers (a hundred times faster than
+    # Fractions over these 100,000 values: issue 29), and that integer form against the
+    # Fraction definition at both ends and on each side of every block boundary
+    assert got == [(a + b * k) // c for k in range(n)]
+    seams = {j + d for j in range(0, n + 1, raster.BLOCK) for d in (-2, -1, 0, 1)}
+    for k in sorted(i for i in seams | {0, 1, n - 2, n - 1} if 0 <= i < n):
+        assert got[k] == offset + sign * math.floor(alpha + beta * k), k
 
 
 # --- circles ----------------------------------------------------------------------------------
@@ -303,9 +311,12 @@ def test_circle_rejects_bad_input():
 
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 def test_ellipse_every_small_pair_of_semi_axes():
+    # The step generator's quadrant and its images, as Solution.pixels() yields them
+    # (scanconv/answers/ellipse.py), without the worked answer that costs ten times the pixels
+    # on these small ellipses (issue 29); the property below compares the Solution itself.
     for rx in range(40):
         for ry in range(40):
-            expected = list(ellipse_solution(rx, ry, 2, -3).pixels())
+            expected = list(symmetric_pixels(quadrant_points(rx, ry), 2, -3))
             assert as_pixels(raster_conic.ellipse(rx, ry, 2, -3)) == expected, (rx, ry)
 
 
@@ -325,6 +336,14 @@ def test_ellipse_every_small_pair_of_semi_axes():
 def test_ellipse_matches_generator(rx, ry, xc, yc):
     got = as_pixels(raster_conic.ellipse(rx, ry, xc, yc))
     assert got == list(ellipse_solution(rx, ry, xc, yc).pixels())
+
+
+@pytest.mark.parametrize(("rx", "ry"), [(0, 0), (0, 5), (5, 0), (1, 10), (10, 1)])
+def test_ellipse_on_or_near_an_axis_matches_generator(rx, ry):
+    """The degenerate cases of the property above, traced (it is not: tracing its long walks
+    tripled their CPU), so that coverage sees the closed form's special cases."""
+    got = as_pixels(raster_conic.ellipse(rx, ry, 1, -1))
+    assert got == list(ellipse_solution(rx, ry, 1, -1).pixels())
 
 
 @settings(max_examples=60, deadline=None)

@@ -50,7 +50,6 @@ radicals = st.builds(Radical, small, small, small, small)
 size = st.fractions(min_value=Fraction(1, 5), max_value=30, max_denominator=5)
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @settings(max_examples=100, deadline=None)
 @given(radicals, radicals)
 def test_radicals_are_a_field(a, b):
