@@ -310,7 +310,6 @@ def _exact_levels(text: str, m: int, n: int, levels: int, domain, origin: str) -
     )
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.slow  # about a second of CPU
 def test_float_levels_equal_exact_levels_on_random_formulas():
     """Before the boundary check, 8 of these 320 formulas had a level off by one."""
@@ -364,6 +363,7 @@ LONG_POLYNOMIAL = "+".join(f"{i + 1}*t**{i}" for i in range(40))
 FLOAT_SAMPLES = 4_200
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.slow  # about a second of CPU
 def test_beyond_the_exact_budget_the_curve_is_computed_in_float64():
     fx, fy = compile_expr(LONG_POLYNOMIAL, ("t",)), compile_expr("t", ("t",))
