@@ -363,7 +363,6 @@ LONG_POLYNOMIAL = "+".join(f"{i + 1}*t**{i}" for i in range(40))
 FLOAT_SAMPLES = 4_200
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.slow  # about a second of CPU
 def test_beyond_the_exact_budget_the_curve_is_computed_in_float64():
     fx, fy = compile_expr(LONG_POLYNOMIAL, ("t",)), compile_expr("t", ("t",))

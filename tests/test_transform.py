@@ -108,7 +108,6 @@ def test_sin_and_cos_at_multiples_of_15_degrees_are_exact(k):
     assert math.isclose(float(s), math.sin(math.radians(15 * k)), abs_tol=1e-12)
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @settings(max_examples=100, deadline=None)
 @given(small, small, size, size, small, small, size, size)
 def test_the_window_corners_go_to_the_viewport_corners(wx, wy, ww, wh, vx, vy, vw, vh):
