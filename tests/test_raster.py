@@ -346,6 +346,7 @@ def test_ellipse_on_or_near_an_axis_matches_generator(rx, ry):
     assert got == list(ellipse_solution(rx, ry, 1, -1).pixels())
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @settings(max_examples=60, deadline=None)
 @given(rx=st.integers(1, 5_000), ry=st.integers(1, 25))
 def test_flat_ellipse_matches_generator(rx, ry):
