@@ -102,7 +102,7 @@ def knots_and_t(draw):
     return degree, u, t
 
 
-@settings(deadline=None, max_examples=150)
+@settings(deadline=None, max_examples=100)
 @given(knots_and_t())
 def test_every_value_equals_the_naive_recursion(case):
     degree, u, t = case
@@ -113,7 +113,7 @@ def test_every_value_equals_the_naive_recursion(case):
         assert value == cox_de_boor(u, i, d, t)
 
 
-@settings(deadline=None, max_examples=150)
+@settings(deadline=None, max_examples=100)
 @given(knots_and_t())
 def test_the_basis_sums_to_one_inside_the_domain(case):
     degree, u, t = case

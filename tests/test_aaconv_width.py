@@ -63,6 +63,7 @@ def test_codeshive_exercise_is_reproduced():
 TRIPLES = [(3, 4), (4, 3), (5, 12), (-8, 6), (6, -8), (0, 5), (-4, -3)]
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @settings(deadline=None, max_examples=60)
 @given(
     st.sampled_from(TRIPLES),

@@ -83,7 +83,7 @@ def test_rosetta_code_table_is_reproduced():
     assert ours == published
 
 
-@settings(deadline=None, max_examples=150)
+@settings(deadline=None, max_examples=100)
 @given(coords, coords, coords, coords)
 def test_coverage_ends_equal_the_pseudocode_transcribed(x1, y1, x2, y2):
     steps = list(wu_line(x1, y1, x2, y2, "coverage"))
@@ -108,7 +108,8 @@ def _covered(lo: Fraction, hi: Fraction, column: int) -> Fraction:
     return max(Fraction(0), min(hi, column + half) - max(lo, column - half))
 
 
-@settings(deadline=None, max_examples=200)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@settings(deadline=None, max_examples=100)
 @given(coords, coords, coords, coords)
 def test_each_columns_two_intensities_sum_to_its_coverage(x1, y1, x2, y2):
     steep = abs(y2 - y1) > abs(x2 - x1)

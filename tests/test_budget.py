@@ -355,19 +355,29 @@ def test_too_many_boundary_cells_keep_float_levels_and_say_so():
 LONG_POLYNOMIAL = "+".join(f"{i + 1}*t**{i}" for i in range(40))
 
 
+#: The fewest samples of LONG_POLYNOMIAL (size 239) and ``t`` (size 1) whose exact work,
+#: (samples + 1) x 240 evaluations, is beyond EXACT_WORK: one more than 4,165 (999,840 is within
+#: it). Just past the edge, not 10,000 or 20,000: the float64 values cost as many scalar
+#: evaluations as the exact work they replace, so every sample beyond the edge is CPU spent
+#: proving nothing more (issue 29: this test took half a minute of CPU with 10**4 and 2 x 10**4).
+FLOAT_SAMPLES = 4_200
+
+
 @pytest.mark.slow  # about a second of CPU
 def test_beyond_the_exact_budget_the_curve_is_computed_in_float64():
     fx, fy = compile_expr(LONG_POLYNOMIAL, ("t",)), compile_expr("t", ("t",))
-    assert exact_values(fx, fy, 0, 1, 100)
-    assert not exact_values(fx, fy, 0, 1, 10**5)
-    steps = list(parametric(fx, fy, 0, 1, 10**4))
+    assert exact_values(fx, fy, 0, 1, 4_165)  # the largest within the budget...
+    assert not exact_values(fx, fy, 0, 1, 4_166)  # ...and the next one beyond it
+    steps = list(parametric(fx, fy, 0, 1, FLOAT_SAMPLES))
     assert all(isinstance(s.extra[1], float) for s in steps[:5])
     exact = list(parametric(fx, fy, 0, 1, 100))  # within the budget: fractions
     assert isinstance(exact[1].extra[1], Fraction)
-    # the same points either way (t = k/100 is t = 100k/10**4)
-    assert [s.pixel for s in steps[::100]] == [s.pixel for s in exact]
-    r = run("parametric", "custom", "--x", LONG_POLYNOMIAL, "--y", "t", "-n", "20000", "-f", "json")
-    assert r.code == 0 and "would take" in r.out and "floating point" in r.out
+    # the same points either way (t = k/100 is t = 42k/4200)
+    assert [s.pixel for s in steps[:: FLOAT_SAMPLES // 100]] == [s.pixel for s in exact]
+    samples = str(FLOAT_SAMPLES)
+    r = run("parametric", "custom", "--x", LONG_POLYNOMIAL, "--y", "t", "-n", samples, "-f", "json")
+    assert r.code == 0 and "would take 1,008,240 evaluations" in r.out
+    assert "floating point" in r.out
 
 
 def test_a_path_certainly_too_long_is_refused_from_float_samples_at_once():

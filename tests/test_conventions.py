@@ -49,6 +49,7 @@ def test_circle_tie_changes_points_only_where_p_is_zero(r):
             assert step[first].p == keep[first].p == 0
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(st.integers(0, 500))
 def test_p0_five_quarters_decides_as_one_minus_r_with_strict_ties(r):
     a = list(circles.midpoint(r, p0="1-r"))
@@ -57,6 +58,7 @@ def test_p0_five_quarters_decides_as_one_minus_r_with_strict_ties(r):
     assert all(sb.p - sa.p == Fraction(1, 4) for sa, sb in zip(a, b, strict=True))
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(st.integers(0, 500))
 def test_update_changes_the_working_only(r):
     assert list(circles.midpoint(r, update="old")) == list(circles.midpoint(r, update="new"))
@@ -267,6 +269,7 @@ def test_start_changes_bresenham_pixels_only_where_a_tie_is_met(x1, y1, x2, y2):
         assert set(swap.pixels()) == set(given_walk.pixels())
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(halves, halves, halves, halves)
 def test_dda_start_changes_pixels_only_at_halves(x1, y1, x2, y2):
     given_walk = api.line(x1, y1, x2, y2, algo="dda", start="given")
@@ -304,11 +307,14 @@ def test_start_examples_by_hand():
 def test_ellipse_exact_quarters_meet_no_tie_on_small_ellipses():
     """Why the ellipse's tie knob matters only with p0 = rounded: with exact quarters no
     decision parameter of these ellipses is 0, so the two tie rules agree."""
+    # The quadrant's steps from the generator itself (the plotted pixels are their mirror
+    # images): the worked answers around them cost ten times as much (issue 29).
     for rx in range(1, 25):
         for ry in range(1, 25):
-            sol = api.ellipse(rx, ry)
-            assert all(s.p != 0 for s in sol.steps())
-            assert list(sol.pixels()) == list(api.ellipse(rx, ry, tie="keep").pixels())
+            step = list(ellipses.midpoint_ellipse(rx, ry))
+            assert all(s.p != 0 for s in step)
+            keep = ellipses.midpoint_ellipse(rx, ry, tie="keep")
+            assert [s.pixel for s in step] == [s.pixel for s in keep]
 
 
 def test_ellipse_rounded_p0_and_tie_by_hand():
@@ -330,6 +336,7 @@ def test_ellipse_rounded_p0_and_tie_by_hand():
     assert "= -146 -> -145 (rounded)" in text
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(st.integers(1, 30), st.integers(1, 30))
 def test_ellipse_tie_changes_the_walk_only_from_its_first_tie(rx, ry):
     step = list(api.ellipse(rx, ry, p0="rounded").steps())

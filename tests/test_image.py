@@ -81,15 +81,18 @@ def test_ramp_cli_csv_is_the_notes_matrix():
 def test_ramp_is_a_triangle_wave(m, n, levels):
     a = ramp(m, n, levels).astype(int)
     assert a.min() >= 0 and a.max() <= levels - 1
+    # walk from 0, turning around at 0 and L - 1 (independent of the modulo): walk[s] is the
+    # value after s steps, each cell's value that at s = i + j (one walk for the whole matrix,
+    # not one per cell: issue 29)
+    walk, v, d = [0], 0, 1
+    for _ in range(m + n - 2):
+        if not 0 <= v + d <= levels - 1:
+            d = -d
+        v += d
+        walk.append(v)
     for i in range(m):
         for j in range(n):
-            # walk i + j steps from 0, turning around at 0 and L - 1 (independent of the modulo)
-            v, d = 0, 1
-            for _ in range(i + j):
-                if not 0 <= v + d <= levels - 1:
-                    d = -d
-                v += d
-            assert a[i, j] == v
+            assert a[i, j] == walk[i + j]
     if n > 1:
         assert (np.abs(np.diff(a, axis=1)) == 1).all()
 
@@ -143,6 +146,7 @@ def test_level_matches_definition(q, v):
     assert q.level(v) == k
 
 
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(q=quantizers(), vs=st.lists(values, min_size=2, max_size=30))
 def test_level_is_monotonic(q, vs):
     vs = sorted(vs)
@@ -187,7 +191,7 @@ def test_two_bit_reconstruction_of_8_bit_inputs():
 # --- storage ----------------------------------------------------------------------------------
 
 
-@settings(max_examples=200)
+@settings(max_examples=100)
 @given(
     m=st.integers(1, 10**6),
     n=st.integers(1, 10**6),

@@ -50,7 +50,7 @@ radicals = st.builds(Radical, small, small, small, small)
 size = st.fractions(min_value=Fraction(1, 5), max_value=30, max_denominator=5)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(radicals, radicals)
 def test_radicals_are_a_field(a, b):
     assert (a + b) - b == a
@@ -87,7 +87,8 @@ _OPS = st.one_of(
 )
 
 
-@settings(max_examples=150, deadline=None)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@settings(max_examples=100, deadline=None)
 @given(st.lists(_OPS, min_size=1, max_size=5))
 def test_composing_with_the_inverse_gives_the_identity(ops):
     stages = parse_transforms(ops)
@@ -107,7 +108,7 @@ def test_sin_and_cos_at_multiples_of_15_degrees_are_exact(k):
     assert math.isclose(float(s), math.sin(math.radians(15 * k)), abs_tol=1e-12)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(small, small, size, size, small, small, size, size)
 def test_the_window_corners_go_to_the_viewport_corners(wx, wy, ww, wh, vx, vy, vw, vh):
     w, v = (wx, wy, wx + ww, wy + wh), (vx, vy, vx + vw, vy + vh)
