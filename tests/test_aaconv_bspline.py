@@ -102,6 +102,7 @@ def knots_and_t(draw):
     return degree, u, t
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @settings(deadline=None, max_examples=100)
 @given(knots_and_t())
 def test_every_value_equals_the_naive_recursion(case):
@@ -113,6 +114,7 @@ def test_every_value_equals_the_naive_recursion(case):
         assert value == cox_de_boor(u, i, d, t)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @settings(deadline=None, max_examples=100)
 @given(knots_and_t())
 def test_the_basis_sums_to_one_inside_the_domain(case):

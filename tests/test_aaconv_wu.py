@@ -83,6 +83,7 @@ def test_rosetta_code_table_is_reproduced():
     assert ours == published
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @settings(deadline=None, max_examples=100)
 @given(coords, coords, coords, coords)
 def test_coverage_ends_equal_the_pseudocode_transcribed(x1, y1, x2, y2):
@@ -108,6 +109,7 @@ def _covered(lo: Fraction, hi: Fraction, column: int) -> Fraction:
     return max(Fraction(0), min(hi, column + half) - max(lo, column - half))
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @settings(deadline=None, max_examples=100)
 @given(coords, coords, coords, coords)
@@ -120,6 +122,7 @@ def test_each_columns_two_intensities_sum_to_its_coverage(x1, y1, x2, y2):
         assert s.extra[4] + s.extra[5] == 1
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @settings(deadline=None, max_examples=100)
 @given(*(st.integers(-20, 20) for _ in range(4)))
 def test_full_ends_with_integer_points_are_wus_steps(x1, y1, x2, y2):

@@ -106,6 +106,7 @@ def touches_circle(p: Pixel, r: int, h: Fraction = Fraction(1)) -> bool:
 # --- octant walk ---------------------------------------------------------------------------
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize(("method", "rounding"), VARIANTS)
 @given(r=radius)
@@ -120,6 +121,7 @@ def test_octant_starts_at_top_and_is_an_8_connected_monotone_walk(method, roundi
     assert all(x <= y for x, y in pts[:-1]) and pts[-1][0] <= pts[-1][1] + 1
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize(("method", "rounding"), VARIANTS)
 @given(r=radius, xc=centre, yc=centre)
@@ -144,6 +146,7 @@ def test_the_whole_circle_is_closed_without_gaps(method, rounding):
         assert one_piece(pixel_list(method, r, rounding=rounding)), r
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize(("method", "rounding"), VARIANTS)
 @given(r=st.integers(min_value=0, max_value=3000))
@@ -158,6 +161,7 @@ def test_every_pixel_is_within_one_pixel_of_the_circle(method, rounding, r):
         assert touches_circle(p, r, h), p
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("method", ["midpoint", "bresenham", "polynomial"])
 @given(r=st.integers(min_value=0, max_value=3000))
@@ -219,6 +223,7 @@ def test_midpoint_equals_skimage_bresenham(r):
     assert set(pixel_list("midpoint", r)) == theirs
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_midpoint_decision_parameter_is_the_midpoint_residual():
     # p_k = f(x_k + 1, y_k - 1/2) - 1/4 with f = x² + y² - r² (Hearn & Baker's integer form)
     for r in range(0, 150):
@@ -236,6 +241,7 @@ def test_bresenham_d_is_the_sum_of_the_two_candidates_residuals():
             assert s.p == (x + 1) ** 2 * 2 + y * y + (y - 1) ** 2 - 2 * r * r
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_bresenham_d_is_twice_the_midpoint_p_plus_one():
     for r in range(0, 300):
         pairs = list(zip(bresenham(r), midpoint(r), strict=False))
@@ -274,6 +280,7 @@ def test_polynomial_rounds_the_true_square_root(r):
             check_polynomial_step(s, r, rounding)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @pytest.mark.parametrize("rounding", ["half-up", "trunc"])
 def test_polynomial_whole_octant(rounding):
@@ -292,6 +299,7 @@ def test_polynomial_whole_octant(rounding):
         assert sol.derived[1].value == x - 1  # the working names the last x
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(r=st.integers(min_value=1, max_value=3000))
 @settings(deadline=None, max_examples=50)
@@ -314,6 +322,7 @@ def test_trig_follows_cos_and_sin(r):
         assert s.pixel == point(s.k) and s.pixel[0] <= s.pixel[1]
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_trig_step_count_is_exact():
     for r in range(1, 20000):
         v = math.pi * r / 4
@@ -321,6 +330,7 @@ def test_trig_step_count_is_exact():
         assert trig_steps(r) == math.floor(v)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_symmetric_dda_is_the_exact_recurrence():
     for r in range(1, 70):
         n = max(k for k in range(1, 12) if 2 ** (k - 1) <= r)
@@ -446,6 +456,7 @@ def test_a_huge_radius_streams_its_table():
     ]
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_every_format_renders_a_circle_and_an_ellipse():
     for fmt in ("markdown", "plain", "latex", "csv", "json", "rich"):
         for args in (("circle", "4", "-m", "trig"), ("ellipse", "5", "3")):
@@ -455,6 +466,7 @@ def test_every_format_renders_a_circle_and_an_ellipse():
                 assert r.out.isascii()
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_real_process_error():
     r = run_process("circle", "-3")
     assert r.code == 2 and r.out == "" and "non-negative" in r.err
@@ -488,6 +500,7 @@ def readme_table() -> str:
     return "\n".join(lines)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_readme_method_table_is_the_codes_output():
     """The circle-methods table in docs/guide.md is this code's output (regenerate it with
     ``python -m tests.test_circles``)."""

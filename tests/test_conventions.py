@@ -37,6 +37,7 @@ def test_line_tie_changes_pixels_only_where_p_is_zero(x1, y1, x2, y2):
         assert step[-1].pixel == keep[-1].pixel  # both end on the end point
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @given(st.integers(0, 300))
 def test_circle_tie_changes_points_only_where_p_is_zero(r):
     for gen in (circles.midpoint, circles.bresenham, circles.general):
@@ -49,6 +50,7 @@ def test_circle_tie_changes_points_only_where_p_is_zero(r):
             assert step[first].p == keep[first].p == 0
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(st.integers(0, 500))
 def test_p0_five_quarters_decides_as_one_minus_r_with_strict_ties(r):
@@ -58,6 +60,7 @@ def test_p0_five_quarters_decides_as_one_minus_r_with_strict_ties(r):
     assert all(sb.p - sa.p == Fraction(1, 4) for sa, sb in zip(a, b, strict=True))
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(st.integers(0, 500))
 def test_update_changes_the_working_only(r):
@@ -68,6 +71,7 @@ def test_update_changes_the_working_only(r):
     assert [q.tex for q in new.derived] != [q.tex for q in old.derived]
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @given(st.integers(0, 300))
 def test_inclusive_loop_only_extends_the_strict_walk(r):
     for gen in (circles.midpoint, circles.general):
@@ -81,6 +85,7 @@ def test_inclusive_loop_only_extends_the_strict_walk(r):
     assert len(px) == len(set(px))
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @given(st.integers(0, 40), st.integers(0, 40))
 def test_ellipse_loop_changes_region_one_only_on_an_equal_boundary(rx, ry):
     strict = list(ellipses.midpoint_ellipse(rx, ry, "strict"))
@@ -98,6 +103,7 @@ def test_ellipse_loop_changes_region_one_only_on_an_equal_boundary(rx, ry):
 halves = st.fractions(min_value=-30, max_value=30, max_denominator=4)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @given(halves, halves, halves, halves, st.sampled_from(sorted(ROUNDINGS)))
 def test_dda_rounding_changes_pixels_only_at_halves_or_negatives(x1, y1, x2, y2, rounding):
     base = list(lines.dda(x1, y1, x2, y2))
@@ -142,6 +148,7 @@ def test_an_explicit_knob_overrides_the_preset():
     }
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_answers_state_their_conventions_in_every_format():
     for fmt in ("plain", "markdown", "latex", "json", "rich"):
         r = run("line", "2", "2", "10", "6", "--convention", "foley", "-f", fmt)
@@ -246,6 +253,7 @@ def _mirror(points, steep):
     return [(x, -y) if steep else (-x, y) for x, y in points]
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @given(coord, coord, coord, coord, st.sampled_from(["step", "keep"]))
 def test_start_given_walks_from_p1_as_the_mirrored_swap_walk(x1, y1, x2, y2, tie):
     """Walking from P1 with the major coordinate decreasing is the swap walk of the mirrored
@@ -261,6 +269,7 @@ def test_start_given_walks_from_p1_as_the_mirrored_swap_walk(x1, y1, x2, y2, tie
     assert given_walk == _mirror(mirrored, steep)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @given(coord, coord, coord, coord)
 def test_start_changes_bresenham_pixels_only_where_a_tie_is_met(x1, y1, x2, y2):
     swap = api.line(x1, y1, x2, y2, start="swap")
@@ -269,6 +278,7 @@ def test_start_changes_bresenham_pixels_only_where_a_tie_is_met(x1, y1, x2, y2):
         assert set(swap.pixels()) == set(given_walk.pixels())
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(halves, halves, halves, halves)
 def test_dda_start_changes_pixels_only_at_halves(x1, y1, x2, y2):
@@ -303,6 +313,7 @@ def test_start_examples_by_hand():
     assert "start = swap" in text
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 def test_ellipse_exact_quarters_meet_no_tie_on_small_ellipses():
     """Why the ellipse's tie knob matters only with p0 = rounded: with exact quarters no
@@ -336,6 +347,7 @@ def test_ellipse_rounded_p0_and_tie_by_hand():
     assert "= -146 -> -145 (rounded)" in text
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(st.integers(1, 30), st.integers(1, 30))
 def test_ellipse_tie_changes_the_walk_only_from_its_first_tie(rx, ry):

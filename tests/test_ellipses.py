@@ -56,6 +56,7 @@ def touches_ellipse(p: Pixel, rx: int, ry: int) -> bool:
     return f(*near) <= 0 <= f(*far)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @given(rx=axis, ry=axis)
 @settings(deadline=None)
 def test_quadrant_is_an_8_connected_walk_from_top_to_tip(rx, ry):
@@ -66,6 +67,7 @@ def test_quadrant_is_an_8_connected_walk_from_top_to_tip(rx, ry):
         assert (x1 - x0, y1 - y0) in ((1, 0), (1, -1), (0, -1))
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(rx=axis, ry=axis, xc=centre, yc=centre)
 @settings(deadline=None)
@@ -78,6 +80,7 @@ def test_pixels_are_symmetric_unique_and_in_the_box(rx, ry, xc, yc):
     assert (min(xs), min(ys), max(xs), max(ys)) == ellipse_solution(rx, ry, xc, yc).bbox
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(rx=axis, ry=axis)
 @settings(deadline=None)
@@ -87,6 +90,7 @@ def test_closed_outline_close_to_the_ideal_ellipse(rx, ry):
     assert all(touches_ellipse(p, rx, ry) for p in px)
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 @given(axes=flat)
 @settings(deadline=None, max_examples=40)
@@ -136,6 +140,7 @@ def test_hearn_and_baker_rx8_ry6_tables():
     ]
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_decision_parameters_are_the_midpoint_residuals():
     """p1_k = f(x_k + 1, y_k - 1/2) and p2_k = f(x_k + 1/2, y_k - 1), f = ry²x² + rx²y² - rx²ry²."""
     for rx in range(0, 25):
@@ -161,6 +166,7 @@ def test_equal_axes_give_the_midpoint_circle(r):
     assert set(pixel_list(r, r)) == set(circle_solution("midpoint", r).pixels())
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 def test_loosely_agrees_with_skimage_ellipse_perimeter():
     draw = pytest.importorskip("skimage.draw")
@@ -193,6 +199,7 @@ def test_degenerate_axes_are_segments():
     assert sorted(pixel_list(0, 2)) == [(0, y) for y in range(-2, 3)]
 
 
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 def test_large_axes_terminate_quickly_with_every_step_a_unit_move():
     for rx, ry in ((100000, 3), (3, 100000), (20000, 15000)):
