@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from scanconv.render.latex import _cell
-from tests.external import typeset
+from tests.external import pandoc, typeset
 from tests.helpers import run
 from tests.test_print import Visible
 
@@ -96,17 +96,16 @@ class _Elements(HTMLParser):
         self.urls += [v or "" for k, v in attrs if k in ("href", "src", "onerror", "onload")]
 
 
-def _pandoc_html(markdown: str, flavour: str) -> _Elements:
-    pypandoc = pytest.importorskip("pypandoc")
-    html = pypandoc.convert_text(markdown, "html", format=flavour)
+def _pandoc_html(scratch: Path, markdown: str, flavour: str) -> _Elements:
+    html = pandoc(scratch, markdown, flavour)
     parsed = _Elements()
     parsed.feed(html)
     return parsed
 
 
-def _assert_inert(markdown: str) -> None:
+def _assert_inert(scratch: Path, markdown: str) -> None:
     for flavour in ("gfm", "markdown"):
-        page = _pandoc_html(markdown, flavour)
+        page = _pandoc_html(scratch, markdown, flavour)
         bad = {"img", "script", "a", "link", "iframe", "style", "svg", "math", "object", "embed"}
         assert not bad & set(page.tags), (flavour, page.tags, markdown[:600])
         assert not any("javascript:" in u or "alert" in u for u in page.urls), (flavour, page.urls)
@@ -114,7 +113,7 @@ def _assert_inert(markdown: str) -> None:
 
 @pytest.mark.external
 def test_markdown_score_sheet_is_inert_through_pandoc(tmp_path: Path) -> None:
-    _assert_inert(_batch(_folder(tmp_path, *HTML_NAMES), "markdown"))
+    _assert_inert(tmp_path, _batch(_folder(tmp_path, *HTML_NAMES), "markdown"))
 
 
 @pytest.mark.external
@@ -123,7 +122,7 @@ def test_markdown_single_marking_is_inert_through_pandoc(tmp_path: Path, name: s
     folder = _folder(tmp_path, name)
     r = run("check", str(folder / name), "-f", "markdown", *QUESTION)
     assert r.code == 0, r.err
-    _assert_inert(r.out)
+    _assert_inert(tmp_path, r.out)
 
 
 @pytest.mark.external
@@ -135,7 +134,7 @@ def test_markdown_question_comment_is_inert_through_pandoc(tmp_path: Path) -> No
         "--samples", "2",
     )  # fmt: skip
     assert r.code == 0, r.err
-    _assert_inert(r.out)
+    _assert_inert(tmp_path, r.out)
 
 
 AUTOLINKS = (
@@ -154,19 +153,19 @@ def test_markdown_sheet_title_autolink_is_inert(tmp_path: Path, title: str) -> N
     for kind in ("key", "worksheet"):
         r = run("sheet", str(q), "-f", "markdown", f"--{kind}")
         assert r.code == 0, r.err
-        _assert_inert(r.out)
+        _assert_inert(tmp_path, r.out)
 
 
 @pytest.mark.external
 @pytest.mark.parametrize("title", AUTOLINKS[:1])
-def test_markdown_formula_comment_autolink_is_inert(title: str) -> None:
+def test_markdown_formula_comment_autolink_is_inert(tmp_path: Path, title: str) -> None:
     for argv in (
         ("sample", f"x + y # {title}", "--size", "3", "-L", "2"),
         ("parametric", "custom", "--x", f"t # {title}", "--y", "t", "--samples", "2"),
     ):
         r = run(*argv, "-f", "markdown")
         assert r.code == 0, r.err
-        _assert_inert(r.out)
+        _assert_inert(tmp_path, r.out)
 
 
 # --- D9: terminal escape sequences ----------------------------------------------------------

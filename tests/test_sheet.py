@@ -20,7 +20,7 @@ import pytest
 from scanconv.cli.sheet import QuestionError, answer_questions, read_questions
 from scanconv.render.sheet import md_text, sheet_document
 
-from .external import typeset
+from .external import pandoc, typeset
 from .helpers import assert_refused, run
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -322,10 +322,9 @@ def test_user_text_is_escaped_in_every_format(tmp_path: Path) -> None:
 
 @pytest.mark.external
 def test_markdown_through_pandoc_shows_user_text_literally(tmp_path: Path) -> None:
-    pypandoc = pytest.importorskip("pypandoc")
     path = _file(tmp_path, f"title: {HOSTILE}\n[2] line 2 2 10 6\n")
     for kind in ("--key", "--worksheet"):
-        html = pypandoc.convert_text(run("sheet", str(path), kind).out, "html", format="markdown")
+        html = pandoc(tmp_path, run("sheet", str(path), kind).out, "markdown")
         assert "<script>" not in html and "&lt;script&gt;alert(1)&lt;/script&gt;" in html
         assert html.count("<table") == 1
         body = html.split("<tbody>")[1].split("</tbody>")[0]
