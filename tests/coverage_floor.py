@@ -34,9 +34,7 @@ def report(data: dict, floor: float) -> tuple[str, bool]:
     (True, 'coverage: 90.00 % of 10 lines of scanconv (floor 90 %)')
     """
     summary = data["summary"]
-    covered, missing = summary["covered_lines"], summary["missing_lines"]
-    total = covered + missing
-    percent = 100.0 * covered / total if total else 100.0
+    total, percent = summary["covered_lines"] + summary["missing_lines"], _percent(summary)
     lines = [f"coverage: {percent:.2f} % of {total:,} lines of scanconv (floor {floor:g} %)"]
     files = data["files"]
     worst = sorted(
