@@ -14,13 +14,25 @@ pytestmark = pytest.mark.slow
 ROOT = Path(__file__).resolve().parent.parent
 
 
+#: What the inner pytest must not inherit: it is a run of its own, not one of this run's
+#: xdist workers (with ``PYTEST_XDIST_WORKER`` and ``SLIPCOVER_ENABLED`` SlipCover's plugin
+#: instrumented scanconv in it and wrote its coverage over this worker's file: 6 s of CPU a
+#: run, against 1 s now).
+_OUTER = ("PYTEST_", "SLIPCOVER_", "COV_CORE_", "HYPOTHESIS_")
+
+
 def _pytest(golden: Path, *flags: str) -> subprocess.CompletedProcess[str]:
+    env = {k: v for k, v in os.environ.items() if not k.startswith(_OUTER)}
+    # no plugin loaded from entry points (xdist, cov, benchmark, hypothesis's, SlipCover's):
+    # the golden test needs only tests/conftest.py, which imports hypothesis itself (and so
+    # not the ini file's ``--dist``, an option of xdist's)
+    env |= {"SCANCONV_GOLDEN_DIR": str(golden), "PYTEST_DISABLE_PLUGIN_AUTOLOAD": "1"}
     return subprocess.run(
-        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "--no-cov",
-         str(ROOT / "tests" / "test_golden.py"), *flags],
+        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
+         "-o", "addopts=--strict-markers", str(ROOT / "tests" / "test_golden.py"), *flags],
         capture_output=True,
         text=True,
-        env={**os.environ, "SCANCONV_GOLDEN_DIR": str(golden)},
+        env=env,
         cwd=ROOT,
         timeout=300,
     )  # fmt: skip
