@@ -120,6 +120,12 @@ def _complete_or_old(path: Path, kind: str) -> None:
         assert data.rstrip().endswith(b"]}"), data[-100:]  # the json object's end
 
 
+MOMENTS = 6
+"""How many moments of a run the spread test signals (each a process of about a second of
+CPU): SIGINT, SIGTERM, each twice or followed by the other, from start-up to the end (12
+moments before: the same kinds of signal at twice the density)."""
+
+
 def test_a_signal_at_any_moment_leaves_each_file_old_or_whole(tmp_path):
     """Figures are written first, then the answer: signals at moments spread over the run."""
     pytest.importorskip("PIL")
@@ -130,11 +136,11 @@ def test_a_signal_at_any_moment_leaves_each_file_old_or_whole(tmp_path):
     start = time.monotonic()
     subprocess.run([sys.executable, "-m", "scanconv", *args], check=True, capture_output=True)
     whole = time.monotonic() - start
-    for i in range(12):
+    for i in range(MOMENTS):
         for path in files.values():
             path.write_text(OLD)
         proc = _start(*args)
-        time.sleep(whole * i / 12)
+        time.sleep(whole * i / MOMENTS)
         proc.send_signal(signal.SIGTERM if i % 2 else signal.SIGINT)
         if i % 3 == 0:
             proc.send_signal(signal.SIGTERM)  # twice in quick succession
