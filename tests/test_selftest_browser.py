@@ -19,12 +19,9 @@ import pytest
 from scanconv.algorithms.conventions import ROUNDINGS
 
 from .helpers import run
-from .test_browser import Opened  # the page opener with its request and console logs
+from .test_browser import Opened, give_back, take_tab  # pages with their logs; tabs
 
 pytestmark = pytest.mark.external  # chromium (external tests are slow too: conftest)
-
-LOCAL = ("file:", "data:", "blob:", "about:")
-
 
 CELL = """([x, y]) => {
   // the centre of the grid's cell (x, y), found from two drawn pixels (y up or down)
@@ -72,11 +69,6 @@ class Quiz(Opened):
 
     def score(self) -> str:
         return self.page.inner_text(".sc-tscore")
-
-    def close(self) -> None:
-        self.page.close()
-        assert [u for u in self.requests if not u.startswith(LOCAL)] == []
-        assert self.errors == []
 
 
 @pytest.fixture
@@ -282,12 +274,12 @@ def test_a_page_without_a_step_table_or_rule_has_no_button(browser, tmp_path):
     ):
         target = tmp_path / f"plain{i}.html"
         assert run(*argv, "-o", str(target)).code == 0
-        page = browser.new_page()
+        page = take_tab(browser)
         page.goto(target.as_uri())
         page.wait_for_selector("section.scanconv[data-ready]")
         assert page.locator("[data-selftest]").count() == 0
         assert page.get_by_role("button", name="Test yourself").count() == 0
-        page.close()
+        give_back(page)
 
 
 def test_the_mode_fits_a_phone(quiz):
@@ -339,9 +331,13 @@ def test_two_notebook_answers_test_apart(browser, tmp_path):
         + "</body></html>",
         encoding="utf-8",
     )
-    page = browser.new_page()
+    page = take_tab(browser)
     errors: list[str] = []
-    page.on("pageerror", lambda e: errors.append(str(e)))
+
+    def error(e: Any) -> None:
+        errors.append(str(e))
+
+    page.on("pageerror", error)
     page.goto(target.as_uri())
     page.wait_for_selector("section.scanconv[data-st-ready]")
     line, circle = page.locator("section.scanconv").all()
@@ -360,5 +356,6 @@ def test_two_notebook_answers_test_apart(browser, tmp_path):
     circle.locator("button[data-act=reset]").click()
     page.keyboard.press("ArrowRight")  # the other answer still steps
     assert circle.get_attribute("data-pos") == "1"
-    page.close()
+    page.remove_listener("pageerror", error)
+    give_back(page)
     assert errors == []
