@@ -11,7 +11,6 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from scipy.interpolate import BSpline
 
 from scanconv.algorithms.bezier import bernstein, bezier, de_casteljau
 from scanconv.algorithms.bspline import basis, bspline, knot_vector, span
@@ -213,6 +212,10 @@ def test_clamped_bspline_without_inner_knots_is_the_bezier_curve():
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 def test_bspline_agrees_with_scipy_on_random_inputs():
+    # imported here, not with the module: a second of CPU each pytest process would pay
+    # collecting the file (every xdist worker does), for this one test
+    from scipy import interpolate
+
     rng = random.Random(20240604)
     for _ in range(200):
         n = rng.randint(1, 9)
@@ -238,7 +241,7 @@ def test_bspline_agrees_with_scipy_on_random_inputs():
             for _ in range(8)
         ]
         ts.append(knots[n + 1])
-        ref = BSpline(
+        ref = interpolate.BSpline(
             np.array([float(u) for u in knots]),
             np.array([[float(x), float(y)] for x, y in pts]),
             p,
