@@ -4,9 +4,9 @@ Debian's headless Chromium through Playwright (the session's ``browser``: tests/
 
 Questions typed into the box (a line, a circle, an ellipse, a Bezier curve, a clipping and a
 fill) give the very JSON the command line gives (``--format json``); a form gives the JSON of
-the question it stands for; the shared link reopens the same answer in a new page; the page
-fits a 390 px phone screen. Every page routes each request: one outside the site's origin is
-aborted and recorded, and none may be.
+the question it stands for; a shared link opens a new page at the same answer (the module's
+page is opened at one); the page fits a 390 px phone screen. Every page routes each request:
+one outside the site's origin is aborted and recorded, and none may be.
 
 The build needs the Pyodide runtime: from the cache (``~/.cache/scanconv``) or, the first time,
 from the npm registry; without either the tests skip and say why.
@@ -17,6 +17,7 @@ from __future__ import annotations
 import functools
 import shlex
 import threading
+import urllib.parse
 from collections.abc import Iterator
 from http.server import SimpleHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
@@ -86,6 +87,7 @@ class Site:
         self.requests: list[str] = []
         self.outside: list[str] = []
         self.errors: list[str] = []
+        self.first: tuple[str, str, str | None] = ("", "", None)
         self.page.route("**/*", self._route)
         self.page.on("request", lambda r: self.requests.append(r.url))
         self.page.on("pageerror", lambda e: self.errors.append(str(e)))
@@ -128,10 +130,27 @@ class Site:
         assert self.errors == []
 
 
+SHARED = "bezier 0 0 1 2 3 3 4 0 --at 0.5"
+"""The question of the shared link the module's page is opened at."""
+
+
+def _link(question: str) -> str:
+    """The page's link to ``question`` (``#q=`` and the question as encodeURIComponent has it)."""
+    return "#q=" + urllib.parse.quote(question, safe="!~*'()")
+
+
 @pytest.fixture(scope="module")
 def page(browser: Any, origin: str) -> Iterator[Site]:
-    """One page for the module's questions (one cold start of Pyodide)."""
-    opened = Site(browser, origin)
+    """One page for the module's questions (one cold start of Pyodide; a second page for the
+    shared link cost another), opened as a shared link is: at :data:`SHARED`'s link, whose
+    answer it shows first (kept in ``first``: the question box, the JSON, the link shown)."""
+    opened = Site(browser, origin, _link(SHARED))
+    opened.wait(1)
+    opened.first = (
+        opened.page.input_value("#q"),
+        opened.shown(),
+        opened.page.get_attribute("#share", "href"),
+    )
     yield opened
     opened.close()
 
@@ -191,22 +210,21 @@ def test_the_exam_book_is_browsable(browser: Any, origin: str, page: Site) -> No
         book.close()
 
 
-def test_the_shared_link_reopens_the_same_answer(browser: Any, origin: str, page: Site) -> None:
-    question = "bezier 0 0 1 2 3 3 4 0 --at 0.5"
-    expected = page.ask(question)
+def test_the_shared_link_reopens_the_same_answer(page: Site) -> None:
+    """The link the page gives for a question, opened in a new page, shows the same answer:
+    the module's page was opened at that link (``page``), before any question was typed."""
+    expected = page.ask(SHARED)
     link = page.page.get_attribute("#share", "href")
-    assert link is not None and link.startswith("#q=")
+    assert link == _link(SHARED)
     assert page.page.evaluate("location.hash") == link
-    again = Site(browser, origin, link, width=390)
+    assert page.first == (SHARED, expected, link)
+    assert expected == _cli_json(SHARED)
+    # a phone's screen: the page itself never scrolls sideways
+    page.page.set_viewport_size({"width": 390, "height": 900})
     try:
-        again.wait(1)
-        assert again.page.input_value("#q") == question
-        assert again.shown() == expected == _cli_json(question)
-        # a phone's screen: the page itself never scrolls sideways
-        width = again.page.evaluate("document.documentElement.scrollWidth")
-        assert width <= 390
+        assert page.page.evaluate("document.documentElement.scrollWidth") <= 390
     finally:
-        again.close()
+        page.page.set_viewport_size({"width": 1280, "height": 900})
 
 
 def test_a_long_question_can_be_stopped_and_the_page_answers_again(page: Site) -> None:
