@@ -4,7 +4,7 @@ An answer (a :class:`~scanconv.core.records.Solution`) becomes a :class:`Documen
 of typed blocks in reading order (:mod:`.blocks`): :class:`Title`, :class:`Given`,
 :class:`Working` (derived quantities with their working, as TeX math), :class:`Notes` (prose
 with its math as math), :class:`StepTable` (columns, a fresh row iterator, its regions and
-layout), :class:`Table`, :class:`Pixels` (with symmetry, numbering, marks and the ideal
+layout), :class:`Table`, :class:`Pseudocode` (a numbered listing, shown as code), :class:`Pixels` (with symmetry, numbering, marks and the ideal
 primitive) and :class:`Drawing`; in a document of many answers (a sheet), a
 :class:`Question` (its number, marks, wording and command) heads each answer. :func:`document` builds it (:mod:`.build`, the one place
 that reads a solution's structure); each format in :mod:`scanconv.render` is one mapping from
@@ -24,6 +24,7 @@ from .blocks import (
     Notes,
     Pixels,
     Prose,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -40,6 +41,7 @@ __all__ = [
     "Notes",
     "Pixels",
     "Prose",
+    "Pseudocode",
     "Question",
     "StepTable",
     "Table",

@@ -141,6 +141,25 @@ class Table(NamedTuple):
     """Its rows hold construction points to draw over the grid (de Casteljau's levels)."""
 
 
+class Pseudocode(NamedTuple):
+    """A pseudocode listing (``--algorithm``): code, not a table (no stepper, no blanks, no
+    marks). Each format numbers the lines and keeps their indentation."""
+
+    title: str
+    lines: tuple[str, ...]
+    """Plain ASCII lines; leading spaces are the indentation."""
+
+    def numbered(self) -> list[str]:
+        """The lines numbered from 1 as every format shows them: the numbers right-aligned,
+        two spaces, then the line with its indentation.
+
+        >>> Pseudocode("t", ("a",) * 9 + ("  b",)).numbered()[-2:]
+        [' 9  a', '10    b']
+        """
+        width = len(str(len(self.lines)))
+        return [f"{n:>{width}}  {line}" for n, line in enumerate(self.lines, 1)]
+
+
 class Pixels(NamedTuple):
     """The plotted pixels, with what the grid needs to draw, number and mark them."""
 
@@ -179,7 +198,9 @@ class Drawing(NamedTuple):
     figure: Figure
 
 
-Block = Question | Title | Given | Working | Notes | StepTable | Table | Pixels | Drawing
+Block = (
+    Question | Title | Given | Working | Notes | StepTable | Table | Pseudocode | Pixels | Drawing
+)
 """Any block of a document."""
 
 

@@ -12,6 +12,11 @@ columns ``x`` and ``y`` (``plot_x`` and ``plot_y`` next to the algorithm's own c
 Steps carry ``k`` and ``pixel`` always, ``p`` and ``decision`` where the algorithm has them,
 and the algorithm's own columns under their own keys. Integers are JSON integers, other
 exact values JSON numbers. Both formats are written as they are produced.
+
+Further tables are JSON's ``tables`` (CSV writes the first only when there is no step
+table); pseudocode (``--algorithm``) is JSON's ``pseudocode``, ``[{"title": ..., "lines":
+[...]}]``, each line as written (its leading spaces the indentation, no numbers). CSV leaves
+it out: it is no table.
 """
 
 from __future__ import annotations
@@ -24,7 +29,17 @@ from itertools import chain, islice
 
 from ..core.records import Solution
 from ..core.working import json_visible
-from ..document import Document, Given, Notes, Pixels, StepTable, Table, Working, as_document
+from ..document import (
+    Document,
+    Given,
+    Notes,
+    Pixels,
+    Pseudocode,
+    StepTable,
+    Table,
+    Working,
+    as_document,
+)
 from . import Options
 from .cells import json_value, segments_unicode
 
@@ -171,6 +186,7 @@ def render_json(answer: Solution | Document, options: Options | None = None) -> 
             first = False
         yield "]"
     yield from _tables_json(doc.every(Table))
+    yield from _code_json(doc.every(Pseudocode))
     yield "}\n"
 
 
@@ -215,3 +231,15 @@ def _tables_json(tables: list[Table]) -> Iterator[str]:
             sep = ", "
         yield "]}"
     yield "]"
+
+
+def _code_json(listings: list[Pseudocode]) -> Iterator[str]:
+    """The ``pseudocode`` field: each listing's title and its lines, unnumbered.
+
+    >>> print("".join(_code_json([Pseudocode("t", ("a", "  b"))])))
+    ,
+     "pseudocode": [{"title": "t", "lines": ["a", "  b"]}]
+    """
+    if listings:
+        items = [{"title": c.title, "lines": list(c.lines)} for c in listings]
+        yield ',\n "pseudocode": ' + json_visible(json.dumps(items, ensure_ascii=False))

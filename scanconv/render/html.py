@@ -61,6 +61,7 @@ from ..document import (
     Given,
     Notes,
     Pixels,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -295,6 +296,16 @@ def _further_table(block: Table, page: _Page) -> str:
     return _table(block.title, block.columns, rows, page.options.exact, positions, None, page.at)
 
 
+def _code(block: Pseudocode, page: _Page) -> str:
+    """The listing: its title, then the numbered lines in a ``<pre>``, escaped.
+
+    >>> _code(Pseudocode("a<b", ("x", "  y & z")), None)  # type: ignore[arg-type]
+    '<h3>a&lt;b</h3><pre class="sc-code"><code>1  x\\n2    y &amp; z</code></pre>'
+    """
+    lines = "\n".join(esc(line) for line in block.numbered())
+    return f'<h3>{esc(block.title)}</h3><pre class="sc-code"><code>{lines}</code></pre>'
+
+
 def _pixels(block: Pixels, page: _Page) -> str:
     st = page.st
     if st is None:
@@ -332,6 +343,7 @@ HTML: dict[type, Callable[[Any, _Page], str]] = {
     Notes: _notes,
     StepTable: _step_table,
     Table: _further_table,
+    Pseudocode: _code,
     Pixels: _pixels,
     Drawing: _nothing,  # beside the stepper or under the answer (_figures)
 }

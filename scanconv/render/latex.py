@@ -28,13 +28,14 @@ from typing import Any
 
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
-from ..core.working import tex_text
+from ..core.working import ascii_text, tex_text
 from ..document import (
     Document,
     Drawing,
     Given,
     Notes,
     Pixels,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -430,6 +431,32 @@ def _table(block: Table, options: Options, doc: Document) -> Iterator[str]:
     yield from _tables(block.title, block.columns, partial(table_rows, block, options.exact))
 
 
+def _code(block: Pseudocode, options: Options, doc: Document) -> Iterator[str]:
+    r"""The listing: its heading kept with it, the numbered lines in ``verbatim`` in a
+    minipage (never split across a page), set small enough to fit the text width.
+
+    >>> print("".join(_code(Pseudocode("t", ("a", r"  b \end{verbatim}")), Options(), None)))
+    \scneed{71pt}\paragraph{t}\mbox{}\\[1ex]
+    <BLANKLINE>
+    \noindent\begin{minipage}{\linewidth}
+    \begin{verbatim}
+    1  a
+    2    b \end {verbatim}
+    \end{verbatim}
+    \end{minipage}
+    <BLANKLINE>
+    """
+    lines = [_VERBATIM_END.sub(r"\\end {verbatim}", ascii_text(x)) for x in block.numbered()]
+    yield _heading(block.title, len(lines))
+    yield from _verbatim(lines, keys=False)
+    yield "\n"
+
+
+_VERBATIM_END = re.compile(r"\\end\s*\{verbatim\}")
+"""What would end a ``verbatim`` environment early (a listing's lines are the builder's
+ASCII, so never, but the environment is only safe if it cannot)."""
+
+
 def _pixels(block: Pixels, options: Options, doc: Document) -> Iterator[str | Notice]:
     """The pixel list, then the grid drawn with TikZ (:mod:`scanconv.render.tikz`); a grid
     too large to draw stays a typewriter picture, or is left out with a notice saying why."""
@@ -471,16 +498,18 @@ LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = 
     Notes: _notes,
     StepTable: _step_table,
     Table: _table,
+    Pseudocode: _code,
     Pixels: _pixels,
     Drawing: _drawing,
 }
 """The ``latex`` format: one handler per block type."""
 
 
-def _verbatim(lines: Sequence[str]) -> Iterator[str]:
+def _verbatim(lines: Sequence[str], *, keys: bool = True) -> Iterator[str]:
     """A typewriter picture in a minipage (never split across a page), set small enough to
-    fit the text width."""
-    lines = [part for line in lines for part in _wrap_key(line)]
+    fit the text width; ``keys``: a figure's long key lines wrapped (:func:`_wrap_key`)."""
+    if keys:
+        lines = [part for line in lines for part in _wrap_key(line)]
     if lines:
         size = grid_size(lines)
         yield "\n\\noindent\\begin{minipage}{\\linewidth}\n" + (f"{size}\n" if size else "")

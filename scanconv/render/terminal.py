@@ -36,6 +36,7 @@ from ..document import (
     Given,
     Notes,
     Pixels,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -193,6 +194,24 @@ def _table(block: Table, options: Options, width: int, drawn: list[list[str]]) -
     yield from _tables(block.title, block.columns, table_rows(block, options.exact), width)
 
 
+def _code(block: Pseudocode, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
+    """The title, then the numbered lines (numbers dim), each indented as written; a line
+    too long for ``width`` goes on under its own indentation, four spaces further in."""
+    for line in wrap_text(visible(block.title) + ":", width, "  "):
+        yield Text(line, style="bold")
+    numbers = len(str(len(block.lines)))
+    for line in block.numbered():
+        number, body = line[: numbers + 2], visible(line[numbers + 2 :])
+        code = body.lstrip(" ")
+        first = "  " + number + body[: len(body) - len(code)]
+        for i, part in enumerate(wrap_text(code, width, " " * (len(first) + 4), first)):
+            text = Text(part)
+            if i == 0:
+                text.stylize("dim", 0, numbers + 2)
+            yield text
+    yield Text("")
+
+
 def _pixels(block: Pixels, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
     """The pixel list, then the grid (into ``drawn``) fitted to ``width`` or left out with a
     notice saying how to see it."""
@@ -237,6 +256,7 @@ RICH: dict[type, Callable[[Any, Options, int, list[list[str]]], Iterator[Any]]] 
     Notes: _notes,
     StepTable: _step_table,
     Table: _table,
+    Pseudocode: _code,
     Pixels: _pixels,
     Drawing: _drawing,
 }

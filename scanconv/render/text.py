@@ -26,6 +26,7 @@ from ..document import (
     Notes,
     Pixels,
     Prose,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -419,6 +420,27 @@ def _pixels(markdown: bool) -> Handler:
     return handle
 
 
+def _md_code(block: Pseudocode, options: Options, drawn: list[str]) -> Iterator[str]:
+    """The title, then the numbered lines in a fenced ``text`` code block (its fence longer
+    than any run of backticks in the lines)."""
+    import re
+
+    lines = [visible(line) for line in block.numbered()]
+    runs = [len(r) for line in lines for r in re.findall(r"`+", line)]
+    fence = "`" * max(3, max(runs, default=0) + 1)
+    yield f"**{md_text(block.title)}:**\n\n{fence}text\n"
+    for line in lines:
+        yield line + "\n"
+    yield f"{fence}\n\n"
+
+
+def _plain_code(block: Pseudocode, options: Options, drawn: list[str]) -> Iterator[str]:
+    yield f"{ascii_text(block.title)}:\n"
+    for line in block.numbered():
+        yield f"  {ascii_text(line)}\n"
+    yield "\n"
+
+
 def _drawing(block: Drawing, options: Options, drawn: list[str]) -> Iterator[str]:
     if options.grid:
         lines = figure_text(block.figure, options.origin)
@@ -436,6 +458,7 @@ MARKDOWN: dict[type, Handler] = {
     Notes: _md_notes,
     StepTable: _step_table(True),
     Table: _table(True),
+    Pseudocode: _md_code,
     Pixels: _pixels(True),
     Drawing: _drawing,
 }
@@ -449,6 +472,7 @@ PLAIN: dict[type, Handler] = {
     Notes: _plain_notes,
     StepTable: _step_table(False),
     Table: _table(False),
+    Pseudocode: _plain_code,
     Pixels: _pixels(False),
     Drawing: _drawing,
 }
