@@ -432,29 +432,42 @@ def _table(block: Table, options: Options, doc: Document) -> Iterator[str]:
 
 
 def _code(block: Pseudocode, options: Options, doc: Document) -> Iterator[str]:
-    r"""The listing: its heading kept with it, the numbered lines in ``verbatim`` in a
-    minipage (never split across a page), set small enough to fit the text width.
+    r"""The listing: its heading kept with it, the numbered lines in typewriter type in a
+    minipage (never split across a page), each character as it is (:func:`tt_text`), set
+    small enough to fit the text width.
 
-    >>> print("".join(_code(Pseudocode("t", ("a", r"  b \end{verbatim}")), Options(), None)))
+    >>> print("".join(_code(Pseudocode("t", ("a", "  b^2")), Options(), None)), end="")
     \scneed{71pt}\paragraph{t}\mbox{}\\[1ex]
     <BLANKLINE>
-    \noindent\begin{minipage}{\linewidth}
-    \begin{verbatim}
-    1  a
-    2    b \end {verbatim}
-    \end{verbatim}
+    \noindent\begin{minipage}{\linewidth}\ttfamily
+    \mbox{}1~~a\\
+    \mbox{}2~~~~b{\char94}2
     \end{minipage}
     <BLANKLINE>
     """
-    lines = [_VERBATIM_END.sub(r"\\end {verbatim}", ascii_text(x)) for x in block.numbered()]
+    lines = block.numbered()
     yield _heading(block.title, len(lines))
-    yield from _verbatim(lines, keys=False)
-    yield "\n"
+    yield "\n\\noindent\\begin{minipage}{\\linewidth}" + grid_size(lines) + "\\ttfamily\n"
+    yield "\\\\\n".join("\\mbox{}" + tt_text(line) for line in lines)
+    yield "\n\\end{minipage}\n\n"
 
 
-_VERBATIM_END = re.compile(r"\\end\s*\{verbatim\}")
-"""What would end a ``verbatim`` environment early (a listing's lines are the builder's
-ASCII, so never, but the environment is only safe if it cannot)."""
+_TT_SPECIAL = frozenset("\\{}$&#^_%~<>|\"'`-")
+
+
+def tt_text(line: str) -> str:
+    r"""A line of code in typewriter type, shown character for character: ASCII (anything
+    else transliterated, :func:`~scanconv.core.working.ascii_text`), every character TeX or
+    the OT1 encoding would read otherwise set as the typewriter font's own glyph
+    (``\char``), every space a fixed space that does not collapse or break.
+
+    >>> print(tt_text(r"  if p <= 0: x_k = {a}\ % 2^n"))
+    ~~if~p~{\char60}=~0:~x{\char95}k~=~{\char123}a{\char125}{\char92}~{\char37}~2{\char94}n
+    """
+    return "".join(
+        f"{{\\char{ord(c)}}}" if c in _TT_SPECIAL else "~" if c == " " else c
+        for c in ascii_text(line)
+    )
 
 
 def _pixels(block: Pixels, options: Options, doc: Document) -> Iterator[str | Notice]:
@@ -505,11 +518,10 @@ LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = 
 """The ``latex`` format: one handler per block type."""
 
 
-def _verbatim(lines: Sequence[str], *, keys: bool = True) -> Iterator[str]:
+def _verbatim(lines: Sequence[str]) -> Iterator[str]:
     """A typewriter picture in a minipage (never split across a page), set small enough to
-    fit the text width; ``keys``: a figure's long key lines wrapped (:func:`_wrap_key`)."""
-    if keys:
-        lines = [part for line in lines for part in _wrap_key(line)]
+    fit the text width."""
+    lines = [part for line in lines for part in _wrap_key(line)]
     if lines:
         size = grid_size(lines)
         yield "\n\\noindent\\begin{minipage}{\\linewidth}\n" + (f"{size}\n" if size else "")
