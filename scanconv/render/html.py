@@ -297,13 +297,15 @@ def _further_table(block: Table, page: _Page) -> str:
 
 
 def _code(block: Pseudocode, page: _Page) -> str:
-    """The listing: its title, then the numbered lines in a ``<pre>``, escaped.
+    """The listing: its title, then the numbered lines in a ``<pre>``, escaped, in a box that
+    scrolls sideways on a narrow screen (as a table's does).
 
     >>> _code(Pseudocode("a<b", ("x", "  y & z")), None)  # type: ignore[arg-type]
-    '<h3>a&lt;b</h3><pre class="sc-code"><code>1  x\\n2    y &amp; z</code></pre>'
+    '<h3>a&lt;b</h3><div class="sc-tablebox"><pre class="sc-code"><code>1  x\\n2    y &amp; z</code></pre></div>'
     """
     lines = "\n".join(esc(line) for line in block.numbered())
-    return f'<h3>{esc(block.title)}</h3><pre class="sc-code"><code>{lines}</code></pre>'
+    code = f'<pre class="sc-code"><code>{lines}</code></pre>'
+    return f'<h3>{esc(block.title)}</h3><div class="sc-tablebox">{code}</div>'
 
 
 def _pixels(block: Pixels, page: _Page) -> str:
