@@ -469,21 +469,24 @@ def _room(chars: int) -> int:
 def json_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str]:
-    """One JSON object: the sheet's title, kind and total marks, and its questions (each
-    key's answer through the ``json`` mapping)."""
+    """One JSON object: the sheet's title, kind and total marks, and its questions: each
+    question's :class:`~scanconv.document.Question` block (with its line in the file, its
+    section and its wording as :func:`wording` gives it) and the key's answer through the
+    ``json`` format."""
     questions = []
     for a in answered:
         q = a.question
         with _Guard(sheet, q):
+            head = question_block(a, key=kind == "key")
             entry: dict[str, object] = {
-                "number": q.number,
+                "number": head.number,
                 "line": q.line,
-                "marks": q.marks,
+                "marks": head.marks,
                 "section": q.section or None,
                 "question": wording(a),
             }
-            if kind == "key":
-                entry["command"] = q.command
+            if head.command:
+                entry["command"] = head.command
                 entry["answer"] = json.loads("".join(data.render_json(a.solution)))
             else:
                 entry["given"] = [g.text for g in given_of(a)]
