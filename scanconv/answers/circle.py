@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..algorithms.circles import (
     ALIASES,
@@ -226,7 +226,7 @@ def circle_solution(
         "once, the first time it is plotted.",
     )
     derived, code = _theory(method, ir, knobs, derived, derive, pseudocode)
-    data: dict = {"rounding": rounding} if method in FLOAT_METHODS else {}
+    data: dict[str, Any] = {"rounding": rounding} if method in FLOAT_METHODS else {}
     if annotate:
         notes = (*notes, convention_note("circle", convention, knobs))
         erratum = circle_errata(method, ir)

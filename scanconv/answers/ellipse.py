@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from fractions import Fraction
 from itertools import dropwhile, takewhile
-from typing import TYPE_CHECKING, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..algorithms.conventions import convention_note, resolve
 from ..algorithms.ellipses import (
@@ -69,7 +69,7 @@ class _Ellipse(NamedTuple):
     y0: int
 
 
-def _checked(rx: Number, ry: Number, xc: Number, yc: Number, knobs: dict) -> _Ellipse:
+def _checked(rx: Number, ry: Number, xc: Number, yc: Number, knobs: dict[str, str]) -> _Ellipse:
     """The question with its numbers checked, and the end of region 1."""
     irx = check_integer(rx, "rx", negative=False, param="rx")
     iry = check_integer(ry, "ry", negative=False, param="ry")
@@ -177,10 +177,10 @@ def _tables(
     get1 = step_getter(_region_columns("p1"), _EXTRA)
     get2 = step_getter(_region_columns("p2"), _EXTRA)
 
-    def region1() -> Iterator[tuple]:
+    def region1() -> Iterator[tuple[Any, ...]]:
         return (get1(s) for s in takewhile(lambda s: s.extra[0] == 1, steps()))
 
-    def region2() -> Iterator[tuple]:
+    def region2() -> Iterator[tuple[Any, ...]]:
         return (get2(s) for s in dropwhile(lambda s: s.extra[0] == 1, steps()))
 
     return (

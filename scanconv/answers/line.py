@@ -181,7 +181,7 @@ def line_solution(
                 "derive" if derive else "pseudocode",
             )
         return antialias_wu.wu_solution(x1, y1, x2, y2, ends=knobs["ends"])
-    sol = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)
+    sol: Solution = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)
     if annotate:
         points = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
         extra = [convention_note("line", convention, knobs)]

@@ -26,6 +26,7 @@ import io
 import json
 from collections.abc import Iterator
 from itertools import chain, islice
+from typing import Any
 
 from ..core.records import Solution
 from ..core.working import json_visible
@@ -116,12 +117,12 @@ _PLAIN = {int, str}
 """Cell types that csv and json write as they are (no conversion, see :func:`_csv_cell`)."""
 
 
-def _plain(rows: list[tuple]) -> bool:
+def _plain(rows: list[tuple[Any, ...]]) -> bool:
     """Whether every cell of ``rows`` is an ``int`` or a ``str`` (not a bool, not an enum)."""
     return {*map(type, chain.from_iterable(rows))} <= _PLAIN
 
 
-def _plain_csv(rows: list[tuple]) -> str | None:
+def _plain_csv(rows: list[tuple[Any, ...]]) -> str | None:
     r"""The text ``csv.writer`` writes for ``rows`` (equal lengths >= 2, int and str cells, no
     text that needs quoting), formatted at once; ``None`` otherwise.
 

@@ -56,6 +56,7 @@ from ..core import lazy
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution, step_getter
 from ..document import (
+    Contents,
     Document,
     Drawing,
     Given,
@@ -337,7 +338,23 @@ def question_html(block: Question, page: _Page | None = None) -> str:
     return out
 
 
+def contents_html(block: Contents, page: _Page | None = None) -> str:
+    """The contents as a navigation list: each section, its questions numbered under it,
+    each linked to its question's section (id ``q<number>``) when :attr:`Contents.linked`."""
+    items = ['<nav class="sc-contents" aria-label="contents">', "<h2>Contents</h2>", "<ul>"]
+    for section, entries in block.sections():
+        items.append(f"<li>{esc(section)}<ol>" if section else "<li><ol>")
+        for e in entries:
+            text = (
+                f'<a href="#q{e.number}">{esc(e.wording)}</a>' if block.linked else esc(e.wording)
+            )
+            items.append(f'<li value="{e.number}">{text}</li>')
+        items.append("</ol></li>")
+    return "\n".join([*items, "</ul>", "</nav>"]) + "\n"
+
+
 HTML: dict[type, Callable[[Any, _Page], str]] = {
+    Contents: contents_html,
     Question: question_html,
     Title: _nothing,  # the section's heading (answer_section)
     Given: _given,

@@ -30,6 +30,7 @@ from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
 from ..core.working import ascii_text, tex_text
 from ..document import (
+    Contents,
     Document,
     Drawing,
     Given,
@@ -380,10 +381,24 @@ def _question(block: Question, options: Options, doc: Document) -> Iterator[str]
     """A question's heading (a ``\\subsection*``: a document's sections are
     ``\\section*``), its wording and its command line."""
     yield f"\\subsection*{{{tex_text(block.heading)}}}\n"
+    if block.entry:
+        entry = f"{block.number}. {tex_text(block.entry)}"
+        yield f"\\addcontentsline{{toc}}{{subsection}}{{{entry}}}\n"
     if block.wording:
         yield f"\\emph{{{tex_text(block.wording)}}}\\par\\medskip\n"
     if block.command:
         yield tex_command(block.command) + "\n\n"
+
+
+def _contents(block: Contents, options: Options, doc: Document) -> Iterator[str]:
+    """Above the questions, LaTeX's own contents with page numbers (filled in from the
+    ``\\addcontentsline`` of each listed heading: pdflatex twice), then a new page; alone,
+    the questions as a list."""
+    if block.linked:
+        yield "\\tableofcontents\n\\clearpage\n"
+        return
+    items = (f"  \\item {e.number}. {tex_text(e.wording)}" for e in block.entries)
+    yield "\n".join(["\\section*{Contents}", "\\begin{itemize}", *items, "\\end{itemize}", ""])
 
 
 def tex_command(command: str) -> str:
@@ -504,6 +519,7 @@ def _drawing(block: Drawing, options: Options, doc: Document) -> Iterator[str]:
 
 
 LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = {
+    Contents: _contents,
     Question: _question,
     Title: _title,
     Given: _given,

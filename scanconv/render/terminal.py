@@ -31,6 +31,7 @@ from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
 from ..core.working import visible
 from ..document import (
+    Contents,
     Document,
     Drawing,
     Given,
@@ -156,6 +157,19 @@ def _question(
     yield Text("")
 
 
+def _contents(
+    block: Contents, options: Options, width: int, drawn: list[list[str]]
+) -> Iterator[Any]:
+    yield Text("Contents", style="bold")
+    for section, entries in block.sections():
+        for line in wrap_text(visible(section), width, "  ") if section else ():
+            yield Text(line, style="italic")
+        for e in entries:
+            for line in wrap_text(visible(f"{e.number}. {e.wording}"), width, "      ", "  "):
+                yield Text(line)
+    yield Text("")
+
+
 def _given(block: Given, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
     text = "Given: " + ", ".join(unicode_heading(q.text) for q in block.quantities)
     for i, line in enumerate(wrap_text(text, width, "  ")):
@@ -249,6 +263,7 @@ def _drawing(block: Drawing, options: Options, width: int, drawn: list[list[str]
 
 
 RICH: dict[type, Callable[[Any, Options, int, list[list[str]]], Iterator[Any]]] = {
+    Contents: _contents,
     Question: _question,
     Title: _title,
     Given: _given,

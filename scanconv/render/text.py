@@ -20,6 +20,7 @@ from ..core.records import Column, Figure, ShadedMatrix, Solution, step_getter
 from ..core.records import Table as CoreTable
 from ..core.working import ascii_text, visible
 from ..document import (
+    Contents,
     Document,
     Drawing,
     Given,
@@ -308,6 +309,15 @@ def _md_question(block: Question, options: Options, drawn: list[str]) -> Iterato
         yield md_code(block.command) + "\n\n"
 
 
+def _md_contents(block: Contents, options: Options, drawn: list[str]) -> Iterator[str]:
+    """The contents as a list: each section, its questions numbered under it."""
+    lines = ["## Contents", ""]
+    for section, entries in block.sections():
+        lines.append(f"- {md_text(section)}")
+        lines.extend(f"    {e.number}. {md_text(e.wording)}" for e in entries)
+    yield "\n".join(lines) + "\n\n"
+
+
 def md_code(text: str) -> str:
     """``text`` as an inline code span, fenced with more backticks than it holds.
 
@@ -351,6 +361,14 @@ def _plain_question(block: Question, options: Options, drawn: list[str]) -> Iter
         yield ascii_text(block.wording) + "\n\n"
     if block.command:
         yield f"$ {ascii_text(block.command)}\n\n"
+
+
+def _plain_contents(block: Contents, options: Options, drawn: list[str]) -> Iterator[str]:
+    lines = ["Contents", "--------", ""]
+    for section, entries in block.sections():
+        lines.append(ascii_text(section))
+        lines.extend(f"  {e.number}. {ascii_text(e.wording)}" for e in entries)
+    yield "\n".join(lines) + "\n\n"
 
 
 def _plain_given(block: Given, options: Options, drawn: list[str]) -> Iterator[str]:
@@ -451,6 +469,7 @@ def _drawing(block: Drawing, options: Options, drawn: list[str]) -> Iterator[str
 
 
 MARKDOWN: dict[type, Handler] = {
+    Contents: _md_contents,
     Question: _md_question,
     Title: _md_title,
     Given: _md_given,
@@ -465,6 +484,7 @@ MARKDOWN: dict[type, Handler] = {
 """The ``markdown`` format: one handler per block type."""
 
 PLAIN: dict[type, Handler] = {
+    Contents: _plain_contents,
     Question: _plain_question,
     Title: _plain_title,
     Given: _plain_given,
