@@ -395,7 +395,7 @@ def _text_table(
     """One table, whole, in markdown or plain alike: a table that belongs together (a
     comparison, the circle's 9-column symmetry table) stays one table, as the PDF sets it;
     pandoc and a browser wrap or scroll it (``rich`` fits its width by splitting)."""
-    yield f"**{name}:**\n\n" if markdown else f"{ascii_text(name)}:\n"
+    yield f"**{md_text(name)}:**\n\n" if markdown else f"{ascii_text(name)}:\n"
     for line in table_lines(
         [f"${c.tex}$" if markdown else ascii_text(c.text) for c in cols],
         [numeric_column(c) for c in cols],
