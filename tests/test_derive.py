@@ -65,8 +65,8 @@ def test_midpoint_derivation_substitutes_r():
 
 
 def _code(sol):
-    table = next(t for t in sol.tables if t.title.startswith("Algorithm"))
-    return table.title, [row[1].rstrip() for row in table.rows()]
+    listing = next(c for c in sol.code if c.title.startswith("Algorithm"))
+    return listing.title, list(listing.lines)
 
 
 def test_pseudocode_is_the_variant_used():

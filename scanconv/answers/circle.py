@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..algorithms.circles import (
     ALIASES,
@@ -27,6 +27,7 @@ from ..core.numeric import (
     normalize,
 )
 from ..core.records import (
+    Code,
     Move,
     Pixel,
     Quantity,
@@ -148,8 +149,8 @@ def _theory(
     derived: tuple[Quantity, ...],
     derive: bool,
     pseudocode: bool,
-) -> tuple[tuple[Quantity, ...], tuple[Table, ...]]:
-    """The working with ``--derive``'s derivation added, and ``--algorithm``'s table."""
+) -> tuple[tuple[Quantity, ...], tuple[Code, ...]]:
+    """The working with ``--derive``'s derivation added, and ``--algorithm``'s listing."""
     if not (derive or pseudocode):
         return derived, ()
     if derive:
@@ -182,7 +183,7 @@ def circle_solution(
     (:mod:`scanconv.algorithms.conventions`; a knob that does not apply to the method is an
     error), ``convention`` a named preset. ``layout="notes"`` prints the midpoint circle in the
     notes' rows (k, x, y, p, decision, point: row 0 the start point); ``derive`` adds the
-    derivation, ``pseudocode`` the algorithm as a table, ``annotate`` the notes naming the
+    derivation, ``pseudocode`` the algorithm as a listing, ``annotate`` the notes naming the
     conventions and the course notes' errata.
 
     Raises ``ValueError`` for an unknown method or rounding rule, a negative or non-integer
@@ -224,8 +225,8 @@ def circle_solution(
         "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
         "once, the first time it is plotted.",
     )
-    derived, tables = _theory(method, ir, knobs, derived, derive, pseudocode)
-    data: dict = {"rounding": rounding} if method in FLOAT_METHODS else {}
+    derived, code = _theory(method, ir, knobs, derived, derive, pseudocode)
+    data: dict[str, Any] = {"rounding": rounding} if method in FLOAT_METHODS else {}
     if annotate:
         notes = (*notes, convention_note("circle", convention, knobs))
         erratum = circle_errata(method, ir)
@@ -245,10 +246,11 @@ def circle_solution(
         pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
         bbox=(ixc - ir, iyc - ir, ixc + ir, iyc + ir),
         notes=notes,
-        tables=(symmetry_table(points, images, ixc, iyc), *tables),
+        tables=(symmetry_table(points, images, ixc, iyc),),
         marks=((ixc, iyc),),
         geometry={"circle": (ixc, iyc, ir), "symmetry": 8, "center": (ixc, iyc)},
         data=data,
+        code=code,
     )
 
 

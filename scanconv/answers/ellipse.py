@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from fractions import Fraction
 from itertools import dropwhile, takewhile
-from typing import TYPE_CHECKING, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..algorithms.conventions import convention_note, resolve
 from ..algorithms.ellipses import (
@@ -21,6 +21,7 @@ from ..core import lazy
 from ..core.checks import InputError, check_integer
 from ..core.numeric import Number, fmt_paren, fmt_short, round_c_cast
 from ..core.records import (
+    Code,
     Column,
     Pixel,
     Quantity,
@@ -68,7 +69,7 @@ class _Ellipse(NamedTuple):
     y0: int
 
 
-def _checked(rx: Number, ry: Number, xc: Number, yc: Number, knobs: dict) -> _Ellipse:
+def _checked(rx: Number, ry: Number, xc: Number, yc: Number, knobs: dict[str, str]) -> _Ellipse:
     """The question with its numbers checked, and the end of region 1."""
     irx = check_integer(rx, "rx", negative=False, param="rx")
     iry = check_integer(ry, "ry", negative=False, param="ry")
@@ -176,10 +177,10 @@ def _tables(
     get1 = step_getter(_region_columns("p1"), _EXTRA)
     get2 = step_getter(_region_columns("p2"), _EXTRA)
 
-    def region1() -> Iterator[tuple]:
+    def region1() -> Iterator[tuple[Any, ...]]:
         return (get1(s) for s in takewhile(lambda s: s.extra[0] == 1, steps()))
 
-    def region2() -> Iterator[tuple]:
+    def region2() -> Iterator[tuple[Any, ...]]:
         return (get2(s) for s in dropwhile(lambda s: s.extra[0] == 1, steps()))
 
     return (
@@ -210,7 +211,7 @@ def ellipse_solution(
     ``"keep"``: E in region 1 and S in region 2), ``p0`` how each region's first p is taken
     (``"exact"`` quarters, or ``"rounded"`` as Hearn & Baker's C code), ``convention`` a named
     preset; ``derive`` adds the derivation,
-    ``pseudocode`` the algorithm as a table, ``annotate`` the note naming the conventions.
+    ``pseudocode`` the algorithm as a listing, ``annotate`` the note naming the conventions.
 
     Raises ``ValueError`` for a negative or non-integer semi-axis or centre. ``rx = ry = 0``
     plots the centre; one zero semi-axis gives the segment between the tips.
@@ -244,8 +245,7 @@ def ellipse_solution(
             yield st.pixel
 
     tables = _tables(e, steps, points)
-    if pseudocode:
-        tables = (*tables, theory.ellipse_code(e.loop, e.tie))
+    code: tuple[Code, ...] = (theory.ellipse_code(e.loop, e.tie),) if pseudocode else ()
     return Solution(
         primitive="ellipse",
         algorithm="midpoint",
@@ -263,4 +263,5 @@ def ellipse_solution(
         marks=((e.xc, e.yc),),
         geometry={"ellipse": (e.xc, e.yc, e.rx, e.ry), "symmetry": 4, "center": (e.xc, e.yc)},
         data={"conventions": knobs} if annotate else {},
+        code=code,
     )

@@ -29,7 +29,7 @@ from ..core.numeric import (
     normalize,
     round_half_up,
 )
-from ..core.records import Pixel, Quantity, Solution, Step, Table, heading, rule, worked
+from ..core.records import Code, Pixel, Quantity, Solution, Step, heading, rule, worked
 from .errata import line_errata
 from .methods import method
 
@@ -146,7 +146,7 @@ def line_solution(
     ``"full"`` or ``"coverage"``) are the conventions
     (:mod:`scanconv.algorithms.conventions`), ``convention`` a named preset; ``layout`` is
     ``"notes"`` (Bresenham: row k plots (x_k, y_k), row 0 the start pixel) or ``"textbook"``;
-    ``derive`` adds the derivation, ``pseudocode`` the algorithm as a table; ``annotate``
+    ``derive`` adds the derivation, ``pseudocode`` the algorithm as a listing; ``annotate``
     adds the notes naming the conventions used and the course notes' errata (the API's answers
     have them; a pipeline stage that embeds a line leaves them out).
 
@@ -181,7 +181,7 @@ def line_solution(
                 "derive" if derive else "pseudocode",
             )
         return antialias_wu.wu_solution(x1, y1, x2, y2, ends=knobs["ends"])
-    sol = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)
+    sol: Solution = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)
     if annotate:
         points = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
         extra = [convention_note("line", convention, knobs)]
@@ -206,11 +206,11 @@ def _theory(
     derive: bool,
     code: bool,
 ) -> None:
-    """Add the derivation (derived items) and the pseudocode (a table) to ``sol``."""
+    """Add the derivation (derived items) and the pseudocode (a listing) to ``sol``."""
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
     steep = abs_value(dy) > abs_value(dx)
     sign = -1 if (dx > 0 > dy or dy > 0 > dx) else 1
-    tables: list[Table] = []
+    listings: list[Code] = []
     if algo == "bresenham":
         sx, sy, _, _, steep, dmaj, dmin, sign, _, _ = orient(int(x1), int(y1), int(x2), int(y2))
         if derive:
@@ -223,7 +223,9 @@ def _theory(
         if code:
             swapped = (sx, sy) != (int(x1), int(y1))
             backward = swapped and knobs.get("start") == "given"
-            tables.append(theory.bresenham_line_code(steep, sign, swapped, knobs["tie"], backward))
+            listings.append(
+                theory.bresenham_line_code(steep, sign, swapped, knobs["tie"], backward)
+            )
     elif algo == "dda":
         if derive:
             sol.derived = (
@@ -233,7 +235,7 @@ def _theory(
             )
         if code:
             swapped = knobs.get("start") == "swap" and (dy if steep else dx) < 0
-            tables.append(theory.dda_code(steep, sign, knobs["rounding"], swapped))
+            listings.append(theory.dda_code(steep, sign, knobs["rounding"], swapped))
     elif algo == "basic":
         if derive:
             sol.derived = (
@@ -242,13 +244,13 @@ def _theory(
                 *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2))[:1],
             )
         if code:
-            tables.append(theory.basic_code(steep, knobs["rounding"]))
+            listings.append(theory.basic_code(steep, knobs["rounding"]))
     elif algo == "midpoint":  # its answer always derives d; it has no pseudocode of its own
         if code:
             method("line", algo).load("pseudocode")
     else:  # a method whose record names no derivation (wu) is refused before this
         method("line", algo).load("derivation" if derive else "pseudocode")
-    sol.tables = (*sol.tables, *tables)
+    sol.code = (*sol.code, *listings)
 
 
 def _swap_rule(maj: str, x1: Number, y1: Number, x2: Number, y2: Number) -> Quantity:

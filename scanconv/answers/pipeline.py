@@ -114,7 +114,7 @@ def _scan_stage(
     if line.columns:
         get = step_getter(line.columns, line.extra_keys)
 
-        def rows() -> Iterator[tuple]:
+        def rows() -> Iterator[tuple[Any, ...]]:
             return (get(s) for s in line.steps())
 
         tables.append(Table(f"Stage 4, scan conversion: {line.title}", line.columns, rows))
@@ -181,7 +181,7 @@ def pipeline_line_solution(
     notes = list(_LINE_NOTES)
     given = _line_given(p1, p2, w, v)
     title = f"Scan-conversion pipeline: line {pt(p1)} to {pt(p2)}, window {rect_text(w)}, viewport {rect_text(v)}"
-    data: dict = {"clipped": None, "device": None, "rounded": None}
+    data: dict[str, Any] = {"clipped": None, "device": None, "rounded": None}
     if seg is None:
         derived.append(
             Quantity("clipped", None, "rejected: nothing reaches the viewport", r"\text{rejected}")
@@ -240,7 +240,7 @@ _FILL_COLUMNS = (
 )
 
 
-def _fill_rows(vertices: Sequence[tuple[Number, Number]], rule: str) -> Iterator[tuple]:
+def _fill_rows(vertices: Sequence[tuple[Number, Number]], rule: str) -> Iterator[tuple[Any, ...]]:
     for s in polygon.scanline_fill(vertices, rule):
         yield (
             s.y,
@@ -334,7 +334,7 @@ def pipeline_polygon_solution(
     )
     what = "filled" if fill else "outlined"
     title = f"Scan-conversion pipeline: polygon ({len(vertices)} vertices) clipped, mapped and {what}, window {rect_text(w)}, viewport {rect_text(v)}"
-    data: dict = {"clipped": [list(p) for p in final], "device": None}
+    data: dict[str, Any] = {"clipped": [list(p) for p in final], "device": None}
 
     def answer(**extra: Any) -> Solution:
         return Solution(

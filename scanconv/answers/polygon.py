@@ -137,7 +137,9 @@ def shape(pts: Sequence[Point]) -> str:
     return "convex" if len(signs) == 1 else "concave"
 
 
-def _scan_row(s: ScanLine, labels: dict[int, str], edges: dict[int, Edge], nonzero: bool) -> tuple:
+def _scan_row(
+    s: ScanLine, labels: dict[int, str], edges: dict[int, Edge], nonzero: bool
+) -> tuple[Any, ...]:
     def edge_list(ix: Sequence[int]) -> str:
         return ", ".join(labels[i] for i in ix) if ix else "-"
 

@@ -26,7 +26,7 @@ from __future__ import annotations
 import random
 from collections.abc import Callable, Iterator
 from fractions import Fraction
-from typing import TYPE_CHECKING, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..core import lazy
 from ..core.checks import InputError
@@ -341,14 +341,14 @@ def _quantize(rng: random.Random, difficulty: str, kind: int) -> PracticeQuestio
     )
 
 
-def _kinds(topic: str, rng: random.Random) -> list:
+def _kinds(topic: str, rng: random.Random) -> list[Any]:
     if topic == "line":
         return _line_kinds(rng)
     if topic not in _MAKERS:  # the topics beyond the notes
         kinds = practice_more.KINDS[topic]
         start = rng.randrange(len(kinds))
         return kinds[start:] + kinds[:start]
-    pairs: dict[str, list] = {
+    pairs: dict[str, list[Any]] = {
         "circle": [
             ("midpoint", False),
             ("bresenham", True),
@@ -406,7 +406,7 @@ def practice(
     ]
 
 
-def _cycle(items: list) -> Iterator:
+def _cycle(items: list[Any]) -> Iterator[Any]:
     while True:
         yield from items
 

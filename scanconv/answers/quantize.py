@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from fractions import Fraction
 from itertools import chain
+from typing import Any
 
 from ..algorithms.image_limits import check_bits
 from ..algorithms.quantize import Quantizer
@@ -50,7 +51,7 @@ def gray_name(k: int, levels: int) -> str:
     return f"Gray {k}/{levels - 1}"
 
 
-def quantization_rows(bits: int, quantizer: Quantizer | None = None) -> Iterator[tuple]:
+def quantization_rows(bits: int, quantizer: Quantizer | None = None) -> Iterator[tuple[Any, ...]]:
     """The rows of the quantization table of ``bits`` bits: one per level, in order.
 
     Each row is ``(k, binary code, gray-level name)``, plus ``(from, to, reconstruction)``

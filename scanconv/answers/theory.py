@@ -3,8 +3,8 @@ numbers substituted (``derive``), the pseudocode of exactly the variant used (``
 the notes' errata notes, and the comparison points the notes' comparison questions expect.
 
 Derivations are worked :class:`~scanconv.core.records.Quantity` items (TeX, single source);
-pseudocode is a :class:`~scanconv.core.records.Table` of numbered lines (ASCII), so every
-format shows both without a renderer change.
+pseudocode is a :class:`~scanconv.core.records.Code` listing (ASCII lines, indented), which
+every format shows as code (:class:`~scanconv.document.Pseudocode`).
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from ..core.numeric import Number, fmt_paren, fmt_short, normalize
-from ..core.records import Quantity, Table, heading, rule, worked
+from ..core.records import Code, Quantity, Table, heading, rule, worked
 from .errata import ERRATA as ERRATA
 from .errata import circle_errata as circle_errata
 from .errata import line_errata as line_errata
@@ -23,27 +23,18 @@ DERIVATION = rule("derivation", r"\text{Derivation, with this input's numbers:}"
 # --- the notes' mistakes ----------------------------------------------------------------------
 
 
-def pseudocode(title: str, lines: list[str]) -> Table:
-    """A numbered pseudocode listing as a table (every format shows tables).
+def pseudocode(title: str, lines: list[str]) -> Code:
+    """A pseudocode listing: the one place an answer's ``--algorithm`` piece is made.
 
-    Lines are padded to one width, so a renderer that centres or right-aligns the column
-    still shows the indentation of the text formats.
-
-    >>> [row for row in pseudocode("t", ["a", "  bc"]).rows()]
-    [(1, 'a   '), (2, '  bc')]
+    >>> pseudocode("t", ["a", "  bc"])
+    Code(title='t', lines=('a', '  bc'))
     """
-    width = max(len(line) for line in lines)
-    rows = tuple((i, line.ljust(width)) for i, line in enumerate(lines, 1))
-    return Table(
-        title=title,
-        columns=(heading("line", r"\#"), heading("work", r"\text{pseudocode}")),
-        rows=lambda: rows,
-    )
+    return Code(title, tuple(lines))
 
 
 def bresenham_line_code(
     steep: bool, sign: int, swapped: bool, tie: str, backward: bool = False
-) -> Table:
+) -> Code:
     """Bresenham's line for this input's octant (``backward``: walked from P1 as given, the
     major coordinate decreasing, instead of ``swapped``)."""
     maj, mnr = ("y", "x") if steep else ("x", "y")
@@ -80,7 +71,7 @@ def _code_title(name: str, steep: bool, sign: int) -> str:
     return f"Algorithm: {name} ({axis}, {slope})"
 
 
-def dda_code(steep: bool, sign: int, rounding: str, swapped: bool = False) -> Table:
+def dda_code(steep: bool, sign: int, rounding: str, swapped: bool = False) -> Code:
     """The simple DDA for this input's major axis (``swapped``: the end points were swapped
     so that the major coordinate increases)."""
     rnd = {"trunc": "trunc", "c-cast": "(int)(v + 0.5) of"}.get(rounding, f"round ({rounding})")
@@ -100,7 +91,7 @@ def dda_code(steep: bool, sign: int, rounding: str, swapped: bool = False) -> Ta
     return pseudocode(_code_title("simple DDA", steep, sign), lines)
 
 
-def basic_code(steep: bool, rounding: str) -> Table:
+def basic_code(steep: bool, rounding: str) -> Code:
     maj, mnr = ("y", "x") if steep else ("x", "y")
     eq = "x = x1 + (y - y1) * dx / dy" if steep else "y = y1 + m * (x - x1)"
     lines = [
@@ -112,7 +103,7 @@ def basic_code(steep: bool, rounding: str) -> Table:
     return pseudocode("Algorithm: the basic (direct) method", lines)
 
 
-def circle_code(method: str, knobs: dict[str, str]) -> Table | None:
+def circle_code(method: str, knobs: dict[str, str]) -> Code | None:
     """The circle method with the knob values used."""
     tie = knobs.get("tie", "step")
     cmp = "<=" if tie == "keep" else "<"
@@ -184,7 +175,7 @@ def circle_code(method: str, knobs: dict[str, str]) -> Table | None:
     return None
 
 
-def ellipse_code(loop: str, tie: str = "step") -> Table:
+def ellipse_code(loop: str, tie: str = "step") -> Code:
     cmp = "<=" if loop == "inclusive" else "<"
     lt1, gt2 = ("<=", ">=") if tie == "keep" else ("<", ">")
     lines = [

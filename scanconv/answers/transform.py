@@ -228,7 +228,7 @@ def _reflect(words: _Words) -> Stage:
     )
     line = f"the line through ({fmt_short(x1)}, {fmt_short(y1)}) and ({fmt_short(x2)}, {fmt_short(y2)})"
     core = Factor("Ref(2θ)", "\\mathrm{Ref}(2\\theta)", ref)
-    factors = (core,) if (x1, y1) == (0, 0) else (_t((x1, y1), -1), core, _t((x1, y1)))
+    factors = (core,) if x1 == 0 and y1 == 0 else (_t((x1, y1), -1), core, _t((x1, y1)))
     return Stage(f"reflect about {line}", factors, (work,), True)
 
 

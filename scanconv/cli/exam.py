@@ -9,18 +9,16 @@ of contents. ``--source`` prints the file, so a teacher can copy it, edit it and
 
 from __future__ import annotations
 
-import json
 import re
 from typing import Annotated
 
 import typer
 
-from ..core.working import tex_text
-from ..render.sheet import md_text, sheet_document
+from ..render.sheet import CONTENTS_ALONE, contents_document, sheet_document
 from .application import app
 from .options import DocumentFormatOpt, OutputOpt
 from .output import document_format, fail
-from .sheet import Answered, Sheet, answer_questions, read_questions, write_document
+from .sheet import Sheet, answer_questions, read_questions, write_document
 
 EXAM_FILE = "exam.txt"
 """The question file, in the package ``scanconv.data``."""
@@ -74,95 +72,12 @@ def _words(s: str) -> list[str]:
     return ["-".join(parts[i:]) for i in range(len(parts))]
 
 
-# --- the table of contents ----------------------------------------------------------------------
-
-
-def _contents(answered: list[Answered], fmt: str) -> str:
-    """The table of contents of the book in ``fmt`` (markdown or plain)."""
-    lines = ["## Contents", ""] if fmt == "markdown" else ["Contents", "--------", ""]
-    section = None
-    for a in answered:
-        q = a.question
-        if q.section != section:
-            section = q.section
-            lines.append(f"- {md_text(section)}" if fmt == "markdown" else section)
-        text = " ".join(q.wording.split())
-        text = md_text(text) if fmt == "markdown" else text
-        lines.append(f"    {q.number}. {text}" if fmt == "markdown" else f"  {q.number}. {text}")
-    return "\n".join(lines) + "\n\n"
-
-
-def _html_contents(document: str, answered: list[Answered]) -> str:
-    """The HTML book with a linked table of contents after its introduction (each question's
-    section has the id ``q<number>``)."""
-    from html import escape
-
-    items: list[str] = ['<nav class="sc-contents" aria-label="contents">', "<h2>Contents</h2>"]
-    section = None
-    for a in answered:
-        q = a.question
-        if q.section != section:
-            if section is not None:
-                items.append("</ol></li>")
-            section = q.section
-            items.append(f"<li>{escape(section or '')}<ol>" if section else "<li><ol>")
-        text = escape(" ".join(q.wording.split()) or q.command)
-        items.append(f'<li value="{q.number}"><a href="#q{q.number}">{text}</a></li>')
-    if section is not None or answered:
-        items.append("</ol></li>")
-    nav = "\n".join([items[0], items[1], "<ul>", *items[2:], "</ul>", "</nav>"]) + "\n"
-    start = document.find('<main class="sc-sheet">')
-    at = document.find("</p>\n", start)
-    if start < 0 or at < 0:
-        return document
-    at += len("</p>\n")
-    return document[:at] + nav + document[at:]
-
-
-_SECTION = re.compile(r"\\section\*\{\\raggedright (.*)\}")
-_QUESTION = re.compile(r"\\subsection\*\{Question (\d+)\b.*")
-
-
-def _with_contents(document: str, answered: list[Answered], fmt: str, title: bool) -> str:
-    """``document`` (a whole sheet) with its table of contents: in markdown and plain after
-    the title and the count of questions, in LaTeX ``\\tableofcontents`` and a contents line
-    for every section and question (pdflatex twice fills it in)."""
-    if fmt == "html":
-        return _html_contents(document, answered)
-    lines = document.split("\n")
-    if fmt in ("markdown", "plain"):
-        at = next((i for i, line in enumerate(lines) if line.startswith("Answer key")), -1)
-        contents = _contents(answered, fmt).rstrip("\n").split("\n")
-        return "\n".join([*lines[: at + 2], *contents, "", *lines[at + 2 :]])
-    if fmt != "latex":
-        return document
-    wording = {a.question.number: " ".join(a.question.wording.split()) for a in answered}
-    out: list[str] = []
-    placed = not title  # the title is a \section* too: the contents come after it
-    for line in lines:
-        section, question = _SECTION.fullmatch(line), _QUESTION.fullmatch(line)
-        if section and not placed:
-            placed = True
-            out.append(line)
-            continue
-        if section:
-            if "\\tableofcontents" not in out:
-                out += ["\\tableofcontents", "\\clearpage"]
-            out += [line, f"\\addcontentsline{{toc}}{{section}}{{{section.group(1)}}}"]
-        elif question:
-            entry = f"{question.group(1)}. {tex_text(wording[int(question.group(1))])}"
-            out += [line, f"\\addcontentsline{{toc}}{{subsection}}{{{entry}}}"]
-        else:
-            out.append(line)
-    return "\n".join(out)
-
-
 # --- the command ----------------------------------------------------------------------------------
 
 
 def exam_sheet(section: str | None = None) -> Sheet:
     """The shipped question file, parsed; with ``section``, that section only."""
-    sheet = read_questions(exam_text(), "scanconv/data/exam.txt")
+    sheet = read_questions(exam_text(), "scanconv/data/exam.txt")._replace(contents=True)
     if section is None:
         return sheet
     names = list(dict.fromkeys(q.section for q in sheet.questions))
@@ -173,33 +88,16 @@ def exam_sheet(section: str | None = None) -> Sheet:
 
 def contents(section: str | None, fmt: str) -> str:
     """Only the table of contents (nothing is answered): markdown, plain, LaTeX or JSON."""
-    sheet = exam_sheet(section)
-    entries = [Answered(q, None, None) for q in sheet.questions]  # type: ignore[arg-type]
-    if fmt == "json":
-        rows = [
-            {"number": q.number, "section": q.section, "question": " ".join(q.wording.split())}
-            for q in sheet.questions
-        ]
-        return (
-            json.dumps({"title": sheet.title, "contents": rows}, ensure_ascii=False, indent=1)
-            + "\n"
-        )
-    if fmt == "latex":
-        lines = ["\\section*{Contents}", "\\begin{itemize}"]
-        for q in sheet.questions:
-            lines.append(f"  \\item {q.number}. {tex_text(' '.join(q.wording.split()))}")
-        return "\n".join([*lines, "\\end{itemize}", ""])
-    if fmt not in ("markdown", "plain"):
+    if fmt not in (*CONTENTS_ALONE, "json"):
         raise ValueError(f"--contents is not available in {fmt}: markdown, plain, latex or json")
-    return _contents(entries, fmt)
+    return contents_document(exam_sheet(section), fmt)
 
 
 def book(section: str | None, fmt: str, *, standalone: bool = False) -> str:
     """The exam book (or one section of it) as one document in ``fmt``."""
     sheet = exam_sheet(section)
     answered = answer_questions(sheet.questions, sheet.source)
-    document = sheet_document(sheet, answered, "key", fmt, standalone=standalone)
-    return _with_contents(document, answered, fmt, bool(sheet.title))
+    return sheet_document(sheet, answered, "key", fmt, standalone=standalone)
 
 
 @app.command()

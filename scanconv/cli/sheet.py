@@ -223,6 +223,14 @@ def sheet(
             show_default=False,
         ),
     ] = None,
+    contents: Annotated[
+        bool,
+        typer.Option(
+            "--contents",
+            help="A table of contents under the title, each question under its section "
+            "(LaTeX and PDF: with page numbers; HTML: linked).",
+        ),
+    ] = False,
 ) -> None:
     """Answer every question of a question file in one document."""
     kind = "worksheet" if worksheet else "key"
@@ -232,6 +240,7 @@ def sheet(
     name = document_format(fmt, output)
     try:
         sheet, answered = build(questions)
+        sheet = sheet._replace(contents=contents)
         notices: list[str] = []
         text = sheet_document(sheet, answered, kind, name, standalone=standalone, notices=notices)
         latex = None

@@ -155,6 +155,16 @@ class Table(NamedTuple):
     """A fresh iterable of rows each time it is called."""
 
 
+class Code(NamedTuple):
+    """A pseudocode listing (``--algorithm``): shown as code after the further tables, never
+    as a table (nothing in it to fill in or mark)."""
+
+    title: str
+    """Heading shown above the listing."""
+    lines: tuple[str, ...]
+    """The lines, plain ASCII, in order; leading spaces are the indentation (meaningful)."""
+
+
 MAX_GRID_CELLS = 100
 """Largest number of columns or rows of a text figure (the pixel grid, a shaded picture); a
 larger one is left out with a note."""
@@ -228,6 +238,7 @@ class Solution:
         "figures",
         "geometry",
         "data",
+        "code",
     )
     __slots__ = FIELDS
 
@@ -277,6 +288,8 @@ class Solution:
     ``Step.pixel`` is the point relative to the centre, as the circle tables print it)."""
     data: dict[str, Any]
     """Extra JSON fields (exact values for tools), merged into the top-level object."""
+    code: tuple[Code, ...]
+    """Pseudocode listings (``--algorithm``), shown after :attr:`tables`."""
 
     def __init__(
         self,
@@ -298,6 +311,7 @@ class Solution:
         figures: tuple[Figure, ...] = (),
         geometry: dict[str, Any] | None = None,
         data: dict[str, Any] | None = None,
+        code: tuple[Code, ...] = (),
     ) -> None:
         self.primitive = primitive
         self.algorithm = algorithm
@@ -317,6 +331,7 @@ class Solution:
         self.figures = figures
         self.geometry = {} if geometry is None else geometry
         self.data = {} if data is None else data
+        self.code = code
 
     def fields(self) -> dict[str, Any]:
         """Every field by name (what a subclass copies to wrap a solution)."""

@@ -4,9 +4,10 @@ An answer (a :class:`~scanconv.core.records.Solution`) becomes a :class:`Documen
 of typed blocks in reading order (:mod:`.blocks`): :class:`Title`, :class:`Given`,
 :class:`Working` (derived quantities with their working, as TeX math), :class:`Notes` (prose
 with its math as math), :class:`StepTable` (columns, a fresh row iterator, its regions and
-layout), :class:`Table`, :class:`Pixels` (with symmetry, numbering, marks and the ideal
+layout), :class:`Table`, :class:`Pseudocode` (a numbered listing, shown as code), :class:`Pixels` (with symmetry, numbering, marks and the ideal
 primitive) and :class:`Drawing`; in a document of many answers (a sheet), a
-:class:`Question` (its number, marks, wording and command) heads each answer. :func:`document` builds it (:mod:`.build`, the one place
+:class:`Question` (its number, marks, wording and command) heads each answer, and a
+:class:`Contents` (the exam book's) lists the questions. :func:`document` builds it (:mod:`.build`, the one place
 that reads a solution's structure); each format in :mod:`scanconv.render` is one mapping from
 block types to output, so a format never guesses what an answer holds.
 
@@ -18,12 +19,15 @@ from __future__ import annotations
 
 from .blocks import (
     Block,
+    Contents,
     Document,
     Drawing,
+    Entry,
     Given,
     Notes,
     Pixels,
     Prose,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -34,12 +38,15 @@ from .build import as_document, document, prose
 
 __all__ = [
     "Block",
+    "Contents",
     "Document",
     "Drawing",
+    "Entry",
     "Given",
     "Notes",
     "Pixels",
     "Prose",
+    "Pseudocode",
     "Question",
     "StepTable",
     "Table",

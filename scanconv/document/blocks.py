@@ -45,6 +45,10 @@ class Question(NamedTuple):
     worksheet)."""
     level: int = 2
     """Its heading's level (3 under the document's sections)."""
+    entry: str = ""
+    """Its line in the document's :class:`Contents` (a format whose contents are filled in
+    from the headings, LaTeX's ``\\tableofcontents``, marks the heading with it); ``""``:
+    none."""
 
     @property
     def heading(self) -> str:
@@ -56,6 +60,41 @@ class Question(NamedTuple):
         if self.marks is None:
             return f"Question {self.number}"
         return f"Question {self.number} ({self.marks} mark{'' if self.marks == 1 else 's'})"
+
+
+class Entry(NamedTuple):
+    """One line of a :class:`Contents`: a question's number and wording, under its section."""
+
+    number: int
+    wording: str
+    """The question in words on one line (its command line if it has no wording)."""
+    section: str = ""
+    """The section it is under, or ``""``."""
+
+
+class Contents(NamedTuple):
+    """A document's table of contents (the exam book): every question's number and wording,
+    under its section, in order."""
+
+    entries: tuple[Entry, ...]
+    linked: bool = True
+    """Above the document's questions, each entry leading to its question (HTML links to
+    the question's section, LaTeX's page numbers from the headings'
+    :attr:`Question.entry`); ``False``: the list alone, nothing answered (``exam --contents``)."""
+
+    def sections(self) -> list[tuple[str, list[Entry]]]:
+        """The entries grouped by section, in order.
+
+        >>> Contents((Entry(1, "a", "S"), Entry(2, "b", "S"), Entry(3, "c", "T"))).sections()
+        [('S', [Entry(number=1, wording='a', section='S'), Entry(number=2, wording='b', \
+section='S')]), ('T', [Entry(number=3, wording='c', section='T')])]
+        """
+        out: list[tuple[str, list[Entry]]] = []
+        for entry in self.entries:
+            if not out or out[-1][0] != entry.section:
+                out.append((entry.section, []))
+            out[-1][1].append(entry)
+        return out
 
 
 class Given(NamedTuple):
@@ -141,6 +180,25 @@ class Table(NamedTuple):
     """Its rows hold construction points to draw over the grid (de Casteljau's levels)."""
 
 
+class Pseudocode(NamedTuple):
+    """A pseudocode listing (``--algorithm``): code, not a table (no stepper, no blanks, no
+    marks). Each format numbers the lines and keeps their indentation."""
+
+    title: str
+    lines: tuple[str, ...]
+    """Plain ASCII lines; leading spaces are the indentation."""
+
+    def numbered(self) -> list[str]:
+        """The lines numbered from 1 as every format shows them: the numbers right-aligned,
+        two spaces, then the line with its indentation.
+
+        >>> Pseudocode("t", ("a",) * 9 + ("  b",)).numbered()[-2:]
+        [' 9  a', '10    b']
+        """
+        width = len(str(len(self.lines)))
+        return [f"{n:>{width}}  {line}" for n, line in enumerate(self.lines, 1)]
+
+
 class Pixels(NamedTuple):
     """The plotted pixels, with what the grid needs to draw, number and mark them."""
 
@@ -179,7 +237,19 @@ class Drawing(NamedTuple):
     figure: Figure
 
 
-Block = Question | Title | Given | Working | Notes | StepTable | Table | Pixels | Drawing
+Block = (
+    Contents
+    | Question
+    | Title
+    | Given
+    | Working
+    | Notes
+    | StepTable
+    | Table
+    | Pseudocode
+    | Pixels
+    | Drawing
+)
 """Any block of a document."""
 
 

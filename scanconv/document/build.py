@@ -21,6 +21,7 @@ from .blocks import (
     Notes,
     Pixels,
     Prose,
+    Pseudocode,
     StepTable,
     Table,
     Title,
@@ -60,7 +61,8 @@ def as_document(answer: Solution | Document) -> Document:
 
 def document(solution: Solution) -> Document:
     """The blocks of ``solution``, in reading order: the title, the given values, the
-    working, the notes, the step table, the further tables, the pixels, the drawings.
+    working, the notes, the step table, the further tables, the pseudocode, the pixels, the
+    drawings.
 
     >>> from scanconv.answers.line import line_solution
     >>> doc = document(line_solution("bresenham", 0, 0, 2, 1))
@@ -82,6 +84,7 @@ def document(solution: Solution) -> Document:
     for i, t in enumerate(solution.tables):
         stepped = solution.algorithm == "compare" and i == 0
         blocks.append(Table(t.title, t.columns, t.rows, stepped, points))
+    blocks.extend(Pseudocode(c.title, c.lines) for c in solution.code)
     if solution.pixels is not None:
         blocks.append(_pixels(solution, "de Casteljau points" if points else None))
     blocks.extend(Drawing(f) for f in solution.figures)

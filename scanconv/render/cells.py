@@ -51,7 +51,7 @@ def cell(value: Any, column: Column, exact: bool = False) -> str:
         return fmt(Fraction(value), column.places if column.places is not None else 3)
     if isinstance(value, tuple):
         if len(value) == 2 and all(isinstance(v, int) for v in value):
-            return fmt_pixel(value)  # type: ignore[arg-type]
+            return fmt_pixel(value)
         if exact or all(isinstance(v, int) for v in value) or column.places is not None:
             return "(" + ", ".join(cell(v, column, exact) for v in value) + ")"
         decimals = column._replace(places=3)  # a point's coordinates alike
@@ -138,7 +138,7 @@ def unicode_heading(text: str) -> str:
     ('N₀,₂(t)', '(x_c+x, y_c+y)', 'pₖ')
     """
 
-    def sub(m: Any) -> str:
+    def sub(m: re.Match[str]) -> str:
         inner = m.group(1) if m.group(1) is not None else m.group(2)
         if all(ch == "," or ch.translate(_SUB) != ch for ch in inner):
             return inner.translate(_SUB)

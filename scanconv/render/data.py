@@ -12,6 +12,11 @@ columns ``x`` and ``y`` (``plot_x`` and ``plot_y`` next to the algorithm's own c
 Steps carry ``k`` and ``pixel`` always, ``p`` and ``decision`` where the algorithm has them,
 and the algorithm's own columns under their own keys. Integers are JSON integers, other
 exact values JSON numbers. Both formats are written as they are produced.
+
+Further tables are JSON's ``tables`` (CSV writes the first only when there is no step
+table); pseudocode (``--algorithm``) is JSON's ``pseudocode``, ``[{"title": ..., "lines":
+[...]}]``, each line as written (its leading spaces the indentation, no numbers). CSV leaves
+it out: it is no table.
 """
 
 from __future__ import annotations
@@ -21,10 +26,21 @@ import io
 import json
 from collections.abc import Iterator
 from itertools import chain, islice
+from typing import Any
 
 from ..core.records import Solution
 from ..core.working import json_visible
-from ..document import Document, Given, Notes, Pixels, StepTable, Table, Working, as_document
+from ..document import (
+    Document,
+    Given,
+    Notes,
+    Pixels,
+    Pseudocode,
+    StepTable,
+    Table,
+    Working,
+    as_document,
+)
 from . import Options
 from .cells import json_value, segments_unicode
 
@@ -101,12 +117,12 @@ _PLAIN = {int, str}
 """Cell types that csv and json write as they are (no conversion, see :func:`_csv_cell`)."""
 
 
-def _plain(rows: list[tuple]) -> bool:
+def _plain(rows: list[tuple[Any, ...]]) -> bool:
     """Whether every cell of ``rows`` is an ``int`` or a ``str`` (not a bool, not an enum)."""
     return {*map(type, chain.from_iterable(rows))} <= _PLAIN
 
 
-def _plain_csv(rows: list[tuple]) -> str | None:
+def _plain_csv(rows: list[tuple[Any, ...]]) -> str | None:
     r"""The text ``csv.writer`` writes for ``rows`` (equal lengths >= 2, int and str cells, no
     text that needs quoting), formatted at once; ``None`` otherwise.
 
@@ -171,6 +187,7 @@ def render_json(answer: Solution | Document, options: Options | None = None) -> 
             first = False
         yield "]"
     yield from _tables_json(doc.every(Table))
+    yield from _code_json(doc.every(Pseudocode))
     yield "}\n"
 
 
@@ -215,3 +232,15 @@ def _tables_json(tables: list[Table]) -> Iterator[str]:
             sep = ", "
         yield "]}"
     yield "]"
+
+
+def _code_json(listings: list[Pseudocode]) -> Iterator[str]:
+    """The ``pseudocode`` field: each listing's title and its lines, unnumbered.
+
+    >>> print("".join(_code_json([Pseudocode("t", ("a", "  b"))])))
+    ,
+     "pseudocode": [{"title": "t", "lines": ["a", "  b"]}]
+    """
+    if listings:
+        items = [{"title": c.title, "lines": list(c.lines)} for c in listings]
+        yield ',\n "pseudocode": ' + json_visible(json.dumps(items, ensure_ascii=False))

@@ -56,11 +56,13 @@ from ..core import lazy
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution, step_getter
 from ..document import (
+    Contents,
     Document,
     Drawing,
     Given,
     Notes,
     Pixels,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -295,6 +297,18 @@ def _further_table(block: Table, page: _Page) -> str:
     return _table(block.title, block.columns, rows, page.options.exact, positions, None, page.at)
 
 
+def _code(block: Pseudocode, page: _Page) -> str:
+    """The listing: its title, then the numbered lines in a ``<pre>``, escaped, in a box that
+    scrolls sideways on a narrow screen (as a table's does).
+
+    >>> _code(Pseudocode("a<b", ("x", "  y & z")), None)  # type: ignore[arg-type]
+    '<h3>a&lt;b</h3><div class="sc-tablebox"><pre class="sc-code"><code>1  x\\n2    y &amp; z</code></pre></div>'
+    """
+    lines = "\n".join(esc(line) for line in block.numbered())
+    code = f'<pre class="sc-code"><code>{lines}</code></pre>'
+    return f'<h3>{esc(block.title)}</h3><div class="sc-tablebox">{code}</div>'
+
+
 def _pixels(block: Pixels, page: _Page) -> str:
     st = page.st
     if st is None:
@@ -324,7 +338,23 @@ def question_html(block: Question, page: _Page | None = None) -> str:
     return out
 
 
+def contents_html(block: Contents, page: _Page | None = None) -> str:
+    """The contents as a navigation list: each section, its questions numbered under it,
+    each linked to its question's section (id ``q<number>``) when :attr:`Contents.linked`."""
+    items = ['<nav class="sc-contents" aria-label="contents">', "<h2>Contents</h2>", "<ul>"]
+    for section, entries in block.sections():
+        items.append(f"<li>{esc(section)}<ol>" if section else "<li><ol>")
+        for e in entries:
+            text = (
+                f'<a href="#q{e.number}">{esc(e.wording)}</a>' if block.linked else esc(e.wording)
+            )
+            items.append(f'<li value="{e.number}">{text}</li>')
+        items.append("</ol></li>")
+    return "\n".join([*items, "</ul>", "</nav>"]) + "\n"
+
+
 HTML: dict[type, Callable[[Any, _Page], str]] = {
+    Contents: contents_html,
     Question: question_html,
     Title: _nothing,  # the section's heading (answer_section)
     Given: _given,
@@ -332,6 +362,7 @@ HTML: dict[type, Callable[[Any, _Page], str]] = {
     Notes: _notes,
     StepTable: _step_table,
     Table: _further_table,
+    Pseudocode: _code,
     Pixels: _pixels,
     Drawing: _nothing,  # beside the stepper or under the answer (_figures)
 }

@@ -28,13 +28,15 @@ from typing import Any
 
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
-from ..core.working import tex_text
+from ..core.working import ascii_text, tex_text
 from ..document import (
+    Contents,
     Document,
     Drawing,
     Given,
     Notes,
     Pixels,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -379,10 +381,24 @@ def _question(block: Question, options: Options, doc: Document) -> Iterator[str]
     """A question's heading (a ``\\subsection*``: a document's sections are
     ``\\section*``), its wording and its command line."""
     yield f"\\subsection*{{{tex_text(block.heading)}}}\n"
+    if block.entry:
+        entry = f"{block.number}. {tex_text(block.entry)}"
+        yield f"\\addcontentsline{{toc}}{{subsection}}{{{entry}}}\n"
     if block.wording:
         yield f"\\emph{{{tex_text(block.wording)}}}\\par\\medskip\n"
     if block.command:
         yield tex_command(block.command) + "\n\n"
+
+
+def _contents(block: Contents, options: Options, doc: Document) -> Iterator[str]:
+    """Above the questions, LaTeX's own contents with page numbers (filled in from the
+    ``\\addcontentsline`` of each listed heading: pdflatex twice), then a new page; alone,
+    the questions as a list."""
+    if block.linked:
+        yield "\\tableofcontents\n\\clearpage\n"
+        return
+    items = (f"  \\item {e.number}. {tex_text(e.wording)}" for e in block.entries)
+    yield "\n".join(["\\section*{Contents}", "\\begin{itemize}", *items, "\\end{itemize}", ""])
 
 
 def tex_command(command: str) -> str:
@@ -430,6 +446,45 @@ def _table(block: Table, options: Options, doc: Document) -> Iterator[str]:
     yield from _tables(block.title, block.columns, partial(table_rows, block, options.exact))
 
 
+def _code(block: Pseudocode, options: Options, doc: Document) -> Iterator[str]:
+    r"""The listing: its heading kept with it, the numbered lines in typewriter type in a
+    minipage (never split across a page), each character as it is (:func:`tt_text`), set
+    small enough to fit the text width.
+
+    >>> print("".join(_code(Pseudocode("t", ("a", "  b^2")), Options(), None)), end="")
+    \scneed{71pt}\paragraph{t}\mbox{}\\[1ex]
+    <BLANKLINE>
+    \noindent\begin{minipage}{\linewidth}\ttfamily
+    \mbox{}1~~a\\
+    \mbox{}2~~~~b{\char94}2
+    \end{minipage}
+    <BLANKLINE>
+    """
+    lines = block.numbered()
+    yield _heading(block.title, len(lines))
+    yield "\n\\noindent\\begin{minipage}{\\linewidth}" + grid_size(lines) + "\\ttfamily\n"
+    yield "\\\\\n".join("\\mbox{}" + tt_text(line) for line in lines)
+    yield "\n\\end{minipage}\n\n"
+
+
+_TT_SPECIAL = frozenset("\\{}$&#^_%~<>|\"'`-")
+
+
+def tt_text(line: str) -> str:
+    r"""A line of code in typewriter type, shown character for character: ASCII (anything
+    else transliterated, :func:`~scanconv.core.working.ascii_text`), every character TeX or
+    the OT1 encoding would read otherwise set as the typewriter font's own glyph
+    (``\char``), every space a fixed space that does not collapse or break.
+
+    >>> print(tt_text(r"  if p <= 0: x_k = {a}\ % 2^n"))
+    ~~if~p~{\char60}=~0:~x{\char95}k~=~{\char123}a{\char125}{\char92}~{\char37}~2{\char94}n
+    """
+    return "".join(
+        f"{{\\char{ord(c)}}}" if c in _TT_SPECIAL else "~" if c == " " else c
+        for c in ascii_text(line)
+    )
+
+
 def _pixels(block: Pixels, options: Options, doc: Document) -> Iterator[str | Notice]:
     """The pixel list, then the grid drawn with TikZ (:mod:`scanconv.render.tikz`); a grid
     too large to draw stays a typewriter picture, or is left out with a notice saying why."""
@@ -464,6 +519,7 @@ def _drawing(block: Drawing, options: Options, doc: Document) -> Iterator[str]:
 
 
 LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = {
+    Contents: _contents,
     Question: _question,
     Title: _title,
     Given: _given,
@@ -471,6 +527,7 @@ LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = 
     Notes: _notes,
     StepTable: _step_table,
     Table: _table,
+    Pseudocode: _code,
     Pixels: _pixels,
     Drawing: _drawing,
 }

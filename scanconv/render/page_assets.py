@@ -55,6 +55,7 @@ padding:.18em .55em;text-align:center;white-space:nowrap}
 .scanconv table.sc-table th{background:#f3f3f3}
 .scanconv .sc-scroll table.sc-table th{position:sticky;top:0;z-index:1}
 .scanconv .sc-tablebox{overflow-x:auto;max-width:100%}
+.scanconv .sc-working math,.scanconv .sc-given math{max-width:100%;overflow-x:auto;overflow-y:hidden;vertical-align:middle}
 .scanconv table.sc-table td.sc-num{text-align:right}
 .scanconv tr[data-pos]{cursor:pointer}
 .scanconv tr[data-pos]:hover td{background:#f2f7fc}

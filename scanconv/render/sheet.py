@@ -23,12 +23,12 @@ import json
 import shlex
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import chain
-from typing import TYPE_CHECKING, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..core import lazy
 from ..core.records import Column, Quantity, Solution
 from ..core.working import ascii_text, json_visible
-from ..document import Document, Given, Title, as_document
+from ..document import Contents, Document, Entry, Given, Title, as_document
 from ..document import Question as QuestionBlock
 from . import FORMATS, Format, Notice, Options, formats, load, render
 from .cells import numeric_column
@@ -73,6 +73,8 @@ class Sheet(NamedTuple):
     questions: tuple[Question, ...]
     source: str = "QUESTIONS"
     """The file's name, for messages."""
+    contents: bool = False
+    """A table of contents above the questions (:func:`contents_block`; the exam book's)."""
 
     @property
     def total_marks(self) -> int | None:
@@ -94,6 +96,31 @@ class Answered(NamedTuple):
 
 
 KINDS = ("key", "worksheet")
+
+
+CONTENTS_ALONE = {
+    "markdown": "scanconv.render.text:MARKDOWN",
+    "plain": "scanconv.render.text:PLAIN",
+    "latex": "scanconv.render.latex:LATEX",
+}
+"""The formats that write a sheet's contents alone (and json), each by its mapping."""
+
+
+def contents_document(sheet: Sheet, fmt: str) -> str:
+    """The sheet's table of contents alone, nothing answered (``exam --contents``): in
+    ``fmt``'s mapping of a :class:`~scanconv.document.Contents` block, or as JSON."""
+    block = contents_block(sheet, linked=False)
+    if fmt == "json":
+        rows = [{"number": e.number, "section": e.section, "question": e.wording}
+                for e in block.entries]  # fmt: skip
+        text = json.dumps({"title": sheet.title, "contents": rows}, ensure_ascii=False, indent=1)
+        return json_visible(text) + "\n"
+    if fmt not in CONTENTS_ALONE:
+        raise ValueError(
+            f"the contents alone are not available in {fmt}: markdown, plain, latex or json"
+        )
+    mapping = lazy.load(CONTENTS_ALONE[fmt])
+    return "".join(c for c in mapping[Contents](block, Options(), []) if isinstance(c, str))
 
 
 def sheet_document(
@@ -146,13 +173,54 @@ class _Guard:
             raise ValueError(f"{self.where}: {' '.join(str(err).split())}") from None
 
 
-def question_block(a: Answered, level: int = 2, *, key: bool = True) -> QuestionBlock:
+def question_block(
+    a: Answered, level: int = 2, *, key: bool = True, listed: bool = False
+) -> QuestionBlock:
     """The :class:`~scanconv.document.Question` block of ``a``: its number and marks and, on a
-    key, its wording and command line (a worksheet words the question its own way)."""
+    key, its wording and command line (a worksheet words the question its own way);
+    ``listed``: with its entry in the sheet's contents (:func:`entry_text`)."""
     q = a.question
+    entry = entry_text(a) if listed else ""
     if not key:
-        return QuestionBlock(q.number, q.marks, level=level)
-    return QuestionBlock(q.number, q.marks, q.wording, q.command, level)
+        return QuestionBlock(q.number, q.marks, level=level, entry=entry)
+    return QuestionBlock(q.number, q.marks, q.wording, q.command, level, entry)
+
+
+def entry_text(a: Answered | Question) -> str:
+    """A question's line in the contents: its wording on one line (an answered question
+    without wording: as :func:`wording` words it; else its command line).
+
+    >>> entry_text(Question(1, 1, ("line", "0", "0", "1", "1"), wording=" Draw   it. "))
+    'Draw it.'
+    """
+    if isinstance(a, Answered):
+        return " ".join(wording(a).split())
+    return " ".join(a.wording.split()) or a.command
+
+
+def contents_block(
+    sheet: Sheet, answered: Sequence[Answered] | None = None, *, linked: bool = True
+) -> Contents:
+    """The sheet's table of contents: each question's number and :func:`entry_text`, under
+    its section; ``linked``: above the questions, each entry leading to its question
+    (``False``: the list alone)."""
+    items: Sequence[Answered | Question] = answered if answered is not None else sheet.questions
+    entries = []
+    for item in items:
+        q = item.question if isinstance(item, Answered) else item
+        entries.append(Entry(q.number, entry_text(item), q.section))
+    return Contents(tuple(entries), linked)
+
+
+def contents_chunks(
+    sheet: Sheet, answered: Sequence[Answered], mapping: dict[type, Callable[..., Iterator[Any]]]
+) -> str:
+    """The sheet's contents through a text format's ``mapping`` (``""`` without
+    :attr:`Sheet.contents`)."""
+    if not sheet.contents:
+        return ""
+    chunks = mapping[Contents](contents_block(sheet, answered), Options(), [])
+    return "".join(c for c in chunks if isinstance(c, str))
 
 
 def key_document(a: Answered, level: int = 2, *, question: bool = True) -> Document:
@@ -298,6 +366,7 @@ def markdown_sheet(
     section_level, level = _levels(sheet)
     if sheet.title:
         yield f"# {md_text(' '.join(sheet.title.split()))}\n\n{_intro(sheet, kind)}\n\n"
+    yield contents_chunks(sheet, answered, MARKDOWN)
 
     def body(a: Answered) -> Iterator[str | Notice]:
         if kind == "key":
@@ -346,6 +415,7 @@ def plain_sheet(
     if sheet.title:
         title = ascii_text(" ".join(sheet.title.split()))
         yield f"{title}\n{'#' * len(title)}\n\n{_intro(sheet, kind)}\n\n"
+    yield contents_chunks(sheet, answered, PLAIN)
 
     def body(a: Answered) -> Iterator[str | Notice]:
         if kind == "key":
@@ -399,21 +469,24 @@ def _room(chars: int) -> int:
 def json_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str]:
-    """One JSON object: the sheet's title, kind and total marks, and its questions (each
-    key's answer through the ``json`` mapping)."""
+    """One JSON object: the sheet's title, kind and total marks, and its questions: each
+    question's :class:`~scanconv.document.Question` block (with its line in the file, its
+    section and its wording as :func:`wording` gives it) and the key's answer through the
+    ``json`` format."""
     questions = []
     for a in answered:
         q = a.question
         with _Guard(sheet, q):
+            head = question_block(a, key=kind == "key")
             entry: dict[str, object] = {
-                "number": q.number,
+                "number": head.number,
                 "line": q.line,
-                "marks": q.marks,
+                "marks": head.marks,
                 "section": q.section or None,
                 "question": wording(a),
             }
-            if kind == "key":
-                entry["command"] = q.command
+            if head.command:
+                entry["command"] = head.command
                 entry["answer"] = json.loads("".join(data.render_json(a.solution)))
             else:
                 entry["given"] = [g.text for g in given_of(a)]

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 from ..core import lazy
 from ..document import Question as QuestionBlock
 from . import Notice
-from .html import answer_section, page_head, question_html
+from .html import answer_section, contents_html, page_head, question_html
 from .mathml import esc as escape
 from .sheet import (
     Answered,
@@ -23,6 +23,7 @@ from .sheet import (
     _intro,
     _levels,
     _room,
+    contents_block,
     each_question,
     given_of,
     question_block,
@@ -70,6 +71,8 @@ def html_sheet(
     if sheet.title:
         yield f"<h1>{escape(title)}</h1>\n"
     yield f"<p>{escape(_intro(sheet, kind))}</p>\n"
+    if sheet.contents:
+        yield contents_html(contents_block(sheet, answered))
     level = _levels(sheet)[1]
 
     def body(a: Answered) -> Iterator[str | Notice]:

@@ -33,6 +33,7 @@ from .sheet import (
     _Guard,
     _intro,
     _room,
+    contents_chunks,
     given_of,
     key_document,
     question_block,
@@ -87,6 +88,7 @@ def latex_sheet(
     if sheet.title:
         yield f"\\section*{{\\raggedright {tex_text(' '.join(sheet.title.split()))}}}\n"
         yield f"{_intro(sheet, kind)}\n\n"
+    yield contents_chunks(sheet, answered, LATEX)
     section = ""
     for n, a in enumerate(answered):
         q = a.question
@@ -96,7 +98,9 @@ def latex_sheet(
             if q.section and q.section != section:
                 section = q.section
                 body.append(f"\\section*{{\\raggedright {tex_text(section)}}}\n")
-            head = question_block(a, key=kind == "key")
+                if sheet.contents:
+                    body.append(f"\\addcontentsline{{toc}}{{section}}{{{tex_text(section)}}}\n")
+            head = question_block(a, key=kind == "key", listed=sheet.contents)
             doc = as_document(a.solution)
             heading = LATEX[QuestionBlock](head, a.options, doc)
             body.extend(c for c in heading if isinstance(c, str))

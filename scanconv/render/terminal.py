@@ -31,11 +31,13 @@ from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
 from ..core.working import visible
 from ..document import (
+    Contents,
     Document,
     Drawing,
     Given,
     Notes,
     Pixels,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -155,6 +157,19 @@ def _question(
     yield Text("")
 
 
+def _contents(
+    block: Contents, options: Options, width: int, drawn: list[list[str]]
+) -> Iterator[Any]:
+    yield Text("Contents", style="bold")
+    for section, entries in block.sections():
+        for line in wrap_text(visible(section), width, "  ") if section else ():
+            yield Text(line, style="italic")
+        for e in entries:
+            for line in wrap_text(visible(f"{e.number}. {e.wording}"), width, "      ", "  "):
+                yield Text(line)
+    yield Text("")
+
+
 def _given(block: Given, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
     text = "Given: " + ", ".join(unicode_heading(q.text) for q in block.quantities)
     for i, line in enumerate(wrap_text(text, width, "  ")):
@@ -191,6 +206,24 @@ def _step_table(
 
 def _table(block: Table, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
     yield from _tables(block.title, block.columns, table_rows(block, options.exact), width)
+
+
+def _code(block: Pseudocode, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
+    """The title, then the numbered lines (numbers dim), each indented as written; a line
+    too long for ``width`` goes on under its own indentation, four spaces further in."""
+    for line in wrap_text(visible(block.title) + ":", width, "  "):
+        yield Text(line, style="bold")
+    numbers = len(str(len(block.lines)))
+    for line in block.numbered():
+        number, body = line[: numbers + 2], visible(line[numbers + 2 :])
+        code = body.lstrip(" ")
+        first = "  " + number + body[: len(body) - len(code)]
+        for i, part in enumerate(wrap_text(code, width, " " * (len(first) + 4), first)):
+            text = Text(part)
+            if i == 0:
+                text.stylize("dim", 0, numbers + 2)
+            yield text
+    yield Text("")
 
 
 def _pixels(block: Pixels, options: Options, width: int, drawn: list[list[str]]) -> Iterator[Any]:
@@ -230,6 +263,7 @@ def _drawing(block: Drawing, options: Options, width: int, drawn: list[list[str]
 
 
 RICH: dict[type, Callable[[Any, Options, int, list[list[str]]], Iterator[Any]]] = {
+    Contents: _contents,
     Question: _question,
     Title: _title,
     Given: _given,
@@ -237,6 +271,7 @@ RICH: dict[type, Callable[[Any, Options, int, list[list[str]]], Iterator[Any]]] 
     Notes: _notes,
     StepTable: _step_table,
     Table: _table,
+    Pseudocode: _code,
     Pixels: _pixels,
     Drawing: _drawing,
 }

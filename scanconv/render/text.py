@@ -20,12 +20,14 @@ from ..core.records import Column, Figure, ShadedMatrix, Solution, step_getter
 from ..core.records import Table as CoreTable
 from ..core.working import ascii_text, visible
 from ..document import (
+    Contents,
     Document,
     Drawing,
     Given,
     Notes,
     Pixels,
     Prose,
+    Pseudocode,
     Question,
     StepTable,
     Table,
@@ -307,6 +309,15 @@ def _md_question(block: Question, options: Options, drawn: list[str]) -> Iterato
         yield md_code(block.command) + "\n\n"
 
 
+def _md_contents(block: Contents, options: Options, drawn: list[str]) -> Iterator[str]:
+    """The contents as a list: each section, its questions numbered under it."""
+    lines = ["## Contents", ""]
+    for section, entries in block.sections():
+        lines.append(f"- {md_text(section)}")
+        lines.extend(f"    {e.number}. {md_text(e.wording)}" for e in entries)
+    yield "\n".join(lines) + "\n\n"
+
+
 def md_code(text: str) -> str:
     """``text`` as an inline code span, fenced with more backticks than it holds.
 
@@ -352,6 +363,14 @@ def _plain_question(block: Question, options: Options, drawn: list[str]) -> Iter
         yield f"$ {ascii_text(block.command)}\n\n"
 
 
+def _plain_contents(block: Contents, options: Options, drawn: list[str]) -> Iterator[str]:
+    lines = ["Contents", "--------", ""]
+    for section, entries in block.sections():
+        lines.append(ascii_text(section))
+        lines.extend(f"  {e.number}. {ascii_text(e.wording)}" for e in entries)
+    yield "\n".join(lines) + "\n\n"
+
+
 def _plain_given(block: Given, options: Options, drawn: list[str]) -> Iterator[str]:
     yield "Given: " + ", ".join(ascii_text(q.text) for q in block.quantities) + "\n\n"
 
@@ -376,7 +395,7 @@ def _text_table(
     """One table, whole, in markdown or plain alike: a table that belongs together (a
     comparison, the circle's 9-column symmetry table) stays one table, as the PDF sets it;
     pandoc and a browser wrap or scroll it (``rich`` fits its width by splitting)."""
-    yield f"**{name}:**\n\n" if markdown else f"{ascii_text(name)}:\n"
+    yield f"**{md_text(name)}:**\n\n" if markdown else f"{ascii_text(name)}:\n"
     for line in table_lines(
         [f"${c.tex}$" if markdown else ascii_text(c.text) for c in cols],
         [numeric_column(c) for c in cols],
@@ -419,6 +438,27 @@ def _pixels(markdown: bool) -> Handler:
     return handle
 
 
+def _md_code(block: Pseudocode, options: Options, drawn: list[str]) -> Iterator[str]:
+    """The title, then the numbered lines in a fenced ``text`` code block (its fence longer
+    than any run of backticks in the lines)."""
+    import re
+
+    lines = [visible(line) for line in block.numbered()]
+    runs = [len(r) for line in lines for r in re.findall(r"`+", line)]
+    fence = "`" * max(3, max(runs, default=0) + 1)
+    yield f"**{md_text(block.title)}:**\n\n{fence}text\n"
+    for line in lines:
+        yield line + "\n"
+    yield f"{fence}\n\n"
+
+
+def _plain_code(block: Pseudocode, options: Options, drawn: list[str]) -> Iterator[str]:
+    yield f"{ascii_text(block.title)}:\n"
+    for line in block.numbered():
+        yield f"  {ascii_text(line)}\n"
+    yield "\n"
+
+
 def _drawing(block: Drawing, options: Options, drawn: list[str]) -> Iterator[str]:
     if options.grid:
         lines = figure_text(block.figure, options.origin)
@@ -429,6 +469,7 @@ def _drawing(block: Drawing, options: Options, drawn: list[str]) -> Iterator[str
 
 
 MARKDOWN: dict[type, Handler] = {
+    Contents: _md_contents,
     Question: _md_question,
     Title: _md_title,
     Given: _md_given,
@@ -436,12 +477,14 @@ MARKDOWN: dict[type, Handler] = {
     Notes: _md_notes,
     StepTable: _step_table(True),
     Table: _table(True),
+    Pseudocode: _md_code,
     Pixels: _pixels(True),
     Drawing: _drawing,
 }
 """The ``markdown`` format: one handler per block type."""
 
 PLAIN: dict[type, Handler] = {
+    Contents: _plain_contents,
     Question: _plain_question,
     Title: _plain_title,
     Given: _plain_given,
@@ -449,6 +492,7 @@ PLAIN: dict[type, Handler] = {
     Notes: _plain_notes,
     StepTable: _step_table(False),
     Table: _table(False),
+    Pseudocode: _plain_code,
     Pixels: _pixels(False),
     Drawing: _drawing,
 }

@@ -14,6 +14,7 @@ from collections.abc import Callable, Iterable, Sequence
 from typing import Any, NamedTuple
 
 from ...core.records import (
+    Code,
     Column,
     Figure,
     Pixel,
@@ -36,6 +37,8 @@ class Example(NamedTuple):
     figures: tuple[Figure, ...] = ()
     plot: Solution | None = None
     """The solution whose pixels are the answer's own pixel list and grid."""
+    code: tuple[Code, ...] = ()
+    """The example's pseudocode listings, titled ``label: ...``."""
 
 
 class Topic(NamedTuple):
@@ -92,14 +95,16 @@ def embed(
     if working:
         notes.extend(f"${q.tex}$" for q in sol.derived)
     found: list[Table] = []
+    code: tuple[Code, ...] = ()
     if tables:
         if sol.columns and sol.show_steps:
             found.append(steps_table(f"{label}: step table", sol))
         found.extend(t._replace(title=f"{label}: {t.title}") for t in sol.tables)
+        code = tuple(c._replace(title=f"{label}: {c.title}") for c in sol.code)
     figures: tuple[Figure, ...] = sol.figures
     if not plot and sol.pixels is not None:
         figures = (figure(f"{label}:", sol.pixels(), sol.bbox, sol.marks), *figures)
-    return Example(tuple(notes), tuple(found), figures, sol if plot else None)
+    return Example(tuple(notes), tuple(found), figures, sol if plot else None, code)
 
 
 def figure(
@@ -140,9 +145,11 @@ def answer(
         found.append(listing("Limitations", limitations, "limitation"))
     drawn: list[Figure] = []
     plot: Solution | None = None
+    code: list[Code] = []
     for ex in examples:
         notes.extend(ex.notes)
         found.extend(ex.tables)
+        code.extend(ex.code)
         drawn.extend(ex.figures)
         plot = plot or ex.plot
     return Solution(
@@ -160,4 +167,5 @@ def answer(
         geometry={} if plot is None else plot.geometry,
         figures=(*drawn, *figures),
         data={"topic": topic},
+        code=tuple(code),
     )

@@ -3,7 +3,7 @@ two kinds of technique and the raster display."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ...core import lazy
 from ...core.numeric import fmt_short
@@ -105,7 +105,7 @@ _STAGES = (
 )
 
 
-def _pair(p: list) -> str:
+def _pair(p: list[Any]) -> str:
     return "(" + ", ".join(fmt_short(v) for v in p) + ")"
 
 
