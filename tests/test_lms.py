@@ -455,9 +455,9 @@ circles = st.builds(
 )  # fmt: skip
 
 
-@pytest.mark.slow
+@pytest.mark.slow  # 20 examples (40 before, issue 29: each is read back by node's gift-pegjs)
 @settings(
-    max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+    max_examples=20, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
 )
 @given(st.lists(st.one_of(lines, circles), min_size=1, max_size=3))
 def test_random_lines_and_circles_hold_the_key(
