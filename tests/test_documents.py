@@ -376,7 +376,8 @@ def test_every_golden_latex_answer_in_one_document_sets_cleanly(tmp_path: Path) 
         assert result.code == 0, result.err
         fragments.append(result.out)
         grids = result.out.count("\\begin{verbatim}") + result.out.count("\\begin{tikzpicture}")
-        assert result.out.count("\\begin{minipage}{\\linewidth}") == grids, path.name
+        listings = result.out.count("\\begin{minipage}{\\linewidth}\\ttfamily")  # pseudocode
+        assert result.out.count("\\begin{minipage}{\\linewidth}") == grids + listings, path.name
     log = _compile(tmp_path, *fragments)
     assert overfull(log) == [], "overfull boxes"
 

@@ -100,7 +100,7 @@ def test_the_answer_prints_the_edge_table_and_the_rules():
     }
     assert len(data["pixels"]) == 66
     md = "".join(c for c in render(sol, Format.markdown) if isinstance(c, str))
-    assert "**Edge table (sorted by y_min, then x):**" in md
+    assert "**Edge table (sorted by y\\_min, then x):**" in md  # through md_text
 
 
 def test_triangle_vertex_rules():

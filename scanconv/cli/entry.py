@@ -8,6 +8,7 @@ and SIGTERM 143; no traceback reaches the user.
 from __future__ import annotations
 
 import copy
+import functools
 import gc
 import signal
 import sys
@@ -33,8 +34,23 @@ def _command_for(argv: list[str]) -> Any:
     starts, a cost that grows with each command added. A run that names its subcommand
     (``scanconv line ...``, ``scanconv parametric circle ...``) gets groups holding just that
     one, with the same callbacks and settings, so its parsing, help and errors are unchanged;
-    anything else (``--help``, ``--version``, an unknown name) gets the whole group.
+    anything else (``--help``, ``--version``, an unknown name) gets the whole group. Only the
+    command's name picks it (a group's and its command's: groups nest one deep), so a
+    process that calls :func:`main` again (a notebook, the tests) reuses the command built
+    for that name (click keeps no state in a command between runs).
+
+    >>> _command_for(["line", "2", "2", "10", "6"]) is _command_for(["line", "0", "0", "1", "1"])
+    True
     """
+    group = bool(argv) and any(g.name == argv[0] for g in register(argv[:1]).registered_groups)
+    return _built(tuple(argv[: 2 if group else 1]))
+
+
+@functools.lru_cache(maxsize=128)
+def _built(words: tuple[str, ...]) -> Any:
+    """The click command for a command line starting with ``words``, its command's name
+    (:func:`_command_for`)."""
+    argv = list(words)
     return typer.main.get_command(_only(register(argv), argv))
 
 
