@@ -50,9 +50,14 @@ def pytest_configure(config):
     """``pytest -m "not slow"`` (the inner loop) runs the dev profile unless
     ``HYPOTHESIS_PROFILE`` says otherwise. Before collection: the profile's settings are
     what an ``@given`` test without its own ``@settings`` takes when its module is imported.
-    The first process (not an xdist worker) fills the compiled-file cache with scanconv."""
+    The first process (not an xdist worker) fills the compiled-file cache with scanconv (or,
+    where Python writes compiled files beside the sources, compiles scanconv there: under
+    SlipCover nothing else would, and every ``python -m scanconv`` a test starts would
+    compile the package again)."""
     if sys.pycache_prefix == _PYC and not hasattr(config, "workerinput"):
         _fill_pyc_cache()
+    elif not sys.dont_write_bytecode and not hasattr(config, "workerinput"):
+        compileall.compile_dir(ROOT / "scanconv", quiet=2)  # beside the sources, as usual
     if "HYPOTHESIS_PROFILE" not in os.environ and config.option.markexpr == "not slow":
         settings.load_profile("dev")
 
