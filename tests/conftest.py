@@ -14,20 +14,19 @@ import pytest
 from hypothesis import settings
 
 # PYTHONDONTWRITEBYTECODE (set on this project's shared machine) made every pytest process,
-# each xdist worker included, compile scanconv and rewrite the test modules' asserts anew:
-# 8 s of CPU a process, a quarter of the inner loop. The compiled files go to a cache under
-# .pytest_cache instead (never beside the sources, which the setting keeps clean), and the
-# processes the tests start read them there (PYTHONPYCACHEPREFIX; they still write none).
-# The xdist workers inherit the prefix from the first process and write to it too. That
-# process fills it before any test (:func:`_fill_pyc_cache`): a process the tests start looks
-# for every module's compiled file there, the standard library's too, and compiled anew each
-# one that no pytest process had written (0.6 s of CPU a ``python -m scanconv``, 0.15 s with
-# the cache filled).
+# each xdist worker included, compile scanconv and rewrite the test modules' asserts anew (8 s
+# of CPU a process), and every process a test starts compile scanconv again (0.6 s of CPU a
+# ``python -m scanconv``). The tests write compiled files as Python does by default, in the
+# ``__pycache__`` folders beside the sources (ignored by git; the site's wheel leaves them out):
+# the xdist workers and the processes the tests start inherit the setting, and the first
+# process compiles scanconv before any test (:func:`pytest_configure`). The dependencies' own
+# compiled files, written by pip at install, are read as they are (a cache of compiled files
+# apart, PYTHONPYCACHEPREFIX, made a fresh checkout compile 36 MB of them again: a minute of
+# CPU).
 ROOT = Path(__file__).resolve().parent.parent
-_PYC = str(ROOT / ".pytest_cache" / "pyc")
-if sys.dont_write_bytecode and sys.pycache_prefix in (None, _PYC):
-    sys.pycache_prefix = os.environ["PYTHONPYCACHEPREFIX"] = _PYC
+if sys.dont_write_bytecode:
     sys.dont_write_bytecode = False
+    os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
 
 # typer reads these at import time: plain, 80-column help, no terminal detection games.
 os.environ.setdefault("TERM", "dumb")
@@ -50,28 +49,13 @@ def pytest_configure(config):
     """``pytest -m "not slow"`` (the inner loop) runs the dev profile unless
     ``HYPOTHESIS_PROFILE`` says otherwise. Before collection: the profile's settings are
     what an ``@given`` test without its own ``@settings`` takes when its module is imported.
-    The first process (not an xdist worker) fills the compiled-file cache with scanconv (or,
-    where Python writes compiled files beside the sources, compiles scanconv there: under
-    SlipCover nothing else would, and every ``python -m scanconv`` a test starts would
-    compile the package again)."""
-    if sys.pycache_prefix == _PYC and not hasattr(config, "workerinput"):
-        _fill_pyc_cache()
-    elif not sys.dont_write_bytecode and not hasattr(config, "workerinput"):
-        compileall.compile_dir(ROOT / "scanconv", quiet=2)  # beside the sources, as usual
+    The first process (not an xdist worker) compiles scanconv beside its sources: under
+    SlipCover no pytest process writes scanconv's compiled files (its importer compiles in
+    memory), and every ``python -m scanconv`` a test starts would compile the package."""
+    if not hasattr(config, "workerinput"):
+        compileall.compile_dir(ROOT / "scanconv", quiet=2)
     if "HYPOTHESIS_PROFILE" not in os.environ and config.option.markexpr == "not slow":
         settings.load_profile("dev")
-
-
-def _fill_pyc_cache() -> None:
-    """Compile into the cache what this process imported before it could write there (the
-    standard library's modules, pytest's) and scanconv: under SlipCover no pytest process
-    wrote scanconv's files (its importer compiles them in memory). Files already there and
-    up to date are left alone (0.1 s); from an empty cache about a second of CPU."""
-    for module in list(sys.modules.values()):
-        source = getattr(module, "__file__", None)
-        if source and source.endswith(".py"):
-            compileall.compile_file(source, quiet=2)
-    compileall.compile_dir(ROOT / "scanconv", quiet=2)
 
 
 def pytest_collection_modifyitems(config, items):
