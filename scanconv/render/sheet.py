@@ -119,8 +119,7 @@ def contents_document(sheet: Sheet, fmt: str) -> str:
         raise ValueError(
             f"the contents alone are not available in {fmt}: markdown, plain, latex or json"
         )
-    mapping = lazy.load(CONTENTS_ALONE[fmt])
-    return "".join(c for c in mapping[Contents](block, Options(), []) if isinstance(c, str))
+    return _contents_text(lazy.load(CONTENTS_ALONE[fmt]), block)
 
 
 def sheet_document(
@@ -219,8 +218,13 @@ def contents_chunks(
     :attr:`Sheet.contents`)."""
     if not sheet.contents:
         return ""
-    chunks = mapping[Contents](contents_block(sheet, answered), Options(), [])
-    return "".join(c for c in chunks if isinstance(c, str))
+    return _contents_text(mapping, contents_block(sheet, answered))
+
+
+def _contents_text(mapping: dict[type, Callable[..., Iterator[Any]]], block: Contents) -> str:
+    """``block`` through a text format's mapping (its handlers' third argument, the rest of
+    the document, is not read for a Contents block)."""
+    return "".join(c for c in mapping[Contents](block, Options(), []) if isinstance(c, str))
 
 
 def key_document(a: Answered, level: int = 2, *, question: bool = True) -> Document:
