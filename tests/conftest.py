@@ -91,6 +91,8 @@ def browser() -> Iterator[Any]:
     """One headless Chromium for the whole session (Playwright's sync API allows one loop:
     every browser test shares it)."""
     if CHROMIUM is None:
+        if os.environ.get("CI"):  # as tests/external.py does for pdflatex
+            pytest.fail("chromium missing in CI: .ci/run installs Debian's chromium package")
         pytest.skip(
             "no chromium on PATH: the browser tests need Debian's chromium package "
             "(apt-get install chromium; .ci/run installs it)"

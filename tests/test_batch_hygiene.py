@@ -66,6 +66,41 @@ def test_the_output_may_not_be_the_students_file(tmp_path: Path) -> None:
     assert answer.read_bytes() == before
 
 
+@pytest.mark.parametrize("how", ["same", "dotted", "hard link", "symlink", "new file inside"])
+def test_the_batch_output_may_not_be_a_students_file(tmp_path: Path, how: str) -> None:
+    """A score sheet named as a submission of the batch (by any name) or written into the
+    folder marked is refused before any marking, every submission left as it was (N4)."""
+    folder = tmp_path / "cb"
+    folder.mkdir()
+    shutil.copy(DATA / "slip.csv", folder / "a.csv")
+    before = (folder / "a.csv").read_bytes()
+    out = {
+        "same": folder / "a.csv",
+        "dotted": tmp_path / "cb" / ".." / "cb" / "a.csv",
+        "hard link": tmp_path / "hl.csv",
+        "symlink": tmp_path / "sl.csv",
+        "new file inside": folder / "scores.csv",
+    }[how]
+    if how == "hard link":
+        os.link(folder / "a.csv", out)
+    elif how == "symlink":
+        out.symlink_to(folder / "a.csv")
+    r = run("check", "--batch", str(folder), "-o", str(out), *QUESTION)
+    assert r.code == 2 and r.out == "" and len(r.err.strip().splitlines()) == 1, r.err
+    assert "--output" in r.err
+    assert (folder / "a.csv").read_bytes() == before
+    assert sorted(p.name for p in folder.iterdir()) == ["a.csv"]
+
+
+def test_the_batch_output_beside_the_folder_is_written(tmp_path: Path) -> None:
+    folder = tmp_path / "cb"
+    folder.mkdir()
+    shutil.copy(DATA / "slip.csv", folder / "a.csv")
+    r = run("check", "--batch", str(folder), "-o", str(tmp_path / "scores.csv"), *QUESTION)
+    assert r.code == 0, r.err
+    assert _rows((tmp_path / "scores.csv").read_text())["a.csv"][1:3] == ["7", "8"]
+
+
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_messages_stay_one_short_line(tmp_path: Path) -> None:
     """A heading of 20,000 columns, a JSON number of 5,000 digits: one line naming the file."""
@@ -77,3 +112,5 @@ def test_messages_stay_one_short_line(tmp_path: Path) -> None:
     digits.write_text('{"steps": [{"k": 0, "p": ' + "9" * 5000 + ', "pixel": [2, 2]}]}')
     r = run("check", str(digits), *QUESTION)
     assert r.code == 2 and "digits.json" in r.err and len(r.err) < 1000, r.err
+    # in scanconv's words (D16), not Python's ("Exceeds the limit (4300 digits) ...")
+    assert "a number of 5,000 digits" in r.err and "Exceeds" not in r.err

@@ -9,6 +9,7 @@ so the test shows that each failure reaches the exit status of ``.ci/run``.
 from __future__ import annotations
 
 import re
+import sys
 import subprocess
 from pathlib import Path
 
@@ -96,3 +97,39 @@ def test_any_failing_check_fails_the_run(failing, tmp_path):
     else:
         assert proc.returncode != 0, ran
         assert ran[-1].startswith(failing)  # it stopped at the failing check
+
+
+_INNER = """
+import time
+import pytest
+
+def test_loops():
+    while True:
+        time.sleep(0.05)
+
+def test_needs_a_program():
+    pytest.skip("no frobnicator on PATH (apt-get install frobnicator)")
+"""
+
+
+@pytest.mark.slow  # an inner pytest run
+def test_a_hanging_test_fails_and_a_skip_is_named(tmp_path):
+    """The project's pytest options (pyproject's addopts) make a looping test fail with a
+    timeout instead of hanging the run (here shortened from 300 s to 3 s), and list every
+    skip with its reason, so a machine without chromium or pdflatex says what it skipped."""
+    (tmp_path / "test_inner.py").write_text(_INNER)
+    addopts = re.search(r'^addopts = "(.*)"$', (ROOT / "pyproject.toml").read_text(), re.M)
+    assert addopts is not None
+    opts = [o for o in addopts[1].split() if not o.startswith("--timeout")]
+    proc = subprocess.run(
+        [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-o", "addopts=",
+         *[o for o in opts if o not in ("--dist", "worksteal")], "--timeout=3", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=120,  # a guard: the inner run ends in seconds
+        cwd=tmp_path,
+    )
+    assert proc.returncode == 1, proc.stdout
+    assert "Timeout" in proc.stdout and "1 failed, 1 skipped" in proc.stdout
+    assert "SKIPPED [1]" in proc.stdout and "no frobnicator on PATH" in proc.stdout
+    assert "--timeout=300" in addopts[1] and "-rs" in addopts[1].split()

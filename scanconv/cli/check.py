@@ -162,6 +162,15 @@ def _mark_one(
     return (name, m.right, m.total, m.first_error, m.diagnosis)
 
 
+def _output_apart(folder: Path, files: list[Path], output: Path | None) -> None:
+    """Refuse (exit 2) a score sheet written over one of the batch's files (a student's
+    submission: the same file by any name, a link or a hard link) or into the folder marked
+    (the next run would mark it as a student's file)."""
+    check_paths([("the student's file", p) for p in files], [("--output", output)])
+    if output is not None and output.parent.resolve() == folder.resolve():
+        fail(f"--output {output}: inside the --batch folder {folder}; write the scores elsewhere")
+
+
 def _batch(
     folder: Path, solution: Solution, question: str, fmt: Format, output: Path | None
 ) -> None:
@@ -174,6 +183,7 @@ def _batch(
         fail(f"--batch {folder}: cannot read the folder: {err.strerror or err}")
     if not files:
         fail(f"--batch {folder}: no files to mark")
+    _output_apart(folder, files, output)
     sizes = [p.lstat().st_size for p in files if _regular(p)]
     check_batch(sizes, solution)  # before any file is read
     results = [_mark_one(path, solution, marking.mark_file) for path in files]

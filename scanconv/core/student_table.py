@@ -333,9 +333,40 @@ def _spread(line: str, spans: list[tuple[int, int]]) -> list[str]:
     return cells
 
 
+_JSON_DIGITS = 4300
+"""Most digits of a JSON number a table may hold (Python's own limit on turning text into an
+integer; no cell of a step table comes near it)."""
+
+
+class _LongNumber(Exception):
+    """A JSON number longer than :data:`_JSON_DIGITS` digits (its length in ``args[0]``)."""
+
+
+def _json_int(text: str) -> int:
+    """A JSON integer, or :class:`_LongNumber` for one too long to be a table's cell.
+
+    >>> _json_int("-12")
+    -12
+    >>> _json_int("9" * 5000)
+    Traceback (most recent call last):
+    ...
+    scanconv.core.student_table._LongNumber: 5000
+    """
+    digits = len(text.lstrip("-"))
+    if digits > _JSON_DIGITS:
+        raise _LongNumber(digits)
+    return int(text)
+
+
 def _json_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
     try:
-        data = json.loads(text)
+        data = json.loads(text, parse_int=_json_int)
+    except _LongNumber as err:
+        raise InputError(
+            f"{name}: a number of {err.args[0]:,} digits (a table's cell has at most "
+            f"{_JSON_DIGITS:,})",
+            "answer",
+        ) from None
     except json.JSONDecodeError as err:
         raise InputError(
             f"{name}, line {err.lineno}: not valid JSON ({err.msg})", "answer"
