@@ -9,8 +9,8 @@ so the test shows that each failure reaches the exit status of ``.ci/run``.
 from __future__ import annotations
 
 import re
-import sys
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -122,8 +122,18 @@ def test_a_hanging_test_fails_and_a_skip_is_named(tmp_path):
     assert addopts is not None
     opts = [o for o in addopts[1].split() if not o.startswith("--timeout")]
     proc = subprocess.run(
-        [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-o", "addopts=",
-         *[o for o in opts if o not in ("--dist", "worksteal")], "--timeout=3", str(tmp_path)],
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            "-p",
+            "no:cacheprovider",
+            "-o",
+            "addopts=",
+            *[o for o in opts if o not in ("--dist", "worksteal")],
+            "--timeout=3",
+            str(tmp_path),
+        ],
         capture_output=True,
         text=True,
         timeout=120,  # a guard: the inner run ends in seconds
