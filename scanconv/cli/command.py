@@ -35,7 +35,7 @@ from .options import (
     PngOpt,
     SvgOpt,
 )
-from .output import Output, emit, fail
+from .output import Output, check_paths, emit, fail
 
 if TYPE_CHECKING:
     from ..questions import grammar
@@ -135,8 +135,11 @@ class Command:
         values = {name: kwargs[name] for name in SHARED if name in kwargs}
         for name in values.keys() - own.keys():
             del kwargs[name]
+        out = Output(**values)
+        # two outputs naming one file (-o f.svg --svg f.svg): one would be lost (N9)
+        check_paths([], [("--output", out.output), ("--svg", out.svg), ("--png", out.png)])
         try:
-            check_budget(self.__name__, kwargs, Output(**values))  # before any work
+            check_budget(self.__name__, kwargs, out)  # before any work
             emit(self.__wrapped__(**kwargs), Output(**values))
         except ValueError as err:  # InputError included
             fail(error_message(err, self.parameters))

@@ -51,11 +51,17 @@ def pick_section(sections: list[str], wanted: str) -> str:
     >>> names = ["Line drawing", "Simple DDA algorithm", "The 14-mark topics"]
     >>> pick_section(names, "2"), pick_section(names, "line"), pick_section(names, "14")
     ('Simple DDA algorithm', 'Line drawing', 'The 14-mark topics')
+    >>> pick_section(names, "-1")
+    Traceback (most recent call last):
+    ...
+    ValueError: --section '-1' is not a section (1-3 or one of: line-drawing, simple-dda-algorithm, the-14-mark-topics)
     """
     key = slug(wanted)
     if wanted.strip().isdigit() and 1 <= int(wanted) <= len(sections):
         return sections[int(wanted) - 1]
-    found = [s for s in sections if slug(s) == key]
+    if re.fullmatch(r"\s*[-+][0-9]+\s*", wanted):
+        key = ""  # a signed number is no section (the slug of -1, "1", starts "14")
+    found = [s for s in sections if key and slug(s) == key]
     found = found or [
         s for s in sections if key and any(w.startswith(key) for w in _words(slug(s)))
     ]

@@ -18,7 +18,9 @@ can neither start a question nor shift a line number. A UTF-8 byte-order mark is
 
 from __future__ import annotations
 
+import os
 import re
+import stat
 
 from ..render.sheet import Question, Sheet
 
@@ -160,6 +162,11 @@ def _read_bytes(path: str) -> bytes:
     import sys
 
     if path != "-":
+        if not stat.S_ISREG(os.stat(path).st_mode) and not os.path.isdir(path):
+            # a FIFO or a device: opening one blocks until a writer comes (N11)
+            raise ValueError(
+                f"{path}: not a regular file (give - to read the questions from standard input)"
+            )
         with open(path, "rb") as f:
             return f.read(MAX_FILE_BYTES + 1)
     stream = getattr(sys.stdin, "buffer", None)
