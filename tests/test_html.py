@@ -473,3 +473,53 @@ def test_anti_aliased_pages_draw_each_pixel_in_its_grey(args):
     assert set(cells) == {tuple(p) for p in data["pixels"]}
     for pixel, style in cells.items():
         assert style == f"fill:{grey_of(levels[pixel], data['given']['L'])}", pixel
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ("bezier", "0", "0", "1", "2", "999999999", "999999999", "1000000", "0", "--at", "1/2"),
+        (
+            "bezier",
+            "-1000000000",
+            "-1000000000",
+            "1000000000",
+            "1000000000",
+            "-1000000000",
+            "1000000000",
+            "--at",
+            "1/2",
+        ),
+        (
+            "bspline",
+            "0",
+            "0",
+            "1",
+            "2",
+            "999999999",
+            "999999999",
+            "1000000",
+            "0",
+            "5",
+            "5",
+            "--degree",
+            "2",
+            "--at",
+            "1/2",
+        ),
+        ("line", "0", "0", "9999", "1"),
+    ],
+    ids=["bezier-wide", "bezier-2e9", "bspline-wide", "line-long"],
+)
+def test_a_page_over_a_huge_extent_stays_a_page(argv):
+    """A control polygon 10^9 pixels across (attack report N5: a 200 MB page of 520,004 axis
+    labels) gives a grid as wide as the page with a few dozen labels on each axis."""
+    r = run(*argv, "-f", "html")
+    assert r.code == 0, r.err
+    svg = re.search(r'<svg class="sc-grid sc-stepgrid".*?</svg>', r.out, re.S)
+    assert svg is not None
+    size = re.search(r'width="([0-9.]+)" height="([0-9.]+)"', svg[0])
+    assert size is not None and float(size[1]) < 800 and float(size[2]) < 800
+    labels = re.findall(r'font-size="11" text-anchor="(?:middle|end)">(-?[0-9]+)<', svg[0])
+    assert 2 <= len(labels) <= 200
+    assert len(r.out) < 3_000_000

@@ -22,6 +22,7 @@ specification, ``glLineStipple``.
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Iterator
 from typing import NamedTuple
 
@@ -116,6 +117,10 @@ def thick(x1: int, y1: int, x2: int, y2: int, width: int, brush: bool = False) -
         offsets = [(dx, dy) for dy in span for dx in span]
     else:
         offsets = [(d, 0) if steep else (0, d) for d in span]
+    # The centre line moves one pixel along its major axis a step, so a pixel of this step can
+    # only repeat one of the last `width` steps': those are all it remembers (constant memory
+    # for a line of any length).
+    recent: deque[tuple[Pixel, ...]] = deque(maxlen=width + 1)
     seen: set[Pixel] = set()
     for k, (x, y) in centre_line(x1, y1, x2, y2):
         added = []
@@ -124,4 +129,7 @@ def thick(x1: int, y1: int, x2: int, y2: int, width: int, brush: bool = False) -
             if p not in seen:
                 seen.add(p)
                 added.append(p)
+        if len(recent) == recent.maxlen:
+            seen.difference_update(recent[0])
+        recent.append(tuple(added))
         yield new_step(Step, (k, None, None, (x, y), (tuple(added),)))

@@ -35,6 +35,27 @@ def _bbox(pixels: list[Pixel]) -> tuple[int, int, int, int]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
+def _thick_bbox(
+    ends: tuple[int, int, int, int], width: int, brush: bool, steep: bool
+) -> tuple[int, int, int, int]:
+    """The bounding box of a thick line's pixels, from its ends alone: the centre line keeps
+    within its ends' box and reaches both, and each of its pixels is widened by the same
+    offsets (across the minor axis, or both axes for a brush).
+
+    >>> _thick_bbox((0, 0, 4, 1), 3, False, False), _thick_bbox((0, 0, 1, 4), 2, True, True)
+    ((0, -1, 4, 2), (0, 0, 2, 5))
+    """
+    lo, hi = -((width - 1) // 2), width // 2
+    wide_x, wide_y = brush or steep, brush or not steep
+    x1, y1, x2, y2 = ends
+    return (
+        min(x1, x2) + (lo if wide_x else 0),
+        min(y1, y2) + (lo if wide_y else 0),
+        max(x1, x2) + (hi if wide_x else 0),
+        max(y1, y2) + (hi if wide_y else 0),
+    )
+
+
 def line_style_solution(
     x1: Number, y1: Number, x2: Number, y2: Number, mask: str, *, bits: str = "msb", repeat: int = 1
 ) -> Solution:
@@ -105,8 +126,14 @@ def thick_line_solution(
     [3, 3, 3, 3, 3]
     """
     ends = _ends(x1, y1, x2, y2)
-    steps = list(at.thick(*ends, width, brush))
-    pixels = [p for s in steps for p in s.extra[0]]
+
+    def steps() -> Iterator[Step]:  # again for each use: a long line is never held
+        return at.thick(*ends, width, brush)
+
+    def pixels() -> Iterator[Pixel]:
+        return (p for s in steps() for p in s.extra[0])
+
+    count = sum(len(s.extra[0]) for s in steps())
     steep = orient(*ends).steep
     if brush:
         how = f"a {width} x {width} square brush around each pixel"
@@ -117,17 +144,19 @@ def thick_line_solution(
     derived = [
         rule("how", f"\\text{{{how}}}"),
         rule("offsets", f"\\text{{offsets }} {lo} \\ldots {hi}"),
-        worked("pixels", len(pixels), f"\\text{{pixels: }} {len(pixels)}"),
+        worked("pixels", count, f"\\text{{pixels: }} {count}"),
     ]
 
     def rows() -> Iterator[Step]:
-        for s in steps:
+        for s in steps():
             added = ", ".join(fmt_pixel(p) for p in s.extra[0]) or "-"
             yield s._replace(extra=(added,))
 
-    figure = PixelFigure(
-        tuple(pixels), tuple(s.pixel for s in steps), _bbox(pixels), "# = drawn, @ = centre line"
-    )
+    bbox = _thick_bbox(ends, width, brush, steep)
+    figures: tuple[PixelFigure, ...] = ()
+    if count <= 4000:
+        centre = tuple(s.pixel for s in steps())
+        figures = (PixelFigure(tuple(pixels()), centre, bbox, "# = drawn, @ = centre line"),)
     return Solution(
         primitive="line",
         algorithm="brush" if brush else "replication",
@@ -142,15 +171,15 @@ def thick_line_solution(
         ),
         extra_keys=("added",),
         steps=rows,
-        pixels=lambda: iter(pixels),
-        bbox=_bbox(pixels),
+        pixels=pixels,
+        bbox=bbox,
         notes=(
             "An even width puts its extra pixel above (or to the right of) the centre line; "
             "a pixel already drawn is not added again.",
             "Replication leaves a line of slope near 1 thinner than w (by a factor of "
             "cos 45 degrees); a square brush keeps it at least w wide.",
         ),
-        figures=() if len(pixels) > 4000 else (figure,),
+        figures=figures,
         geometry={"line": ends},
         data={"width": width, "brush": brush},
     )

@@ -36,7 +36,9 @@ class _Frame:
     def __init__(self, cells: tuple[int, int, int, int], top_left: bool, room: float) -> None:
         self.x0, self.y0, self.x1, self.y1 = cells
         self.cols, self.rows = self.x1 - self.x0 + 1, self.y1 - self.y0 + 1
-        self.s = float(min(CELL, max(room / max(self.cols, self.rows), 0.05)))
+        self.s = float(
+            min(CELL, room / max(self.cols, self.rows))
+        )  # at most room px: labels and size bounded
         self.top_left = top_left
         self.left, self.top = self.PAD_LEFT, self.PAD_TOP
         self.right = self.left + self.cols * self.s
@@ -62,11 +64,28 @@ def _n(v: float) -> str:
 
 
 def _ticks(room: float) -> int:
-    """Label every n-th line so the labels keep ``room`` px apart."""
-    for n in (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000, 20000, 50000):
-        if n * room >= 1:
-            return n
-    return 100000
+    """Label every n-th line so the labels keep ``room`` px apart: n of 1, 2, 5, 10, 20, 50
+    and so on, however many cells there are (a grid of 10^9 columns labels a few dozen).
+
+    >>> _ticks(1.0), _ticks(0.3), _ticks(0.15), _ticks(1e-9)
+    (1, 5, 10, 1000000000)
+    """
+    n = 1
+    while True:
+        for m in (1, 2, 5):
+            if n * m * room >= 1:
+                return n * m
+        n *= 10
+
+
+def _multiples(lo: int, hi: int, n: int) -> range:
+    """The multiples of ``n`` from ``lo`` to ``hi``: the labelled lines, without visiting
+    the others.
+
+    >>> list(_multiples(-7, 12, 5))
+    [-5, 0, 5, 10]
+    """
+    return range(-(-lo // n) * n, hi + 1, n)
 
 
 def _grid_lines(f: _Frame) -> list[str]:
@@ -96,20 +115,16 @@ def _grid_lines(f: _Frame) -> list[str]:
 def _axes(f: _Frame) -> list[str]:
     out: list[str] = []
     digits = max(len(str(f.x0)), len(str(f.x1)))
-    nx = _ticks(f.s / (7.0 * digits + 6))
-    for x in range(f.x0, f.x1 + 1):
-        if x % nx == 0:
-            out.append(
-                f'<text x="{_n(f.px(x))}" y="{_n(f.bottom + 15)}" font-size="11" '
-                f'text-anchor="middle">{x}</text>'
-            )
-    ny = _ticks(f.s / 14.0)
-    for y in range(f.y0, f.y1 + 1):
-        if y % ny == 0:
-            out.append(
-                f'<text x="{_n(f.left - 6)}" y="{_n(f.py(y) + 4)}" font-size="11" '
-                f'text-anchor="end">{y}</text>'
-            )
+    for x in _multiples(f.x0, f.x1, _ticks(f.s / (7.0 * digits + 6))):
+        out.append(
+            f'<text x="{_n(f.px(x))}" y="{_n(f.bottom + 15)}" font-size="11" '
+            f'text-anchor="middle">{x}</text>'
+        )
+    for y in _multiples(f.y0, f.y1, _ticks(f.s / 14.0)):
+        out.append(
+            f'<text x="{_n(f.left - 6)}" y="{_n(f.py(y) + 4)}" font-size="11" '
+            f'text-anchor="end">{y}</text>'
+        )
     out.append(
         f'<text x="{_n(f.right + 6)}" y="{_n(f.bottom + 15)}" font-size="11">x \u2192</text>'
     )
