@@ -213,7 +213,9 @@ def _documents(
         title = f"Practice: {topic.value}, {difficulty.value}, seed {seed}"
         text = answers_practice.question_file(chosen, title)
         sheet = read_questions(text, "practice")
-        answered = answer_questions(sheet.questions, "practice")
+        outputs = [name, *(["pdf"] if pdf is not None else [])]
+        outputs += [_key_format(key)] if key is not None else []
+        answered = answer_questions(sheet.questions, "practice", outputs)
         worksheet = sheet_document(sheet, answered, "worksheet", name, standalone=standalone)
         worksheet_tex = None
         if pdf is not None:

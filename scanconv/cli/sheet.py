@@ -23,7 +23,7 @@ file are the sheet's.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
@@ -77,11 +77,14 @@ def answer(argv: Iterable[str]) -> tuple[Solution, Options]:
     return solve(line), options
 
 
-def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -> list[Answered]:
+def answer_questions(
+    questions: Iterable[Question], source: str = "QUESTIONS", outputs: Sequence[str] = ()
+) -> list[Answered]:
     """Answer every question in this process (see the module docstring); the first bad one
     raises :class:`QuestionError` with its line, and so does the first question beyond the
     work budget of a document, alone or with the questions before it
-    (:func:`scanconv.render.budget.document`).
+    (:func:`scanconv.render.budget.document`: ``outputs`` names the formats it is written
+    in, ``"pdf"`` for a PDF, each with the rows it holds).
 
     >>> sheet = read_questions("line 2 2 10 6 --algo dda\\n\\ncircle 0.5\\n", "q.txt")
     >>> answer_questions(sheet.questions, sheet.source)
@@ -89,7 +92,7 @@ def answer_questions(questions: Iterable[Question], source: str = "QUESTIONS") -
     ...
     scanconv.questions.files.QuestionError: q.txt:3: radius must be an integer, got 0.500
     """
-    with document():
+    with document(outputs):
         return _answer_all(questions, source)
 
 
@@ -109,10 +112,11 @@ def _answer_all(questions: Iterable[Question], source: str) -> list[Answered]:
 # --- the command ----------------------------------------------------------------------------
 
 
-def build(path: str) -> tuple[Sheet, list[Answered]]:
-    """Read and answer the question file ``path``; a ``ValueError`` for any bad input."""
+def build(path: str, outputs: Sequence[str] = ()) -> tuple[Sheet, list[Answered]]:
+    """Read and answer the question file ``path`` for a document written in ``outputs``
+    (:func:`answer_questions`); a ``ValueError`` for any bad input."""
     sheet = read_file(path)
-    return sheet, answer_questions(sheet.questions, sheet.source)
+    return sheet, answer_questions(sheet.questions, sheet.source, outputs)
 
 
 def write_document(text: str, output: Path | None) -> None:
@@ -239,7 +243,7 @@ def sheet(
     check_paths([("QUESTIONS", questions)], [("--output", output), ("--pdf", pdf)])
     name = document_format(fmt, output)
     try:
-        sheet, answered = build(questions)
+        sheet, answered = build(questions, (name, "pdf") if pdf is not None else (name,))
         sheet = sheet._replace(contents=contents)
         notices: list[str] = []
         text = sheet_document(sheet, answered, kind, name, standalone=standalone, notices=notices)

@@ -66,6 +66,11 @@ class Spec(NamedTuple):
     answer in it goes through a single-answer mapping. ``""``: no documents in it."""
     streams: bool = False
     """It streams at a few microseconds a cell: a budget refusal points to it."""
+    sheet_rows: int | None = None
+    """Most table rows of a whole document it writes; ``None``: the budget's
+    :data:`~scanconv.render.budget.SHEET_ROWS`. A GIFT quiz writes each blank as a question
+    carrying the stem and the working: about 4.7 KB a row (80,000 rows: 373 MB, 1.58 GB of
+    memory), so it holds 10,000 rows (about 47 MB)."""
 
     @property
     def serves(self) -> tuple[str, ...]:
@@ -100,7 +105,7 @@ FORMATS: dict[str, Spec] = {
     ),
     "html": Spec("html:render_html", (".html", ".htm"), True, 150.0, sheet="sheet_html:html_sheet"),
     "moodle": Spec(extensions=(".xml",), binding=True, sheet="moodle:moodle_sheet"),
-    "gift": Spec(extensions=(".gift",), binding=True, sheet="gift:gift_sheet"),
+    "gift": Spec(extensions=(".gift",), binding=True, sheet="gift:gift_sheet", sheet_rows=10_000),
 }
 """Every format, declared once by its name (``auto`` aside): what it writes (its single-answer
 renderer, a mapping from the document's blocks, and its document writer), its file

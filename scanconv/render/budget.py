@@ -85,6 +85,12 @@ SHEET_SECONDS = 30
 """Most CPU seconds of estimated work of a whole document, each question costed in the
 costliest document format (:data:`DOCUMENT`)."""
 
+PDF_ROWS = 3_000
+"""Most table rows of a document typeset by pdflatex (``--pdf``): each row of a long table
+and each cell of a pixel grid costs pdflatex about 17 ms of CPU over its passes (50 questions
+of 80 rows, each with its grid: 4,000 rows, 68 s of CPU), so 3,000 rows end within a minute;
+a longer document is refused before pdflatex runs."""
+
 DOCUMENT = tuple(Format(f) for f, spec in FORMATS.items() if spec.renderer and spec.sheet)
 """The formats a document's answers are written in (a quiz file's feedback is ``plain``)."""
 
@@ -311,10 +317,16 @@ def check_rows_in_memory(work: Work) -> None:
 
 
 class _Ledger:
-    """The running total of a document's questions."""
+    """The running total of a document's questions, and the most rows its outputs hold."""
 
-    def __init__(self) -> None:
+    def __init__(self, outputs: Sequence[str] = ()) -> None:
         self.rows, self.seconds, self.questions = 0, 0.0, 0
+        self.limit, self.holder = SHEET_ROWS, "a document"
+        for name in outputs:
+            most = PDF_ROWS if name == "pdf" else FORMATS[name].sheet_rows
+            if most is not None and most < self.limit:
+                self.limit = most
+                self.holder = "a PDF (pdflatex)" if name == "pdf" else f"a {name} document"
 
 
 _DOCUMENT: contextvars.ContextVar[_Ledger | None] = contextvars.ContextVar(
@@ -323,11 +335,20 @@ _DOCUMENT: contextvars.ContextVar[_Ledger | None] = contextvars.ContextVar(
 
 
 @contextlib.contextmanager
-def document() -> Iterator[None]:
+def document(outputs: Sequence[str] = ()) -> Iterator[None]:
     """Count the questions checked by :func:`check_question` inside this block as one
     document (a sheet, a practice set, an exam book), refusing the question that takes the
-    total beyond :data:`SHEET_ROWS` rows or :data:`SHEET_SECONDS` of work."""
-    token = _DOCUMENT.set(_Ledger())
+    total beyond :data:`SHEET_ROWS` rows or :data:`SHEET_SECONDS` of work. ``outputs``: the
+    formats the document is written in (``"pdf"``: typeset by pdflatex); the fewest rows any
+    of them holds (:attr:`scanconv.render.Spec.sheet_rows`, :data:`PDF_ROWS`) is the limit.
+
+    >>> with document(["markdown", "pdf"]):
+    ...     _ = check_question("line", {"x1": 0, "y1": 0, "x2": 3999, "y2": 1})
+    Traceback (most recent call last):
+    ...
+    scanconv.render.budget.BudgetError: with the questions before it, the document has about 4,000 table rows; a PDF (pdflatex) holds at most 3,000 (split the questions)
+    """
+    token = _DOCUMENT.set(_Ledger(outputs))
     try:
         yield
     finally:
@@ -375,14 +396,23 @@ def check_question(name: str, arguments: Mapping[str, Any]) -> Work | None:
         ledger.seconds += seconds
         ledger.questions += 1
         what = "with the questions before it, the document has"
-        _check_total(ledger.rows, ledger.seconds, what, work, "split the questions")
+        limit = (ledger.limit, ledger.holder)
+        _check_total(ledger.rows, ledger.seconds, what, work, "split the questions", limit)
     return work
 
 
-def _check_total(rows: int, seconds: float, what: str, work: Work, way: str) -> None:
-    if rows > SHEET_ROWS:
+def _check_total(
+    rows: int,
+    seconds: float,
+    what: str,
+    work: Work,
+    way: str,
+    limit: tuple[int, str] = (SHEET_ROWS, "a document"),
+) -> None:
+    most, holder = limit
+    if rows > most:
         raise BudgetError(
-            f"{what} about {rows:,} table rows; a document holds at most {SHEET_ROWS:,} ({way})",
+            f"{what} about {rows:,} table rows; {holder} holds at most {most:,} ({way})",
             (),
             work.param,
         )
