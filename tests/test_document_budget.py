@@ -57,6 +57,7 @@ def test_a_gift_quiz_at_the_limit_is_written(tmp_path):
     assert text.count("::") // 2 > 125 * 80  # a question per blank
 
 
+@pytest.mark.slow  # 4,000 rows written without --pdf
 def test_a_pdf_is_weighed_before_pdflatex_runs(tmp_path, monkeypatch):
     """Refused with the line of the question, no file, and pdflatex never started."""
     import subprocess

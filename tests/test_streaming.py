@@ -84,3 +84,24 @@ def test_the_cli_writes_each_chunk_as_it_comes(fmt):
     with pytest.raises(BrokenPipeError):
         cli._write(render(sol, fmt, Options(grid=False)), ClosedAfter(100))
     assert pulled[0] <= 100
+
+
+@pytest.mark.slow  # a 1024 x 1024 matrix under tracemalloc
+@pytest.mark.parametrize("fmt", [Format.csv, Format.json])
+def test_a_wide_matrix_streams_a_few_rows_at_a_time(fmt):
+    """``sample`` at 4096 x 4096 held 4,096 rows of 4,097 cells at once (415 MB); a batch is
+    now a number of cells, so the peak is the matrix itself and a few rows' text."""
+    import tracemalloc
+
+    from scanconv.algorithms.sample import sample_levels
+    from scanconv.answers.sample import sample_solution
+
+    sol = sample_solution(sample_levels("x + y", 1024, 1024, 256))
+    tracemalloc.start()
+    try:
+        size = sum(len(c) for c in render(sol, fmt, Options(grid=False)) if isinstance(c, str))
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert size > 1024 * 1024 * 2  # every cell written
+    assert peak < 3_000_000, peak  # the text alone is over 4 MB
