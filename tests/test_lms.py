@@ -224,9 +224,41 @@ def _flat(value: Any) -> list[Any]:
         point = re.fullmatch(rf"\(({_NUMBER}), ({_NUMBER})\)", value)
         if point:
             return [point.group(1), point.group(3)]
-        if not re.fullmatch(rf"{_NUMBER}|[A-Za-z][A-Za-z-]{{0,15}}|-?0\d+", value):
-            return []
+        if re.fullmatch(rf"{_NUMBER}|[A-Za-z][A-Za-z-]{{0,15}}|-?0\d+", value):
+            return [value]
+        # a longer text answer: each number standing alone a blank ("[1, 5) [5, 9)"), or, in
+        # words only, the text itself
+        numbers = re.findall(r"(?<![\w.])-?\d+(?:\.\d+)?(?:/\d+)?(?![\w.])", value)
+        numbers = [n for n in numbers if not re.fullmatch(r"-?0\d+", n)]
+        if numbers:
+            return numbers
+        return [value.strip()] if re.search("[A-Za-z]", value) else []
     return [value]
+
+
+WORKING = {
+    ("Region codes", "reason"),  # why a code bit is set
+    ("Cohen-Sutherland iterations", "work"),  # the intersection's arithmetic
+    ("Cohen-Sutherland iterations", "method"),  # the OR/AND test
+    ("Points before and after", "work"),  # x' = m11*x + ...
+    ("Points before and after", "arithmetic"),
+    ("Scan lines", "aet"),  # the active edge table
+}
+"""The key's columns a quiz keeps for the feedback, by (table title, column): the working
+that would give a blank away (written here from the notes' tables, not from scanconv's
+column roles)."""
+
+SHOWN = {
+    ("Region codes", "point_xy"),  # the given end points
+    ("Cohen-Sutherland iterations", "point_end"),
+    ("Points before and after", "point_before"),  # the given points
+    ("Comparisons", "test"),  # the question each comparison asks
+}
+"""The key's columns a quiz shows as given, by (table title, column)."""
+
+
+def _asked(title: str, column: str) -> bool:
+    return not any(title.startswith(t) and column == c for t, c in WORKING | SHOWN)
 
 
 def key_cells(answer: dict[str, Any], *, split_steps: bool = False) -> list[Any]:
@@ -238,14 +270,17 @@ def key_cells(answer: dict[str, Any], *, split_steps: bool = False) -> list[Any]
     columns = answer["columns"]
     for step in answer["steps"]:
         for j, c in enumerate(columns):
-            if not (j == 0 and c in LABELS) and c != "k":
+            if not (j == 0 and c in LABELS) and c not in ("k", "region"):  # region: a label
                 out.extend(_flat(step[c]))
     for table in answer.get("tables", []):
         if split_steps and table["columns"][0] == "k":
             continue
+        if "-way symmetry" in table["title"]:
+            continue  # the images of the octant's points: the feedback's, not asked
         for row in table["rows"]:
             for j, v in enumerate(row):
-                if j and table["columns"][j] != "k":
+                column = table["columns"][j]
+                if j and column != "k" and _asked(table["title"], column):
                     out.extend(_flat(v))
     return out
 
@@ -295,8 +330,14 @@ def assert_moodle_key(xml: str, answers: list[dict[str, Any]], split: bool = Fal
         assert q.type == "cloze"
         assert len(q.blanks) == len(cells)
         for blank, value in zip(q.blanks, cells, strict=True):
-            assert blank.weight == 1
             assert holds(blank.kind, blank.answers, value), (blank, value)
+        marks = re.search(r"<defaultgrade>(\d+)</defaultgrade>", ET.tostring(q.element, "unicode"))
+        weights = [b.weight for b in q.blanks]
+        if marks is not None and int(marks[1]) >= len(weights):
+            assert sum(weights) == int(marks[1])  # Moodle scores a Cloze question so
+            assert max(weights) - min(weights) <= 1
+        else:
+            assert set(weights) <= {1}
 
 
 def assert_gift_key(
@@ -356,12 +397,17 @@ def test_gift_read_back_by_gift_pegjs_holds_the_json_key(gift_reader: GiftReader
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_the_ellipse_asks_its_step_table_once() -> None:
-    """The ellipse's region tables split the step table: asked once, with the regions."""
+    """The ellipse's region tables split the step table: asked once, with the regions as
+    row labels; the 4-way symmetry table's images follow from the quadrant's points: they
+    are in the feedback, not asked (an exam asks the quadrant's steps)."""
     xml, _, answers = documents("ellipse 7 8\nellipse 4 5 --center 9 3\n")
     assert_moodle_key(xml, answers, split=True)
     first = read_moodle(xml)[0]
-    assert first.text.count("<table") == 2  # the step table and the symmetry table
+    assert first.text.count("<table") == 1  # the step table
     assert "<th>region</th><th>k</th>" in first.text
+    assert "<tr><td>1</td><td>0</td>" in first.text  # region 1, k = 0: shown
+    assert "symmetry" not in first.text
+    assert "4-way symmetry" in html.unescape(ET.tostring(first.element, "unicode"))
 
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)

@@ -78,9 +78,13 @@ def symmetry_table(
 
     return Table(
         title=f"{n}-way symmetry about the centre ({xc}, {yc})",
+        # the images follow from the octant's points (the step table asks them): working
         columns=(
-            heading("point", "(x, y)"),
-            *(heading(f"point_{i}", tex) for i, tex in enumerate(SYMMETRY_HEADS[:n], 1)),
+            heading("point", "(x, y)", role="working"),
+            *(
+                heading(f"point_{i}", tex, role="working")
+                for i, tex in enumerate(SYMMETRY_HEADS[:n], 1)
+            ),
         ),
         rows=rows,
     )

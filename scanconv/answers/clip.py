@@ -124,25 +124,25 @@ def crossing_work(p1: Point, p2: Point, edge: Edge, value: Number, result: Point
 
 
 _CS_COLUMNS = (
-    Column("k", "k", "k"),
-    Column("point_end", "end point", r"\text{end point}"),
+    Column("k", "k", "k", role="label"),
+    Column("point_end", "end point", r"\text{end point}", role="given"),
     Column("code", "code", r"\text{code}"),
     Column("reason", "boundary", r"\text{boundary}"),
-    Column("work", "intersection (exact)", r"\text{intersection (exact)}"),
+    Column("work", "intersection (exact)", r"\text{intersection (exact)}", role="working"),
     Column("point_new", "new end point", r"\text{new end point}"),
     Column("new_code", "new code", r"\text{new code}"),
-    Column("method", "test", r"\text{test}"),
+    Column("method", "test", r"\text{test}", role="working"),
 )
 
 _CODE_COLUMNS = (
-    Column("point", "point", r"\text{point}"),
-    Column("point_xy", "(x, y)", "(x, y)"),
+    Column("point", "point", r"\text{point}", role="label"),
+    Column("point_xy", "(x, y)", "(x, y)", role="given"),
     Column("T", "T", "T"),
     Column("B", "B", "B"),
     Column("R", "R", "R"),
     Column("L", "L", "L"),
     Column("code", "code TBRL", r"\text{code } TBRL"),
-    Column("reason", "why", r"\text{why}"),
+    Column("reason", "why", r"\text{why}", role="working"),
 )
 
 

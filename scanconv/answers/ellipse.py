@@ -252,7 +252,7 @@ def ellipse_solution(
         title=f"Midpoint ellipse algorithm: rx = {e.rx}, ry = {e.ry}, centre ({e.xc}, {e.yc})",
         given=_given(e),
         derived=derived,
-        columns=(heading("region", r"\text{region}"), *_region_columns("p")),
+        columns=(heading("region", r"\text{region}", role="label"), *_region_columns("p")),
         extra_keys=_EXTRA,
         steps=steps,
         pixels=lambda: symmetric_pixels(points(), e.xc, e.yc),

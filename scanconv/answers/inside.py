@@ -44,8 +44,8 @@ def _edge_table(vertices: Sequence[io.Point], point: io.Point, number: int) -> T
     return Table(
         f"P{number} = {pt(point)}: the ray y = {fmt_short(point[1])}, x > {fmt_short(point[0])}",
         (
-            heading("edge", r"\text{edge}"),
-            heading("ends", r"\text{from, to}"),
+            heading("edge", r"\text{edge}", role="label"),
+            heading("ends", r"\text{from, to}", role="given"),
             heading("straddles", r"\text{straddles the ray's line}"),
             heading("x", r"x \text{ at the line}"),
             heading("crossing", r"x > x_P"),

@@ -44,7 +44,7 @@ def _tests_table(result: NLLResult) -> Table:
         "Comparisons, in the order they are made",
         (
             heading("k", "k"),
-            heading("test", r"\text{test}"),
+            heading("test", r"\text{test}", role="given"),
             heading("left", r"\text{compare}"),
             heading("left_value", r"\text{value}"),
             heading("relation", r"\text{relation}"),

@@ -226,7 +226,7 @@ _SCAN_COLUMNS = (
     heading("y", "y"),
     heading("removed", r"\text{removed}"),
     heading("added", r"\text{added}"),
-    heading("aet", r"\text{AET}"),
+    heading("aet", r"\text{AET}", role="working"),
     heading("intersections", r"\text{intersections}"),
     heading("spans", r"\text{spans}"),
     heading("pixels", r"\text{pixels } x"),

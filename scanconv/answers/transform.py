@@ -355,10 +355,17 @@ def _points_table(
 ) -> Table:
     """Each point before and after, with the two rows of M worked on it."""
     pt_cols = [
-        Column("point", "point", r"\text{point}"),
-        Column("point_before", "P = (x, y)", "P = (x, y)"),
-        Column("work", "x' = m11*x + m12*y + m13", "x' = m_{11} x + m_{12} y + m_{13}"),
-        Column("arithmetic", "y' = m21*x + m22*y + m23", "y' = m_{21} x + m_{22} y + m_{23}"),
+        Column("point", "point", r"\text{point}", role="label"),
+        Column("point_before", "P = (x, y)", "P = (x, y)", role="given"),
+        Column(
+            "work", "x' = m11*x + m12*y + m13", "x' = m_{11} x + m_{12} y + m_{13}", role="working"
+        ),
+        Column(
+            "arithmetic",
+            "y' = m21*x + m22*y + m23",
+            "y' = m_{21} x + m_{22} y + m_{23}",
+            role="working",
+        ),
         Column("point_after", "P' = (x', y')", "P' = (x', y')"),
     ]
     if irrational:

@@ -12,7 +12,7 @@ column headings, the plotted pixels) without ever formatting or printing anythin
 
 from collections.abc import Callable, Iterable, Iterator
 from enum import Enum
-from typing import Any, NamedTuple
+from typing import Any, Literal, NamedTuple
 
 from .numeric import Number
 from .working import tex_to_unicode
@@ -86,6 +86,21 @@ class Step(NamedTuple):
 new_step: Callable[[type[Step], tuple[Any, ...]], Step] = tuple.__new__
 
 
+Role = Literal["label", "given", "working", "answer"]
+"""What a table column's cells are to a student:
+
+* ``label``: numbers or names the rows (the step ``k``, a point's name): shown everywhere;
+* ``given``: values the question gives (a point's coordinates, an edge's end points): shown
+  on a worksheet and in a quiz, never asked;
+* ``working``: the arithmetic that leads to an answer (``7 + (8 - 9)/(-1.25) = 7.8``, the
+  reason for a code): written in a key, left for the student on a worksheet, and in a quiz
+  kept for the feedback (shown beside a blank it would give the blank away);
+* ``answer``: what the question asks: a blank on a worksheet, a blank in a quiz."""
+
+ROLES: tuple[Role, ...] = ("label", "given", "working", "answer")
+"""Every :data:`Role`, in the order a row reads."""
+
+
 class Column(NamedTuple):
     """How one table column is headed and displayed."""
 
@@ -98,6 +113,9 @@ class Column(NamedTuple):
     """Heading as LaTeX math (without ``$``), for markdown and LaTeX."""
     places: int | None = None
     """Fixed decimals for every cell (``3`` prints ``2.000``); ``None``: integers as they are."""
+    role: Role = "answer"
+    """What its cells are to a student (:data:`ROLES`): what a worksheet and a quiz show, and
+    what they ask."""
 
 
 class Quantity(NamedTuple):
@@ -135,13 +153,13 @@ def rule(key: str, tex: str) -> Quantity:
     return Quantity(key, text, text, tex)
 
 
-def heading(key: str, tex: str, places: int | None = None) -> Column:
+def heading(key: str, tex: str, places: int | None = None, role: Role = "answer") -> Column:
     """A table column headed once, in TeX math; the Unicode heading is derived.
 
     >>> heading("pixel", "(x_{k+1}, y_{k+1})")
-    Column(key='pixel', text='(xₖ₊₁, yₖ₊₁)', tex='(x_{k+1}, y_{k+1})', places=None)
+    Column(key='pixel', text='(xₖ₊₁, yₖ₊₁)', tex='(x_{k+1}, y_{k+1})', places=None, role='answer')
     """
-    return Column(key, tex_to_unicode(tex), tex, places)
+    return Column(key, tex_to_unicode(tex), tex, places, role)
 
 
 class Table(NamedTuple):

@@ -238,25 +238,78 @@ def _gap_table(
     labelled: bool,
     room: list[int],
 ) -> GapTable:
-    """A table with its answer cells as gaps; the first column shown when ``labelled``, and
-    a step number ``k`` wherever it stands. ``room[0]`` is how many more gaps may be made
-    (:class:`_TooMany` past it)."""
-    shown = {j for j, c in enumerate(columns) if c.key == "k" or (j == 0 and labelled)}
+    """A table with its answer cells as gaps, read from each column's role
+    (:data:`scanconv.core.records.ROLES`): ``label`` and ``given`` columns shown (and the
+    first column when ``labelled``, and a step number ``k`` wherever it stands), ``working``
+    columns left out (shown beside a blank they would give it away: the feedback holds them),
+    ``answer`` columns as gaps, every number of a text answer a gap of its own
+    (:func:`answer_pieces`). ``room[0]`` is how many more gaps may be made (:class:`_TooMany`
+    past it)."""
+    kept = [j for j, c in enumerate(columns) if c.role != "working"]
+    shown = {
+        j
+        for j, c in enumerate(columns)
+        if c.role in ("label", "given") or c.key == "k" or (j == 0 and labelled)
+    }
     out = []
     for row in rows:
         head = str(row[0]) if row else ""
         cells: list[tuple[Piece, ...]] = []
-        for j, (column, value) in enumerate(zip(columns, row, strict=True)):
+        for j in kept:
+            column, value = columns[j], row[j]
             if j in shown:
-                cells.append((str(value),))
+                cells.append((shown_text(value),))
                 continue
-            pieces = cell_pieces(value, f"{title}, {columns[0].text} = {head}, {column.text}")
+            pieces = answer_pieces(value, f"{title}, {columns[0].text} = {head}, {column.text}")
             room[0] -= sum(isinstance(p, Gap) for p in pieces)
             if room[0] < 0:
                 raise _TooMany
             cells.append(pieces)
         out.append(tuple(cells))
-    return GapTable(title, tuple(c.text for c in columns), tuple(out))
+    return GapTable(title, tuple(columns[j].text for j in kept), tuple(out))
+
+
+def shown_text(value: Any) -> str:
+    """A shown cell (a label or a given value) as the key's tables write it.
+
+    >>> shown_text((7, Fraction(1, 2))), shown_text("P1"), shown_text(None)
+    ('(7, 0.5)', 'P1', '–')
+    """
+    return "".join(p if isinstance(p, str) else p.answers[0] for p in cell_pieces(value))
+
+
+_NUMBER_IN_TEXT = re.compile(r"(?<![\w.])-?\d+(?:\.\d+)?(?:/\d+)?(?![\w.])")
+"""A number standing alone in a text answer (not part of a name such as ``P1`` or ``x2``)."""
+
+
+def answer_pieces(value: Any, label: str = "") -> tuple[Piece, ...]:
+    """An answer cell as gaps: :func:`cell_pieces`, and a text answer that is not one number,
+    point or word (``[1, 5) [5, 9)``, ``1..4, 6..8``) with each of its numbers a gap and the
+    rest shown, so that no answer is shown beside the blanks.
+
+    >>> [p if isinstance(p, str) else p.answers[0] for p in answer_pieces("[1, 5) [5, 9)")]
+    ['[', '1', ', ', '5', ') [', '5', ', ', '9', ')']
+    >>> answer_pieces("inside (boundary)")[0].answers
+    ('inside (boundary)', 'inside')
+    """
+    pieces = cell_pieces(value, label)
+    if len(pieces) != 1 or not isinstance(pieces[0], str) or not isinstance(value, str):
+        return pieces
+    words = re.findall(r"[A-Za-z][A-Za-z-]*", value)
+    if words and not _NUMBER_IN_TEXT.search(value):  # an answer in words: the text or its word
+        return (Gap("word", tuple(dict.fromkeys((value.strip(), words[0]))), "0", label),)
+    out: list[Piece] = []
+    at = 0
+    for m in _NUMBER_IN_TEXT.finditer(value):
+        if re.match(r"^-?0\d", m.group()):  # "0010" is a code: a word
+            continue
+        out.extend((value[at : m.start()],) if m.start() > at else ())
+        out.append(number_gap(Fraction(m.group()), label))
+        at = m.end()
+    if not out:
+        return pieces
+    out.extend((value[at:],) if at < len(value) else ())
+    return tuple(out)
 
 
 def gap_tables(answer: Solution | Document, limit: int = MAX_GAPS) -> tuple[GapTable, ...] | None:
@@ -278,6 +331,8 @@ def gap_tables(answer: Solution | Document, limit: int = MAX_GAPS) -> tuple[GapT
             split = step is not None and not step.shown
             if split and table.columns and table.columns[0].key == "k":
                 continue  # the step table, split (the ellipse's regions): asked once
+            if all(c.role == "working" for c in table.columns):
+                continue  # all of it follows from the answers asked (a symmetry table)
             tables.append(_gap_table(table.title, table.columns, table.rows(), True, room))
     except _TooMany:
         return None

@@ -24,11 +24,11 @@ from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING
 
 from ..core.working import UNSAFE
-from .lms import INSTRUCTIONS, Gap, GapTable, Piece, QuizQuestion, quiz
+from . import Notice
+from .lms import INSTRUCTIONS, Gap, GapTable, Piece, QuizQuestion, gaps, quiz
 from .mathml import esc
 
 if TYPE_CHECKING:
-    from . import Notice
     from .sheet import Answered, Sheet
 
 _XML_ILLEGAL = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
@@ -72,37 +72,75 @@ def _cloze_answer(text: str) -> str:
     return _CLOZE_SPECIAL.sub(lambda m: f"&#{ord(m.group())};", clean)
 
 
-def cloze(gap: Gap) -> str:
-    """A blank in Moodle's Cloze syntax (weight 1)."""
+def cloze(gap: Gap, weight: int = 1) -> str:
+    """A blank in Moodle's Cloze syntax, of ``weight`` marks.
+
+    >>> cloze(Gap("number", ("2.5",), "0"), 3)
+    '{3:NUMERICAL:=2.5:0}'
+    """
     if gap.kind == "number":
-        return f"{{1:NUMERICAL:={gap.answers[0]}:{gap.tolerance}}}"
-    return "{1:SHORTANSWER:" + "~".join("=" + _cloze_answer(a) for a in gap.answers) + "}"
+        return f"{{{weight}:NUMERICAL:={gap.answers[0]}:{gap.tolerance}}}"
+    answers = "~".join("=" + _cloze_answer(a) for a in gap.answers)
+    return f"{{{weight}:SHORTANSWER:{answers}}}"
 
 
-def _cell(pieces: Sequence[Piece]) -> str:
-    return "".join(cloze(p) if isinstance(p, Gap) else moodle_text(p) for p in pieces)
+def weights(blanks: int, marks: int | None) -> list[int]:
+    """Each blank's weight, so that the blanks share the question's marks: Moodle scores a
+    Cloze question out of the sum of its blanks' weights (its XML import reads no
+    ``defaultgrade`` for one), so ``marks`` reach it when there are at least as many marks as
+    blanks (the remainder to the first blanks); with more blanks than marks (or no marks),
+    every blank weighs 1 and the quiz's maximum mark for the question is set in Moodle
+    (:func:`marks_notice` says so).
+
+    >>> weights(3, 7), weights(4, 2), weights(2, None)
+    ([3, 2, 2], [1, 1, 1, 1], [1, 1])
+    """
+    if marks is None or marks < blanks or blanks == 0:
+        return [1] * blanks
+    base, extra = divmod(marks, blanks)
+    return [base + (i < extra) for i in range(blanks)]
 
 
-def _table(table: GapTable) -> Iterator[str]:
+def marks_notice(q: QuizQuestion) -> str | None:
+    """What a teacher sets by hand: a question of fewer marks than blanks.
+
+    >>> from scanconv.render.lms import GapTable
+    >>> t = GapTable("t", ("a",), (((Gap("number", ("1",)),), (Gap("number", ("2",)),)),))
+    >>> marks_notice(QuizQuestion("Q1 line", "w", (), (t,), "", 1))
+    'Q1 line to 1 (it has 2 blanks)'
+    """
+    blanks = sum(1 for _ in gaps(q.tables))
+    if q.marks is None or not blanks or q.marks >= blanks:
+        return None
+    return f"{q.name.partition(' ')[0]} {q.name.partition(' ')[2][:30]} to {q.marks} (it has {blanks} blanks)"
+
+
+def _cell(pieces: Sequence[Piece], weight: Iterator[int]) -> str:
+    return "".join(cloze(p, next(weight)) if isinstance(p, Gap) else moodle_text(p) for p in pieces)
+
+
+def _table(table: GapTable, weight: Iterator[int]) -> Iterator[str]:
     yield f"<p><strong>{moodle_text(table.title)}</strong></p>\n"
     yield '<table border="1" cellpadding="4" style="border-collapse:collapse">\n<thead><tr>'
     yield "".join(f"<th>{moodle_text(h)}</th>" for h in table.headings)
     yield "</tr></thead>\n<tbody>\n"
     for row in table.rows:
-        yield "<tr>" + "".join(f"<td>{_cell(c)}</td>" for c in row) + "</tr>\n"
+        yield "<tr>" + "".join(f"<td>{_cell(c, weight)}</td>" for c in row) + "</tr>\n"
     yield "</tbody>\n</table>\n"
 
 
 def question_html(q: QuizQuestion) -> str:
-    """A question's text: wording, given values, instructions and the tables with blanks."""
+    """A question's text: wording, given values, instructions and the tables with blanks,
+    each blank weighted so that they share the question's marks (:func:`weights`)."""
     parts = [f"<p>{moodle_text(q.wording)}</p>\n"]
     if q.given:
         given = ", ".join(moodle_text(g) for g in q.given)
         parts.append(f"<p><strong>Given:</strong> {given}</p>\n")
     if q.tables:
         parts.append(f"<p><em>{moodle_text(INSTRUCTIONS)}</em></p>\n")
+    weight = iter(weights(sum(1 for _ in gaps(q.tables)), q.marks))
     for table in q.tables:
-        parts.extend(_table(table))
+        parts.extend(_table(table, weight))
     return "".join(parts)
 
 
@@ -124,7 +162,7 @@ def _question(q: QuizQuestion) -> str:
         _text("questiontext", question_html(q)),
         _text("generalfeedback", feedback_html(q)),
     ]
-    if kind == "essay":
+    if kind == "essay" or q.marks is not None:  # a Cloze question's marks: its blanks' weights
         parts.append(f"    <defaultgrade>{q.marks if q.marks is not None else 1}</defaultgrade>\n")
     parts.append("    <penalty>0.3333333</penalty>\n    <hidden>0</hidden>\n")
     parts.append("    <idnumber></idnumber>\n")
@@ -153,5 +191,18 @@ def moodle_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
 ) -> Iterator[str | Notice]:
     """The ``moodle`` document writer (:data:`scanconv.render.FORMATS`): the sheet as a
-    Moodle XML quiz (a key and a worksheet are the same quiz)."""
-    return quiz(sheet, answered, moodle_xml)
+    Moodle XML quiz (a key and a worksheet are the same quiz), then a notice for each question
+    whose marks Moodle cannot carry (:func:`marks_notice`)."""
+    questions: list[QuizQuestion] = []
+
+    def write(qs: Sequence[QuizQuestion]) -> str:
+        questions.extend(qs)
+        return moodle_xml(qs)
+
+    yield from quiz(sheet, answered, write)
+    by_hand = [m for m in map(marks_notice, questions) if m is not None]
+    if by_hand:
+        yield Notice(
+            "Moodle scores a Cloze question out of its blanks' weights: set the maximum mark "
+            "in the quiz of " + "; ".join(by_hand)
+        )
