@@ -296,8 +296,10 @@ class Blank(NamedTuple):
     rows: int
     widths: tuple[int, ...]
     """The widest answer cell of each column, in characters (the space to leave)."""
-    labels: tuple[str, ...] = ()
-    """The first column's cells when they only number or name the rows (:data:`LABELS`)."""
+    filled: tuple[tuple[str, ...], ...] = ()
+    """Each row's cells a worksheet fills in, the others ``""``: the first column when it only
+    numbers or names the rows (:data:`LABELS`), and every column whose role is ``label`` or
+    ``given`` (:data:`scanconv.core.records.ROLES`: a point's name and coordinates)."""
     sample: tuple[tuple[str, ...], ...] = ()
     """The first rows of the answer's table, to split a wide table as the key splits it
     (never shown)."""
@@ -314,15 +316,18 @@ def _blank_tables(solution: Solution, count: bool = True) -> list[Blank]:
     for title, columns, rows in all_tables(solution):
         n = 0
         widths = [len(c.text) for c in columns]
-        labels: list[str] = []
+        filled: list[tuple[str, ...]] = []
         sample: list[tuple[str, ...]] = []
-        numbered = bool(columns) and columns[0].key in LABELS
+        shown = [
+            (j == 0 and c.key in LABELS) or c.role in ("label", "given")
+            for j, c in enumerate(columns)
+        ]
         if count:
             for row in rows():
                 n += 1
                 widths = [max(w, len(c)) for w, c in zip(widths, row, strict=True)]
-                if numbered:
-                    labels.append(row[0])
+                if any(shown):
+                    filled.append(tuple(c if s else "" for c, s in zip(row, shown, strict=True)))
                 if n <= 100:
                     sample.append(tuple(row))
         out.append(
@@ -331,7 +336,7 @@ def _blank_tables(solution: Solution, count: bool = True) -> list[Blank]:
                 tuple(columns),
                 n,
                 tuple(widths),
-                tuple(labels),
+                tuple(filled),
                 tuple(sample),
             )
         )
@@ -339,11 +344,10 @@ def _blank_tables(solution: Solution, count: bool = True) -> list[Blank]:
 
 
 def _blank_rows(blank: Blank) -> Iterator[list[str]]:
-    """The rows of an empty table: the row labels filled in (:data:`LABELS`), the rest empty."""
+    """The rows of an empty table: the row labels and given values filled in
+    (:attr:`Blank.filled`), the rest empty."""
     for i in range(blank.rows):
-        yield [
-            blank.labels[i] if j == 0 and blank.labels else "" for j in range(len(blank.columns))
-        ]
+        yield list(blank.filled[i]) if blank.filled else [""] * len(blank.columns)
 
 
 # --- markdown and plain -------------------------------------------------------------------------
