@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING
 from ..core import lazy
 from ..core.checks import InputError
 from ..core.records import Solution
-from ..core.student_table import Cell, StudentTable, read_raw, read_table
+from ..core.student_table import Cell, StudentTable, read_raw, read_table, resolve_move
 from .marking_diagnose import OTHER_FORM, diagnose, model_for, other_form, states_steps
 from .marking_rows import (
     LAYOUTS,
@@ -112,7 +112,7 @@ def expect(
     if by_rule is None or model.done(s, by_rule):
         return None
     moves = model.moves(s)
-    said = got.decision if ("decision" in marked and got.decision in moves) else None
+    said = resolve_move(got.decision, moves) if "decision" in marked else None
     mine = said
     pix = pixel_of(got) if "pixel" in marked else None
     if mine is None and pix is not None:

@@ -20,7 +20,7 @@ from typing import Any, NamedTuple
 
 from ..core.numeric import Number
 from ..core.records import Pixel
-from ..core.student_table import Cell, StudentTable
+from ..core.student_table import Cell, StudentTable, same_move
 from .models import State
 
 Pair = tuple[Cell | None, Cell | None]
@@ -267,7 +267,11 @@ def wrong_fields(got: Got, exp: Expected, marked: set[str], last: bool) -> tuple
             wrong.append("exact")
     if "p" in marked and exp.p is not None and not same(got.p, exp.p):
         wrong.append("p")
-    if "decision" in marked and exp.decision is not None and got.decision != exp.decision:
+    if (
+        "decision" in marked
+        and exp.decision is not None
+        and not same_move(got.decision, exp.decision)
+    ):
         wrong.append("decision")
     if (
         "p_next" in marked

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 
 from ..core.numeric import Number, fmt_short
 from ..core.records import Quantity, Solution, Table, heading
-from ..core.student_table import Cell
+from ..core.student_table import UNREADABLE, Cell
 from .marking_rows import Expected, Got, Marking, RowText, Verdict
 from .models import State
 
@@ -28,6 +28,20 @@ def _num(c: Cell | None) -> str:
     return "blank" if c is None else fmt_short(c.value)
 
 
+def decision_text(decision: str | None) -> str:
+    """A student's decision as the marking names it: the move, the word written, ``blank``,
+    or the text that names no move, quoted.
+
+    >>> decision_text("NE"), decision_text("diagonal"), decision_text(None), decision_text("?keep")
+    ('NE', 'diagonal', 'blank', "'keep' (not a move)")
+    """
+    if decision is None:
+        return "blank"
+    if decision.startswith(UNREADABLE):
+        return f"{decision[len(UNREADABLE) :]!r} (not a move)"
+    return decision
+
+
 def got_text(got: Got | RowText | None, fields: Sequence[str]) -> str:
     """A student's step in a few words: ``p = -8, E, (4, 3)``."""
     if got is None:
@@ -39,7 +53,7 @@ def got_text(got: Got | RowText | None, fields: Sequence[str]) -> str:
         if f == "p":
             parts.append(f"p = {_num(got.p)}")
         elif f == "decision":
-            parts.append(got.decision or "blank")
+            parts.append(decision_text(got.decision))
         elif f == "pixel":
             pt = got.point or (None, None)
             parts.append(f"({_num(pt[0])}, {_num(pt[1])})")
