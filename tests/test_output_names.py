@@ -73,3 +73,28 @@ def test_a_section_by_number_or_slug_start(section, heading):
     r = run("exam", "-s", section, "-f", "plain")
     assert r.code == 0, r.err
     assert heading.lower() in r.out.lower()
+
+
+@pytest.mark.parametrize("argv", [LINE, ("exam", "-s", "1"), ("circle", "5", "-f", "markdown")])
+def test_text_is_never_written_under_a_pdf_name(tmp_path, argv):
+    out = tmp_path / "a.pdf"
+    r = run(*argv, "-o", str(out))
+    assert r.code == 2 and r.out == "" and "not a PDF" in r.err and "--pdf" in r.err
+    assert not out.exists()
+
+
+@pytest.mark.external  # pdflatex
+@pytest.mark.parametrize("command", ["sheet", "practice"])
+def test_a_document_to_a_pdf_name_is_its_pdf(tmp_path, command):
+    from .external import tool
+
+    tool("pdflatex")
+    out = tmp_path / "key.pdf"
+    if command == "sheet":
+        q = tmp_path / "q.txt"
+        q.write_text("line 2 2 10 6\n")
+        r = run("sheet", str(q), "-o", str(out))
+    else:
+        r = run("practice", "-t", "line", "-n", "1", "--seed", "1", "-o", str(out))
+    assert r.code == 0, r.err
+    assert r.out == "" and out.read_bytes().startswith(b"%PDF-")

@@ -206,6 +206,12 @@ def named_format(fmt: str, path: Path | None) -> str | None:
     >>> named_format("auto", Path("a.tex")), named_format("csv", Path("notes.md"))
     ('latex', 'markdown')
     """
+    if path is not None and path.suffix.lower() == ".pdf":  # never text under a PDF's name
+        fail(
+            f"--output {path}: this command writes text, not a PDF: -o "
+            f"{path.with_suffix('.tex')} for LaTeX, or a question file through scanconv sheet "
+            f"FILE --pdf {path}"
+        )
     named = EXTENSIONS.get(path.suffix.lower()) if path is not None else None
     if named is not None and fmt not in ("auto", named) and FORMATS[named].binding:
         fail(f"--output {path} is {named} by its extension, but --format is {fmt}")

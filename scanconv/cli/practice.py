@@ -25,7 +25,7 @@ from ..render.sheet import sheet_document
 from .application import app
 from .options import DocumentFormatOpt, OutputOpt, integer
 from .output import check_paths, document_format, fail, note, write_all
-from .sheet import answer_questions, pdf_file, read_questions, text_file, write_document
+from .sheet import answer_questions, pdf_file, pdf_output, read_questions, text_file, write_document
 
 if TYPE_CHECKING:
     from ..answers import practice as answers_practice
@@ -138,6 +138,7 @@ def practice(
     ] = None,
 ) -> None:
     """Practice questions from a seed, as a worksheet and its answer key."""
+    output, pdf = pdf_output(output, pdf)
     seed, name = _checked(count, seed, fmt, output, key, questions, pdf)
     docs = _documents(topic, count, seed, difficulty, name, output, key, pdf, standalone)
     files = [pdf_file(pdf, docs.worksheet_tex)] if docs.worksheet_tex is not None and pdf else []

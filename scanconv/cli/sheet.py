@@ -240,6 +240,7 @@ def sheet(
     kind = "worksheet" if worksheet else "key"
     if pdf == "":
         fail("--pdf needs a file name")
+    output, pdf = pdf_output(output, pdf)
     check_paths([("QUESTIONS", questions)], [("--output", output), ("--pdf", pdf)])
     name = document_format(fmt, output)
     try:
@@ -255,6 +256,19 @@ def sheet(
     write_outputs(text, output, latex, pdf, quiet=fmt == "auto")
     for message in dict.fromkeys(notices):
         note(message)
+
+
+def pdf_output(output: Path | None, pdf: str | None) -> tuple[Path | None, str | None]:
+    """``-o FILE.pdf`` as ``--pdf FILE.pdf`` (a document's PDF, typeset by pdflatex), so that
+    no other format is written under a PDF's name; with ``--pdf`` as well it is refused
+    later (:func:`~scanconv.cli.output.named_format`).
+
+    >>> pdf_output(Path("key.pdf"), None), pdf_output(Path("key.md"), None)
+    ((None, 'key.pdf'), (PosixPath('key.md'), None))
+    """
+    if output is not None and output.suffix.lower() == ".pdf" and pdf is None:
+        return None, str(output)
+    return output, pdf
 
 
 def write_outputs(
