@@ -374,7 +374,7 @@ DIAGNOSES = [
     ("wikipedia.csv", ("line", "10", "6", "2", "2"), "tie = keep"),
     ("wikipedia.csv", ("line", "10", "6", "2", "2"), "start = given"),
     # the notes' printed table, copied
-    ("notes-e1.md", LINE, "the table the course notes print"),
+    ("notes-e1.md", LINE, "exactly the one the course notes print"),
     # p0 = 2*4*2.5 - 2*8*3 = -28, then the algorithm run correctly from it: -28 -20 -12 -4 4
     # (6,2), NE (7,3) -4, E (8,3) 4, NE (9,4) -4, E (10,4) 4
     ("notes-p0-run.csv", LINE, "p0 = 2"),

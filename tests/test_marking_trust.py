@@ -289,7 +289,7 @@ def test_the_notes_own_tables_are_read_as_printed(tmp_path):
     result = check_text(tmp_path, "dda.tsv", NOTES_DDA_TSV, *LINE, "--algo", "dda")
     assert (result["score"], result["out_of"]) == (8, 8)
     result = check_text(tmp_path, "e1.txt", NOTES_E1_TSV, *LINE)
-    assert "the table the course notes print" in result["diagnosis"]
+    assert "exactly the one the course notes print" in result["diagnosis"]
 
 
 def test_headings_with_k_plus_1_and_units_are_read(tmp_path):

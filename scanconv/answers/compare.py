@@ -529,7 +529,7 @@ def compare_curves() -> Solution:
         derived=(),
         notes=(
             "A clamped B-spline does pass through its first and last control points "
-            "(docs/errata.md, E4); the notes' 'does not pass' holds for unclamped knots.",
+            "(erratum E4); the notes' 'does not pass' holds for unclamped knots.",
         ),
         tables=(
             th.theory_table(

@@ -239,7 +239,7 @@ def _line_mistakes(solution: Solution, model: BresenhamLine) -> list[Variant]:
             MISTAKE,
             f"the course notes' p0 = 2Δy(y0 + 1/2) - 2Δx(x0 + 1) = {fmt_short(notes.p0())} "
             "with the start point's own coordinates, which does not follow from the "
-            "algorithm (docs/errata.md, E1)",
+            "algorithm (erratum E1)",
             _chain_of(notes),
         )
     ]
@@ -249,7 +249,7 @@ def _line_mistakes(solution: Solution, model: BresenhamLine) -> list[Variant]:
                 Variant(
                     MISTAKE,
                     "the table the course notes print for this line, from their p0 = -28 "
-                    "(docs/errata.md, E1)",
+                    "(erratum E1)",
                     lambda extra=extra: _notes_e1(extra),  # type: ignore[misc]
                     False,
                 )
@@ -363,4 +363,16 @@ def diagnose(
         return ""
     best = min(r for r, _ in found)
     labels = list(dict.fromkeys(label for r, label in found if r == best))
-    return "The table is exactly that of " + "; or of ".join(labels) + "."
+    return "The table is exactly " + "; or ".join(map(_as_match, labels)) + "."
+
+
+def _as_match(label: str) -> str:
+    """A variant's label after "The table is exactly": ``the one ...`` for a printed table,
+    ``that of ...`` for a convention or a mistake.
+
+    >>> _as_match("the table the course notes print"), _as_match("a tie kept")
+    ('the one the course notes print', 'that of a tie kept')
+    """
+    if label.startswith("the table "):
+        return "the one " + label[len("the table ") :]
+    return "that of " + label

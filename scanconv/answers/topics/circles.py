@@ -125,7 +125,7 @@ def general() -> Solution:
             "$p = p + 2x - 2y + 1$ (with the new x and y).",
             "Algorithm: " + _ALGORITHM,
             "The notes' 14-mark version starts from $p = 1 - r$, the midpoint form; the notes' "
-            "worked table for r = 5 does not follow from either rule (see docs/errata.md). The "
+            "worked table for r = 5 does not follow from either rule (erratum E8). The "
             "example runs the method as its algorithm box states it.",
         ),
         points=(
@@ -170,7 +170,7 @@ def symmetric_dda() -> Solution:
             "rotates the point by a small angle $\\varepsilon = 2^{-n}$ with "
             "$2^{n-1} \\le r < 2^n$: $x_{k+1} = x_k + \\varepsilon y_k$, "
             "$y_{k+1} = y_k - \\varepsilon x_{k+1}$. scanconv runs that version (see "
-            "docs/errata.md for the notes' table).",
+            "erratum E9 for the notes' table).",
         ),
         points=(
             "Simple and easy.",
@@ -203,7 +203,7 @@ def bresenham() -> Solution:
             "scanconv circle R --method bresenham uses Bresenham's own $p_0 = 3 - 2r$ "
             "($p = p + 4x + 6$ or $p = p + 4(x - y) + 10$); --method midpoint the notes' "
             "$p = 1 - r$. Both choose the same pixels. The notes' worked table for r = 5 does "
-            "not follow from the algorithm (see docs/errata.md, E10).",
+            "not follow from the algorithm (erratum E10).",
         ),
         points=(
             "Uses only integer arithmetic.",

@@ -176,7 +176,7 @@ def bresenham() -> Solution:
             "$p_{k+1} = p_k + 2\\Delta y - 2\\Delta x$; repeat $\\Delta x$ times. "
             "(scanconv line 2 2 10 6 --algo bresenham --derive derives it.) The notes' worked "
             "example starts from $p_0 = -28$, which does not follow from the algorithm (see "
-            "docs/errata.md, E1); the example below runs the algorithm itself.",
+            "erratum E1); the example below runs the algorithm itself.",
             "Assumptions: $0 \\le m \\le 1$; if $m > 1$ interchange x and y; if the line is "
             "drawn right to left, interchange the end points.",
             "Applications: computer graphics systems, CAD/CAM, game development, drawing and "
