@@ -90,9 +90,9 @@ POINTS_12 = [str(i % 5) for i in range(24)]
 BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "answers.color.MAX_BITS": [(["color", "rgb", "1", "2", "3", "--bits", "17"], "1..16")],
     "answers.practice.MAX_COUNT": [(["practice", "--count", "201", "--seed", "1"], "200")],
-    "questions.files.MAX_FILE_BYTES": [(["sheet", str(BIG_SHEET)], "1,000,000 bytes")],
+    "questions.limits.MAX_FILE_BYTES": [(["sheet", str(BIG_SHEET)], "1,000,000 bytes")],
     "questions.files.MAX_QUESTIONS": [(["sheet", str(SHEETS / "too-many-questions.txt")], "1000")],
-    "questions.files.MAX_LINE_CHARS": [(["sheet", str(LONG_LINE)], "10,000")],
+    "questions.limits.MAX_LINE_CHARS": [(["sheet", str(LONG_LINE)], "10,000")],
     "algorithms.dither.MAX_CELLS": [
         (["dither", "threshold", "--image", ";".join([" ".join(["1"] * 65)] * 64)], "4,096")
     ],

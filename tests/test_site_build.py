@@ -147,10 +147,10 @@ def test_a_rebuild_replaces_the_site_and_a_failed_one_keeps_it(
     site = tmp_path / "site"
     (tmp_path / f"pyodide-{build.PYODIDE_VERSION}.tgz").write_bytes(fake_runtime)
     build_site(site, _exam, cache=tmp_path, fetch=_no_network)
-    (site / "stale.txt").write_text("from an older build")
+    (site / "index.html").unlink()  # a file a build writes, missing: no loss to replace it
     build_site(site, lambda: "<p>new</p>", cache=tmp_path, fetch=_no_network)
-    assert not (site / "stale.txt").exists()
     assert (site / "exam.html").read_text() == "<p>new</p>"
+    assert (site / "index.html").is_file()
 
     def broken(exam_html: str, archive: bytes):  # type: ignore[no-untyped-def]
         yield "index.html", b"half"
@@ -163,6 +163,140 @@ def test_a_rebuild_replaces_the_site_and_a_failed_one_keeps_it(
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
         [site.name, f"pyodide-{build.PYODIDE_VERSION}.tgz"]
     )
+
+
+# --- what a build may replace (issue 38, N3 and N10) ------------------------------------------
+
+
+def _tree(folder: Path) -> dict[str, bytes | None]:
+    """Every entry under ``folder`` by its path: a file's bytes, a folder's ``None``."""
+    return {
+        p.relative_to(folder).as_posix(): (p.read_bytes() if p.is_file() else None)
+        for p in sorted(folder.rglob("*"))
+    }
+
+
+@pytest.fixture
+def cached(tmp_path: Path, fake_runtime: bytes) -> Path:
+    """A cache holding the fake runtime (a build from it needs no network)."""
+    cache = tmp_path / "cache"
+    cache.mkdir()
+    (cache / f"pyodide-{build.PYODIDE_VERSION}.tgz").write_bytes(fake_runtime)
+    return cache
+
+
+@pytest.fixture
+def built(tmp_path: Path, cached: Path) -> Path:
+    """A site a build wrote, from the fake runtime."""
+    site = tmp_path / "site"
+    build_site(site, _exam, cache=cached, fetch=_no_network)
+    return site
+
+
+MANIFESTS = {
+    "an empty object": "{}\n",
+    "another program's settings": '{"name": "my-thesis", "theme": "dark"}\n',
+    "a build's keys and one more": '{"scanconv": "1", "pyodide": "2", "wheels": [], "x": 1}',
+    "a wheel outside the folder": '{"scanconv": "1", "pyodide": "2", "wheels": ["../t.whl"]}',
+    "not JSON": "site: yes\n",
+}
+
+
+@pytest.mark.parametrize("name", MANIFESTS)
+def test_a_folder_with_a_site_json_a_build_did_not_write_is_refused_and_left_alone(
+    tmp_path: Path, cached: Path, name: str
+) -> None:
+    """attack-report N3: a folder holding any file named site.json was emptied."""
+    proj = tmp_path / "proj"
+    (proj / "chapters").mkdir(parents=True)
+    (proj / "site.json").write_text(MANIFESTS[name])
+    (proj / "thesis.tex").write_text("my precious thesis")
+    (proj / "chapters" / "1.tex").write_text("ch1")
+    before = _tree(proj)
+    r = run("site", "build", str(proj), "--cache", str(cached))
+    assert_refused(r, "not a scanconv site")
+    assert _tree(proj) == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["cache", "proj"]
+
+
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+def test_a_built_site_is_rebuilt(tmp_path: Path, cached: Path, built: Path) -> None:
+    (built / "exam.html").write_text("older")
+    r = run("site", "build", str(built), "--cache", str(cached))
+    assert r.code == 0, r.err
+    assert r.err.startswith(f"scanconv: wrote {built}: ")
+    assert (built / "exam.html").read_text() != "older"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["cache", "site"]
+
+
+ADDED = {  # what a user adds to a built site, and how the refusal names it
+    "CNAME": ("CNAME", "CNAME"),
+    ".htaccess": (".htaccess", ".htaccess"),
+    "a folder of one's own": ("extra/notes.md", "extra/"),
+    "a file among the wheels": ("wheels/mine.whl", "wheels/mine.whl"),
+    "a file among the runtime's": ("pyodide/custom.js", "pyodide/custom.js"),
+}
+
+
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.parametrize("name", ADDED)
+def test_a_built_site_with_a_file_a_build_does_not_write_is_refused_naming_it(
+    tmp_path: Path, cached: Path, built: Path, name: str
+) -> None:
+    path, shown = ADDED[name]
+    (built / path).parent.mkdir(exist_ok=True)
+    (built / path).write_text("mine")
+    before = _tree(built)
+    r = run("site", "build", str(built), "--cache", str(cached))
+    assert_refused(r, f"files a build does not write ({shown})", "would delete")
+    assert _tree(built) == before
+
+
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+def test_a_link_in_a_built_site_is_refused(tmp_path: Path, cached: Path, built: Path) -> None:
+    """A build writes plain files: a link where one of them was is not the build's."""
+    (built / "exam.html").unlink()
+    (built / "exam.html").symlink_to(tmp_path / "cache")
+    r = run("site", "build", str(built), "--cache", str(cached))
+    assert_refused(r, "files a build does not write (exam.html)")
+    linked = tmp_path / "linked"
+    linked.symlink_to(built)
+    assert_refused(run("site", "build", str(linked), "--cache", str(cached)), "symbolic link")
+    assert (built / "exam.html").is_symlink() and (tmp_path / "cache").is_dir()
+
+
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+def test_building_into_the_current_folder_is_refused_and_leaves_nothing(
+    tmp_path: Path, cached: Path, built: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """attack-report N10: ``site build .`` left an empty ``..XXXXXXXX.old`` folder."""
+    before = _tree(tmp_path)
+    monkeypatch.chdir(built)
+    assert_refused(run("site", "build", ".", "--cache", str(cached)), "current folder")
+    monkeypatch.chdir(built / "wheels")
+    assert_refused(run("site", "build", "..", "--cache", str(cached)), "current folder")
+    assert _tree(tmp_path) == before
+
+
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+def test_a_site_that_cannot_be_moved_aside_leaves_no_temporary_folder(
+    tmp_path: Path, cached: Path, built: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import os
+
+    before = _tree(tmp_path)
+    real = os.replace
+
+    def busy(src, dst):  # type: ignore[no-untyped-def]
+        if Path(src) == built:
+            raise OSError(16, "Device or resource busy")
+        return real(src, dst)
+
+    monkeypatch.setattr(os, "replace", busy)
+    r = run("site", "build", str(built), "--cache", str(cached))
+    assert r.code == 1 and r.out == ""
+    assert r.err == f"scanconv: error: cannot write {built}: Device or resource busy\n"
+    assert _tree(tmp_path) == before
 
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
@@ -220,3 +354,45 @@ def test_a_question_longer_than_a_sheet_line_is_refused_by_the_page() -> None:
 
     got = solve_page("line 2 2 10 6 " + "x" * MAX_LINE_CHARS)
     assert got["ok"] is False and f"at most {MAX_LINE_CHARS:,} characters" in got["error"]
+
+
+# --- the page's budget (issue 38, N2) -------------------------------------------------------
+
+BEYOND = {  # refused by the command line in the page's formats: 288 s and 108 s on the page
+    "circle 2800000": "csv",
+    "line 0 0 1999999 1": "plain or csv",
+    "line 0 0 1000000000 1": None,  # no format prints it: the library's words alone
+}
+
+
+@pytest.mark.parametrize("question", BEYOND)
+def test_the_page_refuses_beyond_the_budget_before_any_work(question: str) -> None:
+    """Counted in calls, with a guard that stops the work (computing the rows is millions of
+    calls): the CLI's refusal in html, the library's words, then what prints it."""
+    from scanconv import questions
+
+    from .helpers import interpreter_calls
+
+    shown, calls = interpreter_calls(solve_page, question, stop_after=200_000)
+    assert calls < 100_000, calls  # the grammar and the estimate, not a row
+    assert shown["ok"] is False
+    cli = run(*question.split(), "--format", "html")
+    assert cli.code == 2 and cli.out == ""
+    with pytest.raises(ValueError) as library:
+        questions.check_budget(questions.parse(question), "html")
+    assert cli.err.startswith(f"scanconv: error: {library.value}")
+    ways = BEYOND[question]
+    tail = "" if ways is None else f"; scanconv on a computer prints it as {ways}"
+    assert shown["error"] == f"{library.value}{tail}"
+
+
+def test_the_page_checks_json_too() -> None:
+    """A question html prints at once but json beyond its budget (the page holds both)."""
+    from scanconv import questions
+
+    question = "polygon 0 0 1 0 0 300000"  # html costs 83 us a scan line, json 192
+    line = questions.parse(question)
+    with pytest.raises(ValueError) as refused:
+        questions.check_budget(line, "json")
+    questions.check_budget(line, "html")
+    assert solve_page(question)["error"].startswith(str(refused.value))

@@ -5,9 +5,10 @@ work, in the output format the command will write, and words a refusal as one li
 size, the limit and the formats that would print it, as options of this command line
 (``use --format plain, csv or json``). :func:`check_question` checks a question of a sheet,
 practice set, exam or ``check`` against the document budget
-(:func:`scanconv.render.budget.check_question`). Both go through :func:`library_call`, which
-names the library function a command calls (the estimates and the costs are the library's,
-:mod:`scanconv.render.work`).
+(:func:`scanconv.render.budget.check_question`). Both go through the library's
+:func:`~scanconv.questions.budget.library_call`, which names the library function a command
+calls (the one the site and :func:`scanconv.questions.check_budget` use; the estimates and the
+costs are :mod:`scanconv.render.work`'s).
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from ..questions.budget import LIBRARY_NAMES, library_call
 from ..render.budget import BudgetError, check_work
 from ..render.budget import check_question as check_in_document
 from ..render.work import ESTIMATES, Work
@@ -23,16 +25,6 @@ from .output import Output, format_for_file, resolve
 
 __all__ = ["DOCUMENT_COMMANDS", "ESTIMATES", "LIBRARY_NAMES", "check", "check_question"]
 __all__ += ["estimate", "library_call"]
-
-LIBRARY_NAMES = {
-    "compare_line": "compare_lines",
-    "compare_circle": "compare_circles",
-    "image_ramp": "ramp",
-    "fill_boundary": "fill",
-    "fill_flood": "fill",
-}
-"""The library function of each command whose name differs (the others share theirs)."""
-
 
 DOCUMENT_COMMANDS = {
     "sheet": "each question (check_question) and their total (render.budget.document)",
@@ -43,23 +35,6 @@ DOCUMENT_COMMANDS = {
     "check": "the question (check_question); --batch: render.budget.check_batch",
 }
 """The commands that run other commands as questions, and how their work is bounded."""
-
-
-def library_call(name: str, arguments: Mapping[str, Any]) -> tuple[str, Mapping[str, Any]]:
-    """The library function that command ``name`` calls for ``arguments``, and its arguments.
-
-    >>> library_call("bezier", {"points": [0, 0, 1, 1], "t": "1/2"})[0]
-    'bezier_at'
-    >>> library_call("image_ramp", {"size": "8"})[0]
-    'ramp'
-    """
-    if name in ("bezier", "bspline") and arguments.get("t") is not None:
-        return name + "_at", arguments
-    if name == "bspline" and arguments.get("basis"):
-        return "bspline_basis", arguments
-    if name == "continuity" and arguments.get("values") is not None:
-        return name, {**arguments, "first": arguments["values"]}
-    return LIBRARY_NAMES.get(name, name), arguments
 
 
 def estimate(name: str, arguments: Mapping[str, Any]) -> Work | None:

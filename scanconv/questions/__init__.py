@@ -3,7 +3,12 @@ question, parsed and answered in the library, without the command line.
 
 * :func:`parse` reads a question into a :class:`CommandLine` (the command, its arguments, its
   display options); :func:`solve` answers it; :func:`answer` does both
-  (``scanconv.questions.answer("circle 5")``).
+  (``scanconv.questions.answer("circle 5")``), after :func:`check_budget`, which refuses a
+  question beyond the work budget of a format before any work (the one check the command line,
+  the site and the MCP server make).
+* A question longer than :data:`~.limits.MAX_LINE_CHARS` characters, or a question file's
+  text beyond :data:`~.limits.MAX_FILE_BYTES` bytes, is refused before it is read
+  (:mod:`.limits`).
 * :func:`read_questions` and :func:`read_file` read a question file (:mod:`.files`).
 * :func:`check` marks a student's table against a question.
 

@@ -3,6 +3,7 @@
 from .answering import answer as answer
 from .answering import shown_with as shown_with
 from .answering import solve as solve
+from .budget import check_budget as check_budget
 from .files import QuestionError as QuestionError
 from .files import read_file as read_file
 from .files import read_questions as read_questions
@@ -18,6 +19,7 @@ __all__ = [
     "UsageError",
     "answer",
     "check",
+    "check_budget",
     "marking_question",
     "parse",
     "read_file",

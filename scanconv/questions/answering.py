@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 from ..core.checks import InputError
 from ..display import Answer
 from ..render import Options
+from .budget import estimated
 from .commands import BODIES
 from .grammar import error_message
 from .parser import CommandLine, parse
@@ -62,7 +63,10 @@ def shown_with(line: CommandLine, where: str = "the sheet") -> Options:
 def answer(question: str | Sequence[str]) -> Answer:
     """The answer of a question written as scanconv's own arguments, computed by the library
     (no command line involved): the words as a string, split as a shell splits them, or a
-    list of words.
+    list of words. Before any work, the question's length is checked
+    (:data:`~scanconv.questions.limits.MAX_LINE_CHARS`) and its work budget
+    (:func:`~scanconv.questions.budget.check_budget`: what no format prints is refused; the
+    answer's ``to(fmt)`` checks the budget of ``fmt``).
 
     >>> answer("line 2 2 10 6 --algo dda").algorithm
     'dda'
@@ -72,6 +76,12 @@ def answer(question: str | Sequence[str]) -> Answer:
     Traceback (most recent call last):
     ...
     scanconv.questions.words.UsageError: Invalid value for '--algo' / '-a': 'zzz' is not one of 'bresenham', 'dda', 'basic', 'wu', 'midpoint'.
+    >>> answer("line 0 0 1000000000 1")
+    Traceback (most recent call last):
+    ...
+    scanconv.render.budget.BudgetError: the table has about 1,000,000,001 rows; no format prints more than 2,000,000 (a minute of output)
     """
-    solution = solve(parse(question))
+    line = parse(question)
+    estimated(line, None)
+    solution = solve(line)
     return solution if isinstance(solution, Answer) else Answer.of(solution)

@@ -21,14 +21,13 @@ from __future__ import annotations
 import re
 
 from ..render.sheet import Question, Sheet
+from .limits import MAX_FILE_BYTES, MAX_LINE_CHARS, check_text_size
+
+__all__ = ["MAX_FILE_BYTES", "MAX_LINE_CHARS", "MAX_QUESTIONS", "QuestionError"]
+__all__ += ["read_file", "read_questions", "split_lines", "strip_comment"]
 
 MAX_QUESTIONS = 1000
 """The most questions one sheet takes (a 200-question key is the benchmark)."""
-MAX_FILE_BYTES = 1_000_000
-"""The largest question file read."""
-MAX_LINE_CHARS = 10_000
-"""The longest line of a question file: a question with a 1,000-vertex polygon is under 10,000
-characters (splitting a line into words takes time growing with its square)."""
 
 
 class QuestionError(ValueError):
@@ -84,7 +83,10 @@ def split_lines(text: str) -> list[str]:
 
 
 def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
-    """Parse a question file (the syntax is in this module's docstring).
+    """Parse a question file (the syntax is in this module's docstring). A text beyond
+    :data:`MAX_FILE_BYTES` is refused (``ValueError``) before any line is read, as
+    :func:`read_file` refuses the file, and a line beyond :data:`MAX_LINE_CHARS` before it
+    is split into words.
 
     >>> sheet = read_questions("title: Test\\n# c\\n[4] line 2 2 10 6 --algo dda\\ncircle 8\\n")
     >>> sheet.title, [(q.number, q.line, q.marks, q.argv[0]) for q in sheet.questions]
@@ -101,6 +103,7 @@ def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
     """
     import shlex
 
+    check_text_size(text, source)
     title = ""
     section = ""
     wording: list[str] = []

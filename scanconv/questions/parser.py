@@ -11,6 +11,7 @@ from typing import Any, NamedTuple
 
 from .grammar import Param, Spec
 from .grammar_table import NOT_QUESTIONS, SHARED, SPECS
+from .limits import check_question_size
 from .words import UsageError, coordinate, integer, no_such_option, number, usage_message
 from .words import words_of as _words_of
 
@@ -56,7 +57,8 @@ def parse(question: str | Sequence[str]) -> CommandLine:
     """Read a question against its command's grammar.
 
     Bad words raise :class:`~scanconv.questions.words.UsageError` (an ``InputError``) worded
-    as the command line words it.
+    as the command line words it; a question longer than a line of a question file
+    (:data:`~scanconv.questions.limits.MAX_LINE_CHARS`) is refused before it is split.
 
     >>> line = parse("line 2,2 10 6 --algo DDA --no-grid")
     >>> line.path, line.arguments["x1"], line.arguments["algo"], line.display["grid"]
@@ -66,6 +68,7 @@ def parse(question: str | Sequence[str]) -> CommandLine:
     ...
     scanconv.questions.words.UsageError: Missing argument 'Y2'.
     """
+    check_question_size(question)
     given = split(question)
     args = _words_of(given)
     bad = next((a for a in args if a in HELP), None)

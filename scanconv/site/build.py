@@ -10,16 +10,21 @@ The folder holds
   packages its question and HTML paths import (:data:`DEPENDENCIES`: zipped from the
   installed distributions, so the browser runs the very versions the command line does);
 * ``index.html``, ``app.js``, ``worker.mjs``, ``site.css`` (:mod:`scanconv.site.static`),
-  ``exam.html`` (the exam book, answered at build time) and ``site.json`` (the wheels to
-  load; its presence marks a folder as a scanconv site, which a later build may replace).
+  ``exam.html`` (the exam book, answered at build time) and ``site.json`` (the manifest:
+  the versions and the wheels to load).
 
-The folder is written beside its destination under a temporary name and renamed into place
-only when complete, so a failure leaves no partial folder (and an older site untouched).
+A later build replaces a folder only if a build wrote it (:func:`check_destination`): its
+``site.json`` is a manifest a build writes and it holds no file a build does not write, so a
+folder that merely holds a file named ``site.json``, or a site someone added a ``CNAME`` to, is
+refused and left as it is. The folder is written beside its destination under a temporary
+name and renamed into place only when complete, so a failure leaves no partial folder, no
+temporary one, and an older site untouched.
 """
 
 from __future__ import annotations
 
 import base64
+import contextlib
 import hashlib
 import io
 import json
@@ -71,6 +76,14 @@ STATIC = ("index.html", "app.js", "worker.mjs", "site.css")
 """The page's own files, in :mod:`scanconv.site.static`."""
 
 MARKER = "site.json"
+"""The manifest of a built site (:data:`MANIFEST_KEYS`)."""
+
+MANIFEST_KEYS = ("scanconv", "pyodide", "wheels")
+"""The keys of the manifest a build writes: scanconv's and Pyodide's versions (text) and the
+wheels' file names (a list of text)."""
+
+MANIFEST_BYTES = 100_000
+"""The largest manifest read (a build writes a few hundred bytes)."""
 
 _ZIP_DATE = (2020, 1, 1, 0, 0, 0)
 """The date of every member of a wheel: the same build gives the same bytes."""
@@ -266,13 +279,83 @@ def site_files(exam_html: str, archive: bytes) -> Iterable[tuple[str, bytes]]:
 
 def check_destination(dest: Path) -> None:
     """Refuse (:class:`~scanconv.core.checks.InputError`, exit 2) a destination that is a
-    file, or a folder with files in it that is not a scanconv site."""
+    file, the current folder (or a folder holding it), or a folder with files in it that a
+    build did not write (:func:`foreign_entries`)."""
+    if dest.is_symlink():
+        raise InputError(f"{dest}: is a symbolic link; give the folder it names")
     if dest.exists() and not dest.is_dir():
         raise InputError(f"{dest}: is a file; give a folder for the site")
-    if dest.is_dir() and any(dest.iterdir()) and not (dest / MARKER).is_file():
+    if not dest.is_dir():
+        return
+    here = Path.cwd().resolve()
+    if dest.resolve() == here or dest.resolve() in here.parents:
         raise InputError(
-            f"{dest}: is a folder with files and not a scanconv site; give a new or empty folder"
+            f"{dest}: is the current folder (or holds it), which a build would replace; "
+            "run it from another folder"
         )
+    if not any(dest.iterdir()):
+        return
+    wheels = manifest_wheels(dest)
+    if wheels is None:
+        raise InputError(
+            f"{dest}: is a folder with files and not a scanconv site (no {MARKER} as a build "
+            "writes it); give a new or empty folder"
+        )
+    extra = foreign_entries(dest, wheels)
+    if extra:
+        shown = ", ".join(extra[:5]) + (f" and {len(extra) - 5} more" if len(extra) > 5 else "")
+        raise InputError(
+            f"{dest}: a site scanconv built, with files a build does not write ({shown}), "
+            "which a build would delete; move them out, or give a new or empty folder"
+        )
+
+
+def manifest_wheels(dest: Path) -> list[str] | None:
+    """The wheels named in ``dest``'s manifest, if it is one a build writes (a JSON object
+    of exactly :data:`MANIFEST_KEYS`, the versions as text, the wheels as plain file names),
+    else ``None``."""
+    path = dest / MARKER
+    try:
+        if path.is_symlink() or not path.is_file() or path.stat().st_size > MANIFEST_BYTES:
+            return None
+        manifest = json.loads(path.read_bytes())
+    except (OSError, ValueError):
+        return None
+    if not isinstance(manifest, dict) or sorted(manifest) != sorted(MANIFEST_KEYS):
+        return None
+    wheels = manifest["wheels"]
+    texts = (manifest["scanconv"], manifest["pyodide"])
+    if not all(isinstance(v, str) for v in texts) or not isinstance(wheels, list):
+        return None
+    if not all(isinstance(w, str) and _plain_name(w) and w.endswith(".whl") for w in wheels):
+        return None
+    return wheels
+
+
+def _plain_name(name: str) -> bool:
+    return bool(name) and name not in (".", "..") and "/" not in name and "\\" not in name
+
+
+def foreign_entries(dest: Path, wheels: Iterable[str]) -> list[str]:
+    """The entries of the built site ``dest`` that no build writes (a ``CNAME``, an
+    ``.htaccess``, a folder of one's own), by their paths in it, sorted: a build's files are
+    :data:`STATIC`, ``exam.html``, :data:`MARKER`, ``pyodide/`` (:data:`RUNTIME_FILES`) and
+    ``wheels/`` (the manifest's ``wheels``), each a plain file (not a link) and each folder a
+    plain folder. A file of an older build's list that this build leaves out is no loss: the
+    check is that nothing else is there."""
+    files = {*STATIC, "exam.html", MARKER}
+    folders = {"pyodide": set(RUNTIME_FILES), "wheels": set(wheels)}
+    extra: list[str] = []
+    for entry in sorted(os.scandir(dest), key=lambda e: e.name):
+        if entry.name in folders and entry.is_dir(follow_symlinks=False):
+            extra += (
+                f"{entry.name}/{inner.name}"
+                for inner in sorted(os.scandir(entry.path), key=lambda e: e.name)
+                if inner.name not in folders[entry.name] or not inner.is_file(follow_symlinks=False)
+            )
+        elif entry.name not in files or not entry.is_file(follow_symlinks=False):
+            extra.append(entry.name + ("/" if entry.is_dir(follow_symlinks=False) else ""))
+    return extra
 
 
 def build_site(
@@ -290,7 +373,8 @@ def build_site(
     at ``dest`` that was not there before.
     """
     check_destination(dest)
-    parent = dest.absolute().parent
+    given, dest = dest, Path(os.path.abspath(dest))  # its own name, even written "x/.."
+    parent = dest.parent
     tmp = Path(tempfile.mkdtemp(prefix=f".{dest.name}.", suffix=".tmp", dir=parent))
     old: Path | None = None
     try:
@@ -308,9 +392,13 @@ def build_site(
         os.replace(tmp, dest)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
-        if old is not None and not dest.exists():
-            os.replace(old, dest)
+        if old is not None:
+            if not dest.exists():
+                os.replace(old, dest)  # the older site back in place
+            else:
+                with contextlib.suppress(OSError):
+                    os.rmdir(old)  # the empty name made for it: the older site never moved
         raise
     if old is not None:
         shutil.rmtree(old, ignore_errors=True)
-    return Built(dest, size, count)
+    return Built(given, size, count)

@@ -3,7 +3,11 @@
 :func:`answer` takes a question as scanconv's own arguments (``line 2 2 10 6 --algo dda``,
 read by the library's parser, :mod:`scanconv.questions`, the same one ``sheet`` uses) and
 returns a JSON object: the answer's title, its HTML step-through page (``--format html``) and
-its data (``--format json``), or the one-line error scanconv gives for that question. Nothing
+its data (``--format json``), or the one-line error scanconv gives for that question. Before
+any work the question goes through the library's checks, the ones the command line makes: its
+length (:data:`~scanconv.questions.limits.MAX_LINE_CHARS`, before it is split into words) and
+the work budget in html and in json (:func:`scanconv.questions.check_budget`), so a question
+the command line refuses at once (``circle 2800000``) is refused here at once too. Nothing
 here needs numpy, typer or rich (Pyodide has none of them).
 """
 
@@ -13,14 +17,14 @@ import json
 from typing import TYPE_CHECKING, Any
 
 from ..core import lazy
-from ..questions.files import MAX_LINE_CHARS  # a question in the box is a line of a sheet
 from ..render import Format, Notice, render
 
 if TYPE_CHECKING:
     from .. import questions
-    from ..questions import parser
+    from ..questions import limits, parser
 else:
     questions = lazy.module("scanconv.questions")
+    limits = lazy.module("scanconv.questions.limits")
     parser = lazy.module("scanconv.questions.parser")
 
 EXAMPLES = (
@@ -66,19 +70,23 @@ def _words(question: str) -> list[str]:
 
 def solve_page(question: str) -> dict[str, Any]:
     """The answer to ``question`` as the page shows it: ``{"ok": True, "title", "html",
-    "json", "notes", "question"}`` (``notes``: what a large answer's page leaves out), or ``{"ok": False, "error"}`` with scanconv's one-line message.
+    "json", "notes", "question"}`` (``notes``: what a large answer's page leaves out), or
+    ``{"ok": False, "error"}`` with scanconv's one-line message.
 
     >>> r = solve_page("line 0 0 3 1 --algo dda")
     >>> r["ok"], r["title"], json.loads(r["json"])["algorithm"]
     (True, 'Simple DDA line algorithm: (0, 0) to (3, 1)', 'dda')
     >>> solve_page("line 2 2 10")["error"]
     "Missing argument 'Y2'."
+    >>> solve_page("circle 2800000")["error"]  # doctest: +ELLIPSIS
+    'the table has about 1,979,900 rows; circle/midpoint in html costs ...; scanconv on a computer prints it as csv'
     """
-    if len(question) > MAX_LINE_CHARS:
-        return {"ok": False, "error": f"question too long (at most {MAX_LINE_CHARS:,} characters)"}
     try:
+        limits.check_question_size(question)  # before it is split into words
         line = questions.parse(_words(question))
         options = questions.shown_with(line, "the page")
+        for fmt in (Format.html, Format.json):  # the page's two formats, before any work
+            _check_budget(line, fmt)
         solution = questions.solve(line)
         chunks = list(render(solution, Format.html, options))
         html = "".join(c for c in chunks if isinstance(c, str))
@@ -102,6 +110,19 @@ def solve_page(question: str) -> dict[str, Any]:
         "notes": notes,
         "question": question,
     }
+
+
+def _check_budget(line: parser.CommandLine, fmt: Format) -> None:
+    """:func:`scanconv.questions.check_budget`, its refusal ending with the formats of the
+    command line that would print the answer (the page shows html and json only)."""
+    try:
+        questions.check_budget(line, fmt)
+    except ValueError as err:
+        ways = [w for w in getattr(err, "ways", ()) if w not in ("html", "json", "raster")]
+        if not ways:
+            raise
+        words = ways[0] if len(ways) == 1 else ", ".join(ways[:-1]) + " or " + ways[-1]
+        raise ValueError(f"{err}; scanconv on a computer prints it as {words}") from None
 
 
 def warm() -> None:
