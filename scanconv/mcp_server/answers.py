@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 from .. import questions
 from ..core import lazy
 from ..core.records import Solution
-from ..questions.files import MAX_LINE_CHARS
+from ..questions import limits
 from ..questions.parser import CommandLine
 from ..render import Format, Options, render
 from ..site.page import _words
@@ -34,6 +34,9 @@ else:  # each only for the tool that needs it
     answers_practice = lazy.module("scanconv.answers.practice")
     student_table = lazy.module("scanconv.core.student_table")
     questions_marking = lazy.module("scanconv.questions.marking")
+
+SHOWN = (Format.json, Format.markdown)
+"""The formats every answer is written in (its budget is checked in each)."""
 
 MAX_PRACTICE = 20
 """Most questions of one practice call: each comes with its whole key, which a chat reads."""
@@ -68,8 +71,7 @@ def text_of(chunks: Iterable[object]) -> str:
 
 def _question(question: str, where: str = "the server") -> tuple[CommandLine, Options]:
     """A question parsed, with the options it is shown with."""
-    if len(question) > MAX_LINE_CHARS:
-        raise ValueError(f"question too long (at most {MAX_LINE_CHARS:,} characters)")
+    limits.check_question_size(question)  # before it is split into words
     line = questions.parse(_words(question))
     return line, questions.shown_with(line, where)
 
@@ -92,8 +94,7 @@ def solve(question: str) -> Reply:
     scanconv.questions.words.UsageError: Missing argument 'Y2'.
     """
     line, options = _question(question)
-    check_budget(line, Format.json)
-    check_budget(line, Format.markdown)
+    check_budget(line, SHOWN)
     data, text = _shown(questions.solve(line), options)
     return Reply.of(data, text)
 
@@ -102,7 +103,7 @@ def page(question: str) -> str:
     """The step-through page (``--format html``, with its test-yourself mode) of
     ``question``: what the MCP App view shows."""
     line, options = _question(question)
-    check_budget(line, Format.html)
+    check_budget(line, [Format.html])
     return text_of(render(questions.solve(line), Format.html, options))
 
 
@@ -114,11 +115,10 @@ def check(question: str, table: str) -> Reply:
     >>> r.data["score"], r.data["out_of"]
     (1, 8)
     """
-    if len(question) > MAX_LINE_CHARS:
-        raise ValueError(f"question too long (at most {MAX_LINE_CHARS:,} characters)")
+    limits.check_question_size(question)
     line = questions_marking.marking_line(_words(question))
     try:
-        check_budget(line, Format.json)
+        check_budget(line, SHOWN)
     except ValueError as err:
         raise ValueError(f"question: {err}") from None
     solution = questions_marking.marking_answer(line)
@@ -148,7 +148,7 @@ def practice(topic: str, count: int, seed: int, difficulty: str) -> Reply:
     for n, q in enumerate(chosen, 1):
         words = shlex.join(q.argv)
         line = questions.parse(list(q.argv))
-        check_budget(line, Format.json)
+        check_budget(line, SHOWN)
         solution = questions.solve(line)
         data, shown = _shown(solution, Options(brief=True))
         items.append(
