@@ -465,6 +465,43 @@ def test_the_mcp_inspector_lists_the_tools_and_calls_solve(inspector):
     assert refused["content"][0]["text"] == cli_error("circle", "-f", "json")
 
 
+@needs_sdk
+def test_http_serves_the_same_answers_bound_to_this_machine_only():
+    import socket
+    import time
+
+    from mcp import Client
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "scanconv", "mcp", "--http", str(port)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
+    try:
+        listening = f"0100007F:{port:04X}"  # 127.0.0.1 in /proc/net/tcp
+        for _ in range(600):  # until it listens (or has died)
+            table = Path("/proc/net/tcp").read_text()
+            if any(f" {listening} 00000000:0000 0A " in ln for ln in table.splitlines()):
+                break
+            assert proc.poll() is None, proc.stderr.read() if proc.stderr else ""
+            time.sleep(0.05)
+        else:
+            pytest.fail("the server did not listen on 127.0.0.1")
+
+        async def solve() -> Any:
+            async with Client(f"http://127.0.0.1:{port}/mcp") as client:
+                return await client.call_tool("solve", {"question": "circle 4"})
+
+        result = asyncio.run(solve())
+        assert texts(result)[1] == cli_json("circle 4")
+    finally:
+        proc.terminate()
+        proc.communicate(timeout=60)
+
+
 # --- the command and the core without the SDK ---------------------------------------------------
 
 PROBE = """
