@@ -349,6 +349,78 @@ def test_the_ui_view_is_the_step_through_page(server):
     assert texts(shown) == [run_process("circle", "8", "-f", "html").out]
 
 
+HOST = """<!DOCTYPE html>
+<html><head><meta charset="utf-8"><title>test host</title></head><body>
+<iframe id="view" sandbox="allow-scripts" style="width:1200px;height:900px"></iframe>
+<script>
+/* a minimal MCP Apps host: it answers the view's ui/initialize, sends the tool input of a solve
+   call, and passes the view's tools/call to the real server (window.callTool, from Python) */
+const frame = document.getElementById("view");
+window.seen = [];
+function reply(message) { frame.contentWindow.postMessage(message, "*"); }
+window.addEventListener("message", async (event) => {
+  if (event.source !== frame.contentWindow) { return; }
+  const m = event.data;
+  window.seen.push(m.method);
+  if (m.method === "ui/initialize") {
+    reply({jsonrpc: "2.0", id: m.id, result: {protocolVersion: m.params.protocolVersion,
+      hostInfo: {name: "test host", version: "1"}, hostCapabilities: {}, hostContext: {}}});
+  } else if (m.method === "ui/notifications/initialized") {
+    reply({jsonrpc: "2.0", method: "ui/notifications/tool-input",
+           params: {arguments: {question: window.QUESTION}}});
+  } else if (m.method === "tools/call") {
+    const result = await window.callTool(m.params.name, JSON.stringify(m.params.arguments));
+    reply({jsonrpc: "2.0", id: m.id, result: JSON.parse(result)});
+  }
+});
+</script></body></html>
+"""
+
+
+@needs_sdk
+@pytest.mark.external  # chromium
+def test_in_a_host_the_view_shows_the_page_of_the_question_solved(server, browser, tmp_path):
+    """The view in a sandboxed iframe of a host page, in Debian's chromium: it introduces
+    itself, learns the question of the solve call, gets that question's page from the server
+    through the host and shows it, stepper and test yourself working; nothing is fetched."""
+    host = tmp_path / "host.html"
+    host.write_text(HOST, encoding="utf-8")
+    (view,) = server.run(server.client.read_resource(URI)).contents
+    tab = browser.new_page()
+    requests: list[str] = []
+    tab.on("request", lambda r: requests.append(r.url))
+
+    def call_tool(name: str, arguments: str) -> str:
+        result = server.call(name, **json.loads(arguments))
+        return json.dumps(result.model_dump(mode="json", by_alias=True, exclude_none=True))
+
+    try:
+        tab.expose_function("callTool", call_tool)
+        tab.goto(host.as_uri())
+        tab.evaluate("window.QUESTION = 'circle 8'")
+        tab.evaluate("(html) => { document.getElementById('view').srcdoc = html; }", view.text)
+        tab.wait_for_function("window.seen.includes('tools/call')")
+        frame = tab.frames[1]
+        frame.wait_for_function("document.title.startsWith('Midpoint circle')")
+        assert frame.evaluate("document.title") == "Midpoint circle algorithm: r = 8, centre (0, 0)"
+        frame.wait_for_function("document.querySelector('section.scanconv[data-pos]') !== null")
+        frame.click("button[data-act=reset]")  # the stepper runs
+        frame.click("button[data-act=next]")
+        frame.click("button[data-act=next]")
+        pos = "+document.querySelector('section.scanconv').getAttribute('data-pos')"
+        assert frame.evaluate(pos) == 2
+        assert frame.locator("button.sc-testbtn").count() == 1  # test yourself
+        seen = tab.evaluate("window.seen")
+        assert seen[:3] == [
+            "ui/initialize",
+            "ui/notifications/initialized",
+            "ui/notifications/size-changed",
+        ]
+        assert all(u.startswith(("file:", "data:", "about:")) for u in requests), requests
+    finally:
+        tab.close()
+
+
 # --- the structured content against the declared schemas --------------------------------------
 
 _points = st.integers(-20, 20)
