@@ -12,11 +12,13 @@ its call; no tool takes a file path.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from typing import Annotated, Any
 
 from mcp.server import MCPServer
-from mcp.server.apps import Apps
+from mcp.server.apps import APP_MIME_TYPE, Apps
+from mcp.server.mcpserver.resources import FunctionResource
 from mcp_types import CallToolResult, TextContent, ToolAnnotations
 
 from .. import __version__
@@ -141,13 +143,16 @@ def build() -> MCPServer[Any]:
             return _refusal(reason)
         return CallToolResult(content=[TextContent(type="text", text=html)])
 
-    apps.add_html_resource(
-        URI,
-        view_html(),
-        name="scanconv stepper",
-        title="Step through the answer",
-        description="The step-through page of the question solve answered, with test yourself.",
-        prefers_border=True,
+    apps.add_resource(  # the page written when a host first reads it, not at start-up
+        FunctionResource(
+            uri=URI,
+            name="scanconv stepper",
+            title="Step through the answer",
+            description="The step-through page of the question solve answered, with test yourself.",
+            mime_type=APP_MIME_TYPE,
+            meta={"ui": {"prefersBorder": True}},
+            fn=functools.cache(view_html),
+        )
     )
     server: MCPServer[Any] = MCPServer(
         NAME,
