@@ -66,13 +66,22 @@ def _rss_mb(pid: int) -> float:
     raise RuntimeError("no VmRSS")
 
 
-async def _first_answer() -> float:
+def _cpu_s(pid: int) -> float:
+    """The CPU time (user and system) process ``pid`` has used: unlike the wall clock, not
+    stretched by the other processes of a loaded machine."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+async def _first_answer() -> tuple[float, float]:
+    """The wall time from launch to the first answer, and the server's CPU time by then."""
     start = time.perf_counter()
     async with Client(_params()) as client:
         result = await client.call_tool("solve", {"question": QUESTION})
         elapsed = time.perf_counter() - start
         assert not result.is_error
-    return elapsed
+        cpu = _cpu_s(_server_pid())
+    return elapsed, cpu
 
 
 def _in_process(question: str, n: int) -> list[float]:
@@ -85,8 +94,11 @@ def _in_process(question: str, n: int) -> list[float]:
 
 
 async def measure(calls: int, launches: int) -> dict[str, Any]:
-    firsts = [await _first_answer() for _ in range(launches)]
+    runs = [await _first_answer() for _ in range(launches)]
+    firsts = [wall for wall, _ in runs]
     out: dict[str, Any] = {"first_answer_s": statistics.median(firsts), "firsts": firsts}
+    out["first_cpu_s"] = statistics.median(cpu for _, cpu in runs)
+    out["load"] = os.getloadavg()[0]
     async with Client(_params()) as client:
         await client.call_tool("solve", {"question": QUESTION})
         pid = _server_pid()
@@ -113,6 +125,8 @@ def report(m: dict[str, Any], calls: int) -> str:
         "|---|---|",
         f"| first answer after launch (median of {len(m['firsts'])}) | "
         f"{m['first_answer_s']:.2f} s (each: {', '.join(f'{t:.2f}' for t in m['firsts'])}) |",
+        f"| the server's CPU time by its first answer (median) | {m['first_cpu_s']:.2f} s |",
+        f"| load average (1 min) at the start, {os.cpu_count()} cores | {m['load']:.1f} |",
     ]
     for question in MIX:
         served, local = m[question]
