@@ -179,7 +179,8 @@ def build() -> MCPServer[Any]:
 
     @server.tool(name="vocabulary", description=VOCABULARY, annotations=READ_ONLY)
     async def vocabulary() -> VocabularyResult:
-        return _reply(lambda: answers.Reply.made(language(), vocabulary_text(language())))
+        words = language()
+        return _reply(lambda: answers.Reply.made(words, vocabulary_text(words)))
 
     return server
 
