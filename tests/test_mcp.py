@@ -578,7 +578,9 @@ def test_http_serves_the_same_answers_bound_to_this_machine_only():
             async with Client(f"http://127.0.0.1:{port}/mcp") as client:
                 return await client.call_tool("solve", {"question": "circle 4"})
 
-        result = asyncio.run(solve())
+        # on a thread of its own: a session's browser tests keep an event loop in this one
+        with concurrent.futures.ThreadPoolExecutor(1) as pool:
+            result = pool.submit(lambda: asyncio.run(solve())).result(timeout=300)
         assert texts(result)[1] == cli_json("circle 4")
     finally:
         proc.terminate()
