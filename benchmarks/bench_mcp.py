@@ -36,6 +36,8 @@ from mcp import Client, StdioServerParameters
 from scanconv.mcp_server import answers
 
 QUESTION = "line 5 5 13 9 --algo bresenham"
+REFUSED = ("line 0 0 1000000000 1", "circle 2800000", "line 2 2 10")
+"""Questions refused: two over the work budget, one bad."""
 MIX = (QUESTION, "circle 8 --method midpoint", "ellipse 8 6", "bezier 0 0 1 2 3 3 4 0")
 
 
@@ -112,6 +114,14 @@ async def measure(calls: int, launches: int) -> dict[str, Any]:
                 served.append(time.perf_counter() - t)
             local = _in_process(question, 50)
             out[question] = (statistics.median(served), statistics.median(local))
+        for question in REFUSED:
+            refusals = []
+            for _ in range(20):
+                t = time.perf_counter()
+                result = await client.call_tool("solve", {"question": question})
+                refusals.append(time.perf_counter() - t)
+                assert result.is_error
+            out[f"refused {question}"] = statistics.median(refusals)
         for round_ in (1, 2):
             for i in range(calls):
                 await client.call_tool("solve", {"question": MIX[i % len(MIX)]})
@@ -133,6 +143,11 @@ def report(m: dict[str, Any], calls: int) -> str:
         lines.append(
             f"| `solve {question}`: warm server / in-process / difference | "
             f"{served * 1000:.1f} ms / {local * 1000:.1f} ms / {(served - local) * 1000:+.1f} ms |"
+        )
+    for question in REFUSED:
+        lines.append(
+            f"| `solve {question}` refused (isError), warm server | "
+            f"{m[f'refused {question}'] * 1000:.1f} ms |"
         )
     lines.append(f"| server RSS at rest (after the first answer) | {m['rss_at_rest_mb']:.1f} MB |")
     for n in (calls, 2 * calls):
