@@ -423,6 +423,7 @@ def test_in_a_host_the_view_shows_the_page_of_the_question_solved(server, browse
 
 # --- the structured content against the declared schemas --------------------------------------
 
+THEORY_TOPICS = ("dda", "bresenham-line", "midpoint-circle", "raster-display", "clipping")
 _points = st.integers(-20, 20)
 _QUESTIONS = st.one_of(
     st.builds(
@@ -482,6 +483,7 @@ def test_structured_content_validates_against_the_declared_schema(
         if not marked.is_error:  # scanconv's own table, as the command line writes it
             assert marked.structured_content["score"] == marked.structured_content["out_of"]
     valid("practice", server.call("practice", topic=topic, count=2, seed=seed))
+    valid("theory", server.call("theory", topic=THEORY_TOPICS[seed % len(THEORY_TOPICS)]))
     valid("vocabulary", server.call("vocabulary"))
 
 
