@@ -20,9 +20,10 @@ import scanconv
 from scanconv import raster
 from scanconv.answers.methods import methods_of
 from scanconv.cli.application import register
-from scanconv.cli.budget import DOCUMENT_COMMANDS, library_call
+from scanconv.cli.budget import DOCUMENT_COMMANDS
 from scanconv.cli.command import Command
 from scanconv.core.checks import InputError
+from scanconv.questions.budget import library_call
 from scanconv.render import Format
 from scanconv.render.budget import (
     ALL_ROWS,

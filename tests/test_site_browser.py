@@ -227,6 +227,100 @@ def test_the_shared_link_reopens_the_same_answer(page: Site) -> None:
         page.page.set_viewport_size({"width": 1280, "height": 900})
 
 
+def _open_link(page: Site, hash: str) -> None:
+    """Open the link ``hash`` on the page, as a click on a shared link does (a hash change:
+    the same code as a page opened at it), and wait for its answer or its error."""
+    n = page.answers()
+    page.page.evaluate("(h) => { location.hash = h; }", hash)
+    page.wait(n + 1)
+
+
+def test_a_shared_link_beyond_the_budget_is_refused_with_the_cli_message(page: Site) -> None:
+    """attack-report N2: ``#q=circle%202800000`` tied up the tab for two minutes and ended in
+    an empty "scanconv failed:". The refusal is the library's, before any work (the wait is
+    a hang guard, not a timing)."""
+    from scanconv import questions
+    from scanconv.site.page import solve_page
+
+    _open_link(page, "#q=circle%202800000")
+    assert page.page.evaluate("document.body.dataset.state") == "error"
+    with pytest.raises(ValueError) as refused:
+        questions.check_budget(questions.parse("circle 2800000"), "html")
+    shown = page.error()
+    assert shown.startswith(f"{refused.value}; scanconv on a computer prints it as csv")
+    assert shown == solve_page("circle 2800000")["error"]
+    cli = run("circle", "2800000", "--format", "html")
+    assert cli.code == 2 and cli.err.startswith(f"scanconv: error: {refused.value}")
+    assert page.page.is_hidden("#answer")
+
+
+def test_a_malformed_share_link_says_so(page: Site) -> None:
+    """attack-report N12: an uncaught URIError and no message (``Site.close`` checks that
+    no script error happened)."""
+    page.page.evaluate("() => { location.hash = '#q=%E0%A4%A'; }")
+    page.page.wait_for_selector("#error:not([hidden])")
+    assert "This link is malformed" in page.error()
+    assert page.page.evaluate("document.body.dataset.state") == "error"
+    assert page.errors == []
+    assert page.ask("line 0 0 3 1 --algo dda") == _cli_json("line 0 0 3 1 --algo dda")
+
+
+def test_the_answer_frame_is_sandboxed_and_its_stepper_works(page: Site) -> None:
+    """attack-report N14: the answer's page ran with the site's origin. In the sandbox its
+    scripts run (the stepper, test yourself) but cannot reach the site's page. After an error
+    first: a sandboxed frame hidden for an error and shown again was left blank."""
+    _open_link(page, "#q=line%202%202%2010")
+    assert page.page.is_hidden("#answer")
+    page.ask("line 2 2 10 6")
+    assert page.page.get_attribute("#answer", "sandbox") == "allow-scripts"
+    frame = page.page.frame_locator("#answer")
+    stepper = frame.locator("section.scanconv[data-ready]")
+    stepper.wait_for()
+    body = frame.locator("body")
+    blocked = "() => { try { return parent.document.title; } catch (e) { return e.name; } }"
+    assert body.evaluate(blocked) == "SecurityError"
+    assert body.evaluate("() => window.origin") == "null"
+    start = int(stepper.get_attribute("data-pos") or "0")
+    frame.locator("button[data-act=next]").click()
+    frame.locator("button[data-act=next]").click()
+    assert stepper.get_attribute("data-pos") == str(start + 2)
+    assert frame.locator(".sc-stepper output, .sc-stepper [aria-live]").first.text_content()
+    frame.locator("button[data-act=end]").click()
+    end = int(stepper.get_attribute("data-pos") or "0")
+    assert end == 10 - 2 + 1  # the line (2, 2) to (10, 6): a pixel a column, each a step
+    frame.locator("button[data-act=reset]").click()
+    assert stepper.get_attribute("data-pos") == "0"
+    # test yourself: the first step typed and checked in the frame
+    frame.locator("[data-selftest]").click()
+    frame.locator(".sc-testpanel").wait_for()
+    assert frame.locator("[data-selftest]").get_attribute("aria-expanded") == "true"
+    # the frame reports its height (this page cannot read it): the whole answer shows
+    height = page.page.evaluate("document.getElementById('answer').getBoundingClientRect().height")
+    inner = body.evaluate("() => [document.documentElement.scrollHeight, innerHeight]")
+    assert height >= inner[0] > 300 and inner[0] <= inner[1]  # no scroll bar of its own
+
+
+def test_an_error_without_a_last_line_is_not_an_empty_message(page: Site) -> None:
+    """attack-report N2: the worker showed "scanconv failed:" and nothing, a Python error's
+    text ending with a line end. A worker of the site's own is sent what the page never
+    sends (a number for a question), which Python refuses with a TypeError."""
+    script = """async () => {
+      const worker = new Worker("worker.mjs", { type: "module" });
+      const answer = await new Promise((resolve) => {
+        worker.onmessage = (event) => {
+          if (event.data.type === "ready") worker.postMessage({ id: 1, question: 42 });
+          else if (event.data.type === "answer" || event.data.type === "failed") resolve(event.data);
+        };
+      });
+      worker.terminate();
+      return answer;
+    }"""
+    answer = page.page.evaluate(script)
+    assert answer["type"] == "answer" and answer["ok"] is False
+    assert answer["error"].startswith("scanconv failed: TypeError: ")
+    assert len(answer["error"]) > len("scanconv failed: TypeError: ")
+
+
 def test_a_long_question_can_be_stopped_and_the_page_answers_again(page: Site) -> None:
     """On the module's page (its Pyodide already loaded: the stop starts a new one), last in
     the module."""

@@ -57,11 +57,10 @@ function received(m) {
 }
 
 function show(m, ms) {
-  const frame = $("answer");
   $("error").hidden = m.ok;
   $("notes").hidden = true;
   $("data").hidden = !m.ok;
-  frame.hidden = !m.ok;
+  $("answer").hidden = !m.ok;
   if (!m.ok) {
     $("error").textContent = m.error;
     setStatus("That question has an error.", "error");
@@ -69,19 +68,45 @@ function show(m, ms) {
   }
   $("notes").textContent = m.notes.join("; ");
   $("notes").hidden = !m.notes.length;
-  frame.onload = () => fit(frame);
-  frame.srcdoc = m.html;
+  showPage(m.html);
   $("json").textContent = m.json;
   setStatus(`${m.title} (answered in ${Math.round(ms)} ms)`, "answered");
 }
 
-function fit(frame) {
-  const doc = frame.contentDocument;
-  if (!doc) return;
-  frame.style.height = doc.documentElement.scrollHeight + 24 + "px";
-  new ResizeObserver(() => {
-    frame.style.height = doc.documentElement.scrollHeight + 24 + "px";
-  }).observe(doc.body);
+// The answer's page runs in a sandboxed frame (sandbox="allow-scripts", no same origin: its
+// scripts cannot reach this page), so this page cannot read its height: the frame's page
+// reports it with postMessage, and only a number from that frame is read. Each answer gets
+// a new frame (Chromium left a sandboxed frame shown again after an error blank).
+const HEIGHT_REPORT =
+  "<script>(function () { var report = function () { parent.postMessage(" +
+  "{ scanconvHeight: document.documentElement.getBoundingClientRect().height }, '*'); };" +
+  " addEventListener('load', report); new ResizeObserver(report)" +
+  ".observe(document.documentElement); })();</" + "script>";
+
+function showPage(html) {
+  const old = $("answer");
+  const frame = old.cloneNode(false);
+  frame.removeAttribute("style");
+  const end = html.lastIndexOf("</body>");
+  frame.srcdoc =
+    end < 0 ? html + HEIGHT_REPORT : html.slice(0, end) + HEIGHT_REPORT + html.slice(end);
+  old.replaceWith(frame);
+}
+
+window.addEventListener("message", (event) => {
+  const frame = $("answer");
+  if (event.source !== frame.contentWindow || !event.data) return;
+  const height = Number(event.data.scanconvHeight);
+  if (Number.isFinite(height) && height > 0) {
+    frame.style.height = Math.min(Math.ceil(height) + 4, 1e6) + "px"; // and its borders
+  }
+});
+
+function showError(message, state) {
+  $("error").textContent = message;
+  $("error").hidden = false;
+  for (const id of ["notes", "data", "answer"]) $(id).hidden = true;
+  setStatus(state, "error");
 }
 
 function ask(question) {
@@ -100,8 +125,22 @@ function ask(question) {
 }
 
 function fromHash() {
-  const m = location.hash.match(/^#q=(.*)$/);
-  if (m) ask(decodeURIComponent(m[1]));
+  const m = location.hash.match(/^#q=(.*)$/s);
+  if (!m) return;
+  let question;
+  try {
+    question = decodeURIComponent(m[1]);
+  } catch {
+    // a link cut short or mistyped (#q=%E0%A4%A): say so, instead of an uncaught URIError
+    showError(
+      "This link is malformed: the question after #q= is not valid percent-encoded text " +
+        "(was the link cut short when it was copied?).",
+      "That link has an error.",
+    );
+    $("share-row").hidden = true; // the link shown was another question's
+    return;
+  }
+  ask(question);
 }
 
 // --- the forms ------------------------------------------------------------------------------

@@ -25,16 +25,26 @@ async function start() {
   while (waiting.length) answer(waiting.shift());
 }
 
+// The last line of an error that says something: a Python error's text is its traceback,
+// which ends with a line end (its last line, the one a split on "\n" gives, is empty).
+function lastLine(err) {
+  const lines = String(err)
+    .split("\n")
+    .map((line) => line.trim())
+    .filter(Boolean);
+  return lines.length ? lines[lines.length - 1] : "an error with no message";
+}
+
 function answer(message) {
   let result;
   try {
     result = JSON.parse(page.answer(message.question));
   } catch (err) {
-    result = { ok: false, error: "scanconv failed: " + String(err).split("\n").pop() };
+    result = { ok: false, error: "scanconv failed: " + lastLine(err) };
   }
   postMessage({ type: "answer", id: message.id, ...result });
 }
 
 onmessage = (event) => (page ? answer(event.data) : waiting.push(event.data));
 
-start().catch((err) => postMessage({ type: "failed", error: String(err) }));
+start().catch((err) => postMessage({ type: "failed", error: lastLine(err) }));
