@@ -55,6 +55,8 @@ def _annotations(command: Any) -> None:
 NOT_WALKED = {
     ("site", "build"): "writes a 16 MB folder (and fetches the Pyodide runtime the first time): "
     "tests/test_site_build.py holds its bad input, its failures and its output",
+    ("mcp",): "runs a server until its client goes away: tests/test_mcp.py drives it as a "
+    "client does, its bad flags and its message without the extra included",
 }
 """Commands the walking tests (bad input, fuzz, files, html) leave out, and where they are tested."""
 

@@ -30,7 +30,14 @@ from typing import TYPE_CHECKING
 from ..core import lazy
 from ..core.checks import InputError
 from ..core.records import Solution
-from ..core.student_table import Cell, StudentTable, read_raw, read_table, resolve_move
+from ..core.student_table import (
+    Cell,
+    StudentTable,
+    parse_text,
+    raw_text,
+    read_text,
+    resolve_move,
+)
 from .marking_diagnose import OTHER_FORM, diagnose, model_for, other_form, states_steps
 from .marking_rows import (
     LAYOUTS,
@@ -336,13 +343,20 @@ def mark(table: StudentTable, solution: Solution) -> Marking:
 
 
 def mark_file(path: Path, solution: Solution) -> Marking:
-    """Mark the student's file at ``path``: by its own columns where the method's table is
-    not a pixel walk (:mod:`.marking_table`), else as a step table (:func:`mark`)."""
+    """Mark the student's file at ``path`` (:func:`mark_text` of its text)."""
+    return mark_text(read_text(path), solution, path.name, path.suffix.lower())
+
+
+def mark_text(text: str, solution: Solution, name: str, suffix: str = "") -> Marking:
+    """Mark a student's table given as text (CSV, Markdown, plain columns or JSON, told apart
+    by ``suffix`` or by its look), ``name`` naming it in messages: by its own columns where
+    the method's table is not a pixel walk (:mod:`.marking_table`), else as a step table
+    (:func:`mark`)."""
     models = marking_table.table_models_for(solution)
     if models:
-        headers, raw = read_raw(path)
-        return marking_table.mark_table(headers, raw, solution, models, path.name)
-    return mark(read_table(path), solution)
+        headers, raw = raw_text(text, name, suffix)
+        return marking_table.mark_table(headers, raw, solution, models, name)
+    return mark(parse_text(text, name, suffix), solution)
 
 
 def _mark_plain(rows: list[Got], marked: set[str], solution: Solution) -> Marking:

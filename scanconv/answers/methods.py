@@ -463,6 +463,7 @@ DOCUMENTS = {
     "theory": "the notes' written answers (answers/topics: one Topic record each)",
     "exam": "the notes' exam as a sheet",
     "site": "a static site whose page answers any question with the methods' records",
+    "mcp": "a server whose tools answer and mark questions with the methods' records",
 }
 """The commands that have no method of their own: they assemble other answers."""
 

@@ -36,7 +36,7 @@ PANELS = (
         ("image", "storage", "quantize", "sample", "dither", "halftone", "framebuffer"),
     ),
     ("Comparisons", ("compare",)),
-    ("Teaching", ("sheet", "practice", "check")),
+    ("Teaching", ("sheet", "practice", "check", "mcp")),
     (
         "The process: clip, transform, fill, anti-alias",
         (
@@ -170,6 +170,7 @@ TOPIC_MODULES: tuple[str, ...] = (
     "practice",
     "check",
     "site",
+    "serve",
 )
 
 #: Which module defines each top-level command or group.
@@ -208,6 +209,7 @@ TOPIC_OF = {
     "theory": "theory",
     "exam": "exam",
     "site": "site",
+    "mcp": "serve",
 }
 
 

@@ -106,6 +106,28 @@ def read_raw(path: Path) -> tuple[list[str], list[tuple[str, list[Any]]]]:
     return raw_text(_decode(_read(path), name), name, path.suffix.lower())
 
 
+def read_text(path: Path) -> str:
+    """The student file at ``path`` as text, with the checks of :func:`read_table` (its size,
+    a binary file, UTF-8)."""
+    return _decode(_read(path), path.name)
+
+
+def checked_text(text: str, name: str) -> str:
+    """A table given as text (not read from a file), with the checks a file's text gets: its
+    size in UTF-8 and no NUL (a binary file pasted as text).
+
+    >>> checked_text("k,p\\n0,1\\n", "the table")
+    'k,p\\n0,1\\n'
+    >>> checked_text("x" * (MAX_TABLE_BYTES + 1), "the table")
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: the table: larger than 262144 bytes
+    """
+    if len(text) > MAX_TABLE_BYTES:  # before encoding it: a 1 GB string is refused at once
+        raise InputError(f"{name}: larger than {MAX_TABLE_BYTES} bytes", "answer")
+    return _decode(text.encode("utf-8", "surrogatepass"), name)
+
+
 def _read(path: Path) -> bytes:
     name = path.name
     try:

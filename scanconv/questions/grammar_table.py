@@ -5,7 +5,7 @@ from fractions import Fraction
 
 from .grammar import Param, Spec
 
-NOT_QUESTIONS = ("check", "exam", "practice", "sheet", "site")
+NOT_QUESTIONS = ("check", "exam", "mcp", "practice", "sheet", "site")
 """Commands that write documents or mark: never a question."""
 
 SHARED = ("fmt", "grid", "origin", "output", "brief", "exact", "explain", "svg", "png")
