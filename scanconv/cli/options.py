@@ -216,7 +216,8 @@ BriefOpt = Annotated[
     bool,
     typer.Option(
         "--brief",
-        help="On a terminal, leave the working out: just the tables, the pixels and the grid.",
+        help="Leave scanconv's notes (conventions, layout, errata) out, in every format; on a "
+        "terminal the working too: just the tables, the pixels and the grid.",
     ),
 ]
 ExplainOpt = Annotated[

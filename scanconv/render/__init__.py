@@ -146,9 +146,9 @@ class Options(NamedTuple):
     origin: str = "bottom-left"
     """``bottom-left`` (y up, as in the notes) or ``top-left`` (screen addressing, y down)."""
     brief: bool = False
-    """``rich`` only: leave the derivation (given values, working with the numbers
-    substituted, notes) out. By default the terminal shows the full worked answer, as the
-    document formats (markdown, latex, plain) always do."""
+    """Leave the tool's notes (the conventions stated, the table's layout, the errata) out, in
+    every format; ``rich`` leaves the derivation (given values, working with the numbers
+    substituted) out too. By default every format shows the full worked answer."""
     exact: bool = False
     """Table cells: exact values as fractions (``34/27``) instead of 3 decimals (the rule is
     :func:`scanconv.render.cells.cell`'s). csv and json always carry the exact values."""
@@ -188,4 +188,7 @@ def render(
     if fmt is Format.auto:
         raise ValueError("Format.auto must be resolved before rendering")
     renderer: Callable[[Document, Options], Iterator[Chunk]] = load(FORMATS[fmt].renderer)
-    return renderer(document.as_document(solution), options)
+    doc = document.as_document(solution)
+    if options.brief:  # homework without the tool's notes, in every format
+        doc = doc._replace(blocks=tuple(b for b in doc.blocks if not isinstance(b, document.Notes)))
+    return renderer(doc, options)
