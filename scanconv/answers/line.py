@@ -72,6 +72,8 @@ def _diff(name: str, a: Number, b: Number, key: str) -> Quantity:
 
 
 def _slope(dx: Number, dy: Number) -> Quantity:
+    if dx == 0 and dy == 0:  # both end points the same pixel: a point, not a line
+        return worked("m", None, r"m \text{ is undefined: } P_1 = P_2 \text{ (a single point)}")
     if dx == 0:
         return worked("m", None, r"m = \Delta y / \Delta x \text{ is undefined (vertical line)}")
     m = normalize(Fraction(dy) / dx)
