@@ -75,3 +75,27 @@ def test_readme_has_a_cheat_sheet_of_exam_questions():
     sheet = README.split("## Cheat sheet", 1)[1].split("\n## ", 1)[0]
     rows = [r for r in sheet.splitlines() if r.startswith("| ") and "`scanconv" in r]
     assert len(rows) >= 20
+
+
+def test_the_readme_counts_the_theory_topics_it_lists():
+    """A count the README states is the program's: ``theory --list`` has one line a topic."""
+    import re
+
+    from .helpers import run
+
+    said = re.search(r"`scanconv theory --list` names the (\d+) topics", README)
+    assert said is not None
+    listed = [ln for ln in run("theory", "--list").out.splitlines() if ln.strip()]
+    assert int(said[1]) == len(listed)
+
+
+def test_teaching_says_what_a_batch_does_with_an_unreadable_file(tmp_path):
+    from .helpers import run
+
+    folder = tmp_path / "class"
+    folder.mkdir()
+    (folder / "a.csv").write_bytes(b"\x00\x01")
+    r = run("check", "--batch", str(folder), "--", "line", "2", "2", "10", "6")
+    assert r.code == 0 and "not marked" in r.out
+    teaching = (ROOT / "docs" / "teaching.md").read_text(encoding="utf-8")
+    assert "`not marked: ...`" in teaching and "stops the batch" not in teaching
