@@ -124,9 +124,17 @@ def expect(
     pix = pixel_of(got) if "pixel" in marked else None
     if mine is None and pix is not None:
         mine = next((m for m in moves if (t := model.step(s, m)) and t.point == pix), None)
+    # the rule's pixel under a wrong decision word: the word is the one slip, and the point
+    # and next p are judged on the rule's step (what the expected column shows)
+    word_only = said is not None and pix is not None and pix == by_rule.point
+    if word_only:
+        mine = rule_move
     taken = model.step(s, mine) if mine is not None else by_rule
     assert taken is not None
-    point = (model.step(s, said) or by_rule).point if said is not None else by_rule.point
+    if said is None or word_only:
+        point = by_rule.point
+    else:
+        point = (model.step(s, said) or by_rule).point
     return Expected(
         point,
         base.p,
