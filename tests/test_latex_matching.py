@@ -359,3 +359,37 @@ def test_markdown_separator_found_in_blank_lines() -> None:
     text = "\n" * 5000 + "  | k | x |\n  |---|:--:|\n"
     assert student_table._SEPARATOR.search(text) is not None
     assert student_table._SEPARATOR.search("\n" * 5000 + " " * 5000) is None
+
+
+# --- the MathML converter's text edges --------------------------------------------------------
+
+OLD_TEXT_EDGES = re.compile(r"\\text\{( *)([^{}]*?)( *)\}")
+
+
+def _old_keep_spaces(m: re.Match[str]) -> str:
+    before = "\\ " if m.group(1) else ""
+    after = "\\ " if m.group(3) else ""
+    return before + "\\text{" + m.group(2) + "}" + after
+
+
+@pytest.mark.slow
+def test_text_edges_unchanged() -> None:
+    """``render/mathml.py``'s ``\\text{...}`` edges (``( *)([^{}]*?)( *)`` was cubic in a run
+    of spaces): the same TeX as the old substitution on every string of up to six pieces."""
+    from scanconv.render import mathml
+
+    for n in range(7):
+        for pieces in itertools.product([" ", "a", "{", "}", "\\text{"], repeat=n):
+            tex = "".join(pieces)
+            old = OLD_TEXT_EDGES.sub(_old_keep_spaces, tex)
+            assert mathml._TEXT_EDGES.sub(mathml._keep_spaces, tex) == old, repr(tex)
+
+
+def test_text_edges_long_run_of_spaces() -> None:
+    """A ``\\text{`` with 100,000 spaces and no closing brace is left as it is (the old
+    pattern tried every split of the spaces)."""
+    from scanconv.render import mathml
+
+    tex = "\\text{" + " " * 100_000 + "x"
+    assert mathml._TEXT_EDGES.sub(mathml._keep_spaces, tex) == tex
+    assert mathml._TEXT_EDGES.sub(mathml._keep_spaces, tex + " }") == "\\ \\text{x}\\ "
