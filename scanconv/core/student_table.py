@@ -191,7 +191,7 @@ def raw_text(text: str, name: str, suffix: str = "") -> tuple[list[str], list[Ra
         return _markdown_rows(text, name)
     if suffix not in (".csv", ".tsv") and _RULE.search(text):
         return _plain_rows(text, name)
-    if suffix not in (".csv", ".tsv", ".txt") and re.search(r"^\s*\|", text, re.M):
+    if suffix not in (".csv", ".tsv", ".txt") and _PIPE_LINE.search(text):
         return _markdown_rows(text, name)
     return _csv_rows(text, name)
 
@@ -202,6 +202,18 @@ def raw_text(text: str, name: str, suffix: str = "") -> tuple[list[str], list[Ra
 RawRow = tuple[str, list[Any]]
 
 
+def _unbracketed(line: str) -> str:
+    """``line`` without its bracketed groups, each from an opening ``(`` or ``[`` to the first
+    closing one after it, in one pass (an opening bracket with no closing one after it stays:
+    searching the rest of the line from each of 200,000 of them took minutes).
+
+    >>> _unbracketed("k, (x, y), [a; b]"), _unbracketed("((x, y) (z")
+    ('k, , ', ' (z')
+    """
+    end = max(line.rfind(")"), line.rfind("]")) + 1
+    return re.sub(r"[(\[][^)\]]*[)\]]", "", line[:end]) + line[end:]
+
+
 PREAMBLE_LINES = 10
 """Most lines above a CSV or TSV table's heading that are read as the student's name, roll
 number or a title (``Name:,Gita``) and left out."""
@@ -209,7 +221,7 @@ number or a title (``Name:,Gita``) and left out."""
 
 def _cells_of(line: str) -> list[str]:
     """A line's non-empty cells, split at tabs, commas and semicolons outside ``(x, y)``."""
-    cells = re.split(r"[\t,;]", re.sub(r"[(\[][^)\]]*[)\]]", "", line))
+    cells = re.split(r"[\t,;]", _unbracketed(line))
     return [c for c in cells if c.strip()]
 
 
@@ -239,7 +251,7 @@ def _csv_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
     lines = _without_preamble(text.splitlines())
     first = next((ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#")), "")
     # a tab first: the notes' tables are tab-separated with commas inside "(x, y)"
-    bare = re.sub(r"[(\[][^)\]]*[)\]]", "", first)  # the commas of "(x, y)" part nothing
+    bare = _unbracketed(first)  # the commas of "(x, y)" part nothing
     delimiter = "\t" if "\t" in bare else "," if "," in bare else ";" if ";" in bare else " "
     headers: list[str] | None = None
     rows: list[RawRow] = []
@@ -349,8 +361,12 @@ def _choose(
 
 _RULE = re.compile(r"^ *-+(?: {2,}-+)+ *$", re.MULTILINE)
 """The rule under a plain-text table's heading: runs of dashes, one per column."""
-_SEPARATOR = re.compile(r"^\s*\|?\s*:?-+:?\s*\|", re.MULTILINE)
-"""A Markdown table's separator row (``|---|:--:|``)."""
+_SEPARATOR = re.compile(r"^[^\S\n]*(?:\|[^\S\n]*)?:?-+:?\s*\|", re.MULTILINE)
+r"""A Markdown table's separator row (``|---|:--:|``). Its spaces before the dashes are the
+line's own, one run before the ``|`` and one after (``^\s*\|?\s*`` tried every split of every
+run of blank lines: 3,000 blank lines took over a minute)."""
+_PIPE_LINE = re.compile(r"^[^\S\n]*\|", re.MULTILINE)
+"""A line starting with ``|`` (after its own spaces)."""
 _TOKEN = re.compile(r"\S+(?: \S+)*")
 
 
@@ -655,7 +671,10 @@ def same_move(said: str | None, expected: str) -> bool:
 
 
 _EMPTY = ("", "-", "\u2013", "\u2014", "none", "null", "n/a", "na")
-_PAIR = re.compile(r"[(\[]?\s*([^,;\s()\[\]]+)\s*[,;\s]\s*([^,;\s()\[\]]+)\s*[)\]]?")
+_PAIR = re.compile(r"[(\[]?\s*([^,;\s()\[\]]+)(?:\s+(?:[,;]\s*)?|[,;]\s*)([^,;\s()\[\]]+)\s*[)\]]?")
+r"""A pixel ``(3, 4)``, ``[3; 4]`` or ``3 4``: two numbers parted by a comma, a semicolon or
+spaces, each space of the parting in one place (``\s*[,;\s]\s*`` tried every split of a run
+of spaces: a cell with 100,000 took minutes)."""
 
 
 def _value(raw: Any, field: str, name: str, where: str) -> Value:

@@ -162,18 +162,22 @@ def _typed_out(tex: str, typed: list[str]) -> str:
     return "".join(out) + tex[i:]
 
 
-_TEXT_EDGES = re.compile(r"\\text\{( *)([^{}]*?)( *)\}")
+_TEXT_EDGES = re.compile(r"\\text\{([^{}]*)\}")
+"""A ``\\text{...}`` group (its spaces taken apart in Python: ``( *)([^{}]*?)( *)`` tried
+every split of a run of spaces, cubic in its length)."""
 
 
 def _keep_spaces(m: re.Match[str]) -> str:
     """``\\text{ a }`` as ``\\ \\text{a}\\ ``: latex2mathml drops the spaces at a text's edges.
 
-    >>> print(_TEXT_EDGES.sub(_keep_spaces, r"x \\text{ if } y"))
-    x \\ \\text{if}\\  y
+    >>> print(_TEXT_EDGES.sub(_keep_spaces, r"x \\text{ if } y \\text{  }"))
+    x \\ \\text{if}\\  y \\ \\text{}
     """
-    before = "\\ " if m.group(1) else ""
-    after = "\\ " if m.group(3) else ""
-    return before + "\\text{" + m.group(2) + "}" + after
+    inner = m.group(1)
+    text = inner.strip(" ")
+    before = "\\ " if inner[:1] == " " else ""
+    after = "\\ " if text and inner[-1:] == " " else ""
+    return before + "\\text{" + text + "}" + after
 
 
 def note_html(note: str) -> str:
