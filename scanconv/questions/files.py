@@ -40,7 +40,7 @@ class QuestionError(ValueError):
         self.source, self.line, self.message = source, line, message
 
 
-_MARKS = re.compile(r"^\[\s*(\d{1,4})\s*(?:marks?)?\s*\]\s*", re.IGNORECASE)
+_MARKS = re.compile(r"^\[\s*(\d{1,4})\s*(?:marks?\s*)?\]\s*", re.IGNORECASE)
 _KEYWORD = re.compile(r"^(title|section)\s*:\s*(.*)$", re.IGNORECASE)
 _LINE_END = re.compile(r"\r\n|\r|\n")
 #: ESC, BEL, NEL, FF, VT, the line and paragraph separators...: never echoed, never a line end
