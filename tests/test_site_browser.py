@@ -335,3 +335,26 @@ def test_a_long_question_can_be_stopped_and_the_page_answers_again(page: Site) -
     assert page.page.is_hidden("#stop")
     assert page.ask("line 0 0 3 1 --algo dda") == _cli_json("line 0 0 3 1 --algo dda")
     assert page.answers() == n + 1  # the stopped question never answered
+
+
+def test_no_console_error_on_load_and_no_share_link_for_an_error(browser: Any, origin: str) -> None:
+    """A load logs no console error (a favicon.ico 404 was one on every load); a question
+    with an error offers no link to share; a shared link leaves out the words that choose a
+    format or a file (the page shows its own formats)."""
+    opened = Site(browser, origin, _link("line 2 2 10 6"))
+    console: list[str] = []
+    opened.page.on("console", lambda m: console.append(m.text) if m.type == "error" else None)
+    opened.wait(1)
+    try:
+        assert console == []
+        assert not any(u.endswith("favicon.ico") for u in opened.requests)
+        n = opened.answers()
+        opened.page.fill("#q", "line 2 2 10")
+        opened.page.click("#go")
+        opened.wait(n + 1)
+        assert opened.page.is_hidden("#share-row")
+        opened.ask("scanconv line 2 2 10 6 --algo dda -f json -o a.md --svg=b.svg")
+        assert opened.page.get_attribute("#share", "href") == _link("line 2 2 10 6 --algo dda")
+        assert opened.page.is_visible("#share-row")
+    finally:
+        opened.close()

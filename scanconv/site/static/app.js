@@ -63,6 +63,7 @@ function show(m, ms) {
   $("answer").hidden = !m.ok;
   if (!m.ok) {
     $("error").textContent = m.error;
+    $("share-row").hidden = true; // no link to share for a question that has an error
     setStatus("That question has an error.", "error");
     return;
   }
@@ -109,11 +110,29 @@ function showError(message, state) {
   setStatus(state, "error");
 }
 
+// the words that choose a format or a file, and their values: the page shows the answer in
+// its own formats (as the Python side drops them), so a shared link leaves them out
+const OUTPUT_FLAGS = ["--format", "-f", "--output", "-o", "--svg", "--png"];
+
+function shareable(question) {
+  const words = question.split(/\s+/).filter((w) => w);
+  if (words[0] === "scanconv") words.shift();
+  const kept = [];
+  for (let i = 0; i < words.length; i++) {
+    if (OUTPUT_FLAGS.includes(words[i])) {
+      i++; // and its value
+    } else if (!OUTPUT_FLAGS.some((f) => words[i].startsWith(f + "="))) {
+      kept.push(words[i]);
+    }
+  }
+  return kept.join(" ");
+}
+
 function ask(question) {
   question = question.trim();
   if (!question) return;
   box.value = question;
-  const url = "#q=" + encodeURIComponent(question);
+  const url = "#q=" + encodeURIComponent(shareable(question));
   if (location.hash !== url) history.replaceState(null, "", url);
   $("share").href = url;
   $("share-row").hidden = false;
