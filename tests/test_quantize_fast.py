@@ -25,7 +25,7 @@ import pytest
 from scanconv.algorithms.quantize import Quantizer
 from scanconv.answers.quantize import quantization_rows
 from scanconv.core.records import Move
-from scanconv.render.data import _BATCH, _plain_csv
+from scanconv.render.data import _plain_csv, batch_rows
 
 from .helpers import run
 
@@ -209,11 +209,12 @@ def test_csv_fast_path_is_taken_for_plain_cells():
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_batches_larger_than_one_batch_keep_every_row():
     bits = 13  # 8192 rows: two whole batches of the renderer and more
-    assert 2**bits > _BATCH
+    batch = batch_rows(5)  # a quantizer's table: k, code, and three more columns
+    assert 2**bits > 2 * batch
     r = run("quantize", "--bits", str(bits), "--range", "0", "10000", "-f", "csv")
     assert r.code == 0, r.err
     rows = list(csv.reader(io.StringIO(r.out)))
     assert len(rows) == 2**bits + 1
-    for k in (0, _BATCH - 1, _BATCH, 2**bits - 1):
+    for k in (0, batch - 1, batch, 2**bits - 1):
         expected = reference_row(bits, k) + reference_cells(bits, 0, 10000, True, "midpoint", k)
         assert rows[k + 1][:5] == [str(v) for v in expected[:5]]

@@ -25,18 +25,18 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..core import lazy
 from ..core.checks import InputError
-from ..core.records import Solution
+from ..core.decisions import resolve_move
+from ..core.records import Pixel, Solution
 from ..core.student_table import (
     Cell,
     StudentTable,
     parse_text,
     raw_text,
     read_text,
-    resolve_move,
 )
 from .marking_diagnose import OTHER_FORM, diagnose, model_for, other_form, states_steps
 from .marking_rows import (
@@ -105,6 +105,30 @@ def _agrees(model: Model, states: list[State], solution: Solution) -> bool:
 # --- follow-through ---------------------------------------------------------------------------
 
 
+def _taken(
+    model: Model, s: State, got: Got, marked: set[str], rule_move: Any, by_rule: State
+) -> tuple[State, Pixel]:
+    """The step the student took from ``s`` (by the decision they wrote, else by their
+    pixel, else the rule's) and the point their step is judged against: the point of the
+    decision they wrote, else the rule's. A wrong decision word beside the rule's pixel is
+    the one slip: the point and the next p are then the rule's (what the expected column
+    shows, so the first-error sentence never calls a right cell wrong)."""
+    moves = model.moves(s)
+    said = resolve_move(got.decision, moves) if "decision" in marked else None
+    mine = said
+    pix = pixel_of(got) if "pixel" in marked else None
+    if mine is None and pix is not None:
+        mine = next((m for m in moves if (t := model.step(s, m)) and t.point == pix), None)
+    word_only = said is not None and pix is not None and pix == by_rule.point
+    if word_only:
+        mine = rule_move
+    taken = model.step(s, mine) if mine is not None else by_rule
+    assert taken is not None
+    if said is None or word_only:
+        return taken, by_rule.point
+    return taken, (model.step(s, said) or by_rule).point
+
+
 def expect(
     model: Model, base: State, got: Got, marked: set[str], own_p: bool = True
 ) -> Expected | None:
@@ -118,23 +142,7 @@ def expect(
     by_rule = model.step(s, rule_move)
     if by_rule is None or model.done(s, by_rule):
         return None
-    moves = model.moves(s)
-    said = resolve_move(got.decision, moves) if "decision" in marked else None
-    mine = said
-    pix = pixel_of(got) if "pixel" in marked else None
-    if mine is None and pix is not None:
-        mine = next((m for m in moves if (t := model.step(s, m)) and t.point == pix), None)
-    # the rule's pixel under a wrong decision word: the word is the one slip, and the point
-    # and next p are judged on the rule's step (what the expected column shows)
-    word_only = said is not None and pix is not None and pix == by_rule.point
-    if word_only:
-        mine = rule_move
-    taken = model.step(s, mine) if mine is not None else by_rule
-    assert taken is not None
-    if said is None or word_only:
-        point = by_rule.point
-    else:
-        point = (model.step(s, said) or by_rule).point
+    taken, point = _taken(model, s, got, marked, rule_move, by_rule)
     return Expected(
         point,
         base.p,

@@ -18,9 +18,10 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any, NamedTuple
 
+from ..core.decisions import same_move
 from ..core.numeric import Number
 from ..core.records import Pixel
-from ..core.student_table import Cell, StudentTable, same_move
+from ..core.student_table import Cell, StudentTable
 from .models import State
 
 Pair = tuple[Cell | None, Cell | None]

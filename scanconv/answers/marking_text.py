@@ -6,9 +6,10 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from ..core.decisions import UNREADABLE
 from ..core.numeric import Number, fmt_short
 from ..core.records import Quantity, Solution, Table, heading
-from ..core.student_table import UNREADABLE, Cell
+from ..core.student_table import Cell
 from .marking_rows import Expected, Got, Marking, RowText, Verdict
 from .models import State
 

@@ -33,14 +33,17 @@ import csv
 import json
 import os
 import re
-from collections.abc import Sequence
 from fractions import Fraction
 from pathlib import Path
 from typing import Any, NamedTuple
 
 from .checks import InputError
+from .decisions import EMPTY as _EMPTY
+from .decisions import move_of
 from .headings import field_of
 from .numeric import parse_number
+from .table_head import unbracketed as _unbracketed
+from .table_head import without_preamble as _without_preamble
 
 MAX_TABLE_BYTES = 2**18
 """Largest student file read (256 KiB): a 1,000-row table of a dozen columns is under 60 KiB."""
@@ -200,51 +203,6 @@ def raw_text(text: str, name: str, suffix: str = "") -> tuple[list[str], list[Ra
 
 
 RawRow = tuple[str, list[Any]]
-
-
-def _unbracketed(line: str) -> str:
-    """``line`` without its bracketed groups, each from an opening ``(`` or ``[`` to the first
-    closing one after it, in one pass (an opening bracket with no closing one after it stays:
-    searching the rest of the line from each of 200,000 of them took minutes).
-
-    >>> _unbracketed("k, (x, y), [a; b]"), _unbracketed("((x, y) (z")
-    ('k, , ', ' (z')
-    """
-    end = max(line.rfind(")"), line.rfind("]")) + 1
-    return re.sub(r"[(\[][^)\]]*[)\]]", "", line[:end]) + line[end:]
-
-
-PREAMBLE_LINES = 10
-"""Most lines above a CSV or TSV table's heading that are read as the student's name, roll
-number or a title (``Name:,Gita``) and left out."""
-
-
-def _cells_of(line: str) -> list[str]:
-    """A line's non-empty cells, split at tabs, commas and semicolons outside ``(x, y)``."""
-    cells = re.split(r"[\t,;]", _unbracketed(line))
-    return [c for c in cells if c.strip()]
-
-
-def _without_preamble(lines: list[str]) -> list[str]:
-    """The lines from the table's heading on: a few lines above it that head nothing (the
-    student's name and roll number, a title) are left out; a file whose heading is not
-    found among its first lines is kept whole (and refused for what it lacks).
-
-    >>> _without_preamble(["Name:,Gita", "Roll no.,42", "", "k,p,x,y", "0,0,2,2"])
-    ['k,p,x,y', '0,0,2,2']
-    >>> _without_preamble(["k,x,y", "0,2,2"])
-    ['k,x,y', '0,2,2']
-    >>> _without_preamble(["x,y", "2,2"])  # two columns: no preamble to find
-    ['x,y', '2,2']
-    """
-    for i, line in enumerate(lines[: PREAMBLE_LINES + 1]):
-        cells = _cells_of(line)
-        if len(cells) <= 2:  # a name, a roll number, a title: or a table of two columns
-            continue
-        if i and sum(field_of(c)[0] is not None for c in cells) >= 2:
-            return lines[i:]
-        break
-    return lines
 
 
 def _csv_rows(text: str, name: str) -> tuple[list[str], list[RawRow]]:
@@ -573,104 +531,6 @@ def _text(cells: list[Any], i: int) -> str:
     return " ".join(str(cells[i]).split()) if i < len(cells) and cells[i] is not None else ""
 
 
-_MOVE = re.compile(r"\b(NE|NW|SE|SW|N|E|S|W)\b")
-
-_COMPASS = {"north": "N", "south": "S", "east": "E", "west": "W"}
-_PLAIN_WORDS = {"right": "E", "left": "W", "up": "N", "down": "S"}
-RELATIVE = ("diagonal", "straight", "horizontal", "vertical")
-"""Decisions named by how they move rather than where: ``diagonal`` (both coordinates
-change), ``straight`` (only the major one), ``horizontal`` (x only), ``vertical`` (y only);
-:func:`resolve_move` reads them against the two moves a step chooses between."""
-
-UNREADABLE = "?"
-"""The prefix of a decision cell that names no move (``?keep``): marked wrong and shown as
-written, never as blank."""
-
-
-def _move_word(text: str) -> str | None:
-    """A move written in words: ``East``, ``north-east``, ``North East``, ``right``,
-    ``diagonal``; ``None`` if the text is not one."""
-    words: list[str] = re.findall(r"[a-z]+", text.lower())
-    if not words or len(words) > 3:
-        return None
-    if words[0] in RELATIVE and len(words) <= 2:  # "diagonal", "diagonal move"
-        return words[0]
-    if len(words) == 1 and words[0] in _PLAIN_WORDS:
-        return _PLAIN_WORDS[words[0]]
-    letters = [_COMPASS.get(w) for w in words]
-    if None in letters or len(letters) > 2:
-        joined = "".join(words)  # "northeast"
-        for a in ("north", "south"):
-            for b in ("east", "west"):
-                if joined == a + b:
-                    return _COMPASS[a] + _COMPASS[b]
-        return None
-    move = "".join(letters)  # type: ignore[arg-type]
-    return move if move in ("N", "S", "E", "W", "NE", "NW", "SE", "SW") else None
-
-
-def move_of(raw: Any) -> str | None:
-    """A decision cell as a move: ``NE``, ``E (keep y)``, ``p < 0: E``, ``se``, ``East``,
-    ``North-East``, ``north east``, ``right``, or a relative word (:data:`RELATIVE`);
-    ``None``: the cell is empty; :data:`UNREADABLE` and the text: it names no move.
-
-    >>> move_of(" ne "), move_of("E (x + 1)"), move_of("p < 0 -> E"), move_of("-")
-    ('NE', 'E', 'E', None)
-    >>> move_of("East"), move_of("North-East"), move_of("south east"), move_of("Diagonal")
-    ('E', 'NE', 'SE', 'diagonal')
-    >>> move_of("keep"), move_of("n/a")
-    ('?keep', None)
-    """
-    if raw is None or isinstance(raw, (bool, int, float, list, dict)):
-        return None
-    text = str(raw).strip().strip("$*`").strip()
-    if text.lower() in _EMPTY:
-        return None
-    word = _move_word(text)
-    if word is not None:
-        return word
-    m = _MOVE.search(text.upper())
-    return m.group(1) if m else UNREADABLE + " ".join(text.split())[:30]
-
-
-def resolve_move(said: str | None, moves: Sequence[str]) -> str | None:
-    """The move of ``moves`` (the two a step chooses between) that a decision names: itself,
-    or the one a relative word describes; ``None`` when it names neither.
-
-    >>> resolve_move("diagonal", ("E", "NE")), resolve_move("straight", ("SE", "E"))
-    ('NE', 'E')
-    >>> resolve_move("horizontal", ("N", "NE")), resolve_move("?keep", ("E", "NE"))
-    (None, None)
-    """
-    if said is None:
-        return None
-    if said in moves:
-        return next(m for m in moves if m == said)
-    fits = {
-        "diagonal": lambda m: len(m) == 2,
-        "straight": lambda m: len(m) == 1,
-        "horizontal": lambda m: m in ("E", "W"),
-        "vertical": lambda m: m in ("N", "S"),
-    }.get(said)
-    found = [m for m in moves if fits is not None and fits(str(m))]
-    return found[0] if len(found) == 1 else None
-
-
-def same_move(said: str | None, expected: str) -> bool:
-    """Whether a student's decision names the expected move (a relative word naming it by
-    how it moves: ``diagonal`` for NE, ``straight`` for E).
-
-    >>> same_move("diagonal", "SE"), same_move("E", "E"), same_move("vertical", "E")
-    (True, True, False)
-    """
-    if said is None or said.startswith(UNREADABLE):
-        return False
-    if said == expected:
-        return True
-    return resolve_move(said, (expected,)) == expected
-
-
-_EMPTY = ("", "-", "\u2013", "\u2014", "none", "null", "n/a", "na")
 _PAIR = re.compile(r"[(\[]?\s*([^,;\s()\[\]]+)(?:\s+(?:[,;]\s*)?|[,;]\s*)([^,;\s()\[\]]+)\s*[)\]]?")
 r"""A pixel ``(3, 4)``, ``[3; 4]`` or ``3 4``: two numbers parted by a comma, a semicolon or
 spaces, each space of the parting in one place (``\s*[,;\s]\s*`` tried every split of a run
