@@ -6,6 +6,16 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..core import lazy
+from ..core.choices import (
+    AAMethodName,
+    AcrossName,
+    DivideName,
+    FillMethodName,
+    FillRuleName,
+    OrderName,
+    SubgridName,
+    WuEndsName,
+)
 from ..display import answers
 from .values import (
     NumberLike,
@@ -21,6 +31,7 @@ from .values import (
 )
 
 if TYPE_CHECKING:
+    from ..algorithms.choices import WuEnds
     from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid
     from ..answers import antialias as answers_antialias
     from ..answers import fill as answers_fill
@@ -33,7 +44,7 @@ else:  # each command's answer module, loaded by its first call
 
 
 @answers
-def polygon(vertices: PointsLike, rule: FillRule | str = "even-odd") -> Solution:
+def polygon(vertices: PointsLike, rule: FillRule | FillRuleName = "even-odd") -> Solution:
     """The scan-line fill of the polygon ``vertices`` (``scanconv polygon``): the edge table,
     the active edge table per scan line, the spans and the pixels.
 
@@ -46,13 +57,13 @@ def polygon(vertices: PointsLike, rule: FillRule | str = "even-odd") -> Solution
 
 @answers
 def fill(
-    method: str,
+    method: FillMethodName,
     seed: PointLike,
     *,
     vertices: PointsLike | None = None,
     rows: str | Sequence[str] | None = None,
     connectivity: NumberLike = 4,
-    order: Order | str = "stack",
+    order: Order | OrderName = "stack",
     span: bool = False,
 ) -> Solution:
     """A seed fill (``scanconv fill boundary``, ``scanconv fill flood``): ``method`` is
@@ -82,14 +93,14 @@ def antialias_line(
     y1: NumberLike,
     x2: NumberLike,
     y2: NumberLike,
-    method: AAMethod | str = "area",
+    method: AAMethod | AAMethodName = "area",
     samples: NumberLike | None = None,
     levels: NumberLike = 8,
-    ends: str | None = None,
+    ends: WuEnds | WuEndsName | None = None,
     width: NumberLike = 1,
-    across: Across | str = "minor",
-    subgrid: Subgrid | str | None = None,
-    divide: Divide | str | None = None,
+    across: Across | AcrossName = "minor",
+    subgrid: Subgrid | SubgridName | None = None,
+    divide: Divide | DivideName | None = None,
 ) -> Solution:
     """An anti-aliased line (``scanconv antialias line``): ``method`` ``"wu"`` (Xiaolin Wu's
     algorithm), ``"area"`` or ``"supersample"`` (``samples`` x ``samples`` per pixel).
@@ -126,7 +137,7 @@ def antialias_line(
 def antialias_circle(
     r: NumberLike,
     center: PointLike = (0, 0),
-    method: AAMethod | str = "area",
+    method: AAMethod | AAMethodName = "area",
     samples: NumberLike = 4,
     levels: NumberLike = 8,
 ) -> Solution:
@@ -147,10 +158,10 @@ def antialias_circle(
 @answers
 def antialias_polygon(
     vertices: PointsLike,
-    method: AAMethod | str = "area",
+    method: AAMethod | AAMethodName = "area",
     samples: NumberLike = 4,
     levels: NumberLike = 8,
-    rule: FillRule | str = "even-odd",
+    rule: FillRule | FillRuleName = "even-odd",
 ) -> Solution:
     """An anti-aliased polygon (``scanconv antialias polygon``): exact covered areas, or the
     fraction of ``samples`` x ``samples`` samples inside.

@@ -9,6 +9,9 @@ from typing import TYPE_CHECKING
 
 from ..core import lazy
 from ..core.checks import check_whole
+from ..core.choices import (
+    ColorModelName,
+)
 from ..display import answers
 from .values import NumberLike, _number
 
@@ -23,7 +26,7 @@ else:  # each command's answer module, loaded by its first call
 
 @answers
 def color(
-    model: str,
+    model: ColorModelName,
     *values: NumberLike,
     to: str | Sequence[str] = (),
     unit: bool = False,

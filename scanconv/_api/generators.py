@@ -21,6 +21,16 @@ from collections.abc import Iterator
 
 from ..algorithms import circles, ellipses, lines
 from ..core.checks import InputError
+from ..core.choices import (
+    EllipseP0Name,
+    LoopName,
+    P0Name,
+    RoundingName,
+    StartName,
+    TieName,
+    UpdateName,
+    XStepName,
+)
 from ..core.records import Step
 from .values import NumberLike, _number, _whole
 
@@ -33,8 +43,8 @@ def _radius(value: NumberLike, param: str) -> int:
 
 
 def bresenham_line(
-    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, tie: str = "step",
-    start: str = "swap",
+    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, tie: TieName = "step",
+    start: StartName = "swap",
 ) -> Iterator[Step]:  # fmt: skip
     """:func:`scanconv.algorithms.lines.bresenham`, its end points checked."""
     ends = (_whole(x1, "x1"), _whole(y1, "y1"), _whole(x2, "x2"), _whole(y2, "y2"))
@@ -42,7 +52,11 @@ def bresenham_line(
 
 
 def dda_line(
-    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, rounding: str = "half-up"
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    rounding: RoundingName = "half-up",
 ) -> Iterator[Step]:
     """:func:`scanconv.algorithms.lines.dda`, its end points read exactly."""
     ends = (_number(x1, "x1"), _number(y1, "y1"), _number(x2, "x2"), _number(y2, "y2"))
@@ -50,7 +64,11 @@ def dda_line(
 
 
 def basic_line(
-    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, rounding: str = "half-up"
+    x1: NumberLike,
+    y1: NumberLike,
+    x2: NumberLike,
+    y2: NumberLike,
+    rounding: RoundingName = "half-up",
 ) -> Iterator[Step]:
     """:func:`scanconv.algorithms.lines.basic`, its end points read exactly."""
     ends = (_number(x1, "x1"), _number(y1, "y1"), _number(x2, "x2"), _number(y2, "y2"))
@@ -58,21 +76,29 @@ def basic_line(
 
 
 def midpoint_circle(
-    r: NumberLike, tie: str = "step", p0: str = "1-r", loop: str = "strict", update: str = "new"
+    r: NumberLike,
+    tie: TieName = "step",
+    p0: P0Name = "1-r",
+    loop: LoopName = "strict",
+    update: UpdateName = "new",
 ) -> Iterator[Step]:
     """:func:`scanconv.algorithms.circles.midpoint`, its radius checked."""
     return circles.midpoint(_radius(r, "r"), tie, p0, loop, update)
 
 
 def bresenham_circle(
-    r: NumberLike, tie: str = "step", xstep: str = "last"
+    r: NumberLike, tie: TieName = "step", xstep: XStepName = "last"
 ) -> Iterator[Step]:  # fmt: skip
     """:func:`scanconv.algorithms.circles.bresenham`, its radius checked."""
     return circles.bresenham(_radius(r, "r"), tie, xstep)
 
 
 def midpoint_ellipse(
-    rx: NumberLike, ry: NumberLike, loop: str = "strict", tie: str = "step", p0: str = "exact"
+    rx: NumberLike,
+    ry: NumberLike,
+    loop: LoopName = "strict",
+    tie: TieName = "step",
+    p0: EllipseP0Name = "exact",
 ) -> Iterator[Step]:
     """:func:`scanconv.algorithms.ellipses.midpoint_ellipse`, its semi-axes checked."""
     return ellipses.midpoint_ellipse(_radius(rx, "rx"), _radius(ry, "ry"), loop, tie, p0)

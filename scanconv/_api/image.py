@@ -5,6 +5,11 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..core import lazy
+from ..core.choices import (
+    ColorDepthName,
+    OriginName,
+    ReconName,
+)
 from ..display import answers
 from .values import (
     FormulaLike,
@@ -44,7 +49,7 @@ def storage(
     levels: NumberLike | None = None,
     bits: NumberLike | None = None,
     binary: bool = False,
-    color: str | None = None,
+    color: ColorDepthName | None = None,
     frames: NumberLike = 1,
 ) -> Solution:
     """The storage of an ``m`` x ``n`` image (``scanconv storage``): give exactly one of
@@ -69,7 +74,7 @@ def quantize(
     value_range: tuple[NumberLike, NumberLike] | None = None,
     *,
     integer: bool = True,
-    recon: str = "midpoint",
+    recon: ReconName = "midpoint",
 ) -> Solution:
     """The quantization table for ``bits`` bits over ``value_range`` (``scanconv quantize``):
     integer inputs ``LO..HI``, or with ``integer=False`` real ones in ``[LO, HI]``; ``recon`` is
@@ -94,7 +99,7 @@ def sample(
     *,
     domain: tuple[FormulaLike, FormulaLike, FormulaLike, FormulaLike] | None = None,
     value_range: tuple[FormulaLike, FormulaLike] | None = None,
-    origin: str = "bottom-left",
+    origin: OriginName = "bottom-left",
 ) -> Solution:
     """Sample ``f(x, y) = expr`` on an M x N grid and quantize it to ``levels`` levels
     (``scanconv sample``). ``size`` is ``"MxN"``, ``M`` or ``(M, N)``; ``domain`` is

@@ -3,17 +3,25 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from enum import Enum
 from typing import TYPE_CHECKING
 
 from ..algorithms.choices import LineAlgorithm
 from ..core import lazy
 from ..core.checks import InputError
+from ..core.choices import (
+    ClipEndsName,
+    FillRuleName,
+    LineAlgorithmName,
+    LineClipMethodName,
+    MidpointName,
+    NormalsName,
+    PolygonClipMethodName,
+)
 from ..display import answers
 from .values import NumberLike, PointsLike, _choice, _flat, _numbers, _rect
 
 if TYPE_CHECKING:
-    from ..algorithms.process_choices import LineClipMethod, PolygonClipMethod
+    from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
     from ..answers import clip as answers_clip
     from ..answers import clip_polygon as answers_clip_polygon
     from ..answers import cyrus_beck as answers_cyrus_beck
@@ -75,11 +83,11 @@ def clip_line(
     x2: NumberLike,
     y2: NumberLike,
     window: Sequence[NumberLike],
-    method: LineClipMethod | str = "cohen-sutherland",
+    method: LineClipMethod | LineClipMethodName = "cohen-sutherland",
     *,
-    normals: str | None = None,
-    ends: str | None = None,
-    midpoint: str | None = None,
+    normals: NormalsName | None = None,
+    ends: ClipEndsName | None = None,
+    midpoint: MidpointName | None = None,
 ) -> Solution:
     """The segment clipped against ``window`` (``scanconv clip line``).
 
@@ -128,8 +136,8 @@ def clip_convex(
     y2: NumberLike,
     window: PointsLike,
     *,
-    normals: str = "outward",
-    ends: str = "exact",
+    normals: NormalsName = "outward",
+    ends: ClipEndsName = "exact",
 ) -> Solution:
     """Cyrus-Beck clipping against any convex window given by its vertices
     (``scanconv clip convex``).
@@ -147,7 +155,7 @@ def clip_convex(
 def clip_polygon(
     vertices: PointsLike,
     window: Sequence[NumberLike],
-    method: PolygonClipMethod | str = "sutherland-hodgman",
+    method: PolygonClipMethod | PolygonClipMethodName = "sutherland-hodgman",
 ) -> Solution:
     """The polygon clipped against ``window`` by Sutherland-Hodgman or Weiler-Atherton
     (``scanconv clip polygon``).
@@ -180,8 +188,8 @@ def pipeline_line(
     y2: NumberLike,
     window: Sequence[NumberLike],
     viewport: Sequence[NumberLike],
-    algo: LineAlgorithm | str = LineAlgorithm.bresenham,
-    clip: LineClipMethod | str = "cohen-sutherland",
+    algo: LineAlgorithm | LineAlgorithmName = LineAlgorithm.bresenham,
+    clip: LineClipMethod | LineClipMethodName = "cohen-sutherland",
 ) -> Solution:
     """A world-coordinate line clipped, mapped, rounded and scan converted
     (``scanconv pipeline line``).
@@ -208,7 +216,7 @@ def pipeline_polygon(
     window: Sequence[NumberLike],
     viewport: Sequence[NumberLike],
     fill: bool = False,
-    rule: Enum | str = "even-odd",
+    rule: FillRule | FillRuleName = "even-odd",
 ) -> Solution:
     """A world-coordinate polygon clipped (Sutherland-Hodgman), mapped to the viewport, then
     outlined or, with ``fill``, scan-line filled (``scanconv pipeline polygon``).

@@ -4,13 +4,38 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ..algorithms.choices import Convention, Layout, LineAlgorithm, Rounding, Start, Tie
+from ..algorithms.choices import (
+    Convention,
+    Layout,
+    LineAlgorithm,
+    LineScale,
+    Rounding,
+    Start,
+    Tie,
+    WuEnds,
+)
 from ..core import lazy
+from ..core.choices import (
+    CircleMethodName,
+    ConventionName,
+    EllipseP0Name,
+    LayoutName,
+    LineAlgorithmName,
+    LineScaleName,
+    LoopName,
+    P0Name,
+    RoundingName,
+    StartName,
+    TieName,
+    UpdateName,
+    WuEndsName,
+    XStepName,
+)
 from ..display import answers
 from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _pair
 
 if TYPE_CHECKING:
-    from ..algorithms.circle_choices import P0, CircleMethod, Loop, Update
+    from ..algorithms.circle_choices import P0, CircleMethod, EllipseP0, Loop, Update, XStep
     from ..answers import circle as answers_circle
     from ..answers import compare as answers_compare
     from ..answers import ellipse as answers_ellipse
@@ -29,15 +54,15 @@ def line(
     y1: NumberLike,
     x2: NumberLike,
     y2: NumberLike,
-    algo: LineAlgorithm | str = "bresenham",
+    algo: LineAlgorithm | LineAlgorithmName = "bresenham",
     *,
-    rounding: Rounding | str | None = None,
-    tie: Tie | str | None = None,
-    start: Start | str | None = None,
-    scale: str | None = None,
-    ends: str | None = None,
-    convention: Convention | str | None = None,
-    layout: Layout | str = "notes",
+    rounding: Rounding | RoundingName | None = None,
+    tie: Tie | TieName | None = None,
+    start: Start | StartName | None = None,
+    scale: LineScale | LineScaleName | None = None,
+    ends: WuEnds | WuEndsName | None = None,
+    convention: Convention | ConventionName | None = None,
+    layout: Layout | LayoutName = "notes",
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:
@@ -116,16 +141,16 @@ def line(
 def circle(
     r: NumberLike,
     center: PointLike = (0, 0),
-    method: CircleMethod | str = "midpoint",
-    rounding: Rounding | str | None = None,
+    method: CircleMethod | CircleMethodName = "midpoint",
+    rounding: Rounding | RoundingName | None = None,
     *,
-    tie: Tie | str | None = None,
-    p0: P0 | str | None = None,
-    loop: Loop | str | None = None,
-    update: Update | str | None = None,
-    xstep: str | None = None,
-    convention: Convention | str | None = None,
-    layout: Layout | str = "notes",
+    tie: Tie | TieName | None = None,
+    p0: P0 | P0Name | None = None,
+    loop: Loop | LoopName | None = None,
+    update: Update | UpdateName | None = None,
+    xstep: XStep | XStepName | None = None,
+    convention: Convention | ConventionName | None = None,
+    layout: Layout | LayoutName = "notes",
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:
@@ -211,10 +236,10 @@ def ellipse(
     ry: NumberLike,
     center: PointLike = (0, 0),
     *,
-    loop: Loop | str | None = None,
-    tie: Tie | str | None = None,
-    p0: str | None = None,
-    convention: Convention | str | None = None,
+    loop: Loop | LoopName | None = None,
+    tie: Tie | TieName | None = None,
+    p0: EllipseP0 | EllipseP0Name | None = None,
+    convention: Convention | ConventionName | None = None,
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:

@@ -5,10 +5,24 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Literal
 
 from ..core import lazy
 from ..core.checks import InputError
+from ..core.choices import (
+    ArithmeticName,
+    BitOrderName,
+    BoundaryName,
+    CarryName,
+    CompareName,
+    DitherBaseName,
+    DitherScaleName,
+    InsideRuleName,
+    KernelName,
+    PackingName,
+    ScanOrderName,
+    StrokeAlgorithmName,
+)
 from ..display import answers
 from .values import (
     NumberLike,
@@ -81,7 +95,7 @@ def dither_threshold(
     top: NumberLike = 255,
     *,
     at: NumberLike | None = None,
-    compare: str = ">=",
+    compare: CompareName = ">=",
 ) -> Solution:
     """Thresholding (``scanconv dither threshold``): a pixel is on when its value ``compare``
     the threshold ``at`` (default ``top / 2``).
@@ -110,9 +124,9 @@ def dither_ordered(
     matrix: int | MatrixLike = 2,
     top: NumberLike = 255,
     *,
-    compare: str = ">",
-    scale: str = "raw",
-    base: str = "0",
+    compare: CompareName = ">",
+    scale: DitherScaleName = "raw",
+    base: DitherBaseName | Literal[0, 1] = "0",
     transpose: bool = False,
 ) -> Solution:
     """Ordered dither (``scanconv dither ordered``) with the Bayer matrix of order ``matrix``
@@ -137,11 +151,11 @@ def dither_diffusion(
     image: MatrixLike,
     top: NumberLike = 255,
     *,
-    kernel: str = "floyd-steinberg",
-    order: str = "raster",
-    arithmetic: str = "exact",
-    carry: str = "kept",
-    compare: str = ">=",
+    kernel: KernelName = "floyd-steinberg",
+    order: ScanOrderName = "raster",
+    arithmetic: ArithmeticName = "exact",
+    carry: CarryName = "kept",
+    compare: CompareName = ">=",
 ) -> Solution:
     """Error diffusion (``scanconv dither floyd-steinberg``) to two levels, 0 and ``top``.
 
@@ -179,8 +193,8 @@ def inside(
     vertices: PointsLike,
     points: PointsLike,
     *,
-    rule: str = "both",
-    boundary: str = "inside",
+    rule: InsideRuleName = "both",
+    boundary: BoundaryName = "inside",
 ) -> Solution:
     """Whether each of ``points`` is inside the polygon ``vertices`` (``scanconv inside``), by
     the even-odd rule, the nonzero winding rule or ``both``; a point on the boundary counts as
@@ -232,7 +246,7 @@ def line_style(
     y2: NumberLike,
     mask: str,
     *,
-    bits: str = "msb",
+    bits: BitOrderName = "msb",
     repeat: NumberLike = 1,
 ) -> Solution:
     """A dashed or dotted line (``scanconv linestyle``): Bresenham's pixels, each drawn when its
@@ -320,7 +334,11 @@ def char_bitmap(
 
 @answers
 def char_stroke(
-    char: str, *, at: PointLike = (0, 0), scale: NumberLike = 1, algo: str = "bresenham"
+    char: str,
+    *,
+    at: PointLike = (0, 0),
+    scale: NumberLike = 1,
+    algo: StrokeAlgorithmName = "bresenham",
 ) -> Solution:
     """A stroke character (``scanconv char stroke``): each segment scaled, placed ``at`` and
     drawn by ``algo`` (bresenham or dda).
@@ -336,7 +354,7 @@ def char_stroke(
 
 @answers
 def char_storage(
-    count: NumberLike, width: NumberLike, height: NumberLike, *, packing: str = "rows"
+    count: NumberLike, width: NumberLike, height: NumberLike, *, packing: PackingName = "rows"
 ) -> Solution:
     """The storage of a bitmap font of ``count`` glyphs of ``width`` x ``height`` pixels
     (``scanconv char storage``), packed by ``rows``, ``columns`` or ``bits``.

@@ -46,6 +46,7 @@ from fractions import Fraction
 import numpy as np
 import numpy.typing as npt
 
+from ..core.choices import RasterLineName
 from ..core.numeric import COORD_LIMIT, Number, as_int, fmt_exact, normalize, round_half_up
 from .lines import dda_increments, dda_steps, orient
 from .raster_fill import check_pixels
@@ -189,7 +190,7 @@ def line(
     y1: int | Fraction,
     x2: int | Fraction,
     y2: int | Fraction,
-    algo: str = "bresenham",
+    algo: RasterLineName = "bresenham",
     *,
     parallel: bool = True,
 ) -> Coords:

@@ -37,6 +37,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ..core.checks import InputError
+from ..core.choices import FillRuleName
 from ..core.numeric import COORD_LIMIT
 from .polygon import RULES
 
@@ -84,7 +85,9 @@ def _ints(values: Sequence[object] | npt.ArrayLike, name: str) -> Array:
 
 
 def polygon(
-    xs: Sequence[int] | npt.ArrayLike, ys: Sequence[int] | npt.ArrayLike, rule: str = "even-odd"
+    xs: Sequence[int] | npt.ArrayLike,
+    ys: Sequence[int] | npt.ArrayLike,
+    rule: FillRuleName = "even-odd",
 ) -> tuple[Array, Array]:
     """The scan-line fill's pixels of the polygon with vertices ``(xs[i], ys[i])``, bottom row
     first, left to right (exactly :func:`~scanconv.algorithms.polygon.fill_pixels`).
