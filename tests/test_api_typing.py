@@ -298,3 +298,73 @@ def test_the_stubs_agree_with_the_runtime_by_stubtest() -> None:
         cwd=ROOT, capture_output=True, text=True, timeout=600,
     )  # fmt: skip
     assert done.returncode == 0 and not done.stdout.strip(), done.stdout + done.stderr
+
+
+def _public_functions() -> list[tuple[str, object]]:
+    """Every public function, by the names the stubs list (and ``scanconv.raster.__all__``)."""
+    import importlib
+    import inspect
+
+    from scanconv.core.lazy import stub_exports
+
+    found: dict[int, tuple[str, object]] = {}
+    for package in ("scanconv", "scanconv._api", "scanconv.questions"):
+        module = importlib.import_module(package)
+        for name in sorted(stub_exports(package, str(module.__file__))):
+            if package == "scanconv" and name in scanconv.DEPRECATED:
+                continue
+            obj = getattr(module, name)
+            if inspect.isfunction(obj):
+                found.setdefault(id(obj), (f"{package}.{name}", obj))
+    from scanconv import raster
+
+    for name in raster.__all__:
+        if inspect.isfunction(obj := getattr(raster, name)):
+            found.setdefault(id(obj), (f"scanconv.raster.{name}", obj))
+    return sorted(found.values(), key=lambda item: item[0])
+
+
+def _sections(doc: str) -> dict[str, list[str]]:
+    """A numpydoc docstring's sections: title -> its lines."""
+    import inspect
+
+    lines = inspect.cleandoc(doc).splitlines()
+    out: dict[str, list[str]] = {}
+    title = ""
+    for i, line in enumerate(lines):
+        if i + 1 < len(lines) and lines[i + 1] and set(lines[i + 1]) == {"-"}:
+            title = line.strip()
+            out[title] = []
+        elif title and not set(line) == {"-"}:
+            out[title].append(line)
+    return out
+
+
+def test_the_public_functions_are_found_from_the_stubs() -> None:
+    names = [name for name, _ in _public_functions()]
+    assert len(names) >= 60 and "scanconv.line" in names and "scanconv.raster.line" in names
+    assert "scanconv.questions.answer" in names and "scanconv.bresenham_line" in names
+    assert not any("line_solution" in name for name in names)  # deprecated
+
+
+@pytest.mark.parametrize(("name", "fn"), _public_functions(), ids=lambda v: str(v))
+def test_every_public_function_has_numpydoc_parameters_returns_and_examples(
+    name: str, fn: object
+) -> None:
+    import inspect
+
+    assert callable(fn)
+    sections = _sections(fn.__doc__ or "")
+    missing = {"Returns", "Examples"} - set(sections)
+    params = [p.name for p in inspect.signature(fn).parameters.values()]
+    if params:
+        missing |= {"Parameters"} - set(sections)
+    assert not missing, f"{name} has no {', '.join(sorted(missing))} section"
+    assert any(line.lstrip().startswith(">>> ") for line in sections["Examples"]), name
+    described = {
+        word.strip().lstrip("*")
+        for line in sections.get("Parameters", [])
+        if line and not line[0].isspace() and " : " in line
+        for word in line.split(" : ")[0].split(",")
+    }
+    assert set(params) <= described, f"{name}: {sorted(set(params) - described)} not described"

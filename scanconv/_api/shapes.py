@@ -74,8 +74,9 @@ def line(
     x1, y1, x2, y2 : int, Fraction, float, Decimal, numpy scalar or str
         The end points P1 and P2. A float is read as the decimal it prints as (``0.1`` is
         1/10); a string may be ``"5/2"``. NaN, infinities and ``|value| > 10**9`` are refused.
-    algo : {"bresenham", "dda", "basic", "wu"} or LineAlgorithm, default "bresenham"
-        The line algorithm.
+    algo : {"bresenham", "dda", "basic", "wu", "midpoint"} or LineAlgorithm, default "bresenham"
+        The line algorithm: Bresenham's, the simple DDA, the basic (direct) method
+        ``y = m x + c``, Xiaolin Wu's anti-aliased line or the midpoint line.
     rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"}, optional
         How the DDA and the basic method round a coordinate to a pixel (default half-up).
     tie : {"step", "keep"}, optional
@@ -106,6 +107,16 @@ def line(
     ------
     InputError
         A bad value; ``.param`` names the parameter.
+
+    Notes
+    -----
+    The defaults are the notes' variants (``convention="notes"``): Bresenham with
+    ``p0 = 2Δy - Δx``, ``p += 2Δy`` or ``2Δy - 2Δx``, a tie (``p = 0``) stepping the minor axis,
+    walked from the end with the smaller major coordinate (Bresenham 1965; Hearn & Baker,
+    *Computer Graphics*, §3-5); the DDA with increments ``Δx / steps`` and ``Δy / steps``,
+    rounded half up; the midpoint line with ``d = 2F(M)``; Wu's line (Wu 1991) with full
+    end points. ``convention`` names other books' choices (:mod:`scanconv.algorithms.conventions`).
+    Coordinates are ``(x, y)`` with y up.
 
     Examples
     --------
@@ -196,6 +207,16 @@ def circle(
     InputError
         A bad value (a negative or fractional radius, an unknown method).
 
+    Notes
+    -----
+    The midpoint circle is Hearn & Baker's (§3-9): ``p0 = 1 - r`` (``5/4 - r`` exactly),
+    ``p += 2x + 1`` while ``p < 0``, else ``p += 2x + 1 - 2y`` (the new x and y), the octant
+    from ``(0, r)`` while ``x < y``. ``bresenham`` is the ``d0 = 3 - 2r`` form (``d += 4x + 6``
+    or ``4(x - y) + 10``; Bresenham, CACM 20(2), 1977), the one skimage calls Bresenham's;
+    ``general`` is the notes' decision
+    method with ``p0 = 0``; ``polynomial`` rounds ``y = sqrt(r² - x²)``, ``trig`` rounds
+    ``(r cos θ, r sin θ)``. Every octant point is mirrored 8 ways.
+
     Examples
     --------
     >>> [s.pixel for s in circle(5).steps()]
@@ -274,6 +295,13 @@ def ellipse(
     InputError
         A bad value.
 
+    Notes
+    -----
+    Hearn & Baker's midpoint ellipse (§3-10): region 1 with
+    ``p1_0 = ry² - rx² ry + rx²/4`` while ``2ry² x < 2rx² y``, region 2 with
+    ``p2_0 = ry² (x + 1/2)² + rx² (y - 1)² - rx² ry²``; exact fractions unless
+    ``p0="rounded"`` (their C code's integer rounding). Each quadrant point is mirrored 4 ways.
+
     Examples
     --------
     >>> [s.pixel for s in ellipse(3, 2).steps()]
@@ -302,10 +330,37 @@ def ellipse(
 def compare_lines(
     x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, theory: bool = False
 ) -> Solution:
-    """The basic method, DDA and Bresenham side by side (``scanconv compare line``).
+    """The basic method, the DDA and Bresenham side by side over one line, column by column
+    (``scanconv compare line``).
 
-    >>> len(list(compare_lines(2, 8, 10, 4).tables[0].rows()))  # x = 2 .. 10
-    9
+    Parameters
+    ----------
+    x1, y1, x2, y2 : int, Fraction, float, Decimal, numpy scalar or str
+        The end points P1 and P2, read as :func:`line` reads them.
+    theory : bool, default False
+        Add the theory answer's table, DDA vs Bresenham, after the tables.
+
+    Returns
+    -------
+    Answer
+        A table with, for each major coordinate, the exact minor coordinate and each method's
+        pixel (``x, y_exact, basic, dda, bresenham, reason``; ``reason`` says why the methods
+        differ, as ``tie`` where the ideal y is halfway between two pixels), then the
+        arithmetic each method does per pixel.
+
+    Notes
+    -----
+    The methods are the notes' variants: the basic method rounds ``y = m x + c`` half up at each
+    x, the DDA adds ``m`` and rounds half up, Bresenham decides with ``p0 = 2Δy - Δx`` and steps
+    on ``p = 0``; their rounding and tie conventions are those of :func:`line`'s defaults.
+
+    Examples
+    --------
+    >>> sol = compare_lines(2, 8, 10, 4)
+    >>> [c.key for c in sol.tables[0].columns]
+    ['x', 'y_exact', 'basic', 'dda', 'bresenham', 'reason']
+    >>> list(sol.tables[0].rows())[:3]  # at x = 3, y = 7.5: half up gives 8, Bresenham 7
+    [(2, 8, 8, 8, 8, None), (3, Fraction(15, 2), 8, 8, 7, 'tie'), (4, 7, 7, 7, 7, None)]
     """
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return answers_compare.compare_lines(a, b, c, d, theory=theory)
@@ -313,10 +368,35 @@ def compare_lines(
 
 @answers
 def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
-    """Every circle method over the first octant (``scanconv compare circle``).
+    """Every circle method over the first octant of one circle, column by column
+    (``scanconv compare circle``).
 
-    >>> len(list(compare_circles(10).tables[0].rows()))
-    8
+    Parameters
+    ----------
+    r : int, Fraction, float, Decimal, numpy scalar or str
+        The radius, a whole number >= 0.
+    theory : bool, default False
+        Add the theory answer's table, the general method vs Bresenham (midpoint).
+
+    Returns
+    -------
+    Answer
+        A table with, for each x of the octant, the exact ``y = sqrt(r² - x²)`` and each
+        method's y (``midpoint``, ``bresenham``, ``polynomial``, ``trig``, ``symmetric-dda``),
+        and why they differ (``reason``).
+
+    Notes
+    -----
+    The methods are those of :func:`circle` with their default conventions (midpoint
+    ``p0 = 1 - r``, Bresenham ``d0 = 3 - 2r``, the floating-point methods rounded half up).
+
+    Examples
+    --------
+    >>> sol = compare_circles(10)
+    >>> [c.key for c in sol.tables[0].columns]
+    ['x', 'y_exact', 'midpoint', 'bresenham', 'polynomial', 'trig', 'symmetric-dda', 'reason']
+    >>> [row[2] for row in sol.tables[0].rows()]  # the midpoint method's y for x = 0 .. 7
+    [10, 10, 10, 10, 9, 9, 8, 7]
     """
     return answers_compare.compare_circles(_number(r, "r"), theory=theory)
 
@@ -325,7 +405,17 @@ def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
 def compare_curves() -> Solution:
     """Bezier vs B-spline: the points of the notes' comparison (``scanconv compare curves``).
 
-    >>> compare_curves().title
+    Returns
+    -------
+    Answer
+        One table, a row per property (control, degree, ...), a column for each curve.
+
+    Examples
+    --------
+    >>> sol = compare_curves()
+    >>> sol.title
     'Bezier vs B-spline curves'
+    >>> list(sol.tables[0].rows())[0]
+    ('control', 'global: a point moves the whole curve', 'local: only nearby spans')
     """
     return answers_compare.compare_curves()
