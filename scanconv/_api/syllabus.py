@@ -97,11 +97,32 @@ def dither_threshold(
     at: NumberLike | None = None,
     compare: CompareName = ">=",
 ) -> Solution:
-    """Thresholding (``scanconv dither threshold``): a pixel is on when its value ``compare``
-    the threshold ``at`` (default ``top / 2``).
+    """Thresholding (``scanconv dither threshold``): each pixel on when its value passes one
+    threshold.
 
+    Parameters
+    ----------
+    image : str or rows of numbers
+        The image, row 0 first (drawn at the top): rows of numbers, or text with the rows
+        separated by ``;`` or ``/`` and the values by spaces or commas (``"10 200; 60 90"``).
+    top : number, default 255
+        The largest intensity.
+    at : number, optional
+        The threshold T; default ``top / 2``.
+    compare : {">=", ">"}, default ">="
+        A pixel is on when ``I >= T`` (or ``I > T``).
+
+    Returns
+    -------
+    Answer
+        The output image (1 = on) and ``.data["output"]``, row 0 first.
+
+    Examples
+    --------
     >>> dither_threshold("10 200; 128 127", at=128).data["output"]
     [[0, 1], [1, 0]]
+    >>> dither_threshold("10 200; 128 127", at=128, compare=">").data["output"]
+    [[0, 1], [0, 0]]
     """
     return answers_dither.threshold_solution(
         _matrix(image, "image"),
@@ -129,11 +150,48 @@ def dither_ordered(
     base: DitherBaseName | Literal[0, 1] = "0",
     transpose: bool = False,
 ) -> Solution:
-    """Ordered dither (``scanconv dither ordered``) with the Bayer matrix of order ``matrix``
-    (2, 4, 8, 16) or a matrix given (rows, or text as ``image``).
+    """Ordered dither (``scanconv dither ordered``) with a Bayer matrix or a matrix given.
 
-    >>> dither_ordered([[1, 2], [3, 4]], 2, 4).data["output"]
-    [[1, 0], [0, 1]]
+    Parameters
+    ----------
+    image : str or rows of numbers
+        The image, row 0 first (drawn at the top): rows of numbers, or text with the rows
+        separated by ``;`` or ``/`` and the values by spaces or commas (``"10 200; 60 90"``).
+    matrix : int, str or rows of numbers, default 2
+        The Bayer matrix's order n (2, 4, 8, 16), or the matrix itself (rows, or text as
+        ``image``).
+    top : number, default 255
+        The largest intensity.
+    compare : {">", ">="}, default ">"
+        A pixel is on when its value is ``>`` the threshold (Hearn & Baker's "if I > D_n(j, k)")
+        or ``>=`` it.
+    scale : {"raw", "centered"}, default "raw"
+        Entry d's threshold: the intensity scaled to 0 .. n² compared with d (``raw``, Hearn &
+        Baker's form), or ``(d + 1/2) top / n²`` (``centered``, the middle of its band).
+    base : {"0", "1"}, default "0"
+        The matrix entries counted from 0 (``0 .. n² - 1``, the usual Bayer matrix) or from 1.
+    transpose : bool, default False
+        Read the matrix as ``D[j mod n][i mod n]`` (Hearn & Baker index D by x first) instead of
+        ``D[i mod n][j mod n]``.
+
+    Returns
+    -------
+    Answer
+        The thresholds, the output image (1 = on); ``.data`` holds ``matrix``, ``thresholds`` and
+        ``output``.
+
+    Notes
+    -----
+    B. E. Bayer, "An optimum method for two-level rendition of continuous-tone pictures", ICC
+    1973; the conventions are :data:`scanconv.algorithms.dither.DITHER_KNOBS`.
+
+    Examples
+    --------
+    >>> sol = dither_ordered([[1, 2], [3, 4]], 2, 4)
+    >>> sol.data["matrix"], sol.data["output"]
+    ([[0, 2], [3, 1]], [[1, 0], [0, 1]])
+    >>> dither_ordered([[1, 2], [3, 4]], 2, 4, compare=">=").data["output"]
+    [[1, 1], [1, 1]]
     """
     return answers_dither.ordered_solution(
         _matrix(image, "image"),
@@ -157,10 +215,44 @@ def dither_diffusion(
     carry: CarryName = "kept",
     compare: CompareName = ">=",
 ) -> Solution:
-    """Error diffusion (``scanconv dither floyd-steinberg``) to two levels, 0 and ``top``.
+    """Error diffusion to two levels, 0 and ``top`` (``scanconv dither floyd-steinberg``).
 
+    Parameters
+    ----------
+    image : str or rows of numbers
+        The image, row 0 first (drawn at the top): rows of numbers, or text with the rows
+        separated by ``;`` or ``/`` and the values by spaces or commas (``"10 200; 60 90"``).
+    top : number, default 255
+        The largest intensity; a pixel's error is its value minus the level it is given.
+    kernel : {"floyd-steinberg", "simple"}, default "floyd-steinberg"
+        The shares of the error: Floyd-Steinberg's 7/16 right, 3/16, 5/16, 1/16 below, or the
+        simple 3/8 right, 3/8 below, 2/8 diagonal taught under the same name.
+    order : {"raster", "serpentine"}, default "raster"
+        Every row left to right, or alternate rows right to left.
+    arithmetic : {"exact", "integer"}, default "exact"
+        Exact fractions, or each share truncated toward zero (C's integer division).
+    carry : {"kept", "clamped"}, default "kept"
+        Negative errors kept, or clamped at 0.
+    compare : {">=", ">"}, default ">="
+        A pixel is on when its value (with the errors received) passes ``top / 2``.
+
+    Returns
+    -------
+    Answer
+        One row per pixel in the scan order (``received``, ``value``, ``output``, ``error``
+        and the shares ``carries`` to the neighbours) and the output image.
+
+    Notes
+    -----
+    R. W. Floyd and L. Steinberg, "An adaptive algorithm for spatial greyscale", Proc. SID 17
+    (1976).
+
+    Examples
+    --------
     >>> dither_diffusion("100 100; 100 100").data["output"]
     [[0, 1], [0, 0]]
+    >>> dither_diffusion("100 100; 100 100", kernel="simple").data["output"]
+    [[0, 1], [1, 0]]
     """
     return answers_dither.diffusion_solution(
         _matrix(image, "image"),
@@ -175,11 +267,31 @@ def dither_diffusion(
 
 @answers
 def halftone(n: NumberLike, *, level: NumberLike | None = None, bits: NumberLike = 1) -> Solution:
-    """The ``n`` x ``n`` halftone patterns (``scanconv halftone``): the levels they give and
-    the pattern of each level, or of one ``level``.
+    """The n x n halftone patterns (``scanconv halftone``): the levels they give and the pattern of
+    each level, or of one.
 
-    >>> [r[0] for r in halftone(2).tables[0].rows()]
-    [0, 1, 2, 3, 4]
+    Parameters
+    ----------
+    n : int
+        The pattern's side.
+    level : int, optional
+        Only this level's pattern.
+    bits : int, default 1
+        Bits a cell (more than 1: grey cells, ``n² (2**bits - 1) + 1`` levels).
+
+    Returns
+    -------
+    Answer
+        The table ``level, pattern (rows top first), cells on``; ``.data`` holds the number of
+        ``levels`` and the ``patterns``.
+
+    Examples
+    --------
+    >>> sol = halftone(2)
+    >>> sol.data["levels"], sol.data["patterns"][2]
+    (5, [[1, 0], [0, 1]])
+    >>> list(halftone(2, level=3).tables[-1].rows())
+    [(3, '1 1 / 0 1', 3)]
     """
     return answers_dither.pattern_solution(
         _whole(n, "n"),
@@ -196,12 +308,35 @@ def inside(
     rule: InsideRuleName = "both",
     boundary: BoundaryName = "inside",
 ) -> Solution:
-    """Whether each of ``points`` is inside the polygon ``vertices`` (``scanconv inside``), by
-    the even-odd rule, the nonzero winding rule or ``both``; a point on the boundary counts as
-    ``boundary``.
+    """Whether points are inside a polygon (``scanconv inside``), by the even-odd rule, the nonzero
+    winding rule or both.
 
-    >>> [r[3] for r in inside([0, 0, 6, 0, 6, 6, 3, 2, 0, 6], [(3, 1), (3, 4)]).tables[-1].rows()]
-    ['inside (odd)', 'outside (even)']
+    Parameters
+    ----------
+    vertices : sequence of (x, y), or flat numbers
+        The polygon's vertices in order.
+    points : sequence of (x, y), or flat numbers
+        The points tested.
+    rule : {"both", "even-odd", "nonzero"}, default "both"
+        The rule: crossings of a ray from the point (odd: inside), the winding number (nonzero:
+        inside), or both side by side.
+    boundary : {"inside", "outside"}, default "inside"
+        What a point on the boundary counts as.
+
+    Returns
+    -------
+    Answer
+        For each point the ray ``y = y_P, x > x_P`` and the edges it crosses (with their
+        signs), then the verdicts: ``point, boundary, crossings, even_odd, winding,
+        nonzero``.
+
+    Examples
+    --------
+    >>> sol = inside([0, 0, 6, 0, 6, 6, 3, 2, 0, 6], [(3, 1), (3, 4)])
+    >>> for row in sol.tables[-1].rows():
+    ...     print(row)
+    ('P1 (3, 1)', '-', 1, 'inside (odd)', 1, 'inside')
+    ('P2 (3, 4)', '-', 2, 'outside (even)', 0, 'outside')
     """
     return answers_inside.inside_solution(
         _flat(vertices, "vertices"),
@@ -222,12 +357,37 @@ def framebuffer(
     refresh: NumberLike | None = None,
     interlaced: bool = False,
 ) -> Solution:
-    """Frame-buffer arithmetic (``scanconv framebuffer``): the size of a ``width`` x
-    ``height`` raster of ``bits`` bits per pixel, its look-up table of ``lut`` bits an entry,
-    the time to load it at ``rate`` bits per second and the pixel time at ``refresh`` Hz.
+    """Frame-buffer arithmetic (``scanconv framebuffer``).
 
+    Parameters
+    ----------
+    width, height : int
+        The raster, in pixels.
+    bits : int
+        Bits a pixel (``2**bits`` colours at once).
+    lut : int, optional
+        Bits an entry of a colour look-up table (the palette is ``2**lut`` colours).
+    rate : number, optional
+        Bits a second: the time to load the frame buffer.
+    refresh : number, optional
+        The refresh rate in Hz: the pixel rate and the time for one pixel.
+    interlaced : bool, default False
+        An interlaced display: each refresh draws one field (half the lines), so the frames
+        per second are half the refresh rate.
+
+    Returns
+    -------
+    Answer
+        The working; ``.data`` holds ``size_bits``, ``colours`` and, as asked, ``lut_entries``,
+        ``lut_bits``, ``palette``, ``load_time``, ``pixel_rate`` and ``pixel_time``, exact.
+
+    Examples
+    --------
     >>> framebuffer(640, 480, 8).data["size_bits"]
     2457600
+    >>> data = framebuffer(640, 480, 8, lut=24, rate=10**6, refresh=60).data
+    >>> data["palette"], data["load_time"], data["pixel_time"]
+    (16777216, Fraction(1536, 625), Fraction(1, 18432000))
     """
     return answers_framebuffer.framebuffer_solution(
         *_numbers(width=width, height=height, bits=bits),
@@ -249,12 +409,31 @@ def line_style(
     bits: BitOrderName = "msb",
     repeat: NumberLike = 1,
 ) -> Solution:
-    """A dashed or dotted line (``scanconv linestyle``): Bresenham's pixels, each drawn when its
-    bit of ``mask`` is 1 (read from the most or the least significant bit, each bit used
-    ``repeat`` times).
+    """A dashed or dotted line (``scanconv linestyle``): Bresenham's pixels, each drawn when its bit
+    of the mask is 1.
 
+    Parameters
+    ----------
+    x1, y1, x2, y2 : number
+        The end points, integers.
+    mask : str
+        The pattern, 1s and 0s (``"110"``: two on, one off), repeated along the line.
+    bits : {"msb", "lsb"}, default "msb"
+        The mask read from its most or its least significant bit.
+    repeat : int, default 1
+        Each bit used for this many pixels.
+
+    Returns
+    -------
+    Answer
+        Bresenham's steps with each pixel's bit, and the pixels drawn.
+
+    Examples
+    --------
     >>> list(line_style(0, 0, 7, 2, "110").pixels())
     [(0, 0), (1, 0), (3, 1), (4, 1), (6, 2), (7, 2)]
+    >>> list(line_style(0, 0, 7, 2, "10", repeat=2).pixels())
+    [(0, 0), (1, 0), (4, 1), (5, 1)]
     """
     if not isinstance(mask, str):
         raise InputError(f"mask must be a string of 1s and 0s, got {mask!r}", "mask")
@@ -280,11 +459,30 @@ def thick_line(
     *,
     brush: bool = False,
 ) -> Solution:
-    """A thick line (``scanconv thickline``): ``width`` pixels across the minor axis at each
-    pixel of Bresenham's line, or a ``width`` x ``width`` square ``brush``.
+    """A thick line (``scanconv thickline``): at each pixel of Bresenham's line, a span of pixels
+    across the minor axis, or a square brush.
 
-    >>> len(list(thick_line(0, 0, 4, 1, 3).pixels()))
-    15
+    Parameters
+    ----------
+    x1, y1, x2, y2 : number
+        The end points, integers.
+    width : int
+        The width w in pixels.
+    brush : bool, default False
+        A ``w x w`` square brush at each pixel instead of a span across the minor axis.
+
+    Returns
+    -------
+    Answer
+        Bresenham's steps with the pixels each adds, and every pixel once.
+
+    Examples
+    --------
+    >>> sol = thick_line(0, 0, 4, 1, 3)
+    >>> [s.extra[0] for s in sol.steps()][:2]
+    ['(0, -1), (0, 0), (0, 1)', '(1, -1), (1, 0), (1, 1)']
+    >>> len(list(sol.pixels())), len(list(thick_line(0, 0, 4, 1, 3, brush=True).pixels()))
+    (15, 23)
     """
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return answers_attributes.thick_line_solution(
@@ -311,12 +509,32 @@ def char_bitmap(
     at: PointLike = (0, 0),
     scale: NumberLike = 1,
 ) -> Solution:
-    """A character drawn from its bitmap (``scanconv char bitmap``): the 5 x 7 font's glyph or
-    the ``rows`` given (``"01110/10001/..."``, top row first), bottom-left corner ``at``,
-    each bit a ``scale`` x ``scale`` block.
+    """A character drawn from its bitmap (``scanconv char bitmap``).
 
-    >>> len(list(char_bitmap("L").pixels()))
-    11
+    Parameters
+    ----------
+    char : str
+        One letter or digit.
+    rows : str or sequence of str, optional
+        The glyph's rows, top row first (``"01110/10001/..."`` or a list); default the 5 x 7
+        font's glyph. At most 64 x 64 bits.
+    at : (x, y), default (0, 0)
+        The glyph's bottom-left corner.
+    scale : int, default 1
+        Each bit drawn as a ``scale x scale`` block.
+
+    Returns
+    -------
+    Answer
+        The bitmap, row by row, and the pixels it sets (y up).
+
+    Examples
+    --------
+    >>> sol = char_bitmap("L")
+    >>> sol.data["rows"]
+    ['10000', '10000', '10000', '10000', '10000', '10000', '11111']
+    >>> sorted(sol.pixels())[:3]
+    [(0, 0), (0, 1), (0, 2)]
     """
     x0, y0 = _at(at)
     if isinstance(rows, str):
@@ -340,11 +558,32 @@ def char_stroke(
     scale: NumberLike = 1,
     algo: StrokeAlgorithmName = "bresenham",
 ) -> Solution:
-    """A stroke character (``scanconv char stroke``): each segment scaled, placed ``at`` and
-    drawn by ``algo`` (bresenham or dda).
+    """A stroke (vector) character (``scanconv char stroke``): each segment scaled, placed and
+    drawn by a line algorithm.
 
-    >>> [s.pixel for s in char_stroke("T").steps()]
-    [(0, 6), (2, 6)]
+    Parameters
+    ----------
+    char : str
+        One letter or digit of the stroke font.
+    at : (x, y), default (0, 0)
+        Where the glyph's origin is placed.
+    scale : int, default 1
+        The factor each stroke's end points are multiplied by.
+    algo : {"bresenham", "dda"}, default "bresenham"
+        The line algorithm drawing each stroke.
+
+    Returns
+    -------
+    Answer
+        One row per stroke (its end points and its pixels) and the pixels.
+
+    Examples
+    --------
+    >>> sol = char_stroke("T")
+    >>> [s.extra for s in sol.steps()]
+    [('(0, 6) to (4, 6)', '(0, 6), (1, 6), (2, 6), (3, 6), (4, 6)'), ('(2, 6) to (2, 0)', '(2, 0), (2, 1), (2, 2), (2, 3), (2, 4), (2, 5), (2, 6)')]
+    >>> len(list(sol.pixels()))
+    11
     """
     x0, y0 = _at(at)
     return answers_characters.stroke_solution(
@@ -356,11 +595,29 @@ def char_stroke(
 def char_storage(
     count: NumberLike, width: NumberLike, height: NumberLike, *, packing: PackingName = "rows"
 ) -> Solution:
-    """The storage of a bitmap font of ``count`` glyphs of ``width`` x ``height`` pixels
-    (``scanconv char storage``), packed by ``rows``, ``columns`` or ``bits``.
+    """The storage of a bitmap font (``scanconv char storage``).
 
-    >>> char_storage(128, 5, 7).data["bits"]
-    7168
+    Parameters
+    ----------
+    count : int
+        The number of glyphs.
+    width, height : int
+        Each glyph's size in pixels.
+    packing : {"rows", "columns", "bits"}, default "rows"
+        Each row padded to whole bytes, each column padded to whole bytes, or the bits packed
+        with no padding.
+
+    Returns
+    -------
+    Answer
+        The working; ``.data`` holds ``per_glyph`` and the total ``bits``.
+
+    Examples
+    --------
+    >>> char_storage(128, 5, 7).data
+    {'bits': 7168, 'per_glyph': 56, 'packing': 'rows'}
+    >>> char_storage(128, 5, 7, packing="bits").data["bits"]
+    4480
     """
     return answers_characters.font_storage_solution(
         _whole(count, "count"),
