@@ -343,7 +343,7 @@ def _sections(doc: str) -> dict[str, list[str]]:
 def test_the_public_functions_are_found_from_the_stubs() -> None:
     names = [name for name, _ in _public_functions()]
     assert len(names) >= 60 and "scanconv.line" in names and "scanconv.raster.line" in names
-    assert "scanconv.questions.answer" in names and "scanconv.bresenham_line" in names
+    assert "scanconv.questions.answer" in names and "scanconv.bresenham" in names
     assert not any("line_solution" in name for name in names)  # deprecated
 
 

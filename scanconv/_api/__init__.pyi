@@ -31,6 +31,10 @@ from .curves import parametric_custom as parametric_custom
 from .curves import parametric_ellipse as parametric_ellipse
 from .curves import parametric_line as parametric_line
 from .curves import parametric_parabola as parametric_parabola
+from .dither import dither_diffusion as dither_diffusion
+from .dither import dither_ordered as dither_ordered
+from .dither import dither_threshold as dither_threshold
+from .dither import halftone as halftone
 from .image import quantize as quantize
 from .image import ramp as ramp
 from .image import sample as sample
@@ -51,11 +55,7 @@ from .shapes import line as line
 from .syllabus import char_bitmap as char_bitmap
 from .syllabus import char_storage as char_storage
 from .syllabus import char_stroke as char_stroke
-from .syllabus import dither_diffusion as dither_diffusion
-from .syllabus import dither_ordered as dither_ordered
-from .syllabus import dither_threshold as dither_threshold
 from .syllabus import framebuffer as framebuffer
-from .syllabus import halftone as halftone
 from .syllabus import inside as inside
 from .syllabus import line_style as line_style
 from .syllabus import thick_line as thick_line
