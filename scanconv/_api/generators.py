@@ -20,6 +20,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from ..algorithms import circles, ellipses, lines
+from ..algorithms.choices import Rounding, Start, Tie
+from ..algorithms.circle_choices import P0, EllipseP0, Loop, Update, XStep
 from ..core.checks import InputError
 from ..core.choices import (
     EllipseP0Name,
@@ -43,8 +45,8 @@ def _radius(value: NumberLike, param: str) -> int:
 
 
 def bresenham_line(
-    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, tie: TieName = "step",
-    start: StartName = "swap",
+    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, tie: Tie | TieName = "step",
+    start: Start | StartName = "swap",
 ) -> Iterator[Step]:  # fmt: skip
     """Bresenham's line algorithm as a generator of steps (:func:`scanconv.algorithms.lines.bresenham`).
 
@@ -53,10 +55,10 @@ def bresenham_line(
     x1, y1, x2, y2 : int, Fraction, float, Decimal, numpy scalar or str
         The end points P1 and P2 (integers), read as :func:`scanconv.line` reads them (numpy
         integers become exact Python integers; NaN, infinities and ``|v| > 10**9`` are refused).
-    tie : {"step", "keep"}, default "step"
+    tie : {"step", "keep"} or Tie, default "step"
         What ``p_k = 0`` does: step the minor axis (the notes' and Hearn & Baker's ``if p < 0``),
         or keep it (the widely copied ``if p <= 0``).
-    start : {"swap", "given"}, default "swap"
+    start : {"swap", "given"} or Start, default "swap"
         Walk from the end with the smaller major coordinate (the notes), or from P1 as given.
 
     Returns
@@ -88,7 +90,7 @@ def dda_line(
     y1: NumberLike,
     x2: NumberLike,
     y2: NumberLike,
-    rounding: RoundingName = "half-up",
+    rounding: Rounding | RoundingName = "half-up",
 ) -> Iterator[Step]:
     """The simple DDA as a generator of steps (:func:`scanconv.algorithms.lines.dda`).
 
@@ -97,7 +99,7 @@ def dda_line(
     x1, y1, x2, y2 : int, Fraction, float, Decimal, numpy scalar or str
         The end points P1 and P2 (exact numbers, fractions allowed), read as :func:`scanconv.line` reads them (numpy
         integers become exact Python integers; NaN, infinities and ``|v| > 10**9`` are refused).
-    rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"}, default "half-up"
+    rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"} or Rounding, default "half-up"
         How ``x_k`` and ``y_k`` become a pixel: ``floor(v + 1/2)``, toward zero, to even, C's
         ``(int)`` cast, or halves away from zero.
 
@@ -126,7 +128,7 @@ def basic_line(
     y1: NumberLike,
     x2: NumberLike,
     y2: NumberLike,
-    rounding: RoundingName = "half-up",
+    rounding: Rounding | RoundingName = "half-up",
 ) -> Iterator[Step]:
     """The basic (direct) line method, ``y = m x + c`` at each step of the major axis, as a
     generator of steps (:func:`scanconv.algorithms.lines.basic`).
@@ -136,7 +138,7 @@ def basic_line(
     x1, y1, x2, y2 : int, Fraction, float, Decimal, numpy scalar or str
         The end points P1 and P2 (exact numbers, fractions allowed), read as :func:`scanconv.line` reads them (numpy
         integers become exact Python integers; NaN, infinities and ``|v| > 10**9`` are refused).
-    rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"}, default "half-up"
+    rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"} or Rounding, default "half-up"
         How the exact minor coordinate becomes a pixel.
 
     Returns
@@ -157,10 +159,10 @@ def basic_line(
 
 def midpoint_circle(
     r: NumberLike,
-    tie: TieName = "step",
-    p0: P0Name = "1-r",
-    loop: LoopName = "strict",
-    update: UpdateName = "new",
+    tie: Tie | TieName = "step",
+    p0: P0 | P0Name = "1-r",
+    loop: Loop | LoopName = "strict",
+    update: Update | UpdateName = "new",
 ) -> Iterator[Step]:
     """The midpoint circle algorithm's first octant as a generator of steps
     (:func:`scanconv.algorithms.circles.midpoint`).
@@ -169,13 +171,13 @@ def midpoint_circle(
     ----------
     r : int, numpy integer or str
         The radius, a whole number >= 0, checked before the first step.
-    tie : {"step", "keep"}, default "step"
+    tie : {"step", "keep"} or Tie, default "step"
         What ``p = 0`` does: step y (``if p < 0`` keeps it) or keep y.
-    p0 : {"1-r", "5/4-r"}, default "1-r"
+    p0 : {"1-r", "5/4-r"} or P0, default "1-r"
         The initial decision parameter as printed: the integer ``1 - r`` or the exact ``5/4 - r``.
-    loop : {"strict", "inclusive"}, default "strict"
+    loop : {"strict", "inclusive"} or Loop, default "strict"
         The octant's loop runs while ``x < y`` or while ``x <= y``.
-    update : {"new", "old"}, default "new"
+    update : {"new", "old"} or Update, default "new"
         The increments written with the new x and y (``2x_{k+1} + 1``) or the old.
 
     Returns
@@ -200,7 +202,7 @@ def midpoint_circle(
 
 
 def bresenham_circle(
-    r: NumberLike, tie: TieName = "step", xstep: XStepName = "last"
+    r: NumberLike, tie: Tie | TieName = "step", xstep: XStep | XStepName = "last"
 ) -> Iterator[Step]:  # fmt: skip
     """Bresenham's circle (``d0 = 3 - 2r``) as a generator of steps
     (:func:`scanconv.algorithms.circles.bresenham`).
@@ -209,9 +211,9 @@ def bresenham_circle(
     ----------
     r : int, numpy integer or str
         The radius, a whole number >= 0, checked before the first step.
-    tie : {"step", "keep"}, default "step"
+    tie : {"step", "keep"} or Tie, default "step"
         What ``d = 0`` does.
-    xstep : {"last", "first"}, default "last"
+    xstep : {"last", "first"} or XStep, default "last"
         d updated before ``x += 1`` (the notes) or after it, as widely copied code does.
 
     Returns
@@ -236,9 +238,9 @@ def bresenham_circle(
 def midpoint_ellipse(
     rx: NumberLike,
     ry: NumberLike,
-    loop: LoopName = "strict",
-    tie: TieName = "step",
-    p0: EllipseP0Name = "exact",
+    loop: Loop | LoopName = "strict",
+    tie: Tie | TieName = "step",
+    p0: EllipseP0 | EllipseP0Name = "exact",
 ) -> Iterator[Step]:
     """The midpoint ellipse's first quadrant, both regions, as a generator of steps
     (:func:`scanconv.algorithms.ellipses.midpoint_ellipse`).
@@ -247,11 +249,11 @@ def midpoint_ellipse(
     ----------
     rx, ry : int, numpy integer or str
         The semi-axes, whole numbers >= 0, checked before the first step.
-    loop : {"strict", "inclusive"}, default "strict"
+    loop : {"strict", "inclusive"} or Loop, default "strict"
         Region 1 runs while ``2ry²x < 2rx²y`` or while ``<=``.
-    tie : {"step", "keep"}, default "step"
+    tie : {"step", "keep"} or Tie, default "step"
         ``step``: p = 0 chooses SE in both regions; ``keep``: E in region 1, S in region 2.
-    p0 : {"exact", "rounded"}, default "exact"
+    p0 : {"exact", "rounded"} or EllipseP0, default "exact"
         Each region's first decision parameter exact, or rounded as Hearn & Baker's C code.
 
     Returns
