@@ -75,6 +75,16 @@ def polygon(vertices: PointsLike, rule: FillRule | FillRuleName = "even-odd") ->
     ['Edge table (sorted by y_min, then x)', 'Scan lines (AET entries: edge: x, 1/m, y_max)']
     >>> list(sol.pixels())
     [(0, 0), (1, 0), (2, 0), (3, 0), (1, 1), (2, 1), (3, 1), (2, 2)]
+    >>> print(polygon([(0, 0), (4, 0), (2, 3)]).grid(), end="")
+     4 | .  .  .  .  .  .  .
+     3 | .  .  .  .  .  .  .
+     2 | .  .  .  #  .  .  .
+     1 | .  .  #  #  #  .  .
+     0 | .  #  #  #  #  .  .
+    -1 | .  .  .  .  .  .  .
+       +---------------------
+         -1 0  1  2  3  4  5
+    # = plotted pixel; x to the right, y up
     """
     return answers_polygon.polygon_solution(_flat(vertices, "vertices"), _choice(rule, "rule"))
 

@@ -141,7 +141,7 @@ def clip_line(
         The segment's end points P1 and P2, exact numbers.
     window : (xmin, ymin, xmax, ymax)
         The clipping window, four numbers.
-    method : str or LineClipMethod, default "cohen-sutherland"
+    method : {"cohen-sutherland", "liang-barsky", "cyrus-beck", "midpoint-subdivision", "nicholl-lee-nicholl"} or LineClipMethod, default "cohen-sutherland"
         ``"cohen-sutherland"`` (region codes, bit order T B R L), ``"liang-barsky"`` (the
         parameters u1, u2), ``"cyrus-beck"`` (the rectangle as a convex window),
         ``"midpoint-subdivision"`` or ``"nicholl-lee-nicholl"`` (P1's region, the slope tests).

@@ -130,6 +130,16 @@ def line(
     [(1, 0), (2, 0), (3, 1), (4, 1)]
     >>> list(line(0, 0, 4, 2, tie="keep").pixels())
     [(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)]
+    >>> print(line(0, 0, 6, 3).grid(), end="")  # the pixels, y up
+     4 | .  .  .  .  .  .  .  .  .
+     3 | .  .  .  .  .  .  #  #  .
+     2 | .  .  .  .  #  #  .  .  .
+     1 | .  .  #  #  .  .  .  .  .
+     0 | .  #  .  .  .  .  .  .  .
+    -1 | .  .  .  .  .  .  .  .  .
+       +---------------------------
+         -1 0  1  2  3  4  5  6  7
+    # = plotted pixel; x to the right, y up
     """
     coords = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return answers_line.line_solution(
@@ -229,6 +239,19 @@ def circle(
     [0, -5, 0, 1]
     >>> circle(5, (10, 10), method="trig", rounding="trunc").data["rounding"]
     'trunc'
+    >>> print(circle(3).grid(), end="")  # o: the centre
+     4 | .  .  .  .  .  .  .  .  .
+     3 | .  .  .  #  #  #  .  .  .
+     2 | .  .  #  .  .  .  #  .  .
+     1 | .  #  .  .  .  .  .  #  .
+     0 | .  #  .  .  o  .  .  #  .
+    -1 | .  #  .  .  .  .  .  #  .
+    -2 | .  .  #  .  .  .  #  .  .
+    -3 | .  .  .  #  #  #  .  .  .
+    -4 | .  .  .  .  .  .  .  .  .
+       +---------------------------
+         -4 -3 -2 -1 0  1  2  3  4
+    # = plotted pixel, o = marked point, @ = both; x to the right, y up
     """
     radius = _number(r, "r")
     xc, yc = _pair(center, "center")
@@ -308,6 +331,17 @@ def ellipse(
     [(1, 2), (2, 1), (3, 0)]
     >>> sorted(ellipse(2, 1).pixels())
     [(-2, 0), (-1, -1), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 1), (2, 0)]
+    >>> print(ellipse(4, 2).grid(), end="")
+     3 | .  .  .  .  .  .  .  .  .  .  .
+     2 | .  .  .  #  #  #  #  #  .  .  .
+     1 | .  .  #  .  .  .  .  .  #  .  .
+     0 | .  #  .  .  .  o  .  .  .  #  .
+    -1 | .  .  #  .  .  .  .  .  #  .  .
+    -2 | .  .  .  #  #  #  #  #  .  .  .
+    -3 | .  .  .  .  .  .  .  .  .  .  .
+       +---------------------------------
+         -5 -4 -3 -2 -1 0  1  2  3  4  5
+    # = plotted pixel, o = marked point, @ = both; x to the right, y up
     """
     a, b = _numbers(rx=rx, ry=ry)
     xc, yc = _pair(center, "center")

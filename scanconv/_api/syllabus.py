@@ -180,6 +180,15 @@ def line_style(
     [(0, 0), (1, 0), (3, 1), (4, 1), (6, 2), (7, 2)]
     >>> list(line_style(0, 0, 7, 2, "10", repeat=2).pixels())
     [(0, 0), (1, 0), (4, 1), (5, 1)]
+    >>> print(line_style(0, 0, 7, 2, "110").grid(), end="")  # o: the pixels its mask leaves off
+     3 | .  .  .  .  .  .  .  .  .  .
+     2 | .  .  .  .  .  .  .  #  #  .
+     1 | .  .  .  o  #  #  o  .  .  .
+     0 | .  #  #  .  .  .  .  .  .  .
+    -1 | .  .  .  .  .  .  .  .  .  .
+       +------------------------------
+         -1 0  1  2  3  4  5  6  7  8
+    # = plotted pixel, o = marked point, @ = both; x to the right, y up
     """
     if not isinstance(mask, str):
         raise InputError(f"mask must be a string of 1s and 0s, got {mask!r}", "mask")
@@ -229,6 +238,16 @@ def thick_line(
     ['(0, -1), (0, 0), (0, 1)', '(1, -1), (1, 0), (1, 1)']
     >>> len(list(sol.pixels())), len(list(thick_line(0, 0, 4, 1, 3, brush=True).pixels()))
     (15, 23)
+    >>> print(thick_line(0, 0, 4, 1, 3).grid(), end="")
+     3 | .  .  .  .  .  .  .
+     2 | .  .  .  #  #  #  .
+     1 | .  #  #  #  #  #  .
+     0 | .  #  #  #  #  #  .
+    -1 | .  #  #  .  .  .  .
+    -2 | .  .  .  .  .  .  .
+       +---------------------
+         -1 0  1  2  3  4  5
+    # = plotted pixel; x to the right, y up
     """
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return answers_attributes.thick_line_solution(
@@ -281,6 +300,19 @@ def char_bitmap(
     ['10000', '10000', '10000', '10000', '10000', '10000', '11111']
     >>> sorted(sol.pixels())[:3]
     [(0, 0), (0, 1), (0, 2)]
+    >>> print(char_bitmap("L").grid(), end="")
+     7 | .  .  .  .  .  .  .
+     6 | .  #  .  .  .  .  .
+     5 | .  #  .  .  .  .  .
+     4 | .  #  .  .  .  .  .
+     3 | .  #  .  .  .  .  .
+     2 | .  #  .  .  .  .  .
+     1 | .  #  .  .  .  .  .
+     0 | .  #  #  #  #  #  .
+    -1 | .  .  .  .  .  .  .
+       +---------------------
+         -1 0  1  2  3  4  5
+    # = plotted pixel; x to the right, y up
     """
     x0, y0 = _at(at)
     if isinstance(rows, str):
