@@ -6,16 +6,6 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from ..core import lazy
-from ..core.choices import (
-    AAMethodName,
-    AcrossName,
-    DivideName,
-    FillMethodName,
-    FillRuleName,
-    OrderName,
-    SubgridName,
-    WuEndsName,
-)
 from ..display import answers
 from .values import (
     NumberLike,
@@ -36,6 +26,16 @@ if TYPE_CHECKING:
     from ..answers import antialias as answers_antialias
     from ..answers import fill as answers_fill
     from ..answers import polygon as answers_polygon
+    from ..core.choices import (
+        AAMethodName,
+        AcrossName,
+        DivideName,
+        FillMethodName,
+        FillRuleName,
+        OrderName,
+        SubgridName,
+        WuEndsName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_antialias = lazy.module("scanconv.answers.antialias")

@@ -9,15 +9,15 @@ from typing import TYPE_CHECKING
 
 from ..core import lazy
 from ..core.checks import check_whole
-from ..core.choices import (
-    ColorModelName,
-)
 from ..display import answers
 from .values import NumberLike, _number
 
 if TYPE_CHECKING:
     from ..answers import color as answers_color
     from ..answers import topics as answers_topics
+    from ..core.choices import (
+        ColorModelName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_color = lazy.module("scanconv.answers.color")

@@ -9,20 +9,20 @@ from typing import TYPE_CHECKING, Literal
 
 from ..core import lazy
 from ..core.checks import InputError
-from ..core.choices import (
-    ArithmeticName,
-    CarryName,
-    CompareName,
-    DitherBaseName,
-    DitherScaleName,
-    KernelName,
-    ScanOrderName,
-)
 from ..display import answers
 from .values import NumberLike, _choice, _number, _optional, _whole
 
 if TYPE_CHECKING:
     from ..answers import dither as answers_dither
+    from ..core.choices import (
+        ArithmeticName,
+        CarryName,
+        CompareName,
+        DitherBaseName,
+        DitherScaleName,
+        KernelName,
+        ScanOrderName,
+    )
     from ..core.numeric import Number
     from ..core.records import Solution
 else:  # the command's answer module, loaded by its first call

@@ -18,23 +18,26 @@ scanconv.core.checks.InputError: 'nan' is not a finite number
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from ..algorithms import circles, ellipses, lines
 from ..algorithms.choices import Rounding, Start, Tie
 from ..algorithms.circle_choices import P0, EllipseP0, Loop, Update, XStep
 from ..core.checks import InputError
-from ..core.choices import (
-    EllipseP0Name,
-    LoopName,
-    P0Name,
-    RoundingName,
-    StartName,
-    TieName,
-    UpdateName,
-    XStepName,
-)
 from ..core.records import Step
 from .values import NumberLike, _number, _whole
+
+if TYPE_CHECKING:
+    from ..core.choices import (
+        EllipseP0Name,
+        LoopName,
+        P0Name,
+        RoundingName,
+        StartName,
+        TieName,
+        UpdateName,
+        XStepName,
+    )
 
 
 def _radius(value: NumberLike, param: str) -> int:

@@ -5,11 +5,6 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..core import lazy
-from ..core.choices import (
-    ColorDepthName,
-    OriginName,
-    ReconName,
-)
 from ..display import answers
 from .values import (
     FormulaLike,
@@ -25,6 +20,11 @@ from .values import (
 
 if TYPE_CHECKING:
     from ..algorithms import sample as algorithms_sample
+    from ..core.choices import (
+        ColorDepthName,
+        OriginName,
+        ReconName,
+    )
 else:
     algorithms_sample = lazy.module("scanconv.algorithms.sample")
 

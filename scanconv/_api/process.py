@@ -8,15 +8,6 @@ from typing import TYPE_CHECKING
 from ..algorithms.choices import LineAlgorithm
 from ..core import lazy
 from ..core.checks import InputError
-from ..core.choices import (
-    ClipEndsName,
-    FillRuleName,
-    LineAlgorithmName,
-    LineClipMethodName,
-    MidpointName,
-    NormalsName,
-    PolygonClipMethodName,
-)
 from ..display import answers
 from .values import NumberLike, PointsLike, _choice, _flat, _numbers, _rect
 
@@ -31,6 +22,15 @@ if TYPE_CHECKING:
     from ..answers import transform as answers_transform
     from ..answers import viewport as answers_viewport
     from ..answers import weiler_atherton as answers_weiler_atherton
+    from ..core.choices import (
+        ClipEndsName,
+        FillRuleName,
+        LineAlgorithmName,
+        LineClipMethodName,
+        MidpointName,
+        NormalsName,
+        PolygonClipMethodName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_clip = lazy.module("scanconv.answers.clip")

@@ -15,22 +15,6 @@ from ..algorithms.choices import (
     WuEnds,
 )
 from ..core import lazy
-from ..core.choices import (
-    CircleMethodName,
-    ConventionName,
-    EllipseP0Name,
-    LayoutName,
-    LineAlgorithmName,
-    LineScaleName,
-    LoopName,
-    P0Name,
-    RoundingName,
-    StartName,
-    TieName,
-    UpdateName,
-    WuEndsName,
-    XStepName,
-)
 from ..display import answers
 from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _pair
 
@@ -40,6 +24,22 @@ if TYPE_CHECKING:
     from ..answers import compare as answers_compare
     from ..answers import ellipse as answers_ellipse
     from ..answers import line as answers_line
+    from ..core.choices import (
+        CircleMethodName,
+        ConventionName,
+        EllipseP0Name,
+        LayoutName,
+        LineAlgorithmName,
+        LineScaleName,
+        LoopName,
+        P0Name,
+        RoundingName,
+        StartName,
+        TieName,
+        UpdateName,
+        WuEndsName,
+        XStepName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_circle = lazy.module("scanconv.answers.circle")

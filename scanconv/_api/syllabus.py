@@ -10,13 +10,6 @@ from typing import TYPE_CHECKING
 
 from ..core import lazy
 from ..core.checks import InputError
-from ..core.choices import (
-    BitOrderName,
-    BoundaryName,
-    InsideRuleName,
-    PackingName,
-    StrokeAlgorithmName,
-)
 from ..display import answers
 from .values import (
     NumberLike,
@@ -35,6 +28,13 @@ if TYPE_CHECKING:
     from ..answers import characters as answers_characters
     from ..answers import framebuffer as answers_framebuffer
     from ..answers import inside as answers_inside
+    from ..core.choices import (
+        BitOrderName,
+        BoundaryName,
+        InsideRuleName,
+        PackingName,
+        StrokeAlgorithmName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_attributes = lazy.module("scanconv.answers.attributes")

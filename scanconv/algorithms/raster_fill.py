@@ -32,14 +32,17 @@ from __future__ import annotations
 
 import operator
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 
 from ..core.checks import InputError
-from ..core.choices import FillRuleName
 from ..core.numeric import COORD_LIMIT
 from .polygon import RULES
+
+if TYPE_CHECKING:
+    from ..core.choices import FillRuleName
 
 Array = npt.NDArray[np.int64]
 
