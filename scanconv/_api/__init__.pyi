@@ -26,11 +26,6 @@ from .curves import bspline_at as bspline_at
 from .curves import bspline_basis as bspline_basis
 from .curves import continuity as continuity
 from .curves import local_control as local_control
-from .curves import parametric_circle as parametric_circle
-from .curves import parametric_custom as parametric_custom
-from .curves import parametric_ellipse as parametric_ellipse
-from .curves import parametric_line as parametric_line
-from .curves import parametric_parabola as parametric_parabola
 from .dither import dither_diffusion as dither_diffusion
 from .dither import dither_ordered as dither_ordered
 from .dither import dither_threshold as dither_threshold
@@ -39,6 +34,11 @@ from .image import quantize as quantize
 from .image import ramp as ramp
 from .image import sample as sample
 from .image import storage as storage
+from .parametric import parametric_circle as parametric_circle
+from .parametric import parametric_custom as parametric_custom
+from .parametric import parametric_ellipse as parametric_ellipse
+from .parametric import parametric_line as parametric_line
+from .parametric import parametric_parabola as parametric_parabola
 from .process import clip_convex as clip_convex
 from .process import clip_line as clip_line
 from .process import clip_polygon as clip_polygon

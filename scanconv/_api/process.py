@@ -164,6 +164,14 @@ def clip_line(
     InputError
         A convention given to a method it does not apply to.
 
+    Notes
+    -----
+    Cohen & Sutherland (1967, in Newman & Sproull), Liang & Barsky (ACM TOG 3(1), 1984),
+    Cyrus & Beck (Computers & Graphics 3(1), 1978), midpoint subdivision (Sproull &
+    Sutherland's clipping divider, AFIPS FJCC 1968) and Nicholl, Lee & Nicholl (SIGGRAPH '87),
+    as Hearn & Baker, *Computer Graphics, C Version*, 2nd ed., section 6-7, work them, in exact
+    fractions.
+
     Examples
     --------
     >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8)).data["clipped"]
@@ -231,6 +239,11 @@ def clip_convex(
         Each edge with its normal N and first vertex E, the values ``N·D``, ``N·(P1 - E)`` and
         t, the entering and leaving t, and ``.data["clipped"]``.
 
+    Notes
+    -----
+    Cyrus & Beck, "Generalized two- and three-dimensional clipping", Computers & Graphics 3(1),
+    1978; Foley, van Dam, Feiner & Hughes, *Computer Graphics*, 2nd ed., §3.12.4.
+
     Examples
     --------
     >>> clip_convex(-1, 2, 9, 2, [(0, 0), (8, 0), (0, 8)]).data["clipped"]
@@ -265,6 +278,11 @@ def clip_polygon(
     Answer
         Each stage's input and output vertices; ``.data["clipped"]`` (Sutherland-Hodgman) or
         ``.data["polygons"]`` (Weiler-Atherton).
+
+    Notes
+    -----
+    Sutherland & Hodgman, "Reentrant polygon clipping", CACM 17(1), 1974; Weiler & Atherton,
+    SIGGRAPH 1977; both as Hearn & Baker, *Computer Graphics, C Version*, 2nd ed., section 6-8.
 
     Examples
     --------
