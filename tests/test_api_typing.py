@@ -347,7 +347,9 @@ def test_the_public_functions_are_found_from_the_stubs() -> None:
     assert not any("line_solution" in name for name in names)  # deprecated
 
 
-@pytest.mark.parametrize(("name", "fn"), _public_functions(), ids=lambda v: str(v))
+@pytest.mark.parametrize(
+    ("name", "fn"), [pytest.param(name, fn, id=name) for name, fn in _public_functions()]
+)
 def test_every_public_function_has_numpydoc_parameters_returns_and_examples(
     name: str, fn: object
 ) -> None:
