@@ -33,11 +33,14 @@ xs, ys = raster.line(0, 0, 3, 1)
 reveal_type(scanconv.questions.answer("line 0 0 3 1"))
 reveal_type(scanconv.check("a.csv", "line 0 0 3 1"))
 scanconv.circle(np.int64(5), (np.float64(0.5), 0))
+scanconv.line(2, 2, 10, 6, algo="bresenhm")
+scanconv.line(2, 2, 10, 6, algo="bresenham")
+raster.polygon([0, 4, 2], [0, 0, 3], rule="nonzero")
 """
 
 
 @pytest.mark.slow
-def test_mypy_sees_the_public_names_and_refuses_a_misspelt_keyword(tmp_path: Path) -> None:
+def test_mypy_sees_the_names_and_refuses_a_misspelt_keyword_or_choice(tmp_path: Path) -> None:
     (tmp_path / "snippet.py").write_text("import numpy as np\n" + SNIPPET, encoding="utf-8")
     # The README's test command runs `mypy` (the project's config) before pytest: a copy of its
     # cache, read with the same config, checks the snippet alone (under a second of CPU) where
@@ -60,6 +63,10 @@ def test_mypy_sees_the_public_names_and_refuses_a_misspelt_keyword(tmp_path: Pat
         'note: "line" defined in "scanconv._api.shapes"',
         'note: Revealed type is "scanconv.display.Answer"',
         'note: Revealed type is "scanconv.display.Answer"',
+        # a misspelt choice is a type error (core.choices), the right spelling is not
+        'error: Argument "algo" to "line" has incompatible type "Literal[\'bresenhm\']"; '
+        "expected \"LineAlgorithm | Literal['bresenham', 'dda', 'basic', 'wu', "
+        "'midpoint']\"  [arg-type]",
     ], done.stdout + done.stderr
 
 
@@ -173,3 +180,193 @@ def test_answers_pickle_by_the_api_function() -> None:
     sol = scanconv.line(0, 0, np.int64(5), 2, algo="dda")
     back = pickle.loads(pickle.dumps(sol))
     assert back.to("csv") == sol.to("csv") and back.recipe is not None
+
+
+def _choice_sources() -> dict[str, tuple[str, ...]]:
+    """Each Literal alias of :mod:`scanconv.core.choices` -> the values the library validates
+    with: its enum, or the tuple its check reads."""
+    from scanconv.algorithms import (
+        characters,
+        choices,
+        circle_choices,
+        color,
+        coverage,
+        cyrus_beck,
+        dither,
+        inside,
+        midpoint_clip,
+        process_choices,
+        quantize,
+        raster,
+        sample,
+        seedfill,
+        subpixel,
+        wu,
+    )
+    from scanconv.answers import inside as answers_inside
+    from scanconv.answers import subpixel as answers_subpixel
+
+    enums = {
+        "LineAlgorithmName": choices.LineAlgorithm, "RoundingName": choices.Rounding,
+        "TieName": choices.Tie, "StartName": choices.Start, "LineScaleName": choices.LineScale,
+        "WuEndsName": choices.WuEnds, "LayoutName": choices.Layout,
+        "ConventionName": choices.Convention, "CircleMethodName": circle_choices.CircleMethod,
+        "P0Name": circle_choices.P0, "EllipseP0Name": circle_choices.EllipseP0,
+        "LoopName": circle_choices.Loop, "XStepName": circle_choices.XStep,
+        "UpdateName": circle_choices.Update,
+        "LineClipMethodName": process_choices.LineClipMethod,
+        "PolygonClipMethodName": process_choices.PolygonClipMethod,
+        "AAMethodName": process_choices.AAMethod, "AcrossName": process_choices.Across,
+        "SubgridName": process_choices.Subgrid, "DivideName": process_choices.Divide,
+        "FillRuleName": process_choices.FillRule, "OrderName": process_choices.Order,
+    }  # fmt: skip
+    knobs = dither.DITHER_KNOBS
+    tuples = {
+        "RasterLineName": raster.LINE_ALGORITHMS, "NormalsName": cyrus_beck.NORMALS,
+        "ClipEndsName": cyrus_beck.ENDS, "MidpointName": midpoint_clip.MIDPOINTS,
+        "FillMethodName": seedfill.METHODS, "InsideRuleName": answers_inside.RULES,
+        "BoundaryName": inside.BOUNDARY, "ReconName": quantize.RECON,
+        "OriginName": sample.ORIGINS, "PackingName": characters.PACKINGS,
+        "ColorModelName": color.MODELS, "CompareName": knobs["compare"],
+        "DitherScaleName": knobs["scale"], "DitherBaseName": knobs["base"],
+        "KernelName": knobs["kernel"], "ScanOrderName": knobs["order"],
+        "ArithmeticName": knobs["arithmetic"], "CarryName": knobs["carry"],
+    }  # fmt: skip
+    out = {name: tuple(m.value for m in enum) for name, enum in enums.items()}
+    out |= {name: tuple(values) for name, values in tuples.items()}
+    # the enums' and tables' siblings, checked against each other
+    assert set(wu.ENDS) == set(out["WuEndsName"]) and set(coverage.ACROSS) == set(out["AcrossName"])
+    assert set(subpixel.SUBGRIDS) == set(out["SubgridName"])
+    assert set(answers_subpixel.DIVIDES) == set(out["DivideName"])
+    return out
+
+
+def test_each_literal_choice_lists_what_the_library_accepts() -> None:
+    from typing import get_args
+
+    from scanconv.core import choices
+
+    sources = _choice_sources()
+    # three choices the library checks inline: each value accepted, a misspelling refused
+    inline = {
+        "BitOrderName": lambda v: scanconv.line_style(0, 0, 7, 2, "110", bits=v),
+        "StrokeAlgorithmName": lambda v: scanconv.char_stroke("T", algo=v),
+        "ColorDepthName": lambda v: scanconv.storage(4, 4, color=v),
+    }
+    assert sorted(choices.__all__) == sorted(set(sources) | set(inline))
+    for name, values in sources.items():
+        assert sorted(get_args(getattr(choices, name))) == sorted(values), name
+    for name, call in inline.items():
+        for value in get_args(getattr(choices, name)):
+            call(value)
+        with pytest.raises(InputError):
+            call("zzz")
+
+
+STUBTEST = """\
+import sys
+from mypy import stubtest
+
+# stubtest checks every submodule of each module named, and skips a re-exported name when the
+# module defining it is checked: here only the stubs' packages are checked, so each of their
+# lazy exports is verified as the runtime loads it (scanconv.line against scanconv._api.shapes)
+find = stubtest.build_stubs
+
+
+def build(modules, options, find_submodules=False):
+    checked = find(modules, options)
+    for name in [n for n in stubtest._all_stubs if n.startswith("scanconv.") and n not in checked]:
+        del stubtest._all_stubs[name]
+    return checked
+
+
+stubtest.build_stubs = build
+sys.exit(stubtest.test_stubs(stubtest.parse_options(sys.argv[1:])))
+"""
+
+
+@pytest.mark.slow
+def test_the_stubs_agree_with_the_runtime_by_stubtest() -> None:
+    # every public package's __init__.pyi against the objects its lazy __getattr__ loads:
+    # each name present, each signature (parameters, kinds, defaults) and each __all__ equal;
+    # tests/stubtest_allowlist.txt says why each of its entries is inherent to the lazy exports
+    allow = ROOT / "tests" / "stubtest_allowlist.txt"
+    done = subprocess.run(
+        [sys.executable, "-c", STUBTEST, "--concise", "--mypy-config-file",
+         str(ROOT / "pyproject.toml"), "--allowlist", str(allow),
+         "scanconv", "scanconv._api", "scanconv.questions", "scanconv.raster"],
+        cwd=ROOT, capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert done.returncode == 0 and not done.stdout.strip(), done.stdout + done.stderr
+
+
+def _public_functions() -> list[tuple[str, object]]:
+    """Every public function, by the names the stubs list (and ``scanconv.raster.__all__``)."""
+    import importlib
+    import inspect
+
+    from scanconv.core.lazy import stub_exports
+
+    found: dict[int, tuple[str, object]] = {}
+    for package in ("scanconv", "scanconv._api", "scanconv.questions"):
+        module = importlib.import_module(package)
+        for name in sorted(stub_exports(package, str(module.__file__))):
+            if package == "scanconv" and name in scanconv.DEPRECATED:
+                continue
+            obj = getattr(module, name)
+            if inspect.isfunction(obj):
+                found.setdefault(id(obj), (f"{package}.{name}", obj))
+    from scanconv import raster
+
+    for name in raster.__all__:
+        if inspect.isfunction(obj := getattr(raster, name)):
+            found.setdefault(id(obj), (f"scanconv.raster.{name}", obj))
+    return sorted(found.values(), key=lambda item: item[0])
+
+
+def _sections(doc: str) -> dict[str, list[str]]:
+    """A numpydoc docstring's sections: title -> its lines."""
+    import inspect
+
+    lines = inspect.cleandoc(doc).splitlines()
+    out: dict[str, list[str]] = {}
+    title = ""
+    for i, line in enumerate(lines):
+        if i + 1 < len(lines) and lines[i + 1] and set(lines[i + 1]) == {"-"}:
+            title = line.strip()
+            out[title] = []
+        elif title and not set(line) == {"-"}:
+            out[title].append(line)
+    return out
+
+
+def test_the_public_functions_are_found_from_the_stubs() -> None:
+    names = [name for name, _ in _public_functions()]
+    assert len(names) >= 60 and "scanconv.line" in names and "scanconv.raster.line" in names
+    assert "scanconv.questions.answer" in names and "scanconv.bresenham" in names
+    assert not any("line_solution" in name for name in names)  # deprecated
+
+
+@pytest.mark.parametrize(
+    ("name", "fn"), [pytest.param(name, fn, id=name) for name, fn in _public_functions()]
+)
+def test_every_public_function_has_numpydoc_parameters_returns_and_examples(
+    name: str, fn: object
+) -> None:
+    import inspect
+
+    assert callable(fn)
+    sections = _sections(fn.__doc__ or "")
+    missing = {"Returns", "Examples"} - set(sections)
+    params = [p.name for p in inspect.signature(fn).parameters.values()]
+    if params:
+        missing |= {"Parameters"} - set(sections)
+    assert not missing, f"{name} has no {', '.join(sorted(missing))} section"
+    assert any(line.lstrip().startswith(">>> ") for line in sections["Examples"]), name
+    described = {
+        word.strip().lstrip("*")
+        for line in sections.get("Parameters", [])
+        if line and not line[0].isspace() and " : " in line
+        for word in line.split(" : ")[0].split(",")
+    }
+    assert set(params) <= described, f"{name}: {sorted(set(params) - described)} not described"

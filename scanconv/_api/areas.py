@@ -21,10 +21,21 @@ from .values import (
 )
 
 if TYPE_CHECKING:
+    from ..algorithms.choices import WuEnds
     from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid
     from ..answers import antialias as answers_antialias
     from ..answers import fill as answers_fill
     from ..answers import polygon as answers_polygon
+    from ..core.choices import (
+        AAMethodName,
+        AcrossName,
+        DivideName,
+        FillMethodName,
+        FillRuleName,
+        OrderName,
+        SubgridName,
+        WuEndsName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_antialias = lazy.module("scanconv.answers.antialias")
@@ -33,35 +44,95 @@ else:  # each command's answer module, loaded by its first call
 
 
 @answers
-def polygon(vertices: PointsLike, rule: FillRule | str = "even-odd") -> Solution:
-    """The scan-line fill of the polygon ``vertices`` (``scanconv polygon``): the edge table,
-    the active edge table per scan line, the spans and the pixels.
+def polygon(vertices: PointsLike, rule: FillRule | FillRuleName = "even-odd") -> Solution:
+    """The scan-line fill of a polygon (``scanconv polygon``): the edge table, the active edge table
+    per scan line, the spans and the pixels.
 
+    Parameters
+    ----------
+    vertices : sequence of (x, y), or flat x0, y0, x1, y1, ...
+        The polygon's vertices in order, exact numbers.
+    rule : {"even-odd", "nonzero"} or FillRule, default "even-odd"
+        The inside rule: odd crossings (alternate), or a nonzero winding number.
+
+    Returns
+    -------
+    Answer
+        The edge table (``y_min``, x at ``y_min``, ``1/m``, ``y_max``, sorted by y_min then x), the
+        active edges and spans of each scan line, and the filled pixels, bottom row first.
+
+    Notes
+    -----
+    Hearn & Baker's scan-line fill (section 3-11): scan line y meets an edge when
+    ``y_min <= y < y_max`` (the upper end excluded, so a vertex between two edges is counted once
+    and horizontal edges drop out); a span runs from ``ceil(x_left)`` to ``ceil(x_right) - 1``
+    (:func:`scanconv.raster.polygon` gives the same pixels in bulk).
+
+    Examples
+    --------
     >>> sol = polygon([(0, 0), (4, 0), (2, 3)])
+    >>> [t.title for t in sol.tables]
+    ['Edge table (sorted by y_min, then x)', 'Scan lines (AET entries: edge: x, 1/m, y_max)']
     >>> list(sol.pixels())
     [(0, 0), (1, 0), (2, 0), (3, 0), (1, 1), (2, 1), (3, 1), (2, 2)]
+    >>> print(polygon([(0, 0), (4, 0), (2, 3)]).grid(), end="")
+     4 | .  .  .  .  .  .  .
+     3 | .  .  .  .  .  .  .
+     2 | .  .  .  #  .  .  .
+     1 | .  .  #  #  #  .  .
+     0 | .  #  #  #  #  .  .
+    -1 | .  .  .  .  .  .  .
+       +---------------------
+         -1 0  1  2  3  4  5
+    # = plotted pixel; x to the right, y up
     """
     return answers_polygon.polygon_solution(_flat(vertices, "vertices"), _choice(rule, "rule"))
 
 
 @answers
 def fill(
-    method: str,
+    method: FillMethodName,
     seed: PointLike,
     *,
     vertices: PointsLike | None = None,
     rows: str | Sequence[str] | None = None,
     connectivity: NumberLike = 4,
-    order: Order | str = "stack",
+    order: Order | OrderName = "stack",
     span: bool = False,
 ) -> Solution:
-    """A seed fill (``scanconv fill boundary``, ``scanconv fill flood``): ``method`` is
-    ``"boundary"`` or ``"flood"``, over the Bresenham outline of the polygon ``vertices`` or
-    over the grid ``rows`` (text, top row first: ``#`` boundary, ``.`` empty); ``span`` gives the
-    span (scan-line seed) fill.
+    """A seed fill, step by step (``scanconv fill boundary``, ``scanconv fill flood``).
 
-    >>> sorted(fill("flood", (1, 1), rows="####/#..#/####").pixels())
+    Parameters
+    ----------
+    method : {"boundary", "flood"}
+        ``"boundary"``: fill up to the boundary colour; ``"flood"``: replace the seed's colour.
+    seed : (x, y)
+        The seed pixel, integers.
+    vertices : sequence of (x, y), or flat numbers, optional
+        A polygon whose Bresenham outline is the boundary.
+    rows : str or sequence of str, optional
+        The grid instead, top row first: ``#`` boundary, ``.`` empty (``"####/#..#/####"``, or a
+        list of rows). Give ``vertices`` or ``rows``.
+    connectivity : {4, 8}, default 4
+        The neighbours visited.
+    order : {"stack", "queue"} or Order, default "stack"
+        The pending pixels last in first out (the recursion's order) or first in first out.
+    span : bool, default False
+        The span (scan-line seed) fill: fill each run of the row, push one seed per run above and
+        below.
+
+    Returns
+    -------
+    Answer
+        The trace (each pixel popped, filled, and the neighbours pushed) and the filled pixels.
+
+    Examples
+    --------
+    >>> sol = fill("flood", (1, 1), rows="####/#..#/####")
+    >>> sorted(sol.pixels())
     [(1, 1), (2, 1)]
+    >>> len(list(fill("boundary", (2, 2), vertices=[(0, 0), (5, 0), (5, 4), (0, 4)]).pixels()))
+    12
     """
     texts = None if rows is None else ([rows] if isinstance(rows, str) else list(rows))
     sx, sy = _pair(seed, "seed")
@@ -82,31 +153,61 @@ def antialias_line(
     y1: NumberLike,
     x2: NumberLike,
     y2: NumberLike,
-    method: AAMethod | str = "area",
+    method: AAMethod | AAMethodName = "area",
     samples: NumberLike | None = None,
     levels: NumberLike = 8,
-    ends: str | None = None,
+    ends: WuEnds | WuEndsName | None = None,
     width: NumberLike = 1,
-    across: Across | str = "minor",
-    subgrid: Subgrid | str | None = None,
-    divide: Divide | str | None = None,
+    across: Across | AcrossName = "minor",
+    subgrid: Subgrid | SubgridName | None = None,
+    divide: Divide | DivideName | None = None,
 ) -> Solution:
-    """An anti-aliased line (``scanconv antialias line``): ``method`` ``"wu"`` (Xiaolin Wu's
-    algorithm), ``"area"`` or ``"supersample"`` (``samples`` x ``samples`` per pixel).
-    ``ends`` (Wu only): ``"full"`` (the default) or ``"coverage"`` (the end columns weighted
-    by the part of them the line covers, as Wikipedia's pseudocode). ``width`` (area and
-    supersample): the line's width w, measured ``across`` the minor axis (``"minor"``, the
-    default) or ``"perpendicular"`` to the line. ``"subpixel"``: Hearn & Baker's
-    supersampling, Bresenham on the ``samples x samples`` sub-pixel grid (default 3; the
-    ``supersample`` default is 4), its ``subgrid`` ``"span"`` (the default) or ``"centre"``,
-    and ``divide``: ``I = c / n`` (``"n"``, the default) or ``c / n²`` (``"n2"``).
+    """An anti-aliased line (``scanconv antialias line``).
 
+    Parameters
+    ----------
+    x1, y1, x2, y2 : number
+        The end points.
+    method : {"area", "supersample", "wu", "subpixel"} or AAMethod, default "area"
+        ``"area"``: exact covered area of the line's rectangle (w wide) per pixel;
+        ``"supersample"``: the fraction of ``samples x samples`` points inside; ``"wu"``:
+        Xiaolin Wu's algorithm, two pixels per step of the major axis; ``"subpixel"``: Hearn &
+        Baker's supersampling, Bresenham's line on the ``samples x samples`` sub-pixel grid.
+    samples : int, optional
+        Per pixel side: default 4 (``"supersample"``), 3 (``"subpixel"``).
+    levels : int, default 8
+        The grey levels an intensity is quantized to.
+    ends : {"full", "coverage"} or WuEnds, optional
+        Wu only: end points at full intensity (default), or weighted by the part of the end
+        column the line covers (xgap, as Wikipedia's pseudocode).
+    width : number, default 1
+        The line's width w (``"area"``, ``"supersample"``).
+    across : {"minor", "perpendicular"} or Across, default "minor"
+        How w is measured: along the minor axis, or perpendicular to the line.
+    subgrid : {"span", "centre"} or Subgrid, optional
+        ``"subpixel"``: the sub-pixel line from end to end of the pixels (default), or between the
+        end pixels' centres.
+    divide : {"n", "n2"} or Divide, optional
+        ``"subpixel"``: the intensity ``I = c / n`` (default) or ``c / n²`` for c sub-pixels on.
+
+    Returns
+    -------
+    Answer
+        The table of intensities (``"wu"``: per step, both pixels with their intensities and
+        levels) and the derivation, ending in the check that the intensities sum to the area.
+
+    Notes
+    -----
+    Wu's line: Wu, "An efficient antialiasing technique", SIGGRAPH 1991; the two pixels of
+    column x share ``1 - frac(y)`` and ``frac(y)`` of the ideal ``y = y1 + m (x - x1)``.
+
+    Examples
+    --------
     >>> sol = antialias_line(0, 0, 4, 3, width=2, across="perpendicular")
     >>> sol.derived[-2].text
     'sum of I = 10 = the exact area of the shape'
-
-    >>> [s.extra[4] for s in antialias_line(0, 0, 4, 1, method="wu").steps()]
-    [1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4), 1]
+    >>> [(s.extra[2], s.extra[4], s.extra[5]) for s in antialias_line(0, 0, 4, 1, method="wu").steps()]
+    [((0, 0), 1, 0), ((1, 0), Fraction(3, 4), Fraction(1, 4)), ((2, 0), Fraction(1, 2), Fraction(1, 2)), ((3, 0), Fraction(1, 4), Fraction(3, 4)), ((4, 1), 1, 0)]
     """
     return answers_antialias.antialias_solution(
         "line",
@@ -126,13 +227,38 @@ def antialias_line(
 def antialias_circle(
     r: NumberLike,
     center: PointLike = (0, 0),
-    method: AAMethod | str = "area",
+    method: AAMethod | AAMethodName = "area",
     samples: NumberLike = 4,
     levels: NumberLike = 8,
 ) -> Solution:
     """An anti-aliased circle one pixel wide (``scanconv antialias circle``).
 
-    >>> round(sum(float(v) for _, v, *_ in antialias_circle(3).tables[0].rows()), 6)
+    Parameters
+    ----------
+    r : number
+        The radius.
+    center : (x, y), default (0, 0)
+        The centre.
+    method : {"area", "supersample"} or AAMethod, default "area"
+        ``"area"``: each pixel's intensity is the exact area of the shape over the pixel's unit
+        square (centred on the integer point); ``"supersample"``: the fraction of
+        ``samples x samples`` sample points inside.
+    samples : int, default 4
+        Sample points per pixel side (``"supersample"``).
+    levels : int, default 8
+        The grey levels an intensity I is quantized to (``round(I (levels - 1))``).
+
+    Returns
+    -------
+    Answer
+        The table ``pixel, intensity, exact, level`` of the pixels with I > 0, bottom row first.
+
+    Examples
+    --------
+    >>> sol = antialias_circle(3)
+    >>> list(sol.tables[0].rows())[0]
+    ((-2, -3), 0.35165884296966743, '-', 2)
+    >>> round(sum(float(v) for _, v, *_ in sol.tables[0].rows()), 6)  # the ring's area, 2πr
     18.849556
     """
     return answers_antialias.antialias_solution(
@@ -147,15 +273,41 @@ def antialias_circle(
 @answers
 def antialias_polygon(
     vertices: PointsLike,
-    method: AAMethod | str = "area",
+    method: AAMethod | AAMethodName = "area",
     samples: NumberLike = 4,
     levels: NumberLike = 8,
-    rule: FillRule | str = "even-odd",
+    rule: FillRule | FillRuleName = "even-odd",
 ) -> Solution:
     """An anti-aliased polygon (``scanconv antialias polygon``): exact covered areas, or the
-    fraction of ``samples`` x ``samples`` samples inside.
+    fraction of samples inside.
 
-    >>> antialias_polygon([(0, 0), (2, 0), (2, 1), (0, 1)]).derived[-2].value
+    Parameters
+    ----------
+    vertices : sequence of (x, y), or flat x0, y0, x1, y1, ...
+        The polygon's vertices in order, exact numbers.
+    method : {"area", "supersample"} or AAMethod, default "area"
+        ``"area"``: each pixel's intensity is the exact area of the shape over the pixel's unit
+        square (centred on the integer point); ``"supersample"``: the fraction of
+        ``samples x samples`` sample points inside.
+    samples : int, default 4
+        Sample points per pixel side (``"supersample"``).
+    levels : int, default 8
+        The grey levels an intensity I is quantized to (``round(I (levels - 1))``).
+    rule : {"even-odd", "nonzero"} or FillRule, default "even-odd"
+        The inside rule.
+
+    Returns
+    -------
+    Answer
+        The table ``pixel, intensity, exact, level`` of the pixels with I > 0, bottom row first,
+        and the check that the intensities sum to the polygon's area.
+
+    Examples
+    --------
+    >>> sol = antialias_polygon([(0, 0), (2, 0), (2, 1), (0, 1)])
+    >>> [(row[0], row[2]) for row in sol.tables[0].rows()][:3]
+    [((0, 0), '1/4'), ((1, 0), '1/2'), ((2, 0), '1/4')]
+    >>> sol.derived[-2].value  # the area
     2
     """
     return answers_antialias.antialias_solution(

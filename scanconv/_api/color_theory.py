@@ -15,6 +15,9 @@ from .values import NumberLike, _number
 if TYPE_CHECKING:
     from ..answers import color as answers_color
     from ..answers import topics as answers_topics
+    from ..core.choices import (
+        ColorModelName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_color = lazy.module("scanconv.answers.color")
@@ -23,19 +26,49 @@ else:  # each command's answer module, loaded by its first call
 
 @answers
 def color(
-    model: str,
+    model: ColorModelName,
     *values: NumberLike,
     to: str | Sequence[str] = (),
     unit: bool = False,
     bits: NumberLike = 8,
 ) -> Solution:
-    """Convert a colour (``scanconv color``): ``model`` is ``rgb``, ``cmy``, ``hsv``,
-    ``hsi`` or ``grey``; ``to`` the models to convert to (default: every other one). RGB and
-    grey are integers ``0 .. 2**bits - 1`` unless ``unit`` (then ``0 .. 1``); CMY, S, V, I
-    are in ``[0, 1]`` and hue in degrees.
+    """Convert a colour between models (``scanconv color``).
 
+    Parameters
+    ----------
+    model : {"rgb", "cmy", "hsv", "hsi", "grey"}
+        The model the values are in.
+    *values : number
+        The components: RGB and grey integers ``0 .. 2**bits - 1`` (or ``0 .. 1`` with
+        ``unit``); C, M, Y, S, V and I in [0, 1]; hue in degrees.
+    to : str or sequence of str, default ()
+        The models to convert to (names, or one string ``"cmy hsv"`` / ``"cmy,hsv"``); default
+        every other model.
+    unit : bool, default False
+        RGB and grey given on the unit scale 0 .. 1.
+    bits : int, default 8
+        Bits a component for the integer scale.
+
+    Returns
+    -------
+    Answer
+        The conversion worked for each target and ``.data``: each model's components as exact
+        fractions of their range (``"rgb"`` on the unit scale), the ``"hex"`` code, the
+        ``"scale"`` used.
+
+    Notes
+    -----
+    CMY is ``1 - RGB``; HSV is Smith's hexcone (Smith 1978), HSI Gonzalez & Woods' model (its
+    hue from an arc cosine, a float unless exact), grey the average ``(R + G + B)/3`` and ITU-R
+    BT.601 luma (:mod:`scanconv.algorithms.color`).
+
+    Examples
+    --------
     >>> color("rgb", 51, 102, 153, to="cmy").data["cmy"]
     [Fraction(4, 5), Fraction(3, 5), Fraction(2, 5)]
+    >>> sol = color("hsv", 210, 0.5, 0.6, to="rgb")
+    >>> sol.data["rgb"], sol.data["hex"]
+    ([Fraction(3, 10), Fraction(9, 20), Fraction(3, 5)], '#4D7399')
     """
     targets = [to] if isinstance(to, str) else list(to)
     b = _number(bits, "bits")
@@ -50,10 +83,30 @@ def color(
 
 @answers
 def theory(topic: str) -> Solution:
-    """The model answer to the theory question ``topic`` (``scanconv theory``); the names
-    are those of ``scanconv theory --list``.
+    """The model answer to a theory question (``scanconv theory``).
 
-    >>> theory("symmetry").tables[-1].title
+    Parameters
+    ----------
+    topic : str
+        The question's name, as ``scanconv theory --list`` lists them (``"symmetry"``,
+        ``"scan-conversion"``, ``"raster-display"``, ...).
+
+    Returns
+    -------
+    Answer
+        The answer's text, its key points and tables (a worked example where the topic has one).
+
+    Raises
+    ------
+    InputError
+        An unknown topic.
+
+    Examples
+    --------
+    >>> sol = theory("symmetry")
+    >>> sol.title
+    'Explain 8-way symmetry of a circle with diagram'
+    >>> sol.tables[-1].title
     'The eight images of (2, 5) about the centre (0, 0)'
     """
     return answers_topics.theory_solution(topic)

@@ -1,9 +1,9 @@
-"""The Python API: curves (``scanconv parametric``, ``bezier``, ``bspline``, ``continuity``, ``local-control``). See :mod:`scanconv._api`."""
+"""The Python API: curves (``scanconv bezier``, ``bspline``, ``continuity``, ``local-control``; the parametric curves are :mod:`scanconv._api.parametric`). See :mod:`scanconv._api`."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from ..core import lazy
 from ..core.checks import InputError
@@ -13,12 +13,8 @@ from .values import (
     NumberLike,
     PointLike,
     PointsLike,
-    TRangeLike,
-    _bounds,
     _formula,
     _knots,
-    _number,
-    _numbers,
     _pair,
     _points,
     _whole,
@@ -35,7 +31,6 @@ if TYPE_CHECKING:
     from ..answers import bspline_basis_at as answers_bspline_basis_at
     from ..answers import continuity as answers_continuity
     from ..answers import local_control as answers_local_control
-    from ..answers import parametric as answers_parametric
     from ..core.numeric import Number
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
@@ -44,110 +39,38 @@ else:  # each command's answer module, loaded by its first call
     answers_bspline_basis_at = lazy.module("scanconv.answers.bspline_basis_at")
     answers_continuity = lazy.module("scanconv.answers.continuity")
     answers_local_control = lazy.module("scanconv.answers.local_control")
-    answers_parametric = lazy.module("scanconv.answers.parametric")
-
-
-@answers
-def parametric_circle(
-    center: PointLike = (0, 0),
-    radius: NumberLike = 1,
-    *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
-) -> Solution:
-    """``x = xc + r cos t``, ``y = yc + r sin t`` (``scanconv parametric circle``).
-
-    ``samples`` steps of t over ``t_range`` (default: 16 steps over ``0 .. 2*pi``).
-
-    >>> list(parametric_circle(radius=5, samples=4).pixels())[:3]
-    [(5, 0), (4, 1), (3, 2)]
-    """
-    return _parametric(
-        "circle",
-        t_range,
-        samples,
-        center=_pair(center, "center"),
-        radius=_number(radius, "radius"),
-    )
-
-
-@answers
-def parametric_ellipse(
-    center: PointLike = (0, 0),
-    a: NumberLike = 2,
-    b: NumberLike = 1,
-    *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
-) -> Solution:
-    """``x = xc + a cos t``, ``y = yc + b sin t`` (``scanconv parametric ellipse``).
-
-    >>> list(parametric_ellipse(a=8, b=4, samples=4).pixels())[0]
-    (8, 0)
-    """
-    point = _pair(center, "center")
-    a, b = _numbers(a=a, b=b)
-    return _parametric("ellipse", t_range, samples, center=point, a=a, b=b)
-
-
-@answers
-def parametric_parabola(
-    vertex: PointLike = (0, 0),
-    a: NumberLike = 1,
-    *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
-) -> Solution:
-    """``x = h + t``, ``y = k + a t^2`` (``scanconv parametric parabola``; t from -3 to 3).
-
-    >>> [s.pixel for s in parametric_parabola(samples=2).steps()]
-    [(-3, 9), (0, 0), (3, 9)]
-    """
-    point = _pair(vertex, "vertex")
-    return _parametric("parabola", t_range, samples, vertex=point, a=_number(a, "a"))
-
-
-@answers
-def parametric_line(
-    x0: NumberLike,
-    y0: NumberLike,
-    x1: NumberLike,
-    y1: NumberLike,
-    *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
-) -> Solution:
-    """``x = x0 + t (x1 - x0)``, ``y = y0 + t (y1 - y0)`` (``scanconv parametric line``).
-
-    >>> list(parametric_line(0, 0, 4, 2).pixels())
-    [(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)]
-    """
-    points = _numbers(x0=x0, y0=y0, x1=x1, y1=y1)
-    return _parametric("line", t_range, samples, points=points)
-
-
-@answers
-def parametric_custom(
-    x: str,
-    y: str,
-    *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
-) -> Solution:
-    """Your own ``x(t)`` and ``y(t)`` (``scanconv parametric custom``).
-
-    >>> list(parametric_custom("t", "t*t", t_range=(0, 2), samples=2).pixels())
-    [(0, 0), (1, 1), (1, 2), (2, 3), (2, 4)]
-    """
-    return _parametric("custom", t_range, samples, x=x, y=y)
 
 
 @answers
 def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
-    """The Bezier curve of ``points`` at ``samples`` steps of t (default 16)
+    """The Bezier curve of ``points``, tabulated at even steps of t by its Bernstein weights
     (``scanconv bezier``).
 
-    >>> list(bezier([(0, 0), (1, 2), (3, 3), (4, 0)], 8).pixels())
+    Parameters
+    ----------
+    points : sequence of (x, y), or flat x0, y0, x1, y1, ...
+        The control points P0 .. Pn, exact numbers.
+    samples : int, optional
+        The number of steps of t over [0, 1] (``samples + 1`` rows); default 16.
+
+    Returns
+    -------
+    Answer
+        The Bernstein polynomials ``B_i,n(t) = C(n, i) t^i (1 - t)^(n - i)``, the table of
+        t, the weights and the point ``C(t) = Σ B_i,n(t) P_i`` with its pixel (rounded half
+        up), and the pixels joined by Bresenham's line.
+
+    Notes
+    -----
+    The Bernstein form (G. Farin, *Curves and Surfaces for CAGD*, 5th ed., 2002), exact at
+    rational t.
+
+    Examples
+    --------
+    >>> sol = bezier([(0, 0), (1, 2), (3, 3), (4, 0)], 8)
+    >>> [s.pixel for s in sol.steps()][:4]
+    [(0, 0), (0, 1), (1, 1), (1, 2)]
+    >>> list(sol.pixels())
     [(0, 0), (0, 1), (1, 1), (1, 2), (2, 2), (3, 2), (4, 1), (4, 0)]
     """
     pts = _points(points)
@@ -158,9 +81,29 @@ def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
 
 @answers
 def bezier_at(points: PointsLike, t: FormulaLike) -> Solution:
-    """De Casteljau's construction at one ``t`` in [0, 1] (``scanconv bezier --at``).
+    """De Casteljau's construction of the Bezier curve at one ``t`` (``scanconv bezier --at``).
 
-    >>> list(bezier_at([0, 0, 1, 2, 3, 3, 4, 0], "1/2").pixels())  # B(1/2) = (2, 1.875)
+    Parameters
+    ----------
+    points : sequence of (x, y), or flat x0, y0, x1, y1, ...
+        The control points P0 .. Pn, exact numbers.
+    t : number or formula
+        The parameter, in [0, 1] (``"1/2"``, ``0.25``).
+
+    Returns
+    -------
+    Answer
+        Each level of linear interpolations ``P_i^r = (1 - t) P_i^(r-1) + t P_(i+1)^(r-1)``,
+        the point ``C(t)`` (checked against the Bernstein form) and its pixel.
+
+    Notes
+    -----
+    De Casteljau's algorithm (G. Farin, *Curves and Surfaces for CAGD*, 5th ed., 2002).
+
+    Examples
+    --------
+    >>> sol = bezier_at([0, 0, 1, 2, 3, 3, 4, 0], "1/2")  # C(1/2) = (2, 1.875)
+    >>> list(sol.pixels())
     [(2, 2)]
     """
     pts = _points(points)
@@ -174,12 +117,38 @@ def bspline(
     knots: str | Sequence[NumberLike] = "open",
     samples: NumberLike | None = None,
 ) -> Solution:
-    """The B-spline of ``degree`` over ``points`` (``scanconv bspline``). ``knots`` is
-    ``"open"``, ``"uniform"``, or the ``n + p + 2`` knot values (a list or ``"0,0,1,2,2"``);
-    ``samples`` defaults to a few steps per knot span.
+    """The B-spline of ``degree`` over ``points``, tabulated over its knot range by the
+    Cox-de Boor recursion (``scanconv bspline``).
 
-    >>> list(bspline([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, samples=4).pixels())[-1]
-    (5, 2)
+    Parameters
+    ----------
+    points : sequence of (x, y), or flat x0, y0, x1, y1, ...
+        The control points P0 .. Pn, exact numbers.
+    degree : int, default 3
+        The degree p (order p + 1), at most n for n + 1 control points.
+    knots : {"open", "uniform"}, str or sequence of numbers, default "open"
+        ``"open"``: clamped uniform, p + 1 equal knots at each end and integer steps inside;
+        ``"uniform"``: 0, 1, ..., m; or the n + p + 2 knot values themselves (a list, or
+        text as ``"0,0,0,1,2,2,2"``).
+    samples : int, optional
+        The number of steps of t; default a few per knot span.
+
+    Returns
+    -------
+    Answer
+        The knot vector, the table of t, the basis values ``N_i,p(t)`` and the point
+        ``C(t) = Σ N_i,p(t) P_i`` with its pixel, and the pixels joined by Bresenham's line.
+
+    Notes
+    -----
+    The Cox-de Boor recursion (C. de Boor, J. Approximation Theory 6, 1972; M. G. Cox, IMA J.
+    Appl. Math. 10, 1972), exact at rational t.
+
+    Examples
+    --------
+    >>> sol = bspline([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, samples=4)
+    >>> [s.pixel for s in sol.steps()]  # an open B-spline starts at P0 and ends at Pn
+    [(0, 0), (2, 2), (3, 3), (4, 1), (5, 2)]
     """
     return _bspline(points, degree, knots, samples, basis_only=False)
 
@@ -203,15 +172,35 @@ def bspline_basis(
     knots: str | Sequence[NumberLike] = "open",
     samples: NumberLike | None = None,
 ) -> Solution:
-    """Only the table of the basis values ``N_i,p(t)`` (``scanconv bspline --basis``).
+    """Only the table of the B-spline basis values ``N_i,p(t)`` (``scanconv bspline --basis``).
 
-    Without control points (``points`` empty or ``None``) the degree and an explicit knot list
-    define the basis, tabulated over the whole knot range ``[u_0, u_m]``.
+    Parameters
+    ----------
+    points : sequence of (x, y), flat numbers, or None
+        The control points (only their number matters); empty or ``None``: the degree and an
+        explicit knot list define the basis, tabulated over the whole knot range [u_0, u_m].
+    degree : int, default 3
+        The degree p (order p + 1), at most n for n + 1 control points.
+    knots : {"open", "uniform"}, str or sequence of numbers, default "open"
+        ``"open"``: clamped uniform, p + 1 equal knots at each end and integer steps inside;
+        ``"uniform"``: 0, 1, ..., m; or the n + p + 2 knot values themselves (a list, or
+        text as ``"0,0,0,1,2,2,2"``).
+        Without control points, an explicit list.
+    samples : int, optional
+        The number of steps of t; default a few per knot span.
 
-    >>> [c.key for c in bspline_basis([0, 0, 1, 2, 3, 3], 2).tables[0].columns][:3]
-    ['k', 't', 'N0']
-    >>> len(list(bspline_basis(None, 2, [0, 0.25, 0.5, 0.75, 1]).tables[0].rows()))
-    9
+    Returns
+    -------
+    Answer
+        The table ``k, t, N0, N1, ...``.
+
+    Examples
+    --------
+    >>> sol = bspline_basis([0, 0, 1, 2, 3, 3], 2)
+    >>> [c.key for c in sol.tables[0].columns]
+    ['k', 't', 'N0', 'N1', 'N2']
+    >>> list(bspline_basis(None, 2, [0, 0.25, 0.5, 0.75, 1]).tables[0].rows())[4]
+    (4, Fraction(1, 2), Fraction(1, 2), Fraction(1, 2), 1)
     """
     if not points:
         spec = _explicit_knots(knots)
@@ -230,11 +219,30 @@ def bspline_at(
     degree: NumberLike = 3,
     knots: str | Sequence[NumberLike] = "open",
 ) -> Solution:
-    """One ``t``: the Cox-de Boor triangle and the weighted sum (``scanconv bspline --at``).
+    """The B-spline at one ``t``: the Cox-de Boor triangle of basis values and the weighted sum
+    (``scanconv bspline --at``).
 
-    Without control points (``points`` empty or ``None``) the degree and an explicit knot list
-    define the basis, and every ``N_i,d(t)`` is worked (``scanconv bspline --basis --at``).
+    Parameters
+    ----------
+    points : sequence of (x, y), flat numbers, or None
+        The control points; empty or ``None``: every ``N_i,d(t)`` of the basis given by the degree
+        and an explicit knot list is worked (``scanconv bspline --basis --at``).
+    t : number or formula
+        The parameter, within the knot range.
+    degree : int, default 3
+        The degree p (order p + 1), at most n for n + 1 control points.
+    knots : {"open", "uniform"}, str or sequence of numbers, default "open"
+        ``"open"``: clamped uniform, p + 1 equal knots at each end and integer steps inside;
+        ``"uniform"``: 0, 1, ..., m; or the n + p + 2 knot values themselves (a list, or
+        text as ``"0,0,0,1,2,2,2"``).
 
+    Returns
+    -------
+    Answer
+        The triangle ``N_i,0(t) .. N_i,p(t)``, then ``C(t) = Σ N_i,p(t) P_i`` and its pixel.
+
+    Examples
+    --------
     >>> pts = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)]
     >>> list(bspline_at(pts, 1.5, 2).pixels())  # C(1.5) = (2.875, 2.5)
     [(3, 3)]
@@ -255,10 +263,30 @@ def bspline_at(
 def continuity(
     first: PointsLike, second: PointsLike, samples: NumberLike | None = None
 ) -> Solution:
-    """C0, C1, C2 at the join of two Bezier segments (``scanconv continuity``).
+    """The continuity at the join of two Bezier segments: the highest of C0, C1, C2 that holds
+    (``scanconv continuity``).
 
-    >>> continuity([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)]).data["continuity"]
+    Parameters
+    ----------
+    first, second : sequence of (x, y), or flat numbers
+        The control points of the two segments; ``second`` should start where ``first`` ends.
+    samples : int, optional
+        The steps of t per segment for the pixels; default 16.
+
+    Returns
+    -------
+    Answer
+        The end derivatives ``C'(1)``, ``C''(1)`` of the first segment and ``C'(0)``, ``C''(0)``
+        of the second, compared; ``.data["continuity"]`` is ``"C0"``, ``"C1"``, ``"C2"`` or
+        ``None`` (not even C0).
+
+    Examples
+    --------
+    >>> sol = continuity([(0, 0), (1, 1), (2, 0)], [(2, 0), (3, -1), (4, 0)])
+    >>> sol.data["continuity"]
     'C1'
+    >>> sol.derived[-1].text
+    'continuity at the join: C1 (C0 and C1 hold; C2 fails)'
     """
     a, b = _points(first, "first"), _points(second, "second")
     steps = _whole(curve_limits.DEFAULT_SAMPLES if samples is None else samples, "samples")
@@ -274,9 +302,36 @@ def local_control(
     knots: str | Sequence[NumberLike] = "open",
     samples: NumberLike | None = None,
 ) -> Solution:
-    """Move control point ``index`` to ``moved``: what changes on the Bezier curve and on the
+    """Move control point ``index`` to ``moved``: what changes on the Bezier curve and what on the
     B-spline (``scanconv local-control``).
 
+    Parameters
+    ----------
+    points : sequence of (x, y), or flat x0, y0, x1, y1, ...
+        The control points P0 .. Pn, exact numbers.
+    index : int
+        The control point moved, 0 .. n.
+    moved : (x, y)
+        Its new position.
+    degree : int, default 3
+        The degree p (order p + 1), at most n for n + 1 control points.
+    knots : {"open", "uniform"}, str or sequence of numbers, default "open"
+        ``"open"``: clamped uniform, p + 1 equal knots at each end and integer steps inside;
+        ``"uniform"``: 0, 1, ..., m; or the n + p + 2 knot values themselves (a list, or
+        text as ``"0,0,0,1,2,2,2"``).
+    samples : int, optional
+        The steps of t of each curve; default 16.
+
+    Returns
+    -------
+    Answer
+        Both curves before and after, sample by sample; ``.data`` counts the samples that moved
+        (``bezier_samples_moved``, ``bspline_samples_moved``): every sample of the Bezier curve
+        (global control), only those of the spans the point influences on the B-spline (local
+        control).
+
+    Examples
+    --------
     >>> pts = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2), (7, 1)]
     >>> sol = local_control(pts, 5, (7, 5), 2, samples=8)
     >>> sol.data["bezier_samples_moved"], sol.data["bspline_samples_moved"]
@@ -291,20 +346,6 @@ def local_control(
         _whole(degree, "degree"),
         spec,
         _whole(curve_limits.DEFAULT_SAMPLES if samples is None else samples, "samples"),
-    )
-
-
-def _parametric(
-    kind: str,
-    t_range: TRangeLike | None,
-    samples: NumberLike | None,
-    **given: Any,
-) -> Solution:
-    return answers_parametric.parametric_solution(
-        kind,
-        t_range=None if t_range is None else _bounds(t_range),
-        samples=None if samples is None else _whole(samples, "samples"),
-        **given,
     )
 
 

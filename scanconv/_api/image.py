@@ -20,6 +20,11 @@ from .values import (
 
 if TYPE_CHECKING:
     from ..algorithms import sample as algorithms_sample
+    from ..core.choices import (
+        ColorDepthName,
+        OriginName,
+        ReconName,
+    )
 else:
     algorithms_sample = lazy.module("scanconv.algorithms.sample")
 
@@ -44,14 +49,41 @@ def storage(
     levels: NumberLike | None = None,
     bits: NumberLike | None = None,
     binary: bool = False,
-    color: str | None = None,
+    color: ColorDepthName | None = None,
     frames: NumberLike = 1,
 ) -> Solution:
-    """The storage of an ``m`` x ``n`` image (``scanconv storage``): give exactly one of
-    ``levels``, ``bits``, ``binary`` or ``color="rgb24"``.
+    """The storage an M x N image (or F frames of it) needs: ``M x N x k x F`` bits
+    (``scanconv storage``).
 
-    >>> storage(1024, 768, levels=256).data["sizes"]["KiB"]
-    Fraction(768, 1)
+    Parameters
+    ----------
+    m, n : number
+        The image's size, M x N pixels.
+    levels : int, optional
+        L gray levels: ``k = ceil(log2 L)`` bits a pixel.
+    bits : int, optional
+        B bits a pixel: ``k = B``, ``L = 2**B``.
+    binary : bool, default False
+        A binary image, ``k = 1``.
+    color : {"rgb24"}, optional
+        24-bit colour, ``k = 24``. Give exactly one of ``levels``, ``bits``, ``binary``,
+        ``color``.
+    frames : int, default 1
+        F frames (a video).
+
+    Returns
+    -------
+    Answer
+        The working and ``.data["sizes"]``: bits, bytes, KB and MB (powers of 1000), KiB and MiB
+        (powers of 1024), exact.
+
+    Examples
+    --------
+    >>> sizes = storage(1024, 768, levels=256).data["sizes"]
+    >>> sizes["bits"], sizes["KiB"], sizes["MiB"]
+    (6291456, Fraction(768, 1), Fraction(3, 4))
+    >>> storage(640, 480, color="rgb24", frames=25).data["sizes"]["MB"]
+    Fraction(576, 25)
     """
     return answers_storage.storage_solution(
         *_numbers(m=m, n=n),
@@ -69,14 +101,38 @@ def quantize(
     value_range: tuple[NumberLike, NumberLike] | None = None,
     *,
     integer: bool = True,
-    recon: str = "midpoint",
+    recon: ReconName = "midpoint",
 ) -> Solution:
-    """The quantization table for ``bits`` bits over ``value_range`` (``scanconv quantize``):
-    integer inputs ``LO..HI``, or with ``integer=False`` real ones in ``[LO, HI]``; ``recon`` is
-    ``"midpoint"`` or ``"lower"``.
+    """The quantization table for ``bits`` bits over a range of values (``scanconv quantize``).
 
-    >>> [row[-1] for row in quantize(2, (0, 255)).tables[0].rows()]
-    [32, 96, 160, 224]
+    Parameters
+    ----------
+    bits : int
+        B bits: ``2**B`` levels.
+    value_range : (lo, hi), optional
+        The input range: integers ``lo .. hi``, or with ``integer=False`` real values in
+        ``[lo, hi]``; without one the table lists the levels and their codes only.
+    integer : bool, default True
+        Integer inputs (each level a range of whole numbers) or real ones (half-open intervals).
+    recon : {"midpoint", "lower"}, default "midpoint"
+        Each level's reconstruction value: the middle of its interval, or its lower end.
+
+    Returns
+    -------
+    Answer
+        One row per level: ``decimal, binary, gray_level``, and with a range ``from, to,
+        reconstruction``.
+
+    Examples
+    --------
+    >>> for row in quantize(2, (0, 255)).tables[0].rows():
+    ...     print(*row)
+    0 00 Black 0 63 32
+    1 01 Dark Gray 64 127 96
+    2 10 Light Gray 128 191 160
+    3 11 White 192 255 224
+    >>> [row[-1] for row in quantize(2, (0, 1), integer=False, recon="lower").tables[0].rows()]
+    [0, Fraction(1, 4), Fraction(1, 2), Fraction(3, 4)]
     """
     return answers_quantize.quantize_solution(
         _number(bits, "bits"),
@@ -94,14 +150,44 @@ def sample(
     *,
     domain: tuple[FormulaLike, FormulaLike, FormulaLike, FormulaLike] | None = None,
     value_range: tuple[FormulaLike, FormulaLike] | None = None,
-    origin: str = "bottom-left",
+    origin: OriginName = "bottom-left",
 ) -> Solution:
-    """Sample ``f(x, y) = expr`` on an M x N grid and quantize it to ``levels`` levels
-    (``scanconv sample``). ``size`` is ``"MxN"``, ``M`` or ``(M, N)``; ``domain`` is
-    ``(X0, X1, Y0, Y1)``; ``value_range`` the range of f mapped onto the levels.
+    """Sample ``f(x, y) = expr`` on an M x N grid and quantize the samples to L levels
+    (``scanconv sample``).
 
-    >>> next(iter(sample("x + y", "8x8", 8).tables[0].rows()))
-    (0, 4, 4, 5, 5, 6, 6, 7, 7)
+    Parameters
+    ----------
+    expr : str
+        The function of x and y (:mod:`scanconv.core.expr`: ``"x + y"``, ``"sin(x) * y"``).
+    size : str, int or (M, N)
+        The grid: ``"MxN"``, ``M`` (square) or ``(M, N)``; M rows, N columns.
+    levels : int
+        L, the number of levels.
+    domain : (X0, X1, Y0, Y1) of numbers or formulas, optional
+        The sampled rectangle; default ``(0, N - 1, 0, M - 1)``, one sample per pixel at integer
+        coordinates.
+    value_range : (lo, hi) of numbers or formulas, optional
+        The values mapped onto the levels; default the smallest and largest sample (samples
+        outside a range given are clamped).
+    origin : {"bottom-left", "top-left"}, default "bottom-left"
+        Row 0 at the top with y up (``y_i = Y1 - i Δy``), or y down (``y_i = Y0 + i Δy``).
+
+    Returns
+    -------
+    Answer
+        The table of levels, row i by column j; ``level = min(floor((f - f_min) L /
+        (f_max - f_min)), L - 1)``.
+
+    Examples
+    --------
+    >>> for row in list(sample("x + y", "4x4", 4).tables[0].rows()):
+    ...     print(*row)
+    0 2 2 3 3
+    1 1 2 2 3
+    2 0 1 2 2
+    3 0 0 1 2
+    >>> next(iter(sample("x + y", "4x4", 4, origin="top-left").tables[0].rows()))
+    (0, 0, 0, 1, 2)
     """
     m, n = _size(size)
     sampled = algorithms_sample.sample_levels(
@@ -118,10 +204,30 @@ def sample(
 
 @answers
 def ramp(size: str | int | tuple[int, int] = "8", levels: NumberLike = 8) -> Solution:
-    """The notes' grayscale ramp, ``i + j`` folded back at ``L - 1`` (``scanconv image ramp``).
+    """The notes' grayscale ramp: ``f(i, j) = i + j`` folded back at L - 1
+    (``scanconv image ramp``).
 
-    >>> next(iter(ramp(8, 8).tables[0].rows()))
-    (0, 0, 1, 2, 3, 4, 5, 6, 7)
+    Parameters
+    ----------
+    size : str, int or (M, N), default "8"
+        The image: ``"MxN"``, ``M`` (square) or ``(M, N)``.
+    levels : int, default 8
+        L gray levels.
+
+    Returns
+    -------
+    Answer
+        The table ``f(i, j) = s`` if ``s <= L - 1`` else ``2(L - 1) - s``, where
+        ``s = (i + j) mod 2(L - 1)``.
+
+    Examples
+    --------
+    >>> for row in list(ramp(4, 4).tables[0].rows()):
+    ...     print(*row)
+    0 0 1 2 3
+    1 1 2 3 2
+    2 2 3 2 1
+    3 3 2 1 0
     """
     m, n = _size(size)
     return answers_ramp.ramp_solution(m, n, _number(levels, "levels"))

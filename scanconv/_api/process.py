@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from enum import Enum
 from typing import TYPE_CHECKING
 
 from ..algorithms.choices import LineAlgorithm
@@ -13,7 +12,7 @@ from ..display import answers
 from .values import NumberLike, PointsLike, _choice, _flat, _numbers, _rect
 
 if TYPE_CHECKING:
-    from ..algorithms.process_choices import LineClipMethod, PolygonClipMethod
+    from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
     from ..answers import clip as answers_clip
     from ..answers import clip_polygon as answers_clip_polygon
     from ..answers import cyrus_beck as answers_cyrus_beck
@@ -23,6 +22,15 @@ if TYPE_CHECKING:
     from ..answers import transform as answers_transform
     from ..answers import viewport as answers_viewport
     from ..answers import weiler_atherton as answers_weiler_atherton
+    from ..core.choices import (
+        ClipEndsName,
+        FillRuleName,
+        LineAlgorithmName,
+        LineClipMethodName,
+        MidpointName,
+        NormalsName,
+        PolygonClipMethodName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_clip = lazy.module("scanconv.answers.clip")
@@ -40,12 +48,39 @@ else:  # each command's answer module, loaded by its first call
 def transform(
     points: PointsLike, transforms: str | Sequence[str], inverse: bool = False
 ) -> Solution:
-    """The composite of ``transforms`` applied to ``points`` (``scanconv transform``).
+    """The composite of 2D transformations applied to points, in homogeneous coordinates
+    (``scanconv transform``).
 
-    ``transforms`` is a string or a list of words, applied in order: ``"rotate 90 about 2 1,
-    translate 3 0"`` (see :mod:`scanconv.answers.transform`); ``inverse`` also shows M^-1.
+    Parameters
+    ----------
+    points : sequence of (x, y), or flat numbers
+        The points transformed.
+    transforms : str or sequence of str
+        The transformations in the order applied, as words: ``translate TX TY``,
+        ``scale S [SY]``, ``rotate ANGLE``, ``shear SHX SHY`` (each may add ``about X Y``),
+        ``reflect x-axis | y-axis | origin | y=x | y=-x | line X1 Y1 X2 Y2``; one string
+        separated by commas, or a list. An angle is in degrees (``90``, ``-30``) or radians
+        (``pi/4``, ``1.2rad``).
+    inverse : bool, default False
+        Also show the inverse matrix M⁻¹.
 
-    >>> transform([(0, 0), (4, 0)], "rotate 90 about 2 1, translate 3 0").data["after"]
+    Returns
+    -------
+    Answer
+        Each matrix with its numbers, the composite ``M = Mn···M1`` (column vectors,
+        ``P' = M·P``), and every point before and after (``.data["after"]``).
+
+    Notes
+    -----
+    sin and cos are exact at multiples of 15 degrees (``√2/2``), otherwise rounded to 6
+    decimals (:mod:`scanconv.answers.transform`).
+
+    Examples
+    --------
+    >>> sol = transform([(0, 0), (4, 0)], "rotate 90 about 2 1, translate 3 0")
+    >>> sol.data["matrix"]
+    [[0, -1, 6], [1, 0, -1], [0, 0, 1]]
+    >>> sol.data["after"]
     [[6, -1], [6, 3]]
     """
     return answers_transform.transform_solution(
@@ -57,11 +92,28 @@ def transform(
 def viewport(
     window: Sequence[NumberLike], viewport: Sequence[NumberLike], points: PointsLike = ()
 ) -> Solution:
-    """The window-to-viewport mapping of ``points`` (default: the window's corners)
-    (``scanconv viewport``).
+    """The window-to-viewport mapping of points (``scanconv viewport``).
 
-    >>> viewport((0, 0, 10, 10), (100, 100, 150, 200), [(5, 5)]).data["mapped"]
-    [[125, 150]]
+    Parameters
+    ----------
+    window : (xmin, ymin, xmax, ymax)
+        The window in world coordinates.
+    viewport : (xmin, ymin, xmax, ymax)
+        The viewport in device coordinates.
+    points : sequence of (x, y), or flat numbers, default ()
+        The points mapped; none: the window's corners.
+
+    Returns
+    -------
+    Answer
+        The scale ``sx = (xvmax - xvmin) / (xwmax - xwmin)`` (and sy), the translation, the
+        composite matrix, and each point mapped (``.data["mapped"]``).
+
+    Examples
+    --------
+    >>> sol = viewport((0, 0, 10, 10), (100, 100, 150, 200), [(5, 5)])
+    >>> sol.data["scale"], sol.data["mapped"]
+    ([Fraction(5, 1), Fraction(10, 1)], [[125, 150]])
     """
     return answers_viewport.viewport_solution(
         _flat(points, "points"), _rect(window, "window"), _rect(viewport, "viewport")
@@ -75,23 +127,59 @@ def clip_line(
     x2: NumberLike,
     y2: NumberLike,
     window: Sequence[NumberLike],
-    method: LineClipMethod | str = "cohen-sutherland",
+    method: LineClipMethod | LineClipMethodName = "cohen-sutherland",
     *,
-    normals: str | None = None,
-    ends: str | None = None,
-    midpoint: str | None = None,
+    normals: NormalsName | None = None,
+    ends: ClipEndsName | None = None,
+    midpoint: MidpointName | None = None,
 ) -> Solution:
-    """The segment clipped against ``window`` (``scanconv clip line``).
+    """A segment clipped against a rectangular window (``scanconv clip line``).
 
-    ``method`` is ``cohen-sutherland``, ``liang-barsky``, ``cyrus-beck`` (the rectangle as a
-    convex window; ``normals`` outward or inward, ``ends`` exact or truncated) or
-    ``midpoint-subdivision`` (``midpoint`` rounded, floor or exact) or
-    ``nicholl-lee-nicholl`` (P1's region, the slope tests, P2's region).
+    Parameters
+    ----------
+    x1, y1, x2, y2 : number
+        The segment's end points P1 and P2, exact numbers.
+    window : (xmin, ymin, xmax, ymax)
+        The clipping window, four numbers.
+    method : {"cohen-sutherland", "liang-barsky", "cyrus-beck", "midpoint-subdivision", "nicholl-lee-nicholl"} or LineClipMethod, default "cohen-sutherland"
+        ``"cohen-sutherland"`` (region codes, bit order T B R L), ``"liang-barsky"`` (the
+        parameters u1, u2), ``"cyrus-beck"`` (the rectangle as a convex window),
+        ``"midpoint-subdivision"`` or ``"nicholl-lee-nicholl"`` (P1's region, the slope tests).
+    normals : {"outward", "inward"}, optional
+        Cyrus-Beck only: the edge normals (default outward).
+    ends : {"exact", "truncated"}, optional
+        Cyrus-Beck only: the clipped end points exact (default) or truncated to integers.
+    midpoint : {"rounded", "floor", "exact"}, optional
+        Midpoint subdivision only: the midpoint rounded half up (default), floored (the hardware
+        shift) or exact.
 
+    Returns
+    -------
+    Answer
+        The method's working (the region codes and iterations, or the parameter table) and the
+        clipped segment, ``.data["clipped"]`` (``None`` when the segment is outside).
+
+    Raises
+    ------
+    InputError
+        A convention given to a method it does not apply to.
+
+    Notes
+    -----
+    Cohen & Sutherland (1967, in Newman & Sproull), Liang & Barsky (ACM TOG 3(1), 1984),
+    Cyrus & Beck (Computers & Graphics 3(1), 1978), midpoint subdivision (Sproull &
+    Sutherland's clipping divider, AFIPS FJCC 1968) and Nicholl, Lee & Nicholl (SIGGRAPH '87),
+    as Hearn & Baker, *Computer Graphics, C Version*, 2nd ed., section 6-7, work them, in exact
+    fractions.
+
+    Examples
+    --------
     >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8)).data["clipped"]
     [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
-    >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8), "cyrus-beck").data["clipped"]
+    >>> clip_line(7, 9, 11, 4, (4, 4, 10, 8), "liang-barsky").data["clipped"]
     [[Fraction(39, 5), 8], [10, Fraction(21, 4)]]
+    >>> clip_line(0, 0, 3, 1, (4, 4, 10, 8)).data["clipped"] is None  # outside
+    True
     """
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     rect = _rect(window, "window")
@@ -128,12 +216,36 @@ def clip_convex(
     y2: NumberLike,
     window: PointsLike,
     *,
-    normals: str = "outward",
-    ends: str = "exact",
+    normals: NormalsName = "outward",
+    ends: ClipEndsName = "exact",
 ) -> Solution:
-    """Cyrus-Beck clipping against any convex window given by its vertices
+    """Cyrus-Beck clipping of a segment against any convex window given by its vertices
     (``scanconv clip convex``).
 
+    Parameters
+    ----------
+    x1, y1, x2, y2 : number
+        The segment's end points P1 and P2, exact numbers.
+    window : sequence of (x, y), or flat numbers
+        The convex window's vertices, in order.
+    normals : {"outward", "inward"}, default "outward"
+        The edge normals N (inward normals flip the sign of every ``N·D``).
+    ends : {"exact", "truncated"}, default "exact"
+        The clipped end points exact or truncated to integers.
+
+    Returns
+    -------
+    Answer
+        Each edge with its normal N and first vertex E, the values ``N·D``, ``N·(P1 - E)`` and
+        t, the entering and leaving t, and ``.data["clipped"]``.
+
+    Notes
+    -----
+    Cyrus & Beck, "Generalized two- and three-dimensional clipping", Computers & Graphics 3(1),
+    1978; Foley, van Dam, Feiner & Hughes, *Computer Graphics*, 2nd ed., §3.12.4.
+
+    Examples
+    --------
     >>> clip_convex(-1, 2, 9, 2, [(0, 0), (8, 0), (0, 8)]).data["clipped"]
     [[0, 2], [6, 2]]
     """
@@ -147,11 +259,33 @@ def clip_convex(
 def clip_polygon(
     vertices: PointsLike,
     window: Sequence[NumberLike],
-    method: PolygonClipMethod | str = "sutherland-hodgman",
+    method: PolygonClipMethod | PolygonClipMethodName = "sutherland-hodgman",
 ) -> Solution:
-    """The polygon clipped against ``window`` by Sutherland-Hodgman or Weiler-Atherton
-    (``scanconv clip polygon``).
+    """A polygon clipped against a rectangular window (``scanconv clip polygon``).
 
+    Parameters
+    ----------
+    vertices : sequence of (x, y), or flat numbers
+        The polygon's vertices in order.
+    window : (xmin, ymin, xmax, ymax)
+        The clipping window, four numbers.
+    method : {"sutherland-hodgman", "weiler-atherton"} or PolygonClipMethod, default "sutherland-hodgman"
+        Sutherland-Hodgman (against each edge in turn: left, right, bottom, top) or
+        Weiler-Atherton (walking the polygon and the window, one polygon per piece).
+
+    Returns
+    -------
+    Answer
+        Each stage's input and output vertices; ``.data["clipped"]`` (Sutherland-Hodgman) or
+        ``.data["polygons"]`` (Weiler-Atherton).
+
+    Notes
+    -----
+    Sutherland & Hodgman, "Reentrant polygon clipping", CACM 17(1), 1974; Weiler & Atherton,
+    SIGGRAPH 1977; both as Hearn & Baker, *Computer Graphics, C Version*, 2nd ed., section 6-8.
+
+    Examples
+    --------
     >>> clip_polygon([(0, 0), (4, 0), (0, 4)], (1, 1, 3, 3)).data["clipped"]
     [[1, 3], [1, 1], [3, 1]]
     >>> clip_polygon([(0, 0), (8, 0), (8, 8)], (2, 1, 9, 3), "weiler-atherton").data["polygons"]
@@ -180,14 +314,39 @@ def pipeline_line(
     y2: NumberLike,
     window: Sequence[NumberLike],
     viewport: Sequence[NumberLike],
-    algo: LineAlgorithm | str = LineAlgorithm.bresenham,
-    clip: LineClipMethod | str = "cohen-sutherland",
+    algo: LineAlgorithm | LineAlgorithmName = LineAlgorithm.bresenham,
+    clip: LineClipMethod | LineClipMethodName = "cohen-sutherland",
 ) -> Solution:
-    """A world-coordinate line clipped, mapped, rounded and scan converted
-    (``scanconv pipeline line``).
+    """A world-coordinate line through the process: clipped, mapped to the viewport, rounded and
+    scan converted (``scanconv pipeline line``).
 
-    >>> pipeline_line(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10)).data["rounded"]
-    [[0, 3], [20, 8]]
+    Parameters
+    ----------
+    x1, y1, x2, y2 : number
+        The segment's end points P1 and P2, exact numbers.
+    window : (xmin, ymin, xmax, ymax)
+        The world window.
+    viewport : (xmin, ymin, xmax, ymax)
+        The device viewport.
+    algo : {"bresenham", "dda", "basic", "midpoint"} or LineAlgorithm, default "bresenham"
+        The line algorithm of the last stage (not ``"wu"``).
+    clip : {"cohen-sutherland", "liang-barsky", "cyrus-beck", "nicholl-lee-nicholl"}, default "cohen-sutherland"
+        The clipping method of the first stage (not midpoint subdivision, whose rounded
+        midpoints may leave several pieces).
+
+    Returns
+    -------
+    Answer
+        Each stage's working; ``.data`` holds the ``clipped`` segment, its ``device`` coordinates
+        and the ``rounded`` end points scan converted.
+
+    Examples
+    --------
+    >>> sol = pipeline_line(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10))
+    >>> sol.data["clipped"], sol.data["rounded"]
+    ([[0, Fraction(5, 2)], [10, Fraction(15, 2)]], [[0, 3], [20, 8]])
+    >>> list(sol.pixels())[:4]
+    [(0, 3), (1, 3), (2, 4), (3, 4)]
     """
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return answers_pipeline.pipeline_line_solution(
@@ -208,13 +367,36 @@ def pipeline_polygon(
     window: Sequence[NumberLike],
     viewport: Sequence[NumberLike],
     fill: bool = False,
-    rule: Enum | str = "even-odd",
+    rule: FillRule | FillRuleName = "even-odd",
 ) -> Solution:
-    """A world-coordinate polygon clipped (Sutherland-Hodgman), mapped to the viewport, then
-    outlined or, with ``fill``, scan-line filled (``scanconv pipeline polygon``).
+    """A world-coordinate polygon through the process: clipped by Sutherland-Hodgman, mapped to the
+    viewport, then outlined (Bresenham) or scan-line filled (``scanconv pipeline polygon``).
 
-    >>> pipeline_polygon([(-2, 0), (6, 0), (2, 6)], (0, 0, 4, 4), (0, 0, 8, 8)).data["device"][2]
-    [0, 6]
+    Parameters
+    ----------
+    vertices : sequence of (x, y), or flat numbers
+        The polygon's vertices in order.
+    window : (xmin, ymin, xmax, ymax)
+        The world window.
+    viewport : (xmin, ymin, xmax, ymax)
+        The device viewport.
+    fill : bool, default False
+        Scan-line fill the polygon instead of drawing its edges.
+    rule : {"even-odd", "nonzero"} or FillRule, default "even-odd"
+        The fill rule (with ``fill``).
+
+    Returns
+    -------
+    Answer
+        Each stage's working; ``.data`` holds the ``clipped`` and the ``device`` vertices.
+
+    Examples
+    --------
+    >>> sol = pipeline_polygon([(-2, 0), (6, 0), (2, 6)], (0, 0, 4, 4), (0, 0, 8, 8))
+    >>> sol.data["clipped"]
+    [[Fraction(10, 3), 4], [Fraction(2, 3), 4], [0, 3], [0, 0], [4, 0], [4, 3]]
+    >>> sol.data["device"]
+    [[Fraction(20, 3), 8], [Fraction(4, 3), 8], [0, 6], [0, 0], [8, 0], [8, 6]]
     """
     return answers_pipeline.pipeline_polygon_solution(
         _flat(vertices, "vertices"),

@@ -4,17 +4,42 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ..algorithms.choices import Convention, Layout, LineAlgorithm, Rounding, Start, Tie
+from ..algorithms.choices import (
+    Convention,
+    Layout,
+    LineAlgorithm,
+    LineScale,
+    Rounding,
+    Start,
+    Tie,
+    WuEnds,
+)
 from ..core import lazy
 from ..display import answers
 from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _pair
 
 if TYPE_CHECKING:
-    from ..algorithms.circle_choices import P0, CircleMethod, Loop, Update
+    from ..algorithms.circle_choices import P0, CircleMethod, EllipseP0, Loop, Update, XStep
     from ..answers import circle as answers_circle
     from ..answers import compare as answers_compare
     from ..answers import ellipse as answers_ellipse
     from ..answers import line as answers_line
+    from ..core.choices import (
+        CircleMethodName,
+        ConventionName,
+        EllipseP0Name,
+        LayoutName,
+        LineAlgorithmName,
+        LineScaleName,
+        LoopName,
+        P0Name,
+        RoundingName,
+        StartName,
+        TieName,
+        UpdateName,
+        WuEndsName,
+        XStepName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_circle = lazy.module("scanconv.answers.circle")
@@ -29,15 +54,15 @@ def line(
     y1: NumberLike,
     x2: NumberLike,
     y2: NumberLike,
-    algo: LineAlgorithm | str = "bresenham",
+    algo: LineAlgorithm | LineAlgorithmName = "bresenham",
     *,
-    rounding: Rounding | str | None = None,
-    tie: Tie | str | None = None,
-    start: Start | str | None = None,
-    scale: str | None = None,
-    ends: str | None = None,
-    convention: Convention | str | None = None,
-    layout: Layout | str = "notes",
+    rounding: Rounding | RoundingName | None = None,
+    tie: Tie | TieName | None = None,
+    start: Start | StartName | None = None,
+    scale: LineScale | LineScaleName | None = None,
+    ends: WuEnds | WuEndsName | None = None,
+    convention: Convention | ConventionName | None = None,
+    layout: Layout | LayoutName = "notes",
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:
@@ -49,8 +74,9 @@ def line(
     x1, y1, x2, y2 : int, Fraction, float, Decimal, numpy scalar or str
         The end points P1 and P2. A float is read as the decimal it prints as (``0.1`` is
         1/10); a string may be ``"5/2"``. NaN, infinities and ``|value| > 10**9`` are refused.
-    algo : {"bresenham", "dda", "basic", "wu"} or LineAlgorithm, default "bresenham"
-        The line algorithm.
+    algo : {"bresenham", "dda", "basic", "wu", "midpoint"} or LineAlgorithm, default "bresenham"
+        The line algorithm: Bresenham's, the simple DDA, the basic (direct) method
+        ``y = m x + c``, Xiaolin Wu's anti-aliased line or the midpoint line.
     rounding : {"half-up", "trunc", "half-even", "c-cast", "half-away"}, optional
         How the DDA and the basic method round a coordinate to a pixel (default half-up).
     tie : {"step", "keep"}, optional
@@ -82,6 +108,16 @@ def line(
     InputError
         A bad value; ``.param`` names the parameter.
 
+    Notes
+    -----
+    The defaults are the notes' variants (``convention="notes"``): Bresenham with
+    ``p0 = 2Δy - Δx``, ``p += 2Δy`` or ``2Δy - 2Δx``, a tie (``p = 0``) stepping the minor axis,
+    walked from the end with the smaller major coordinate (Bresenham 1965; Hearn & Baker,
+    *Computer Graphics*, §3-5); the DDA with increments ``Δx / steps`` and ``Δy / steps``,
+    rounded half up; the midpoint line with ``d = 2F(M)``; Wu's line (Wu 1991) with full
+    end points. ``convention`` names other books' choices (:mod:`scanconv.algorithms.conventions`).
+    Coordinates are ``(x, y)`` with y up.
+
     Examples
     --------
     >>> list(line(0, 0, 3, 1).pixels())
@@ -94,6 +130,16 @@ def line(
     [(1, 0), (2, 0), (3, 1), (4, 1)]
     >>> list(line(0, 0, 4, 2, tie="keep").pixels())
     [(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)]
+    >>> print(line(0, 0, 6, 3).grid(), end="")  # the pixels, y up
+     4 | .  .  .  .  .  .  .  .  .
+     3 | .  .  .  .  .  .  #  #  .
+     2 | .  .  .  .  #  #  .  .  .
+     1 | .  .  #  #  .  .  .  .  .
+     0 | .  #  .  .  .  .  .  .  .
+    -1 | .  .  .  .  .  .  .  .  .
+       +---------------------------
+         -1 0  1  2  3  4  5  6  7
+    # = plotted pixel; x to the right, y up
     """
     coords = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return answers_line.line_solution(
@@ -116,16 +162,16 @@ def line(
 def circle(
     r: NumberLike,
     center: PointLike = (0, 0),
-    method: CircleMethod | str = "midpoint",
-    rounding: Rounding | str | None = None,
+    method: CircleMethod | CircleMethodName = "midpoint",
+    rounding: Rounding | RoundingName | None = None,
     *,
-    tie: Tie | str | None = None,
-    p0: P0 | str | None = None,
-    loop: Loop | str | None = None,
-    update: Update | str | None = None,
-    xstep: str | None = None,
-    convention: Convention | str | None = None,
-    layout: Layout | str = "notes",
+    tie: Tie | TieName | None = None,
+    p0: P0 | P0Name | None = None,
+    loop: Loop | LoopName | None = None,
+    update: Update | UpdateName | None = None,
+    xstep: XStep | XStepName | None = None,
+    convention: Convention | ConventionName | None = None,
+    layout: Layout | LayoutName = "notes",
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:
@@ -171,6 +217,16 @@ def circle(
     InputError
         A bad value (a negative or fractional radius, an unknown method).
 
+    Notes
+    -----
+    The midpoint circle is Hearn & Baker's (§3-9): ``p0 = 1 - r`` (``5/4 - r`` exactly),
+    ``p += 2x + 1`` while ``p < 0``, else ``p += 2x + 1 - 2y`` (the new x and y), the octant
+    from ``(0, r)`` while ``x < y``. ``bresenham`` is the ``d0 = 3 - 2r`` form (``d += 4x + 6``
+    or ``4(x - y) + 10``; Bresenham, CACM 20(2), 1977), the one skimage calls Bresenham's;
+    ``general`` is the notes' decision
+    method with ``p0 = 0``; ``polynomial`` rounds ``y = sqrt(r² - x²)``, ``trig`` rounds
+    ``(r cos θ, r sin θ)``. Every octant point is mirrored 8 ways.
+
     Examples
     --------
     >>> [s.pixel for s in circle(5).steps()]
@@ -183,6 +239,19 @@ def circle(
     [0, -5, 0, 1]
     >>> circle(5, (10, 10), method="trig", rounding="trunc").data["rounding"]
     'trunc'
+    >>> print(circle(3).grid(), end="")  # o: the centre
+     4 | .  .  .  .  .  .  .  .  .
+     3 | .  .  .  #  #  #  .  .  .
+     2 | .  .  #  .  .  .  #  .  .
+     1 | .  #  .  .  .  .  .  #  .
+     0 | .  #  .  .  o  .  .  #  .
+    -1 | .  #  .  .  .  .  .  #  .
+    -2 | .  .  #  .  .  .  #  .  .
+    -3 | .  .  .  #  #  #  .  .  .
+    -4 | .  .  .  .  .  .  .  .  .
+       +---------------------------
+         -4 -3 -2 -1 0  1  2  3  4
+    # = plotted pixel, o = marked point, @ = both; x to the right, y up
     """
     radius = _number(r, "r")
     xc, yc = _pair(center, "center")
@@ -211,10 +280,10 @@ def ellipse(
     ry: NumberLike,
     center: PointLike = (0, 0),
     *,
-    loop: Loop | str | None = None,
-    tie: Tie | str | None = None,
-    p0: str | None = None,
-    convention: Convention | str | None = None,
+    loop: Loop | LoopName | None = None,
+    tie: Tie | TieName | None = None,
+    p0: EllipseP0 | EllipseP0Name | None = None,
+    convention: Convention | ConventionName | None = None,
     derive: bool = False,
     pseudocode: bool = False,
 ) -> Solution:
@@ -249,12 +318,30 @@ def ellipse(
     InputError
         A bad value.
 
+    Notes
+    -----
+    Hearn & Baker's midpoint ellipse (§3-10): region 1 with
+    ``p1_0 = ry² - rx² ry + rx²/4`` while ``2ry² x < 2rx² y``, region 2 with
+    ``p2_0 = ry² (x + 1/2)² + rx² (y - 1)² - rx² ry²``; exact fractions unless
+    ``p0="rounded"`` (their C code's integer rounding). Each quadrant point is mirrored 4 ways.
+
     Examples
     --------
     >>> [s.pixel for s in ellipse(3, 2).steps()]
     [(1, 2), (2, 1), (3, 0)]
     >>> sorted(ellipse(2, 1).pixels())
     [(-2, 0), (-1, -1), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 1), (2, 0)]
+    >>> print(ellipse(4, 2).grid(), end="")
+     3 | .  .  .  .  .  .  .  .  .  .  .
+     2 | .  .  .  #  #  #  #  #  .  .  .
+     1 | .  .  #  .  .  .  .  .  #  .  .
+     0 | .  #  .  .  .  o  .  .  .  #  .
+    -1 | .  .  #  .  .  .  .  .  #  .  .
+    -2 | .  .  .  #  #  #  #  #  .  .  .
+    -3 | .  .  .  .  .  .  .  .  .  .  .
+       +---------------------------------
+         -5 -4 -3 -2 -1 0  1  2  3  4  5
+    # = plotted pixel, o = marked point, @ = both; x to the right, y up
     """
     a, b = _numbers(rx=rx, ry=ry)
     xc, yc = _pair(center, "center")
@@ -277,10 +364,37 @@ def ellipse(
 def compare_lines(
     x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, theory: bool = False
 ) -> Solution:
-    """The basic method, DDA and Bresenham side by side (``scanconv compare line``).
+    """The basic method, the DDA and Bresenham side by side over one line, column by column
+    (``scanconv compare line``).
 
-    >>> len(list(compare_lines(2, 8, 10, 4).tables[0].rows()))  # x = 2 .. 10
-    9
+    Parameters
+    ----------
+    x1, y1, x2, y2 : int, Fraction, float, Decimal, numpy scalar or str
+        The end points P1 and P2, read as :func:`line` reads them.
+    theory : bool, default False
+        Add the theory answer's table, DDA vs Bresenham, after the tables.
+
+    Returns
+    -------
+    Answer
+        A table with, for each major coordinate, the exact minor coordinate and each method's
+        pixel (``x, y_exact, basic, dda, bresenham, reason``; ``reason`` says why the methods
+        differ, as ``tie`` where the ideal y is halfway between two pixels), then the
+        arithmetic each method does per pixel.
+
+    Notes
+    -----
+    The methods are the notes' variants: the basic method rounds ``y = m x + c`` half up at each
+    x, the DDA adds ``m`` and rounds half up, Bresenham decides with ``p0 = 2Δy - Δx`` and steps
+    on ``p = 0``; their rounding and tie conventions are those of :func:`line`'s defaults.
+
+    Examples
+    --------
+    >>> sol = compare_lines(2, 8, 10, 4)
+    >>> [c.key for c in sol.tables[0].columns]
+    ['x', 'y_exact', 'basic', 'dda', 'bresenham', 'reason']
+    >>> list(sol.tables[0].rows())[:3]  # at x = 3, y = 7.5: half up gives 8, Bresenham 7
+    [(2, 8, 8, 8, 8, None), (3, Fraction(15, 2), 8, 8, 7, 'tie'), (4, 7, 7, 7, 7, None)]
     """
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return answers_compare.compare_lines(a, b, c, d, theory=theory)
@@ -288,10 +402,35 @@ def compare_lines(
 
 @answers
 def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
-    """Every circle method over the first octant (``scanconv compare circle``).
+    """Every circle method over the first octant of one circle, column by column
+    (``scanconv compare circle``).
 
-    >>> len(list(compare_circles(10).tables[0].rows()))
-    8
+    Parameters
+    ----------
+    r : int, Fraction, float, Decimal, numpy scalar or str
+        The radius, a whole number >= 0.
+    theory : bool, default False
+        Add the theory answer's table, the general method vs Bresenham (midpoint).
+
+    Returns
+    -------
+    Answer
+        A table with, for each x of the octant, the exact ``y = sqrt(r² - x²)`` and each
+        method's y (``midpoint``, ``bresenham``, ``polynomial``, ``trig``, ``symmetric-dda``),
+        and why they differ (``reason``).
+
+    Notes
+    -----
+    The methods are those of :func:`circle` with their default conventions (midpoint
+    ``p0 = 1 - r``, Bresenham ``d0 = 3 - 2r``, the floating-point methods rounded half up).
+
+    Examples
+    --------
+    >>> sol = compare_circles(10)
+    >>> [c.key for c in sol.tables[0].columns]
+    ['x', 'y_exact', 'midpoint', 'bresenham', 'polynomial', 'trig', 'symmetric-dda', 'reason']
+    >>> [row[2] for row in sol.tables[0].rows()]  # the midpoint method's y for x = 0 .. 7
+    [10, 10, 10, 10, 9, 9, 8, 7]
     """
     return answers_compare.compare_circles(_number(r, "r"), theory=theory)
 
@@ -300,7 +439,17 @@ def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
 def compare_curves() -> Solution:
     """Bezier vs B-spline: the points of the notes' comparison (``scanconv compare curves``).
 
-    >>> compare_curves().title
+    Returns
+    -------
+    Answer
+        One table, a row per property (control, degree, ...), a column for each curve.
+
+    Examples
+    --------
+    >>> sol = compare_curves()
+    >>> sol.title
     'Bezier vs B-spline curves'
+    >>> list(sol.tables[0].rows())[0]
+    ('control', 'global: a point moves the whole curve', 'local: only nearby spans')
     """
     return answers_compare.compare_curves()

@@ -1,5 +1,6 @@
-"""The Python API: the rest of the syllabus (``scanconv dither``, ``halftone``, ``inside``,
-``framebuffer``, ``linestyle``, ``thickline``, ``char``). See :mod:`scanconv._api`."""
+"""The Python API: the rest of the syllabus (``scanconv inside``, ``framebuffer``,
+``linestyle``, ``thickline``, ``char``; dithering is :mod:`scanconv._api.dither`). See
+:mod:`scanconv._api`."""
 
 from __future__ import annotations
 
@@ -16,7 +17,6 @@ from .values import (
     PointsLike,
     _choice,
     _flat,
-    _number,
     _numbers,
     _optional,
     _pair,
@@ -26,152 +26,24 @@ from .values import (
 if TYPE_CHECKING:
     from ..answers import attributes as answers_attributes
     from ..answers import characters as answers_characters
-    from ..answers import dither as answers_dither
     from ..answers import framebuffer as answers_framebuffer
     from ..answers import inside as answers_inside
-    from ..core.numeric import Number
+    from ..core.choices import (
+        BitOrderName,
+        BoundaryName,
+        InsideRuleName,
+        PackingName,
+        StrokeAlgorithmName,
+    )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_attributes = lazy.module("scanconv.answers.attributes")
     answers_characters = lazy.module("scanconv.answers.characters")
-    answers_dither = lazy.module("scanconv.answers.dither")
     answers_framebuffer = lazy.module("scanconv.answers.framebuffer")
     answers_inside = lazy.module("scanconv.answers.inside")
 
 MAX_GLYPH = 64
 """The largest glyph drawn from rows given (64 x 64 bits; scaled at most 16 times)."""
-
-MatrixLike = str | Sequence[Sequence[NumberLike]]
-"""An image or a dither matrix: rows of numbers, or text with the rows separated by ``;`` or
-``/`` and the values by spaces or commas (``"10 200; 60 90"``); with ``;`` a value may be a
-fraction (``"1/2 0; 1 1"``)."""
-
-
-def _matrix(value: MatrixLike, param: str) -> list[list[Number]]:
-    """The rows of an image or a matrix, as exact numbers.
-
-    >>> _matrix("10 200 / 60, 90", "image") == _matrix("10 200; 60 90", "image") == [[10, 200], [60, 90]]
-    True
-    >>> _matrix("1/2 0; 1 1", "image")[0]
-    [Fraction(1, 2), Fraction(0, 1)]
-    >>> _matrix([[1, "1/2"]], "image")
-    [[1, Fraction(1, 2)]]
-    """
-    if isinstance(value, str):
-        if not value.strip():
-            raise InputError(f"the {param} is empty ('')", param)
-        rows: Sequence[Sequence[NumberLike]] = [
-            [v for v in re.split(r"[\s,]+", row.strip()) if v]
-            for row in value.split(";" if ";" in value else "/")
-            if row.strip()
-        ]
-    else:
-        rows = value
-    out: list[list[Number]] = []
-    for row in rows:
-        if isinstance(row, str) or not isinstance(row, Sequence):
-            raise InputError(f"{param}: a row is a list of numbers, got {row!r}", param)
-        out.append([_number(v, param) for v in row])
-    return out
-
-
-@answers
-def dither_threshold(
-    image: MatrixLike,
-    top: NumberLike = 255,
-    *,
-    at: NumberLike | None = None,
-    compare: str = ">=",
-) -> Solution:
-    """Thresholding (``scanconv dither threshold``): a pixel is on when its value ``compare``
-    the threshold ``at`` (default ``top / 2``).
-
-    >>> dither_threshold("10 200; 128 127", at=128).data["output"]
-    [[0, 1], [1, 0]]
-    """
-    return answers_dither.threshold_solution(
-        _matrix(image, "image"),
-        _number(top, "top"),
-        _optional(at, "at"),
-        compare=_choice(compare, "compare"),
-    )
-
-
-def _dither_matrix(matrix: int | MatrixLike) -> int | list[list[Number]]:
-    """A Bayer order (``2``, ``"4"``) or the rows of a matrix given."""
-    if isinstance(matrix, int) or (isinstance(matrix, str) and len(matrix.split()) == 1):
-        return _whole(matrix, "matrix")
-    return _matrix(matrix, "matrix")
-
-
-@answers
-def dither_ordered(
-    image: MatrixLike,
-    matrix: int | MatrixLike = 2,
-    top: NumberLike = 255,
-    *,
-    compare: str = ">",
-    scale: str = "raw",
-    base: str = "0",
-    transpose: bool = False,
-) -> Solution:
-    """Ordered dither (``scanconv dither ordered``) with the Bayer matrix of order ``matrix``
-    (2, 4, 8, 16) or a matrix given (rows, or text as ``image``).
-
-    >>> dither_ordered([[1, 2], [3, 4]], 2, 4).data["output"]
-    [[1, 0], [0, 1]]
-    """
-    return answers_dither.ordered_solution(
-        _matrix(image, "image"),
-        _dither_matrix(matrix),
-        _number(top, "top"),
-        compare=_choice(compare, "compare"),
-        scale=_choice(scale, "scale"),
-        base=_choice(str(base) if isinstance(base, int) else base, "base"),
-        transpose=bool(transpose),
-    )
-
-
-@answers
-def dither_diffusion(
-    image: MatrixLike,
-    top: NumberLike = 255,
-    *,
-    kernel: str = "floyd-steinberg",
-    order: str = "raster",
-    arithmetic: str = "exact",
-    carry: str = "kept",
-    compare: str = ">=",
-) -> Solution:
-    """Error diffusion (``scanconv dither floyd-steinberg``) to two levels, 0 and ``top``.
-
-    >>> dither_diffusion("100 100; 100 100").data["output"]
-    [[0, 1], [0, 0]]
-    """
-    return answers_dither.diffusion_solution(
-        _matrix(image, "image"),
-        _number(top, "top"),
-        kernel=_choice(kernel, "kernel"),
-        order=_choice(order, "order"),
-        arithmetic=_choice(arithmetic, "arithmetic"),
-        carry=_choice(carry, "carry"),
-        compare=_choice(compare, "compare"),
-    )
-
-
-@answers
-def halftone(n: NumberLike, *, level: NumberLike | None = None, bits: NumberLike = 1) -> Solution:
-    """The ``n`` x ``n`` halftone patterns (``scanconv halftone``): the levels they give and
-    the pattern of each level, or of one ``level``.
-
-    >>> [r[0] for r in halftone(2).tables[0].rows()]
-    [0, 1, 2, 3, 4]
-    """
-    return answers_dither.pattern_solution(
-        _whole(n, "n"),
-        None if level is None else _whole(level, "level"),
-        _whole(bits, "bits"),
-    )
 
 
 @answers
@@ -179,15 +51,38 @@ def inside(
     vertices: PointsLike,
     points: PointsLike,
     *,
-    rule: str = "both",
-    boundary: str = "inside",
+    rule: InsideRuleName = "both",
+    boundary: BoundaryName = "inside",
 ) -> Solution:
-    """Whether each of ``points`` is inside the polygon ``vertices`` (``scanconv inside``), by
-    the even-odd rule, the nonzero winding rule or ``both``; a point on the boundary counts as
-    ``boundary``.
+    """Whether points are inside a polygon (``scanconv inside``), by the even-odd rule, the nonzero
+    winding rule or both.
 
-    >>> [r[3] for r in inside([0, 0, 6, 0, 6, 6, 3, 2, 0, 6], [(3, 1), (3, 4)]).tables[-1].rows()]
-    ['inside (odd)', 'outside (even)']
+    Parameters
+    ----------
+    vertices : sequence of (x, y), or flat numbers
+        The polygon's vertices in order.
+    points : sequence of (x, y), or flat numbers
+        The points tested.
+    rule : {"both", "even-odd", "nonzero"}, default "both"
+        The rule: crossings of a ray from the point (odd: inside), the winding number (nonzero:
+        inside), or both side by side.
+    boundary : {"inside", "outside"}, default "inside"
+        What a point on the boundary counts as.
+
+    Returns
+    -------
+    Answer
+        For each point the ray ``y = y_P, x > x_P`` and the edges it crosses (with their
+        signs), then the verdicts: ``point, boundary, crossings, even_odd, winding,
+        nonzero``.
+
+    Examples
+    --------
+    >>> sol = inside([0, 0, 6, 0, 6, 6, 3, 2, 0, 6], [(3, 1), (3, 4)])
+    >>> for row in sol.tables[-1].rows():
+    ...     print(row)
+    ('P1 (3, 1)', '-', 1, 'inside (odd)', 1, 'inside')
+    ('P2 (3, 4)', '-', 2, 'outside (even)', 0, 'outside')
     """
     return answers_inside.inside_solution(
         _flat(vertices, "vertices"),
@@ -208,12 +103,37 @@ def framebuffer(
     refresh: NumberLike | None = None,
     interlaced: bool = False,
 ) -> Solution:
-    """Frame-buffer arithmetic (``scanconv framebuffer``): the size of a ``width`` x
-    ``height`` raster of ``bits`` bits per pixel, its look-up table of ``lut`` bits an entry,
-    the time to load it at ``rate`` bits per second and the pixel time at ``refresh`` Hz.
+    """Frame-buffer arithmetic (``scanconv framebuffer``).
 
+    Parameters
+    ----------
+    width, height : int
+        The raster, in pixels.
+    bits : int
+        Bits a pixel (``2**bits`` colours at once).
+    lut : int, optional
+        Bits an entry of a colour look-up table (the palette is ``2**lut`` colours).
+    rate : number, optional
+        Bits a second: the time to load the frame buffer.
+    refresh : number, optional
+        The refresh rate in Hz: the pixel rate and the time for one pixel.
+    interlaced : bool, default False
+        An interlaced display: each refresh draws one field (half the lines), so the frames
+        per second are half the refresh rate.
+
+    Returns
+    -------
+    Answer
+        The working; ``.data`` holds ``size_bits``, ``colours`` and, as asked, ``lut_entries``,
+        ``lut_bits``, ``palette``, ``load_time``, ``pixel_rate`` and ``pixel_time``, exact.
+
+    Examples
+    --------
     >>> framebuffer(640, 480, 8).data["size_bits"]
     2457600
+    >>> data = framebuffer(640, 480, 8, lut=24, rate=10**6, refresh=60).data
+    >>> data["palette"], data["load_time"], data["pixel_time"]
+    (16777216, Fraction(1536, 625), Fraction(1, 18432000))
     """
     return answers_framebuffer.framebuffer_solution(
         *_numbers(width=width, height=height, bits=bits),
@@ -232,15 +152,43 @@ def line_style(
     y2: NumberLike,
     mask: str,
     *,
-    bits: str = "msb",
+    bits: BitOrderName = "msb",
     repeat: NumberLike = 1,
 ) -> Solution:
-    """A dashed or dotted line (``scanconv linestyle``): Bresenham's pixels, each drawn when its
-    bit of ``mask`` is 1 (read from the most or the least significant bit, each bit used
-    ``repeat`` times).
+    """A dashed or dotted line (``scanconv linestyle``): Bresenham's pixels, each drawn when its bit
+    of the mask is 1.
 
+    Parameters
+    ----------
+    x1, y1, x2, y2 : number
+        The end points, integers.
+    mask : str
+        The pattern, 1s and 0s (``"110"``: two on, one off), repeated along the line.
+    bits : {"msb", "lsb"}, default "msb"
+        The mask read from its most or its least significant bit.
+    repeat : int, default 1
+        Each bit used for this many pixels.
+
+    Returns
+    -------
+    Answer
+        Bresenham's steps with each pixel's bit, and the pixels drawn.
+
+    Examples
+    --------
     >>> list(line_style(0, 0, 7, 2, "110").pixels())
     [(0, 0), (1, 0), (3, 1), (4, 1), (6, 2), (7, 2)]
+    >>> list(line_style(0, 0, 7, 2, "10", repeat=2).pixels())
+    [(0, 0), (1, 0), (4, 1), (5, 1)]
+    >>> print(line_style(0, 0, 7, 2, "110").grid(), end="")  # o: the pixels its mask leaves off
+     3 | .  .  .  .  .  .  .  .  .  .
+     2 | .  .  .  .  .  .  .  #  #  .
+     1 | .  .  .  o  #  #  o  .  .  .
+     0 | .  #  #  .  .  .  .  .  .  .
+    -1 | .  .  .  .  .  .  .  .  .  .
+       +------------------------------
+         -1 0  1  2  3  4  5  6  7  8
+    # = plotted pixel, o = marked point, @ = both; x to the right, y up
     """
     if not isinstance(mask, str):
         raise InputError(f"mask must be a string of 1s and 0s, got {mask!r}", "mask")
@@ -266,11 +214,40 @@ def thick_line(
     *,
     brush: bool = False,
 ) -> Solution:
-    """A thick line (``scanconv thickline``): ``width`` pixels across the minor axis at each
-    pixel of Bresenham's line, or a ``width`` x ``width`` square ``brush``.
+    """A thick line (``scanconv thickline``): at each pixel of Bresenham's line, a span of pixels
+    across the minor axis, or a square brush.
 
-    >>> len(list(thick_line(0, 0, 4, 1, 3).pixels()))
-    15
+    Parameters
+    ----------
+    x1, y1, x2, y2 : number
+        The end points, integers.
+    width : int
+        The width w in pixels.
+    brush : bool, default False
+        A ``w x w`` square brush at each pixel instead of a span across the minor axis.
+
+    Returns
+    -------
+    Answer
+        Bresenham's steps with the pixels each adds, and every pixel once.
+
+    Examples
+    --------
+    >>> sol = thick_line(0, 0, 4, 1, 3)
+    >>> [s.extra[0] for s in sol.steps()][:2]
+    ['(0, -1), (0, 0), (0, 1)', '(1, -1), (1, 0), (1, 1)']
+    >>> len(list(sol.pixels())), len(list(thick_line(0, 0, 4, 1, 3, brush=True).pixels()))
+    (15, 23)
+    >>> print(thick_line(0, 0, 4, 1, 3).grid(), end="")
+     3 | .  .  .  .  .  .  .
+     2 | .  .  .  #  #  #  .
+     1 | .  #  #  #  #  #  .
+     0 | .  #  #  #  #  #  .
+    -1 | .  #  #  .  .  .  .
+    -2 | .  .  .  .  .  .  .
+       +---------------------
+         -1 0  1  2  3  4  5
+    # = plotted pixel; x to the right, y up
     """
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return answers_attributes.thick_line_solution(
@@ -297,12 +274,45 @@ def char_bitmap(
     at: PointLike = (0, 0),
     scale: NumberLike = 1,
 ) -> Solution:
-    """A character drawn from its bitmap (``scanconv char bitmap``): the 5 x 7 font's glyph or
-    the ``rows`` given (``"01110/10001/..."``, top row first), bottom-left corner ``at``,
-    each bit a ``scale`` x ``scale`` block.
+    """A character drawn from its bitmap (``scanconv char bitmap``).
 
-    >>> len(list(char_bitmap("L").pixels()))
-    11
+    Parameters
+    ----------
+    char : str
+        One letter or digit.
+    rows : str or sequence of str, optional
+        The glyph's rows, top row first (``"01110/10001/..."`` or a list); default the 5 x 7
+        font's glyph. At most 64 x 64 bits.
+    at : (x, y), default (0, 0)
+        The glyph's bottom-left corner.
+    scale : int, default 1
+        Each bit drawn as a ``scale x scale`` block.
+
+    Returns
+    -------
+    Answer
+        The bitmap, row by row, and the pixels it sets (y up).
+
+    Examples
+    --------
+    >>> sol = char_bitmap("L")
+    >>> sol.data["rows"]
+    ['10000', '10000', '10000', '10000', '10000', '10000', '11111']
+    >>> sorted(sol.pixels())[:3]
+    [(0, 0), (0, 1), (0, 2)]
+    >>> print(char_bitmap("L").grid(), end="")
+     7 | .  .  .  .  .  .  .
+     6 | .  #  .  .  .  .  .
+     5 | .  #  .  .  .  .  .
+     4 | .  #  .  .  .  .  .
+     3 | .  #  .  .  .  .  .
+     2 | .  #  .  .  .  .  .
+     1 | .  #  .  .  .  .  .
+     0 | .  #  #  #  #  #  .
+    -1 | .  .  .  .  .  .  .
+       +---------------------
+         -1 0  1  2  3  4  5
+    # = plotted pixel; x to the right, y up
     """
     x0, y0 = _at(at)
     if isinstance(rows, str):
@@ -320,13 +330,38 @@ def char_bitmap(
 
 @answers
 def char_stroke(
-    char: str, *, at: PointLike = (0, 0), scale: NumberLike = 1, algo: str = "bresenham"
+    char: str,
+    *,
+    at: PointLike = (0, 0),
+    scale: NumberLike = 1,
+    algo: StrokeAlgorithmName = "bresenham",
 ) -> Solution:
-    """A stroke character (``scanconv char stroke``): each segment scaled, placed ``at`` and
-    drawn by ``algo`` (bresenham or dda).
+    """A stroke (vector) character (``scanconv char stroke``): each segment scaled, placed and
+    drawn by a line algorithm.
 
-    >>> [s.pixel for s in char_stroke("T").steps()]
-    [(0, 6), (2, 6)]
+    Parameters
+    ----------
+    char : str
+        One letter or digit of the stroke font.
+    at : (x, y), default (0, 0)
+        Where the glyph's origin is placed.
+    scale : int, default 1
+        The factor each stroke's end points are multiplied by.
+    algo : {"bresenham", "dda"}, default "bresenham"
+        The line algorithm drawing each stroke.
+
+    Returns
+    -------
+    Answer
+        One row per stroke (its end points and its pixels) and the pixels.
+
+    Examples
+    --------
+    >>> sol = char_stroke("T")
+    >>> [s.extra for s in sol.steps()]
+    [('(0, 6) to (4, 6)', '(0, 6), (1, 6), (2, 6), (3, 6), (4, 6)'), ('(2, 6) to (2, 0)', '(2, 0), (2, 1), (2, 2), (2, 3), (2, 4), (2, 5), (2, 6)')]
+    >>> len(list(sol.pixels()))
+    11
     """
     x0, y0 = _at(at)
     return answers_characters.stroke_solution(
@@ -336,13 +371,31 @@ def char_stroke(
 
 @answers
 def char_storage(
-    count: NumberLike, width: NumberLike, height: NumberLike, *, packing: str = "rows"
+    count: NumberLike, width: NumberLike, height: NumberLike, *, packing: PackingName = "rows"
 ) -> Solution:
-    """The storage of a bitmap font of ``count`` glyphs of ``width`` x ``height`` pixels
-    (``scanconv char storage``), packed by ``rows``, ``columns`` or ``bits``.
+    """The storage of a bitmap font (``scanconv char storage``).
 
-    >>> char_storage(128, 5, 7).data["bits"]
-    7168
+    Parameters
+    ----------
+    count : int
+        The number of glyphs.
+    width, height : int
+        Each glyph's size in pixels.
+    packing : {"rows", "columns", "bits"}, default "rows"
+        Each row padded to whole bytes, each column padded to whole bytes, or the bits packed
+        with no padding.
+
+    Returns
+    -------
+    Answer
+        The working; ``.data`` holds ``per_glyph`` and the total ``bits``.
+
+    Examples
+    --------
+    >>> char_storage(128, 5, 7).data
+    {'bits': 7168, 'per_glyph': 56, 'packing': 'rows'}
+    >>> char_storage(128, 5, 7, packing="bits").data["bits"]
+    4480
     """
     return answers_characters.font_storage_solution(
         _whole(count, "count"),

@@ -42,6 +42,7 @@ import operator
 import threading
 from collections.abc import Callable
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
@@ -51,6 +52,9 @@ from .lines import dda_increments, dda_steps, orient
 from .raster_fill import check_pixels
 from .raster_fill import line_aa as line_aa  # the bulk Wu line and fill: scanconv.raster too
 from .raster_fill import polygon as polygon
+
+if TYPE_CHECKING:
+    from ..core.choices import RasterLineName
 
 Coords = tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]
 """``(xs, ys)``: two 1-D int64 arrays of equal length."""
@@ -189,7 +193,7 @@ def line(
     y1: int | Fraction,
     x2: int | Fraction,
     y2: int | Fraction,
-    algo: str = "bresenham",
+    algo: RasterLineName = "bresenham",
     *,
     parallel: bool = True,
 ) -> Coords:

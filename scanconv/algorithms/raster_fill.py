@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import operator
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
@@ -39,6 +40,9 @@ import numpy.typing as npt
 from ..core.checks import InputError
 from ..core.numeric import COORD_LIMIT
 from .polygon import RULES
+
+if TYPE_CHECKING:
+    from ..core.choices import FillRuleName
 
 Array = npt.NDArray[np.int64]
 
@@ -84,13 +88,39 @@ def _ints(values: Sequence[object] | npt.ArrayLike, name: str) -> Array:
 
 
 def polygon(
-    xs: Sequence[int] | npt.ArrayLike, ys: Sequence[int] | npt.ArrayLike, rule: str = "even-odd"
+    xs: Sequence[int] | npt.ArrayLike,
+    ys: Sequence[int] | npt.ArrayLike,
+    rule: FillRuleName = "even-odd",
 ) -> tuple[Array, Array]:
-    """The scan-line fill's pixels of the polygon with vertices ``(xs[i], ys[i])``, bottom row
-    first, left to right (exactly :func:`~scanconv.algorithms.polygon.fill_pixels`).
+    """Every pixel of the scan-line fill of a polygon, as numpy arrays.
 
+    Parameters
+    ----------
+    xs, ys : sequence or 1-D array of int
+        The vertices ``(xs[i], ys[i])`` in order, integers with ``|v| <= 10**9``, at least 3.
+    rule : {"even-odd", "nonzero"}, default "even-odd"
+        The inside rule: odd crossings, or a nonzero winding number.
+
+    Returns
+    -------
+    xs, ys : (N,) ndarray of int64
+        The filled pixels, bottom row first, left to right: exactly
+        :func:`~scanconv.algorithms.polygon.fill_pixels` (``scanconv.polygon(...).pixels()``).
+
+    Notes
+    -----
+    Scan line y meets an edge when ``y_min <= y < y_max``; each span runs from ``ceil(x)`` of its
+    left crossing to ``ceil(x) - 1`` of its right one, all spans at once (no Python loop per
+    pixel). Unlike ``skimage.draw.polygon`` the coordinates are ``(x, y)``, y up, and nothing is
+    clipped to a shape.
+
+    Examples
+    --------
+    >>> xs, ys = polygon([0, 4, 2], [0, 0, 3])
+    >>> list(zip(xs.tolist(), ys.tolist()))
+    [(0, 0), (1, 0), (2, 0), (3, 0), (1, 1), (2, 1), (3, 1), (2, 2)]
     >>> from scanconv.algorithms.polygon import fill_pixels
-    >>> xs, ys = polygon([0, 4, 4, 0], [0, 4, 0, 4], rule="nonzero")   # a bow tie
+    >>> xs, ys = polygon([0, 4, 4, 0], [0, 4, 0, 4], rule="nonzero")  # a bow tie
     >>> list(zip(xs.tolist(), ys.tolist())) == fill_pixels([(0, 0), (4, 4), (4, 0), (0, 4)], "nonzero")
     True
     """
@@ -141,12 +171,35 @@ def polygon(
 
 
 def line_aa(x1: int, y1: int, x2: int, y2: int) -> tuple[Array, Array, npt.NDArray[np.float64]]:
-    """Wu's line: ``(xs, ys, intensity)``, two pixels per step of the major axis (lower or
-    left one first), in the order of :func:`scanconv.algorithms.wu.wu`'s table.
+    """Xiaolin Wu's anti-aliased line, every pixel at once, as numpy arrays.
 
+    Parameters
+    ----------
+    x1, y1, x2, y2 : int
+        The end points, integers with ``|v| <= 10**9``.
+
+    Returns
+    -------
+    xs, ys : (2N,) ndarray of int64
+        Two pixels per step of the major axis (the lower or left one first), in the order of
+        :func:`scanconv.algorithms.wu.wu`'s table, N the major axis's length plus one.
+    intensity : (2N,) ndarray of float64
+        Each pixel's intensity: ``1 - frac`` and ``frac`` of the ideal minor coordinate.
+
+    Notes
+    -----
+    Wu, "An efficient antialiasing technique", SIGGRAPH 1991: the end points are integers, so
+    each end pixel has intensity 1 and its neighbour 0 (:func:`scanconv.antialias_line` with
+    ``method="wu"`` works the same table step by step).
+    Unlike ``skimage.draw.line_aa``, coordinates are ``(x, y)`` with y up.
+
+    Examples
+    --------
     >>> xs, ys, v = line_aa(0, 0, 4, 1)
     >>> list(zip(xs.tolist(), ys.tolist(), v.tolist()))[:4]
     [(0, 0, 1.0), (0, 1, 0.0), (1, 0, 0.75), (1, 1, 0.25)]
+    >>> xs.size, v.sum().item()  # 5 columns, one unit of intensity each
+    (10, 5.0)
     """
     for name, v in (("x1", x1), ("y1", y1), ("x2", x2), ("y2", y2)):
         try:

@@ -11,7 +11,7 @@ import typer
 
 from .. import _api as api
 from ..algorithms.choices import LineAlgorithm
-from ..algorithms.process_choices import LineClipMethod, PolygonClipMethod
+from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
 from ..core.records import Solution
 from ..questions import commands
 from .application import app, clip_app, pipeline_app
@@ -93,13 +93,6 @@ EndsOpt = Annotated[
         help="cyrus-beck: the clipped end points exact (default) or truncated.",
     ),
 ]
-
-
-class FillRule(str, Enum):
-    """The scan-line fill rules of ``pipeline polygon --fill``."""
-
-    even_odd = "even-odd"
-    nonzero = "nonzero"
 
 
 @app.command(context_settings=NUMERIC_ARGS, help=TRANSFORM_HELP)

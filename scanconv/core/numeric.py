@@ -26,8 +26,26 @@ _MAX_LITERAL = 40
 
 
 def round_half_up(v: Number | float) -> int:
-    """Round to the nearest integer, halves upward: ``floor(v + 1/2)``.
+    """Round to the nearest integer, halves upward: ``floor(v + 1/2)``, exactly.
 
+    Parameters
+    ----------
+    v : int, Fraction or float
+        The value; a float is read exactly (its binary value, not the decimal it prints as).
+
+    Returns
+    -------
+    int
+        ``floor(v + 1/2)``: the notes' rounding of a coordinate to a pixel (the DDA's and the
+        basic method's default, ``rounding="half-up"``).
+
+    Notes
+    -----
+    Python's :func:`round` rounds halves to even (``round(4.5) == 4``), and ``int(v + 0.5)``
+    in floats both truncates negative values and can round up a float just below 1/2.
+
+    Examples
+    --------
     >>> [round_half_up(Fraction(n, 2)) for n in (1, 3, 5, 7, -1, -3)]
     [1, 2, 3, 4, 0, -1]
     >>> round_half_up(Fraction(9, 2)), round(4.5)   # Python's round() gives 4

@@ -21,12 +21,32 @@ if TYPE_CHECKING:
 
 
 def solve(line: CommandLine) -> Solution:
-    """The answer of a parsed question. Bad input found while answering is an
-    :class:`~scanconv.core.checks.InputError` whose text names the command's flag for it
-    (``--degree: degree must satisfy ...``), as the command line says it.
+    """The answer of a parsed question, computed by the library.
 
+    Parameters
+    ----------
+    line : CommandLine
+        The question, as :func:`parse` reads it.
+
+    Returns
+    -------
+    Solution
+        The command's answer (its API function's, with the arguments of the question).
+
+    Raises
+    ------
+    InputError
+        Bad input found while answering, its text naming the command's flag for it
+        (``--degree: degree must satisfy ...``), as the command line says it.
+
+    Examples
+    --------
     >>> solve(parse("circle 5 --method bresenham")).title
     "Bresenham's circle algorithm: r = 5, centre (0, 0)"
+    >>> solve(parse("bspline 0 0 1 1 --degree 3"))
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: --degree: degree must satisfy 1 <= p <= n = 1 (n + 1 = 2 control points), got p = 3
     """
     body = BODIES[line.function]
     try:
@@ -39,12 +59,35 @@ def solve(line: CommandLine) -> Solution:
 
 
 def shown_with(line: CommandLine, where: str = "the sheet") -> Options:
-    """The options a question asks its answer to be shown with (``--no-grid``, ``--origin``,
-    ``--brief``, ``--exact``). An output option in a question (``-o``, ``--svg``,
-    ``--format``) is refused: ``where`` writes the one document.
+    """The display options a question asks its answer to be shown with (``--no-grid``,
+    ``--origin``, ``--brief``, ``--exact``).
 
+    Parameters
+    ----------
+    line : CommandLine
+        The question, as :func:`parse` reads it.
+    where : str, default "the sheet"
+        What writes the answers, named in the error for an output option.
+
+    Returns
+    -------
+    Options
+        The display options (:class:`scanconv.render.options.Options`).
+
+    Raises
+    ------
+    UsageError
+        An output option in a question (``-o``, ``--svg``, ``--png``, ``--format``): ``where``
+        writes the one document.
+
+    Examples
+    --------
     >>> shown_with(parse("circle 5 --no-grid --exact"))
     Options(grid=False, origin='bottom-left', brief=False, exact=True, width=None)
+    >>> shown_with(parse("circle 5 -o a.md"))
+    Traceback (most recent call last):
+    ...
+    scanconv.questions.words.UsageError: --output in a question: the sheet writes one document (give it -o)
     """
     shown = line.display
     for name in ("output", "svg", "png"):
@@ -61,13 +104,33 @@ def shown_with(line: CommandLine, where: str = "the sheet") -> Options:
 
 
 def answer(question: str | Sequence[str]) -> Answer:
-    """The answer of a question written as scanconv's own arguments, computed by the library
-    (no command line involved): the words as a string, split as a shell splits them, or a
-    list of words. Before any work, the question's length is checked
+    """The answer of a question written as scanconv's own arguments, computed by the library (no
+    command line involved): :func:`solve` of :func:`parse`.
+    Before any work, the question's length is checked
     (:data:`~scanconv.questions.limits.MAX_LINE_CHARS`) and its work budget
     (:func:`~scanconv.questions.budget.check_budget`: what no format prints is refused; the
     answer's ``to(fmt)`` checks the budget of ``fmt``).
 
+    Parameters
+    ----------
+    question : str or sequence of str
+        The question as scanconv's own arguments: one string, split as a shell splits it
+        (``"line 2 2 10 6 --algo dda"``), or the list of words.
+
+    Returns
+    -------
+    Answer
+        The worked answer, as the API function of the command returns it.
+
+    Raises
+    ------
+    UsageError
+        Bad words, worded as the command line words them.
+    InputError
+        Bad values.
+
+    Examples
+    --------
     >>> answer("line 2 2 10 6 --algo dda").algorithm
     'dda'
     >>> [s.pixel for s in answer(["circle", "5"]).steps()][:2]

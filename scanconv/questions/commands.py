@@ -301,7 +301,7 @@ def polygon(vertices: Any, rule: Any) -> Solution:
     return api.polygon(vertices, rule=rule)
 
 
-def _seed_fill(kind: str) -> Body:
+def _seed_fill(kind: Any) -> Body:
     def fill(
         seed: Any, vertices: Any, rows: Any, connectivity: Any, order: Any, span: bool
     ) -> Solution:
@@ -342,7 +342,7 @@ def antialias_polygon(vertices: Any, method: Any, samples: Any, levels: Any, rul
     return api.antialias_polygon(vertices, method=method, samples=samples, levels=levels, rule=rule)
 
 
-def color(model: str, values: list[str], to: Any, unit: bool, bits: Any) -> Solution:
+def color(model: Any, values: list[str], to: Any, unit: bool, bits: Any) -> Solution:
     targets = list(to or [])
     numbers: list[str] = []
     for token in values:

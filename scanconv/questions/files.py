@@ -85,11 +85,32 @@ def split_lines(text: str) -> list[str]:
 
 
 def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
-    """Parse a question file (the syntax is in this module's docstring). A text beyond
-    :data:`MAX_FILE_BYTES` is refused (``ValueError``) before any line is read, as
-    :func:`read_file` refuses the file, and a line beyond :data:`MAX_LINE_CHARS` before it
-    is split into words.
+    """Parse the text of a question file (the syntax is in this module's docstring).
+    A text beyond :data:`MAX_FILE_BYTES` is refused (``ValueError``) before any line is
+    read, as :func:`read_file` refuses the file, and a line beyond :data:`MAX_LINE_CHARS`
+    before it is split into words.
 
+    Parameters
+    ----------
+    text : str
+        The file's text: one question a line, with optional ``title:``, ``section:``,
+        ``> wording`` and ``[N]`` marks.
+    source : str, default "QUESTIONS"
+        The file's name, in the errors (``SOURCE:LINE: message``).
+
+    Returns
+    -------
+    Sheet
+        The ``title`` and the ``questions``, each with its number, line, words (``argv``), marks,
+        wording and section.
+
+    Raises
+    ------
+    QuestionError
+        A bad line (a ``ValueError``): unbalanced quotes, a line too long, too many questions.
+
+    Examples
+    --------
     >>> sheet = read_questions("title: Test\\n# c\\n[4] line 2 2 10 6 --algo dda\\ncircle 8\\n")
     >>> sheet.title, [(q.number, q.line, q.marks, q.argv[0]) for q in sheet.questions]
     ('Test', [(1, 3, 4, 'line'), (2, 4, None, 'circle')])
@@ -180,8 +201,35 @@ def _read_bytes(path: str) -> bytes:
 
 
 def read_file(path: str) -> Sheet:
-    """Read and parse the question file ``path`` (``-``: standard input, read as strictly as
-    a named file); a file that cannot be read is a ``ValueError`` naming it."""
+    """Read and parse a question file.
+
+    Parameters
+    ----------
+    path : str
+        The file's name; ``"-"``: standard input, read as strictly as a named file (UTF-8, no NUL
+        byte, at most 1,000,000 bytes).
+
+    Returns
+    -------
+    Sheet
+        As :func:`read_questions` returns it, with at least one question.
+
+    Raises
+    ------
+    ValueError
+        A file that cannot be read, is not UTF-8 text, or holds no question, named.
+
+    Examples
+    --------
+    >>> from importlib.resources import files
+    >>> sheet = read_file(str(files("scanconv.data") / "exam.txt"))  # scanconv exam's book
+    >>> sheet.title, len(sheet.questions), sheet.questions[0].argv
+    ('Scan conversion: the whole exam, answered', 37, ('theory', 'scan-conversion'))
+    >>> read_file("no-such-file.txt")
+    Traceback (most recent call last):
+    ...
+    ValueError: cannot read 'no-such-file.txt': No such file or directory
+    """
     if path == "":
         raise ValueError("QUESTIONS is empty (''): give the name of a question file")
     name = "<stdin>" if path == "-" else path

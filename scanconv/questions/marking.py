@@ -26,11 +26,33 @@ else:  # only the runs that mark a file
 
 
 def marking_question(question: str | Sequence[str]) -> Solution:
-    """The answer a student's table is marked against: the question as scanconv's own
-    arguments (:func:`marking_line`, then :func:`marking_answer`).
+    """The answer a student's table is marked against (:func:`marking_line`, then
+    :func:`marking_answer`).
 
+    Parameters
+    ----------
+    question : str or sequence of str
+        The question as scanconv's own arguments (``"line 2 2 10 6 --algo dda"`` or the list of
+        words), read exactly as ``scanconv check ANSWER -- QUESTION`` reads it.
+
+    Returns
+    -------
+    Solution
+        The question's answer, with its step table.
+
+    Raises
+    ------
+    InputError
+        A question without a step table, asking for a figure or for help, or incomplete.
+
+    Examples
+    --------
     >>> marking_question("line 2 2 10 6").title
     "Bresenham's line algorithm: (2, 2) to (10, 6)"
+    >>> marking_question("theory symmetry")
+    Traceback (most recent call last):
+    ...
+    scanconv.core.checks.InputError: the question 'theory symmetry' has no step table to mark
     """
     return marking_answer(marking_line(question))
 
@@ -75,15 +97,32 @@ def marking_answer(line: CommandLine) -> Solution:
 
 
 def check(answer: str | os.PathLike[str], question: str | Sequence[str] | Solution) -> Answer:
-    """Mark the student's table in the file ``answer`` (CSV, Markdown or JSON) against
-    ``question``: scanconv's own arguments (``"line 2 2 10 6 --algo dda"`` or a list of
-    words, read exactly as ``scanconv check ANSWER -- QUESTION`` reads them) or a Solution the
-    API made. The result's table is the row-by-row marking; ``data`` holds the score, the
-    first error and the diagnosis.
+    """Mark a student's table against a question (``scanconv check ANSWER -- QUESTION``).
 
+    Parameters
+    ----------
+    answer : str or os.PathLike
+        The student's table: a CSV, Markdown or JSON file whose columns are named as the
+        answer's (``k, p, x, y``, ...).
+    question : str, sequence of str or Solution
+        The question as scanconv's own arguments (``"line 2 2 10 6 --algo dda"`` or the list of
+        words), read exactly as ``scanconv check ANSWER -- QUESTION`` reads it, or a Solution
+        the API made.
+
+    Returns
+    -------
+    Answer
+        The row-by-row marking as its table; ``.data`` holds the ``score`` ``out_of`` the rows,
+        the ``first_error``, the ``diagnosis`` (the misconception the errors fit, if any) and
+        whether later rows were marked with ``follow_through`` from the first error.
+
+    Examples
+    --------
     >>> m = check("tests/data/check/slip.csv", "line 2 2 10 6")
     >>> m.data["score"], m.data["out_of"]
     (7, 8)
+    >>> m.data["first_error"]
+    'Row 4 (line 5): p should be -8, not -4 (the step from (4, 3) with p = 0).'
     """
     if isinstance(question, Solution):
         solution, text = question, question.title

@@ -60,9 +60,30 @@ def parse(question: str | Sequence[str]) -> CommandLine:
     as the command line words it; a question longer than a line of a question file
     (:data:`~scanconv.questions.limits.MAX_LINE_CHARS`) is refused before it is split.
 
+    Parameters
+    ----------
+    question : str or sequence of str
+        The question as scanconv's own arguments: one string, split as a shell splits it, or
+        the list of words.
+
+    Returns
+    -------
+    CommandLine
+        The command (``path``, ``spec``), its ``arguments`` by the API's parameter names, with
+        the defaults filled in and numbers exact, its ``display`` options, and the ``words``.
+
+    Raises
+    ------
+    UsageError
+        Bad words (an ``InputError``), worded as the command line words them.
+
+    Examples
+    --------
     >>> line = parse("line 2,2 10 6 --algo DDA --no-grid")
     >>> line.path, line.arguments["x1"], line.arguments["algo"], line.display["grid"]
     (('line',), Fraction(2, 1), 'dda', False)
+    >>> parse("circle 5 -c 1 2").arguments["center"]
+    (Fraction(1, 1), Fraction(2, 1))
     >>> parse("line 2 2 10")
     Traceback (most recent call last):
     ...
