@@ -55,6 +55,21 @@ def check_budget(line: CommandLine, fmt: Format | str) -> None:
     a command-line flag (its ``ways``: the formats that would print it). A value beyond the
     magnitude limit is an ``InputError`` naming its parameter.
 
+    Parameters
+    ----------
+    line : CommandLine
+        The question, parsed (:func:`scanconv.questions.parse`).
+    fmt : Format or str
+        The format it would be answered in (``"json"``, ``"html"``, ...): each format has a
+        budget of its own (rows it prints, CPU time, memory).
+
+    Returns
+    -------
+    None
+        Nothing when the answer is within the budget of ``fmt``; the refusal is raised.
+
+    Examples
+    --------
     >>> from scanconv.questions import parse
     >>> check_budget(parse("circle 2800000"), "json")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
