@@ -40,10 +40,14 @@ class _Frame:
             min(CELL, room / max(self.cols, self.rows))
         )  # at most room px: labels and size bounded
         self.top_left = top_left
-        self.left, self.top = self.PAD_LEFT, self.PAD_TOP
+        # room for the widest row label on the left and half the last column label on the
+        # right (about 7 px a digit at 11 px)
+        y_digits = max(len(str(self.y0)), len(str(self.y1)))
+        x_digits = max(len(str(self.x0)), len(str(self.x1)))
+        self.left, self.top = max(self.PAD_LEFT, 7.0 * y_digits + 12), self.PAD_TOP
         self.right = self.left + self.cols * self.s
         self.bottom = self.top + self.rows * self.s
-        self.width = self.right + self.PAD_RIGHT
+        self.width = self.right + max(self.PAD_RIGHT, 3.5 * x_digits + 24)
         self.height = self.bottom + self.PAD_BOTTOM
 
     def px(self, x: Any) -> float:
