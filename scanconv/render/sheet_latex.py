@@ -18,6 +18,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator, Sequence
 
+from ..core.records import Column
 from ..core.working import tex_text
 from ..document import Pixels, as_document
 from ..document import Question as QuestionBlock
@@ -174,6 +175,39 @@ def blank_widths(blank: Blank) -> tuple[list[float], str]:
     return [w * factor for w in natural], "\\footnotesize" if factor > 0.7 else "\\scriptsize"
 
 
+_WORDS = re.compile(r"\\text\{([^{}$\\]*)\}")
+MIN_HEADING_PT = 7.0
+"""The smallest size of any part of a worksheet's heading (a subscript of a 10 pt formula):
+a heading is never shrunk to fit its column (printed and read on paper: issue 39, headings
+shrunk to 2 pt)."""
+
+
+def _heading(column: Column, width: float, size: str = "") -> str:
+    r"""A worksheet column's heading, set at the text's own size (its subscripts at 7 pt, so
+    never below :data:`MIN_HEADING_PT`): words wrap in their column; a formula wider than its
+    column is set on its side instead of being shrunk (``size``, the table's size for its
+    cells, is not applied to the headings).
+
+    >>> from scanconv.core.records import Column
+    >>> _heading(Column("e", "new end point", r"\text{new end point}"), 30.0)
+    'new end point'
+    >>> _heading(Column("e", "new end point", r"\text{new end point}"), 20.0)
+    '\\rotatebox{90}{new end point}'
+    >>> _heading(Column("p", "p_k", "p_k"), 40.0)
+    '$p_k$'
+    >>> _heading(Column("q", "(x_c+x, y_c+y)", "(x_c+x, y_c+y)"), 20.0)
+    '\\rotatebox{90}{$(x_c+x, y_c+y)$}'
+    """
+    words = _WORDS.fullmatch(column.tex.strip())
+    if words:  # they wrap between words; a word wider than the column is set on its side
+        text = tex_text(words.group(1))
+        longest = max((len(w) for w in words.group(1).split()), default=0)
+        return text if width >= 5.5 * longest else f"\\rotatebox{{90}}{{{text}}}"
+    if width >= 5.0 * len(column.text):  # about 5 pt a character at 10 pt
+        return f"${column.tex}$"
+    return f"\\rotatebox{{90}}{{${column.tex}$}}"
+
+
 def _latex_blank(blank: Blank) -> Iterator[str]:
     """An empty table, ruled for writing in, whole: each column as wide as its widest
     answer cell and a little more, narrowed to the text width when too wide (a longtable:
@@ -185,10 +219,9 @@ def _latex_blank(blank: Blank) -> Iterator[str]:
     short = blank.rows <= KEEP_ROWS  # a tabular never breaks: its heading made room for it
     env = "tabular" if short else "longtable"
     yield ("\\par{\\centering" if short else "") + f"\\begin{{{env}}}{{{spec}}}\n\\hline\n"
-    fit = "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}"
-    heads = (f"{fit}{{{size}${c.tex}$}}" for c in blank.columns)
+    heads = (_heading(c, w, size) for c, w in zip(blank.columns, widths, strict=True))
     yield " & ".join(heads) + " \\\\\n\\hline\n" + ("" if short else "\\endhead\n")
     for row in _blank_rows(blank):
-        cells = [_tex_label(row[0]) if row[0] else ""] + [""] * (len(row) - 1)
+        cells = [_tex_label(c) if c else "" for c in row]  # labels and given values
         yield "\\rule[-2.5mm]{0pt}{8mm}" + " & ".join(cells) + " \\\\\n\\hline\n"
     yield "\\end{tabular}\\par}\\medskip\n" if short else "\\end{longtable}\n"
