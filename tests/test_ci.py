@@ -8,6 +8,7 @@ so the test shows that each failure reaches the exit status of ``.ci/run``.
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import sys
@@ -138,6 +139,12 @@ def test_a_hanging_test_fails_and_a_skip_is_named(tmp_path):
         text=True,
         timeout=120,  # a guard: the inner run ends in seconds
         cwd=tmp_path,
+        # a run of its own: not the outer run's SlipCover, xdist or hypothesis settings
+        env={
+            k: v
+            for k, v in os.environ.items()
+            if not k.startswith(("PYTEST_", "SLIPCOVER_", "COV_CORE_", "HYPOTHESIS_"))
+        },
     )
     assert proc.returncode == 1, proc.stdout
     assert "Timeout" in proc.stdout and "1 failed, 1 skipped" in proc.stdout
