@@ -142,3 +142,13 @@ def test_the_escaping_corpus_in_both_quiz_formats(gift_reader: GiftReader, text:
     parsed = gift_reader.parse(gift_text)
     assert {q["type"] for q in parsed} == {"Numerical", "Short"}
     assert all(q["title"].startswith(title[:200]) for q in parsed)
+
+
+def test_a_cloze_answer_writes_quotes_as_references() -> None:
+    # every character that could end, escape or quote the answer, or start an entity, is a
+    # character reference: " is &#34;, ' is &#39;, & is &#38;, < and > are &#60; and &#62;
+    from scanconv.render.moodle import _cloze_answer
+
+    assert _cloze_answer("say \"E\" or 'NE' <b>&") == (
+        "say &#34;E&#34; or &#39;NE&#39; &#60;b&#62;&#38;"
+    )

@@ -84,3 +84,17 @@ def test_the_cli_writes_each_chunk_as_it_comes(fmt):
     with pytest.raises(BrokenPipeError):
         cli._write(render(sol, fmt, Options(grid=False)), ClosedAfter(100))
     assert pulled[0] <= 100
+
+
+@pytest.mark.parametrize("count", [BUFFER_ROWS, BUFFER_ROWS + 1])
+def test_a_long_markdown_table_escapes_its_text_cells(count):
+    # the padded table (at most BUFFER_ROWS rows) and the streamed one (one more) escape the
+    # same: "E|NE *" is "E\|NE \*" in a Markdown cell, and "<b>" is "\<b\>"
+    from scanconv.render.text import table_lines
+
+    rows = [[str(k), "E|NE *", "<b>"] for k in range(count)]
+    lines = list(table_lines(["k", "move", "tag"], [True, False, False], rows, markdown=True))
+    assert len(lines) == 2 + count
+    for k, line in enumerate(lines[2:]):
+        cells = [c.strip() for c in line.strip("| ").split(" | ")]
+        assert cells == [str(k), "E\\|NE \\*", "\\<b\\>"], line

@@ -1,0 +1,24 @@
+"""The display and rounding rules of :mod:`scanconv.core.numeric`, at their edges, against
+values worked by hand."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+
+from scanconv.core.numeric import fmt_value
+
+
+@pytest.mark.parametrize(
+    ("value", "shown"),
+    [
+        (Fraction(1, 64), "0.015625"),  # a terminating decimal of 8 characters: as it is
+        (Fraction(25, 4), "6.25"),
+        (Fraction(1, 128), "1/128 ≈ 0.008"),  # 0.0078125 is 9 characters: the fraction
+        (Fraction(1, 3), "1/3 ≈ 0.333"),  # not a terminating decimal
+        (Fraction(-6, 3), "-2"),
+    ],
+)
+def test_fmt_value_shows_a_short_decimal_and_else_the_fraction(value, shown):
+    assert fmt_value(value) == shown
