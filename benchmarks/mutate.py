@@ -444,13 +444,25 @@ def run_mutant(tree: Path, m: Mutant, target: Target, timeout: float) -> None:
     finally:
         file.write_text(original)
         os.utime(file, (stat.st_mtime, stat.st_mtime))
-    for (path, old, new), why in EQUIVALENT.items():
-        if m.status == "survived" and path == m.path and old in _line(m) and new == m.new:
+    for (path, where, new), why in EQUIVALENT.items():
+        if m.status == "survived" and path == m.path and where in _context(m) and new == m.new:
             m.status, m.reason = "equivalent", why
 
 
-def _line(m: Mutant) -> str:
-    return (ROOT / m.path).read_text().splitlines()[m.line - 1].strip()
+def _context(m: Mutant) -> str:
+    """The mutant's line and the two after it, each stripped, the mutated text in ⟦ ⟧ (how
+    :data:`EQUIVALENT` names a mutant)."""
+    lines = (ROOT / m.path).read_bytes().splitlines()
+    first = lines[m.line - 1]
+    if m.end_line == m.line:
+        first = (
+            first[: m.col]
+            + "⟦".encode()
+            + first[m.col : m.end_col]
+            + "⟧".encode()
+            + first[m.end_col :]
+        )
+    return "\n".join(ln.decode().strip() for ln in [first, *lines[m.line : m.line + 2]])
 
 
 def _cell(text: str) -> str:
@@ -531,7 +543,7 @@ def main(argv: list[str] | None = None) -> int:
         type=Path,
         help="keep the killed of this report (.json), run the rest; the report has them all",
     )
-    ap.add_argument("--timeout", type=float, default=240, help="seconds a pytest run at most")
+    ap.add_argument("--timeout", type=float, default=120, help="seconds a pytest run at most")
     ap.add_argument(
         "--baseline", action="store_true", help="first run each module's tests unmutated"
     )
@@ -557,6 +569,8 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{m.id}\t{m.path}:{m.line}\t{m.describe()}")
         print(f"{len(todo)} mutants of {sum(totals.values())} candidates", file=sys.stderr)
         return 0
+    # a TERM (a stopped run) unwinds like Ctrl-C: the temporary tree is removed
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
     with tempfile.TemporaryDirectory(prefix="scanconv-mutate-") as tmp:
         tree = Path(tmp)
         copy_tree(tree)

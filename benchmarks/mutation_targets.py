@@ -103,22 +103,29 @@ TARGETS: dict[str, Target] = {
 #: Mutants proved equivalent: (module, the original line stripped, the mutation) -> why.
 #: They are run all the same and listed, but left out of the ratio.
 EQUIVALENT: dict[tuple[str, str, str], str] = {
+    # (module, the mutant's line and the two after it, stripped, the mutated text in ⟦ ⟧ (a
+    # part of them), the replacement) -> the proof
     (
         "scanconv/algorithms/lines.py",
-        "if (dy if steep else dx) < 0:",
+        "if ⟦(dy if steep else dx) < 0⟧:",
         "((dy if steep else dx) <= 0)",
     ): (
         "orient(): the major delta is 0 only for a single point (not steep means |dy| <= |dx| "
         "= 0), where swapping the two equal end points and negating dx = dy = 0 changes nothing."
     ),
-    (
-        "scanconv/algorithms/midpoint_line.py",
-        "yield s._replace(p=halve(s.p), extra=(halve(s.extra[0]),))",
-        "-1",
-    ): (
+    ("scanconv/algorithms/midpoint_line.py", "extra=(halve(s.extra[⟦0⟧]),)", "-1"): (
         "bresenham()'s Step.extra is the 1-tuple (p_{k+1},): extra[0] and extra[-1] are the "
         "same element."
     ),
+    ("scanconv/algorithms/bspline.py", "s = last_span(kf, n) if t >= kf[n + ⟦1⟧]", "0"): (
+        "basis_float(): for u_n <= t < u_{n+1} the span u_n < u_{n+1} is not empty, so "
+        "last_span(kf, n) = n = bisect_right(kf, t) - 1: both branches give the same span."
+    ),
+    (
+        "scanconv/algorithms/dither.py",
+        "[⟦4 * v + a⟧ for v in row] + [4 * v + b for v in row]\nfor row in d\nfor a, b in [(0, 2)]",
+        "(4 * v - a)",
+    ): ("bayer(): in the first half a = 0, so 4v + a = 4v - a."),
 }
 
 #: The hand-made mutations of the mutation report (shared/reference/mutation-report.md) that
