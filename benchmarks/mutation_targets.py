@@ -100,8 +100,8 @@ TARGETS: dict[str, Target] = {
     ),
 }
 
-#: Mutants proved equivalent: (module, the original line stripped, the mutation) -> why.
-#: They are run all the same and listed, but left out of the ratio.
+#: Mutants proved equivalent, each with its proof. They are run all the same (a survivor
+#: only is taken as equivalent) and listed, but left out of the ratio.
 EQUIVALENT: dict[tuple[str, str, str], str] = {
     # (module, the mutant's line and the two after it, stripped, the mutated text in ⟦ ⟧ (a
     # part of them), the replacement) -> the proof
@@ -120,6 +120,10 @@ EQUIVALENT: dict[tuple[str, str, str], str] = {
     ("scanconv/algorithms/bspline.py", "s = last_span(kf, n) if t >= kf[n + ⟦1⟧]", "0"): (
         "basis_float(): for u_n <= t < u_{n+1} the span u_n < u_{n+1} is not empty, so "
         "last_span(kf, n) = n = bisect_right(kf, t) - 1: both branches give the same span."
+    ),
+    ("scanconv/algorithms/wu.py", "if ⟦a2 < a1⟧:", "(a2 <= a1)"): (
+        "wu(): a2 = a1 only for a single point (not steep: dx = 0 forces dy = 0; steep needs "
+        "|dy| > 0), where swapping the two equal end points changes nothing."
     ),
     (
         "scanconv/algorithms/dither.py",
