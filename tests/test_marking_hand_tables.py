@@ -277,6 +277,7 @@ def test_a_carried_t_leave_slip_costs_one_row(tmp_path):
     assert scored(result) == ["right", "wrong", "right (follow-through)", "right (follow-through)"]
 
 
+@pytest.mark.slow  # a process: over 50 ms
 def test_check_as_a_process_reads_the_students_csv(tmp_path):
     # the same one-decimal table through a real process: the score a teacher sees
     path = tmp_path / "dda-1dp.csv"
