@@ -535,7 +535,7 @@ def report(
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seed", type=int, default=38)
-    ap.add_argument("--cap", type=int, default=14, help="mutants a module at most")
+    ap.add_argument("--cap", type=int, default=12, help="mutants a module at most")
     ap.add_argument("--module", action="append", default=[], help="only this module (repeatable)")
     ap.add_argument("--only", action="append", default=[], help="only this mutant id")
     ap.add_argument(
