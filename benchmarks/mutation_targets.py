@@ -125,6 +125,11 @@ EQUIVALENT: dict[tuple[str, str, str], str] = {
         "wu(): a2 = a1 only for a single point (not steep: dx = 0 forces dy = 0; steep needs "
         "|dy| > 0), where swapping the two equal end points changes nothing."
     ),
+    ("scanconv/algorithms/transform.py", "for start in vertices[:⟦1⟧]:", "2"): (
+        "outline(): with two or more vertices the first edge is (v0, v1) whether closed or "
+        "not, and it yields v1 (unless it is v0) right after v0: yielding v1 first changes "
+        "nothing; with fewer, vertices[:1] = vertices[:2]."
+    ),
     (
         "scanconv/algorithms/dither.py",
         "[⟦4 * v + a⟧ for v in row] + [4 * v + b for v in row]\nfor row in d\nfor a, b in [(0, 2)]",
