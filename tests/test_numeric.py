@@ -22,3 +22,14 @@ from scanconv.core.numeric import fmt_value
 )
 def test_fmt_value_shows_a_short_decimal_and_else_the_fraction(value, shown):
     assert fmt_value(value) == shown
+
+
+def test_a_number_literal_at_its_length_limit():
+    # a literal of exactly _MAX_LITERAL characters is read; one more is refused
+    from scanconv.core.numeric import _MAX_LITERAL, parse_number
+
+    at = "0." + "0" * (_MAX_LITERAL - 3) + "5"
+    assert len(at) == _MAX_LITERAL
+    assert parse_number(at) == Fraction(5, 10 ** (_MAX_LITERAL - 2))
+    with pytest.raises(ValueError, match=f"longer than {_MAX_LITERAL} characters"):
+        parse_number(at + "0")
