@@ -285,3 +285,45 @@ def test_check_as_a_process_reads_the_students_csv(tmp_path):
     r = run_process("check", str(path), "--", *DDA, "-f", "json")
     assert r.code == 0, r.err
     assert score(json.loads(r.out)) == (2, 8)
+
+
+def test_a_dda_slip_in_x_is_followed_through(tmp_path):
+    # x_3 written 3.25 for 3.125 (a slip); from her own 3.25 the next values are 3.625, 4,
+    # 4.375, 4.75, 5.125, each rounding to the answer's pixel: one slip, one step (7 of 8)
+    xs = ["2", "2.375", "2.75", "3.25", "3.625", "4", "4.375", "4.75", "5.125"]
+    result = check(tmp_path, "dda-slip.csv", dda_csv(xs), *DDA)
+    assert score(result) == (7, 8)
+    assert scored(result) == ["right"] * 2 + ["wrong"] + ["right (follow-through)"] * 5
+
+
+def test_a_decision_against_the_rule_is_judged_by_her_own_decision(tmp_path):
+    # the step from (4, 3) with p = 0: she writes E (the rule says NE, p >= 0) and the next p
+    # 0 + 2dy = 8 that E gives, but the point (5, 4). Her p_{k+1} follows from her own
+    # decision, so only the decision and the point are wrong in that step: E reaches (5, 3).
+    rows = [list(r) for r in NOTES_ROWS]
+    rows[2] = ["2", "0", "E", "(4, 3)", "8"]
+    rows[3] = ["3", "8", "NE", "(5, 4)", "0"]
+    result = check(tmp_path, "own-decision.csv", notes_csv(rows), *BRESENHAM)
+    first = result["first_error"]
+    assert first.startswith("Row 3 (line 4): the pixel should be (5, 3), not (5, 4)")
+    assert "the decision should be NE, not E" in first
+    assert "next p" not in first
+    assert scored(result)[2] == "wrong"
+
+
+def test_a_table_that_stops_early_is_followed_on_from_her_last_point(tmp_path):
+    # five rows: the steps to (3, 3), (4, 3), (5, 4) right, then (6, 5) for (6, 4) (a slip),
+    # and she stops. The four steps she did not write are missing (3 of 8), and what they
+    # should hold follows on from her own last row by the rule: from (6, 5) with p = 0, NE to
+    # (7, 6) (p -> -8), E to (8, 6) (p -> 0), NE to (9, 7), E to (10, 7).
+    rows = [list(r) for r in NOTES_ROWS[:5]]
+    rows[4][3] = "(6, 5)"
+    result = check(tmp_path, "early.csv", notes_csv(rows), *BRESENHAM)
+    assert score(result) == (3, 8)
+    missing = [r for r in result["tables"][0]["rows"] if r[4] == "missing"]
+    assert [r[3].split(", next")[0] for r in missing] == [
+        "p = 0, NE, (7, 6)",
+        "p = -8, E, (8, 6)",
+        "p = 0, NE, (9, 7)",
+        "p = -8, E, (10, 7)",
+    ]

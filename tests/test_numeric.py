@@ -33,3 +33,12 @@ def test_a_number_literal_at_its_length_limit():
     assert parse_number(at) == Fraction(5, 10 ** (_MAX_LITERAL - 2))
     with pytest.raises(ValueError, match=f"longer than {_MAX_LITERAL} characters"):
         parse_number(at + "0")
+
+
+def test_a_fraction_over_zero_is_refused_and_over_one_read():
+    from scanconv.core.numeric import parse_number
+
+    with pytest.raises(ValueError, match="divides by zero"):
+        parse_number("3/0")
+    assert parse_number("3/1") == 3
+    assert parse_number("-6/4") == Fraction(-3, 2)
