@@ -327,3 +327,41 @@ def test_a_table_that_stops_early_is_followed_on_from_her_last_point(tmp_path):
         "p = 0, NE, (9, 7)",
         "p = -8, E, (10, 7)",
     ]
+
+
+X_ROUNDED_Y = """k,x,round(x),y
+0,2,2,2
+1,2.375,2,3
+2,2.75,{x2},4
+3,3.125,3,5
+4,3.5,4,6
+5,3.875,4,7
+6,4.25,4,8
+7,4.625,5,9
+8,5,5,10
+"""
+
+
+@pytest.mark.parametrize(("x2", "right"), [("3", 8), ("2", 7)])
+def test_a_steep_dda_written_x_round_x_y(tmp_path, x2, right):
+    # the steep DDA as the notes lay it out: the exact x, its rounding, and y; the pixel is
+    # (round(x), y): 2.75 rounds to 3, so (2, 4) in row 2 is a slip
+    result = check(tmp_path, "x-rx-y.csv", X_ROUNDED_Y.format(x2=x2), *DDA)
+    assert score(result) == (right, 8)
+    assert set(result["marked"]) == {"pixel", "exact"}
+
+
+def test_a_short_basic_line_table_counts_its_missing_rows(tmp_path):
+    # the basic line from (2, 2) to (8, 5): y = 2 + (x - 2)/2 rounded half up for x = 2 .. 8:
+    # (2, 2), (3, 3), (4, 3), (5, 4), (6, 4), (7, 5), (8, 5). She writes the first three and
+    # stops: 3 of 7, the four others missing, numbered on from hers
+    text = "x,y\n2,2\n3,3\n4,3\n"
+    result = check(tmp_path, "basic-short.csv", text, "line", "2", "2", "8", "5", "--algo", "basic")
+    assert score(result) == (3, 7)
+    rows = result["tables"][0]["rows"]
+    assert [(r[0], r[3], r[4]) for r in rows[3:]] == [
+        (4, "(5, 4)", "missing"),
+        (5, "(6, 4)", "missing"),
+        (6, "(7, 5)", "missing"),
+        (7, "(8, 5)", "missing"),
+    ]
