@@ -17,7 +17,7 @@ import json
 
 import pytest
 
-from .helpers import run, run_process
+from .helpers import assert_refused, run, run_process
 
 # The DDA from (2, 2) to (5, 10): dx = 3, dy = 8, 8 steps, x grows by 3/8 = 0.375 a step and
 # y by 1. Exact x: 2, 2.375, 2.75, 3.125, 3.5, 3.875, 4.25, 4.625, 5; the pixel rounds x half
@@ -365,3 +365,18 @@ def test_a_short_basic_line_table_counts_its_missing_rows(tmp_path):
         (6, "(7, 5)", "missing"),
         (7, "(8, 5)", "missing"),
     ]
+
+
+@pytest.mark.slow  # a table of 10,000 rows marked: over 50 ms
+def test_a_plain_marked_question_at_the_row_limit(tmp_path):
+    # the basic line from (0, 0) to (9999, 0) has 10,000 pixels, check's limit: marked (only
+    # the first is written); to (10000, 0) it has 10,001: refused, naming the limit
+    path = tmp_path / "one.csv"
+    path.write_text("x,y\n0,0\n")
+    r = run(
+        "check", str(path), "--", "line", "0", "0", "9999", "0", "--algo", "basic", "-f", "json"
+    )
+    assert r.code == 0, r.err
+    assert score(json.loads(r.out)) == (1, 10_000)
+    r = run("check", str(path), "--", "line", "0", "0", "10000", "0", "--algo", "basic")
+    assert_refused(r, "more than 10000 rows")
