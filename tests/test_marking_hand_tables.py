@@ -380,3 +380,25 @@ def test_a_plain_marked_question_at_the_row_limit(tmp_path):
     assert score(json.loads(r.out)) == (1, 10_000)
     r = run("check", str(path), "--", "line", "0", "0", "10000", "0", "--algo", "basic")
     assert_refused(r, "more than 10000 rows")
+
+
+def test_a_short_threshold_table_numbers_its_missing_rows(tmp_path):
+    # two of the four pixels written, both right: 2 of 4, rows 3 and 4 missing
+    text = "x,y,value,threshold,output\n0,0,128,128,1\n1,0,200,128,1\n"
+    result = check(tmp_path, "threshold-short.csv", text, *THRESHOLD)
+    assert score(result) == (2, 4)
+    rows = result["tables"][0]["rows"]
+    assert [(r[0], r[-1]) for r in rows] == [
+        (1, "right"),
+        (2, "right"),
+        (3, "missing"),
+        (4, "missing"),
+    ]
+
+
+def test_a_table_without_pixel_columns_names_eight_of_its_columns(tmp_path):
+    # ten columns, none for the pixels: the refusal names the first eight and counts the rest
+    path = tmp_path / "no-pixels.csv"
+    path.write_text("a,b,c,d,e,f,g,h,i,j\n1,2,3,4,5,6,7,8,9,10\n")
+    r = run("check", str(path), "--", *BRESENHAM)
+    assert_refused(r, "'a', 'b', 'c', 'd', 'e', 'f', 'g', 'h' and 2 more")
