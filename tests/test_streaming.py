@@ -98,3 +98,15 @@ def test_a_long_markdown_table_escapes_its_text_cells(count):
     for k, line in enumerate(lines[2:]):
         cells = [c.strip() for c in line.strip("| ").split(" | ")]
         assert cells == [str(k), "E\\|NE \\*", "\\<b\\>"], line
+
+
+def test_a_streamed_markdown_table_line_by_line():
+    # over BUFFER_ROWS rows the table is streamed: cells unpadded between "| " and " |", the
+    # rule sized by the widest cell of the buffered rows (k: "1000", 4; d: 1, at least 3):
+    # "-----:" right-aligned, ":---:" centred
+    from scanconv.render.text import table_lines
+
+    rows = [[str(k), "E"] for k in range(BUFFER_ROWS + 1)]
+    lines = list(table_lines(["k", "d"], [True, False], rows, markdown=True))
+    assert lines[:3] == ["| k | d |", "|-----:|:---:|", "| 0 | E |"]
+    assert lines[-1] == f"| {BUFFER_ROWS} | E |"
