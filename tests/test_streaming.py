@@ -110,3 +110,11 @@ def test_a_streamed_markdown_table_line_by_line():
     lines = list(table_lines(["k", "d"], [True, False], rows, markdown=True))
     assert lines[:3] == ["| k | d |", "|-----:|:---:|", "| 0 | E |"]
     assert lines[-1] == f"| {BUFFER_ROWS} | E |"
+
+
+def test_a_markdown_heading_keeps_its_math_and_escapes_its_bar():
+    # a heading is math scanconv wrote: kept as it is but for "|", which would end the cell
+    from scanconv.render.text import _md_heading
+
+    assert _md_heading("$|p_k|$") == "$\\|p_k\\|$"
+    assert _md_heading("$x_k$") == "$x_k$"
