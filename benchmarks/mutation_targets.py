@@ -84,7 +84,9 @@ TARGETS: dict[str, Target] = {
         only=("table_lines", "md_cell", "_md_heading", "md_text", "note_md", "prose_md", "md_code"),
         escaper=True,
     ),
-    "scanconv/core/tex_escape.py": Target(ESCAPE_TESTS, "tex", escaper=True),
+    "scanconv/core/tex_escape.py": Target(
+        ("tests/test_tex_escape.py", *ESCAPE_TESTS), "tex", escaper=True
+    ),
     "scanconv/render/gift.py": Target(
         ("tests/test_lms.py", "tests/test_lms_escaping.py", *ESCAPE_TESTS),
         only=("_SPECIAL", "gift_plain", "gift_text"),

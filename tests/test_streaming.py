@@ -118,3 +118,10 @@ def test_a_markdown_heading_keeps_its_math_and_escapes_its_bar():
 
     assert _md_heading("$|p_k|$") == "$\\|p_k\\|$"
     assert _md_heading("$x_k$") == "$x_k$"
+
+
+def test_a_code_span_shows_control_characters_as_replacement():
+    from scanconv.render.text import md_code
+
+    assert md_code("a\x07b") == "`a\ufffdb`"
+    assert md_code("``x") == "``` ``x ```"
