@@ -359,7 +359,10 @@ def test_a_short_basic_line_table_counts_its_missing_rows(tmp_path):
     result = check(tmp_path, "basic-short.csv", text, "line", "2", "2", "8", "5", "--algo", "basic")
     assert score(result) == (3, 7)
     rows = result["tables"][0]["rows"]
-    assert [(r[0], r[3], r[4]) for r in rows[3:]] == [
+    assert [(r[0], r[3], r[4]) for r in rows] == [
+        (1, "(2, 2)", "right"),
+        (2, "(3, 3)", "right"),
+        (3, "(4, 3)", "right"),
         (4, "(5, 4)", "missing"),
         (5, "(6, 4)", "missing"),
         (6, "(7, 5)", "missing"),
@@ -402,3 +405,6 @@ def test_a_table_without_pixel_columns_names_eight_of_its_columns(tmp_path):
     path.write_text("a,b,c,d,e,f,g,h,i,j\n1,2,3,4,5,6,7,8,9,10\n")
     r = run("check", str(path), "--", *BRESENHAM)
     assert_refused(r, "'a', 'b', 'c', 'd', 'e', 'f', 'g', 'h' and 2 more")
+    # nine: eight named and one more
+    path.write_text("a,b,c,d,e,f,g,h,i\n1,2,3,4,5,6,7,8,9\n")
+    assert_refused(run("check", str(path), "--", *BRESENHAM), "'g', 'h' and 1 more;")
