@@ -408,3 +408,32 @@ def test_a_table_without_pixel_columns_names_eight_of_its_columns(tmp_path):
     # nine: eight named and one more
     path.write_text("a,b,c,d,e,f,g,h,i\n1,2,3,4,5,6,7,8,9\n")
     assert_refused(run("check", str(path), "--", *BRESENHAM), "'g', 'h' and 1 more;")
+
+
+# Midpoint subdivision of (0, 2)-(12, 6) against the window x 2..8, y 0..8 (codes TBRL):
+# (0, 2) is left (0001), (12, 6) right (0010); the pieces are halved at their integer
+# midpoints, first halves first: (6, 4), (3, 3), (2, 3) inside, (1, 3) left; (0, 2)-(1, 3)
+# both left: AND 0001, rejected; (1, 3)-(2, 3) a pixel apart: its inside end kept; (2, 3) is on
+# the left edge, inside, so (2, 3)-(3, 3) is accepted: 0000, 0000. 13 pieces in all.
+MIDPOINT_CLIP = """k,piece,code_a,code_b,and,action,mid,code_mid
+0,"(0, 2) to (12, 6)",0001,0010,0000,split,"(6, 4)",0000
+1,"(0, 2) to (6, 4)",0001,0000,0000,split,"(3, 3)",0000
+2,"(0, 2) to (3, 3)",0001,0000,0000,split,"(2, 3)",0000
+3,"(0, 2) to (2, 3)",0001,0000,0000,split,"(1, 3)",0001
+4,"(0, 2) to (1, 3)",0001,0001,0001,reject,-,-
+5,"(1, 3) to (2, 3)",0001,0000,0000,keep inside end,-,-
+6,"(2, 3) to (3, 3)",0001,0000,0000,split,"(2, 3)",0000
+"""
+
+
+def test_a_code_slip_in_midpoint_subdivision_is_followed_to_a_split(tmp_path):
+    # she codes (2, 3) as left (0001) in the last piece she writes: from her own codes the AND
+    # is 0000 and the action a split, as she writes; only her code (and the midpoint, which is
+    # not followed through) is wrong. 6 of 13, the last 6 pieces missing.
+    question = ("clip", "line", "0", "2", "12", "6", "--window", "2", "0", "8", "8")
+    result = check(
+        tmp_path, "mid.csv", MIDPOINT_CLIP, *question, "--method", "midpoint-subdivision"
+    )
+    assert score(result) == (6, 13)
+    assert result["first_error"].startswith("Row 7 (line 8): code₁, midpoint, its code wrong;")
+    assert "action = split" in result["first_error"]
