@@ -88,12 +88,12 @@ TARGETS: dict[str, Target] = {
         ("tests/test_tex_escape.py", *ESCAPE_TESTS), "tex", escaper=True
     ),
     "scanconv/render/gift.py": Target(
-        ("tests/test_lms.py", "tests/test_lms_escaping.py", *ESCAPE_TESTS),
+        ("tests/test_lms_escaping.py", "tests/test_lms.py", *ESCAPE_TESTS),
         only=("_SPECIAL", "gift_plain", "gift_text"),
         escaper=True,
     ),
     "scanconv/render/moodle.py": Target(
-        ("tests/test_lms.py", "tests/test_lms_escaping.py", *ESCAPE_TESTS),
+        ("tests/test_lms_escaping.py", "tests/test_lms.py", *ESCAPE_TESTS),
         only=("_XML_ILLEGAL", "moodle_text", "cdata", "_CLOZE_SPECIAL", "_cloze_answer"),
         escaper=True,
     ),
