@@ -133,6 +133,26 @@ EQUIVALENT: dict[tuple[str, str, str], str] = {
         "nothing; with fewer, vertices[:1] = vertices[:2]."
     ),
     (
+        "scanconv/render/html.py",
+        'listed = ⟦esc(", ".join(fmt_pixel(p)',
+        '(", ".join(fmt_pixel(p) for p in st.pixels[:MAX_PIXEL_LIST]))',
+    ): (
+        "_pixels(): fmt_pixel writes integers, parentheses, commas and spaces, so the pixel "
+        "list holds no character HTML escapes: esc() is the identity on it."
+    ),
+    (
+        "scanconv/render/html.py",
+        'more = ⟦esc(f", ',
+        '(f", \\u2026 ({count - MAX_PIXEL_LIST:,} more)" if count > MAX_PIXEL_LIST else "")',
+    ): (
+        "_pixels(): ', … (N more)' with N an integer written with commas holds no character "
+        "HTML escapes."
+    ),
+    ("scanconv/render/html.py", "⟦esc(block.heading)⟧", "(block.heading)"): (
+        "question_html(): Question.heading is 'Question N' or 'Question N (M marks)' of two "
+        "integers: nothing HTML escapes."
+    ),
+    (
         "scanconv/algorithms/dither.py",
         "[⟦4 * v + a⟧ for v in row] + [4 * v + b for v in row]\nfor row in d\nfor a, b in [(0, 2)]",
         "(4 * v - a)",

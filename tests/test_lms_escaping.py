@@ -179,3 +179,10 @@ def test_gift_text_by_hand(text: str, gift: str) -> None:
 )
 def test_moodle_text_by_hand(text: str, html: str) -> None:
     assert moodle_text(text) == html
+
+
+def test_a_cloze_answer_shows_unsafe_characters_as_replacement() -> None:
+    from scanconv.render.moodle import _cloze_answer
+
+    # a control character and a bidirectional override are U+FFFD, never written as they are
+    assert _cloze_answer("a\x01b\u202ec") == "a\ufffdb\ufffdc"
