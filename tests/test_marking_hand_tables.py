@@ -437,3 +437,11 @@ def test_a_code_slip_in_midpoint_subdivision_is_followed_to_a_split(tmp_path):
     assert score(result) == (6, 13)
     assert result["first_error"].startswith("Row 7 (line 8): code₁, midpoint, its code wrong;")
     assert "action = split" in result["first_error"]
+
+
+def test_an_empty_markdown_row_is_one_cell(tmp_path):
+    # "||" between a table's rows is a row of one empty cell (the pipes only delimit it):
+    # refused, naming its line and its one cell against the heading's three
+    path = tmp_path / "empty-row.md"
+    path.write_text("| k | x | y |\n|---|---|---|\n| 0 | 2 | 2 |\n||\n| 1 | 3 | 3 |\n")
+    assert_refused(run("check", str(path), "--", *BRESENHAM), "line 4: 1 cells", "3 columns")
