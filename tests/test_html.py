@@ -473,3 +473,15 @@ def test_anti_aliased_pages_draw_each_pixel_in_its_grey(args):
     assert set(cells) == {tuple(p) for p in data["pixels"]}
     for pixel, style in cells.items():
         assert style == f"fill:{grey_of(levels[pixel], data['given']['L'])}", pixel
+
+
+def test_a_questions_wording_and_command_are_escaped():
+    from scanconv.document.blocks import Question
+    from scanconv.render.html import question_html
+
+    q = Question(2, 3, wording="Is p < 0 & x > y?", command="scanconv sheet '<q>.txt'")
+    assert question_html(q) == (
+        '<h2 class="sc-q">Question 2 (3 marks)</h2>\n'
+        '<p class="sc-wording">Is p &lt; 0 &amp; x &gt; y?</p>\n'
+        "<p><code>scanconv sheet &#x27;&lt;q&gt;.txt&#x27;</code></p>\n"
+    )
