@@ -485,3 +485,16 @@ def test_a_questions_wording_and_command_are_escaped():
         '<p class="sc-wording">Is p &lt; 0 &amp; x &gt; y?</p>\n'
         "<p><code>scanconv sheet &#x27;&lt;q&gt;.txt&#x27;</code></p>\n"
     )
+
+
+@pytest.mark.parametrize("linked", [True, False])
+def test_the_contents_escape_sections_and_wordings(linked):
+    from scanconv.document.blocks import Contents, Entry
+    from scanconv.render.html import contents_html
+
+    block = Contents((Entry(1, "p < 0?", "Lines & <b>circles</b>"),), linked=linked)
+    html = contents_html(block)
+    assert "<li>Lines &amp; &lt;b&gt;circles&lt;/b&gt;<ol>" in html
+    wording = '<a href="#q1">p &lt; 0?</a>' if linked else "p &lt; 0?"
+    assert f'<li value="1">{wording}</li>' in html
+    assert "<b>" not in html
