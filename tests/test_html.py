@@ -498,3 +498,11 @@ def test_the_contents_escape_sections_and_wordings(linked):
     wording = '<a href="#q1">p &lt; 0?</a>' if linked else "p &lt; 0?"
     assert f'<li value="1">{wording}</li>' in html
     assert "<b>" not in html
+
+
+def test_an_answer_sections_id_and_keys_are_attribute_escaped():
+    from scanconv.answers.line import line_solution
+    from scanconv.render.html import answer_section
+
+    html = answer_section(line_solution("dda", 2, 2, 4, 3), 'a"b<c', keys='p"q')
+    assert html.startswith('<section class="scanconv" id="a&quot;b&lt;c" data-keys="p&quot;q"')
