@@ -1,5 +1,5 @@
 """Mutation testing of the modules that produce numbers, marks and escapes:
-``nice -n 10 python benchmarks/mutate.py`` (about 35 minutes on one core; see
+``nice -n 10 python benchmarks/mutate.py`` (about 45 minutes on one core; see
 docs/development.md, "Mutation testing").
 
 Each target module is parsed with :mod:`ast` and its first-order mutants are listed by
@@ -17,15 +17,18 @@ Every mutant is written over one temporary copy of the tree (never the worktree'
 file given a modification time of its own so no stale compiled file is read, and the module's
 tests are run there, one mutant at a time: the module's doctests and its test files
 (:data:`TARGETS`), then, if those pass, ``tests/test_golden.py -k TOPIC``, each with
-``pytest -x -q -p no:cacheprovider -n 0`` under ``HYPOTHESIS_PROFILE=dev`` and a timeout
-(a timeout counts as killed, reported apart). A mutant survives when both runs pass. Mutants
-proved equivalent (:data:`EQUIVALENT`, each with its reasoning) are run all the same but left
-out of the ratio and listed.
+``pytest -x -q -p no:cacheprovider -n 0`` under ``HYPOTHESIS_PROFILE=dev``, within
+``--timeout`` seconds (120) and :data:`MEMORY` (a timeout counts as killed, reported apart).
+A mutant survives when both runs pass. Mutants proved equivalent (:data:`EQUIVALENT`, each
+with its proof) are run all the same but left out of the ratio and listed. The mutation
+report's hand-made survivors (:data:`REPORT`) are run beside the sampled mutants.
 
 Writes ``--out`` (default ``benchmarks/mutation-report``) ``.json`` and ``.md``: per module
 the mutants tried, killed, timed out, survived and equivalent, and each survivor's
 ``file:line`` and mutation. ``--list`` prints the sampled mutants without running them;
-``--only ID`` (repeatable) or ``--rerun REPORT.json`` (its survivors) runs just those.
+``--only ID`` (repeatable) runs just those; ``--rerun REPORT.json`` keeps that report's killed
+and runs the rest (after tests were added), writing a report of them all. The targets, the
+report's mutations and the equivalents are in ``benchmarks/mutation_targets.py``.
 """
 
 from __future__ import annotations
