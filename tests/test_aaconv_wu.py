@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scanconv import _api as api
-from scanconv.algorithms.wu import end_gaps, wu, wu_line
+from scanconv.algorithms.wu import end_gaps, is_steep, wu, wu_line
 
 from .helpers import run
 
@@ -184,3 +184,17 @@ def test_line_algo_wu_takes_the_ends_convention_too():
     assert line["steps"] == aa["steps"] and line["conventions"] == {"ends": "coverage"}
     r = run("line", "0", "1", "10", "2", "--ends", "coverage")
     assert r.code == 2 and not r.out and "ends" in r.err
+
+
+@pytest.mark.parametrize(
+    ("line", "steep"),
+    [
+        ((0, 0, 1, 3), True),  # |dy| = 3 > |dx| = 1
+        ((0, -3, 1, 3), True),  # |dy| = 6 > 1
+        ((0, 5, 4, 3), False),  # |dy| = 2 < |dx| = 4
+        ((2, 2, 5, 5), False),  # the diagonal: x stays the major axis
+        ((7, 1, 7, 1), False),  # a single point
+    ],
+)
+def test_is_steep_by_hand(line, steep):
+    assert is_steep(*line) is steep

@@ -28,6 +28,7 @@ from scanconv.algorithms.circles import (
     midpoint,
     polynomial,
     symmetric_dda,
+    symmetric_pixels,
     trig,
     trig_steps,
 )
@@ -541,3 +542,19 @@ def test_coprime_constructor_gives_the_value_on_every_python(cls):
         value = make(num, den)
         assert (value.numerator, value.denominator) == (num, den)
         assert value == Fraction(num, den)
+
+
+@pytest.mark.parametrize(
+    ("walk", "pixels"),
+    [
+        # a point on an axis has 4 distinct images, each once: (3, 0) and its mirror (0, 3)
+        ([(3, 0)], [(3, 0), (-3, 0), (0, 3), (0, -3)]),
+        ([(0, 3)], [(0, 3), (0, -3), (3, 0), (-3, 0)]),
+        # on the diagonal too: (2, 2)
+        ([(2, 2)], [(2, 2), (-2, 2), (2, -2), (-2, -2)]),
+        # off the axes and the diagonal, all 8
+        ([(1, 3)], [(1, 3), (-1, 3), (1, -3), (-1, -3), (3, 1), (-3, 1), (3, -1), (-3, -1)]),
+    ],
+)
+def test_symmetric_pixels_yields_each_image_once(walk, pixels):
+    assert list(symmetric_pixels(walk)) == pixels

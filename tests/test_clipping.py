@@ -491,3 +491,36 @@ def test_the_commands_answer(args):
 )  # fmt: skip
 def test_bad_input_on_the_command_line_is_one_line_and_exit_2(args, words):
     assert_refused(run(*args), *words)
+
+
+@pytest.mark.parametrize(
+    ("p1", "p2", "segment", "ends"),
+    [
+        # P1 left of the window (4, 4)-(10, 8), P2 inside: P1 moves to x = 4 along y = 5
+        ((0, 5), (6, 5), ((4, 5), (6, 5)), [1]),
+        # P1 inside, P2 right of it: P2 moves to x = 10
+        ((6, 5), (12, 5), ((6, 5), (10, 5)), [2]),
+        # P1 below, P2 inside: x = 5 + (4 - 2) * (7 - 5) / (6 - 2) = 6 at y = 4
+        ((5, 2), (7, 6), ((6, 4), (7, 6)), [1]),
+    ],
+)
+def test_cohen_sutherland_clips_the_one_end_outside(p1, p2, segment, ends):
+    r = cohen_sutherland(p1, p2, (4, 4, 10, 8))
+    assert r.accepted and r.segment == segment
+    assert [i.end for i in r.iterations] == ends
+
+
+@pytest.mark.parametrize(
+    ("vertices", "convex"),
+    [
+        ([(0, 0), (4, 0), (4, 4), (0, 4)], True),
+        ([(0, 0), (4, 0), (6, 2), (4, 4), (0, 4)], True),
+        ([(0, 0), (2, 0), (4, 0), (4, 4)], True),  # a collinear turn is ignored
+        # the square's left side pushed in to (2, 2): (0, 4) -> (2, 2) -> (0, 0) turns right,
+        # cross = (2 - 0)(0 - 2) - (2 - 4)(0 - 2) = -8, against the others' left turns
+        ([(0, 0), (4, 0), (4, 4), (0, 4), (2, 2)], False),
+        ([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)], False),
+    ],
+)
+def test_is_convex_by_the_turn_at_every_vertex(vertices, convex):
+    assert is_convex(vertices) is convex

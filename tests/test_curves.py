@@ -13,8 +13,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scanconv.algorithms.bezier import bernstein, bezier, de_casteljau
-from scanconv.algorithms.bspline import basis, bspline, knot_vector, span
+from scanconv.algorithms.bspline import (
+    basis,
+    basis_float,
+    bspline,
+    bspline_samples,
+    knot_vector,
+    span,
+)
 from scanconv.algorithms.continuity import continuity_level
+from scanconv.algorithms.curve_limits import MAX_DEGREE
 from scanconv.algorithms.lines import bresenham
 from scanconv.algorithms.local_control import local_control
 from scanconv.algorithms.parametric import parametric
@@ -22,6 +30,7 @@ from scanconv.algorithms.sampling import coord, curve_pixels, sample_ts
 from scanconv.answers.bezier import bezier_solution
 from scanconv.answers.bspline import bspline_solution
 from scanconv.answers.parametric import parametric_solution
+from scanconv.core.checks import InputError
 
 from .helpers import assert_refused, connected, run
 
@@ -538,3 +547,27 @@ def test_bspline_basis_alone_needs_explicit_knots_and_the_curve_needs_points():
     assert_refused(
         run("bspline", "--basis", "--degree", "2", "--knots", "0,1,0.5,2"), "non-decreasing"
     )
+
+
+def test_the_degree_limit_at_its_edge():
+    # degree MAX_DEGREE = 10 with n = 10: the open knot vector has n + p + 2 = 22 knots, one
+    # inner span (n - p + 1 = 1): p + 1 = 11 zeros, then 11 ones; degree 11 is refused
+    assert knot_vector("open", MAX_DEGREE, MAX_DEGREE) == (0,) * 11 + (1,) * 11
+    with pytest.raises(InputError, match="too high"):
+        knot_vector("open", MAX_DEGREE + 1, MAX_DEGREE + 1)
+
+
+def test_the_float_basis_of_the_uniform_quadratic_by_hand():
+    # uniform knots 0..5, p = 2: at the middle of a span the three non-zero basis functions
+    # are (1/2)(1/2)^2 = 1/8, 3/4 and 1/8; at t = 2 (a knot) they are 1/2, 1/2, 0
+    assert basis_float((0, 1, 2, 3, 4, 5), 2, 2, 2.5) == [0.125, 0.75, 0.125]
+    assert basis_float((0, 1, 2, 3, 4, 5), 2, 2, 2.0) == [0.5, 0.5, 0.0]
+
+
+def test_bspline_samples_count_only_the_domains_spans():
+    # uniform knots 0..8, p = 3, n = 4: the domain [u3, u5] has 2 spans; at least 16 steps in
+    # all with the same power of two per span: 8 a span, 16 (the spans outside the domain,
+    # [u5, u6] and on, do not count: 3 spans would give 8 x 3 = 24)
+    assert bspline_samples(tuple(range(9)), 3, 4) == 16
+    # one span (n = p): 16 a span
+    assert bspline_samples(tuple(range(8)), 3, 3) == 16

@@ -85,3 +85,24 @@ def test_answer_states_the_result() -> None:
     assert sol.data["accepted"] and sol.data["t_enter"] == Fraction(1, 4)
     assert len(list(sol.tables[0].rows())) == 4
     assert "rejected" in cyrus_beck_solution(5, 1, 6, 3, [0, 0, 4, 0, 4, 4, 0, 4]).derived[-1].key
+
+
+UNIT = [(0, 0), (1, 0), (1, 1), (0, 1)]
+
+
+@pytest.mark.parametrize(
+    ("p0", "p1", "segment"),
+    [
+        # parallel to an edge of the unit square, one unit outside: N.(P0 - E) = 1 > 0, rejected
+        ((-1, 2), (3, 2), None),
+        ((2, -1), (2, 3), None),
+        ((-1, -1), (3, -1), None),
+        ((-1, -1), (-1, 3), None),
+        # on the top edge's line: N.(P0 - E) = 0, inside; the edge's part is kept
+        ((-1, 1), (3, 1), ((0, 1), (1, 1))),
+    ],
+)
+def test_a_line_parallel_to_an_edge_by_hand(p0, p1, segment):
+    r = cyrus_beck(p0, p1, UNIT)
+    assert r.accepted == (segment is not None)
+    assert r.segment == segment

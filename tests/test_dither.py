@@ -239,3 +239,14 @@ def test_bad_input_names_its_parameter(call, param) -> None:
     with pytest.raises(InputError) as info:
         call()
     assert info.value.param == param
+
+
+def test_a_one_row_image_and_a_one_value_matrix():
+    # one row, one column: the smallest images are worked as any other (128 >= 128 on, 60 off)
+    assert d.check_matrix([[128, 60]], "image", "image") == ((128, 60),)
+    assert d.check_matrix([[7]], "matrix", "matrix") == ((7,),)
+    for rows in ([], [[]], [[], [1]]):  # no first row, or an empty one
+        with pytest.raises(InputError, match="has no values"):
+            d.check_matrix(rows, "image", "image")
+    with pytest.raises(InputError, match="every row of the image must have 2 values"):
+        d.check_matrix([[1, 2], []], "image", "image")

@@ -7,13 +7,19 @@ exact integer arithmetic, the midpoint circle (rx = ry), and, loosely, skimage's
 
 from __future__ import annotations
 
+from fractions import Fraction
 from itertools import pairwise
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.algorithms.ellipses import midpoint_ellipse, quadrant_points, symmetric_pixels
+from scanconv.algorithms.ellipses import (
+    midpoint_ellipse,
+    quadrant_points,
+    region1_end,
+    symmetric_pixels,
+)
 from scanconv.answers.circle import circle_solution
 from scanconv.answers.ellipse import ellipse_solution
 from scanconv.core.records import Move
@@ -216,3 +222,30 @@ def test_library_errors(args, message):
 
     with pytest.raises(ValueError, match=message):
         ellipse_solution(*(Fraction(a) for a in args))
+
+
+def test_region_1_of_ellipse_3_2_with_the_keep_tie_by_hand():
+    # rx = 3, ry = 2: p1_0 = ry^2 - rx^2 ry + rx^2 / 4 = 4 - 18 + 9/4 = -47/4. --tie keep
+    # chooses E when p <= 0. p = -47/4: E to (1, 2), p += 2 ry^2 x + ry^2 = 8 + 4: 1/4.
+    # p = 1/4 > 0: SE to (2, 1), p += 2 ry^2 x - 2 rx^2 y + ry^2 = 16 - 18 + 4: 9/4. Then SE to
+    # (3, 0), where 2 ry^2 x = 24 >= 2 rx^2 y = 0 ends region 1: region 2 starts at (3, 0).
+    steps = list(midpoint_ellipse(3, 2, tie="keep"))
+    assert [(s.p, s.decision, s.pixel) for s in steps] == [
+        (Fraction(-47, 4), Move.E, (1, 2)),
+        (Fraction(1, 4), Move.SE, (2, 1)),
+        (Fraction(9, 4), Move.SE, (3, 0)),
+    ]
+    assert region1_end(3, 2, tie="keep") == (3, 0)
+
+
+@pytest.mark.parametrize("tie", ["step", "keep"])
+@pytest.mark.parametrize("p0", ["exact", "rounded"])
+@pytest.mark.parametrize("loop", ["strict", "inclusive"])
+def test_region1_end_is_where_the_table_leaves_region_1(tie, p0, loop):
+    # the working's "region 2 starts at" against the table's last region-1 point, for every
+    # convention; ties (4 p = the threshold) occur at (3, 2) keep, (7, 1) rounded, (1, 1)
+    for rx in range(1, 17):
+        for ry in range(1, 17):
+            steps = list(midpoint_ellipse(rx, ry, loop=loop, tie=tie, p0=p0))
+            region1 = [s.pixel for s in steps if s.extra[0] == 1]
+            assert region1_end(rx, ry, loop, tie, p0) == (region1[-1] if region1 else (0, ry))

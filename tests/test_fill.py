@@ -176,3 +176,28 @@ def test_the_span_fill_reports_the_8_connected_leak():
     with pytest.raises(InputError, match="one pixel x y") as err:
         seed_fill_solution("flood", (1, 1, 1), rows=ROOM)
     assert err.value.param == "seed"
+
+
+# A room whose top row is cut in two by a boundary pixel at (3, 3) (rows top first, the last
+# row is y = 0). The span fill from (3, 2), worked by hand: its row x = 1 .. 5 filled, then
+# the row above (y + 1 = 3, the order the working states) gives the runs 1..2 and 4..5, whose
+# rightmost pixels (2, 3) and (5, 3) are pushed, then the row below (y - 1 = 1) one run, (5, 1).
+SPLIT_ROOM = ["#######", "#..#..#", "#.....#", "#.....#", "#######"]
+SPLIT_PUSHED = ((2, 3), (5, 3), (5, 1))
+
+
+@pytest.mark.parametrize(
+    ("order", "trace"),
+    [
+        # a stack takes the last pushed first: (5, 1), then (5, 3) (its run 4..5), then (2, 3)
+        ("stack", [((3, 2), (1, 5), SPLIT_PUSHED, 3), ((5, 1), (1, 5), (), 2),
+                   ((5, 3), (4, 5), (), 1), ((2, 3), (1, 2), (), 0)]),
+        # a queue takes them as pushed: (2, 3), (5, 3), (5, 1)
+        ("queue", [((3, 2), (1, 5), SPLIT_PUSHED, 3), ((2, 3), (1, 2), (), 2),
+                   ((5, 3), (4, 5), (), 1), ((5, 1), (1, 5), (), 0)]),
+    ],
+)  # fmt: skip
+def test_span_fill_scans_the_row_above_then_the_row_below(order, trace):
+    grid = parse_rows(SPLIT_ROOM)
+    steps = list(span_fill(grid, (3, 2), "boundary", 4, order))
+    assert [(s.pixel, s.span, s.pushed, s.pending) for s in steps] == trace

@@ -523,3 +523,36 @@ def test_a_page_over_a_huge_extent_stays_a_page(argv):
     labels = re.findall(r'font-size="11" text-anchor="(?:middle|end)">(-?[0-9]+)<', svg[0])
     assert 2 <= len(labels) <= 200
     assert len(r.out) < 3_000_000
+
+
+def test_a_questions_wording_and_command_are_escaped():
+    from scanconv.document.blocks import Question
+    from scanconv.render.html import question_html
+
+    q = Question(2, 3, wording="Is p < 0 & x > y?", command="scanconv sheet '<q>.txt'")
+    assert question_html(q) == (
+        '<h2 class="sc-q">Question 2 (3 marks)</h2>\n'
+        '<p class="sc-wording">Is p &lt; 0 &amp; x &gt; y?</p>\n'
+        "<p><code>scanconv sheet &#x27;&lt;q&gt;.txt&#x27;</code></p>\n"
+    )
+
+
+@pytest.mark.parametrize("linked", [True, False])
+def test_the_contents_escape_sections_and_wordings(linked):
+    from scanconv.document.blocks import Contents, Entry
+    from scanconv.render.html import contents_html
+
+    block = Contents((Entry(1, "p < 0?", "Lines & <b>circles</b>"),), linked=linked)
+    html = contents_html(block)
+    assert "<li>Lines &amp; &lt;b&gt;circles&lt;/b&gt;<ol>" in html
+    wording = '<a href="#q1">p &lt; 0?</a>' if linked else "p &lt; 0?"
+    assert f'<li value="1">{wording}</li>' in html
+    assert "<b>" not in html
+
+
+def test_an_answer_sections_id_and_keys_are_attribute_escaped():
+    from scanconv.answers.line import line_solution
+    from scanconv.render.html import answer_section
+
+    html = answer_section(line_solution("dda", 2, 2, 4, 3), 'a"b<c', keys='p"q')
+    assert html.startswith('<section class="scanconv" id="a&quot;b&lt;c" data-keys="p&quot;q"')

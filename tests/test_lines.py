@@ -14,6 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scanconv.algorithms.lines import basic, bresenham, dda
+from scanconv.algorithms.midpoint_line import midpoint_line
 from scanconv.answers.line import line_solution
 from scanconv.core.numeric import round_half_up
 from scanconv.core.records import Move
@@ -230,3 +231,20 @@ def test_basic_matches_its_equation():
     for s in basic(0, 0, 3, 7):
         y, x_exact, x_rounded = s.extra
         assert x_exact == Fraction(3, 7) * y and x_rounded == round_half_up(x_exact)
+
+
+def test_the_midpoint_line_in_halves_by_hand():
+    # (0, 0) to (5, 2): dx = 5, dy = 2. d = F(M) starts at dy - dx/2 = -1/2 and grows by
+    # dy = 2 after E, dy - dx = -3 after NE; d < 0 chooses E. d: -1/2 E (1, 0), 3/2 NE (2, 1),
+    # -3/2 E (3, 1), 1/2 NE (4, 2), -5/2 E (5, 2); each step's d_{k+1}: 3/2, -3/2, 1/2, -5/2,
+    # -1/2. The integer scale is 2F(M): every value doubled.
+    half = Fraction(1, 2)
+    d = [-half, 3 * half, -3 * half, half, -5 * half, -half]
+    moves = [Move.E, Move.NE, Move.E, Move.NE, Move.E]
+    pixels = [(1, 0), (2, 1), (3, 1), (4, 2), (5, 2)]
+    steps = list(midpoint_line(0, 0, 5, 2, scale="half"))
+    assert [(s.p, s.decision, s.pixel, s.extra) for s in steps] == [
+        (d[k], moves[k], pixels[k], (d[k + 1],)) for k in range(5)
+    ]
+    doubled = list(midpoint_line(0, 0, 5, 2))
+    assert [(s.p, s.extra) for s in doubled] == [(2 * d[k], (2 * d[k + 1],)) for k in range(5)]

@@ -142,3 +142,47 @@ def test_the_escaping_corpus_in_both_quiz_formats(gift_reader: GiftReader, text:
     parsed = gift_reader.parse(gift_text)
     assert {q["type"] for q in parsed} == {"Numerical", "Short"}
     assert all(q["title"].startswith(title[:200]) for q in parsed)
+
+
+def test_a_cloze_answer_writes_quotes_as_references() -> None:
+    # every character that could end, escape or quote the answer, or start an entity, is a
+    # character reference: " is &#34;, ' is &#39;, & is &#38;, < and > are &#60; and &#62;
+    from scanconv.render.moodle import _cloze_answer
+
+    assert _cloze_answer("say \"E\" or 'NE' <b>&") == (
+        "say &#34;E&#34; or &#39;NE&#39; &#60;b&#62;&#38;"
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "gift"),
+    [
+        ("a\tb", "a b"),  # a tab is a space
+        ("a\r\nb", "a\\nb"),  # a Windows line break is one line break, written \n
+        ("a\nb", "a\\nb"),
+        ("<b> & x=1 {y} ~z #w: \\", "&lt;b&gt; &amp; x\\=1 \\{y\\} \\~z \\#w\\: \\\\"),
+    ],
+)
+def test_gift_text_by_hand(text: str, gift: str) -> None:
+    from scanconv.render.gift import gift_text
+
+    assert gift_text(text) == gift
+
+
+@pytest.mark.parametrize(
+    ("text", "html"),
+    [
+        ("a\x01b", "a\ufffdb"),  # a character XML cannot hold
+        ("{1:NUMERICAL:=5}", "&#123;1:NUMERICAL:=5&#125;"),  # no blank can be smuggled in
+        ("<i>&'\"", "&lt;i&gt;&amp;&#x27;&quot;"),
+    ],
+)
+def test_moodle_text_by_hand(text: str, html: str) -> None:
+    assert moodle_text(text) == html
+
+
+def test_a_cloze_answer_shows_unsafe_characters_as_replacement() -> None:
+    from scanconv.render.moodle import _cloze_answer
+
+    # a control character and a bidirectional override are U+FFFD, never written as they are
+    assert _cloze_answer("a\x01b\u202ec") == "a\ufffdb\ufffdc"

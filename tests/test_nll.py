@@ -144,3 +144,18 @@ def test_cli_and_pipeline() -> None:
             "--viewport", "0", "0", "20", "10", "--clip", "midpoint-subdivision")  # fmt: skip
     assert r.code == 2 and r.out == "" and "midpoint-subdivision" in r.err
     assert len(r.err.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize(
+    ("p1", "p2", "segment"),
+    [
+        # along the left and the right edges' lines (vertical): the part on the window's edge
+        ((10, 0), (10, 70), ((10, 10), (10, 50))),
+        ((10, 70), (10, 0), ((10, 50), (10, 10))),
+        ((50, 0), (50, 70), ((50, 10), (50, 50))),
+        # along the bottom edge's line (horizontal)
+        ((0, 10), (70, 10), ((10, 10), (50, 10))),
+    ],
+)
+def test_along_an_edge_line_keeps_the_edge(p1, p2, segment) -> None:
+    assert nicholl_lee_nicholl(p1, p2, W).segment == segment

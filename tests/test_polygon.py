@@ -279,3 +279,21 @@ def test_the_bulk_fill_and_wu_line_are_part_of_scanconv_raster():
     from scanconv.algorithms import raster_fill
 
     assert raster.polygon is raster_fill.polygon and raster.line_aa is raster_fill.line_aa
+
+
+@pytest.mark.parametrize(
+    ("vertices", "area"),
+    [
+        # the 3 x 2 rectangle from (1, 1): 6, negative when listed clockwise
+        ([(1, 1), (4, 1), (4, 3), (1, 3)], 6),
+        ([(1, 3), (4, 3), (4, 1), (1, 1)], -6),
+        # the triangle (0, 0), (4, 0), (2, 3): base 4, height 3: 6
+        ([(0, 0), (4, 0), (2, 3)], 6),
+        # an L of three unit squares
+        ([(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)], 3),
+    ],
+)
+def test_polygon_area_is_the_shoelace_by_hand(vertices, area):
+    from scanconv.algorithms.polygon import polygon_area
+
+    assert polygon_area(vertices) == area

@@ -105,3 +105,44 @@ def test_a_wide_matrix_streams_a_few_rows_at_a_time(fmt):
         tracemalloc.stop()
     assert size > 1024 * 1024 * 2  # every cell written
     assert peak < 3_000_000, peak  # the text alone is over 4 MB
+
+
+@pytest.mark.parametrize("count", [BUFFER_ROWS, BUFFER_ROWS + 1])
+def test_a_long_markdown_table_escapes_its_text_cells(count):
+    # the padded table (at most BUFFER_ROWS rows) and the streamed one (one more) escape the
+    # same: "E|NE *" is "E\|NE \*" in a Markdown cell, and "<b>" is "\<b\>"
+    from scanconv.render.text import table_lines
+
+    rows = [[str(k), "E|NE *", "<b>"] for k in range(count)]
+    lines = list(table_lines(["k", "move", "tag"], [True, False, False], rows, markdown=True))
+    assert len(lines) == 2 + count
+    for k, line in enumerate(lines[2:]):
+        cells = [c.strip() for c in line.strip("| ").split(" | ")]
+        assert cells == [str(k), "E\\|NE \\*", "\\<b\\>"], line
+
+
+def test_a_streamed_markdown_table_line_by_line():
+    # over BUFFER_ROWS rows the table is streamed: cells unpadded between "| " and " |", the
+    # rule sized by the widest cell of the buffered rows (k: "1000", 4; d: 1, at least 3):
+    # "-----:" right-aligned, ":---:" centred
+    from scanconv.render.text import table_lines
+
+    rows = [[str(k), "E"] for k in range(BUFFER_ROWS + 1)]
+    lines = list(table_lines(["k", "d"], [True, False], rows, markdown=True))
+    assert lines[:3] == ["| k | d |", "|-----:|:---:|", "| 0 | E |"]
+    assert lines[-1] == f"| {BUFFER_ROWS} | E |"
+
+
+def test_a_markdown_heading_keeps_its_math_and_escapes_its_bar():
+    # a heading is math scanconv wrote: kept as it is but for "|", which would end the cell
+    from scanconv.render.text import _md_heading
+
+    assert _md_heading("$|p_k|$") == "$\\|p_k\\|$"
+    assert _md_heading("$x_k$") == "$x_k$"
+
+
+def test_a_code_span_shows_control_characters_as_replacement():
+    from scanconv.render.text import md_code
+
+    assert md_code("a\x07b") == "`a\ufffdb`"
+    assert md_code("``x") == "``` ``x ```"

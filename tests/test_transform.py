@@ -374,3 +374,20 @@ def test_viewport_defaults_to_the_window_corners():
         "json",
     )
     assert json.loads(r.out)["mapped"] == [[100, 100], [150, 100], [150, 200], [100, 200]]
+
+
+@pytest.mark.parametrize(
+    ("closed", "pixels"),
+    [
+        # the corner (0, 0) -> (2, 0) -> (2, 2): each vertex, then the edge's pixels between
+        (False, [(0, 0), (2, 0), (1, 0), (2, 2), (2, 1)]),
+        # closed: the edge (2, 2) -> (0, 0) adds (1, 1)
+        (True, [(0, 0), (2, 0), (1, 0), (2, 2), (2, 1), (1, 1)]),
+    ],
+)
+def test_outline_of_an_open_and_a_closed_polyline(closed, pixels):
+    from scanconv.algorithms.transform import outline
+
+    assert list(outline([(0, 0), (2, 0), (2, 2)], closed=closed)) == pixels
+    # two vertices are one edge, closed or not
+    assert list(outline([(0, 0), (3, 0)], closed=closed)) == [(0, 0), (3, 0), (1, 0), (2, 0)]

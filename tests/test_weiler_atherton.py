@@ -99,3 +99,23 @@ def test_answer_lists_and_walks() -> None:
     assert len(sol.data["polygons"]) == 2
     kinds = [r[2] for r in sol.tables[0].rows()]
     assert kinds.count("in (entering)") == 2 and kinds.count("out (leaving)") == 2
+
+
+SQUARE = [(0, 0), (4, 0), (4, 4), (0, 4)]
+
+
+@pytest.mark.parametrize(
+    ("subject", "clip", "message"),
+    [
+        # along the square's top edge's line from (2, 4): it first meets the right edge at its
+        # end, the corner (4, 4) (u = 1 on that edge), named before the overlap
+        ([(2, 4), (6, 4), (6, 8)], SQUARE, r"at a vertex, \(4, 4\)"),
+        # the edge (2, 2)-(6, 6) on the diagonal edge (0, 0)-(4, 4) of the clip triangle
+        ([(2, 2), (6, 6), (6, 2)], [(0, 0), (4, 4), (0, 4)], r"overlap along \(6, 6\)-\(2, 2\)"),
+        # a vertical overlap: x = 2 from y = 2 to 6 against the clip's edge x = 2, y = 0 to 4
+        ([(2, 2), (2, 6), (-2, 6)], [(2, 0), (2, 4), (-2, 0)], r"overlap along \(2, 2\)-\(2, 6\)"),
+    ],
+)
+def test_a_touch_or_an_overlap_is_refused_by_name(subject, clip, message) -> None:
+    with pytest.raises(InputError, match=message):
+        weiler_atherton(subject, clip)
