@@ -48,6 +48,7 @@ from .marking_rows import (
     Verdict,
     exact_of,
     pixel_of,
+    same,
     steps_of,
     student_rows,
     wrong_fields,
@@ -105,21 +106,37 @@ def _agrees(model: Model, states: list[State], solution: Solution) -> bool:
 # --- follow-through ---------------------------------------------------------------------------
 
 
+def _misses(got: Got, step: State | None, marked: set[str]) -> int:
+    """How many of the student's pixel and next p disagree with ``step`` (the cells a
+    decision decides)."""
+    if step is None:
+        return 2
+    pix = pixel_of(got) if "pixel" in marked else None
+    wrong = int(pix is not None and pix != step.point)
+    return wrong + int(
+        "p_next" in marked and got.p_next is not None and not same(got.p_next, step.p)
+    )
+
+
 def _taken(
     model: Model, s: State, got: Got, marked: set[str], rule_move: Any, by_rule: State
 ) -> tuple[State, Pixel]:
     """The step the student took from ``s`` (by the decision they wrote, else by their
     pixel, else the rule's) and the point their step is judged against: the point of the
-    decision they wrote, else the rule's. A wrong decision word beside the rule's pixel is
-    the one slip: the point and the next p are then the rule's (what the expected column
-    shows, so the first-error sentence never calls a right cell wrong)."""
+    decision they wrote, else the rule's. When the student's pixel and next p agree with the
+    rule's step better than with the step of the decision they wrote, the decision word is
+    the one slip and they are judged on the rule's step (what the expected column shows, so
+    the first-error sentence never calls a right cell wrong); on a tie, on their own
+    decision's step."""
     moves = model.moves(s)
     said = resolve_move(got.decision, moves) if "decision" in marked else None
     mine = said
     pix = pixel_of(got) if "pixel" in marked else None
     if mine is None and pix is not None:
         mine = next((m for m in moves if (t := model.step(s, m)) and t.point == pix), None)
-    word_only = said is not None and pix is not None and pix == by_rule.point
+    word_only = said is not None and _misses(got, by_rule, marked) < _misses(
+        got, model.step(s, said), marked
+    )
     if word_only:
         mine = rule_move
     taken = model.step(s, mine) if mine is not None else by_rule
