@@ -297,7 +297,7 @@ def test_the_documented_budgets_are_the_constants():
     doc = (Path(__file__).parent.parent / "docs" / "limits.md").read_text(encoding="utf-8")
     rows = {(m, n): v for m, n, v in BUDGET_ROW.findall(doc)}
     names = {"SECONDS", "ALL_ROWS", "SHEET_ROWS", "SHEET_SECONDS", "BATCH_FILES"}
-    names |= {"BATCH_SECONDS", "ROWS_IN_MEMORY", "PIXEL_BUDGET", "MEMORY"}
+    names |= {"BATCH_SECONDS", "ROWS_IN_MEMORY", "PIXEL_BUDGET", "MEMORY", "PDF_ROWS"}
     assert {n for _, n in rows} == names
     for (module, name), value in rows.items():
         constant = getattr(importlib.import_module(f"scanconv.{module}"), name)
