@@ -408,6 +408,11 @@ def test_a_table_without_pixel_columns_names_eight_of_its_columns(tmp_path):
     # nine: eight named and one more
     path.write_text("a,b,c,d,e,f,g,h,i\n1,2,3,4,5,6,7,8,9\n")
     assert_refused(run("check", str(path), "--", *BRESENHAM), "'g', 'h' and 1 more;")
+    # eight: all named, none "more"
+    path.write_text("a,b,c,d,e,f,g,h\n1,2,3,4,5,6,7,8\n")
+    r = run("check", str(path), "--", *BRESENHAM)
+    assert_refused(r, "'g', 'h'; it needs")
+    assert "more" not in r.err
 
 
 # Midpoint subdivision of (0, 2)-(12, 6) against the window x 2..8, y 0..8 (codes TBRL):
@@ -445,3 +450,21 @@ def test_an_empty_markdown_row_is_one_cell(tmp_path):
     path = tmp_path / "empty-row.md"
     path.write_text("| k | x | y |\n|---|---|---|\n| 0 | 2 | 2 |\n||\n| 1 | 3 | 3 |\n")
     assert_refused(run("check", str(path), "--", *BRESENHAM), "line 4: 1 cells", "3 columns")
+
+
+def test_a_circle_table_that_ends_early_numbers_its_missing_row(tmp_path):
+    """The midpoint circle r = 5 by hand: p = -4 E (1, 5), p = -1 E (2, 5), p = 4 SE (3, 4),
+    p = 3 SE (4, 3). She takes SE at p = -1 and again at 2, reaching (3, 3), where x = y ends
+    her octant one step early: the step the answer still has is row 4, missing (the rows are
+    numbered 0 to 4, none twice)."""
+    from .helpers import run
+
+    f = tmp_path / "short.csv"
+    f.write_text("k,p,decision,x,y\n0,-4,E,0,5\n1,-1,SE,1,5\n2,2,SE,2,4\n3,,,3,3\n")
+    r = run("check", str(f), "-f", "json", "--", "circle", "5")
+    assert r.code == 0, r.err
+    data = json.loads(r.out)
+    assert (data["score"], data["out_of"]) == (1, 4)
+    rows = data["tables"][0]["rows"]
+    assert [row[0] for row in rows] == [0, 1, 2, 3, 4]
+    assert rows[-1][3:] == ["p = 3, SE, (4, 3)", "missing"]
