@@ -27,24 +27,9 @@ from scanconv.core.records import Column
 from scanconv.render import latex, moodle
 from scanconv.render.lms import Gap
 from tests.helpers import run
+from tests.references import midpoint_circle_ref
 
 # --- R3: a wide table's parts -----------------------------------------------------------------
-
-
-def midpoint_octant(r: int) -> list[tuple[int, int]]:
-    """The notes' midpoint circle, second octant, from (0, r): p0 = 1 - r, a step while
-    x < y (the last point is the first with x >= y)."""
-    x, y, p = 0, r, 1 - r
-    points = [(x, y)]
-    while x < y:
-        x += 1
-        if p < 0:
-            p += 2 * x + 1
-        else:
-            y -= 1
-            p += 2 * x + 1 - 2 * y
-        points.append((x, y))
-    return points
 
 
 _HEAD = re.compile(r"\$\(x_c([+-])([xy]), y_c([+-])([xy])\)\$")
@@ -68,7 +53,7 @@ def test_wide_symmetry_table_parts_hold_every_column() -> None:
     assert result.code == 0, result.err
     parts = result.out.split("8-way symmetry about the centre (0, 0), part ")[1:]
     assert len(parts) >= 2
-    octant = midpoint_octant(60)
+    octant = midpoint_circle_ref(60)  # the notes' octant from (0, r)
     heads: list[str] = []
     for part in parts:
         lines = [ln for ln in part.split("\\end{longtable}")[0].splitlines() if " & " in ln]
