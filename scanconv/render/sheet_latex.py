@@ -155,24 +155,23 @@ def _tex_label(text: str) -> str:
     return f"${text}$" if math_cell(text) else tex_text(text)
 
 
-def blank_widths(blank: Blank) -> tuple[list[float], str]:
+def blank_widths(blank: Blank) -> list[float]:
     """The width of each column of an empty table in points (room to write each answer
-    cell by hand) and the font size of its headings: the natural widths when they fit the
-    text width, else all narrowed in proportion, the headings set smaller; the table is
+    cell by hand): the natural widths when they fit the text width, else all narrowed in
+    proportion (the headings are not shrunk with them: :func:`_column_heading`); the table is
     never split into parts.
 
     >>> from scanconv.core.records import Column
     >>> cols = tuple(Column(str(i), "x", "x") for i in range(9))
-    >>> widths, size = blank_widths(Blank("t", cols, 3, (18,) * 9))
-    >>> round(sum(widths) + 12 * 9), size
-    (335, '\\\\scriptsize')
+    >>> round(sum(blank_widths(Blank("t", cols, 3, (18,) * 9))) + 12 * 9)
+    335
     """
     natural = [5.0 * (_room(w) + 2) for w in blank.widths]
     room = 0.97 * 345 - 12 * len(natural)
     if sum(natural) <= room:
-        return natural, ""
+        return natural
     factor = room / sum(natural)
-    return [w * factor for w in natural], "\\footnotesize" if factor > 0.7 else "\\scriptsize"
+    return [w * factor for w in natural]
 
 
 _WORDS = re.compile(r"\\text\{([^{}$\\]*)\}")
@@ -182,20 +181,19 @@ a heading is never shrunk to fit its column (printed and read on paper: issue 39
 shrunk to 2 pt)."""
 
 
-def _heading(column: Column, width: float, size: str = "") -> str:
+def _column_heading(column: Column, width: float) -> str:
     r"""A worksheet column's heading, set at the text's own size (its subscripts at 7 pt, so
     never below :data:`MIN_HEADING_PT`): words wrap in their column; a formula wider than its
-    column is set on its side instead of being shrunk (``size``, the table's size for its
-    cells, is not applied to the headings).
+    column is set on its side instead of being shrunk.
 
     >>> from scanconv.core.records import Column
-    >>> _heading(Column("e", "new end point", r"\text{new end point}"), 30.0)
+    >>> _column_heading(Column("e", "new end point", r"\text{new end point}"), 30.0)
     'new end point'
-    >>> _heading(Column("e", "new end point", r"\text{new end point}"), 20.0)
+    >>> _column_heading(Column("e", "new end point", r"\text{new end point}"), 20.0)
     '\\rotatebox{90}{new end point}'
-    >>> _heading(Column("p", "p_k", "p_k"), 40.0)
+    >>> _column_heading(Column("p", "p_k", "p_k"), 40.0)
     '$p_k$'
-    >>> _heading(Column("q", "(x_c+x, y_c+y)", "(x_c+x, y_c+y)"), 20.0)
+    >>> _column_heading(Column("q", "(x_c+x, y_c+y)", "(x_c+x, y_c+y)"), 20.0)
     '\\rotatebox{90}{$(x_c+x, y_c+y)$}'
     """
     words = _WORDS.fullmatch(column.tex.strip())
@@ -212,14 +210,14 @@ def _latex_blank(blank: Blank) -> Iterator[str]:
     """An empty table, ruled for writing in, whole: each column as wide as its widest
     answer cell and a little more, narrowed to the text width when too wide (a longtable:
     a table of many rows continues on the next page, its heading repeated)."""
-    widths, size = blank_widths(blank)
+    widths = blank_widths(blank)
     need = 60 + 26 * (blank.rows if blank.rows <= KEEP_ROWS else 5)  # rows 8 mm high, ruled
     yield f"\\scneed{{{need}pt}}\\paragraph{{{tex_text(blank.title)}}}\\mbox{{}}\\\\[1ex]\n"
     spec = "|" + "|".join(f">{{\\centering\\arraybackslash}}p{{{w:.1f}pt}}" for w in widths) + "|"
     short = blank.rows <= KEEP_ROWS  # a tabular never breaks: its heading made room for it
     env = "tabular" if short else "longtable"
     yield ("\\par{\\centering" if short else "") + f"\\begin{{{env}}}{{{spec}}}\n\\hline\n"
-    heads = (_heading(c, w, size) for c, w in zip(blank.columns, widths, strict=True))
+    heads = (_column_heading(c, w) for c, w in zip(blank.columns, widths, strict=True))
     yield " & ".join(heads) + " \\\\\n\\hline\n" + ("" if short else "\\endhead\n")
     for row in _blank_rows(blank):
         cells = [_tex_label(c) if c else "" for c in row]  # labels and given values
