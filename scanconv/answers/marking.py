@@ -25,7 +25,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from ..core import lazy
 from ..core.checks import InputError
@@ -119,31 +119,26 @@ def _misses(got: Got, step: State | None, marked: set[str]) -> int:
 
 
 def _taken(
-    model: Model, s: State, got: Got, marked: set[str], rule_move: Any, by_rule: State
+    model: Model, s: State, got: Got, marked: set[str], by_rule: State
 ) -> tuple[State, Pixel]:
-    """The step the student took from ``s`` (by the decision they wrote, else by their
-    pixel, else the rule's) and the point their step is judged against: the point of the
-    decision they wrote, else the rule's. When the student's pixel and next p agree with the
-    rule's step better than with the step of the decision they wrote, the decision word is
-    the one slip and they are judged on the rule's step (what the expected column shows, so
-    the first-error sentence never calls a right cell wrong); on a tie, on their own
-    decision's step."""
+    """The step the student took from ``s`` and the point their step is judged against.
+    Without a decision read, the step their pixel shows (else the rule's), judged against the
+    rule's point. With one, its step and point; but when the student's pixel and next p agree
+    with the rule's step better than with the decision's, the decision word is the one slip
+    and they are judged on the rule's step (what the expected column shows, so the
+    first-error sentence never calls a right cell wrong); on a tie, on their own decision's
+    step."""
     moves = model.moves(s)
     said = resolve_move(got.decision, moves) if "decision" in marked else None
-    mine = said
-    pix = pixel_of(got) if "pixel" in marked else None
-    if mine is None and pix is not None:
-        mine = next((m for m in moves if (t := model.step(s, m)) and t.point == pix), None)
-    word_only = said is not None and _misses(got, by_rule, marked) < _misses(
-        got, model.step(s, said), marked
-    )
-    if word_only:
-        mine = rule_move
-    taken = model.step(s, mine) if mine is not None else by_rule
-    assert taken is not None
-    if said is None or word_only:
-        return taken, by_rule.point
-    return taken, (model.step(s, said) or by_rule).point
+    if said is None:
+        pix = pixel_of(got) if "pixel" in marked else None
+        shown = (t for m in moves if (t := model.step(s, m)) and t.point == pix)
+        return (next(shown, None) if pix is not None else None) or by_rule, by_rule.point
+    said_step = model.step(s, said)
+    if _misses(got, by_rule, marked) < _misses(got, said_step, marked):
+        return by_rule, by_rule.point
+    assert said_step is not None
+    return said_step, said_step.point
 
 
 def expect(
@@ -159,7 +154,7 @@ def expect(
     by_rule = model.step(s, rule_move)
     if by_rule is None or model.done(s, by_rule):
         return None
-    taken, point = _taken(model, s, got, marked, rule_move, by_rule)
+    taken, point = _taken(model, s, got, marked, by_rule)
     return Expected(
         point,
         base.p,
