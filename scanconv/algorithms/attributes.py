@@ -96,7 +96,13 @@ def styled(x1: int, y1: int, x2: int, y2: int, mask: Mask) -> Iterator[Step]:
         yield new_step(Step, (k, None, None, pixel, (at, mask.bits[at])))
 
 
-def _span(width: int) -> range:
+def thick_offsets(width: int) -> range:
+    """A thick line's offsets from its centre pixel, across the minor axis (or each axis of a
+    square brush): ``-(w - 1) // 2 .. w // 2``, an even width's extra pixel above or right.
+
+    >>> list(thick_offsets(3)), list(thick_offsets(4))
+    ([-1, 0, 1], [-1, 0, 1, 2])
+    """
     if not 1 <= width <= MAX_WIDTH:
         raise InputError(f"the width is 1..{MAX_WIDTH} pixels, got {width}", "width")
     return range(-((width - 1) // 2), width // 2 + 1)
@@ -111,7 +117,7 @@ def thick(x1: int, y1: int, x2: int, y2: int, width: int, brush: bool = False) -
     >>> [len(s.extra[0]) for s in thick(0, 0, 2, 1, 2, brush=True)]
     [4, 3, 2]
     """
-    span = _span(width)
+    span = thick_offsets(width)
     steep = abs(y2 - y1) > abs(x2 - x1)
     if brush:
         offsets = [(dx, dy) for dy in span for dx in span]

@@ -36,16 +36,18 @@ def _bbox(pixels: list[Pixel]) -> tuple[int, int, int, int]:
 
 
 def _thick_bbox(
-    ends: tuple[int, int, int, int], width: int, brush: bool, steep: bool
+    ends: tuple[int, int, int, int], span: range, brush: bool, steep: bool
 ) -> tuple[int, int, int, int]:
     """The bounding box of a thick line's pixels, from its ends alone: the centre line keeps
     within its ends' box and reaches both, and each of its pixels is widened by the same
     offsets (across the minor axis, or both axes for a brush).
 
-    >>> _thick_bbox((0, 0, 4, 1), 3, False, False), _thick_bbox((0, 0, 1, 4), 2, True, True)
-    ((0, -1, 4, 2), (0, 0, 2, 5))
+    >>> _thick_bbox((0, 0, 4, 1), range(-1, 2), False, False)
+    (0, -1, 4, 2)
+    >>> _thick_bbox((0, 0, 1, 4), range(0, 2), True, True)
+    (0, 0, 2, 5)
     """
-    lo, hi = -((width - 1) // 2), width // 2
+    lo, hi = span[0], span[-1]
     wide_x, wide_y = brush or steep, brush or not steep
     x1, y1, x2, y2 = ends
     return (
@@ -140,10 +142,10 @@ def thick_line_solution(
     else:
         axis = "x" if steep else "y"
         how = f"{width} pixels across {axis} (the minor axis) at each pixel"
-    lo, hi = -((width - 1) // 2), width // 2
+    span = at.thick_offsets(width)
     derived = [
         rule("how", f"\\text{{{how}}}"),
-        rule("offsets", f"\\text{{offsets }} {lo} \\ldots {hi}"),
+        rule("offsets", f"\\text{{offsets }} {span[0]} \\ldots {span[-1]}"),
         worked("pixels", count, f"\\text{{pixels: }} {count}"),
     ]
 
@@ -152,7 +154,7 @@ def thick_line_solution(
             added = ", ".join(fmt_pixel(p) for p in s.extra[0]) or "-"
             yield s._replace(extra=(added,))
 
-    bbox = _thick_bbox(ends, width, brush, steep)
+    bbox = _thick_bbox(ends, span, brush, steep)
     figures: tuple[PixelFigure, ...] = ()
     if count <= 4000:
         centre = tuple(s.pixel for s in steps())
