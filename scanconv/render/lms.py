@@ -168,13 +168,15 @@ def number_gap(value: Fraction | int | float, label: str = "") -> Gap:
 _NUMBER = re.compile(r"^(~?)(-?\d+(?:\.\d+)?|-?\d+/\d+)$")
 _POINT = re.compile(r"^\((-?[\d./]+), (-?[\d./]+)\)$")
 _WORD = re.compile(r"^[A-Za-z][A-Za-z-]{0,15}$")
+_CODE = re.compile(r"^-?0\d")
+"""The start of a binary code (``010``, ``0010``): digits, but not a number."""
 
 
 def _text_pieces(text: str, label: str) -> tuple[Piece, ...]:
     """A text cell: a number, a point or one word as gaps; anything else shown."""
     s = text.strip()
     number = _NUMBER.match(s)
-    if number and not re.match(r"^-?0\d", number.group(2)):  # "010" is a code, not ten
+    if number and not _CODE.match(number.group(2)):  # "010" is a code, not ten
         about, digits = number.groups()
         if about:  # "~0.05722": within half a unit of its last digit
             places = len(digits.partition(".")[2])
@@ -301,7 +303,7 @@ def answer_pieces(value: Any, label: str = "") -> tuple[Piece, ...]:
     out: list[Piece] = []
     at = 0
     for m in _NUMBER_IN_TEXT.finditer(value):
-        if re.match(r"^-?0\d", m.group()):  # "0010" is a code: a word
+        if _CODE.match(m.group()):  # "0010" is a code: a word
             continue
         out.extend((value[at : m.start()],) if m.start() > at else ())
         out.append(number_gap(Fraction(m.group()), label))

@@ -95,10 +95,21 @@ def weights(blanks: int, marks: int | None) -> list[int]:
     >>> weights(3, 7), weights(4, 2), weights(2, None)
     ([3, 2, 2], [1, 1, 1, 1], [1, 1])
     """
-    if marks is None or marks < blanks or blanks == 0:
+    if not _carried(blanks, marks):
         return [1] * blanks
+    assert marks is not None
     base, extra = divmod(marks, blanks)
     return [base + (i < extra) for i in range(blanks)]
+
+
+def _carried(blanks: int, marks: int | None) -> bool:
+    """Whether the blanks' weights can sum to the question's marks (at least one mark a
+    blank)."""
+    return marks is not None and 0 < blanks <= marks
+
+
+def _blanks(q: QuizQuestion) -> int:
+    return sum(1 for _ in gaps(q.tables))
 
 
 def marks_notice(q: QuizQuestion) -> str | None:
@@ -109,8 +120,8 @@ def marks_notice(q: QuizQuestion) -> str | None:
     >>> marks_notice(QuizQuestion("Q1 line", "w", (), (t,), "", 1))
     'Q1 line to 1 (it has 2 blanks)'
     """
-    blanks = sum(1 for _ in gaps(q.tables))
-    if q.marks is None or not blanks or q.marks >= blanks:
+    blanks = _blanks(q)
+    if q.marks is None or not blanks or _carried(blanks, q.marks):
         return None
     return f"{q.name.partition(' ')[0]} {q.name.partition(' ')[2][:30]} to {q.marks} (it has {blanks} blanks)"
 
@@ -138,7 +149,7 @@ def question_html(q: QuizQuestion) -> str:
         parts.append(f"<p><strong>Given:</strong> {given}</p>\n")
     if q.tables:
         parts.append(f"<p><em>{moodle_text(INSTRUCTIONS)}</em></p>\n")
-    weight = iter(weights(sum(1 for _ in gaps(q.tables)), q.marks))
+    weight = iter(weights(_blanks(q), q.marks))
     for table in q.tables:
         parts.extend(_table(table, weight))
     return "".join(parts)
