@@ -186,7 +186,8 @@ def _read_bytes(path: str) -> bytes:
     import sys
 
     if path != "-":
-        if not stat.S_ISREG(os.stat(path).st_mode) and not os.path.isdir(path):
+        mode = os.stat(path).st_mode
+        if not stat.S_ISREG(mode) and not stat.S_ISDIR(mode):
             # a FIFO or a device: opening one blocks until a writer comes (N11)
             raise ValueError(
                 f"{path}: not a regular file (give - to read the questions from standard input)"

@@ -43,7 +43,7 @@ class _Frame:
         # room for the widest row label on the left and half the last column label on the
         # right (about 7 px a digit at 11 px)
         y_digits = max(len(str(self.y0)), len(str(self.y1)))
-        x_digits = max(len(str(self.x0)), len(str(self.x1)))
+        self.x_digits = x_digits = max(len(str(self.x0)), len(str(self.x1)))
         self.left, self.top = max(self.PAD_LEFT, 7.0 * y_digits + 12), self.PAD_TOP
         self.right = self.left + self.cols * self.s
         self.bottom = self.top + self.rows * self.s
@@ -118,8 +118,7 @@ def _grid_lines(f: _Frame) -> list[str]:
 
 def _axes(f: _Frame) -> list[str]:
     out: list[str] = []
-    digits = max(len(str(f.x0)), len(str(f.x1)))
-    for x in _multiples(f.x0, f.x1, _ticks(f.s / (7.0 * digits + 6))):
+    for x in _multiples(f.x0, f.x1, _ticks(f.s / (7.0 * f.x_digits + 6))):
         out.append(
             f'<text x="{_n(f.px(x))}" y="{_n(f.bottom + 15)}" font-size="11" '
             f'text-anchor="middle">{x}</text>'
