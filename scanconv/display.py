@@ -64,8 +64,10 @@ class Answer(Solution):
 
     @classmethod
     def of(cls, solution: Solution, recipe: Recipe | None = None) -> Answer:
-        """``solution`` as an Answer (the same fields, nothing computed)."""
-        return cls(**solution.fields(), recipe=recipe)
+        """``solution`` as an Answer (the same fields and question, nothing computed)."""
+        answer = cls(**solution.fields(), recipe=recipe)
+        answer.question = solution.question
+        return answer
 
     def __repr__(self) -> str:
         return f"<Answer {self.primitive}/{self.algorithm}: {self.title}>"

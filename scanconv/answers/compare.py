@@ -21,15 +21,17 @@ from ..core import lazy
 from ..core.checks import InputError, check_integer
 from ..core.numeric import Number, fmt, fmt_short, normalize
 from ..core.records import Pixel, PixelFigure, Solution, Table, heading, rule
-from .methods import METHODS, compared
+from .methods import METHODS, compared, method
 
 if TYPE_CHECKING:
     from ..algorithms import circles
+    from . import asked
     from .primitives import circle, line
     from .theory import derivations as th
 else:
     circles = lazy.module("scanconv.algorithms.circles")
     circle = lazy.module("scanconv.answers.primitives.circle")
+    asked = lazy.module("scanconv.answers.asked")
     th = lazy.module("scanconv.answers.theory.derivations")
     line = lazy.module("scanconv.answers.primitives.line")
 
@@ -42,8 +44,12 @@ CIRCLE_METHODS = compared("circle")
 NAMES = {m.name: m.short for m in METHODS.values() if m.command in ("line", "circle") and m.short}
 """Display names of the methods (table headings), from their records."""
 
-SHORT = {"bresenham": "Bresenham", "polynomial": "poly", "trig": "trig", "symmetric-dda": "SDDA"}
-"""Names of the circle methods in reason tags (``trig off``, ``SDDA twice``)."""
+SHORT = {m.name: m.fact("tag") for m in METHODS.values() if m.command == "circle" and m.fact("tag")}
+"""Names of the circle methods in reason tags (``trig off``, ``SDDA twice``), from their
+records."""
+
+REFERENCE = CIRCLE_METHODS[0]
+"""The circle method the others are measured against (the first compared: the midpoint)."""
 
 #: Reason tags shown in the table; the notes explain each one that occurs, with its numbers.
 TIE = "tie"
@@ -60,10 +66,10 @@ def arithmetic(maj: str, mnr: str, negative: bool = False) -> tuple[tuple[str, s
     'p += 2|dx| or 2|dx| - 2dy'
     """
     d = f"|d{mnr}|" if negative else f"d{mnr}"
-    return (
-        ("basic", f"{mnr} = {mnr}1 + m({maj} - {maj}1)", "fractions, rounding"),
-        ("DDA", "x += x_inc, y += y_inc", "fractions, rounding"),
-        ("Bresenham", f"p += 2{d} or 2{d} - 2d{maj}", "integers only"),
+    return tuple(
+        (m.short, m.fact("work").format(maj=maj, mnr=mnr, d=d), m.fact("arithmetic"))
+        for m in (METHODS[f"line/{name}"] for name in LINE_METHODS)
+        if m.fact("work")
     )
 
 
@@ -265,7 +271,8 @@ def _line_notes(
         )
     else:
         notes.append("Bresenham's algorithm needs integer end points; it is left out.")
-    bres_p = _bresenham_p(sols["bresenham"], steep) if "bresenham" in sols else {}
+    bres = sols.get("bresenham")
+    bres_p = _bresenham_p(bres, steep) if bres is not None else {}
     dda_pts = _dda_points(sols["dda"], steep)
     for tag, row in _first_rows(differing):
         a = row[0]
@@ -363,9 +370,7 @@ def compare_circles(r: Number, theory: bool = False) -> Solution:
             f"compare circle: the radius must be at most {MAX_RADIUS} (got {ir}; "
             "every method runs before the first row)"
         )
-    methods = tuple(
-        m for m in CIRCLE_METHODS if m != "symmetric-dda" or ir <= circles.SDDA_MAX_RADIUS
-    )
+    methods = tuple(m for m in CIRCLE_METHODS if _takes(m, ir))
     sols = {m: circle.circle_solution(m, ir) for m in methods}
 
     def octant(m: str) -> dict[int, list[int]]:
@@ -411,7 +416,7 @@ def compare_circles(r: Number, theory: bool = False) -> Solution:
         primitive="circle",
         algorithm="compare",
         title=f"Circle methods compared: r = {ir}",
-        given=sols["midpoint"].given[:1],
+        given=sols[REFERENCE].given[:1],
         derived=derived,
         notes=tuple(notes),
         tables=(
@@ -424,13 +429,23 @@ def compare_circles(r: Number, theory: bool = False) -> Solution:
     )
 
 
+def _takes(name: str, r: int) -> bool:
+    """Whether circle method ``name`` takes radius ``r`` (its record's row estimate refuses
+    a radius beyond the method's limit, as the symmetric DDA's)."""
+    try:
+        method("circle", name).load("rows")(asked.CircleQuestion(name, r))
+    except InputError:
+        return False
+    return True
+
+
 def _circle_reasons(x: int, cells: dict[str, list[int]], last: dict[str, int]) -> list[str]:
     """The reason tags of one octant column, each method measured against the midpoint's;
     ``last`` is each method's last column in the octant."""
-    ref = cells["midpoint"]
+    ref = cells[REFERENCE]
     out = []
     for m, ys in cells.items():
-        if m == "midpoint" or ys == ref:
+        if m == REFERENCE or ys == ref:
             continue
         if not ys:
             kind = "stops" if x > last[m] else "skips"
@@ -455,7 +470,7 @@ def _circle_notes(
         short, kind = tag.rsplit(" ", 1)
         m = by_short[short]
         head = f"{tag} (rows marked '{tag}'): at x = {x} the circle is at y = {fmt(exact(x), 3)}"
-        ref = _cell(cols["midpoint"].get(x, []))
+        ref = _cell(cols[REFERENCE].get(x, []))
         if kind == "stops":
             a = max(cols[m])
             b = cols[m][a][-1]

@@ -42,14 +42,33 @@ if TYPE_CHECKING:
 else:
     conventions = lazy.module("scanconv.algorithms.conventions")  # knobs only
 
-PIECES = ("answer", "generator", "derivation", "pseudocode", "model", "raster")
+PIECES = (
+    "answer",
+    "generator",
+    "derivation",
+    "pseudocode",
+    "model",
+    "raster",
+    "errata",
+    "practice",
+    "rows",
+)
 """The named pieces of a record, each ``"module:attribute"`` or ``None`` (with a reason)."""
+
+STEPPED = ("line", "circle", "ellipse")
+"""The commands whose step table is as long as the input makes it: each method of them has a
+row estimate (``rows``) and a measured row cost (``cost``), or the record fails at import."""
 
 _G = "scanconv.algorithms."
 
 
 class Method(NamedTuple):
-    """One method of one command, with every piece the layers need (module docstring)."""
+    """One method of one command, with every piece the layers need (module docstring).
+
+    Built by keyword, ``Method(command=..., name=..., title=..., answer=..., ...)``; every
+    record passes :func:`checked` when :data:`METHODS` is built, so a record that lacks a
+    piece without saying why fails at import.
+    """
 
     command: str
     """The command (``line``, ``circle``, ``antialias``, ...)."""
@@ -58,11 +77,29 @@ class Method(NamedTuple):
     title: str
     """The notes' name for it (what an answer, a practice question and the marking say)."""
     answer: str
+    """The answer builder. A stepped command's takes the command's typed question
+    (:mod:`.asked`): a line's returns the :class:`~scanconv.core.records.Solution`, a
+    circle's the octant's parts (the circle answer adds the 8-way symmetry)."""
     generator: str | None = None
     derivation: str | None = None
+    """``(question) -> tuple[Quantity, ...]``: the ``--derive`` working."""
     pseudocode: str | None = None
+    """``(question) -> Code``: the ``--algorithm`` listing."""
     model: str | None = None
+    """``(question) -> Model``: the follow-through marking model of :mod:`scanconv.marking`
+    (a table model of :mod:`scanconv.marking.table_models` for the other commands)."""
     raster: str | None = None
+    errata: str | None = None
+    """``(question) -> str | None``: the note naming the course notes' mistake for this
+    question (``docs/errata.md``), if they make one."""
+    practice: str | None = None
+    """``(question) -> str``: a practice question's wording (:mod:`scanconv.practice`)."""
+    rows: str | None = None
+    """``(question) -> int``: the step table's rows, estimated from the question alone (the
+    work budget, :mod:`scanconv.render.work`); never much below the rows printed."""
+    cost: float = 0.0
+    """CPU microseconds of one csv row (the base cost); a format's row costs ``cost`` times
+    its :attr:`~scanconv.render.Spec.row_factor` unless :attr:`costs` measures it."""
     costs: tuple[tuple[str, float], ...] = ()
     """CPU microseconds of one table row per output format (``csv``, ``json``, ``plain``,
     ``markdown``, ``latex``, ``html``, ``rich``), measured by ``benchmarks/bench_budget.py``;
@@ -72,6 +109,14 @@ class Method(NamedTuple):
     """``(piece, reason)`` for every piece that is ``None``."""
     short: str = ""
     """The name in a comparison table's heading (``compare``); empty: not compared."""
+    facts: tuple[tuple[str, str], ...] = ()
+    """What ``compare`` says of it: ``tag`` (its name in a reason tag, ``SDDA twice``),
+    ``work`` and ``arithmetic`` (a line method's row of the "Arithmetic per pixel" table,
+    ``{maj}``, ``{mnr}`` and ``{d}`` standing for the axes and the minor difference)."""
+
+    def fact(self, name: str) -> str:
+        """One of :attr:`facts` (``""`` if the record states none)."""
+        return dict(self.facts).get(name, "")
 
     @property
     def key(self) -> str:
@@ -101,88 +146,96 @@ class Method(NamedTuple):
         return lazy.load(ref)
 
 
+def checked(m: Method) -> Method:
+    """``m`` if every piece is there or says why not, each ``"module:attribute"``, and a
+    stepped command's method has its row estimate and its base cost; else ``TypeError`` (at
+    import: a record cannot be half written).
+
+    >>> checked(Method(command="line", name="x", title="x", answer="m:f"))
+    Traceback (most recent call last):
+    ...
+    TypeError: method record line/x: generator is None and missing gives no reason
+    """
+    for piece in PIECES:
+        ref, why = getattr(m, piece), m.reason(piece)
+        if ref is None and not why:
+            raise TypeError(f"method record {m.key}: {piece} is None and missing gives no reason")
+        if ref is not None and (why or ":" not in ref):
+            raise TypeError(
+                f"method record {m.key}: {piece} = {ref!r} (not module:attribute, or excused: {why!r})"
+            )
+    if m.command in STEPPED and (m.rows is None or m.cost <= 0):
+        raise TypeError(f"method record {m.key}: a stepped command needs rows and a cost")
+    return m
+
+
 _NO_DERIVATION = "the notes derive no decision parameter for it"
 _NO_MODEL = "marked on its pixels and values only (no decision parameter to follow through)"
 _NO_RASTER = "no bulk form: the answer is the computation itself"
+_NO_ERRATA = "the notes' worked examples of it print what the algorithm gives"
+_NO_PRACTICE = "no practice topic draws it"
 
+_A = "scanconv.answers.primitives."
+_L = _A + "line:"
+_D = "scanconv.answers.theory.derivations:"
+_MODELS = "scanconv.marking.models:"
+_ERRATA = "scanconv.answers.theory.errata:"
+
+# fmt: off
 _LINE = (
     Method(
-        "line",
-        "basic",
-        "basic line algorithm (y = mx + c)",
-        "scanconv.answers.primitives.line:basic_answer",
-        _G + "lines:basic",
-        "scanconv.answers.theory.derivations:dda_derivation",
-        "scanconv.answers.theory.derivations:basic_code",
-        None,
-        _G + "raster:line",
-        (),
-        (("model", _NO_MODEL),),
-        "basic",
+        command="line", name="basic", title="basic line algorithm (y = mx + c)",
+        answer=_L + "basic_answer", generator=_G + "lines:basic",
+        derivation=_L + "basic_derivation", pseudocode=_L + "basic_pseudocode",
+        raster=_G + "raster:line", errata=_ERRATA + "none", rows=_L + "rows",
+        cost=16.2, short="basic",
+        facts=(("work", "{mnr} = {mnr}1 + m({maj} - {maj}1)"), ("arithmetic", "fractions, rounding")),
+        missing=(("model", _NO_MODEL), ("practice", "the practice topic line draws dda and bresenham")),
     ),
     Method(
-        "line",
-        "dda",
-        "DDA line algorithm",
-        "scanconv.answers.primitives.line:dda_answer",
-        _G + "lines:dda",
-        "scanconv.answers.theory.derivations:dda_derivation",
-        "scanconv.answers.theory.derivations:dda_code",
-        "scanconv.marking.models:DDALine",
-        _G + "raster:line",
-        (),
-        (),
-        "DDA",
+        command="line", name="dda", title="DDA line algorithm",
+        answer=_L + "dda_answer", generator=_G + "lines:dda",
+        derivation=_L + "dda_derivation", pseudocode=_L + "dda_pseudocode",
+        model=_MODELS + "dda_line", raster=_G + "raster:line", errata=_ERRATA + "dda_line",
+        practice=_L + "dda_practice", rows=_L + "rows", cost=20.7, short="DDA",
+        facts=(("work", "x += x_inc, y += y_inc"), ("arithmetic", "fractions, rounding")),
     ),
     Method(
-        "line",
-        "bresenham",
-        "Bresenham's line algorithm",
-        "scanconv.answers.primitives.line:bresenham_answer",
-        _G + "lines:bresenham",
-        "scanconv.answers.theory.derivations:bresenham_line_derivation",
-        "scanconv.answers.theory.derivations:bresenham_line_code",
-        "scanconv.marking.models:BresenhamLine",
-        _G + "raster:line",
-        (),
-        (),
-        "Bresenham",
+        command="line", name="bresenham", title="Bresenham's line algorithm",
+        answer=_L + "bresenham_answer", generator=_G + "lines:bresenham",
+        derivation=_L + "bresenham_derivation", pseudocode=_L + "bresenham_pseudocode",
+        model=_MODELS + "bresenham_line", raster=_G + "raster:line",
+        errata=_ERRATA + "bresenham_line", practice=_L + "bresenham_practice", rows=_L + "rows",
+        cost=9.8, short="Bresenham",
+        facts=(("work", "p += 2{d} or 2{d} - 2d{maj}"), ("arithmetic", "integers only")),
     ),
     Method(
-        "line",
-        "midpoint",
-        "midpoint line algorithm",
-        "scanconv.answers.primitives.midpoint_line:midpoint_answer",
-        _G + "midpoint_line:midpoint_line",
-        "scanconv.answers.primitives.midpoint_line:derivation",
-        None,
-        "scanconv.marking.models:BresenhamLine",
-        None,
-        (),
-        (
+        command="line", name="midpoint", title="midpoint line algorithm",
+        answer=_A + "midpoint_line:midpoint_answer", generator=_G + "midpoint_line:midpoint_line",
+        derivation=_A + "midpoint_line:midpoint_derivation", model=_MODELS + "midpoint_line",
+        errata=_ERRATA + "none", rows=_L + "rows", cost=9.8,
+        missing=(
             ("pseudocode", "Bresenham's loop with d for p (the bresenham method's pseudocode)"),
             ("raster", "raster.line's bresenham gives the same pixels (the default tie)"),
+            ("practice", "the practice topic midpoint-line words it itself"),
         ),
     ),
     Method(
-        "line",
-        "wu",
-        "Xiaolin Wu's anti-aliased line",
-        "scanconv.answers.process.antialias.wu:wu_solution",
-        _G + "wu:wu",
-        None,
-        None,
-        None,
-        "scanconv.raster:line_aa",
-        (),
-        (
-            ("derivation", "the notes give Wu's line without a derivation"),
-            ("pseudocode", "the notes give Wu's line without pseudocode"),
+        command="line", name="wu", title="Xiaolin Wu's anti-aliased line",
+        answer="scanconv.answers.process.antialias.wu:wu_answer", generator=_G + "wu:wu",
+        raster="scanconv.raster:line_aa", errata=_ERRATA + "none", rows=_L + "rows", cost=63.3,
+        missing=(
+            ("derivation", "the notes derive bresenham, dda and basic, not wu"),
+            ("pseudocode", "the notes give pseudocode for bresenham, dda and basic, not wu"),
             ("model", "an intensity table: marked on its pixels only"),
+            ("practice", "the practice topic antialias words it"),
         ),
     ),
 )
+# fmt: on
 
+_C = _A + "circle:"
+_CP = _A + "circle_pieces:"
 _CIRCLE_TITLES = {
     "midpoint": "midpoint circle algorithm (the notes' Bresenham's circle, p0 = 1 - r)",
     "bresenham": "Bresenham's circle algorithm (d0 = 3 - 2r)",
@@ -191,11 +244,6 @@ _CIRCLE_TITLES = {
     "trig": "trigonometric method (x = r cos t, y = r sin t)",
     "symmetric-dda": "symmetric DDA circle",
 }
-_CIRCLE_MODELS = {
-    "midpoint": "MidpointCircle",
-    "bresenham": "BresenhamCircle",
-    "general": "GeneralCircle",
-}
 _CIRCLE_SHORT = {
     "midpoint": "midpoint",
     "bresenham": "Bresenham",
@@ -203,54 +251,77 @@ _CIRCLE_SHORT = {
     "trig": "trig",
     "symmetric-dda": "sym. DDA",
 }
+_CIRCLE_TAGS = {
+    "bresenham": "Bresenham",
+    "polynomial": "poly",
+    "trig": "trig",
+    "symmetric-dda": "SDDA",
+}
+_CIRCLE_COSTS = {
+    "midpoint": 8.7,
+    "bresenham": 7.5,
+    "polynomial": 10.6,
+    "general": 9.1,
+    "trig": 24,
+    "symmetric-dda": 66.9,
+}
+_DERIVED = ("midpoint", "general", "bresenham")
+"""The circle methods the notes derive (the others' ``--derive`` is the equation's two lines)."""
+_MODELLED = ("midpoint", "bresenham", "general")
+_NOTED = ("midpoint", "bresenham", "general", "polynomial", "symmetric-dda")
+"""The circle methods whose notes' examples have an erratum (docs/errata.md)."""
+_PRACTISED = ("midpoint", "bresenham")
 
 
 def _circle(name: str) -> Method:
+    """A circle method's record: every piece named ``<piece>_<method>`` in the circle answer
+    (its own derivation and model only where the notes give one)."""
     gen = name.replace("-", "_")
-    derivation = {
-        "midpoint": "midpoint_circle_derivation",
-        "general": "general_circle_derivation",
-        "bresenham": "bresenham_circle_derivation",
-    }.get(name)
-    model = _CIRCLE_MODELS.get(name)
-    missing = []
-    if derivation is None:
-        missing.append(("derivation", "computed from the circle's equation, nothing to derive"))
-    if model is None:
+    missing: list[tuple[str, str]] = []
+    if name not in _MODELLED:
         missing.append(("model", _NO_MODEL))
+    if name not in _PRACTISED:
+        missing.append(("practice", "the practice topic circle draws midpoint and bresenham"))
+    if name != "midpoint":
+        missing.append(("raster", "raster.circle is the midpoint circle"))
     return Method(
-        "circle",
-        name,
-        _CIRCLE_TITLES[name],
-        "scanconv.answers.primitives.circle:circle_solution",
-        _G + f"circles:{gen}",
-        None if derivation is None else f"scanconv.answers.theory.derivations:{derivation}",
-        "scanconv.answers.theory.derivations:circle_code",
-        None if model is None else f"scanconv.marking.models:{model}",
-        _G + "raster_conic:circle" if name == "midpoint" else None,
-        (),
-        (
-            *missing,
-            *(() if name == "midpoint" else (("raster", "raster.circle is the midpoint circle"),)),
-        ),
-        _CIRCLE_SHORT.get(name, ""),
+        command="circle",
+        name=name,
+        title=_CIRCLE_TITLES[name],
+        answer=_C + f"{gen}_parts",
+        generator=_G + f"circles:{gen}",
+        derivation=_CP + (f"{gen}_derivation" if name in _DERIVED else "equation_derivation"),
+        pseudocode=_CP + f"{gen}_pseudocode",
+        model=_MODELS + f"{gen}_circle" if name in _MODELLED else None,
+        raster=_G + "raster_conic:circle" if name == "midpoint" else None,
+        errata=_ERRATA + (f"{gen}_circle" if name in _NOTED else "none"),
+        practice=_CP + f"{gen}_practice" if name in _PRACTISED else None,
+        rows=_CP + ("symmetric_dda_rows" if name == "symmetric-dda" else "rows"),
+        cost=_CIRCLE_COSTS[name],
+        missing=tuple(missing),
+        short=_CIRCLE_SHORT.get(name, ""),
+        facts=(("tag", _CIRCLE_TAGS[name]),) if name in _CIRCLE_TAGS else (),
     )
 
 
 _CIRCLE = tuple(_circle(n) for n in _CIRCLE_TITLES)
 
+_E = _A + "ellipse:"
 _ELLIPSE = (
     Method(
-        "ellipse",
-        "midpoint",
-        "midpoint ellipse algorithm",
-        "scanconv.answers.primitives.ellipse:ellipse_solution",
-        _G + "ellipses:midpoint_ellipse",
-        "scanconv.answers.theory.derivations:ellipse_derivation",
-        "scanconv.answers.theory.derivations:ellipse_code",
-        "scanconv.marking.models:MidpointEllipse",
-        _G + "raster_conic:ellipse",
-        (),
+        command="ellipse",
+        name="midpoint",
+        title="midpoint ellipse algorithm",
+        answer=_E + "midpoint_answer",
+        generator=_G + "ellipses:midpoint_ellipse",
+        derivation=_E + "midpoint_derivation",
+        pseudocode=_E + "midpoint_pseudocode",
+        model=_MODELS + "midpoint_ellipse",
+        raster=_G + "raster_conic:ellipse",
+        errata=_ERRATA + "none",
+        practice=_E + "midpoint_practice",
+        rows=_E + "rows",
+        cost=14,
     ),
 )
 
@@ -278,18 +349,20 @@ def _plain(
         missing.append(("raster", _NO_RASTER))
     if generator is None:
         missing.append(("generator", no_generator))
+    missing += [
+        ("errata", _NO_ERRATA),
+        ("practice", "its practice topic, if any, words it (scanconv.practice.beyond)"),
+        ("rows", "its command's work estimate or bound (scanconv.render.work)"),
+    ]
     return Method(
-        command,
-        name,
-        title,
-        answer,
-        generator,
-        None,
-        None,
-        None if model is None else "scanconv.marking.table_models:" + model,
-        raster,
-        (),
-        tuple(missing),
+        command=command,
+        name=name,
+        title=title,
+        answer=answer,
+        generator=generator,
+        model=None if model is None else "scanconv.marking.table_models:" + model,
+        raster=raster,
+        missing=tuple(missing),
     )
 
 
@@ -441,7 +514,13 @@ load; the midpoint line takes the larger of its and Bresenham's (the same walk).
 
 
 def _with_costs(m: Method) -> Method:
-    return m._replace(costs=tuple(_COSTS[m.key].items())) if m.key in _COSTS else m
+    """``m`` with its measured row costs; its csv cost is its base cost (stated once)."""
+    costs = _COSTS.get(m.key)
+    if costs is None:
+        return checked(m)
+    if m.cost and m.cost != costs["csv"]:
+        raise TypeError(f"method record {m.key}: cost {m.cost} is not its csv cost")
+    return checked(m._replace(cost=costs["csv"], costs=tuple(costs.items())))
 
 
 METHODS: dict[str, Method] = {

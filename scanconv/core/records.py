@@ -258,7 +258,7 @@ class Solution:
         "data",
         "code",
     )
-    __slots__ = FIELDS
+    __slots__ = (*FIELDS, "question")
 
     primitive: str
     """``"line"``, ``"circle"``, ...: the JSON ``primitive`` field."""
@@ -308,6 +308,10 @@ class Solution:
     """Extra JSON fields (exact values for tools), merged into the top-level object."""
     code: tuple[Code, ...]
     """Pseudocode listings (``--algorithm``), shown after :attr:`tables`."""
+    question: Any
+    """The typed question the answer was built from (a stepped command's
+    :mod:`scanconv.answers.asked` question, set by the command's answer; ``None``: not
+    kept). The marking builds its model from it (not a field: it is no part of the output)."""
 
     def __init__(
         self,
@@ -350,6 +354,7 @@ class Solution:
         self.geometry = {} if geometry is None else geometry
         self.data = {} if data is None else data
         self.code = code
+        self.question = None
 
     def fields(self) -> dict[str, Any]:
         """Every field by name (what a subclass copies to wrap a solution)."""

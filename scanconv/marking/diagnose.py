@@ -13,10 +13,11 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Callable, Sequence
-from fractions import Fraction
-from typing import Any, NamedTuple
+from typing import NamedTuple
 
 from ..algorithms.conventions import KNOBS, PRESETS, ROUNDING_TEXT
+from ..answers.asked import knob_values
+from ..answers.methods import METHODS, STEPPED
 from ..core.numeric import fmt_short
 from ..core.records import Move, Solution
 from .models import (
@@ -24,15 +25,14 @@ from .models import (
     BresenhamLine,
     DDALine,
     GeneralCircle,
-    HalfScaledLine,
     MidpointCircle,
-    MidpointEllipse,
     Model,
     NotesP0Line,
     OldXMidpoint,
     State,
     UnswappedLine,
     chain,
+    integer_ends,
 )
 from .rows import LAYOUTS, Expected, Got, pixel_of, steps_of, wrong_fields
 
@@ -50,62 +50,26 @@ def other_form(model: Model) -> Model | None:
     return None
 
 
-def _given(solution: Solution) -> dict[str, Any]:
-    return {q.key: q.value for q in solution.given}
-
-
-def _ends(solution: Solution) -> tuple[int, int, int, int] | None:
-    """A line's end points as integers (``None``: not integers, or not a line)."""
-    g = _given(solution)
-    if "P1" not in g or "P2" not in g:
-        return None
-    (x1, y1), (x2, y2) = g["P1"], g["P2"]
-    v = [Fraction(x1), Fraction(y1), Fraction(x2), Fraction(y2)]
-    if any(f.denominator != 1 for f in v):
-        return None
-    return v[0].numerator, v[1].numerator, v[2].numerator, v[3].numerator
+def _asked(solution: Solution) -> dict[str, str]:
+    """The conventions the question asked for, by knob name."""
+    return {} if solution.question is None else knob_values(solution.question.knobs)
 
 
 def model_for(solution: Solution, knobs: dict[str, str] | None = None) -> Model | None:
-    """The step model of ``solution``'s algorithm with its conventions (``knobs`` override
-    them), or ``None`` for a command marked without follow-through. Its ``shape`` is the
-    layout the question printed (a hint for equal scores)."""
-    k = dict(solution.data.get("conventions", {}))
-    k.update(knobs or {})
-    g = _given(solution)
-    prim, algo = solution.primitive, solution.algorithm
-    shape = "after" if solution.data.get("layout") == "textbook" else "at"
-    m: Model | None = None
-    if prim == "line" and "P1" in g and "P2" in g:
-        (x1, y1), (x2, y2) = g["P1"], g["P2"]
-        ends = _ends(solution)
-        if algo in ("bresenham", "midpoint") and ends is not None:
-            # the midpoint line's d is Bresenham's p (its record names the same model), or
-            # half of it with --scale half
-            half = algo == "midpoint" and k.get("scale") == "half"
-            line = HalfScaledLine if half else BresenhamLine
-            m = line(*ends, k.get("tie", "step"), k.get("start", "swap"))
-        elif algo == "dda":
-            m = DDALine(x1, y1, x2, y2, k.get("rounding", "half-up"), k.get("start", "given"))
-    elif prim == "circle" and "r" in g:
-        r = int(g["r"])
-        if algo == "midpoint":
-            m = MidpointCircle(r, k.get("tie", "step"), k.get("p0", "1-r"), k.get("loop", "strict"))
-        elif algo == "bresenham":
-            m = BresenhamCircle(r, k.get("tie", "step"), k.get("xstep", "last"))
-        elif algo == "general":
-            m = GeneralCircle(r, k.get("tie", "step"), k.get("loop", "strict"))
-    elif prim == "ellipse" and algo == "midpoint" and "rx" in g:
-        m = MidpointEllipse(
-            int(g["rx"]),
-            int(g["ry"]),
-            k.get("loop", "strict"),
-            k.get("tie", "step"),
-            k.get("p0", "exact"),
-        )
-        return m
-    if m is not None:
-        m.shape = shape
+    """The step model of ``solution``'s question, built by its method record's ``model``
+    with the question's conventions (``knobs`` override them), or ``None`` for a command
+    marked without follow-through (a method whose record names no model, or an answer that
+    kept no question). Its ``shape`` is the layout the question printed (a hint for equal
+    scores)."""
+    q = solution.question
+    record = None if q is None else METHODS.get(q.key)
+    if record is None or record.model is None or record.command not in STEPPED:
+        return None
+    if knobs:
+        q = q._replace(knobs=q.knobs._replace(**knobs))
+    m: Model | None = record.load("model")(q)
+    if m is not None and record.command != "ellipse":  # the ellipse's rows: always after
+        m.shape = "after" if solution.data.get("layout") == "textbook" else "at"
     return m
 
 
@@ -198,7 +162,7 @@ class Variant(NamedTuple):
 
 def _conventions(solution: Solution) -> list[Variant]:
     prim, algo = solution.primitive, solution.algorithm
-    asked = dict(solution.data.get("conventions", {}))
+    asked = _asked(solution)
     names = [n for n, k in KNOBS.items() if k.applies_to(prim, algo) and n != "update"]
     out: list[Variant] = []
     for values in itertools.product(*(KNOBS[n].choices_for(prim, algo) for n in names)):
@@ -229,10 +193,10 @@ def _chain_of(model: Model) -> Callable[[], list[State]]:
 
 
 def _line_mistakes(solution: Solution, model: BresenhamLine) -> list[Variant]:
-    asked = dict(solution.data.get("conventions", {}))
-    ends = _ends(solution)
+    q = solution.question
+    ends = integer_ends(q)
     assert ends is not None
-    tie, start = asked.get("tie", "step"), asked.get("start", "swap")
+    tie, start = str(q.knobs.tie), q.knobs.start or "swap"
     notes = NotesP0Line(*ends, tie, start)
     out: list[Variant] = [
         Variant(
@@ -269,12 +233,11 @@ def _line_mistakes(solution: Solution, model: BresenhamLine) -> list[Variant]:
 
 
 def _circle_mistakes(solution: Solution, model: Model) -> list[Variant]:
-    asked = dict(solution.data.get("conventions", {}))
-    r = int(_given(solution)["r"])
-    tie = asked.get("tie", "step")
+    q = solution.question
+    r, tie = q.r, str(q.knobs.tie)
     out: list[Variant] = []
     if isinstance(model, MidpointCircle) and not isinstance(model, GeneralCircle):
-        old = OldXMidpoint(r, tie, asked.get("p0", "1-r"), asked.get("loop", "strict"))
+        old = OldXMidpoint(r, tie, str(q.knobs.p0), str(q.knobs.loop))
         out.append(
             Variant(
                 MISTAKE,

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from fractions import Fraction
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from ..algorithms.circles import bresenham_increment, midpoint_increment
 from ..algorithms.conventions import rounder
@@ -30,6 +30,9 @@ from ..algorithms.ellipses import increment4, p1_4, p2_4
 from ..algorithms.lines import bresenham_terms, dda_increments, dda_steps
 from ..core.numeric import Number, normalize, round_c_cast
 from ..core.records import Move, Pixel
+
+if TYPE_CHECKING:
+    from ..answers.asked import CircleQuestion, EllipseQuestion, LineQuestion
 
 
 class State(NamedTuple):
@@ -457,3 +460,56 @@ class MidpointEllipse(Model):
             q = s.p + Fraction(increment4(self.rx, self.ry, x, y, 2, move == "SE"), 4)
             return State((x, y), normalize(q) if y > 0 else None, region=2, k=s.k + 1)
         return State((x + 1, 0), None, region=2, k=s.k + 1)  # the tip of a flat ellipse
+
+
+# --- The model pieces the method records name: each takes the question ---------------------
+
+
+def integer_ends(q: LineQuestion) -> tuple[int, int, int, int] | None:
+    """A line's end points as integers (``None``: not all integers)."""
+    v = [Fraction(e) for e in q.ends]
+    if any(f.denominator != 1 for f in v):
+        return None
+    return v[0].numerator, v[1].numerator, v[2].numerator, v[3].numerator
+
+
+def bresenham_line(q: LineQuestion) -> Model | None:
+    """Bresenham's line with the question's tie and start (integer end points only)."""
+    ends = integer_ends(q)
+    return None if ends is None else BresenhamLine(*ends, str(q.knobs.tie), str(q.knobs.start))
+
+
+def midpoint_line(q: LineQuestion) -> Model | None:
+    """The midpoint line: Bresenham's p, or half of it with ``scale = half``."""
+    ends = integer_ends(q)
+    if ends is None:
+        return None
+    line = HalfScaledLine if q.knobs.scale == "half" else BresenhamLine
+    return line(*ends, str(q.knobs.tie), q.knobs.start or "swap")
+
+
+def dda_line(q: LineQuestion) -> Model:
+    """The DDA with the question's rounding and start."""
+    return DDALine(*q.ends, str(q.knobs.rounding), str(q.knobs.start))
+
+
+def midpoint_circle(q: CircleQuestion) -> Model:
+    """The midpoint circle with the question's tie, p0 and loop."""
+    k = q.knobs
+    return MidpointCircle(q.r, str(k.tie), str(k.p0), str(k.loop))
+
+
+def bresenham_circle(q: CircleQuestion) -> Model:
+    """Bresenham's circle (d0 = 3 - 2r) with the question's tie and x step."""
+    return BresenhamCircle(q.r, str(q.knobs.tie), str(q.knobs.xstep))
+
+
+def general_circle(q: CircleQuestion) -> Model:
+    """The notes' general method with the question's tie and loop."""
+    return GeneralCircle(q.r, str(q.knobs.tie), str(q.knobs.loop))
+
+
+def midpoint_ellipse(q: EllipseQuestion) -> Model:
+    """The midpoint ellipse with the question's loop, tie and p0."""
+    k = q.knobs
+    return MidpointEllipse(q.rx, q.ry, str(k.loop), str(k.tie), str(k.p0))

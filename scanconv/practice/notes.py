@@ -28,6 +28,8 @@ from collections.abc import Callable, Iterator
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, NamedTuple
 
+from ..answers.asked import CircleQuestion, EllipseQuestion, LineQuestion
+from ..answers.methods import method
 from ..core import lazy
 from ..core.checks import InputError
 
@@ -156,12 +158,10 @@ def _line(rng: random.Random, difficulty: str, kind: tuple[int, bool]) -> Practi
     y1 = rng.randrange(max(r.low, r.low - dy), min(r.high, r.high - dy) + 1)
     x2, y2 = x1 + dx, y1 + dy
     algo = rng.choice(("dda", "bresenham"))
-    name = "the DDA algorithm" if algo == "dda" else "Bresenham's line algorithm"
     return PracticeQuestion(
         "line",
         ("line", str(x1), str(y1), str(x2), str(y2), "--algo", algo),
-        f"Scan-convert the line from ({x1}, {y1}) to ({x2}, {y2}) with {name}: give the "
-        "step table and the pixels plotted.",
+        method("line", algo).load("practice")(LineQuestion(algo, x1, y1, x2, y2)),
         _MARKS[difficulty],
         line_features(dx, dy, tie) | {algo},
     )
@@ -175,31 +175,20 @@ def _centre(rng: random.Random, difficulty: str) -> tuple[int, int]:
     return xc, yc
 
 
-#: Each circle method as the course notes name it: the notes' Topic 9 "Bresenham's circle" is
-#: p0 = 1 - r (scanconv's midpoint method); Bresenham's own form d0 = 3 - 2r is named by its p0.
-_CIRCLE_NAMES = {
-    "midpoint": "Bresenham's circle algorithm (the notes' form, p0 = 1 - r)",
-    "bresenham": "Bresenham's circle algorithm in the form d0 = 3 - 2r",
-}
-
-
 def _circle(rng: random.Random, difficulty: str, kind: tuple[str, bool]) -> PracticeQuestion:
-    method, away = kind
+    name, away = kind
     r = rng.randrange(_RADIUS[difficulty][0], _RADIUS[difficulty][1] + 1)
-    argv = ["circle", str(r), "--method", method]
-    where = "centred at the origin"
-    features = {method}
+    argv = ["circle", str(r), "--method", name]
+    features = {name}
+    xc = yc = 0
     if away:
         xc, yc = _centre(rng, difficulty)
         argv += ["--center", str(xc), str(yc)]
-        where = f"centred at ({xc}, {yc})"
         features.add("centre away")
-    name = _CIRCLE_NAMES[method]
     return PracticeQuestion(
         "circle",
         tuple(argv),
-        f"Draw the circle of radius {r} {where} with {name}: give one octant's step table "
-        "and the points of the other octants by symmetry.",
+        method("circle", name).load("practice")(CircleQuestion(name, r, xc, yc)),
         _MARKS[difficulty],
         frozenset(features),
     )
@@ -212,18 +201,16 @@ def _ellipse(rng: random.Random, difficulty: str, kind: tuple[bool, bool]) -> Pr
     b = rng.randrange(lo, a)
     rx, ry = (b, a) if tall else (a, b)
     argv = ["ellipse", str(rx), str(ry)]
-    where = "centred at the origin"
     features = {"tall" if tall else "wide"}
+    xc = yc = 0
     if away:
         xc, yc = _centre(rng, difficulty)
         argv += ["--center", str(xc), str(yc)]
-        where = f"centred at ({xc}, {yc})"
         features.add("centre away")
     return PracticeQuestion(
         "ellipse",
         tuple(argv),
-        f"Draw the ellipse with rx = {rx} and ry = {ry} {where} with the midpoint ellipse "
-        "algorithm: give the step tables of regions 1 and 2.",
+        method("ellipse", "midpoint").load("practice")(EllipseQuestion("midpoint", rx, ry, xc, yc)),
         _MARKS[difficulty],
         frozenset(features),
     )

@@ -54,7 +54,7 @@ class Spec(NamedTuple):
     """A file whose extension names it refuses a ``--format`` that says otherwise (every
     command: answers and documents alike)."""
     row_cost: float = 100.0
-    """Microseconds a table row, for a method the measured costs do not list (the budget)."""
+    """Microseconds a table row, for a command with no cost of its own (the budget)."""
     matrix_cells: int | None = None
     """Most cells of a matrix answer it prints; ``None``: as many as csv and json."""
     table_rows: int | None = None
@@ -66,6 +66,12 @@ class Spec(NamedTuple):
     answer in it goes through a single-answer mapping. ``""``: no documents in it."""
     streams: bool = False
     """It streams at a few microseconds a cell: a budget refusal points to it."""
+    row_factor: float = 0.0
+    """A table row's cost in this format over its cost in csv, for a method whose record
+    (:attr:`~scanconv.answers.methods.Method.cost`) does not measure this format: the largest
+    ratio measured for the stepped commands' methods (``benchmarks/bench_budget.py``), so an
+    unmeasured format is never costed below the measured ones. A new format states this one
+    number, not a cost per method. ``0``: not a single-answer format."""
     sheet_rows: int | None = None
     """Most table rows of a whole document it writes; ``None``: the budget's
     :data:`~scanconv.render.budget.SHEET_ROWS`. A GIFT quiz writes each blank as a question
@@ -84,9 +90,15 @@ class Spec(NamedTuple):
 
 
 FORMATS: dict[str, Spec] = {
-    "rich": Spec("terminal:render_rich", (), False, 3000.0, 256 * 256, 10_000),
+    "rich": Spec("terminal:render_rich", (), False, 3000.0, 256 * 256, 10_000, row_factor=400),
     "latex": Spec(
-        "latex:render_latex", (".tex",), True, 100.0, 256 * 256, sheet="sheet_latex:latex_sheet"
+        "latex:render_latex",
+        (".tex",),
+        True,
+        100.0,
+        256 * 256,
+        sheet="sheet_latex:latex_sheet",
+        row_factor=15,
     ),
     "markdown": Spec(
         "text:render_markdown",
@@ -95,15 +107,35 @@ FORMATS: dict[str, Spec] = {
         90.0,
         256 * 256,
         sheet="sheet:markdown_sheet",
+        row_factor=14,
     ),
     "plain": Spec(
-        "text:render_plain", (".txt",), False, 60.0, 1024 * 1024, sheet="sheet:plain_sheet"
+        "text:render_plain",
+        (".txt",),
+        False,
+        60.0,
+        1024 * 1024,
+        sheet="sheet:plain_sheet",
+        row_factor=9,
     ),
-    "csv": Spec("data:render_csv", (".csv",), True, 20.0, streams=True),
+    "csv": Spec("data:render_csv", (".csv",), True, 20.0, streams=True, row_factor=1),
     "json": Spec(
-        "data:render_json", (".json",), True, 60.0, sheet="sheet:json_sheet", streams=True
+        "data:render_json",
+        (".json",),
+        True,
+        60.0,
+        sheet="sheet:json_sheet",
+        streams=True,
+        row_factor=8,
     ),
-    "html": Spec("html:render_html", (".html", ".htm"), True, 150.0, sheet="sheet_html:html_sheet"),
+    "html": Spec(
+        "html:render_html",
+        (".html", ".htm"),
+        True,
+        150.0,
+        sheet="sheet_html:html_sheet",
+        row_factor=16,
+    ),
     "moodle": Spec(extensions=(".xml",), binding=True, sheet="moodle:moodle_sheet"),
     "gift": Spec(extensions=(".gift",), binding=True, sheet="gift:gift_sheet", sheet_rows=10_000),
 }

@@ -34,7 +34,7 @@ from typing import TYPE_CHECKING, Any
 from ..core import lazy
 from ..core.checks import InputError
 from . import FORMATS, Format
-from .work import BYTES, COSTS, Work, estimate
+from .work import BASE_COSTS, BYTES, COSTS, Work, estimate
 
 if TYPE_CHECKING:
     from ..algorithms import image_limits as algorithms_image_limits
@@ -206,7 +206,11 @@ def row_cost(work: Work, fmt: Format) -> float:
     True
     """
     costs = COSTS.get(work.key) or COSTS.get(work.key.split("/")[0]) or {}
-    us = costs.get(fmt.value, DEFAULT_COSTS.get(fmt.value, 100.0))
+    us = costs.get(fmt.value)
+    if us is None:
+        base = BASE_COSTS.get(work.key)
+        factor = FORMATS[fmt.value].row_factor
+        us = base * factor if base and factor else DEFAULT_COSTS.get(fmt.value, 100.0)
     return max(us, MIN_COST) * work.weight
 
 

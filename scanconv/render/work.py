@@ -24,24 +24,22 @@ from collections.abc import Callable, Iterable, Mapping
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from ..answers.methods import METHODS
+from ..answers.methods import METHODS, method
 from ..core import lazy
 from ..core.checks import InputError
 from ..core.numeric import COORD_LIMIT
 
 if TYPE_CHECKING:
-    from ..algorithms import circles as algorithms_circles
     from ..algorithms import coverage as algorithms_coverage
     from ..algorithms import curve_limits as algorithms_curve_limits
-    from ..algorithms import ellipses as algorithms_ellipses
     from ..algorithms import image_limits as algorithms_image_limits
     from ..algorithms import polygon as algorithms_polygon
+    from ..answers import asked
     from ..answers import compare as answers_compare
 else:  # each estimate's own limits, loaded by its first use
-    algorithms_circles = lazy.module("scanconv.algorithms.circles")
+    asked = lazy.module("scanconv.answers.asked")
     algorithms_coverage = lazy.module("scanconv.algorithms.coverage")
     algorithms_curve_limits = lazy.module("scanconv.algorithms.curve_limits")
-    algorithms_ellipses = lazy.module("scanconv.algorithms.ellipses")
     algorithms_image_limits = lazy.module("scanconv.algorithms.image_limits")
     algorithms_polygon = lazy.module("scanconv.algorithms.polygon")
     answers_compare = lazy.module("scanconv.answers.compare")
@@ -116,30 +114,31 @@ def _line_rows(a: Args, names: tuple[str, str, str, str]) -> tuple[int, str]:
     return math.ceil(max(dx, dy)) + 1, names[2] if dx >= dy else names[3]
 
 
+def _rows(command: str, name: str, question: Any) -> int:
+    """The rows of ``command``'s method ``name`` for ``question``: its record's estimate."""
+    return int(method(command, name).load("rows")(question))
+
+
 def _line(a: Args) -> Work:
-    rows, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
-    return Work("rows", rows, None, "line/" + _choice(a, "algo", "bresenham"), param)
+    _, param = _line_rows(a, ("x1", "y1", "x2", "y2"))
+    algo = _choice(a, "algo", "bresenham")
+    x1, y1, x2, y2 = (_num(a, k) for k in ("x1", "y1", "x2", "y2"))
+    q = asked.LineQuestion(algo, x1, y1, x2, y2)
+    return Work("rows", _rows("line", algo, q), None, "line/" + algo, param)
 
 
 def _circle(a: Args) -> Work:
-    # one octant: x runs from 0 to r/sqrt(2)
-    rows = math.ceil(abs(_num(a, "r")) / math.sqrt(2)) + 1
-    method = _choice(a, "method", "midpoint")
-    if method == "symmetric-dda":
-        _within(_num(a, "r"), algorithms_circles.SDDA_MAX_RADIUS)
+    method_name = _choice(a, "method", "midpoint")
+    rows = _rows("circle", method_name, asked.CircleQuestion(method_name, int(_num(a, "r"))))
     # the symmetric DDA's exact values gain about 2 bits a step: a row costs in proportion
     # to the rows before it (r = 16383: 15 s and 1.4 GB as html)
-    weight = max(1.0, rows / 1000) if method == "symmetric-dda" else 1.0
-    return Work("rows", rows, None, "circle/" + method, "r", weight)
+    weight = max(1.0, rows / 1000) if method_name == "symmetric-dda" else 1.0
+    return Work("rows", rows, None, "circle/" + method_name, "r", weight)
 
 
 def _ellipse(a: Args) -> Work:
-    # region 1 ends where the slope is -1, at x = rx^2 / sqrt(rx^2 + ry^2); region 2 has about
-    # ry^2 / sqrt(rx^2 + ry^2) steps (ellipse 20000 20000: 28,285 rows)
-    rx, ry = abs(float(_num(a, "rx"))), abs(float(_num(a, "ry")))
-    _within(max(rx, ry), algorithms_ellipses.MAX_AXIS)
-    h = math.hypot(rx, ry) or 1.0
-    rows = math.ceil((rx * rx + ry * ry) / h) + 2
+    rx, ry = int(abs(_num(a, "rx"))), int(abs(_num(a, "ry")))
+    rows = _rows("ellipse", "midpoint", asked.EllipseQuestion("midpoint", rx, ry))
     return Work("rows", rows, None, "ellipse/midpoint", "rx" if rx >= ry else "ry")
 
 
@@ -369,6 +368,11 @@ of two runs where there were two; a run that failed, such as a curve beyond its 
 the slower formats, takes the costliest text format's value). A polygon's csv is its edge
 table alone (0 us measured: 0.5). The midpoint line, measured in one run, takes the larger of
 its and Bresenham's cost (the same walk)."""
+
+
+BASE_COSTS: dict[str, float] = {m.key: m.cost for m in METHODS.values() if m.cost}
+"""Each method record's base cost (csv microseconds a row): a format its :data:`COSTS` do
+not measure costs this times the format's :attr:`~scanconv.render.Spec.row_factor`."""
 
 
 BYTES: dict[str, dict[str, float]] = {

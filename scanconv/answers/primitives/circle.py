@@ -27,7 +27,6 @@ from ...core.numeric import (
     normalize,
 )
 from ...core.records import (
-    Code,
     Move,
     Pixel,
     Quantity,
@@ -38,8 +37,10 @@ from ...core.records import (
     rule,
     worked,
 )
-from ..theory.errata import circle_errata
-from .circle_float import Parts, pixels_of, polynomial_parts, sdda_parts, trig_parts
+from .. import methods
+from ..asked import CircleKnobs, CircleQuestion, knob_values
+from . import circle_float as float_parts
+from .circle_float import Parts, pixels_of
 
 if TYPE_CHECKING:
     from ..theory import derivations as theory
@@ -121,46 +122,55 @@ def _circle_method(method: str, rounding: str | None, layout: str) -> tuple[str,
     return method, rounding
 
 
-def _circle_numbers(method: str, r: Number, xc: Number, yc: Number) -> tuple[int, int, int]:
-    """The radius and the centre as integers, checked (the symmetric DDA's radius bounded)."""
+def _circle_numbers(r: Number, xc: Number, yc: Number) -> tuple[int, int, int]:
+    """The radius and the centre as integers, checked."""
     ir = check_integer(r, "radius", negative=False, param="r")
     ixc, iyc = check_integer(xc, "xc", param="xc"), check_integer(yc, "yc", param="yc")
-    if method == "symmetric-dda" and ir > SDDA_MAX_RADIUS:
-        raise InputError(
-            f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "
-            f"the radius must be at most {SDDA_MAX_RADIUS} (got {ir})",
-            "r",
-        )
     return ir, ixc, iyc
 
 
-def _parts(method: str, ir: int, knobs: dict[str, str], layout: str) -> Parts:
-    """The method's octant table and working (one branch per method, none to fall into)."""
-    if method == "midpoint":
-        return _midpoint_parts(ir, knobs, layout)
-    if method == "general":
-        return _general_parts(ir, knobs)
-    if method == "bresenham":
-        return _bresenham_parts(ir, knobs["tie"], knobs["xstep"])
-    float_parts = {"polynomial": polynomial_parts, "trig": trig_parts, "symmetric-dda": sdda_parts}
-    return float_parts[method](ir, knobs.get("rounding", "half-up"))
+def sdda_radius(r: int) -> int:
+    """The symmetric DDA's radius, bounded (its exact fractions grow by 2n bits a step)."""
+    if r > SDDA_MAX_RADIUS:
+        raise InputError(
+            f"symmetric-dda computes exact fractions that grow by about 2n bits per step; "
+            f"the radius must be at most {SDDA_MAX_RADIUS} (got {r})",
+            "r",
+        )
+    return r
 
 
-def _theory(
-    method: str,
-    ir: int,
-    knobs: dict[str, str],
-    derived: tuple[Quantity, ...],
-    derive: bool,
-    pseudocode: bool,
-) -> tuple[tuple[Quantity, ...], tuple[Code, ...]]:
-    """The working with ``--derive``'s derivation added, and ``--algorithm``'s listing."""
-    if not (derive or pseudocode):
-        return derived, ()
-    if derive:
-        derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
-    code = theory.circle_code(method, knobs) if pseudocode else None
-    return derived, (code,) if code is not None else ()
+# --- The pieces the circle records name: each takes the question ---------------------------
+
+
+def midpoint_parts(q: CircleQuestion) -> Parts:
+    """The midpoint circle's octant table and working."""
+    return _midpoint_parts(q.r, knob_values(q.knobs), q.layout)
+
+
+def general_parts(q: CircleQuestion) -> Parts:
+    """The notes' general method's octant table and working."""
+    return _general_parts(q.r, knob_values(q.knobs))
+
+
+def bresenham_parts(q: CircleQuestion) -> Parts:
+    """Bresenham's circle (d0 = 3 - 2r): its octant table and working."""
+    return _bresenham_parts(q.r, str(q.knobs.tie), str(q.knobs.xstep))
+
+
+def polynomial_parts(q: CircleQuestion) -> Parts:
+    """The polynomial method's octant table and working."""
+    return float_parts.polynomial_parts(q.r, str(q.knobs.rounding))
+
+
+def trig_parts(q: CircleQuestion) -> Parts:
+    """The trigonometric method's octant table and working."""
+    return float_parts.trig_parts(q.r, str(q.knobs.rounding))
+
+
+def symmetric_dda_parts(q: CircleQuestion) -> Parts:
+    """The symmetric DDA's octant table and working (its radius bounded)."""
+    return float_parts.sdda_parts(sdda_radius(q.r), str(q.knobs.rounding))
 
 
 def circle_solution(
@@ -220,8 +230,12 @@ def circle_solution(
         },
     )
     rounding = knobs.get("rounding", "half-up")
-    ir, ixc, iyc = _circle_numbers(method, r, xc, yc)
-    title, derived, columns, extra_keys, steps, points, notes = _parts(method, ir, knobs, layout)
+    ir, ixc, iyc = _circle_numbers(r, xc, yc)
+    q = CircleQuestion(method, ir, ixc, iyc, CircleKnobs(**knobs), layout, convention)
+    rec = methods.method("circle", method)
+    derivation = rec.load("derivation") if derive else None
+    listing = rec.load("pseudocode") if pseudocode else None
+    title, derived, columns, extra_keys, steps, points, notes = rec.load("answer")(q)
     if method in FLOAT_METHODS:
         notes = (*notes, _rounding_note(rounding))
     notes = (
@@ -229,16 +243,18 @@ def circle_solution(
         "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
         "once, the first time it is plotted.",
     )
-    derived, code = _theory(method, ir, knobs, derived, derive, pseudocode)
+    if derivation is not None:
+        derived = (*derived, theory.DERIVATION, *derivation(q))
+    code = (listing(q),) if listing is not None else ()
     data: dict[str, Any] = {"rounding": rounding} if method in FLOAT_METHODS else {}
     if annotate:
         notes = (*notes, convention_note("circle", convention, knobs))
-        erratum = circle_errata(method, ir)
+        erratum = rec.load("errata")(q)
         if erratum:
             notes = (*notes, erratum)
         data = {**data, "conventions": knobs, "layout": layout}
     pixels = _once_each if knobs.get("loop") == "inclusive" else _as_is
-    return Solution(
+    sol = Solution(
         primitive="circle",
         algorithm=method,
         title=f"{title}: r = {ir}, centre ({ixc}, {iyc})",
@@ -256,6 +272,8 @@ def circle_solution(
         data=data,
         code=code,
     )
+    sol.question = q
+    return sol
 
 
 def _as_is(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
@@ -270,21 +288,6 @@ def _once_each(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
         if p not in seen:
             seen.add(p)
             yield p
-
-
-def _derivation(method: str, r: int, knobs: dict[str, str]) -> tuple[Quantity, ...]:
-    if method == "midpoint":
-        return theory.midpoint_circle_derivation(r, knobs["p0"])
-    if method == "general":
-        return theory.general_circle_derivation(r)
-    if method == "bresenham":
-        return theory.bresenham_circle_derivation(r)
-    return (
-        rule("d_f", r"x^2 + y^2 = r^2 \rightarrow y = \sqrt{r^2 - x^2}"),
-        rule(
-            "d_octant", r"\text{one octant from } (0, r) \text{ to } x = y, \text{ mirrored 8 ways}"
-        ),
-    )
 
 
 def _rounding_note(rounding: str) -> str:

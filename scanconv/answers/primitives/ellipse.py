@@ -3,6 +3,7 @@ pixels."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterator
 from fractions import Fraction
 from itertools import dropwhile, takewhile
@@ -32,6 +33,8 @@ from ...core.records import (
     step_getter,
     worked,
 )
+from .. import methods
+from ..asked import EllipseKnobs, EllipseQuestion, knob_values
 from .circle import symmetry_table
 
 if TYPE_CHECKING:
@@ -228,13 +231,66 @@ def ellipse_solution(
     """
 
     knobs = resolve("ellipse", "midpoint", convention, {"loop": loop, "tie": tie, "p0": p0})
-    e = _checked(rx, ry, xc, yc, knobs)
+    irx = check_integer(rx, "rx", negative=False, param="rx")
+    iry = check_integer(ry, "ry", negative=False, param="ry")
+    ixc, iyc = check_integer(xc, "xc", param="xc"), check_integer(yc, "yc", param="yc")
+    q = EllipseQuestion("midpoint", irx, iry, ixc, iyc, EllipseKnobs(**knobs), convention)
+    rec = methods.method("ellipse", "midpoint")
+    derivation = rec.load("derivation") if derive else None
+    listing = rec.load("pseudocode") if pseudocode else None
+    sol: Solution = rec.load("answer")(q)
+    if annotate:
+        sol.notes = (*sol.notes, convention_note("ellipse", convention, knobs))
+        sol.data = {"conventions": knobs}
+    if derivation is not None:
+        sol.derived = (*sol.derived, theory.DERIVATION, *derivation(q))
+    if listing is not None:
+        sol.code = (listing(q),)
+    sol.question = q
+    return sol
+
+
+# --- The pieces the ellipse record names: each takes the question --------------------------
+
+
+def rows(q: EllipseQuestion) -> int:
+    """Both regions' rows: region 1 ends where the slope is -1, at x = rx^2 / sqrt(rx^2 +
+    ry^2); region 2 has about ry^2 / sqrt(rx^2 + ry^2) steps (20000 x 20000: 28,287 rows).
+
+    >>> rows(EllipseQuestion("midpoint", 8, 6))
+    12
+    """
+    rx, ry = float(abs(q.rx)), float(abs(q.ry))
+    if max(rx, ry) > MAX_AXIS:
+        raise InputError(f"semi-axes of the midpoint ellipse must be at most {MAX_AXIS:.0e}")
+    h = math.hypot(rx, ry) or 1.0
+    return math.ceil((rx * rx + ry * ry) / h) + 2
+
+
+def midpoint_derivation(q: EllipseQuestion) -> tuple[Quantity, ...]:
+    """``--derive``: each region's p from the ellipse's equation at the midpoint."""
+    return theory.ellipse_derivation(q.rx, q.ry)
+
+
+def midpoint_pseudocode(q: EllipseQuestion) -> Code:
+    """``--algorithm``: both regions' loops, with the question's conventions."""
+    return theory.ellipse_code(str(q.knobs.loop), str(q.knobs.tie))
+
+
+def midpoint_practice(q: EllipseQuestion) -> str:
+    """A practice question's wording."""
+    where = "centred at the origin" if (q.xc, q.yc) == (0, 0) else f"centred at ({q.xc}, {q.yc})"
+    return (
+        f"Draw the ellipse with rx = {q.rx} and ry = {q.ry} {where} with the midpoint ellipse "
+        "algorithm: give the step tables of regions 1 and 2."
+    )
+
+
+def midpoint_answer(q: EllipseQuestion) -> Solution:
+    """The midpoint ellipse (record ``ellipse/midpoint``) with its conventions."""
+    e = _checked(q.rx, q.ry, q.xc, q.yc, knob_values(q.knobs))
     derived = _derived(e)
     notes = _notes(e)
-    if annotate:
-        notes.append(convention_note("ellipse", convention, knobs))
-    if derive:
-        derived = (*derived, theory.DERIVATION, *theory.ellipse_derivation(e.rx, e.ry))
 
     def steps() -> Iterator[Step]:
         return midpoint_ellipse(e.rx, e.ry, e.loop, e.tie, e.p0)
@@ -245,7 +301,6 @@ def ellipse_solution(
             yield st.pixel
 
     tables = _tables(e, steps, points)
-    code: tuple[Code, ...] = (theory.ellipse_code(e.loop, e.tie),) if pseudocode else ()
     return Solution(
         primitive="ellipse",
         algorithm="midpoint",
@@ -262,6 +317,4 @@ def ellipse_solution(
         show_steps=False,
         marks=((e.xc, e.yc),),
         geometry={"ellipse": (e.xc, e.yc, e.rx, e.ry), "symmetry": 4, "center": (e.xc, e.yc)},
-        data={"conventions": knobs} if annotate else {},
-        code=code,
     )

@@ -1,10 +1,11 @@
 """The worked answer of a line: given and derived values around a line algorithm's steps."""
 
+import math
 from collections.abc import Iterator
 from fractions import Fraction
 from typing import TYPE_CHECKING, NamedTuple
 
-from ...algorithms.conventions import ROUNDING_TEXT, convention_note, resolve
+from ...algorithms.conventions import ROUNDING_TEXT, convention_note
 from ...algorithms.lines import (
     ALGORITHMS,
     abs_value,
@@ -30,15 +31,13 @@ from ...core.numeric import (
     round_half_up,
 )
 from ...core.records import Code, Pixel, Quantity, Solution, Step, heading, rule, worked
+from ..asked import LineQuestion, knob_values, line_question
 from ..methods import method
-from ..theory.errata import line_errata
 
 if TYPE_CHECKING:
-    from ..process.antialias import wu as antialias_wu
     from ..theory import derivations as theory
-else:  # theory: only --derive and --algorithm; Wu: only --algo wu
+else:  # theory: only --derive and --algorithm
     theory = lazy.module("scanconv.answers.theory.derivations")
-    antialias_wu = lazy.module("scanconv.answers.process.antialias.wu")
 
 # --- Solutions: the exam answer around the steps -------------------------------------------
 
@@ -171,89 +170,118 @@ def line_solution(
         )
     if layout not in ("notes", "textbook"):
         raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
-    knobs = resolve(
-        "line",
-        algo,
-        convention,
-        {"rounding": rounding, "tie": tie, "start": start, "scale": scale, "ends": ends},
-    )
-    if algo == "wu":  # anti-aliased: two pixels per step with their intensities, its ends knob
-        if derive or pseudocode:
-            raise InputError(
-                "the derivation and the pseudocode cover bresenham, dda and basic, not wu",
-                "derive" if derive else "pseudocode",
-            )
-        return antialias_wu.wu_solution(x1, y1, x2, y2, ends=knobs["ends"])
-    sol: Solution = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)
-    if annotate:
-        points = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
-        extra = [convention_note("line", convention, knobs)]
-        erratum = line_errata(algo, points)
-        if erratum:
-            extra.append(erratum)
-        sol.notes = (*sol.notes, *extra)
-        sol.data = {**sol.data, "conventions": knobs, "layout": layout}
-    if derive or pseudocode:
-        _theory(sol, algo, x1, y1, x2, y2, knobs, derive, pseudocode)
+    knobs = {"rounding": rounding, "tie": tie, "start": start, "scale": scale, "ends": ends}
+    q = line_question(
+        algo, x1, y1, x2, y2, given=knobs, convention=convention, layout=layout
+    )._replace(annotate=annotate)
+    rec = method("line", algo)
+    # each piece asked for is loaded first: a method without it is refused before any work
+    derivation = rec.load("derivation") if derive else None
+    listing = rec.load("pseudocode") if pseudocode else None
+    sol: Solution = rec.load("answer")(q)
+    if derivation is not None:
+        sol.derived = (*sol.derived, *derivation(q))
+    if listing is not None:
+        sol.code = (*sol.code, listing(q))
+    sol.question = q
     return sol
 
 
-def _theory(
-    sol: Solution,
-    algo: str,
-    x1: Number,
-    y1: Number,
-    x2: Number,
-    y2: Number,
-    knobs: dict[str, str],
-    derive: bool,
-    code: bool,
-) -> None:
-    """Add the derivation (derived items) and the pseudocode (a listing) to ``sol``."""
-    dx, dy = normalize(x2 - x1), normalize(y2 - y1)
-    steep = abs_value(dy) > abs_value(dx)
+def annotated(sol: Solution, q: LineQuestion) -> Solution:
+    """``sol`` with the notes naming the conventions and the course notes' erratum for this
+    line (its record's ``errata``), when the question asks for them (``q.annotate``)."""
+    if not q.annotate:
+        return sol
+    knobs = knob_values(q.knobs)
+    extra = [convention_note("line", q.convention, knobs)]
+    erratum = method("line", q.algo).load("errata")(q)
+    if erratum:
+        extra.append(erratum)
+    sol.notes = (*sol.notes, *extra)
+    sol.data = {**sol.data, "conventions": knobs, "layout": q.layout}
+    return sol
+
+
+def _orientation(q: LineQuestion) -> tuple[Number, Number, bool, int]:
+    """Δx, Δy, whether y is the major axis, and the sign of the slope."""
+    dx, dy = normalize(q.x2 - q.x1), normalize(q.y2 - q.y1)
     sign = -1 if (dx > 0 > dy or dy > 0 > dx) else 1
-    listings: list[Code] = []
-    if algo == "bresenham":
-        sx, sy, _, _, steep, dmaj, dmin, sign, _, _ = orient(int(x1), int(y1), int(x2), int(y2))
-        if derive:
-            u0, v0 = (sy, sign * sx) if steep else (sx, sign * sy)
-            sol.derived = (
-                *sol.derived,
-                theory.DERIVATION,
-                *theory.bresenham_line_derivation(u0, v0, dmaj, dmin, steep, sign),
-            )
-        if code:
-            swapped = (sx, sy) != (int(x1), int(y1))
-            backward = swapped and knobs.get("start") == "given"
-            listings.append(
-                theory.bresenham_line_code(steep, sign, swapped, knobs["tie"], backward)
-            )
-    elif algo == "dda":
-        if derive:
-            sol.derived = (
-                *sol.derived,
-                theory.DERIVATION,
-                *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2)),
-            )
-        if code:
-            swapped = knobs.get("start") == "swap" and (dy if steep else dx) < 0
-            listings.append(theory.dda_code(steep, sign, knobs["rounding"], swapped))
-    elif algo == "basic":
-        if derive:
-            sol.derived = (
-                *sol.derived,
-                theory.DERIVATION,
-                *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2))[:1],
-            )
-        if code:
-            listings.append(theory.basic_code(steep, knobs["rounding"]))
-    elif algo == "midpoint":  # its answer always derives d; it has no pseudocode of its own
-        if code:
-            method("line", algo).load("pseudocode")
-    else:  # a method whose record names no derivation (wu) is refused before this
-        method("line", algo).load("derivation" if derive else "pseudocode")
-    sol.code = (*sol.code, *listings)
+    return dx, dy, abs_value(dy) > abs_value(dx), sign
+
+
+# --- The pieces the line records name: each takes the question -----------------------------
+
+
+def rows(q: LineQuestion) -> int:
+    """The rows of a line's step table: one a unit step of the major axis, and the start.
+
+    >>> rows(LineQuestion("dda", 0, 0, 10, 3))
+    11
+    """
+    dx, dy = abs(Fraction(q.x2 - q.x1)), abs(Fraction(q.y2 - q.y1))
+    return math.ceil(max(dx, dy)) + 1
+
+
+def bresenham_derivation(q: LineQuestion) -> tuple[Quantity, ...]:
+    """``--derive`` for Bresenham's line: p and its increments from the line's equation."""
+    sx, sy, _, _, steep, dmaj, dmin, sign, _, _ = orient(*(int(v) for v in q.ends))
+    u0, v0 = (sy, sign * sx) if steep else (sx, sign * sy)
+    return (
+        theory.DERIVATION,
+        *theory.bresenham_line_derivation(u0, v0, dmaj, dmin, steep, sign),
+    )
+
+
+def bresenham_pseudocode(q: LineQuestion) -> Code:
+    """``--algorithm`` for Bresenham's line, in the question's octant and conventions."""
+    ix1, iy1, ix2, iy2 = (int(v) for v in q.ends)
+    sx, sy, _, _, steep, _, _, sign, _, _ = orient(ix1, iy1, ix2, iy2)
+    swapped = (sx, sy) != (ix1, iy1)
+    backward = swapped and q.knobs.start == "given"
+    return theory.bresenham_line_code(steep, sign, swapped, str(q.knobs.tie), backward)
+
+
+def dda_derivation(q: LineQuestion) -> tuple[Quantity, ...]:
+    """``--derive`` for the DDA: the increments from the slope."""
+    dx, dy, _, _ = _orientation(q)
+    return (theory.DERIVATION, *theory.dda_derivation(dx, dy, dda_steps(*q.points)))
+
+
+def dda_pseudocode(q: LineQuestion) -> Code:
+    """``--algorithm`` for the DDA."""
+    dx, dy, steep, sign = _orientation(q)
+    swapped = q.knobs.start == "swap" and (dy if steep else dx) < 0
+    return theory.dda_code(steep, sign, str(q.knobs.rounding), swapped)
+
+
+def basic_derivation(q: LineQuestion) -> tuple[Quantity, ...]:
+    """``--derive`` for the basic method: the slope (the DDA's first line)."""
+    dx, dy, _, _ = _orientation(q)
+    return (theory.DERIVATION, *theory.dda_derivation(dx, dy, dda_steps(*q.points))[:1])
+
+
+def basic_pseudocode(q: LineQuestion) -> Code:
+    """``--algorithm`` for the basic method."""
+    _, _, steep, _ = _orientation(q)
+    return theory.basic_code(steep, str(q.knobs.rounding))
+
+
+def _practice(name: str, q: LineQuestion) -> str:
+    return (
+        f"Scan-convert the line from ({fmt_short(q.x1)}, {fmt_short(q.y1)}) to "
+        f"({fmt_short(q.x2)}, {fmt_short(q.y2)}) with {name}: give the step table and the "
+        "pixels plotted."
+    )
+
+
+def dda_practice(q: LineQuestion) -> str:
+    """A practice question's wording for the DDA."""
+    return _practice("the DDA algorithm", q)
+
+
+def bresenham_practice(q: LineQuestion) -> str:
+    """A practice question's wording for Bresenham's line."""
+    return _practice("Bresenham's line algorithm", q)
 
 
 def _swap_rule(maj: str, x1: Number, y1: Number, x2: Number, y2: Number) -> Quantity:
@@ -549,22 +577,18 @@ def _basic_solution(
 # --- The answer builders the method records name (one signature for every line method) -----
 
 
-def bresenham_answer(
-    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
-) -> Solution:
-    """Bresenham's line (record ``line/bresenham``) with its conventions ``knobs``."""
-    return _bresenham_solution(x1, y1, x2, y2, knobs["tie"], layout, knobs["start"])
+def bresenham_answer(q: LineQuestion) -> Solution:
+    """Bresenham's line (record ``line/bresenham``) with its conventions."""
+    return annotated(
+        _bresenham_solution(*q.points, str(q.knobs.tie), q.layout, str(q.knobs.start)), q
+    )
 
 
-def dda_answer(
-    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
-) -> Solution:
+def dda_answer(q: LineQuestion) -> Solution:
     """The DDA (record ``line/dda``); it has one layout."""
-    return _dda_solution(x1, y1, x2, y2, knobs["rounding"], knobs["start"])
+    return annotated(_dda_solution(*q.points, str(q.knobs.rounding), str(q.knobs.start)), q)
 
 
-def basic_answer(
-    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
-) -> Solution:
+def basic_answer(q: LineQuestion) -> Solution:
     """The basic line algorithm (record ``line/basic``); it has one layout."""
-    return _basic_solution(x1, y1, x2, y2, knobs["rounding"])
+    return annotated(_basic_solution(*q.points, str(q.knobs.rounding)), q)

@@ -12,10 +12,11 @@ from typing import TYPE_CHECKING
 from ...algorithms.lines import bresenham_terms, orient
 from ...algorithms.midpoint_line import halve
 from ...core import lazy
-from ...core.numeric import Number, fmt_short
+from ...core.numeric import fmt_short
 from ...core.records import Column, Quantity, Solution, Step, rule, worked
 
 if TYPE_CHECKING:
+    from ..asked import LineQuestion
     from . import line
 else:
     line = lazy.module("scanconv.answers.primitives.line")
@@ -86,18 +87,25 @@ def _plus(v: Fraction) -> str:
     return f"+ {fmt_short(v)}" if v >= 0 else f"- {fmt_short(-v)}"
 
 
-def midpoint_answer(
-    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
-) -> Solution:
-    """The midpoint line (record ``line/midpoint``) with its conventions ``knobs``.
+def midpoint_derivation(q: LineQuestion) -> tuple[Quantity, ...]:
+    """``--derive`` adds nothing: the midpoint line's answer always derives d (with
+    :func:`derivation`)."""
+    return ()
 
-    >>> sol = midpoint_answer(2, 2, 10, 6, {"tie": "step", "scale": "integer"}, "textbook")
+
+def midpoint_answer(q: LineQuestion) -> Solution:
+    """The midpoint line (record ``line/midpoint``) with its conventions.
+
+    >>> from scanconv.answers.asked import line_question
+    >>> sol = midpoint_answer(line_question("midpoint", 2, 2, 10, 6))
     >>> [s.p for s in sol.steps()]
     [0, -8, 0, -8, 0, -8, 0, -8]
     >>> print(sol.derived[7].text)
     d₀ = 2F(x₁ + 1, y₁ + 1/2) = 2Δy - Δx = 2·4 - 8 = 0
     """
-    tie, scale = knobs["tie"], knobs["scale"]
+    x1, y1, x2, y2 = q.points
+    tie, scale, layout = str(q.knobs.tie), str(q.knobs.scale), q.layout
+    knobs = {"tie": tie, "scale": scale}
     base = line.line_solution("bresenham", x1, y1, x2, y2, tie=tie, layout=layout)
     ix1, iy1, ix2, iy2 = int(x1), int(y1), int(x2), int(y2)
     o = orient(ix1, iy1, ix2, iy2)
@@ -133,4 +141,4 @@ def midpoint_answer(
         notes=notes,
         data={**base.data, "conventions": dict(knobs), "layout": layout},
     )
-    return Solution(**fields)
+    return line.annotated(Solution(**fields), q)

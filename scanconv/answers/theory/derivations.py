@@ -14,8 +14,6 @@ from fractions import Fraction
 from ...core.numeric import Number, fmt_paren, fmt_short, normalize
 from ...core.records import Code, Quantity, Table, heading, rule, worked
 from .errata import ERRATA as ERRATA
-from .errata import circle_errata as circle_errata
-from .errata import line_errata as line_errata
 
 DERIVATION = rule("derivation", r"\text{Derivation, with this input's numbers:}")
 """The line that opens a derivation in the working."""
@@ -103,76 +101,95 @@ def basic_code(steep: bool, rounding: str) -> Code:
     return pseudocode("Algorithm: the basic (direct) method", lines)
 
 
-def circle_code(method: str, knobs: dict[str, str]) -> Code | None:
-    """The circle method with the knob values used."""
-    tie = knobs.get("tie", "step")
-    cmp = "<=" if tie == "keep" else "<"
-    loop = "x <= y" if knobs.get("loop") == "inclusive" else "x < y"
-    if method == "midpoint":
-        old = knobs.get("update") == "old"
-        p0 = "5/4 - r" if knobs.get("p0") == "5/4-r" else "1 - r"
-        lines = [
-            f"x = 0;  y = r;  p = {p0}",
-            "plot the 8 symmetric points of (x, y)",
-            f"while {loop}:",
-            f"    if p {cmp} 0:",
-            "        p = p + 2*x + 3;  x = x + 1" if old else "        x = x + 1;  p = p + 2*x + 1",
-            "    else:",
-            "        p = p + 2*(x - y) + 5;  x = x + 1;  y = y - 1"
-            if old
-            else "        x = x + 1;  y = y - 1;  p = p + 2*x - 2*y + 1",
-            "    plot the 8 symmetric points of (x, y)",
-            "end while",
-        ]
-        return pseudocode("Algorithm: midpoint circle", lines)
-    if method == "general":
-        lines = [
-            "x = 0;  y = r;  p = 0",
-            "plot the 8 symmetric points of (x, y)",
-            f"while {loop}:",
-            f"    if p {cmp} 0:  x = x + 1;  p = p + 2*x + 1",
-            "    else:  x = x + 1;  y = y - 1;  p = p + 2*x - 2*y + 1",
-            "    plot the 8 symmetric points of (x, y)",
-            "end while",
-        ]
-        return pseudocode("Algorithm: the notes' general method", lines)
-    if method == "bresenham":
-        lines = [
-            "x = 0;  y = r;  d = 3 - 2*r",
-            "while x <= y:",
-            "    plot the 8 symmetric points of (x, y)",
-            f"    if d {cmp} 0:  d = d + 4*x + 6",
-            "    else:  d = d + 4*(x - y) + 10;  y = y - 1",
-            "    x = x + 1",
-            "end while",
-        ]
-        return pseudocode("Algorithm: Bresenham's circle (d0 = 3 - 2r)", lines)
-    if method == "polynomial":
-        lines = [
-            "for x = 0, 1, 2, ...:",
-            "    y = sqrt(r*r - x*x)",
-            f"    if x > round(y): stop   (rounding: {knobs.get('rounding', 'half-up')})",
-            "    plot the 8 symmetric points of (x, round(y))",
-        ]
-        return pseudocode("Algorithm: the polynomial (square-root) method", lines)
-    if method == "trig":
-        lines = [
-            "dtheta = 1 / r",
-            "for theta = 90 deg, 90 deg - dtheta, ... towards 45 deg:",
-            "    x = r*cos(theta);  y = r*sin(theta)",
-            "    plot the 8 symmetric points of (round(x), round(y))",
-        ]
-        return pseudocode("Algorithm: the parametric (trigonometric) method", lines)
-    if method == "symmetric-dda":
-        lines = [
-            "n such that 2^(n-1) <= r < 2^n;  e = 2^(-n)",
-            "x = 0;  y = r",
-            "while round(x) <= round(y):",
-            "    plot the 8 symmetric points of (round(x), round(y))",
-            "    x = x + e*y;  y = y - e*x   (the new x)",
-        ]
-        return pseudocode("Algorithm: the symmetric DDA", lines)
-    return None
+def _circle_loop(knobs: dict[str, str]) -> tuple[str, str]:
+    """The comparison a tie makes and the loop's condition, as the knobs say."""
+    cmp = "<=" if knobs.get("tie", "step") == "keep" else "<"
+    return cmp, "x <= y" if knobs.get("loop") == "inclusive" else "x < y"
+
+
+def midpoint_circle_code(knobs: dict[str, str]) -> Code:
+    """The midpoint circle with the knob values used."""
+    cmp, loop = _circle_loop(knobs)
+    old = knobs.get("update") == "old"
+    p0 = "5/4 - r" if knobs.get("p0") == "5/4-r" else "1 - r"
+    lines = [
+        f"x = 0;  y = r;  p = {p0}",
+        "plot the 8 symmetric points of (x, y)",
+        f"while {loop}:",
+        f"    if p {cmp} 0:",
+        "        p = p + 2*x + 3;  x = x + 1" if old else "        x = x + 1;  p = p + 2*x + 1",
+        "    else:",
+        "        p = p + 2*(x - y) + 5;  x = x + 1;  y = y - 1"
+        if old
+        else "        x = x + 1;  y = y - 1;  p = p + 2*x - 2*y + 1",
+        "    plot the 8 symmetric points of (x, y)",
+        "end while",
+    ]
+    return pseudocode("Algorithm: midpoint circle", lines)
+
+
+def general_circle_code(knobs: dict[str, str]) -> Code:
+    """The notes' general method with the knob values used."""
+    cmp, loop = _circle_loop(knobs)
+    lines = [
+        "x = 0;  y = r;  p = 0",
+        "plot the 8 symmetric points of (x, y)",
+        f"while {loop}:",
+        f"    if p {cmp} 0:  x = x + 1;  p = p + 2*x + 1",
+        "    else:  x = x + 1;  y = y - 1;  p = p + 2*x - 2*y + 1",
+        "    plot the 8 symmetric points of (x, y)",
+        "end while",
+    ]
+    return pseudocode("Algorithm: the notes' general method", lines)
+
+
+def bresenham_circle_code(knobs: dict[str, str]) -> Code:
+    """Bresenham's circle (d0 = 3 - 2r) with the knob values used."""
+    cmp, _ = _circle_loop(knobs)
+    lines = [
+        "x = 0;  y = r;  d = 3 - 2*r",
+        "while x <= y:",
+        "    plot the 8 symmetric points of (x, y)",
+        f"    if d {cmp} 0:  d = d + 4*x + 6",
+        "    else:  d = d + 4*(x - y) + 10;  y = y - 1",
+        "    x = x + 1",
+        "end while",
+    ]
+    return pseudocode("Algorithm: Bresenham's circle (d0 = 3 - 2r)", lines)
+
+
+def polynomial_circle_code(knobs: dict[str, str]) -> Code:
+    """The polynomial (square-root) method with its rounding."""
+    lines = [
+        "for x = 0, 1, 2, ...:",
+        "    y = sqrt(r*r - x*x)",
+        f"    if x > round(y): stop   (rounding: {knobs.get('rounding', 'half-up')})",
+        "    plot the 8 symmetric points of (x, round(y))",
+    ]
+    return pseudocode("Algorithm: the polynomial (square-root) method", lines)
+
+
+def trig_circle_code(knobs: dict[str, str]) -> Code:
+    """The parametric (trigonometric) method."""
+    lines = [
+        "dtheta = 1 / r",
+        "for theta = 90 deg, 90 deg - dtheta, ... towards 45 deg:",
+        "    x = r*cos(theta);  y = r*sin(theta)",
+        "    plot the 8 symmetric points of (round(x), round(y))",
+    ]
+    return pseudocode("Algorithm: the parametric (trigonometric) method", lines)
+
+
+def symmetric_dda_circle_code(knobs: dict[str, str]) -> Code:
+    """The symmetric DDA circle."""
+    lines = [
+        "n such that 2^(n-1) <= r < 2^n;  e = 2^(-n)",
+        "x = 0;  y = r",
+        "while round(x) <= round(y):",
+        "    plot the 8 symmetric points of (round(x), round(y))",
+        "    x = x + e*y;  y = y - e*x   (the new x)",
+    ]
+    return pseudocode("Algorithm: the symmetric DDA", lines)
 
 
 def ellipse_code(loop: str, tie: str = "step") -> Code:

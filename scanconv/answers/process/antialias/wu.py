@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Iterator
 from fractions import Fraction
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from ....algorithms import coverage as cov
 from ....algorithms.image_limits import check_levels
@@ -28,6 +28,9 @@ from ._shared import SHADING
 from ._shared import level_rule as _level_rule
 from ._shared import paren_short as _p
 from ._shared import picture as _picture
+
+if TYPE_CHECKING:
+    from ...asked import LineQuestion
 
 
 class _WuWalk(NamedTuple):
@@ -194,6 +197,12 @@ def _wu_shades(steps: Iterable[Step]) -> dict[Pixel, int]:
 
 def _wu_point(v: Number) -> str:
     return fmt_short(v)
+
+
+def wu_answer(q: LineQuestion) -> Solution:
+    """``line --algo wu`` (record ``line/wu``): exactly the answer of ``antialias line
+    --method wu``, with its ``ends`` convention (no notes added)."""
+    return wu_solution(q.x1, q.y1, q.x2, q.y2, ends=str(q.knobs.ends))
 
 
 def wu_solution(
