@@ -296,7 +296,7 @@ def _circle(name: str) -> Method:
         raster=_G + "raster_conic:circle" if name == "midpoint" else None,
         errata=_ERRATA + (f"{gen}_circle" if name in _NOTED else "none"),
         practice=_CP + f"{gen}_practice" if name in _PRACTISED else None,
-        rows=_CP + ("symmetric_dda_rows" if name == "symmetric-dda" else "rows"),
+        rows=_CP + (f"{gen}_rows" if name in ("trig", "symmetric-dda") else "rows"),
         cost=_CIRCLE_COSTS[name],
         missing=tuple(missing),
         short=_CIRCLE_SHORT.get(name, ""),

@@ -28,9 +28,22 @@ def rows(q: CircleQuestion) -> int:
     return math.ceil(abs(q.r) / math.sqrt(2)) + 1
 
 
+def trig_rows(q: CircleQuestion) -> int:
+    """The trigonometric method's rows: θ steps by 1/r over 45°, r·π/4 of them, and one
+    below 45° (more than the octant's x run)."""
+    return math.ceil(abs(q.r) * math.pi / 4) + 2
+
+
 def symmetric_dda_rows(q: CircleQuestion) -> int:
-    """The octant's rows, for a radius the symmetric DDA takes (else :class:`InputError`)."""
-    return rows(q._replace(r=sdda_radius(q.r)))
+    """The symmetric DDA's rows, for a radius it takes (else :class:`InputError`): each step
+    turns by about ε = 2^-n, 2^(n-1) <= r < 2^n, so 45° takes (π/4)·2^n steps, up to 1.6 r
+    (twice the octant's x run).
+
+    >>> symmetric_dda_rows(CircleQuestion("symmetric-dda", 57))
+    53
+    """
+    r = sdda_radius(q.r)
+    return math.ceil(math.pi / 4 * (1 << r.bit_length())) + 2
 
 
 def midpoint_derivation(q: CircleQuestion) -> tuple[Quantity, ...]:
