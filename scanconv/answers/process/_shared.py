@@ -9,7 +9,7 @@ in every format; TeX gets ``\\frac{\\sqrt{2}}{2}``.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, NamedTuple
 
 from ...algorithms.clipping import Point as NumPoint
 from ...algorithms.clipping import Rect
@@ -17,7 +17,7 @@ from ...algorithms.radical import ROOTS, Radical, Scalar, approx, round_half_up_
 from ...algorithms.transform import Matrix, Point, outline, rect_outline
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt, fmt_short, normalize, round_half_up
-from ...core.records import PixelFigure, Quantity
+from ...core.records import PixelFigure, Quantity, Table
 from ...core.working import ascii_text
 
 MAX_POINTS = 100
@@ -143,6 +143,17 @@ def shapes_figure(
     if not fits(box):
         return ()
     return (PixelFigure(tuple(outline(a)), tuple(outline(b)), box, legend, title),)
+
+
+class Clipped(NamedTuple):
+    """A line clipped against a window, as one method worked it: what an answer around it
+    (the method's own, the rectangle's, the pipeline's clip stage) reads, typed."""
+
+    working: list[Quantity]
+    """The working, without its last line (the clipped segment, or the rejection)."""
+    tables: list[Table]
+    segment: tuple[NumPoint, NumPoint] | None
+    """The clipped segment; ``None``: rejected."""
 
 
 def check_rect(rect: Sequence[Number], what: str, param: str) -> Rect:

@@ -11,7 +11,7 @@ from ....algorithms.cyrus_beck import CBResult, cyrus_beck
 from ....core.checks import InputError
 from ....core.numeric import Number, fmt_short, normalize
 from ....core.records import Quantity, Solution, Table, heading, rule, worked
-from .._shared import pt
+from .._shared import Clipped, pt
 
 
 def _vertices(coords: Sequence[Number], param: str) -> list[tuple[Number, Number]]:
@@ -55,6 +55,52 @@ def _edge_table(result: CBResult, n: int) -> Table:
     )
 
 
+def cyrus_beck_clipped(
+    p0: tuple[Number, Number],
+    p1: tuple[Number, Number],
+    win: list[tuple[Number, Number]],
+    normals: str = "outward",
+    ends: str = "exact",
+    result: CBResult | None = None,
+) -> Clipped:
+    """Cyrus-Beck's working (without its last line), its edge table and the clipped segment
+    (``result``: the run, if it is done already)."""
+    result = result or cyrus_beck(p0, p1, win, normals, ends)
+    d = (normalize(p1[0] - p0[0]), normalize(p1[1] - p0[1]))
+    sign = "-" if normals == "outward" else ""
+    working: list[Quantity] = [
+        worked("D", d, f"D = P_1 - P_0 = {pt(d)}"),
+        rule("P", r"P(t) = P_0 + t D, \quad 0 \le t \le 1"),
+        rule("t", f"t = N \\cdot (P_0 - E) / ({sign}N \\cdot D)"),
+        rule(
+            "kind",
+            f"N \\cdot D {'<' if normals == 'outward' else '>'} 0: \\text{{entering}} "
+            f"(t_E = \\max), \\quad N \\cdot D {'>' if normals == 'outward' else '<'} 0: "
+            "\\text{leaving} (t_L = \\min)",
+        ),
+    ]
+    return Clipped(working, [_edge_table(result, len(win))], result.segment)
+
+
+def _outcome(result: CBResult) -> Quantity:
+    """The last line: the clipped end points at t_E and t_L, or why the line is rejected."""
+    last = result.rows[-1]
+    if result.accepted and result.segment is not None:
+        a, b = result.segment
+        return worked(
+            "clipped",
+            (a, b),
+            f"t_E = {fmt_short(last.t_enter)}, t_L = {fmt_short(last.t_leave)}: "
+            f"P(t_E) = {pt(a)}, P(t_L) = {pt(b)}",
+        )
+    why = (
+        "parallel to an edge and outside it"
+        if any(r.kind == "parallel, outside" for r in result.rows)
+        else f"t_E = {fmt_short(last.t_enter)} > t_L = {fmt_short(last.t_leave)}"
+    )
+    return rule("rejected", f"\\text{{rejected: {why}}}")
+
+
 def cyrus_beck_solution(
     x1: Number,
     y1: Number,
@@ -76,42 +122,14 @@ def cyrus_beck_solution(
     p1 = (normalize(x2), normalize(y2))
     win = _vertices(window, "window")
     result = cyrus_beck(p0, p1, win, normals, ends)
-    d = (normalize(p1[0] - p0[0]), normalize(p1[1] - p0[1]))
-    sign = "-" if normals == "outward" else ""
     given = (
         worked("P0", p0, f"P_0 = {pt(p0)}"),
         worked("P1", p1, f"P_1 = {pt(p1)}"),
         *(worked(f"V{i}", v, f"V_{{{i}}} = {pt(v)}") for i, v in enumerate(win, 1)),
     )
-    derived: list[Quantity] = [
-        worked("D", d, f"D = P_1 - P_0 = {pt(d)}"),
-        rule("P", r"P(t) = P_0 + t D, \quad 0 \le t \le 1"),
-        rule("t", f"t = N \\cdot (P_0 - E) / ({sign}N \\cdot D)"),
-        rule(
-            "kind",
-            f"N \\cdot D {'<' if normals == 'outward' else '>'} 0: \\text{{entering}} "
-            f"(t_E = \\max), \\quad N \\cdot D {'>' if normals == 'outward' else '<'} 0: "
-            "\\text{leaving} (t_L = \\min)",
-        ),
-    ]
+    clipped = cyrus_beck_clipped(p0, p1, win, normals, ends, result)
+    derived = [*clipped.working, _outcome(result)]
     last = result.rows[-1]
-    if result.accepted and result.segment is not None:
-        a, b = result.segment
-        derived.append(
-            worked(
-                "clipped",
-                (a, b),
-                f"t_E = {fmt_short(last.t_enter)}, t_L = {fmt_short(last.t_leave)}: "
-                f"P(t_E) = {pt(a)}, P(t_L) = {pt(b)}",
-            )
-        )
-    else:
-        why = (
-            "parallel to an edge and outside it"
-            if any(r.kind == "parallel, outside" for r in result.rows)
-            else f"t_E = {fmt_short(last.t_enter)} > t_L = {fmt_short(last.t_leave)}"
-        )
-        derived.append(rule("rejected", f"\\text{{rejected: {why}}}"))
     notes = (
         f"Conventions: {normals} normals (inward normals flip the sign of every $N \\cdot D$ "
         f"and $N \\cdot (P_0 - E)$, never $t$), clipped ends {ends}.",
@@ -124,7 +142,7 @@ def cyrus_beck_solution(
         given=given,
         derived=tuple(derived),
         notes=notes,
-        tables=(_edge_table(result, len(win)),),
+        tables=tuple(clipped.tables),
         geometry={
             "line": (*p0, *p1),
             "polyline": [(float(x), float(y)) for x, y in (*win, win[0])],

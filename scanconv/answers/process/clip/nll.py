@@ -12,7 +12,15 @@ from ....algorithms.clipping import Edge, Point, Rect
 from ....algorithms.nll import EDGE_OF, REGION_NAMES, NLLResult, nicholl_lee_nicholl
 from ....core.numeric import Number, fmt_paren, fmt_short, normalize
 from ....core.records import Quantity, Solution, Table, heading, rule, worked
-from .._shared import check_rect, clip_figure, factor, point_quantity, pt, rect_quantity
+from .._shared import (
+    Clipped,
+    check_rect,
+    clip_figure,
+    factor,
+    point_quantity,
+    pt,
+    rect_quantity,
+)
 from .rectangle import clipped_quantity, code_reason
 
 _LIMIT = {"L": "x_{\\min}", "R": "x_{\\max}", "B": "y_{\\min}", "T": "y_{\\max}"}
@@ -123,18 +131,10 @@ def _crossing_line(p1: Point, p2: Point, role: str, edge: Edge, point: Point) ->
     return worked(f"{role}_{letter}", point, f"\\text{{{role}, {edge.value} edge: }} {tex}")
 
 
-def nll_solution(
-    x1: Number, y1: Number, x2: Number, y2: Number, window: Sequence[Number]
-) -> Solution:
-    """Nicholl–Lee–Nicholl clipping of ``(x1, y1)``–``(x2, y2)`` against
-    ``(xmin, ymin, xmax, ymax)``.
-
-    >>> nll_solution(30, 60, 60, 25, (10, 10, 50, 50)).data["clipped"]
-    [[Fraction(270, 7), 50], [50, Fraction(110, 3)]]
-    """
-    w = check_rect(window, "window", "window")
-    p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
-    result = nicholl_lee_nicholl(p1, p2, w)
+def nll_clipped(p1: Point, p2: Point, w: Rect, result: NLLResult | None = None) -> Clipped:
+    """NLL's working (P1's region, the slopes, P2's region, the crossings), its tests table and
+    the clipped segment (``result``: the run, if it is done already)."""
+    result = result or nicholl_lee_nicholl(p1, p2, w)
     why = code_reason(p1, w) if result.region1 else "code 0000"
     derived: list[Quantity] = [
         worked("region1", result.region1 or "inside",
@@ -151,8 +151,24 @@ def nll_solution(
             )
         )
         derived += [_crossing_line(p1, p2, c.role, c.edge, c.point) for c in result.crossings]
-    seg = result.segment
-    derived.append(clipped_quantity(seg))
+    return Clipped(derived, [_tests_table(result)], result.segment)
+
+
+def nll_solution(
+    x1: Number, y1: Number, x2: Number, y2: Number, window: Sequence[Number]
+) -> Solution:
+    """Nicholl–Lee–Nicholl clipping of ``(x1, y1)``–``(x2, y2)`` against
+    ``(xmin, ymin, xmax, ymax)``.
+
+    >>> nll_solution(30, 60, 60, 25, (10, 10, 50, 50)).data["clipped"]
+    [[Fraction(270, 7), 50], [50, Fraction(110, 3)]]
+    """
+    w = check_rect(window, "window", "window")
+    p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
+    result = nicholl_lee_nicholl(p1, p2, w)
+    clipped = nll_clipped(p1, p2, w, result)
+    seg = clipped.segment
+    derived = [*clipped.working, clipped_quantity(seg)]
     notes = (
         "P1's region: inside, an edge region (beyond one edge: L, R, B, T) or a corner region "
         "(beyond two: TL, TR, BL, BR). P2's region is named by the edges the segment crosses "
@@ -173,7 +189,7 @@ def nll_solution(
         given=(point_quantity("P1", p1), point_quantity("P2", p2), rect_quantity("window", w)),
         derived=tuple(derived),
         notes=notes,
-        tables=(_tests_table(result),),
+        tables=tuple(clipped.tables),
         figures=clip_figure(list(seg) if seg else [], w, [p1, p2], "clipped segment"),
         data={
             "region1": result.region1 or "inside",

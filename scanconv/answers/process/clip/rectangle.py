@@ -7,9 +7,9 @@ Every intersection is exact: table cells show ``39/5`` or ``7.8``, never a round
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ....algorithms.clipping import (
     EDGES,
@@ -28,6 +28,7 @@ from ....core.checks import InputError
 from ....core.numeric import Number, fmt_paren, fmt_short, normalize
 from ....core.records import Column, Quantity, Solution, Table
 from .._shared import (
+    Clipped,
     check_rect,
     clip_figure,
     factor,
@@ -47,12 +48,51 @@ else:
 LINE_METHODS = tuple(m.value for m in LineClipMethod)
 """The line clipping methods, by name."""
 
-METHOD_NAMES = {
-    "cohen-sutherland": "Cohen-Sutherland",
-    "liang-barsky": "Liang-Barsky",
-    "cyrus-beck": "Cyrus-Beck",
-    "nicholl-lee-nicholl": "Nicholl-Lee-Nicholl",
-}
+
+class _Way(NamedTuple):
+    """A method that clips a line against a rectangle: its name and its working."""
+
+    name: str
+    clip: Callable[[Point, Point, Rect], Clipped]
+    notes: tuple[str, ...]
+
+
+def _cs(p1: Point, p2: Point, w: Rect) -> Clipped:
+    cs = cohen_sutherland(p1, p2, w)
+    return Clipped(*cs_parts(p1, p2, w, cs), cs.segment)
+
+
+def _lb(p1: Point, p2: Point, w: Rect) -> Clipped:
+    lb = liang_barsky(p1, p2, w)
+    return Clipped(*lb_parts(p1, p2, w, lb), lb.segment)
+
+
+def _cb(p1: Point, p2: Point, w: Rect) -> Clipped:
+    """Cyrus-Beck with the rectangle as its convex window."""
+    corners = [(w[0], w[1]), (w[2], w[1]), (w[2], w[3]), (w[0], w[3])]
+    return cyrus_beck.cyrus_beck_clipped(p1, p2, corners)
+
+
+def _nll(p1: Point, p2: Point, w: Rect) -> Clipped:
+    return nll.nll_clipped(p1, p2, w)
+
+
+_PARAMETRIC = (
+    "x = x1 + u·Δx, y = y1 + u·Δy with 0 <= u <= 1; inside where u·p_k <= q_k for every k. p_k < 0 enters the window (raises u1), p_k > 0 leaves it (lowers u2).",
+)  # fmt: skip
+_WAYS = {
+    "cohen-sutherland": _Way("Cohen-Sutherland", _cs, (
+        "Region code bits, written T B R L (Hearn & Baker's bits 4 to 1): T = above (y > ymax), B = below (y < ymin), R = right (x > xmax), L = left (x < xmin).",
+        "Each iteration clips the end point that is outside (P1 first), at the first boundary of its code in the order left, right, bottom, top; the end points keep their names.",
+    )),
+    "liang-barsky": _Way("Liang-Barsky", _lb, _PARAMETRIC),
+    "cyrus-beck": _Way("Cyrus-Beck", _cb, _PARAMETRIC),
+    "nicholl-lee-nicholl": _Way("Nicholl-Lee-Nicholl", _nll, _PARAMETRIC),
+}  # fmt: skip
+"""The methods that clip a line against a rectangle: each its name, its working (typed, a
+:class:`~.._shared.Clipped`) and the notes the rectangle's answer adds."""
+
+METHOD_NAMES = {method: way.name for method, way in _WAYS.items()}
 """The methods :func:`clip_line_parts` works (and ``pipeline line --clip`` takes); midpoint
 subdivision rounds its midpoints and may find several pieces, so the pipeline refuses it."""
 
@@ -347,34 +387,13 @@ def clip_line_parts(
     p1: Point, p2: Point, w: Rect, method: str
 ) -> tuple[list[Quantity], list[Table], tuple[Point, Point] | None]:
     """Working, tables and clipped segment of one method (for :mod:`.pipeline` too)."""
-    if method == "cohen-sutherland":
-        cs = cohen_sutherland(p1, p2, w)
-        d, t = cs_parts(p1, p2, w, cs)
-        return d, t, cs.segment
-    if method == "liang-barsky":
-        lb = liang_barsky(p1, p2, w)
-        d, t = lb_parts(p1, p2, w, lb)
-        return d, t, lb.segment
-    if method in ("cyrus-beck", "nicholl-lee-nicholl"):
-        return _solution_parts(p1, p2, w, method)
-    raise InputError(
-        f"unknown line clipping method {method!r} (choose from {', '.join(LINE_METHODS)})", "method"
-    )
-
-
-def _solution_parts(
-    p1: Point, p2: Point, w: Rect, method: str
-) -> tuple[list[Quantity], list[Table], tuple[Point, Point] | None]:
-    """Cyrus-Beck's or NLL's working (without its last line, the clipped segment), tables and
-    segment, from its own answer (the rectangle as Cyrus-Beck's convex window)."""
-    if method == "cyrus-beck":
-        corners = [w[0], w[1], w[2], w[1], w[2], w[3], w[0], w[3]]
-        sol = cyrus_beck.cyrus_beck_solution(*p1, *p2, corners)
-    else:
-        sol = nll.nll_solution(*p1, *p2, w)
-    seg = sol.data["clipped"]
-    segment = None if seg is None else ((seg[0][0], seg[0][1]), (seg[1][0], seg[1][1]))
-    return list(sol.derived[:-1]), list(sol.tables), segment
+    way = _WAYS.get(method)
+    if way is None:
+        raise InputError(
+            f"unknown line clipping method {method!r} (choose from {', '.join(LINE_METHODS)})",
+            "method",
+        )
+    return way.clip(p1, p2, w)
 
 
 def clipped_quantity(seg: tuple[Point, Point] | None) -> Quantity:
@@ -414,16 +433,8 @@ def clip_line_solution(
     derived.append(clipped_quantity(seg))
     notes = [
         "The window is closed: a point on an edge is inside (code 0000), so a segment along an edge or through a corner is kept.",
-    ]
-    if method == "cohen-sutherland":
-        notes += [
-            "Region code bits, written T B R L (Hearn & Baker's bits 4 to 1): T = above (y > ymax), B = below (y < ymin), R = right (x > xmax), L = left (x < xmin).",
-            "Each iteration clips the end point that is outside (P1 first), at the first boundary of its code in the order left, right, bottom, top; the end points keep their names.",
-        ]
-    else:
-        notes.append(
-            "x = x1 + u·Δx, y = y1 + u·Δy with 0 <= u <= 1; inside where u·p_k <= q_k for every k. p_k < 0 enters the window (raises u1), p_k > 0 leaves it (lowers u2)."
-        )
+        *_WAYS[method].notes,
+    ]  # fmt: skip
     return Solution(
         primitive="clip",
         algorithm=method,
