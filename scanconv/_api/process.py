@@ -28,6 +28,7 @@ if TYPE_CHECKING:
         LineAlgorithmName,
         LineClipMethodName,
         MidpointName,
+        MidpointStopName,
         NormalsName,
         PolygonClipMethodName,
     )
@@ -132,6 +133,7 @@ def clip_line(
     normals: NormalsName | None = None,
     ends: ClipEndsName | None = None,
     midpoint: MidpointName | None = None,
+    stop: MidpointStopName | None = None,
 ) -> Solution:
     """A segment clipped against a rectangular window (``scanconv clip line``).
 
@@ -152,6 +154,10 @@ def clip_line(
     midpoint : {"rounded", "floor", "exact"}, optional
         Midpoint subdivision only: the midpoint rounded half up (default), floored (the hardware
         shift) or exact.
+    stop : {"length", "edge"}, optional
+        Midpoint subdivision only: split until a piece is decided or one unit long (default),
+        or also stop where a midpoint lands on the window's edge (the piece beyond it is
+        outside but for that point, the clipped end), as many published answers do.
 
     Returns
     -------
@@ -185,7 +191,7 @@ def clip_line(
     rect = _rect(window, "window")
     name = _choice(method, "method")
     _only(name, {"normals": normals, "ends": ends}, "cyrus-beck")
-    _only(name, {"midpoint": midpoint}, "midpoint-subdivision")
+    _only(name, {"midpoint": midpoint, "stop": stop}, "midpoint-subdivision")
     if name == "cyrus-beck":
         x0, y0, x1_, y1_ = rect
         corners = [x0, y0, x1_, y0, x1_, y1_, x0, y1_]
@@ -194,7 +200,7 @@ def clip_line(
         )
     if name == "midpoint-subdivision":
         return answers_midpoint_clip.midpoint_clip_solution(
-            a, b, c, d, list(rect), midpoint=midpoint or "rounded"
+            a, b, c, d, list(rect), midpoint=midpoint or "rounded", stop=stop or "length"
         )
     if name == "nicholl-lee-nicholl":
         return answers_nll.nll_solution(a, b, c, d, rect)
