@@ -215,10 +215,18 @@ NUMBER = re.compile(r"-[0-9.]+(/[0-9]+)?(e[0-9]+)?")
 
 
 def _command_lines(page: Path) -> list[str]:
-    """Every inline ``scanconv ...`` span of a page that is a concrete command line (a span
-    broken over two lines joined), cut before a shell redirection."""
+    """Every inline ``scanconv ...`` span and every ``scanconv ...`` line of a ```sh block of
+    a page that is a concrete command line (a span broken over two lines joined), cut before a
+    shell redirection or comment."""
     found = []
-    for span in SPAN.findall(TEXT[page]):
+    blocks = re.findall(r"```(?:sh|text)\n(.*?)```", TEXT[page], flags=re.S)
+    shell = [
+        line.split("  #", 1)[0].split(" # ", 1)[0].strip()
+        for block in blocks
+        for line in block.splitlines()
+        if line.startswith("scanconv ")
+    ]
+    for span in SPAN.findall(TEXT[page]) + shell:
         span = " ".join(span.split())
         cut = re.split(r" (?:>>?|&&|\|) ", span, maxsplit=1)[0]
         if not TEMPLATE.search(cut):
@@ -418,6 +426,21 @@ def test_the_presets_the_readme_names_are_the_programs():
     said = re.search(r"`--convention notes`((?:, `[a-z-]+`)+)", " ".join(TEXT[README].split()))
     assert said is not None
     assert ["notes", *re.findall(r"`([a-z-]+)`", said[1])] == list(PRESETS)
+
+
+def test_the_spellings_and_the_default_format_the_readme_gives_hold():
+    """A point typed ``2,2`` or ``(2,2)`` and a size ``1024x768`` are the plain numbers, and
+    Markdown is the format when the output is not a terminal (as in these in-process runs)."""
+    text = " ".join(TEXT[README].split())
+    assert "A point may be typed `2,2` or `(2,2)`, a size `1024x768`" in text
+    assert "`markdown` (`md`; the default when the output is not a terminal" in text
+    plain = run("line", "2", "2", "10", "6")
+    assert plain.code == 0 and plain.out == run("line", "(2,2)", "10,6").out
+    assert plain.out == run("line", "2,2", "(10,6)", "--format", "markdown").out
+    assert (
+        run("storage", "1024x768", "--levels", "256").out
+        == run("storage", "1024", "768", "--levels", "256").out
+    )
 
 
 # --- the modules the docs name -------------------------------------------------------------
