@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scanconv import _api as api
-from scanconv.answers.bspline_basis_at import bspline_basis_at_solution
+from scanconv.answers.curves.bspline_basis import bspline_basis_at_solution
 
 from .helpers import run
 

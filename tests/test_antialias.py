@@ -28,7 +28,7 @@ from scanconv.algorithms.coverage import (
 )
 from scanconv.algorithms.polygon import fill_pixels, polygon_area
 from scanconv.algorithms.wu import wu
-from scanconv.answers.antialias import antialias_solution, wu_solution
+from scanconv.answers.process.antialias.sampling import antialias_solution, wu_solution
 from scanconv.core.checks import InputError
 from scanconv.render import Format, render
 

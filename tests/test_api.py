@@ -456,5 +456,7 @@ def test_importing_the_api_imports_no_answer_module():
         "print(*sorted(m for m in sys.modules if m.startswith('scanconv.answers.')))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    loaded = set(out.stdout.split()) - {"scanconv.answers.line"}  # with ``import scanconv``
+    loaded = set(out.stdout.split()) - {
+        "scanconv.answers.primitives.line"
+    }  # with ``import scanconv``
     assert not loaded, loaded

@@ -203,8 +203,8 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
         subpixel,
         wu,
     )
-    from scanconv.answers import inside as answers_inside
-    from scanconv.answers import subpixel as answers_subpixel
+    from scanconv.answers.process.antialias import subpixel as answers_subpixel
+    from scanconv.answers.process.fill import inside as answers_inside
 
     enums = {
         "LineAlgorithmName": choices.LineAlgorithm, "RoundingName": choices.Rounding,

@@ -1,4 +1,4 @@
-"""Line attributes (scanconv.algorithms.attributes, scanconv.answers.attributes): masks,
+"""Line attributes (scanconv.algorithms.attributes, scanconv.answers.primitives.attributes): masks,
 replication and brushes on Bresenham's centre line, checked by hand and by properties."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.attributes import centre_line, parse_mask, styled, thick
 from scanconv.algorithms.raster import line as raster_line
-from scanconv.answers.attributes import line_style_solution, thick_line_solution
+from scanconv.answers.primitives.attributes import line_style_solution, thick_line_solution
 from scanconv.core.checks import InputError
 
 ENDS = st.tuples(*(st.integers(-20, 20) for _ in range(4)))

@@ -10,10 +10,10 @@ from itertools import count
 
 import pytest
 
-from scanconv.answers.bezier import bezier_at_solution
 from scanconv.answers.compare import compare_lines
-from scanconv.answers.ellipse import ellipse_solution
-from scanconv.answers.line import line_solution
+from scanconv.answers.curves.bezier import bezier_at_solution
+from scanconv.answers.primitives.ellipse import ellipse_solution
+from scanconv.answers.primitives.line import line_solution
 from scanconv.core.records import Column, Move, PixelFigure, Step, heading, worked
 from scanconv.document import (
     Document,

@@ -344,7 +344,7 @@ def test_a_boundary_that_float64_gets_wrong_is_exact():
 
 @pytest.mark.slow  # about a second of CPU
 def test_too_many_boundary_cells_keep_float_levels_and_say_so():
-    from scanconv.answers.sample import sample_solution
+    from scanconv.answers.image.sample import sample_solution
 
     s = sample_levels("x", 4096, 4096, 4095)
     assert s.unchecked > 0 and s.levels[0].tolist() == [*range(4095), 4094]

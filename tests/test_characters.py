@@ -1,4 +1,4 @@
-"""Character generation (scanconv.algorithms.characters, scanconv.answers.characters)."""
+"""Character generation (scanconv.algorithms.characters, scanconv.answers.primitives.characters)."""
 
 from __future__ import annotations
 
@@ -15,7 +15,11 @@ from scanconv.algorithms.characters import (
     draw_strokes,
     storage,
 )
-from scanconv.answers.characters import bitmap_solution, font_storage_solution, stroke_solution
+from scanconv.answers.primitives.characters import (
+    bitmap_solution,
+    font_storage_solution,
+    stroke_solution,
+)
 from scanconv.core.checks import InputError
 
 

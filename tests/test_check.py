@@ -26,8 +26,9 @@ from hypothesis import strategies as st
 
 import scanconv
 from scanconv import _api as api
-from scanconv.answers.marking import mark
-from scanconv.answers.models import (
+from scanconv.core.checks import InputError
+from scanconv.marking.mark import mark
+from scanconv.marking.models import (
     BresenhamCircle,
     BresenhamLine,
     DDALine,
@@ -37,8 +38,7 @@ from scanconv.answers.models import (
     State,
     chain,
 )
-from scanconv.core.checks import InputError
-from scanconv.core.student_table import Cell, field_of, parse_text, read_table
+from scanconv.marking.student_table import Cell, field_of, parse_text, read_table
 from scanconv.render.marking import neutral
 
 from .helpers import assert_refused, run
@@ -560,7 +560,7 @@ def test_the_api_marks_against_a_question_or_a_solution():
 @settings(max_examples=100, deadline=None)  # was 300: see the module's note
 @given(st.binary(max_size=300))
 def test_any_bytes_are_a_table_or_one_input_error(data):
-    from scanconv.core.student_table import parse_bytes
+    from scanconv.marking.student_table import parse_bytes
 
     for suffix in ("", ".csv", ".md", ".json"):
         try:

@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from scanconv.algorithms.circles import bresenham
-from scanconv.answers.circle import circle_solution
+from scanconv.answers.primitives.circle import circle_solution
 
 
 def _copied(r: int) -> list[tuple[int, tuple[int, int]]]:
@@ -46,7 +46,7 @@ def test_the_default_is_bresenhams_own() -> None:
 @pytest.mark.parametrize("r", [5, 10, 13, 37])
 @pytest.mark.parametrize("tie", ["step", "keep"])
 def test_the_marking_model_follows_the_x_first_generator(r: int, tie: str) -> None:
-    from scanconv.answers.models import BresenhamCircle
+    from scanconv.marking.models import BresenhamCircle
 
     m = BresenhamCircle(r, tie, "first")
     s = m.start()

@@ -32,7 +32,7 @@ from scanconv.algorithms.circles import (
     trig,
     trig_steps,
 )
-from scanconv.answers.circle import circle_solution
+from scanconv.answers.primitives.circle import circle_solution
 
 from .helpers import assert_refused, run, run_process
 

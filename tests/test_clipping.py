@@ -31,9 +31,9 @@ from scanconv.algorithms.clipping import (
     region_code,
     sutherland_hodgman,
 )
-from scanconv.answers.clip import clip_line_solution
-from scanconv.answers.clip_polygon import MAX_VERTICES, clip_polygon_solution
-from scanconv.answers.pipeline import pipeline_line_solution, pipeline_polygon_solution
+from scanconv.answers.process.clip.rectangle import clip_line_solution
+from scanconv.answers.process.clip.sutherland_hodgman import MAX_VERTICES, clip_polygon_solution
+from scanconv.answers.process.pipeline import pipeline_line_solution, pipeline_polygon_solution
 from scanconv.core.checks import InputError
 from scanconv.render import Format, Options, render
 

@@ -31,7 +31,7 @@ from hypothesis import strategies as st
 
 import scanconv
 from scanconv.algorithms import color as c
-from scanconv.answers.color import color_solution
+from scanconv.answers.image.color import color_solution
 
 from .helpers import assert_refused, run
 

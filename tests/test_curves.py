@@ -27,9 +27,9 @@ from scanconv.algorithms.lines import bresenham
 from scanconv.algorithms.local_control import local_control
 from scanconv.algorithms.parametric import parametric
 from scanconv.algorithms.sampling import coord, curve_pixels, sample_ts
-from scanconv.answers.bezier import bezier_solution
-from scanconv.answers.bspline import bspline_solution
-from scanconv.answers.parametric import parametric_solution
+from scanconv.answers.curves.bezier import bezier_solution
+from scanconv.answers.curves.bspline import bspline_solution
+from scanconv.answers.primitives.parametric import parametric_solution
 from scanconv.core.checks import InputError
 
 from .helpers import assert_refused, connected, run

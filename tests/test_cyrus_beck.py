@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.clipping import liang_barsky
 from scanconv.algorithms.cyrus_beck import check_convex, cyrus_beck
-from scanconv.answers.cyrus_beck import cyrus_beck_solution
+from scanconv.answers.process.clip.cyrus_beck import cyrus_beck_solution
 from scanconv.core.checks import InputError
 
 C = st.integers(-30, 30)

@@ -1,4 +1,4 @@
-"""Halftoning and dithering (scanconv.algorithms.dither, scanconv.answers.dither): hand-worked
+"""Halftoning and dithering (scanconv.algorithms.dither, scanconv.answers.image.dither): hand-worked
 examples, and properties against independent computations."""
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scanconv.algorithms import dither as d
-from scanconv.answers.dither import (
+from scanconv.answers.image.dither import (
     diffusion_solution,
     ordered_solution,
     pattern_solution,

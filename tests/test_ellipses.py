@@ -20,8 +20,8 @@ from scanconv.algorithms.ellipses import (
     region1_end,
     symmetric_pixels,
 )
-from scanconv.answers.circle import circle_solution
-from scanconv.answers.ellipse import ellipse_solution
+from scanconv.answers.primitives.circle import circle_solution
+from scanconv.answers.primitives.ellipse import ellipse_solution
 from scanconv.core.records import Move
 
 from .helpers import connected
@@ -45,7 +45,7 @@ def pixel_set(rx: int, ry: int) -> set[Pixel]:
     """The pixels of :func:`pixel_list` (centre 0, 0) straight from the algorithm's quadrant,
     without the worked answer around them: the tests of the pixels' geometry call it on
     hundreds of ellipses, and the answer's working cost ten times the pixels (issue 29).
-    ``Solution.pixels()`` is exactly these images of these points (scanconv/answers/ellipse.py),
+    ``Solution.pixels()`` is exactly these images of these points (scanconv/answers/primitives/ellipse.py),
     and :func:`test_pixel_order_is_the_documented_one` checks the answer's own list."""
     return set(symmetric_pixels(quadrant_points(rx, ry)))
 

@@ -20,7 +20,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scanconv.algorithms.lines import bresenham, dda
-from scanconv.answers.line import line_solution
+from scanconv.answers.primitives.line import line_solution
 from scanconv.core.records import Column, Solution, Step
 from scanconv.render import figure
 
@@ -101,7 +101,7 @@ def test_axes_label_every_column_and_row():
 
 
 def test_curve_figure_draws_the_curve_and_the_control_polygon():
-    from scanconv.answers.bezier import bezier_solution
+    from scanconv.answers.curves.bezier import bezier_solution
 
     solution = bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8)
     root = _parse(figure.svg(solution))
@@ -283,7 +283,7 @@ def test_readme_line_figure_is_current():
 
 
 def test_readme_bezier_figure_is_well_formed():
-    from scanconv.answers.bezier import bezier_solution
+    from scanconv.answers.curves.bezier import bezier_solution
 
     solution = bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8)
     root = _parse((DOCS / "bezier-0-0-1-2-3-3-4-0.svg").read_text(encoding="utf-8"))
@@ -292,7 +292,7 @@ def test_readme_bezier_figure_is_well_formed():
 
 
 def test_readme_circle_figure_is_well_formed():
-    from scanconv.answers.circle import circle_solution
+    from scanconv.answers.primitives.circle import circle_solution
 
     solution = circle_solution("midpoint", 10)
     root = _parse((DOCS / "circle-midpoint-10.svg").read_text(encoding="utf-8"))
@@ -304,7 +304,7 @@ def test_readme_circle_figure_is_well_formed():
 @pytest.mark.parametrize("r", [1, 5, 10, 23])
 @pytest.mark.parametrize("method", ["midpoint", "bresenham", "polynomial", "trig", "symmetric-dda"])
 def test_circle_figures_number_every_pixel_by_its_octant_step(method, r):
-    from scanconv.answers.circle import circle_solution
+    from scanconv.answers.primitives.circle import circle_solution
 
     solution = circle_solution(method, r, 3, -2)
     labels = figure.step_labels(solution)
@@ -317,7 +317,7 @@ def test_circle_figures_number_every_pixel_by_its_octant_step(method, r):
 
 
 def test_ellipse_figure_draws_the_ellipse_and_marks_the_centre():
-    from scanconv.answers.ellipse import ellipse_solution
+    from scanconv.answers.primitives.ellipse import ellipse_solution
 
     solution = ellipse_solution(8, 6, 2, 1)
     root = _parse(figure.svg(solution))
@@ -344,7 +344,7 @@ def test_png_draws_the_same_shapes():
     Image = pytest.importorskip("PIL.Image")
     from io import BytesIO
 
-    from scanconv.answers.bezier import bezier_solution
+    from scanconv.answers.curves.bezier import bezier_solution
 
     fig = figure.build(bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8))
     with Image.open(BytesIO(figure.to_png(fig, scale=1))) as img:
@@ -385,7 +385,7 @@ def _json(*args: str) -> dict:
 
 def test_polygon_figure_draws_the_fill_and_the_outline_distinguishably():
     from scanconv.algorithms.polygon import outline_pixels
-    from scanconv.answers.polygon import polygon_solution
+    from scanconv.answers.process.fill.scanline import polygon_solution
 
     pts = [(0, 0), (8, 2), (5, 7)]
     sol = polygon_solution([0, 0, 8, 2, 5, 7], "even-odd")

@@ -21,7 +21,7 @@ from scanconv.algorithms.seedfill import (
     seed_fill,
     span_fill,
 )
-from scanconv.answers.fill import parse_rows, seed_fill_solution
+from scanconv.answers.process.fill.seed import parse_rows, seed_fill_solution
 from scanconv.core.checks import InputError
 from scanconv.render import Format, render
 

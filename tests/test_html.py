@@ -430,7 +430,7 @@ def test_print_gives_the_plain_answer():
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
 def test_options_reach_the_page():
-    from scanconv.answers.line import line_solution
+    from scanconv.answers.primitives.line import line_solution
 
     sol = line_solution("dda", 0, 0, 3, 1)
     exact = "".join(c for c in render(sol, Format.html, Options(exact=True)) if isinstance(c, str))
@@ -551,7 +551,7 @@ def test_the_contents_escape_sections_and_wordings(linked):
 
 
 def test_an_answer_sections_id_and_keys_are_attribute_escaped():
-    from scanconv.answers.line import line_solution
+    from scanconv.answers.primitives.line import line_solution
     from scanconv.render.html import answer_section
 
     html = answer_section(line_solution("dda", 2, 2, 4, 3), 'a"b<c', keys='p"q')

@@ -23,8 +23,8 @@ from scanconv.algorithms.image_limits import MAX_CELLS
 from scanconv.algorithms.quantize import Quantizer
 from scanconv.algorithms.ramp import ramp
 from scanconv.algorithms.sample import sample_levels
-from scanconv.answers.ramp import ramp_solution
-from scanconv.answers.storage import storage_solution
+from scanconv.answers.image.ramp import ramp_solution
+from scanconv.answers.image.storage import storage_solution
 
 from .helpers import run
 

@@ -1,4 +1,4 @@
-"""Inside-outside tests (scanconv.algorithms.inside, scanconv.answers.inside): hand-worked
+"""Inside-outside tests (scanconv.algorithms.inside, scanconv.answers.process.fill.inside): hand-worked
 cases and agreement with the scan-line fill, an independent computation."""
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.inside import edge_tests, on_segment, verdict
 from scanconv.algorithms.polygon import fill_pixels
-from scanconv.answers.inside import inside_solution
+from scanconv.answers.process.fill.inside import inside_solution
 from scanconv.core.checks import InputError
 
 SQUARE = [(0, 0), (4, 0), (4, 4), (0, 4)]

@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.lines import basic, bresenham, dda
 from scanconv.algorithms.midpoint_line import midpoint_line
-from scanconv.answers.line import line_solution
+from scanconv.answers.primitives.line import line_solution
 from scanconv.core.numeric import round_half_up
 from scanconv.core.records import Move
 

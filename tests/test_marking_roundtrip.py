@@ -14,9 +14,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scanconv import _api as api
-from scanconv.answers.marking import mark
 from scanconv.core.checks import InputError
-from scanconv.core.student_table import parse_text
+from scanconv.marking.mark import mark
+from scanconv.marking.student_table import parse_text
 from scanconv.render import Format, Options, render
 
 from .helpers import run

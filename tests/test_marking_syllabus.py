@@ -1,5 +1,5 @@
 """``check`` marks the syllabus methods whose tables are not a pixel walk
-(scanconv.answers.marking_table, scanconv.answers.table_models): for each, a right table, a
+(scanconv.marking.tables, scanconv.marking.table_models): for each, a right table, a
 table with one slip (charged once) and a table that carries a slip on (follow-through).
 
 The students' tables are written here by hand (the numbers in each docstring), not taken
@@ -15,7 +15,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.answers.marking_table import canon
+from scanconv.marking.tables import canon
 from scanconv.questions.marking import check
 
 from .helpers import run
@@ -232,8 +232,8 @@ def test_any_cells_are_marked_or_refused_in_one_line(question: str, rows: list) 
     import shlex
     import tempfile
 
-    from scanconv.answers.marking_table import table_model_for
     from scanconv.core.checks import InputError
+    from scanconv.marking.tables import table_model_for
     from scanconv.questions import parse, solve
 
     solution = solve(parse(shlex.split(question)))

@@ -18,9 +18,9 @@ from pathlib import Path
 import pytest
 
 from scanconv import _api as api
-from scanconv.answers.marking import mark
 from scanconv.core.checks import InputError
-from scanconv.core.student_table import parse_text
+from scanconv.marking.mark import mark
+from scanconv.marking.student_table import parse_text
 
 from .helpers import assert_refused, run
 
@@ -255,7 +255,7 @@ def test_the_other_circle_form_is_diagnosed_and_its_pixels_marked(
 def test_practice_words_circles_by_the_notes_names():
     import random
 
-    from scanconv.answers.practice import _CIRCLE_NAMES, _circle
+    from scanconv.practice.notes import _CIRCLE_NAMES, _circle
 
     assert "p0 = 1 - r" in _CIRCLE_NAMES["midpoint"]
     assert "d0 = 3 - 2r" in _CIRCLE_NAMES["bresenham"]
@@ -425,7 +425,7 @@ def test_the_batch_csv_gives_each_file_its_single_run_score(tmp_path):
 
 
 def test_each_model_steps_by_a_given_move_and_names_its_rule():
-    from scanconv.answers.models import (
+    from scanconv.marking.models import (
         BresenhamCircle,
         BresenhamLine,
         MidpointCircle,
@@ -478,7 +478,7 @@ def test_each_model_steps_by_a_given_move_and_names_its_rule():
     ],
 )
 def test_the_notes_headings_map_to_fields(heading, field):
-    from scanconv.core.student_table import field_of
+    from scanconv.marking.student_table import field_of
 
     assert field_of(heading)[0] == field
 

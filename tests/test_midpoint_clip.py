@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.clipping import liang_barsky
 from scanconv.algorithms.midpoint_clip import subdivide, visible
-from scanconv.answers.midpoint_clip import midpoint_clip_solution
+from scanconv.answers.process.clip.midpoint import midpoint_clip_solution
 
 C = st.integers(-40, 40)
 WINDOW = (0, 0, 20, 20)

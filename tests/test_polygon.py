@@ -23,7 +23,7 @@ from scanconv.algorithms.polygon import (
     scanline_fill,
     vertices_from_coords,
 )
-from scanconv.answers.polygon import polygon_solution, shape
+from scanconv.answers.process.fill.scanline import polygon_solution, shape
 from scanconv.core.checks import InputError
 from scanconv.render import Format, render
 

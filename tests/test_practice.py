@@ -13,8 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from scanconv.answers.practice import DIFFICULTIES, TOPICS, octant, practice, question_file
 from scanconv.cli.sheet import answer_questions, read_questions
+from scanconv.practice.notes import DIFFICULTIES, TOPICS, octant, practice, question_file
 
 from .helpers import assert_refused, run
 

@@ -1,4 +1,4 @@
-"""Practice questions beyond the notes (scanconv.answers.practice_more): seeded, every kind
+"""Practice questions beyond the notes (scanconv.practice.beyond): seeded, every kind
 shown, worded with the method's own name, and answered by scanconv itself."""
 
 from __future__ import annotations
@@ -6,8 +6,8 @@ from __future__ import annotations
 import pytest
 
 from scanconv.answers.methods import method
-from scanconv.answers.practice import practice
-from scanconv.answers.practice_more import KINDS
+from scanconv.practice.beyond import KINDS
+from scanconv.practice.notes import practice
 
 TOPICS = sorted(KINDS)
 

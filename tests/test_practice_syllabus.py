@@ -1,4 +1,4 @@
-"""Practice on the syllabus topics added with issue 30 (scanconv.answers.practice_more): line
+"""Practice on the syllabus topics added with issue 30 (scanconv.practice.beyond): line
 attributes, characters, the midpoint line, anti-aliasing and NLL clipping: the same seed gives the same
 questions, every kind comes in as many questions, each is worded with its method and answered
 by scanconv, and the CLI writes a worksheet and its key."""
@@ -9,8 +9,8 @@ import shlex
 
 import pytest
 
-from scanconv.answers.practice import TOPICS, practice
-from scanconv.answers.practice_more import KINDS
+from scanconv.practice.beyond import KINDS
+from scanconv.practice.notes import TOPICS, practice
 
 from .helpers import run
 

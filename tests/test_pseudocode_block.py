@@ -14,10 +14,10 @@ from pathlib import Path
 import pytest
 from rich.console import Console
 
-from scanconv.answers.circle import circle_solution
-from scanconv.answers.ellipse import ellipse_solution
-from scanconv.answers.line import line_solution
 from scanconv.answers.methods import METHODS
+from scanconv.answers.primitives.circle import circle_solution
+from scanconv.answers.primitives.ellipse import ellipse_solution
+from scanconv.answers.primitives.line import line_solution
 from scanconv.core.records import Code, Solution
 from scanconv.document import Document, Pixels, Pseudocode, Table, Title, document
 from scanconv.render import Format, Notice, Options, render

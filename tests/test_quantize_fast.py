@@ -23,7 +23,7 @@ from itertools import islice
 import pytest
 
 from scanconv.algorithms.quantize import Quantizer
-from scanconv.answers.quantize import quantization_rows
+from scanconv.answers.image.quantize import quantization_rows
 from scanconv.core.records import Move
 from scanconv.render.data import _plain_csv, batch_rows
 

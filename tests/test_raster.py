@@ -28,9 +28,9 @@ from scanconv.algorithms import (
     raster_conic,
 )  # the modules themselves: constants are patched
 from scanconv.algorithms.ellipses import quadrant_points, symmetric_pixels
-from scanconv.answers.circle import circle_solution
-from scanconv.answers.ellipse import ellipse_solution
-from scanconv.answers.line import line_solution
+from scanconv.answers.primitives.circle import circle_solution
+from scanconv.answers.primitives.ellipse import ellipse_solution
+from scanconv.answers.primitives.line import line_solution
 
 pytestmark = pytest.mark.slow
 
@@ -312,7 +312,7 @@ def test_circle_rejects_bad_input():
 @pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
 def test_ellipse_every_small_pair_of_semi_axes():
     # The step generator's quadrant and its images, as Solution.pixels() yields them
-    # (scanconv/answers/ellipse.py), without the worked answer that costs ten times the pixels
+    # (scanconv/answers/primitives/ellipse.py), without the worked answer that costs ten times the pixels
     # on these small ellipses (issue 29); the property below compares the Solution itself.
     for rx in range(40):
         for ry in range(40):

@@ -6,7 +6,7 @@
   lost the second column);
 * R6, ``render/moodle.py`` ``_CLOZE_SPECIAL``: a Cloze blank's answer holding ``"`` or ``'``
   writes them as character references, and Moodle's reading gives the answer back;
-* ST1, ``core/student_table.py``: a student's number written to *n* decimals has *n* places
+* ST1, ``marking/student_table.py``: a student's number written to *n* decimals has *n* places
   (the marking's tolerance is one unit in the last place);
 * NU3, ``core/numeric.py`` ``fmt_value``: an exact decimal of up to 8 characters is shown as
   a decimal (``2^-6 = 0.015625``), a longer one as a fraction with its rounding.
@@ -21,9 +21,9 @@ from pathlib import Path
 
 import pytest
 
-from scanconv.core import student_table
 from scanconv.core.numeric import fmt_value
 from scanconv.core.records import Column
+from scanconv.marking import student_table
 from scanconv.render import latex, moodle
 from scanconv.render.lms import Gap
 from tests.helpers import run

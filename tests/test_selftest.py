@@ -17,7 +17,7 @@ from typing import Any
 
 import pytest
 
-from scanconv.answers import circle, ellipse, line
+from scanconv.answers.primitives import circle, ellipse, line
 from scanconv.core.records import Solution
 from scanconv.document import StepTable, document
 from scanconv.render import Options
@@ -304,8 +304,8 @@ def test_every_method_with_a_marking_model_has_the_test_and_no_other_of_its_comm
     with_model = set()
     for record in METHODS.values():
         # a walk's model (a pixel from a decision on p); a table's own model (clipping,
-        # dithering, ...: scanconv.answers.table_models) marks columns, not steps to test
-        walk = (record.model or "").startswith("scanconv.answers.models:")
+        # dithering, ...: scanconv.marking.table_models) marks columns, not steps to test
+        walk = (record.model or "").startswith("scanconv.marking.models:")
         if record.command not in ARGV:
             assert not walk, record.key  # a new model: give it a page here
             continue

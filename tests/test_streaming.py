@@ -13,7 +13,7 @@ from itertools import islice
 
 import pytest
 
-from scanconv.answers.line import line_solution
+from scanconv.answers.primitives.line import line_solution
 from scanconv.cli import output as cli
 from scanconv.core.records import Solution, Step
 from scanconv.render import Format, Options, render
@@ -94,7 +94,7 @@ def test_a_wide_matrix_streams_a_few_rows_at_a_time(fmt):
     import tracemalloc
 
     from scanconv.algorithms.sample import sample_levels
-    from scanconv.answers.sample import sample_solution
+    from scanconv.answers.image.sample import sample_solution
 
     sol = sample_solution(sample_levels("x + y", 1024, 1024, 256))
     tracemalloc.start()

@@ -18,17 +18,11 @@ from typing import Any
 
 import pytest
 
-from scanconv.answers import (
-    attributes,
-    characters,
-    circle,
-    cyrus_beck,
-    dither,
-    framebuffer,
-    inside,
-    line,
-    midpoint_clip,
-)
+from scanconv.answers.image import dither, framebuffer
+from scanconv.answers.primitives import attributes, characters, circle, line
+from scanconv.answers.process.clip import cyrus_beck
+from scanconv.answers.process.clip import midpoint as midpoint_clip
+from scanconv.answers.process.fill import inside
 
 from .helpers import assert_refused, run
 

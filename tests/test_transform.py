@@ -31,14 +31,14 @@ from scanconv.algorithms.transform import (
     translation,
     viewport_scale,
 )
-from scanconv.answers.shapes import MAX_POINTS, text
-from scanconv.answers.transform import (
+from scanconv.answers.process._shared import MAX_POINTS, text
+from scanconv.answers.process.transform import (
     MAX_TRANSFORMS,
     parse_angle,
     parse_transforms,
     transform_solution,
 )
-from scanconv.answers.viewport import viewport_solution
+from scanconv.answers.process.viewport import viewport_solution
 from scanconv.core.checks import InputError
 from scanconv.render import Format, Options, render
 

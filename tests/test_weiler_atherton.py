@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.clipping import polygon_area, sutherland_hodgman
 from scanconv.algorithms.weiler_atherton import weiler_atherton
-from scanconv.answers.weiler_atherton import weiler_atherton_solution
+from scanconv.answers.process.clip.weiler_atherton import weiler_atherton_solution
 from scanconv.core.checks import InputError
 
 U_SHAPE = [(0, 0), (8, 0), (8, 8), (6, 8), (6, 2), (2, 2), (2, 8), (0, 8)]

@@ -13,15 +13,15 @@ from .values import NumberLike, PointsLike, _choice, _flat, _numbers, _rect
 
 if TYPE_CHECKING:
     from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
-    from ..answers import clip as answers_clip
-    from ..answers import clip_polygon as answers_clip_polygon
-    from ..answers import cyrus_beck as answers_cyrus_beck
-    from ..answers import midpoint_clip as answers_midpoint_clip
-    from ..answers import nll as answers_nll
-    from ..answers import pipeline as answers_pipeline
-    from ..answers import transform as answers_transform
-    from ..answers import viewport as answers_viewport
-    from ..answers import weiler_atherton as answers_weiler_atherton
+    from ..answers.process import pipeline as answers_pipeline
+    from ..answers.process import transform as answers_transform
+    from ..answers.process import viewport as answers_viewport
+    from ..answers.process.clip import cyrus_beck as answers_cyrus_beck
+    from ..answers.process.clip import midpoint as answers_midpoint_clip
+    from ..answers.process.clip import nll as answers_nll
+    from ..answers.process.clip import rectangle as answers_clip
+    from ..answers.process.clip import sutherland_hodgman as answers_clip_polygon
+    from ..answers.process.clip import weiler_atherton as answers_weiler_atherton
     from ..core.choices import (
         ClipEndsName,
         FillRuleName,
@@ -33,15 +33,15 @@ if TYPE_CHECKING:
     )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
-    answers_clip = lazy.module("scanconv.answers.clip")
-    answers_clip_polygon = lazy.module("scanconv.answers.clip_polygon")
-    answers_cyrus_beck = lazy.module("scanconv.answers.cyrus_beck")
-    answers_midpoint_clip = lazy.module("scanconv.answers.midpoint_clip")
-    answers_nll = lazy.module("scanconv.answers.nll")
-    answers_pipeline = lazy.module("scanconv.answers.pipeline")
-    answers_transform = lazy.module("scanconv.answers.transform")
-    answers_viewport = lazy.module("scanconv.answers.viewport")
-    answers_weiler_atherton = lazy.module("scanconv.answers.weiler_atherton")
+    answers_clip = lazy.module("scanconv.answers.process.clip.rectangle")
+    answers_clip_polygon = lazy.module("scanconv.answers.process.clip.sutherland_hodgman")
+    answers_cyrus_beck = lazy.module("scanconv.answers.process.clip.cyrus_beck")
+    answers_midpoint_clip = lazy.module("scanconv.answers.process.clip.midpoint")
+    answers_nll = lazy.module("scanconv.answers.process.clip.nll")
+    answers_pipeline = lazy.module("scanconv.answers.process.pipeline")
+    answers_transform = lazy.module("scanconv.answers.process.transform")
+    answers_viewport = lazy.module("scanconv.answers.process.viewport")
+    answers_weiler_atherton = lazy.module("scanconv.answers.process.clip.weiler_atherton")
 
 
 @answers
@@ -73,7 +73,7 @@ def transform(
     Notes
     -----
     sin and cos are exact at multiples of 15 degrees (``√2/2``), otherwise rounded to 6
-    decimals (:mod:`scanconv.answers.transform`).
+    decimals (:mod:`scanconv.answers.process.transform`).
 
     Examples
     --------

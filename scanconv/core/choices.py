@@ -132,7 +132,7 @@ OrderName = Literal["stack", "queue"]
 FillMethodName = Literal["boundary", "flood"]
 """The seed fill (:data:`scanconv.algorithms.seedfill.METHODS`)."""
 InsideRuleName = Literal["both", "even-odd", "nonzero"]
-"""The inside test's rule (:data:`scanconv.answers.inside.RULES`)."""
+"""The inside test's rule (:data:`scanconv.answers.process.fill.inside.RULES`)."""
 BoundaryName = Literal["inside", "outside"]
 """What a point on the boundary counts as (:data:`scanconv.algorithms.inside.BOUNDARY`)."""
 
