@@ -443,6 +443,33 @@ def test_the_spellings_and_the_default_format_the_readme_gives_hold():
     )
 
 
+@pytest.mark.slow  # four runs of practice
+def test_the_practice_options_teaching_md_gives_are_the_programs():
+    """docs/teaching.md's topics, difficulties and count range of ``scanconv practice`` are the
+    command's: the same topics (the notes' and those beyond them), the default topic and
+    difficulty, and ``--count`` from 1 to 200, 10 questions by default."""
+    import json
+
+    options = _options(COMMANDS["practice"])
+    page = TEXT[ROOT / "docs" / "teaching.md"]
+    section = " ".join(page.split("## Practice questions")[1].split("\n## ")[0].split())
+    named = re.search(r"`--topic ([a-z|-]+)` \(default `([a-z]+)`", section)
+    beyond = re.search(r"a topic beyond the notes: (.*?)`--count N`", section)
+    assert named is not None and beyond is not None
+    topics = named[1].split("|") + re.findall(r"`([a-z-]+)`", beyond[1])
+    assert sorted(topics) == sorted(_choices(options["--topic"]) or ())
+    assert named[2] == options["--topic"].default.value
+    levels = re.search(r"`--difficulty ([a-z|]+)`", section)
+    assert levels is not None and levels[1].split("|") == list(
+        _choices(options["--difficulty"]) or ()
+    )
+    assert "`--count N` (1 to 200, default 10)" in section
+    made = run("practice", "--seed", "3", "--topic", "line", "--format", "json")
+    assert made.code == 0 and len(json.loads(made.out)["questions"]) == 10
+    for edge, code in (("0", 2), ("1", 0), ("201", 2)):
+        assert run("practice", "--seed", "3", "--topic", "line", "--count", edge).code == code
+
+
 # --- the modules the docs name -------------------------------------------------------------
 
 DOTTED = re.compile(r"`(scanconv(?:\.[A-Za-z_][A-Za-z0-9_]*)+)")
