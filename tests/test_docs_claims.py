@@ -537,6 +537,7 @@ def _file_exists(name: str) -> bool:
     return any((base / name).exists() for base in (ROOT, ROOT / "scanconv", ROOT / "tests"))
 
 
+@pytest.mark.slow  # it imports every module a page names (numpy's too): up to 0.4 s a page
 @pytest.mark.parametrize("page", PAGES, ids=_id)
 def test_every_module_and_name_a_page_gives_exists(page):
     """A page that names ``scanconv/marking/models.py``, ``marking/tables.py`` or
