@@ -56,6 +56,14 @@ def test_the_readme_puts_the_cheat_sheet_first_and_the_rest_in_docs():
         assert f"](docs/{doc}.md)" in TEXT[README], doc
 
 
+def test_the_python_version_the_readme_asks_for_is_the_packages():
+    said = re.search(r"\(Python (3\.\d+)\+, once\)", TEXT[README])
+    needed = re.search(
+        r'^requires-python = ">=(3\.\d+)"', (ROOT / "pyproject.toml").read_text(), re.M
+    )
+    assert said is not None and needed is not None and said[1] == needed[1]
+
+
 # --- links ---------------------------------------------------------------------------------
 
 LINK = re.compile(r"\]\(([^)\s]+)\)")
