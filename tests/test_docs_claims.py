@@ -553,6 +553,11 @@ def test_every_module_and_name_a_page_gives_exists(page):
     pointing to its old place)."""
     missing = [p for p in PATH.findall(TEXT[page]) if not (ROOT / p).exists()]
     missing += [n for n in DOTTED.findall(TEXT[page]) if not _resolves(n)]
+    for block in re.findall(r"```python\n(.*?)```", TEXT[page], flags=re.S):
+        for module, names in re.findall(r"^(?:>>> )?from (scanconv\S*) import (.+)$", block, re.M):
+            missing += [
+                f"{module}.{n}" for n in re.split(r",\s*", names) if not _resolves(f"{module}.{n}")
+            ]
     code = re.findall(r"`([^`\n]+)`", TEXT[page])
     missing += [
         f for span in code for f in FILE.findall(span) if f not in SKETCHED and not _file_exists(f)
