@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import importlib
 import io
+import itertools
 import re
 import shlex
 import sys
@@ -194,6 +195,21 @@ def test_every_shown_output_is_what_the_program_prints(page, command, shown, mon
     assert _matches(shown, _output(result, tail, shown)), (
         f"{_id(page)}: rerun `{command}` (python -m tests.test_docs_claims {_id(page)})"
     )
+
+
+def test_the_readme_shows_the_exam_questions_it_names():
+    """An answer the README shows as "exam question N" (or "question N") is the command the
+    cheat sheet gives for question N, with display options only added."""
+    text = TEXT[README].split("## What an answer looks like", 1)[1].split("\n## ", 1)[0]
+    rows = dict(re.findall(r"^\| (\d+)\. .*? \| `([^`]+)` \|$", TEXT[README], flags=re.M))
+    chunks = text.split("```text\n$ ")
+    shown = []
+    for before, after in itertools.pairwise(chunks):
+        prose = before.rsplit("```", 1)[-1]  # the words since the block before
+        shown += [(n, after.split("\n", 1)[0]) for n in re.findall(r"question (\d+)", prose)]
+    assert len(shown) >= 3
+    for number, command in shown:
+        assert command.startswith(rows[number] + " "), (number, rows[number], command)
 
 
 def test_the_output_check_sees_a_changed_or_missing_line():
