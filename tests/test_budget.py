@@ -193,7 +193,7 @@ def test_every_estimated_command_has_a_refusal_case():
             covered.add(f"parametric_{args[1]}")
         else:
             covered.add(names[key])
-    # the budgets added by issue 29 have their refusal cases in tests/test_budget_unified.py
+    # the budgets added by issue 29 have their refusal cases in tests/test_budget_entry_points.py
     unified = {"antialias_line", "antialias_circle", "antialias_polygon", "pipeline_line"}
     unified |= {"pipeline_polygon", "bspline_basis"}
     assert covered | unified == set(ESTIMATES)

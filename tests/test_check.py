@@ -6,7 +6,7 @@ The step models that follow-through re-runs are checked against the library's ow
 every octant and for every convention knob.
 
 The two random-input properties (any bytes, any table) run 100 examples each (300 before issue
-29's suite targets); the hand-written wrong tables and ``test_marking_trust`` cover the
+29's suite targets); the hand-written wrong tables and ``test_marking_layouts`` cover the
 reader's known hazards one by one.
 """
 
