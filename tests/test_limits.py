@@ -264,7 +264,7 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "marking.student_table.MAX_TABLE_ROWS": [
         (["check", str(CHECK / "too-many-rows.csv"), "--", "line", "2", "2", "10", "6"], "5000")
     ],
-    "marking.mark.MAX_QUESTION_ROWS": [
+    "marking.limits.MAX_QUESTION_ROWS": [
         (["check", str(CHECK / "slip.csv"), "--", "line", "0", "0", "10001", "0"], "10000")
     ],
     "answers.process.clip.sutherland_hodgman.MAX_VERTICES": [

@@ -14,7 +14,8 @@ from pathlib import Path
 import pytest
 
 from scanconv.cli.sheet import answer_questions, read_questions
-from scanconv.practice.notes import DIFFICULTIES, TOPICS, octant, practice, question_file
+from scanconv.practice.notes import DIFFICULTIES, TOPICS, practice, question_file
+from scanconv.practice.records import octant
 
 from .helpers import assert_refused, run
 
