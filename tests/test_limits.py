@@ -257,7 +257,7 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "answers.process.transform.MAX_TRANSFORMS": [
         (["transform", "0", "0", *["--translate", "1", "1"] * 21], "at most 20 transformations"),
     ],
-    # scanconv check (issue 15): a student's file, and the question it is marked against
+    # scanconv check: a student's file, and the question it is marked against
     "marking.student_table.MAX_TABLE_BYTES": [
         (["check", str(CHECK / "too-large.csv"), "--", "line", "2", "2", "10", "6"], "bytes")
     ],

@@ -48,7 +48,7 @@ def test_a_vertex_on_an_edge_is_refused_by_name() -> None:
 C = st.integers(-9, 9)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=150)
 @given(
     pts=st.lists(st.tuples(C, C), min_size=3, max_size=6, unique=True),
