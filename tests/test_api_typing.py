@@ -1,4 +1,4 @@
-"""One typed public API (issue 26, item 3): the names a type checker sees, the signatures help()
+"""The typed public API: the names a type checker sees, the signatures help()
 shows, every library error an InputError with ``.param``, the numbers the API takes."""
 
 from __future__ import annotations

@@ -32,7 +32,7 @@ def test_ci_runs_the_readme_test_command():
     assert "pip install --quiet -e '.[test]'" in ci and "python3 -m venv" in ci
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("name", COMMANDS)
 def test_every_command_has_help_and_a_readme_mention(name):
     command = typer.main.get_command(app).commands[name]  # type: ignore[attr-defined]

@@ -69,7 +69,7 @@ def test_floor_midpoints_use_the_shift() -> None:
     assert pieces[0].mid == (1, 1)  # 1/2 rounded half up
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=150)
 @given(p1=st.tuples(C, C), p2=st.tuples(C, C))
 def test_exact_midpoints_agree_with_liang_barsky_to_a_unit(p1, p2) -> None:
@@ -88,7 +88,7 @@ def test_exact_midpoints_agree_with_liang_barsky_to_a_unit(p1, p2) -> None:
     assert max(abs(b[0] - lb_[0]), abs(b[1] - lb_[1])) <= 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=150)
 @given(p1=st.tuples(C, C), p2=st.tuples(C, C), how=st.sampled_from(["rounded", "floor"]))
 def test_rounded_midpoints_keep_only_points_inside(p1, p2, how) -> None:
@@ -106,7 +106,7 @@ def test_answer() -> None:
     assert next(r[5] for r in sol.tables[0].rows()) == "split"
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=100)
 @given(
     p1=st.tuples(st.integers(-(10**9), 10**9), st.integers(-(10**9), 10**9)),

@@ -73,7 +73,7 @@ def test_polygons_that_touch_are_clipped(subject, clip, polygons, labels) -> Non
 C = st.integers(-9, 9)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=150)
 @given(
     pts=st.lists(st.tuples(C, C), min_size=3, max_size=6, unique=True),
