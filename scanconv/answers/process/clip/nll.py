@@ -21,7 +21,7 @@ from .._shared import (
     pt,
     rect_quantity,
 )
-from .rectangle import clipped_quantity, code_reason
+from ._shared import clipped_quantity, code_reason
 
 _LIMIT = {"L": "x_{\\min}", "R": "x_{\\max}", "B": "y_{\\min}", "T": "y_{\\max}"}
 
