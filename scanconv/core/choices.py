@@ -162,7 +162,7 @@ ArithmeticName = Literal["exact", "integer"]
 CarryName = Literal["kept", "clamped"]
 """Negative errors ``kept``, or ``clamped`` at 0."""
 BitOrderName = Literal["msb", "lsb"]
-"""A line style's mask read from its most or least significant bit."""
+"""A line style's mask read from its most or least significant bit; a glyph row's leftmost pixel in a byte's most or least significant bit."""
 PackingName = Literal["rows", "columns", "bits"]
 """A bitmap font's packing (:data:`scanconv.algorithms.characters.PACKINGS`)."""
 ColorModelName = Literal["rgb", "cmy", "hsv", "hsi", "grey"]
