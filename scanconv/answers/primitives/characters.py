@@ -11,8 +11,8 @@ from typing import Any
 from ...algorithms import characters as ch
 from ...core.checks import InputError, check_integer
 from ...core.numeric import fmt_pixel
-from ...core.working import tex_text
 from ...core.records import Pixel, Quantity, Solution, Step, Table, heading, rule, worked
+from ...core.working import tex_text
 from ..image._shared import int_tex
 from ..image.storage import size_text
 
