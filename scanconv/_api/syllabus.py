@@ -66,8 +66,10 @@ def inside(
     rule : {"both", "even-odd", "nonzero"}, default "both"
         The rule: crossings of a ray from the point (odd: inside), the winding number (nonzero:
         inside), or both side by side.
-    boundary : {"inside", "outside"}, default "inside"
-        What a point on the boundary counts as.
+    boundary : {"inside", "outside", "left-bottom"}, default "inside"
+        What a point on the boundary counts as: inside, outside, or what the half-open count
+        gives (``left-bottom``: on a left or bottom edge inside, on a right or top edge
+        outside, the scan-line fill's pixel rule).
 
     Returns
     -------

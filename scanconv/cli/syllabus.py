@@ -78,6 +78,7 @@ class Boundary(str, Enum):
 
     inside = "inside"
     outside = "outside"
+    left_bottom = "left-bottom"
 
 
 class BitOrder(str, Enum):
@@ -237,7 +238,12 @@ def inside(
         InsideRule, choice("--rule", help="even-odd, nonzero winding, or both.")
     ] = InsideRule.both,
     boundary: Annotated[
-        Boundary, choice("--boundary", help="A point on the boundary is inside or outside.")
+        Boundary,
+        choice(
+            "--boundary",
+            help="A point on the boundary is inside, outside, or as the count says "
+            "(left-bottom: on a left or bottom edge inside, a right or top edge outside).",
+        ),
     ] = Boundary.inside,
 ) -> Solution:
     """Inside-outside test: each point against each edge, the crossings and the winding number.

@@ -136,7 +136,7 @@ FillMethodName = Literal["boundary", "flood"]
 """The seed fill (:data:`scanconv.algorithms.seedfill.METHODS`)."""
 InsideRuleName = Literal["both", "even-odd", "nonzero"]
 """The inside test's rule (:data:`scanconv.answers.process.fill.inside.RULES`)."""
-BoundaryName = Literal["inside", "outside"]
+BoundaryName = Literal["inside", "outside", "left-bottom"]
 """What a point on the boundary counts as (:data:`scanconv.algorithms.inside.BOUNDARY`)."""
 
 # --- images, dithering, attributes, characters, colour ---------------------------------------
