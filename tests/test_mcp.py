@@ -535,7 +535,19 @@ def inspect(inspector: Path, *args: str, refused: bool = False) -> Any:
     """The Inspector's JSON for one request to ``scanconv mcp`` (it exits 5 for a tool result
     with ``isError``)."""
     done = subprocess.run(
-        [str(inspector), "--cli", sys.executable, "-m", "scanconv", "mcp", *args],
+        # a generous connect timeout (the Inspector's default, 15 s, is a hang guard that a
+        # loaded machine's Python start-up can exceed: not a timing of scanconv)
+        [
+            str(inspector),
+            "--cli",
+            sys.executable,
+            "-m",
+            "scanconv",
+            "mcp",
+            *args,
+            "--connect-timeout",
+            "120000",
+        ],
         capture_output=True,
         text=True,
         timeout=300,
