@@ -501,6 +501,7 @@ def test_the_presets_the_readme_names_are_the_programs():
     assert ["notes", *re.findall(r"`([a-z-]+)`", said[1])] == list(PRESETS)
 
 
+@pytest.mark.slow  # four answers
 def test_the_spellings_and_the_default_format_the_readme_gives_hold():
     """A point typed ``2,2`` or ``(2,2)`` and a size ``1024x768`` are the plain numbers, and
     Markdown is the format when the output is not a terminal (as in these in-process runs)."""
