@@ -20,6 +20,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from scanconv.algorithms.process_choices import LineClipMethod
 from scanconv.cli.sheet import answer_questions, read_questions
 from scanconv.render.sheet import sheet_document
 
@@ -95,7 +96,8 @@ def gift_leaks(text: str) -> list[tuple[str, str, set[Fraction]]]:
 
 
 coord = st.integers(0, 12)
-METHODS = ("cohen-sutherland", "liang-barsky", "cyrus-beck", "nicholl-lee-nicholl")
+METHODS = tuple(m.value for m in LineClipMethod)
+"""Every line clipping method of ``clip line -m``."""
 
 
 @st.composite
