@@ -263,7 +263,7 @@ def test_bspline_agrees_with_scipy_on_random_inputs():
             x = float(t)
             if t == knots[n + 1]:
                 # scipy looks up the span [t_n-1, t_n) at the right end, which is empty when the
-                # end knot is repeated (the trap the issue names): compare with its left limit.
+                # end knot is repeated (a known trap): compare with its left limit.
                 x = float(np.nextafter(x, -np.inf))
             theirs = ref(x)
             assert lo <= x <= hi

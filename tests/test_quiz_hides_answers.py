@@ -141,8 +141,8 @@ def test_no_blank_is_answered_beside_it(lines: list[str]) -> None:
     assert gift_leaks(gift) == []
 
 
-def test_the_issue_s_questions_hide_their_working() -> None:
-    """The three questions of the report: the working stays in the feedback."""
+def test_clip_polygon_and_transform_questions_hide_their_working() -> None:
+    """The three questions whose working once showed the answer: it stays in the feedback."""
     xml, gift = quiz_files(
         [
             "clip line 7 9 11 4 --window 4 4 10 8",
