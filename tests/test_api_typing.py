@@ -224,6 +224,7 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
     tuples = {
         "RasterLineName": raster.LINE_ALGORITHMS, "NormalsName": cyrus_beck.NORMALS,
         "ClipEndsName": cyrus_beck.ENDS, "MidpointName": midpoint_clip.MIDPOINTS,
+        "MidpointStopName": midpoint_clip.STOPS,
         "FillMethodName": seedfill.METHODS, "InsideRuleName": answers_inside.RULES,
         "BoundaryName": inside.BOUNDARY, "ReconName": quantize.RECON,
         "OriginName": sample.ORIGINS, "PackingName": characters.PACKINGS,

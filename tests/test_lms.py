@@ -458,6 +458,30 @@ def test_notice_for_an_essay_fallback(tmp_path: Path) -> None:
 
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop
+def test_the_marks_notice_names_each_question_in_whole_words(tmp_path: Path) -> None:
+    """A question of fewer marks than blanks is named on stderr by its number, its title cut
+    at a word (never "rotate by 9" for "rotate by 90") and its blank count, the number of
+    Cloze blanks Moodle reads in that question."""
+    questions = tmp_path / "q.txt"
+    questions.write_text(
+        "[3] transform 0 0 4 0 4 3 --rotate 90 --about 2 1\n[4] circle 5\n", encoding="utf-8"
+    )
+    out = tmp_path / "quiz.xml"
+    done = subprocess.run(
+        [*SCANCONV, "sheet", str(questions), "-o", str(out)], capture_output=True, text=True
+    )
+    assert done.returncode == 0 and done.stdout == "", done.stderr
+    quiz = read_moodle(out.read_text(encoding="utf-8"))
+    named = re.findall(r"(Q\d+) \((.*?)\) to (\d+) \(it has (\d+) blanks\)", done.stderr)
+    assert [n[0] for n in named] == ["Q1", "Q2"]
+    for (_, shown, marks, blanks), question, want in zip(named, quiz, (3, 4), strict=True):
+        assert (int(marks), int(blanks)) == (want, len(question.blanks))
+        title = question.name.partition(" ")[2]
+        words = shown.removesuffix(" ...").split(" ")
+        assert title.split(" ")[: len(words)] == words, (shown, title)
+
+
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_practice_writes_both_quiz_files(tmp_path: Path, gift_reader: GiftReader) -> None:
     """practice: the worksheet as GIFT, the key as Moodle XML, from the same questions."""
     gift_file, xml_file = tmp_path / "quiz.gift", tmp_path / "quiz.xml"
