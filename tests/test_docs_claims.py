@@ -1,5 +1,5 @@
 """Every count and claim the README and docs/ make about the program, checked against the
-program (issue 39, item 6): the README's length, its links and the docs' links, every output
+program: the README's length, its links and the docs' links, every output
 a page shows, every command line and flag a page names, the counts (topics, exam questions,
 commands), the formats and presets listed, the modules named, and pandoc's reading of the
 README.
