@@ -290,7 +290,20 @@ def test_the_mode_fits_a_phone(quiz):
     for sel in ("input[name=p]", "select[name=decision]", "input[name=pixel]"):
         b = q.page.locator(sel).bounding_box()
         assert b is not None and b["x"] + b["width"] <= 390, sel
+    # targets of at least 24 CSS px (WCAG 2.2, 2.5.8): the grid's cells (13 px before) and the
+    # controls; a grid too wide for the screen scrolls in its own box, never the page
+    sizes = q.page.evaluate(TARGETS)
+    assert len(sizes) > 10 and [s for s in sizes if min(s[1], s[2]) < 24] == []
+    assert q.page.evaluate("document.documentElement.scrollWidth") <= 390
+    q.page.screenshot(path="/tmp/site2-selftest-phone.png")
     q.answer("-4", "E", (3, 8))
+
+
+TARGETS = """() => [...document.querySelectorAll(`svg.sc-stepgrid rect.sc-px, .sc-testpanel input,
+  .sc-testpanel select, .sc-testpanel button, .sc-selftest button`)]
+  .filter(e => e.getClientRects().length)
+  .map(e => { const r = e.getBoundingClientRect(); return [e.tagName, r.width, r.height]; })"""
+"""The tag, width and height of every target of the test on the screen."""
 
 
 def test_the_tip_of_a_flat_ellipse_asks_the_pixel_only(quiz):

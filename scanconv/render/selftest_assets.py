@@ -44,7 +44,7 @@ border-radius:4px}
 .scanconv.sc-testing svg.sc-stepgrid{cursor:crosshair}
 .scanconv .sc-selftest button,.scanconv .sc-testpanel button,.scanconv .sc-testpanel select,\
 .scanconv .sc-tform input{min-height:28px;min-width:28px}
-.scanconv.sc-testing .sc-stepper{overflow-x:auto}
+.scanconv .sc-gridbox{overflow-x:auto;max-width:100%}
 .scanconv.sc-testing svg.sc-stepgrid{max-height:none}
 @media (max-width:600px){.scanconv .sc-tform input{width:6.5em}\
 .scanconv.sc-testing .sc-stepper{position:static}}
@@ -177,7 +177,7 @@ SELFTEST_JS = r"""
       pLab.append(pName, pIn);
       dLab.append(el("span", "", "decision"), dIn);
       xyLab.append(el("span", "", dda ? "pixel" : "next pixel"), xyIn);
-      check.type = "submit";
+      check.type = "button";  // no form submission: a sandboxed frame (the site's) blocks it
       form.append(pLab, dLab, xyLab, check);
       var next = el("button", "", "Next step"), stop = el("button", "", "Stop");
       next.type = "button"; stop.type = "button";
@@ -185,11 +185,21 @@ SELFTEST_JS = r"""
       bar.append(next, stop);
       panel.append(q, form, feed, score, bar);
 
+      // a grid wider than its box (its cells kept large): the step's pixel scrolled into sight
+      function inSight(at) {
+        var box = gridBox, c = data.centre || [0, 0];
+        if (!box || box.scrollWidth <= box.clientWidth) { return; }
+        var px = svg.querySelector('rect.sc-px[data-x="' + (at[0] + c[0]) + '"][data-y="' + (at[1] + c[1]) + '"]');
+        if (!px) { return; }
+        var b = px.getBoundingClientRect(), o = box.getBoundingClientRect();
+        box.scrollLeft += b.left + b.width / 2 - (o.left + o.width / 2);
+      }
       function ask() {
         var r = rows[i];
         waiting = true;
         hideFrom(r.row);
         goTo(r.lit);
+        inSight(r.at);
         var last = typed.length && T.pixel(typed[typed.length - 1].pixel);
         var own = last && (last[0] !== r.at[0] || last[1] !== r.at[1]) ? " (or from your own " + pt(last) + ")" : "";
         q.textContent = "Step " + (i + 1) + " of " + rows.length + ": from " + (dda ? "(" + r.xyt.join(", ") + ")" : pt(r.at)) + (T.host ? own : "") +
@@ -297,8 +307,12 @@ SELFTEST_JS = r"""
         next.hidden = false;
         next.focus();
       }
-      form.addEventListener("submit", function (e) {
-        e.preventDefault();
+      form.addEventListener("submit", function (e) { e.preventDefault(); });
+      root.addEventListener("keydown", function (e) {  // on the root: the stepper's keys stop there
+        if (e.key === "Enter" && !e.isComposing && form.contains(e.target)) { e.preventDefault(); checkStep(); }
+      }, true);
+      check.addEventListener("click", checkStep);
+      function checkStep() {
         if (!waiting) { return; }
         waiting = false;
         var r = rows[i];
@@ -317,16 +331,21 @@ SELFTEST_JS = r"""
           return;
         }
         judged(r, got + (dda ? judgeDda(r) : judge(r)), asked + parts(r));
-      });
+      }
       next.addEventListener("click", function () {
         if (i >= rows.length) { i = 0; got = 0; asked = 0; typed = []; score.textContent = ""; }
         ask();
       });
       // a grid cell is a target to tap: at least 26 CSS px while testing (WCAG 2.2's 24 px
       // minimum), the grid scrolling sideways in its box if the screen is narrower
-      var cell = root.querySelector("svg.sc-stepgrid rect.sc-px");
+      var cell = root.querySelector("svg.sc-stepgrid rect.sc-px"), gridBox = null;
       function targets(on) {
         if (!svg || !cell || !svg.viewBox || !svg.viewBox.baseVal) { return; }
+        if (!gridBox) {  // the grid alone scrolls sideways, in a box of its own
+          gridBox = el("div", "sc-gridbox");
+          svg.parentNode.insertBefore(gridBox, svg);
+          gridBox.appendChild(svg);
+        }
         var units = svg.viewBox.baseVal.width, size = +cell.getAttribute("width");
         svg.style.minWidth = on && size > 0 ? Math.ceil(units * 26 / size) + "px" : "";
       }

@@ -76,6 +76,7 @@ function show(m, ms) {
   $("notes").textContent = m.notes.join("; ");
   $("notes").hidden = !m.notes.length;
   shownQuestion = m.question;
+  scrollPending = true;
   showPage(m.html);
   $("json").textContent = m.json;
   setStatus(`${m.title} (answered in ${Math.round(ms)} ms)`, "answered");
@@ -84,10 +85,12 @@ function show(m, ms) {
 
 // On a small screen the answer starts below the question box, the examples and the forms
 // (on a 390 x 844 phone, below the fold): once shown, an answer whose top is not in the upper
-// half of the screen is scrolled up to the top of it.
+// quarter of the screen is scrolled up to the top of it; again when its frame has reported
+// its height (until then the page may be too short to scroll that far).
+let scrollPending = false;
 function intoView() {
   const top = $("answer").getBoundingClientRect().top;
-  if (top < 0 || top > window.innerHeight / 2) $("answer").scrollIntoView({ block: "start" });
+  if (top < 0 || top > window.innerHeight / 4) $("answer").scrollIntoView({ block: "start" });
 }
 
 // The answer's page runs in a sandboxed frame (sandbox="allow-scripts", no same origin: its
@@ -131,6 +134,10 @@ window.addEventListener("message", (event) => {
   const height = Number(event.data.scanconvHeight);
   if (Number.isFinite(height) && height > 0) {
     frame.style.height = Math.min(Math.ceil(height) + 4, 1e6) + "px"; // and its borders
+    if (scrollPending) {
+      scrollPending = false;
+      intoView();
+    }
   }
 });
 
