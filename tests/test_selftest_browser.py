@@ -148,6 +148,18 @@ def test_a_wrong_bresenham_line_is_marked_with_follow_through(quiz):
     assert q.score() == "Score: 21 / 24 (88 %)"
 
 
+def test_the_rules_own_pixel_after_a_wrong_decision_word_is_right(quiz):
+    """The walkthrough's step (issue 39, item 3): p0 = 0, decision E, and the right pixel
+    (3, 3). The pixel is the rule's own step, so the decision word is the one slip, as
+    ``check`` judges it: the pixel is not called wrong (it was: 1 of 3 marks)."""
+    q = quiz(*LINE)
+    q.start()
+    f = q.answer("0", "E", "3, 3")
+    assert "\u2717 decision: E; p\u2080 = 0 chooses NE" in f
+    assert "\u2713 next pixel (3, 3) (the rule's step: the decision was the slip)" in f
+    assert q.score() == "Score so far: 2 / 3"
+
+
 def test_the_table_hides_from_the_current_row_on_and_the_stepper_keys_give_nothing_away(quiz):
     q = quiz(*LINE)
     q.start()

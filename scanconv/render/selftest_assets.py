@@ -262,6 +262,12 @@ SELFTEST_JS = r"""
         var to = [r.at[0] + moves[move][0], r.at[1] + moves[move][1]];
         var px = T.pixel(xyIn.value), okX = !!px && px[0] === to[0] && px[1] === to[1];
         var from = move === r.d ? "" : " (follow-through from your decision)";
+        var ruled = [r.at[0] + moves[dWant][0], r.at[1] + moves[dWant][1]];
+        if (!okX && px && px[0] === ruled[0] && px[1] === ruled[1]) {
+          // the pixel the rule's own step reaches: the decision word was the one slip (as check
+          // judges it: a right cell is never called wrong)
+          okX = true; to = ruled; from = " (the rule's step: the decision was the slip)";
+        }
         line(okX, okX ? "next pixel " + pt(to) + from : "next pixel: " + move + " from " + pt(r.at) + " goes to " + pt(to) + (px ? ", not " + pt(px) : ""));
         marks += okX ? 1 : 0;
         var tail = want === null ? "the next pixel is " + r.d + ": " + pt(r.to) :
