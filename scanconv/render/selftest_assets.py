@@ -330,7 +330,11 @@ SELFTEST_JS = r"""
           feed.textContent = "Checking\u2026";
           T.judged(typed.slice(), function (res) {
             feed.textContent = "";
-            if (res.error || !res.parts) { line(false, "The site could not judge this step: " + (res.error || "no answer")); judged(r, got, asked); return; }
+            if (res.error || !res.parts) {  // the site cannot mark this answer: judged here, from now on
+              T.host = null; byHost = false;
+              judged(r, got + (dda ? judgeDda(r) : judge(r)), asked + parts(r));
+              return;
+            }
             showJudged(r, res);
             judged(r, res.score[0], res.score[1]);
           });
