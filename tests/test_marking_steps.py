@@ -1,10 +1,10 @@
 """Steps typed one at a time (the site's "Test yourself") are marked as ``check`` marks the
 same steps written as a student's CSV (issue 39, item 3: one account of a slip).
 
-:func:`scanconv.answers.marking.mark_steps` is what the site's page asks for each step. For
+:func:`scanconv.marking.mark.mark_steps` is what the site's page asks for each step. For
 every method with a marking model, every single slip (each field of each step made wrong in
 turn) gets the score, the expected column and the first-error sentence ``check`` gives for
-the CSV a student writes with that slip (:func:`~scanconv.answers.marking.mark_text`, the
+the CSV a student writes with that slip (:func:`~scanconv.marking.mark.mark_text`, the
 reading of ``scanconv check``). A line with one slip carried on is worked by hand.
 """
 
@@ -15,12 +15,12 @@ from fractions import Fraction
 
 import pytest
 
-from scanconv.answers.marking import mark_steps, mark_text
-from scanconv.answers.marking_diagnose import model_for, states_steps
-from scanconv.answers.marking_text import expected_text
-from scanconv.answers.models import DDALine, chain
 from scanconv.core.checks import InputError
 from scanconv.core.numeric import fmt_short
+from scanconv.marking.diagnose import model_for, states_steps
+from scanconv.marking.mark import mark_steps, mark_text
+from scanconv.marking.models import DDALine, chain
+from scanconv.marking.words import expected_text
 from scanconv.questions.marking import marking_question
 from scanconv.render.selftest_marks import feedback
 

@@ -189,7 +189,7 @@ SELFTEST_JS = r"""
       function inSight(at) {
         var box = gridBox, c = data.centre || [0, 0];
         if (!box || box.scrollWidth <= box.clientWidth) { return; }
-        var px = svg.querySelector('rect.sc-px[data-x="' + (at[0] + c[0]) + '"][data-y="' + (at[1] + c[1]) + '"]');
+        var px = root.querySelector('svg.sc-stepgrid rect.sc-px[data-x="' + (at[0] + c[0]) + '"][data-y="' + (at[1] + c[1]) + '"]');
         if (!px) { return; }
         var b = px.getBoundingClientRect(), o = box.getBoundingClientRect();
         box.scrollLeft += b.left + b.width / 2 - (o.left + o.width / 2);

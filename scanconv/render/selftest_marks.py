@@ -1,7 +1,7 @@
 """The "Test yourself" feedback of a step, in the words of ``check``'s own judgement.
 
 The site's page hands the steps a student has typed so far to the library's marking
-(:func:`scanconv.answers.marking.mark_steps`, the follow-through ``check`` marks a table
+(:func:`scanconv.marking.mark.mark_steps`, the follow-through ``check`` marks a table
 by); :func:`feedback` turns its verdict on the last step into what the page shows: each
 answer right or wrong with the value it was judged against, the expected step as ``check``'s
 expected column writes it, the first-error sentence's reason, and the score in steps, as
@@ -12,8 +12,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..answers.marking_rows import Marking
-from ..answers.marking_text import expected_text, explain, got_text
+from ..marking.rows import Marking
+from ..marking.words import expected_text, explain, got_text
 
 
 def _value(text: str) -> str:
@@ -24,8 +24,8 @@ def _value(text: str) -> str:
 def feedback(marking: Marking) -> dict[str, Any]:
     """The verdict on ``marking``'s last step as the page shows it (``{}``: no step).
 
-    >>> from scanconv.answers.line import line_solution
-    >>> from scanconv.answers.marking import mark_steps
+    >>> from scanconv.answers.primitives.line import line_solution
+    >>> from scanconv.marking.mark import mark_steps
     >>> s = line_solution("bresenham", 2, 2, 10, 6)
     >>> f = feedback(mark_steps(s, [{"p": "0", "decision": "E", "pixel": "3, 3"}]))
     >>> f["mark"], f["parts"][1], f["expected"], f["score"]

@@ -22,7 +22,7 @@ from ..render import Format, Notice, render
 
 if TYPE_CHECKING:
     from .. import questions
-    from ..answers import marking
+    from ..marking import mark as marking
     from ..questions import limits, parser
     from ..questions import marking as questions_marking
     from ..render import selftest_marks
@@ -30,7 +30,7 @@ else:
     questions = lazy.module("scanconv.questions")
     limits = lazy.module("scanconv.questions.limits")
     parser = lazy.module("scanconv.questions.parser")
-    marking = lazy.module("scanconv.answers.marking")
+    marking = lazy.module("scanconv.marking.mark")
     questions_marking = lazy.module("scanconv.questions.marking")
     selftest_marks = lazy.module("scanconv.render.selftest_marks")
 
@@ -150,7 +150,7 @@ def judge(question: str, steps: str) -> str:
     """The verdict on the last of the steps a student has typed into "Test yourself" on the
     answer to ``question`` (``steps``: a JSON list of ``{"p", "decision", "pixel"}``, the
     DDA's ``{"exact", "pixel"}``), judged by the library's marking, the follow-through of
-    ``check`` (:func:`scanconv.answers.marking.mark_steps`), as JSON
+    ``check`` (:func:`scanconv.marking.mark.mark_steps`), as JSON
     (:func:`scanconv.render.selftest_marks.feedback`), or ``{"error"}``.
 
     >>> steps = [{"p": "0", "decision": "NE", "pixel": "3, 3"},
