@@ -201,3 +201,43 @@ def test_a_shared_link_to_the_answer_scrolls_too(browser: Any, origin: str) -> N
         assert 0 <= top < 5
     finally:
         opened.close()
+
+
+@pytest.mark.parametrize("question", ["line 0 0 6 3 --algo dda", "ellipse 6 4", "circle 6"])
+def test_every_marked_method_on_the_site_scores_a_slip_as_check(
+    phone: Site, tmp_path: Path, question: str
+) -> None:
+    """The DDA (exact values and the pixel), an ellipse (both regions, its tip) and a circle:
+    every step typed, the second with a slip, as check marks the same CSV."""
+    from .test_marking_steps import _csv, _slip, _typed
+
+    steps, dda = _typed(question)
+    first = "exact" if dda else "p"
+    steps[1][first] = _slip(steps[1][first], first)
+    csv = tmp_path / "student.csv"
+    csv.write_text(_csv(steps, dda))
+    r = run_process("check", str(csv), "-f", "json", "--", *question.split())
+    assert r.code == 0, r.err
+    data = json.loads(r.out)
+    expected = [row[3] for row in data["tables"][0]["rows"] if row[0] > 0]
+    phone.ask(question)
+    frame = phone.page.frame_locator("#answer")
+    frame.locator("section.scanconv[data-ready]").wait_for()
+    frame.locator("[data-selftest]").click()
+    shown = []
+    for i, step in enumerate(steps):
+        if frame.locator("input[name=p]").is_visible():
+            frame.locator("input[name=p]").fill(step["exact"] if dda else step["p"])
+        if frame.locator("select[name=decision]").is_visible():
+            frame.locator("select[name=decision]").select_option(step["decision"])
+        frame.locator("input[name=pixel]").fill(step["pixel"])
+        frame.get_by_role("button", name="Check").click()
+        said = frame.locator(".sc-tfeed .sc-texp")
+        said.wait_for()
+        shown.append(said.inner_text().replace("\u2212", "-").split(": ", 1)[1])
+        if i + 1 < len(steps):
+            frame.get_by_role("button", name="Next step").click()
+    assert shown == expected
+    score = frame.locator(".sc-tscore").inner_text()
+    assert score.startswith(f"Score: {data['score']} / {data['out_of']} steps right")
+    assert data["score"] < data["out_of"]  # the slip cost a step
