@@ -150,3 +150,14 @@ def test_typed_words_are_read_as_check_reads_a_cell() -> None:
 def test_a_question_without_a_step_model_is_refused() -> None:
     with pytest.raises(InputError, match="no step model"):
         mark_steps(marking_question("circle 5 --method polynomial"), [{"pixel": "0, 5"}])
+
+
+def test_the_site_marks_at_most_its_steps() -> None:
+    """The site's judge marks the first :data:`~scanconv.site.page.MAX_STEPS` steps sent."""
+    import json
+
+    from scanconv.site.page import MAX_STEPS, judge
+
+    step = {"p": "0", "decision": "NE", "pixel": "3, 3"}
+    r = json.loads(judge("line 2 2 10 6", json.dumps([step] * (MAX_STEPS + 5))))
+    assert r["score"][1] == MAX_STEPS and r["mark"] == "extra"

@@ -143,7 +143,8 @@ def warm() -> None:
 
 
 MAX_STEPS = 1000
-"""Most steps of "Test yourself" :func:`judge` marks (the page asks at most 400)."""
+"""Most steps of "Test yourself" :func:`judge` marks (the page asks at most
+:data:`~scanconv.render.stepper.MAX_TABLE_ROWS`, 1,000; the site's script forwards as many)."""
 
 
 def judge(question: str, steps: str) -> str:

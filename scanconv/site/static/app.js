@@ -107,6 +107,7 @@ function showPage(html) {
   const old = $("answer");
   const frame = old.cloneNode(false);
   frame.removeAttribute("style");
+  frame.removeAttribute("data-host"); // a new page, told again that it may ask for judgements
   const end = html.lastIndexOf("</body>");
   frame.srcdoc =
     end < 0 ? html + HEIGHT_REPORT : html.slice(0, end) + HEIGHT_REPORT + html.slice(end);
@@ -114,8 +115,9 @@ function showPage(html) {
 }
 
 // The frame's "Test yourself" asks this page to judge each step with the library's marking
-// (check's follow-through): it says hello, is told it may ask, and sends the steps typed so
-// far (a list of short texts); the worker judges them on the question the frame shows.
+// (check's follow-through): told that it may (scanconvHost, once its page has loaded and
+// reported its height), it sends the steps typed so far (a list of short texts); the worker
+// judges them on the question the frame shows.
 function judgeRequest(frame, ask) {
   if (!ask || typeof ask.id !== "string" || !Array.isArray(ask.steps) || ask.steps.length > 1000) return;
   const steps = ask.steps.map((s) =>
@@ -129,7 +131,10 @@ function judgeRequest(frame, ask) {
 window.addEventListener("message", (event) => {
   const frame = $("answer");
   if (event.source !== frame.contentWindow || !event.data) return;
-  if (event.data.scanconvHello && ready) frame.contentWindow.postMessage({ scanconvHost: "judge" }, "*");
+  if (event.data.scanconvHeight && !frame.dataset.host) {
+    frame.dataset.host = "1";
+    frame.contentWindow.postMessage({ scanconvHost: "judge" }, "*");
+  }
   if (event.data.scanconvJudge && ready && shownQuestion !== null) judgeRequest(frame, event.data.scanconvJudge);
   const height = Number(event.data.scanconvHeight);
   if (Number.isFinite(height) && height > 0) {
