@@ -152,7 +152,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('inside',): Spec(('inside',), 'inside', (
         Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ... --points X Y ...', help="The polygon's vertices in order, then --points and the points to test."),
         Param('rule', ('--rule',), 'choice', default='both', choices=('both', 'even-odd', 'nonzero'), help='even-odd, nonzero winding, or both.'),
-        Param('boundary', ('--boundary',), 'choice', default='inside', choices=('inside', 'outside'), help='A point on the boundary is inside or outside.'),
+        Param('boundary', ('--boundary',), 'choice', default='inside', choices=('inside', 'outside', 'left-bottom'), help='A point on the boundary is inside, outside, or as the count says (left-bottom: on a left or bottom edge inside, a right or top edge outside).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('words', 'rule', 'boundary'), ignore_unknown=True),
     ('framebuffer',): Spec(('framebuffer',), 'framebuffer', (
@@ -269,8 +269,9 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('normals', ('--normals',), 'choice', choices=('outward', 'inward'), help='cyrus-beck: the edge normals point outward (default) or inward.'),
         Param('ends', ('--ends',), 'choice', choices=('exact', 'truncated'), help='cyrus-beck: the clipped end points exact (default) or truncated.'),
         Param('midpoint', ('--midpoint',), 'choice', choices=('rounded', 'floor', 'exact'), help='midpoint-subdivision: each midpoint rounded (default), floored or exact.'),
+        Param('stop', ('--stop',), 'choice', choices=('length', 'edge'), help="midpoint-subdivision: split until one unit long (length, default), or also stop where a midpoint lands on the window's edge (edge)."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('x1', 'y1', 'x2', 'y2', 'window', 'method', 'normals', 'ends', 'midpoint'), ignore_unknown=True),
+    ), own=('x1', 'y1', 'x2', 'y2', 'window', 'method', 'normals', 'ends', 'midpoint', 'stop'), ignore_unknown=True),
     ('clip', 'convex'): Spec(('clip', 'convex'), 'clip_convex', (
         Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 --window-vertices X Y X Y X Y ...', help="The segment's end points, then --window-vertices and the convex window's vertices in order."),
         Param('normals', ('--normals',), 'choice', choices=('outward', 'inward'), help='cyrus-beck: the edge normals point outward (default) or inward.'),
@@ -278,11 +279,11 @@ SPECS: dict[tuple[str, ...], Spec] = {
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('words', 'normals', 'ends'), ignore_unknown=True),
     ('clip', 'polygon'): Spec(('clip', 'polygon'), 'clip_polygon', (
-        Param('vertices', (), 'number', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ...', help="The polygon's vertices, in order."),
-        Param('window', ('--window', '-w'), 'number', nargs=4, required=True, help='The clipping window in world coordinates (closed: its edges are inside).'),
+        Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ... [--window-vertices X Y X Y X Y ...]', help="The polygon's vertices in order; then, for a window of any shape, --window-vertices and its vertices in order (convex for Sutherland-Hodgman)."),
+        Param('window', ('--window', '-w'), 'number', nargs=4, help='A rectangular clipping window in world coordinates (closed: its edges are inside); or give --window-vertices after the polygon.'),
         Param('method', ('--method', '-m'), 'choice', default='sutherland-hodgman', choices=('sutherland-hodgman', 'weiler-atherton'), help='Polygon clipping method.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('vertices', 'window', 'method'), ignore_unknown=True),
+    ), own=('words', 'window', 'method'), ignore_unknown=True),
     ('dither', 'threshold'): Spec(('dither', 'threshold'), 'dither_threshold', (
         Param('image', ('--image', '-i'), 'text', required=True, help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: '10 200; 60 90'."),
         Param('top', ('--top',), 'number', default=Fraction(255, 1), help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
@@ -321,8 +322,9 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('rows', ('--rows', '-r'), 'text', help="The glyph's rows, top first, separated by '/': 01110/10001/... (default: the 5 x 7 font's)."),
         Param('at', ('--at',), 'number', nargs=2, help="The character's bottom-left corner (default 0 0)."),
         Param('scale', ('--scale',), 'number', help='Scale factor, 1..16 (default 1).'),
+        Param('bit_order', ('--bit-order',), 'choice', default='msb', choices=('msb', 'lsb'), help="The glyph's bytes: a row's leftmost pixel the most significant bit (msb, the usual font: a row reads as written) or the least (lsb)."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('char', 'rows', 'at', 'scale'), ignore_unknown=True),
+    ), own=('char', 'rows', 'at', 'scale', 'bit_order'), ignore_unknown=True),
     ('char', 'stroke'): Spec(('char', 'stroke'), 'char_stroke', (
         Param('char', (), 'text', required=True, metavar='CHAR', help='The character (A-Z, 0-9).'),
         Param('at', ('--at',), 'number', nargs=2, help="The character's bottom-left corner (default 0 0)."),
@@ -335,8 +337,11 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('width', (), 'number', required=True, metavar='WIDTH', help="A glyph's width in pixels."),
         Param('height', (), 'number', required=True, metavar='HEIGHT', help="A glyph's height in pixels."),
         Param('packing', ('--packing',), 'choice', default='rows', choices=('rows', 'columns', 'bits'), help='A glyph in whole bytes per row, per column, or packed bits.'),
+        Param('char', ('--char',), 'text', help="A character whose glyph's number and address the font table gives."),
+        Param('first', ('--first',), 'number', help="The code of the font's first glyph (default 0)."),
+        Param('base', ('--base',), 'text', help="The first glyph's byte address, decimal or 0x hexadecimal (default 0)."),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('count', 'width', 'height', 'packing'), ignore_unknown=True),
+    ), own=('count', 'width', 'height', 'packing', 'char', 'first', 'base'), ignore_unknown=True),
     ('pipeline', 'line'): Spec(('pipeline', 'line'), 'pipeline_line', (
         Param('x1', (), 'number', required=True, metavar='x1'),
         Param('y1', (), 'number', required=True, metavar='y1'),
