@@ -77,6 +77,10 @@ class Spec(NamedTuple):
     :data:`~scanconv.render.budget.SHEET_ROWS`. A GIFT quiz writes each blank as a question
     carrying the stem and the working: about 4.7 KB a row (80,000 rows: 373 MB, 1.58 GB of
     memory), so it holds 10,000 rows (about 47 MB)."""
+    mapping: str = ""
+    """``module:NAME`` in :mod:`scanconv.render` of its mapping from block types to text, for
+    a block written alone (``exam --contents``: the contents with nothing answered); ``""``:
+    none (json writes the contents as data, the others have no such page)."""
 
     @property
     def serves(self) -> tuple[str, ...]:
@@ -99,6 +103,7 @@ FORMATS: dict[str, Spec] = {
         256 * 256,
         sheet="sheet_latex:latex_sheet",
         row_factor=15,
+        mapping="latex:LATEX",
     ),
     "markdown": Spec(
         "text:render_markdown",
@@ -108,6 +113,7 @@ FORMATS: dict[str, Spec] = {
         256 * 256,
         sheet="sheet:markdown_sheet",
         row_factor=14,
+        mapping="text:MARKDOWN",
     ),
     "plain": Spec(
         "text:render_plain",
@@ -117,6 +123,7 @@ FORMATS: dict[str, Spec] = {
         1024 * 1024,
         sheet="sheet:plain_sheet",
         row_factor=9,
+        mapping="text:PLAIN",
     ),
     "csv": Spec("data:render_csv", (".csv",), True, 20.0, streams=True, row_factor=1),
     "json": Spec(
