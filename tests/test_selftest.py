@@ -283,9 +283,15 @@ def test_every_answer_of_a_document_and_a_notebook_answer_get_their_own_test():
 
 
 def test_an_answer_whose_table_is_not_the_models_gets_no_test():
-    # tie = keep without its conventions recorded: the model (tie = step) would not give this
-    # table, so the page offers no test rather than a wrong rule
+    # the answer keeps its question, so an answer without its conventions in the JSON (no
+    # annotate) is still tested by its own rule: tie = keep, p = 0 keeps y (E)
     bare = line.line_solution("bresenham", 2, 2, 10, 6, tie="keep")
+    own = descriptor(bare)
+    assert own is not None and own["rules"][0]["zero"] == "E"
+    # a question that is not the table's (tie = step against a tie = keep table): the model
+    # would not give this table, so the page offers no test rather than a wrong rule
+    q = bare.question
+    bare.question = q._replace(knobs=q.knobs._replace(tie="step"))
     assert descriptor(bare) is None
     assert BUTTON not in answer_section(bare, "sc1")
 
