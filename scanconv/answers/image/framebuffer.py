@@ -12,7 +12,7 @@ from typing import Any
 from ...algorithms.storage import sizes
 from ...core.checks import InputError, check_positive
 from ...core.numeric import Number, fmt_short, normalize
-from ...core.records import Quantity, Solution, Table, heading, worked
+from ...core.records import Quantity, Solution, Table, Walk, heading, worked
 from ._shared import int_tex
 from .storage import size_text
 
@@ -196,6 +196,6 @@ def framebuffer_solution(
             "answers use either, so both are given.",
             "A bit plane holds one bit of every pixel: b bits per pixel take b planes.",
         ),
-        tables=(_size_table(total),),
+        walk=Walk(tables=(_size_table(total),)),
         data=data,
     )

@@ -11,7 +11,7 @@ from typing import Any
 from ...algorithms import characters as ch
 from ...core.checks import check_integer
 from ...core.numeric import fmt_pixel
-from ...core.records import Pixel, Solution, Step, Table, heading, rule, worked
+from ...core.records import Pixel, Plot, Solution, Step, Table, Walk, heading, rule, worked
 from ..image._shared import int_tex
 from ..image.storage import size_text
 
@@ -65,17 +65,19 @@ def font_storage_solution(count: int, width: int, height: int, packing: str = "r
             f"Packed by {packing}: rows padded to whole bytes is the usual bitmap font; the "
             "table gives every packing, as published answers differ.",
         ),
-        tables=(
-            Table(
-                "Every packing",
-                (
-                    heading("packing", r"\text{packing}"),
-                    heading("glyph", r"\text{bits a glyph}"),
-                    heading("bits", r"\text{bits}"),
-                    heading("bytes", r"\text{bytes}"),
+        walk=Walk(
+            tables=(
+                Table(
+                    "Every packing",
+                    (
+                        heading("packing", r"\text{packing}"),
+                        heading("glyph", r"\text{bits a glyph}"),
+                        heading("bits", r"\text{bits}"),
+                        heading("bytes", r"\text{bytes}"),
+                    ),
+                    rows,
                 ),
-                rows,
-            ),
+            )
         ),
         data={"bits": s.total_bits, "per_glyph": s.per_glyph, "packing": packing},
     )
@@ -118,20 +120,21 @@ def bitmap_solution(
             ),
             worked("pixels", len(pixels), f"\\text{{pixels: }} {len(pixels)}"),
         ),
-        columns=(
-            heading("k", "k"),
-            heading("row", "i"),
-            heading("column", "j"),
-            heading("pixels", r"\text{pixels}"),
-        ),
-        extra_keys=("row", "column", "pixels"),
-        steps=table,
-        pixels=lambda: iter(pixels),
-        bbox=_bbox(pixels),
         notes=(
             "Rows are stored top first; the screen's y grows upward, so row i lands at "
             "y0 + (h - 1 - i) * s.",
         ),
+        walk=Walk(
+            columns=(
+                heading("k", "k"),
+                heading("row", "i"),
+                heading("column", "j"),
+                heading("pixels", r"\text{pixels}"),
+            ),
+            extra_keys=("row", "column", "pixels"),
+            steps=table,
+        ),
+        plot=Plot(pixels=lambda: iter(pixels), bbox=_bbox(pixels)),
         data={"rows": list(g), "scale": scale},
     )
 
@@ -165,19 +168,20 @@ def stroke_solution(
             rule("place", f"(x, y) \\to ({x0} + {scale} x, {y0} + {scale} y)"),
             worked("pixels", len(pixels), f"\\text{{pixels: }} {len(pixels)}"),
         ),
-        columns=(
-            heading("k", "k"),
-            heading("pixel", r"\text{start}"),
-            heading("segment", r"\text{segment}"),
-            heading("pixels", r"\text{pixels (" + algo + ")}"),
-        ),
-        extra_keys=("segment", "pixels"),
-        steps=table,
-        pixels=lambda: iter(pixels),
-        bbox=_bbox(pixels),
         notes=(
             "A stroke font stores each character as line segments on a small grid; scaling "
             "multiplies the end points, so the strokes stay one pixel wide.",
         ),
+        walk=Walk(
+            columns=(
+                heading("k", "k"),
+                heading("pixel", r"\text{start}"),
+                heading("segment", r"\text{segment}"),
+                heading("pixels", r"\text{pixels (" + algo + ")}"),
+            ),
+            extra_keys=("segment", "pixels"),
+            steps=table,
+        ),
+        plot=Plot(pixels=lambda: iter(pixels), bbox=_bbox(pixels)),
         data={"segments": [list(s.extra[0]) for s in steps]},
     )

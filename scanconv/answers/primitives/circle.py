@@ -21,19 +21,23 @@ from ...algorithms.circles import (
 from ...algorithms.conventions import ROUNDING_TEXT, convention_note, resolve, rounder
 from ...core import lazy
 from ...core.checks import InputError, check_integer
+from ...core.ideal import IdealCircle
 from ...core.numeric import (
     Number,
     fmt_value,
     normalize,
 )
 from ...core.records import (
-    Code,
+    NO_THEORY,
     Move,
     Pixel,
+    Plot,
     Quantity,
     Solution,
     Step,
     Table,
+    Theory,
+    Walk,
     heading,
     rule,
     worked,
@@ -150,17 +154,15 @@ def _theory(
     method: str,
     ir: int,
     knobs: dict[str, str],
-    derived: tuple[Quantity, ...],
     derive: bool,
     pseudocode: bool,
-) -> tuple[tuple[Quantity, ...], tuple[Code, ...]]:
-    """The working with ``--derive``'s derivation added, and ``--algorithm``'s listing."""
+) -> Theory:
+    """``--derive``'s derivation and ``--algorithm``'s listing."""
     if not (derive or pseudocode):
-        return derived, ()
-    if derive:
-        derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
+        return NO_THEORY
+    derivation = (theory.DERIVATION, *_derivation(method, ir, knobs)) if derive else ()
     code = theory.circle_code(method, knobs) if pseudocode else None
-    return derived, (code,) if code is not None else ()
+    return Theory(derivation, (code,) if code is not None else ())
 
 
 def circle_solution(
@@ -229,7 +231,7 @@ def circle_solution(
         "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
         "once, the first time it is plotted.",
     )
-    derived, code = _theory(method, ir, knobs, derived, derive, pseudocode)
+    added = _theory(method, ir, knobs, derive, pseudocode)
     data: dict[str, Any] = {"rounding": rounding} if method in FLOAT_METHODS else {}
     if annotate:
         notes = (*notes, convention_note("circle", convention, knobs))
@@ -244,17 +246,23 @@ def circle_solution(
         title=f"{title}: r = {ir}, centre ({ixc}, {iyc})",
         given=_circle_given(ir, ixc, iyc),
         derived=derived,
-        columns=columns,
-        extra_keys=extra_keys,
-        steps=steps,
-        pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
-        bbox=(ixc - ir, iyc - ir, ixc + ir, iyc + ir),
         notes=notes,
-        tables=(symmetry_table(points, images, ixc, iyc),),
-        marks=((ixc, iyc),),
-        geometry={"circle": (ixc, iyc, ir), "symmetry": 8, "center": (ixc, iyc)},
+        walk=Walk(
+            columns=columns,
+            extra_keys=extra_keys,
+            steps=steps,
+            tables=(symmetry_table(points, images, ixc, iyc),),
+            symmetry=8,
+            center=(ixc, iyc),
+        ),
+        plot=Plot(
+            pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
+            bbox=(ixc - ir, iyc - ir, ixc + ir, iyc + ir),
+            marks=((ixc, iyc),),
+            ideal=(IdealCircle(ixc, iyc, ir),),
+        ),
+        theory=added,
         data=data,
-        code=code,
     )
 
 

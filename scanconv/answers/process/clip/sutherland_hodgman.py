@@ -21,7 +21,7 @@ from ....algorithms.clipping import (
 )
 from ....core.checks import InputError
 from ....core.numeric import Number, fmt_short, normalize
-from ....core.records import Column, Quantity, Solution, Table
+from ....core.records import Column, Plot, Quantity, Solution, Table, Walk
 from .._shared import (
     check_points,
     check_rect,
@@ -165,8 +165,8 @@ def clip_polygon_solution(coords: Sequence[Number], window: Sequence[Number]) ->
         ),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=tuple(tables),
-        figures=clip_figure(final, w, vertices, "clipped polygon"),
+        walk=Walk(tables=tuple(tables)),
+        plot=Plot(figures=clip_figure(final, w, vertices, "clipped polygon")),
         data={
             "clipped": [list(p) for p in final],
             "degenerate_edges": [[list(a), list(b)] for a, b in overlapping_edges(final, w)]
