@@ -242,7 +242,7 @@ def clip_polygon_window_solution(
         ),
         derived=(convex_q, *derived, *_result(vertices, final)),
         notes=tuple(notes),
-        tables=tuple(tables),
-        figures=window_figure(final, window, vertices, "clipped polygon"),
+        walk=Walk(tables=tuple(tables)),
+        plot=Plot(figures=window_figure(final, window, vertices, "clipped polygon")),
         data={"clipped": [list(p) for p in final], "window": [list(c) for c in window]},
     )
