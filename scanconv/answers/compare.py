@@ -208,7 +208,7 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool =
             Table(
                 "Arithmetic per pixel",
                 (
-                    heading("method", r"\text{method}"),
+                    heading("method", r"\text{method}", role="label"),
                     heading("work", r"\text{per pixel}"),
                     heading("arithmetic", r"\text{arithmetic}"),
                 ),

@@ -209,7 +209,7 @@ def bezier_at_solution(points: Sequence[Point], t: Value) -> Solution:
             tables=(
                 Table(
                     f"De Casteljau levels at t = {ts} (row r holds P_i^(r))",
-                    (heading("r", "r"), *_point_columns(n + 1, "P")),
+                    (heading("r", "r", role="label"), *_point_columns(n + 1, "P")),
                     rows,
                     points=True,
                 ),

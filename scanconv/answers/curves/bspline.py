@@ -319,7 +319,7 @@ def _weighted_table(a: _At) -> Table:
     return Table(
         "Weighted sum of the non-zero terms",
         (
-            heading("i", "i"),
+            heading("i", "i", role="label"),
             heading("N", f"N_{{i,{a.degree}}}(t)", 3),
             heading("point_P", "P_i"),
             heading("point_NP", f"N_{{i,{a.degree}}}(t) \\cdot P_i"),

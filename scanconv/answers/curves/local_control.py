@@ -53,7 +53,7 @@ def _changed(before: Iterable[Pixel], after: Iterable[Pixel]) -> tuple[int, int]
 
 
 _COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("t_bezier", r"t \ (\text{Bezier})", 3),
     heading("bezier_before", r"\text{Bezier before}"),
     heading("bezier_after", r"\text{Bezier after}"),

@@ -93,7 +93,7 @@ def _rows_of(steps: Callable[[], Iterator[Step]], width: int) -> Callable[[], It
     return rows
 
 
-_CELL = (heading("k", "k"), heading("i", "i"), heading("j", "j"))
+_CELL = (heading("k", "k", role="label"), heading("i", "i"), heading("j", "j"))
 _DECIDED = (
     heading("value", "I(i, j)"),
     heading("threshold", "T"),

@@ -56,7 +56,7 @@ def _size_table(bits: int) -> Table:
     rows = tuple((unit, size_text(v, cell=True)) for unit, v in sizes(bits).items())
     return Table(
         "Frame-buffer size",
-        (heading("unit", r"\text{unit}"), heading("size", r"\text{size}")),
+        (heading("unit", r"\text{unit}", role="label"), heading("size", r"\text{size}")),
         lambda: rows,
     )
 

@@ -170,7 +170,7 @@ def quantize_solution(
             f"Gray k/{L - 1} here, with 0 Black and {L - 1} White."
         )
     columns = [
-        heading("decimal", r"\text{Decimal value}"),
+        heading("decimal", r"\text{Decimal value}", role="label"),
         heading("binary", f"\\text{{Binary ({B} bits)}}"),
         heading("gray_level", r"\text{Gray level}"),
     ]

@@ -219,7 +219,7 @@ def _depth_name(levels: Number | None, bits: Number | None, binary: bool, color:
 
 
 _SIZE_COLUMNS = (
-    heading("unit", r"\text{unit}"),
+    heading("unit", r"\text{unit}", role="label"),
     heading("bytes_per_unit", r"\text{bytes per unit}"),
     heading("size", r"\text{size}"),
 )

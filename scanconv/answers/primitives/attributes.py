@@ -114,7 +114,7 @@ def line_style_solution(
         ),
         walk=Walk(
             columns=(
-                heading("k", "k"),
+                heading("k", "k", role="label"),
                 heading("pixel", "(x_k, y_k)"),
                 heading("bit_index", r"\text{bit}"),
                 heading("bit", r"\text{value}"),
@@ -190,7 +190,7 @@ def thick_line_solution(
         ),
         walk=Walk(
             columns=(
-                heading("k", "k"),
+                heading("k", "k", role="label"),
                 heading("pixel", "(x_k, y_k)"),
                 heading("added", r"\text{pixels added}"),
             ),

@@ -126,7 +126,7 @@ def bitmap_solution(
         ),
         walk=Walk(
             columns=(
-                heading("k", "k"),
+                heading("k", "k", role="label"),
                 heading("row", "i"),
                 heading("column", "j"),
                 heading("pixels", r"\text{pixels}"),
@@ -174,7 +174,7 @@ def stroke_solution(
         ),
         walk=Walk(
             columns=(
-                heading("k", "k"),
+                heading("k", "k", role="label"),
                 heading("pixel", r"\text{start}"),
                 heading("segment", r"\text{segment}"),
                 heading("pixels", r"\text{pixels (" + algo + ")}"),

@@ -360,7 +360,7 @@ def _midpoint_notes(
 
 
 _MIDPOINT_NOTES_COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("x_k", "x_k"),
     heading("y_k", "y_k"),
     heading("p", "p_k"),
@@ -368,7 +368,7 @@ _MIDPOINT_NOTES_COLUMNS = (
     heading("pixel", r"\text{plot } (x_k, y_k)"),
 )
 _MIDPOINT_COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("p", "p_k"),
     heading("pixel", "(x_{k+1}, y_{k+1})"),
     heading("two_x", "2x_{k+1}"),
@@ -461,7 +461,7 @@ def _general_parts(r: int, knobs: dict[str, str]) -> Parts:
         return general(r, tie, loop)
 
     columns = (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("x_k", "x"),
         heading("y_k", "y"),
         heading("p", "p"),
@@ -511,7 +511,7 @@ def _bresenham_parts(r: int, tie: str, xstep: str = "last") -> Parts:
         rule("loop", r"x_{k+1} = x_k + 1;\ \text{plot } (x_k, y_k) \text{ while } x \le y"),
     )
     columns = (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("p", "d_k"),
         heading("decision", r"\text{decision}"),
         heading("pixel", "(x_k, y_k)"),

@@ -48,7 +48,7 @@ else:  # only --derive and --algorithm need it
 
 def _region_columns(p: str) -> tuple[Column, ...]:
     return (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("p", f"{p}_k"),
         heading("pixel", "(x_{k+1}, y_{k+1})"),
         heading("two_ry2_x", "2r_y^2 x_{k+1}"),

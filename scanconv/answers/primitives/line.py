@@ -413,7 +413,7 @@ def _bresenham_solution(
         notes=_bresenham_line_notes(w, tie, layout),
         walk=Walk(
             columns=(
-                heading("k", "k"),
+                heading("k", "k", role="label"),
                 heading("p", "p_k"),
                 heading("decision", r"\text{decision}"),
                 heading("pixel", pixel_head),
@@ -466,7 +466,7 @@ def _dda_derived(
 
 
 _DDA_COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("x", "x_k", 3),
     heading("y", "y_k", 3),
     heading("round_x", r"\operatorname{round}(x_k)"),

@@ -351,7 +351,7 @@ def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples
         notes=tuple(notes),
         walk=Walk(
             columns=(
-                heading("k", "k"),
+                heading("k", "k", role="label"),
                 heading("t", "t_k", 3),
                 *xy_columns(),
             ),

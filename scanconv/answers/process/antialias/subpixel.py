@@ -168,7 +168,7 @@ def subpixel_solution(
         notes=_notes(subgrid, divide, maj, n),
         walk=Walk(
             columns=(
-                heading("k", "k"),
+                heading("k", "k", role="label"),
                 heading("p", "p_k"),
                 heading("u", f"U_k \\text{{ (sub-{maj})}}"),
                 heading("v", f"V_k \\text{{ (sub-{mnr})}}"),

@@ -173,7 +173,7 @@ def _wu_columns(w: _WuWalk) -> tuple[Column, ...]:
     lower, upper = w.lower, w.upper
     gap = (heading("gap", r"\text{gap}", 3),) if w.ends == "coverage" else ()
     return (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading(w.maj, f"{w.maj}_k"),
         heading(w.mnr, f"{w.mnr}_k \\text{{ (exact)}}", 3),
         *gap,

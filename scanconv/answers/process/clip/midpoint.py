@@ -37,7 +37,7 @@ def _table(pieces: list[Piece]) -> Table:
     return Table(
         "Pieces (depth first, the half nearer P1 first; codes TBRL)",
         (
-            heading("k", "k"),
+            heading("k", "k", role="label"),
             heading("piece", r"\text{piece}"),
             heading("code_a", r"\text{code}_1"),
             heading("code_b", r"\text{code}_2"),

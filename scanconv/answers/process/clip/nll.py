@@ -43,7 +43,7 @@ def _tests_table(result: NLLResult) -> Table:
     return Table(
         "Comparisons, in the order they are made",
         (
-            heading("k", "k"),
+            heading("k", "k", role="label"),
             heading("test", r"\text{test}", role="given"),
             heading("left", r"\text{compare}"),
             heading("left_value", r"\text{value}"),

@@ -180,7 +180,7 @@ def cs_parts(p1: Point, p2: Point, w: Rect, r: CSResult) -> tuple[list[Quantity]
 
 
 _LB_COLUMNS = (
-    Column("k", "k", "k"),
+    Column("k", "k", "k", role="label"),
     Column("reason", "boundary", r"\text{boundary}"),
     Column("p", "p_k", "p_k"),
     Column("q", "q_k", "q_k"),

@@ -249,7 +249,7 @@ def _trace_rows(
 def _trace_columns(span: bool, order: str) -> tuple[Column, ...]:
     nxt = "top of the stack" if order == "stack" else "front of the queue"
     return (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("pixel", r"\text{taken}"),
         heading("colour", r"\text{colour}"),
         heading("test", r"\text{test}"),

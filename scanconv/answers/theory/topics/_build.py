@@ -64,7 +64,11 @@ def listing(title: str, items: Sequence[str], head: str = "point") -> Table:
     """
     width = max(len(item) for item in items)
     rows = tuple((i, item.ljust(width)) for i, item in enumerate(items, 1))
-    return Table(title, (heading("k", r"\#"), heading("point", rf"\text{{{head}}}")), lambda: rows)
+    return Table(
+        title,
+        (heading("k", r"\#", role="label"), heading("point", rf"\text{{{head}}}")),
+        lambda: rows,
+    )
 
 
 def text_table(title: str, heads: Sequence[str], rows: Iterable[Sequence[Any]]) -> Table:
