@@ -12,7 +12,7 @@ from ....algorithms.midpoint_clip import Piece, subdivide, visible
 from ....core.checks import InputError
 from ....core.ideal import IdealLine
 from ....core.numeric import Number, fmt_short, normalize
-from ....core.records import Plot, Solution, Table, Walk, heading, rule, worked
+from ....core.records import Plot, Quantity, Solution, Table, Walk, heading, rule, worked
 from .._shared import pt
 
 
@@ -50,6 +50,13 @@ def _table(pieces: list[Piece]) -> Table:
     )
 
 
+_EDGE_RULE = (
+    r"\text{a piece from a point on an edge to a point beyond that edge: the point is the "
+    r"clipped end}"
+)
+"""The edge stop rule, as the working states it."""
+
+
 def midpoint_clip_solution(
     x1: Number,
     y1: Number,
@@ -84,6 +91,9 @@ def midpoint_clip_solution(
         "exact": r"\text{exact}",
     }[midpoint]
     shown = "; ".join(f"{pt(a)} to {pt(b)}" for a, b in parts) or "none"
+    edge: tuple[Quantity, ...] = ()
+    if stop == "edge":  # the published answers' rule
+        edge = (rule("edge", _EDGE_RULE),)
     return Solution(
         primitive="clip",
         algorithm="midpoint-subdivision",
@@ -105,17 +115,7 @@ def midpoint_clip_solution(
             ),
             rule("split", f"\\text{{else split at }} P_m = ((x_1 + x_2)/2, (y_1 + y_2)/2), {how}"),
             rule("stop", r"\text{a piece one unit long keeps its inside end}"),
-            *(
-                (
-                    rule(
-                        "edge",
-                        r"\text{a piece from a point on an edge to a point beyond that edge: "
-                        r"the point is the clipped end}",
-                    ),
-                )
-                if stop == "edge"
-                else ()
-            ),
+            *edge,
             worked(
                 "visible", [[list(a), list(b)] for a, b in parts], f"\\text{{visible: {shown}}}"
             ),
