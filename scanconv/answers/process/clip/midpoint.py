@@ -50,11 +50,27 @@ def _table(pieces: list[Piece]) -> Table:
     )
 
 
-_EDGE_RULE = (
-    r"\text{a piece from a point on an edge to a point beyond that edge: the point is the "
-    r"clipped end}"
-)
-"""The edge stop rule, as the working states it."""
+def _rules(midpoint: str, stop: str) -> tuple[Quantity, ...]:
+    """The rules the subdivision follows, with its midpoint and stop conventions."""
+    how = {
+        "rounded": r"\text{rounded half up}",
+        "floor": r"\text{floor: the hardware shift, } \lfloor (a + b)/2 \rfloor",
+        "exact": r"\text{exact}",
+    }[midpoint]
+    edge = rule(
+        "edge",
+        r"\text{a piece from a point on an edge to a point beyond that edge: "
+        r"the point is the clipped end}",
+    )
+    return (
+        rule(
+            "accept",
+            r"\text{both codes } 0000: \text{accept}; \ \text{AND} \ne 0000: \text{reject}",
+        ),
+        rule("split", f"\\text{{else split at }} P_m = ((x_1 + x_2)/2, (y_1 + y_2)/2), {how}"),
+        rule("stop", r"\text{a piece one unit long keeps its inside end}"),
+        *((edge,) if stop == "edge" else ()),
+    )
 
 
 def midpoint_clip_solution(
@@ -85,15 +101,7 @@ def midpoint_clip_solution(
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
     pieces = list(subdivide(p1, p2, w, midpoint, stop))
     parts = visible(pieces)
-    how = {
-        "rounded": r"\text{rounded half up}",
-        "floor": r"\text{floor: the hardware shift, } \lfloor (a + b)/2 \rfloor",
-        "exact": r"\text{exact}",
-    }[midpoint]
     shown = "; ".join(f"{pt(a)} to {pt(b)}" for a, b in parts) or "none"
-    edge: tuple[Quantity, ...] = ()
-    if stop == "edge":  # the published answers' rule
-        edge = (rule("edge", _EDGE_RULE),)
     return Solution(
         primitive="clip",
         algorithm="midpoint-subdivision",
@@ -109,13 +117,7 @@ def midpoint_clip_solution(
             ),
         ),
         derived=(
-            rule(
-                "accept",
-                r"\text{both codes } 0000: \text{accept}; \ \text{AND} \ne 0000: \text{reject}",
-            ),
-            rule("split", f"\\text{{else split at }} P_m = ((x_1 + x_2)/2, (y_1 + y_2)/2), {how}"),
-            rule("stop", r"\text{a piece one unit long keeps its inside end}"),
-            *edge,
+            *_rules(midpoint, stop),
             worked(
                 "visible", [[list(a), list(b)] for a, b in parts], f"\\text{{visible: {shown}}}"
             ),
