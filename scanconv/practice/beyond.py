@@ -13,6 +13,7 @@ import random
 from typing import Any
 
 from ..answers.methods import method
+from . import windows
 from .records import PracticeQuestion, line_question
 
 
@@ -83,7 +84,17 @@ def inside(rng: random.Random, difficulty: str, kind: int) -> PracticeQuestion:
 _CLIP_WINDOW = {"easy": (2, 2, 8, 6), "exam": (10, 10, 50, 40), "hard": (-10, -5, 30, 25)}
 
 
+_SHAPED = {
+    "sutherland-hodgman triangle": windows.triangle_window,
+    "sutherland-hodgman hexagon": windows.hexagon_window,
+    "weiler-atherton touching": windows.touching,
+}
+"""The clipping kinds against a window of any shape (:mod:`.windows`)."""
+
+
 def clipping(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    if kind in _SHAPED:
+        return _SHAPED[kind](rng, difficulty, kind)
     xmin, ymin, xmax, ymax = _CLIP_WINDOW[difficulty]
     span = xmax - xmin
     window = tuple(map(str, (xmin, ymin, xmax, ymax)))
@@ -220,6 +231,10 @@ _GLYPHS = "AEFHLTXZ"
 def characters(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     ch = rng.choice(_GLYPHS)
     scale = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
+    if kind == "font table":
+        return windows.font_table(rng, difficulty, kind, ch)
+    if kind == "glyph bytes":
+        return windows.glyph_bytes(rng, difficulty, kind, ch)
     if kind == "storage":
         count = rng.choice((96, 128, 256))
         w, h = rng.choice(((5, 7), (7, 9), (8, 8), (9, 14)))
@@ -285,10 +300,13 @@ KINDS: dict[str, list[Any]] = {
         "midpoint-subdivision",
         "weiler-atherton",
         "nicholl-lee-nicholl",
+        "sutherland-hodgman triangle",
+        "weiler-atherton touching",
+        "sutherland-hodgman hexagon",
     ],
     "framebuffer": ["load", "lut", "refresh", "interlaced"],
     "attributes": ["dashed", "replication", "dotted", "brush"],
-    "characters": ["bitmap", "stroke", "storage"],
+    "characters": ["bitmap", "stroke", "storage", "font table", "glyph bytes"],
     "antialias": ["wu", "area", "subpixel", "wu-coverage"],
     "midpoint-line": [
         f"octant {o}{', tie' if tie else ''}"
