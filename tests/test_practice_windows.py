@@ -133,3 +133,61 @@ def test_a_touching_case_and_a_font_question_answer_on_the_command_line() -> Non
         q = next(q for q in practice(topic, len(KINDS[topic]), seed=5) if kind in q.features)
         r = run(*q.argv, "--format", "plain")
         assert r.code == 0 and r.out and r.err == "", (q.argv, r.err)
+
+
+def _with(topic: str, kind: str, seed: int, difficulty: str) -> list:
+    qs = practice(topic, len(KINDS[topic]), seed=seed, difficulty=difficulty)
+    return [q for q in qs if kind in q.features]
+
+
+def _after(argv: tuple[str, ...], flag: str, n: int) -> list[int]:
+    at = argv.index(flag) + 1
+    return [int(v) for v in argv[at : at + n]]
+
+
+@pytest.mark.parametrize("difficulty", ["easy", "exam", "hard"])
+def test_midpoint_edge_stop_questions_land_a_midpoint_on_the_edge(difficulty: str) -> None:
+    """The line's ends are as far left and right of the window's left edge, so the first
+    midpoint is on it (by hand: (x1 + x2) / 2 = x_min); the answer stops there, and the
+    visible piece starts at that midpoint."""
+    for seed in SEEDS:
+        for q in _with("clip", "midpoint-subdivision edge stop", seed, difficulty):
+            x1, x2 = int(q.argv[2]), int(q.argv[4])
+            xmin = _after(q.argv, "--window", 4)[0]
+            assert (x1 + x2) == 2 * xmin and x1 < xmin < x2, q.argv
+            sol = questions.answer(list(q.argv))
+            actions = [row[5] for row in sol.tables[0].rows()]
+            assert "edge point" in actions, q.argv
+            (start, _end), *_ = sol.data["visible"]
+            assert start[0] == xmin, q.argv
+
+
+@pytest.mark.parametrize("difficulty", ["easy", "exam", "hard"])
+def test_left_bottom_questions_put_points_on_the_boundary(difficulty: str) -> None:
+    """A rectangle from (0, 0): a point with x = 0 or y = 0 is inside by the left-bottom rule,
+    one with x = w or y = h outside, one strictly inside inside (worked here from the point
+    alone); each question has one on each kind of edge and the answer says the same."""
+    for seed in SEEDS:
+        for q in _with("inside", "left-bottom", seed, difficulty):
+            w, h = _after(q.argv, "inside", 8)[4:6]
+            at = q.argv.index("--points") + 1
+            points = _flat_pairs(list(q.argv[at : at + 6]))
+            want = ["outside" if x == w or y == h else "inside" for x, y in points]
+            assert sorted(want) == ["inside", "inside", "outside"], q.argv
+            sol = questions.answer(list(q.argv))
+            verdicts = next(t for t in sol.tables if t.title.startswith("Verdicts"))
+            got = [str(row[3]).split()[0] for row in verdicts.rows()]
+            assert got == want, q.argv
+
+
+@pytest.mark.parametrize("difficulty", ["easy", "exam", "hard"])
+def test_mask_lsb_questions_apply_the_written_mask_backwards(difficulty: str) -> None:
+    """Pixel k is drawn when bit k mod n of the mask as written is 1, bit 0 the rightmost
+    character: the mask read from its right-hand end."""
+    for seed in SEEDS:
+        for q in _with("attributes", "mask lsb", seed, difficulty):
+            mask = q.argv[q.argv.index("--mask") + 1]
+            sol = questions.answer(list(q.argv))
+            drawn = [s.extra[2] == "draw" for s in sol.steps()]
+            want = [mask[::-1][k % len(mask)] == "1" for k in range(len(drawn))]
+            assert drawn == want and any(drawn) and not all(drawn), q.argv

@@ -1,8 +1,9 @@
 """Practice questions on clipping against a window of any shape and on a font's bytes
 (:mod:`.beyond` routes its ``clip`` and ``characters`` kinds here): Sutherland-Hodgman against
 a triangle or a hexagon, Weiler-Atherton where the polygons only touch (a vertex on the other's
-edge, or an edge along the other's), a glyph packed into bytes row by row, and a font table's
-address of one glyph.
+edge, or an edge along the other's), midpoint subdivision stopping where a midpoint lands on
+the window's edge, a glyph packed into bytes row by row, and a font table's address of one
+glyph.
 
 Every question is built so that it has an answer worth asking: the window is convex and
 counter-clockwise, the subject polygon holds a point inside the window and a vertex outside
@@ -17,7 +18,14 @@ import random
 from ..answers.methods import method
 from .records import PracticeQuestion
 
-__all__ = ["font_table", "glyph_bytes", "hexagon_window", "touching", "triangle_window"]
+__all__ = [
+    "edge_stop",
+    "font_table",
+    "glyph_bytes",
+    "hexagon_window",
+    "touching",
+    "triangle_window",
+]
 
 _SCALE = {"easy": 1, "exam": 2, "hard": 3}
 """How much larger an exam or a hard question's coordinates are."""
@@ -105,6 +113,38 @@ def touching(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion
         "in, out or touch, the walks and the output.",
         10,
         frozenset({kind, "weiler-atherton", how}),
+    )
+
+
+def edge_stop(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    """Midpoint subdivision stopping where a midpoint lands on the window's edge: the line
+    runs from as far left of the window's left edge as its inside end is right of it, so the
+    first midpoint is on that edge."""
+    s = _SCALE[difficulty]
+    x0, y0 = _origin(rng, difficulty)
+    x1, y1 = x0 + rng.randrange(6, 9) * 2 * s, y0 + rng.randrange(4, 7) * 2 * s
+    d = rng.randrange(1, x1 - x0)
+    ya, yb = rng.randrange(y0, y1 + 1), rng.randrange(y0, y1 + 1)
+    ends = (x0 - d, ya, x0 + d, yb)
+    title = method("clip", "midpoint-subdivision").title
+    return PracticeQuestion(
+        "clip",
+        (
+            "clip",
+            "line",
+            *map(str, ends),
+            "--window",
+            *map(str, (x0, y0, x1, y1)),
+            "--method",
+            "midpoint-subdivision",
+            "--stop",
+            "edge",
+        ),
+        f"Clip the line ({ends[0]}, {ends[1]})-({ends[2]}, {ends[3]}) against the window "
+        f"({x0}, {y0})-({x1}, {y1}) by {title}, stopping where a midpoint lands on the window's "
+        "edge: give each piece's codes, their AND, the action and the midpoint.",
+        8,
+        frozenset({kind, "midpoint-subdivision"}),
     )
 
 
