@@ -47,6 +47,7 @@ from ..document import (
 from . import Notice, Options
 from .cells import note_segments, numeric_column, prose_math, wrap_items
 from .grid import too_large
+from .latex_breaks import breakable_math
 from .text import Rows, figure_text, grid_block, pixel_count, step_rows, table_rows
 from .tikz import tikz_figure, tikz_grid
 
@@ -92,9 +93,13 @@ def _cell(text: str) -> str:
     """
     if text == "-":
         return "--"
-    if math_cell(text):
-        return f"${text}$"
+    if math_cell(text):  # a list of points breaks between them (a wrapped column's cell)
+        return "$" + _BETWEEN_POINTS.sub(r")\1$ $(", text) + "$"
     return prose_tex(text)
+
+
+_BETWEEN_POINTS = re.compile(r"\)(,?) \(")
+"""The space between two points of a cell (``(3, 2) (1, 2)``, ``(3, 2), (1, 2)``)."""
 
 
 def prose_tex(text: str) -> str:
@@ -124,11 +129,15 @@ one starts where it is, with at least a few rows under its heading."""
 def _heading(title: str, rows: int) -> str:
     r"""A table's heading, kept with its table (or its first rows).
 
+    Set ragged right, in a group ended by its own ``\\par``: a long title (a command line
+    in it) breaks at its spaces, never past the margin.
+
     >>> print(_heading("Step table", 2), end="")
-    \scneed{71pt}\paragraph{Step table}\mbox{}\\[1ex]
+    \scneed{71pt}{\raggedright\paragraph{Step table}\mbox{}\\[1ex]\par}
     """
     need = 45 + 13 * (rows if rows <= KEEP_ROWS else 5)
-    return f"\\scneed{{{need}pt}}\\paragraph{{{tex_text(title)}}}\\mbox{{}}\\\\[1ex]\n"
+    title = tex_text(title)
+    return f"\\scneed{{{need}pt}}{{\\raggedright\\paragraph{{{title}}}\\mbox{{}}\\\\[1ex]\\par}}\n"
 
 
 TEXT_WIDTH = 345
@@ -271,7 +280,7 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
     >>> wrap_spec(cols, [["speed", "slower"]]) is None
     True
     >>> wrap_spec(cols, [["error", "round-off accumulates along the line, and more"]])
-    'l>{\\\\raggedright\\\\arraybackslash}p{300.6pt}'
+    'l>{\\\\raggedright\\\\arraybackslash}p{293.8pt}'
     """
     longest = [max((len(r[i]) for r in rows), default=0) for i in range(len(columns))]
     wrap = [
@@ -284,7 +293,7 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
         for c, n, w in zip(columns, longest, wrap, strict=True)
         if not w
     )
-    room = 0.97 * TEXT_WIDTH - fixed - 6 * sum(wrap)
+    room = 0.95 * TEXT_WIDTH - fixed - 6 * sum(wrap)  # 5% to spare: the estimate is rough
     total = sum(n for n, w in zip(longest, wrap, strict=True) if w)
     if room < 60 * sum(wrap):
         return None
@@ -389,7 +398,7 @@ def render_latex(answer: Solution | Document, options: Options) -> Iterator[str 
 
 def _title(block: Title, options: Options, doc: Document) -> Iterator[str]:
     unit = "subsection" if block.level <= 2 else "subsubsection"
-    yield f"\\{unit}*{{{tex_text(block.text)}}}\n\n"
+    yield f"\\{unit}*{{\\raggedright {tex_text(block.text)}}}\n\n"  # breaks, never overfull
 
 
 def _question(block: Question, options: Options, doc: Document) -> Iterator[str]:
@@ -426,30 +435,28 @@ def tex_command(command: str) -> str:
 
 
 def _given(block: Given, options: Options, doc: Document) -> Iterator[str]:
-    """The given values in one paragraph; a value that is only words (``\\text{shape: ...}``)
-    is set as text, so the line can break inside it (a box of math cannot)."""
-    items = []
-    for q in block.quantities:
-        words = _ONLY_TEXT.fullmatch(q.tex)
-        items.append(words.group(1) if words else f"${q.tex}$")
+    """The given values in one paragraph; the words of a value (``\\text{shape: ...}``) are
+    set as text, so the line can break inside them (a box of math cannot)."""
+    items = (breakable_math(q.tex) for q in block.quantities)
     yield "\\paragraph{Given} " + ", ".join(items) + "\n\n"
 
 
-_ONLY_TEXT = re.compile(r"\\text\{([^{}$]*)\}")
-"""A formula that is one ``\\text{...}`` with no braces or math inside: its words, as text."""
-
-
 def _working(block: Working, options: Options, doc: Document) -> Iterator[str]:
-    yield "\\paragraph{Working}\n\\begin{itemize}\n"
+    yield "\\paragraph{Working}\n\\begin{itemize}\\raggedright\n"  # lines break, never past the edge
     for q in block.lines:
-        yield f"  \\item ${q.tex}$\n"
+        yield f"  \\item {breakable_math(q.tex)}\n"
     yield "\\end{itemize}\n\n"
 
 
 def _notes(block: Notes, options: Options, doc: Document) -> Iterator[str]:
+    """The notes as a list, one bullet each (as the terminal and Markdown set them apart),
+    never one paragraph after another that reads as one run of text."""
+    if not block.notes:
+        return
+    yield "\\paragraph{Notes}\n\\begin{itemize}\\raggedright\n"
     for note in block.notes:
-        yield f"\\noindent {prose_tex_segments(note.segments)}\\par\n"
-    yield "\n"
+        yield f"  \\item {prose_tex_segments(note.segments)}\n"
+    yield "\\end{itemize}\n\n"
 
 
 def _step_table(block: StepTable, options: Options, doc: Document) -> Iterator[str]:
@@ -467,7 +474,7 @@ def _code(block: Pseudocode, options: Options, doc: Document) -> Iterator[str]:
     small enough to fit the text width.
 
     >>> print("".join(_code(Pseudocode("t", ("a", "  b^2")), Options(), None)), end="")
-    \scneed{71pt}\paragraph{t}\mbox{}\\[1ex]
+    \scneed{71pt}{\raggedright\paragraph{t}\mbox{}\\[1ex]\par}
     <BLANKLINE>
     \noindent\begin{minipage}{\linewidth}\ttfamily
     \mbox{}1~~a\\
