@@ -2,7 +2,7 @@
 ``python benchmarks/bench_sheet.py`` (issue 15: the sheet must take under 10 % of the time).
 
 The questions are a seeded exam-difficulty practice set of every topic
-(:func:`scanconv.answers.practice.practice`, ``--seed 1``). Both sides are real processes
+(:func:`scanconv.practice.notes.practice`, ``--seed 1``). Both sides are real processes
 started the same way (``python -m scanconv``) and write the same Markdown answers: the sheet
 ``scanconv sheet Q --format markdown -o key.md`` once, the loop ``scanconv ARGS --format
 markdown`` once per question (stdout to a file, as a shell loop would). Wall time, median of
@@ -20,7 +20,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from scanconv.answers.practice import practice, question_file
+from scanconv.practice.notes import practice, question_file
 
 SCANCONV = [sys.executable, "-m", "scanconv"]
 

@@ -24,11 +24,11 @@ class Target:
 MARK_TESTS = (
     "tests/test_marking_hand_tables.py",
     "tests/test_marking_roundtrip.py",
-    "tests/test_marking_trust.py",
-    "tests/test_marking_syllabus.py",
+    "tests/test_marking_layouts.py",
+    "tests/test_marking_tables.py",
     "tests/test_check.py",
 )
-ESCAPE_TESTS = ("tests/test_escaping.py", "tests/test_escaping_formats.py")
+ESCAPE_TESTS = ("tests/test_escaping.py", "tests/test_escaping_readers.py")
 
 #: module -> its tests (the mutation report's groups, the marking tests written by hand added).
 TARGETS: dict[str, Target] = {
@@ -40,7 +40,7 @@ TARGETS: dict[str, Target] = {
         ("tests/test_lines.py", "tests/test_conventions.py"), "midpoint"
     ),
     "scanconv/algorithms/circles.py": Target(
-        ("tests/test_circles.py", "tests/test_circle_xstep.py", "tests/test_conventions.py"),
+        ("tests/test_circles.py", "tests/test_circles_xstep.py", "tests/test_conventions.py"),
         "circle",
     ),
     "scanconv/algorithms/ellipses.py": Target(
@@ -48,14 +48,14 @@ TARGETS: dict[str, Target] = {
     ),
     "scanconv/algorithms/bezier.py": Target(("tests/test_curves.py",), "curves or bezier"),
     "scanconv/algorithms/bspline.py": Target(
-        ("tests/test_curves.py", "tests/test_aaconv_bspline.py"), "curves or bspline"
+        ("tests/test_curves.py", "tests/test_curves_bspline_basis.py"), "curves or bspline"
     ),
     "scanconv/algorithms/clipping.py": Target(
         ("tests/test_clipping.py", "tests/test_midpoint_clip.py"), "clip"
     ),
     "scanconv/algorithms/cyrus_beck.py": Target(("tests/test_cyrus_beck.py",), "cyrus"),
     "scanconv/algorithms/nll.py": Target(
-        ("tests/test_nll.py", "tests/test_published_examples_nll.py"), "nll"
+        ("tests/test_nll.py", "tests/test_published_dither_inside.py"), "nll"
     ),
     "scanconv/algorithms/polygon.py": Target(
         ("tests/test_polygon.py", "tests/test_fill.py"), "polygon or fill"
@@ -63,7 +63,7 @@ TARGETS: dict[str, Target] = {
     "scanconv/algorithms/seedfill.py": Target(("tests/test_fill.py",), "fill or seed"),
     "scanconv/algorithms/dither.py": Target(("tests/test_dither.py",), "dither"),
     "scanconv/algorithms/wu.py": Target(
-        ("tests/test_aaconv_wu.py", "tests/test_antialias.py"), "wu or antialias"
+        ("tests/test_antialias_wu.py", "tests/test_antialias.py"), "wu or antialias"
     ),
     "scanconv/algorithms/transform.py": Target(
         ("tests/test_transform.py",), "transform or viewport"
@@ -73,11 +73,11 @@ TARGETS: dict[str, Target] = {
         ("tests/test_numeric.py", "tests/test_lines.py", "tests/test_circles.py"),
         "lines or circle or ellipse",
     ),
-    "scanconv/answers/marking.py": Target(MARK_TESTS, "check"),
-    "scanconv/answers/marking_rows.py": Target(MARK_TESTS, "check"),
-    "scanconv/answers/table_models.py": Target(MARK_TESTS, "check"),
-    "scanconv/answers/marking_table.py": Target(MARK_TESTS, "check"),
-    "scanconv/core/student_table.py": Target(MARK_TESTS, "check"),
+    "scanconv/marking/mark.py": Target(MARK_TESTS, "check"),
+    "scanconv/marking/rows.py": Target(MARK_TESTS, "check"),
+    "scanconv/marking/table_models.py": Target(MARK_TESTS, "check"),
+    "scanconv/marking/tables.py": Target(MARK_TESTS, "check"),
+    "scanconv/marking/student_table.py": Target(MARK_TESTS, "check"),
     "scanconv/render/text.py": Target(
         ("tests/test_streaming.py", *ESCAPE_TESTS),
         "md",
@@ -171,34 +171,34 @@ REPORT: tuple[tuple[str, str, str, str], ...] = (
         "for row in (y + 1, y - 1):",
         "for row in (y - 1, y + 1):",
     ),
-    ("MR1", "scanconv/answers/marking_rows.py", "c.places >= 2 and abs", "c.places >= 1 and abs"),
+    ("MR1", "scanconv/marking/rows.py", "c.places >= 2 and abs", "c.places >= 1 and abs"),
     (
         "MR2",
-        "scanconv/answers/marking_rows.py",
+        "scanconv/marking/rows.py",
         "abs(c.value - v) <= tolerance",
         "abs(c.value - v) < tolerance",
     ),
     (
         "MR3",
-        "scanconv/answers/marking_rows.py",
+        "scanconv/marking/rows.py",
         "and not (got.p_next is None and last)",
         "and not (got.p_next is None)",
     ),
     (
         "TM1",
-        "scanconv/answers/table_models.py",
+        "scanconv/marking/table_models.py",
         'int(v > t or (self.compare == ">=" and v == t))',
         'int(v > t or (self.compare == ">" and v == t))',
     ),
     (
         "TM2",
-        "scanconv/answers/table_models.py",
+        "scanconv/marking/table_models.py",
         't_enter = _given(prev, "t_enter", answer[i - 1])',
         't_enter = _given({}, "t_enter", answer[i - 1])',
     ),
     (
         "TM3",
-        "scanconv/answers/table_models.py",
+        "scanconv/marking/table_models.py",
         'on = value > half or (self.compare == ">=" and value == half)',
         "on = value > half",
     ),

@@ -64,7 +64,7 @@ from .algorithms.choices import Rounding as Rounding
 from .algorithms.circle_choices import CircleMethod as CircleMethod
 from .algorithms.process_choices import LineClipMethod as LineClipMethod
 from .algorithms.process_choices import PolygonClipMethod as PolygonClipMethod
-from .answers.line import line_solution as line_solution
+from .answers.primitives.line import line_solution as line_solution
 from .core.checks import InputError as InputError
 from .core.numeric import round_half_up as round_half_up
 from .core.records import Column as Column

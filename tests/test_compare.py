@@ -16,7 +16,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from scanconv.answers.compare import DDA_MANY, DDA_OFF, TIE, compare_lines
-from scanconv.answers.line import line_solution
+from scanconv.answers.primitives.line import line_solution
 
 from .helpers import run
 
@@ -47,8 +47,8 @@ def test_positive_slope_all_agree_and_say_so():
     assert solution.data["columns_differing"] == 0
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)
 @given(st.tuples(*[st.integers(-12, 12)] * 4))
 def test_integer_lines_differ_only_at_ties(ends):
@@ -73,8 +73,8 @@ def test_integer_lines_differ_only_at_ties(ends):
         assert pixels == shown
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)
 @given(st.tuples(*[st.integers(-40, 40).map(lambda n: Fraction(n, 4))] * 4))
 def test_fractional_lines_compare_basic_and_dda_only(ends):
@@ -160,8 +160,8 @@ def test_circle_midpoint_column_is_the_nearest_pixel_and_bresenham_agrees(r):
 
 @pytest.mark.parametrize("r", [4, 5, 10, 13, 25, 60])
 def test_circle_reasons_match_each_methods_octant(r):
-    from scanconv.answers.circle import circle_solution
     from scanconv.answers.compare import SHORT, compare_circles
+    from scanconv.answers.primitives.circle import circle_solution
 
     solution = compare_circles(r)
     methods = solution.data["methods"]
@@ -193,8 +193,8 @@ def test_circle_reasons_match_each_methods_octant(r):
 
 @pytest.mark.parametrize("r", [1, 4, 10, 93])
 def test_circle_notes_give_each_reasons_first_example(r):
-    from scanconv.answers.circle import circle_solution
     from scanconv.answers.compare import SHORT, compare_circles
+    from scanconv.answers.primitives.circle import circle_solution
 
     solution = compare_circles(r)
     rows = [row for row in solution.tables[0].rows() if row[-1]]

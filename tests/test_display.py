@@ -63,7 +63,7 @@ def test_answers_pickle_by_asking_again():
 
 
 def test_a_solution_built_by_hand_does_not_pretend_to_pickle():
-    from scanconv.answers.line import line_solution
+    from scanconv.answers.primitives.line import line_solution
 
     bare = Answer.of(line_solution("bresenham", 0, 0, 2, 1))
     with pytest.raises(TypeError, match="only answers made by the scanconv API"):
@@ -85,7 +85,7 @@ def test_bad_input_names_the_keyword():
     assert "--" not in str(err.value)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_import_scanconv_is_lazy():
     code = (
         "import sys, scanconv; "

@@ -20,7 +20,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scanconv.algorithms.lines import bresenham, dda
-from scanconv.answers.line import line_solution
+from scanconv.answers.primitives.line import line_solution
 from scanconv.core.records import Column, Solution, Step
 from scanconv.render import figure
 
@@ -101,7 +101,7 @@ def test_axes_label_every_column_and_row():
 
 
 def test_curve_figure_draws_the_curve_and_the_control_polygon():
-    from scanconv.answers.bezier import bezier_solution
+    from scanconv.answers.curves.bezier import bezier_solution
 
     solution = bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8)
     root = _parse(figure.svg(solution))
@@ -120,7 +120,7 @@ def test_curve_figure_draws_the_curve_and_the_control_polygon():
 # --- step numbers -------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60, deadline=None)
 @given(st.tuples(*[st.integers(-8, 8)] * 4))
 def test_bresenham_numbers_start_0_and_step_k_k_plus_1(ends):
@@ -135,7 +135,7 @@ def test_bresenham_numbers_start_0_and_step_k_k_plus_1(ends):
         assert labels[s.pixel] == s.k + 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60, deadline=None)
 @given(st.tuples(*[st.integers(-8, 8)] * 4))
 def test_dda_numbers_row_k(ends):
@@ -230,7 +230,7 @@ def test_failed_figure_never_truncates_an_existing_file(tmp_path: Path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["keep.svg"]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_png_option_writes_a_png(tmp_path: Path):
     pytest.importorskip("PIL")
     target = tmp_path / "line.png"
@@ -283,7 +283,7 @@ def test_readme_line_figure_is_current():
 
 
 def test_readme_bezier_figure_is_well_formed():
-    from scanconv.answers.bezier import bezier_solution
+    from scanconv.answers.curves.bezier import bezier_solution
 
     solution = bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8)
     root = _parse((DOCS / "bezier-0-0-1-2-3-3-4-0.svg").read_text(encoding="utf-8"))
@@ -292,7 +292,7 @@ def test_readme_bezier_figure_is_well_formed():
 
 
 def test_readme_circle_figure_is_well_formed():
-    from scanconv.answers.circle import circle_solution
+    from scanconv.answers.primitives.circle import circle_solution
 
     solution = circle_solution("midpoint", 10)
     root = _parse((DOCS / "circle-midpoint-10.svg").read_text(encoding="utf-8"))
@@ -304,7 +304,7 @@ def test_readme_circle_figure_is_well_formed():
 @pytest.mark.parametrize("r", [1, 5, 10, 23])
 @pytest.mark.parametrize("method", ["midpoint", "bresenham", "polynomial", "trig", "symmetric-dda"])
 def test_circle_figures_number_every_pixel_by_its_octant_step(method, r):
-    from scanconv.answers.circle import circle_solution
+    from scanconv.answers.primitives.circle import circle_solution
 
     solution = circle_solution(method, r, 3, -2)
     labels = figure.step_labels(solution)
@@ -317,7 +317,7 @@ def test_circle_figures_number_every_pixel_by_its_octant_step(method, r):
 
 
 def test_ellipse_figure_draws_the_ellipse_and_marks_the_centre():
-    from scanconv.answers.ellipse import ellipse_solution
+    from scanconv.answers.primitives.ellipse import ellipse_solution
 
     solution = ellipse_solution(8, 6, 2, 1)
     root = _parse(figure.svg(solution))
@@ -339,12 +339,12 @@ def test_ellipse_figure_draws_the_ellipse_and_marks_the_centre():
     assert set(figure.step_labels(solution)) == set(solution.pixels())
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_png_draws_the_same_shapes():
     Image = pytest.importorskip("PIL.Image")
     from io import BytesIO
 
-    from scanconv.answers.bezier import bezier_solution
+    from scanconv.answers.curves.bezier import bezier_solution
 
     fig = figure.build(bezier_solution([(0, 0), (1, 2), (3, 3), (4, 0)], samples=8))
     with Image.open(BytesIO(figure.to_png(fig, scale=1))) as img:
@@ -361,7 +361,7 @@ def test_png_draws_the_same_shapes():
         assert rgb_of(paint.fill or paint.stroke or "") in colours, cls
 
 
-# --- polygons, seed fills and anti-aliasing (issue 17): outline and grey levels ---------------
+# --- polygons, seed fills and anti-aliasing: outline and grey levels ---------------------------
 
 
 def _cells(root: ET.Element, cls: str, fig: figure.Figure, sol: Solution) -> dict:
@@ -385,7 +385,7 @@ def _json(*args: str) -> dict:
 
 def test_polygon_figure_draws_the_fill_and_the_outline_distinguishably():
     from scanconv.algorithms.polygon import outline_pixels
-    from scanconv.answers.polygon import polygon_solution
+    from scanconv.answers.process.fill.scanline import polygon_solution
 
     pts = [(0, 0), (8, 2), (5, 7)]
     sol = polygon_solution([0, 0, 8, 2, 5, 7], "even-odd")
@@ -462,7 +462,7 @@ def test_grey_levels_run_from_white_to_black_in_equal_steps():
     assert figure.grey_of(0, 2) == "#ffffff" and figure.grey_of(1, 2) == "#000000"
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_seed_fill_figure_numbers_pixels_in_fill_order_and_draws_the_boundary(tmp_path: Path):
     import scanconv
 

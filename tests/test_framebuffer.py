@@ -1,4 +1,4 @@
-"""Frame-buffer arithmetic (scanconv.answers.framebuffer) against the textbook exercises
+"""Frame-buffer arithmetic (scanconv.answers.image.framebuffer) against the textbook exercises
 (Hearn & Baker, Computer Graphics C Version, 2nd ed., exercises 2-1 to 2-7), worked by hand."""
 
 from __future__ import annotations
@@ -7,7 +7,7 @@ from fractions import Fraction
 
 import pytest
 
-from scanconv.answers.framebuffer import framebuffer_solution
+from scanconv.answers.image.framebuffer import framebuffer_solution
 from scanconv.core.checks import InputError
 
 

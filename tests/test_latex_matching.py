@@ -15,7 +15,7 @@ finished as LaTeX. Here:
 * the attack's commands end (run under :func:`~tests.helpers.run_limited`, a CPU-time guard
   against a hang, not a speed test).
 
-The same goes for the student-table patterns of ``core/student_table.py`` that ran over a
+The same goes for the student-table patterns of ``marking/student_table.py`` that ran over a
 student's file with overlapping runs of spaces (``^\\s*\\|?\\s*`` over blank lines, a pixel's
 ``\\s*[,;\\s]\\s*``, the brackets of a first line): the old and new patterns agree on every short
 string, and the files that hung ``check`` are marked or refused at once.
@@ -32,7 +32,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.core import student_table
+from scanconv.marking import student_table
 from scanconv.render import latex
 from tests.helpers import run_limited
 

@@ -69,7 +69,7 @@ if not BIG_SHEET.exists() or BIG_SHEET.stat().st_size <= 10**6:  # whole or not 
 
 CHECK = ROOT / "tests" / "data" / "check"  # student tables for scanconv check
 HUGE_CELL = Path(tempfile.gettempdir()) / "scanconv-test-huge-cell.csv"
-if not HUGE_CELL.exists():  # a p of 10^25, beyond core.student_table.CELL_LIMIT
+if not HUGE_CELL.exists():  # a p of 10^25, beyond marking.student_table.CELL_LIMIT
     _cell = HUGE_CELL.with_name(f"{HUGE_CELL.name}.{os.getpid()}")
     _cell.write_text("k,p,x,y\n0," + "1" + "0" * 25 + ",2,2\n")
     os.replace(_cell, HUGE_CELL)
@@ -89,8 +89,8 @@ POINTS_12 = [str(i % 5) for i in range(24)]
 
 #: For each limit: command lines just beyond it, with a word the one-line refusal must contain.
 BEYOND: dict[str, list[tuple[list[str], str]]] = {
-    "answers.color.MAX_BITS": [(["color", "rgb", "1", "2", "3", "--bits", "17"], "1..16")],
-    "answers.practice.MAX_COUNT": [(["practice", "--count", "201", "--seed", "1"], "200")],
+    "answers.image.color.MAX_BITS": [(["color", "rgb", "1", "2", "3", "--bits", "17"], "1..16")],
+    "practice.notes.MAX_COUNT": [(["practice", "--count", "201", "--seed", "1"], "200")],
     "questions.limits.MAX_FILE_BYTES": [(["sheet", str(BIG_SHEET)], "1,000,000 bytes")],
     "questions.files.MAX_QUESTIONS": [(["sheet", str(SHEETS / "too-many-questions.txt")], "1000")],
     "questions.limits.MAX_LINE_CHARS": [(["sheet", str(LONG_LINE)], "10,000")],
@@ -135,8 +135,8 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "_api.syllabus.MAX_GLYPH": [
         (["char", "bitmap", "X", "--rows", "/".join(["1" * 65] * 2)], "64")
     ],
-    "answers.framebuffer.MAX_BITS": [(["framebuffer", "640", "480", "65"], "64")],
-    "core.student_table.CELL_LIMIT": [
+    "answers.image.framebuffer.MAX_BITS": [(["framebuffer", "640", "480", "65"], "64")],
+    "marking.student_table.CELL_LIMIT": [
         (["check", str(HUGE_CELL), "--", "line", "2", "2", "10", "6"], "out of range")
     ],
     "core.numeric.COORD_LIMIT": [
@@ -234,7 +234,7 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
         (["antialias", "circle", "49"], "10,000"),
         (["antialias", "polygon", "0", "0", "100", "0", "0", "99"], "10,000"),
     ],
-    "answers.shapes.MAX_POINTS": [
+    "answers.process._shared.MAX_POINTS": [
         (["transform", *POINTS_101, "--translate", "1", "1"], "at most 100 points"),
         (
             [
@@ -254,20 +254,20 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
             "at most 100 points",
         ),
     ],
-    "answers.transform.MAX_TRANSFORMS": [
+    "answers.process.transform.MAX_TRANSFORMS": [
         (["transform", "0", "0", *["--translate", "1", "1"] * 21], "at most 20 transformations"),
     ],
-    # scanconv check (issue 15): a student's file, and the question it is marked against
-    "core.student_table.MAX_TABLE_BYTES": [
+    # scanconv check: a student's file, and the question it is marked against
+    "marking.student_table.MAX_TABLE_BYTES": [
         (["check", str(CHECK / "too-large.csv"), "--", "line", "2", "2", "10", "6"], "bytes")
     ],
-    "core.student_table.MAX_TABLE_ROWS": [
+    "marking.student_table.MAX_TABLE_ROWS": [
         (["check", str(CHECK / "too-many-rows.csv"), "--", "line", "2", "2", "10", "6"], "5000")
     ],
-    "answers.marking.MAX_QUESTION_ROWS": [
+    "marking.limits.MAX_QUESTION_ROWS": [
         (["check", str(CHECK / "slip.csv"), "--", "line", "0", "0", "10001", "0"], "10000")
     ],
-    "answers.clip_polygon.MAX_VERTICES": [
+    "answers.process.clip.sutherland_hodgman.MAX_VERTICES": [
         (
             ["clip", "polygon", *POINTS_101, "--window", "0", "0", "5", "5"],
             "at most 100 polygon vertices",
@@ -391,9 +391,9 @@ def test_the_grid_limit_leaves_the_grid_out_with_a_note():
 def test_exactly_at_each_limit_is_accepted():
     """The other side of each edge: the largest accepted value passes its check."""
     from scanconv.algorithms import bspline, curve_limits, image_limits
-    from scanconv.answers.bezier import bezier_at_solution
-    from scanconv.answers.circle import circle_solution
-    from scanconv.answers.line import line_solution
+    from scanconv.answers.curves.bezier import bezier_at_solution
+    from scanconv.answers.primitives.circle import circle_solution
+    from scanconv.answers.primitives.line import line_solution
     from scanconv.core import expr, numeric
     from scanconv.render import figure
 

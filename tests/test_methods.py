@@ -78,7 +78,7 @@ def test_line_answers_dispatch_through_the_records(monkeypatch: pytest.MonkeyPat
     """The line answer calls the builder its record names: a record pointing elsewhere is used
     (there is no branch left that could answer with another method)."""
     import scanconv.answers.methods as methods
-    from scanconv.answers.line import line_solution
+    from scanconv.answers.primitives.line import line_solution
 
     calls = []
 

@@ -13,7 +13,7 @@ from itertools import islice
 
 import pytest
 
-from scanconv.answers.line import line_solution
+from scanconv.answers.primitives.line import line_solution
 from scanconv.cli import output as cli
 from scanconv.core.records import Solution, Step
 from scanconv.render import Format, Options, render
@@ -51,7 +51,7 @@ def test_data_formats_stream_row_by_row(fmt):
     assert pulled[0] <= 50
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("fmt", [Format.plain, Format.markdown])
 def test_text_formats_buffer_only_the_padded_head(fmt):
     sol, pulled = counted(line_solution("bresenham", 0, 0, LENGTH, 1))
@@ -94,7 +94,7 @@ def test_a_wide_matrix_streams_a_few_rows_at_a_time(fmt):
     import tracemalloc
 
     from scanconv.algorithms.sample import sample_levels
-    from scanconv.answers.sample import sample_solution
+    from scanconv.answers.image.sample import sample_solution
 
     sol = sample_solution(sample_levels("x + y", 1024, 1024, 256))
     tracemalloc.start()

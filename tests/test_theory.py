@@ -10,8 +10,8 @@ from pathlib import Path
 import pytest
 
 from scanconv.algorithms.circles import images
-from scanconv.answers.topics import theory_solution, topic, topics
-from scanconv.answers.topics._build import LONGEST_CELL
+from scanconv.answers.theory.topics import theory_solution, topic, topics
+from scanconv.answers.theory.topics._build import LONGEST_CELL
 from scanconv.render import Format, render
 from scanconv.render.latex import split_columns
 from scanconv.render.text import table_rows
@@ -161,7 +161,7 @@ def test_every_answer_compiles_with_pdflatex_without_overfull_boxes(tmp_path: Pa
 def test_the_examples_are_the_commands_own_answers(name: str, algo: str) -> None:
     """A live example is the answer ``scanconv line 2 2 10 6`` gives, row for row and pixel for
     pixel, not a copy."""
-    from scanconv.answers.line import line_solution
+    from scanconv.answers.primitives.line import line_solution
     from scanconv.core.records import step_getter
 
     line = line_solution(algo, 2, 2, 10, 6)

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scanconv.answers.attributes import thick_line_solution
+from scanconv.answers.primitives.attributes import thick_line_solution
 from scanconv.render import Format, Options, render
 
 from .references import bresenham_ref

@@ -17,19 +17,19 @@ from pathlib import Path
 import pytest
 
 from scanconv.algorithms.sample import sample_levels
-from scanconv.answers.bezier import bezier_at_solution, bezier_solution
-from scanconv.answers.bspline import bspline_at_solution, bspline_solution
-from scanconv.answers.circle import circle_solution
 from scanconv.answers.compare import compare_circles, compare_lines
-from scanconv.answers.continuity import continuity_solution
-from scanconv.answers.ellipse import ellipse_solution
-from scanconv.answers.line import line_solution
-from scanconv.answers.local_control import local_control_solution
-from scanconv.answers.parametric import parametric_solution
-from scanconv.answers.quantize import quantize_solution
-from scanconv.answers.ramp import ramp_solution
-from scanconv.answers.sample import sample_solution
-from scanconv.answers.storage import storage_solution
+from scanconv.answers.curves.bezier import bezier_at_solution, bezier_solution
+from scanconv.answers.curves.bspline import bspline_at_solution, bspline_solution
+from scanconv.answers.curves.continuity import continuity_solution
+from scanconv.answers.curves.local_control import local_control_solution
+from scanconv.answers.image.quantize import quantize_solution
+from scanconv.answers.image.ramp import ramp_solution
+from scanconv.answers.image.sample import sample_solution
+from scanconv.answers.image.storage import storage_solution
+from scanconv.answers.primitives.circle import circle_solution
+from scanconv.answers.primitives.ellipse import ellipse_solution
+from scanconv.answers.primitives.line import line_solution
+from scanconv.answers.primitives.parametric import parametric_solution
 from scanconv.core.records import Column, Quantity, Solution, heading, rule, worked
 from scanconv.core.working import ascii_text, tex_text, tex_to_unicode
 
@@ -361,7 +361,7 @@ def _images() -> list[Solution]:
     ]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_every_quantity_and_heading_is_written_once() -> None:
     """The text of every given, derived value and heading is derived from its TeX."""
     for sol in _solutions():

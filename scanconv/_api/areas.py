@@ -23,9 +23,9 @@ from .values import (
 if TYPE_CHECKING:
     from ..algorithms.choices import WuEnds
     from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid
-    from ..answers import antialias as answers_antialias
-    from ..answers import fill as answers_fill
-    from ..answers import polygon as answers_polygon
+    from ..answers.process.antialias import sampling as answers_antialias
+    from ..answers.process.fill import scanline as answers_polygon
+    from ..answers.process.fill import seed as answers_fill
     from ..core.choices import (
         AAMethodName,
         AcrossName,
@@ -38,9 +38,9 @@ if TYPE_CHECKING:
     )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
-    answers_antialias = lazy.module("scanconv.answers.antialias")
-    answers_fill = lazy.module("scanconv.answers.fill")
-    answers_polygon = lazy.module("scanconv.answers.polygon")
+    answers_antialias = lazy.module("scanconv.answers.process.antialias.sampling")
+    answers_fill = lazy.module("scanconv.answers.process.fill.seed")
+    answers_polygon = lazy.module("scanconv.answers.process.fill.scanline")
 
 
 @answers

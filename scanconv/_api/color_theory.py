@@ -13,15 +13,15 @@ from ..display import answers
 from .values import NumberLike, _number
 
 if TYPE_CHECKING:
-    from ..answers import color as answers_color
-    from ..answers import topics as answers_topics
+    from ..answers.image import color as answers_color
+    from ..answers.theory import topics as answers_topics
     from ..core.choices import (
         ColorModelName,
     )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
-    answers_color = lazy.module("scanconv.answers.color")
-    answers_topics = lazy.module("scanconv.answers.topics")
+    answers_color = lazy.module("scanconv.answers.image.color")
+    answers_topics = lazy.module("scanconv.answers.theory.topics")
 
 
 @answers

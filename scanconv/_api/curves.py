@@ -26,19 +26,19 @@ else:
     curve_limits = lazy.module("scanconv.algorithms.curve_limits")
 
 if TYPE_CHECKING:
-    from ..answers import bezier as answers_bezier
-    from ..answers import bspline as answers_bspline
-    from ..answers import bspline_basis_at as answers_bspline_basis_at
-    from ..answers import continuity as answers_continuity
-    from ..answers import local_control as answers_local_control
+    from ..answers.curves import bezier as answers_bezier
+    from ..answers.curves import bspline as answers_bspline
+    from ..answers.curves import bspline_basis as answers_bspline_basis_at
+    from ..answers.curves import continuity as answers_continuity
+    from ..answers.curves import local_control as answers_local_control
     from ..core.numeric import Number
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
-    answers_bezier = lazy.module("scanconv.answers.bezier")
-    answers_bspline = lazy.module("scanconv.answers.bspline")
-    answers_bspline_basis_at = lazy.module("scanconv.answers.bspline_basis_at")
-    answers_continuity = lazy.module("scanconv.answers.continuity")
-    answers_local_control = lazy.module("scanconv.answers.local_control")
+    answers_bezier = lazy.module("scanconv.answers.curves.bezier")
+    answers_bspline = lazy.module("scanconv.answers.curves.bspline")
+    answers_bspline_basis_at = lazy.module("scanconv.answers.curves.bspline_basis")
+    answers_continuity = lazy.module("scanconv.answers.curves.continuity")
+    answers_local_control = lazy.module("scanconv.answers.curves.local_control")
 
 
 @answers

@@ -13,7 +13,7 @@ from ..display import answers
 from .values import NumberLike, _choice, _number, _optional, _whole
 
 if TYPE_CHECKING:
-    from ..answers import dither as answers_dither
+    from ..answers.image import dither as answers_dither
     from ..core.choices import (
         ArithmeticName,
         CarryName,
@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from ..core.numeric import Number
     from ..core.records import Solution
 else:  # the command's answer module, loaded by its first call
-    answers_dither = lazy.module("scanconv.answers.dither")
+    answers_dither = lazy.module("scanconv.answers.image.dither")
 
 
 MatrixLike = str | Sequence[Sequence[NumberLike]]

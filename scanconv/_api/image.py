@@ -29,16 +29,16 @@ else:
     algorithms_sample = lazy.module("scanconv.algorithms.sample")
 
 if TYPE_CHECKING:
-    from ..answers import quantize as answers_quantize
-    from ..answers import ramp as answers_ramp
-    from ..answers import sample as answers_sample
-    from ..answers import storage as answers_storage
+    from ..answers.image import quantize as answers_quantize
+    from ..answers.image import ramp as answers_ramp
+    from ..answers.image import sample as answers_sample
+    from ..answers.image import storage as answers_storage
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
-    answers_quantize = lazy.module("scanconv.answers.quantize")
-    answers_ramp = lazy.module("scanconv.answers.ramp")
-    answers_sample = lazy.module("scanconv.answers.sample")
-    answers_storage = lazy.module("scanconv.answers.storage")
+    answers_quantize = lazy.module("scanconv.answers.image.quantize")
+    answers_ramp = lazy.module("scanconv.answers.image.ramp")
+    answers_sample = lazy.module("scanconv.answers.image.sample")
+    answers_storage = lazy.module("scanconv.answers.image.storage")
 
 
 @answers

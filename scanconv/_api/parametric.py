@@ -9,10 +9,10 @@ from ..display import answers
 from .values import NumberLike, PointLike, TRangeLike, _bounds, _number, _numbers, _pair, _whole
 
 if TYPE_CHECKING:
-    from ..answers import parametric as answers_parametric
+    from ..answers.primitives import parametric as answers_parametric
     from ..core.records import Solution
 else:  # the command's answer module, loaded by its first call
-    answers_parametric = lazy.module("scanconv.answers.parametric")
+    answers_parametric = lazy.module("scanconv.answers.primitives.parametric")
 
 
 @answers

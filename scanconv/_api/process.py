@@ -13,35 +13,36 @@ from .values import NumberLike, PointsLike, _choice, _flat, _numbers, _rect
 
 if TYPE_CHECKING:
     from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
-    from ..answers import clip as answers_clip
-    from ..answers import clip_polygon as answers_clip_polygon
-    from ..answers import cyrus_beck as answers_cyrus_beck
-    from ..answers import midpoint_clip as answers_midpoint_clip
-    from ..answers import nll as answers_nll
-    from ..answers import pipeline as answers_pipeline
-    from ..answers import transform as answers_transform
-    from ..answers import viewport as answers_viewport
-    from ..answers import weiler_atherton as answers_weiler_atherton
+    from ..answers.process import pipeline as answers_pipeline
+    from ..answers.process import transform as answers_transform
+    from ..answers.process import viewport as answers_viewport
+    from ..answers.process.clip import cyrus_beck as answers_cyrus_beck
+    from ..answers.process.clip import midpoint as answers_midpoint_clip
+    from ..answers.process.clip import nll as answers_nll
+    from ..answers.process.clip import rectangle as answers_clip
+    from ..answers.process.clip import sutherland_hodgman as answers_clip_polygon
+    from ..answers.process.clip import weiler_atherton as answers_weiler_atherton
     from ..core.choices import (
         ClipEndsName,
         FillRuleName,
         LineAlgorithmName,
         LineClipMethodName,
         MidpointName,
+        MidpointStopName,
         NormalsName,
         PolygonClipMethodName,
     )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
-    answers_clip = lazy.module("scanconv.answers.clip")
-    answers_clip_polygon = lazy.module("scanconv.answers.clip_polygon")
-    answers_cyrus_beck = lazy.module("scanconv.answers.cyrus_beck")
-    answers_midpoint_clip = lazy.module("scanconv.answers.midpoint_clip")
-    answers_nll = lazy.module("scanconv.answers.nll")
-    answers_pipeline = lazy.module("scanconv.answers.pipeline")
-    answers_transform = lazy.module("scanconv.answers.transform")
-    answers_viewport = lazy.module("scanconv.answers.viewport")
-    answers_weiler_atherton = lazy.module("scanconv.answers.weiler_atherton")
+    answers_clip = lazy.module("scanconv.answers.process.clip.rectangle")
+    answers_clip_polygon = lazy.module("scanconv.answers.process.clip.sutherland_hodgman")
+    answers_cyrus_beck = lazy.module("scanconv.answers.process.clip.cyrus_beck")
+    answers_midpoint_clip = lazy.module("scanconv.answers.process.clip.midpoint")
+    answers_nll = lazy.module("scanconv.answers.process.clip.nll")
+    answers_pipeline = lazy.module("scanconv.answers.process.pipeline")
+    answers_transform = lazy.module("scanconv.answers.process.transform")
+    answers_viewport = lazy.module("scanconv.answers.process.viewport")
+    answers_weiler_atherton = lazy.module("scanconv.answers.process.clip.weiler_atherton")
 
 
 @answers
@@ -73,7 +74,7 @@ def transform(
     Notes
     -----
     sin and cos are exact at multiples of 15 degrees (``√2/2``), otherwise rounded to 6
-    decimals (:mod:`scanconv.answers.transform`).
+    decimals (:mod:`scanconv.answers.process.transform`).
 
     Examples
     --------
@@ -132,6 +133,7 @@ def clip_line(
     normals: NormalsName | None = None,
     ends: ClipEndsName | None = None,
     midpoint: MidpointName | None = None,
+    stop: MidpointStopName | None = None,
 ) -> Solution:
     """A segment clipped against a rectangular window (``scanconv clip line``).
 
@@ -152,6 +154,10 @@ def clip_line(
     midpoint : {"rounded", "floor", "exact"}, optional
         Midpoint subdivision only: the midpoint rounded half up (default), floored (the hardware
         shift) or exact.
+    stop : {"length", "edge"}, optional
+        Midpoint subdivision only: split until a piece is decided or one unit long (default),
+        or also stop where a midpoint lands on the window's edge (the piece beyond it is
+        outside but for that point, the clipped end), as many published answers do.
 
     Returns
     -------
@@ -185,7 +191,7 @@ def clip_line(
     rect = _rect(window, "window")
     name = _choice(method, "method")
     _only(name, {"normals": normals, "ends": ends}, "cyrus-beck")
-    _only(name, {"midpoint": midpoint}, "midpoint-subdivision")
+    _only(name, {"midpoint": midpoint, "stop": stop}, "midpoint-subdivision")
     if name == "cyrus-beck":
         x0, y0, x1_, y1_ = rect
         corners = [x0, y0, x1_, y0, x1_, y1_, x0, y1_]
@@ -194,7 +200,7 @@ def clip_line(
         )
     if name == "midpoint-subdivision":
         return answers_midpoint_clip.midpoint_clip_solution(
-            a, b, c, d, list(rect), midpoint=midpoint or "rounded"
+            a, b, c, d, list(rect), midpoint=midpoint or "rounded", stop=stop or "length"
         )
     if name == "nicholl-lee-nicholl":
         return answers_nll.nll_solution(a, b, c, d, rect)
@@ -258,20 +264,24 @@ def clip_convex(
 @answers
 def clip_polygon(
     vertices: PointsLike,
-    window: Sequence[NumberLike],
+    window: Sequence[NumberLike] | PointsLike,
     method: PolygonClipMethod | PolygonClipMethodName = "sutherland-hodgman",
 ) -> Solution:
-    """A polygon clipped against a rectangular window (``scanconv clip polygon``).
+    """A polygon clipped against a rectangular window, or a polygon window
+    (``scanconv clip polygon``).
 
     Parameters
     ----------
     vertices : sequence of (x, y), or flat numbers
         The polygon's vertices in order.
-    window : (xmin, ymin, xmax, ymax)
-        The clipping window, four numbers.
+    window : (xmin, ymin, xmax, ymax), or a polygon's vertices
+        The clipping window: four numbers, a rectangle; or three or more vertices (pairs, or
+        six or more flat numbers) in order: any convex window for Sutherland-Hodgman (a
+        triangle, a hexagon), any simple polygon for Weiler-Atherton.
     method : {"sutherland-hodgman", "weiler-atherton"} or PolygonClipMethod, default "sutherland-hodgman"
-        Sutherland-Hodgman (against each edge in turn: left, right, bottom, top) or
-        Weiler-Atherton (walking the polygon and the window, one polygon per piece).
+        Sutherland-Hodgman (against each edge in turn: left, right, bottom, top; a polygon
+        window's edges C1C2, C2C3, ... in order) or Weiler-Atherton (walking the polygon and
+        the window, one polygon per piece).
 
     Returns
     -------
@@ -290,9 +300,24 @@ def clip_polygon(
     [[1, 3], [1, 1], [3, 1]]
     >>> clip_polygon([(0, 0), (8, 0), (8, 8)], (2, 1, 9, 3), "weiler-atherton").data["polygons"]
     [[[8, 1], [8, 3], [3, 3], [2, 2], [2, 1]]]
+    >>> clip_polygon([(0, 0), (4, 0), (4, 4), (0, 4)], [(1, -1), (6, 4), (1, 4)]).data["clipped"]
+    [[4, 4], [1, 4], [1, 0], [2, 0], [4, 2]]
     """
     name = _choice(method, "method")
-    flat, rect = _flat(vertices, "vertices"), _rect(window, "window")
+    flat = _flat(vertices, "vertices")
+    if isinstance(window, str) or not (
+        len(window) == 4 and not isinstance(window[0], tuple | list)
+    ):
+        shape = _flat(window, "window")
+        if name == "weiler-atherton":
+            return answers_weiler_atherton.weiler_atherton_solution(flat, shape)
+        if name != "sutherland-hodgman":
+            raise InputError(
+                f"unknown polygon clipping method {name!r} (sutherland-hodgman, weiler-atherton)",
+                "method",
+            )
+        return answers_clip_polygon.clip_polygon_window_solution(flat, shape)
+    rect = _rect(window, "window")  # type: ignore[arg-type]
     if name == "weiler-atherton":
         x0, y0, x1, y1 = rect
         return answers_weiler_atherton.weiler_atherton_solution(

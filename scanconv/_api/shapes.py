@@ -20,10 +20,10 @@ from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _
 
 if TYPE_CHECKING:
     from ..algorithms.circle_choices import P0, CircleMethod, EllipseP0, Loop, Update, XStep
-    from ..answers import circle as answers_circle
     from ..answers import compare as answers_compare
-    from ..answers import ellipse as answers_ellipse
-    from ..answers import line as answers_line
+    from ..answers.primitives import circle as answers_circle
+    from ..answers.primitives import ellipse as answers_ellipse
+    from ..answers.primitives import line as answers_line
     from ..core.choices import (
         CircleMethodName,
         ConventionName,
@@ -42,10 +42,10 @@ if TYPE_CHECKING:
     )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
-    answers_circle = lazy.module("scanconv.answers.circle")
+    answers_circle = lazy.module("scanconv.answers.primitives.circle")
     answers_compare = lazy.module("scanconv.answers.compare")
-    answers_ellipse = lazy.module("scanconv.answers.ellipse")
-    answers_line = lazy.module("scanconv.answers.line")
+    answers_ellipse = lazy.module("scanconv.answers.primitives.ellipse")
+    answers_line = lazy.module("scanconv.answers.primitives.line")
 
 
 @answers

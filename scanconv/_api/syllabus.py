@@ -24,10 +24,10 @@ from .values import (
 )
 
 if TYPE_CHECKING:
-    from ..answers import attributes as answers_attributes
-    from ..answers import characters as answers_characters
-    from ..answers import framebuffer as answers_framebuffer
-    from ..answers import inside as answers_inside
+    from ..answers.image import framebuffer as answers_framebuffer
+    from ..answers.primitives import attributes as answers_attributes
+    from ..answers.primitives import characters as answers_characters
+    from ..answers.process.fill import inside as answers_inside
     from ..core.choices import (
         BitOrderName,
         BoundaryName,
@@ -37,10 +37,10 @@ if TYPE_CHECKING:
     )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
-    answers_attributes = lazy.module("scanconv.answers.attributes")
-    answers_characters = lazy.module("scanconv.answers.characters")
-    answers_framebuffer = lazy.module("scanconv.answers.framebuffer")
-    answers_inside = lazy.module("scanconv.answers.inside")
+    answers_attributes = lazy.module("scanconv.answers.primitives.attributes")
+    answers_characters = lazy.module("scanconv.answers.primitives.characters")
+    answers_framebuffer = lazy.module("scanconv.answers.image.framebuffer")
+    answers_inside = lazy.module("scanconv.answers.process.fill.inside")
 
 MAX_GLYPH = 64
 """The largest glyph drawn from rows given (64 x 64 bits; scaled at most 16 times)."""

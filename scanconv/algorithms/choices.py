@@ -18,7 +18,7 @@ class LineAlgorithm(str, Enum):
     dda = "dda"
     basic = "basic"
     wu = "wu"
-    """Xiaolin Wu's anti-aliased line (the table of :mod:`scanconv.answers.antialias`)."""
+    """Xiaolin Wu's anti-aliased line (the table of :mod:`scanconv.answers.process.antialias.sampling`)."""
     midpoint = "midpoint"
     """The midpoint line algorithm: d = F(M), Bresenham's p with its own derivation."""
 

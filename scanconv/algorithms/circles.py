@@ -59,7 +59,7 @@ _PI_HI = _PI_LO + Fraction(1, 10**63)
 def midpoint_increment(x: int, y: int, se: bool) -> int:
     """``p_{k+1} - p_k`` of the midpoint circle with the new point ``(x, y)``: ``2x + 1``
     (E) or ``2x + 1 - 2y`` (SE). The one copy of the update, shared by :func:`midpoint`,
-    :func:`general` and the marking model (:class:`scanconv.answers.models.MidpointCircle`).
+    :func:`general` and the marking model (:class:`scanconv.marking.models.MidpointCircle`).
 
     >>> midpoint_increment(4, 9, True), midpoint_increment(1, 10, False)
     (-9, 3)
@@ -71,7 +71,7 @@ def bresenham_increment(x: int, y: int, se: bool, xstep: str = "last") -> int:
     """``d_{k+1} - d_k`` of Bresenham's circle from the point ``(x, y)`` the decision was taken
     at: ``4x + 6`` (E) or ``4(x - y) + 10`` (SE); with ``xstep="first"`` (x, and y, stepped
     before d is updated) the same with the new x and y, 4 (E) and 8 (SE) larger. Shared by
-    :func:`bresenham` and :class:`scanconv.answers.models.BresenhamCircle`.
+    :func:`bresenham` and :class:`scanconv.marking.models.BresenhamCircle`.
 
     >>> bresenham_increment(0, 10, False), bresenham_increment(0, 10, False, "first")
     (6, 10)

@@ -166,7 +166,7 @@ def increment4(rx: int, ry: int, x: int, y: int, region: int, diagonal: bool) ->
     """``4 (p_{k+1} - p_k)`` with the new point ``(x, y)``: region 1 ``2ry²x + ry²`` (E) or
     ``2ry²x - 2rx²y + ry²`` (SE); region 2 ``-2rx²y + rx²`` (S) or ``2ry²x - 2rx²y + rx²``
     (SE). The one copy of the updates: :func:`midpoint_ellipse`, :func:`region1_end` and the
-    marking model (:class:`scanconv.answers.models.MidpointEllipse`) all add it.
+    marking model (:class:`scanconv.marking.models.MidpointEllipse`) all add it.
 
     >>> increment4(8, 6, 1, 6, 1, False), increment4(8, 6, 8, 2, 2, True)
     (432, 1536)

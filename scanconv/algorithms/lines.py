@@ -23,7 +23,7 @@ from .conventions import rounder
 
 def bresenham_terms(dmaj: int, dmin: int, tie: str = "step") -> tuple[int, int, int, int]:
     """Bresenham's arithmetic, once for the generators here and the marking model
-    (:class:`scanconv.answers.models.BresenhamLine`): ``(p0, inc_keep, inc_step, t)`` with
+    (:class:`scanconv.marking.models.BresenhamLine`): ``(p0, inc_keep, inc_step, t)`` with
     ``p0 = 2 Δminor - Δmajor``, ``p_{k+1} = p_k + inc_keep`` when ``p_k < t`` (the minor
     coordinate kept) and ``p_k + inc_step`` otherwise. ``t`` is 0, or 1 with ``tie="keep"``
     (``p <= 0`` is ``p < 1``: every p is an integer).

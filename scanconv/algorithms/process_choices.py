@@ -64,7 +64,7 @@ class Subgrid(str, Enum):
 
 class Divide(str, Enum):
     """How a sub-pixel count becomes an intensity (the ``divide`` convention of
-    :func:`scanconv.answers.subpixel.subpixel_solution`)."""
+    :func:`scanconv.answers.process.antialias.subpixel.subpixel_solution`)."""
 
     n = "n"
     n2 = "n2"

@@ -25,13 +25,13 @@ from .methods import METHODS, compared
 
 if TYPE_CHECKING:
     from ..algorithms import circles
-    from . import circle, line
-    from . import theory as th
+    from .primitives import circle, line
+    from .theory import derivations as th
 else:
     circles = lazy.module("scanconv.algorithms.circles")
-    circle = lazy.module("scanconv.answers.circle")
-    th = lazy.module("scanconv.answers.theory")
-    line = lazy.module("scanconv.answers.line")
+    circle = lazy.module("scanconv.answers.primitives.circle")
+    th = lazy.module("scanconv.answers.theory.derivations")
+    line = lazy.module("scanconv.answers.primitives.line")
 
 LINE_METHODS = compared("line")
 """The line algorithms compared, in the order of the table's columns (their records' order)."""

@@ -25,10 +25,10 @@ from .options import BriefOpt, ExactOpt, FormatOpt, OutputOpt
 from .output import Output, check_paths, emit, fail, format_for_file, write_atomic
 
 if TYPE_CHECKING:
-    from ..answers import marking
+    from ..marking import mark as marking
     from ..render import marking as marking_formats
 else:  # what marking a file needs: only the runs that mark one
-    marking = lazy.module("scanconv.answers.marking")
+    marking = lazy.module("scanconv.marking.mark")
     marking_formats = lazy.module("scanconv.render.marking")
 
 #: Output options written after the question still belong to ``check`` (the question's own

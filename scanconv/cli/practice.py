@@ -1,6 +1,6 @@
 """``scanconv practice``: seeded practice questions, as a worksheet and its answer key.
 
-The questions come from :func:`scanconv.answers.practice.practice` and are run through
+The questions come from :func:`scanconv.practice.notes.practice` and are run through
 ``sheet`` (:mod:`scanconv.cli.sheet`): the worksheet goes to stdout (or ``-o FILE``, or
 ``--pdf FILE``), the key to ``--key FILE`` and the question file itself to ``--questions
 FILE``, so the teacher can hand out one, keep the other, and edit and re-run the questions::
@@ -28,9 +28,9 @@ from .output import check_paths, document_format, fail, note, write_all
 from .sheet import answer_questions, pdf_file, pdf_output, read_questions, text_file, write_document
 
 if TYPE_CHECKING:
-    from ..answers import practice as answers_practice
+    from ..practice import notes as answers_practice
 else:  # the generator: not for --help
-    answers_practice = lazy.module("scanconv.answers.practice")
+    answers_practice = lazy.module("scanconv.practice.notes")
 
 
 class Topic(str, Enum):

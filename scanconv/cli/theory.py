@@ -14,9 +14,9 @@ from .application import app
 from .command import answers
 
 if TYPE_CHECKING:
-    from ..answers import topics
+    from ..answers.theory import topics
 else:
-    topics = lazy.module("scanconv.answers.topics")  # --list only
+    topics = lazy.module("scanconv.answers.theory.topics")  # --list only
 
 
 def _list(value: bool) -> None:

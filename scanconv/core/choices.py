@@ -47,6 +47,7 @@ __all__ = [
     "LineScaleName",
     "LoopName",
     "MidpointName",
+    "MidpointStopName",
     "NormalsName",
     "OrderName",
     "OriginName",
@@ -117,6 +118,8 @@ ClipEndsName = Literal["exact", "truncated"]
 """Cyrus-Beck's clipped end points (:data:`scanconv.algorithms.cyrus_beck.ENDS`)."""
 MidpointName = Literal["rounded", "floor", "exact"]
 """Midpoint subdivision's midpoint (:data:`scanconv.algorithms.midpoint_clip.MIDPOINTS`)."""
+MidpointStopName = Literal["length", "edge"]
+"""Midpoint subdivision's stop rule (:data:`scanconv.algorithms.midpoint_clip.STOPS`)."""
 AAMethodName = Literal["area", "supersample", "wu", "subpixel"]
 """``method`` of the anti-aliasing functions (``AAMethod``)."""
 AcrossName = Literal["minor", "perpendicular"]
@@ -132,7 +135,7 @@ OrderName = Literal["stack", "queue"]
 FillMethodName = Literal["boundary", "flood"]
 """The seed fill (:data:`scanconv.algorithms.seedfill.METHODS`)."""
 InsideRuleName = Literal["both", "even-odd", "nonzero"]
-"""The inside test's rule (:data:`scanconv.answers.inside.RULES`)."""
+"""The inside test's rule (:data:`scanconv.answers.process.fill.inside.RULES`)."""
 BoundaryName = Literal["inside", "outside"]
 """What a point on the boundary counts as (:data:`scanconv.algorithms.inside.BOUNDARY`)."""
 

@@ -10,7 +10,7 @@ through this module, in one of three forms:
   (:meth:`scanconv.answers.methods.Method.load`), the renderer of each format
   (:func:`scanconv.render.render`), the command modules of the CLI
   (:func:`scanconv.cli.application.register`) and the theory sections
-  (:func:`scanconv.answers.topics.topics`).
+  (:func:`scanconv.answers.theory.topics.topics`).
 - :func:`attach_stub` (PEP 562): a package's public names, listed once in its ``__init__.pyi``
   (what type checkers read) and imported when first used (``scanconv``, ``scanconv._api``,
   ``scanconv.questions``), as skimage's ``lazy.attach_stub`` does.

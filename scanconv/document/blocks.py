@@ -152,7 +152,7 @@ class StepTable(NamedTuple):
     """1 when a row plots ``(x_{k+1}, y_{k+1})`` (the pixel its decision chose: the start
     pixel is plotted before row 0), else 0."""
     model: Callable[[], Any] | None = None
-    """The walk's marking model (:mod:`scanconv.answers.models`), built on first call; ``None``
+    """The walk's marking model (:mod:`scanconv.marking.models`), built on first call; ``None``
     or a call returning ``None``: no rule a step can be judged by (the test-yourself mode)."""
 
     @property

@@ -31,9 +31,9 @@ from .numbering import label_offset, marks_label, numbering_legend, step_labels
 from .prose import note_segments
 
 if TYPE_CHECKING:
-    from ..answers import marking_diagnose
+    from ..marking import diagnose as marking_diagnose
 else:
-    marking_diagnose = lazy.module("scanconv.answers.marking_diagnose")
+    marking_diagnose = lazy.module("scanconv.marking.diagnose")
 
 IDEAL = ("line", "circle", "ellipse", "polyline", "control")
 """The :attr:`Solution.geometry` keys that describe the ideal primitive."""
@@ -42,7 +42,7 @@ _REGION = lazy.pattern(r"Region (\d+) ")
 
 DERIVATION = "derivation"
 """The key of the rule that heads a derivation in the working
-(:data:`scanconv.answers.theory.DERIVATION`)."""
+(:data:`scanconv.answers.theory.derivations.DERIVATION`)."""
 
 
 def prose(text: str) -> Prose:
@@ -64,7 +64,7 @@ def document(solution: Solution) -> Document:
     working, the notes, the step table, the further tables, the pseudocode, the pixels, the
     drawings.
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> doc = document(line_solution("bresenham", 0, 0, 2, 1))
     >>> [type(b).__name__ for b in doc.blocks]
     ['Title', 'Given', 'Working', 'Notes', 'StepTable', 'Pixels']

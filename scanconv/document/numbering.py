@@ -43,7 +43,7 @@ def mirror_images(pixel: Pixel, symmetry: int, center: tuple[Any, Any]) -> Itera
 def label_offset(solution: Solution) -> int:
     """1 when the step table's pixel column is ``(x_{k+1}, y_{k+1})``, else 0.
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> label_offset(line_solution("bresenham", 2, 2, 10, 6)), label_offset(
     ...     line_solution("dda", 2, 2, 10, 6))
     (1, 0)
@@ -76,7 +76,7 @@ def numbering(solution: Solution) -> str:
 def numbering_legend(solution: Solution) -> str:
     """What the numbers in the pixels mean (the legend of the figure and of the HTML grid).
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> numbering_legend(line_solution("bresenham", 2, 2, 10, 6))
     'number: k + 1 for row k; 0: start'
     """
@@ -94,7 +94,7 @@ def step_labels(solution: Solution) -> dict[Pixel, int]:
     """The step number of every plotted pixel that has one (see the module's notes and
     :func:`numbering`).
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> labels = step_labels(line_solution("bresenham", 2, 2, 10, 6))
     >>> labels[(2, 2)], labels[(3, 3)], labels[(10, 6)]
     (0, 1, 8)

@@ -25,14 +25,14 @@ from ..site.page import _words
 from .budget import check_budget
 
 if TYPE_CHECKING:
-    from ..answers import marking as answers_marking
-    from ..answers import practice as answers_practice
-    from ..core import student_table
+    from ..marking import mark as answers_marking
+    from ..marking import student_table
+    from ..practice import notes as answers_practice
     from ..questions import marking as questions_marking
 else:  # each only for the tool that needs it
-    answers_marking = lazy.module("scanconv.answers.marking")
-    answers_practice = lazy.module("scanconv.answers.practice")
-    student_table = lazy.module("scanconv.core.student_table")
+    answers_marking = lazy.module("scanconv.marking.mark")
+    answers_practice = lazy.module("scanconv.practice.notes")
+    student_table = lazy.module("scanconv.marking.student_table")
     questions_marking = lazy.module("scanconv.questions.marking")
 
 SHOWN = (Format.json, Format.markdown)
@@ -131,7 +131,7 @@ def check(question: str, table: str) -> Reply:
 
 def practice(topic: str, count: int, seed: int, difficulty: str) -> Reply:
     """``count`` practice questions on ``topic`` from ``seed``, each with its key (the same
-    arguments, the same questions: :func:`scanconv.answers.practice.practice`).
+    arguments, the same questions: :func:`scanconv.practice.notes.practice`).
 
     >>> r = practice("line", 2, 7, "exam")
     >>> [q["question"] for q in r.data["questions"]] == [q["question"] for q in practice("line", 2, 7, "exam").data["questions"]]

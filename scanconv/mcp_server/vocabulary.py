@@ -8,7 +8,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..algorithms.conventions import KNOBS, PRESETS, SOURCES
-from ..answers.practice import DIFFICULTIES, TOPICS
+from ..practice.notes import DIFFICULTIES, TOPICS
 from ..questions.grammar import Param, Spec
 from ..questions.grammar_table import SHARED, SPECS
 from ..site.page import EXAMPLES

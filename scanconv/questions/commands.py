@@ -21,9 +21,9 @@ from ..core.numeric import parse_number
 from .words import UsageError, no_such_option, number
 
 if TYPE_CHECKING:
-    from ..answers import transform as answers_transform
+    from ..answers.process import transform as answers_transform
 else:
-    answers_transform = lazy.module("scanconv.answers.transform")
+    answers_transform = lazy.module("scanconv.answers.process.transform")
 
 if TYPE_CHECKING:
     from ..core.records import Solution

@@ -19,11 +19,11 @@ from .parser import HELP, CommandLine, parse, split
 from .words import students
 
 if TYPE_CHECKING:
-    from ..answers import marking as answers_marking
-    from ..answers import marking_table
+    from ..marking import mark as answers_marking
+    from ..marking import tables as marking_table
 else:  # only the runs that mark a file
-    answers_marking = lazy.module("scanconv.answers.marking")
-    marking_table = lazy.module("scanconv.answers.marking_table")
+    answers_marking = lazy.module("scanconv.marking.mark")
+    marking_table = lazy.module("scanconv.marking.tables")
 
 
 def marking_question(question: str | Sequence[str]) -> Solution:

@@ -177,7 +177,7 @@ def render(
     """Render ``solution`` (or its :class:`~scanconv.document.Document`) in ``fmt``: the single
     dispatch for every ``--format``; each format is a mapping from the document's blocks.
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> chunks = render(line_solution("bresenham", 0, 0, 2, 1), Format.csv)
     >>> print("".join(chunks), end="")
     k,p,decision,x,y,p_next

@@ -38,14 +38,14 @@ from .work import BYTES, COSTS, Work, estimate
 
 if TYPE_CHECKING:
     from ..algorithms import image_limits as algorithms_image_limits
-    from ..answers import marking as answers_marking
-    from ..core import student_table as core_student_table
     from ..core.records import Solution
+    from ..marking import mark as answers_marking
+    from ..marking import student_table as core_student_table
     from . import stepper
 else:  # the limits of the checks that only some answers reach, loaded by their first use
     algorithms_image_limits = lazy.module("scanconv.algorithms.image_limits")
-    answers_marking = lazy.module("scanconv.answers.marking")
-    core_student_table = lazy.module("scanconv.core.student_table")
+    answers_marking = lazy.module("scanconv.marking.mark")
+    core_student_table = lazy.module("scanconv.marking.student_table")
     stepper = lazy.module("scanconv.render.stepper")
 
 MATRIX_CELLS: dict[Format, int] = {
@@ -444,9 +444,9 @@ diagnosis: 40 files of 5,000 rows against 9,999 question rows took 82 s)."""
 def check_batch(sizes: Sequence[int], question: Solution | int) -> None:
     """Refuse a batch of files (their sizes in bytes) beyond :data:`BATCH_FILES` or
     :data:`BATCH_SECONDS` of marking against ``question`` (its Solution, whose rows are
-    counted up to :data:`~scanconv.answers.marking.MAX_QUESTION_ROWS`, or that count), before
+    counted up to :data:`~scanconv.marking.limits.MAX_QUESTION_ROWS`, or that count), before
     any file is read. A file's rows are estimated from its size (a row is at least 8 bytes,
-    at most :data:`~scanconv.core.student_table.MAX_TABLE_ROWS`).
+    at most :data:`~scanconv.marking.student_table.MAX_TABLE_ROWS`).
 
     >>> check_batch([126_000] * 40, 9_999)
     Traceback (most recent call last):

@@ -196,7 +196,7 @@ def _points(geometry: dict[str, Any]) -> Iterator[tuple[float, float]]:
 def extent(answer: Solution | Document, pixels: Iterable[Pixel]) -> tuple[int, int, int, int]:
     """``(xmin, ymin, xmax, ymax)`` of the cells an answer's figure draws, margin included.
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> sol = line_solution("bresenham", 2, 2, 10, 6)
     >>> extent(sol, sol.pixels())
     (1, 1, 11, 7)
@@ -269,7 +269,7 @@ def build(answer: Solution | Document, origin: str = "bottom-left") -> Figure:
     Raises ``ValueError`` if the answer plots no pixels or the figure would be more than
     :data:`MAX_CELLS` cells wide or high.
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> fig = build(line_solution("bresenham", 2, 2, 10, 6))
     >>> fig.count("pixel"), fig.count("ideal"), fig.count("step"), fig.height
     (9, 1, 9, 340.0)
@@ -460,7 +460,7 @@ def _svg_element(s: Shape) -> str:
 def to_svg(fig: Figure) -> str:
     """The figure as a standalone SVG document.
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> svg = to_svg(build(line_solution("dda", 0, 0, 2, 1)))
     >>> svg.splitlines()[1][:40]
     '<svg xmlns="http://www.w3.org/2000/svg" '
@@ -513,7 +513,7 @@ def to_png(fig: Figure, scale: int = 2) -> bytes:
     The same shapes and colours as the SVG, drawn 2x larger then scaled down (each pixel the
     mean of four) so edges are smooth. Raises ``ModuleNotFoundError`` without Pillow.
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> to_png(build(line_solution("dda", 0, 0, 2, 1)))[:8]
     b'\\x89PNG\\r\\n\\x1a\\n'
     """

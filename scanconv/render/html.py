@@ -532,7 +532,7 @@ def html_document(
     """A page of several answers, each ``(heading, solution)`` (``heading`` plain text, may be
     empty), each with its own stepper. ``intro`` is plain text under the page's title.
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> doc = html_document([("Question 1", line_solution("dda", 0, 0, 2, 1))], "Key <1>")
     >>> doc.count('<section class="scanconv"'), "<title>Key &lt;1&gt;</title>" in doc
     (1, True)

@@ -1,20 +1,20 @@
 """Test yourself: the data and the panel of the HTML page's quiz mode (issue 31, item 2).
 
-A page whose answer has a step table and a marking model (:mod:`scanconv.answers.models`)
+A page whose answer has a step table and a marking model (:mod:`scanconv.marking.models`)
 gets a "Test yourself" button. The mode hides the step table from the current row on and asks,
 step by step, for the decision parameter p_k, the decision and the pixel it reaches (for the
 DDA: the exact x_{k+1}, y_{k+1} and the pixel), judges each with follow-through as ``check``
-does (:mod:`scanconv.answers.marking`), explains a wrong answer with the numbers, reveals the
+does (:mod:`scanconv.marking.mark`), explains a wrong answer with the numbers, reveals the
 right row and goes on, and gives the score at the end. The script
 (:mod:`scanconv.render.selftest_assets`) knows no method: it interprets the small descriptor
 written here, which is read off the method's marking model (never a second copy of its
 arithmetic):
 
 * a **rule** (one per kind of step: the ellipse's two regions have one each) names the move
-  the model's :meth:`~scanconv.answers.models.Model.decide` takes for p < 0, p = 0 and p > 0
+  the model's :meth:`~scanconv.marking.models.Model.decide` takes for p < 0, p = 0 and p > 0
   (the decision parameters of these methods are integers, or fractions decided at 0, so the
   sign is the whole test), and the pixel step of every move (the model's
-  :meth:`~scanconv.answers.models.Model.step` from the row's point);
+  :meth:`~scanconv.marking.models.Model.step` from the row's point);
 * a **row** is one step: the point it is taken from, p_k as an exact fraction string (and as
   the table prints it), the move, the point it reaches, and the stepper positions to show;
 * ``next``: the step table's p_{k+1} column (hidden in the last row shown: it is the answer);
@@ -25,7 +25,7 @@ The rule is checked against every row before it is written (:func:`apply_rule` m
 model's own move and point, the DDA's rounding the table's pixel); a page where it would not is
 given no button, like a page without a model.
 
->>> from scanconv.answers.line import line_solution
+>>> from scanconv.answers.primitives.line import line_solution
 >>> from scanconv.document import StepTable, document
 >>> from scanconv.render.stepper import stepping
 >>> s = line_solution("bresenham", 2, 2, 10, 6)
@@ -43,9 +43,9 @@ from itertools import islice
 from typing import Any
 
 from ..algorithms.conventions import ROUNDINGS
-from ..answers.models import DDALine, Model, State, chain
 from ..core.records import Step
 from ..document import StepTable
+from ..marking.models import DDALine, Model, State, chain
 from . import Options
 from .cells import cell
 from .mathml import esc, json_script

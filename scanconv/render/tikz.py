@@ -48,7 +48,7 @@ def tikz_grid(
     """The answer's figure as a TikZ picture with its caption in a minipage (never split
     over a page), or ``None`` when it has no figure (no pixels, or too large to draw).
 
-    >>> from scanconv.answers.line import line_solution
+    >>> from scanconv.answers.primitives.line import line_solution
     >>> tex = tikz_grid(line_solution("bresenham", 2, 2, 10, 6))
     >>> tex.count("rectangle"), "\\\\begin{tikzpicture}" in tex, "filled: plotted pixel" in tex
     (9, True, True)

@@ -4,7 +4,7 @@
 and its parameter names) and returns the :class:`Work` of its answer: the rows of its step
 table (or the cells of its matrix), the method whose row cost applies and the parameter that
 makes it large. Every library function is either in :data:`ESTIMATES` or in :data:`BOUNDED`
-with the reason its answer is small whatever its arguments (``tests/test_budget_unified.py``
+with the reason its answer is small whatever its arguments (``tests/test_budget_entry_points.py``
 walks every command and function). The estimates only need to be close and never much below
 (an ellipse's rows are counted from its region boundary); an argument the estimate cannot read
 is left to the function's own validation.
@@ -315,16 +315,16 @@ BOUNDED: dict[str, str] = {
     "bezier_at": "de Casteljau's levels: at most algorithms.curve_limits.MAX_POINTS rows",
     "bspline_at": "one evaluation: at most algorithms.curve_limits.MAX_POINTS rows",
     "clip_line": "a row per clipping step of one line: a handful of rows",
-    "clip_polygon": "four passes over at most answers.clip_polygon.MAX_VERTICES edges",
+    "clip_polygon": "four passes over at most answers.process.clip.sutherland_hodgman.MAX_VERTICES edges",
     "compare_curves": "a fixed comparison of the notes' curves",
     "compare_circles": "an octant of r <= answers.compare.MAX_RADIUS = 2000: at most 1,415 rows",
-    "transform": "at most answers.shapes.MAX_POINTS points and answers.transform.MAX_TRANSFORMS",
-    "viewport": "at most answers.shapes.MAX_POINTS points",
+    "transform": "at most answers.process._shared.MAX_POINTS points and answers.process.transform.MAX_TRANSFORMS",
+    "viewport": "at most answers.process._shared.MAX_POINTS points",
     "fill": "a row per pixel taken, at most algorithms.seedfill.MAX_SEED_CELLS = 10,000",
     "storage": "closed-form arithmetic on exact integers",
     "color": "one conversion in one table",
     "theory": "a fixed text of the notes",
-    "check": "marking: bounded by core.student_table and answers.marking limits",
+    "check": "marking: bounded by marking.student_table and marking.mark limits",
     "dither_threshold": "a row per pixel, at most algorithms.dither.MAX_CELLS = 4,096",
     "dither_ordered": "a row per pixel, at most algorithms.dither.MAX_CELLS = 4,096",
     "dither_diffusion": "a row per pixel, at most algorithms.dither.MAX_CELLS = 4,096",

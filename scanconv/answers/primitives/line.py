@@ -1,0 +1,570 @@
+"""The worked answer of a line: given and derived values around a line algorithm's steps."""
+
+from collections.abc import Iterator
+from fractions import Fraction
+from typing import TYPE_CHECKING, NamedTuple
+
+from ...algorithms.conventions import ROUNDING_TEXT, convention_note, resolve
+from ...algorithms.lines import (
+    ALGORITHMS,
+    abs_value,
+    basic,
+    bresenham,
+    bresenham_notes,
+    bresenham_terms,
+    dda,
+    dda_increments,
+    dda_steps,
+    orient,
+    orient_from_p1,
+)
+from ...core import lazy
+from ...core.checks import InputError
+from ...core.numeric import (
+    Number,
+    fmt_exact,
+    fmt_paren,
+    fmt_short,
+    fmt_value,
+    normalize,
+    round_half_up,
+)
+from ...core.records import Code, Pixel, Quantity, Solution, Step, heading, rule, worked
+from ..methods import method
+from ..theory.errata import line_errata
+
+if TYPE_CHECKING:
+    from ..process.antialias import wu as antialias_wu
+    from ..theory import derivations as theory
+else:  # theory: only --derive and --algorithm; Wu: only --algo wu
+    theory = lazy.module("scanconv.answers.theory.derivations")
+    antialias_wu = lazy.module("scanconv.answers.process.antialias.wu")
+
+# --- Solutions: the exam answer around the steps -------------------------------------------
+
+
+def _once(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
+    """Drop a pixel equal to the one before it (DDA rows can round to the same pixel when the
+    end points are fractional); a monotone walk never revisits an older pixel.
+
+    >>> list(_once(iter([(1, 0), (1, 0), (2, 0)])))
+    [(1, 0), (2, 0)]
+    """
+    last = None
+    for p in pixels:
+        if p != last:
+            yield p
+        last = p
+
+
+def _tex_value(v: Number) -> str:
+    """:func:`fmt_value` as TeX: ``1/3 \\approx 0.333``."""
+    return fmt_value(v).replace("≈", "\\approx")
+
+
+def _diff(name: str, a: Number, b: Number, key: str) -> Quantity:
+    """``Δx = x₂ - x₁ = 10 - 2 = 8``."""
+    v = normalize(b - a)
+    return worked(
+        key,
+        v,
+        f"\\Delta {name} = {name}_2 - {name}_1 = {fmt_short(b)} - {fmt_paren(a)} = {fmt_short(v)}",
+    )
+
+
+def _slope(dx: Number, dy: Number) -> Quantity:
+    if dx == 0 and dy == 0:  # both end points the same pixel: a point, not a line
+        return worked("m", None, r"m \text{ is undefined: } P_1 = P_2 \text{ (a single point)}")
+    if dx == 0:
+        return worked("m", None, r"m = \Delta y / \Delta x \text{ is undefined (vertical line)}")
+    m = normalize(Fraction(dy) / dx)
+    return worked(
+        "m",
+        m,
+        f"m = \\frac{{\\Delta y}}{{\\Delta x}} = \\frac{{{fmt_short(dy)}}}{{{fmt_short(dx)}}} = "
+        + _tex_value(m),
+    )
+
+
+def _major(dx: Number, dy: Number) -> Quantity:
+    steep = abs_value(dy) > abs_value(dx)
+    axis = "y" if steep else "x"
+    rel = ">" if steep else r"\le"
+    return worked(
+        "major_axis",
+        axis,
+        f"\\text{{major axis: }} {axis}, \\text{{ since }} |\\Delta y| = {fmt_short(abs_value(dy))} "
+        f"{rel} |\\Delta x| = {fmt_short(abs_value(dx))}",
+    )
+
+
+def _substituted(b1: Number, slope: Number, a: str, a1: Number) -> str:
+    """``2 + 0.5 \\cdot (x - 2)``; a slope that is not a short decimal is written exactly, then
+    approximately: ``2 + 1/3 \\cdot (x - 2) \\approx 2 + 0.333 \\cdot (x - 2)``."""
+    exact, _, approx = fmt_value(slope).partition(" ≈ ")
+    line = f"{fmt_short(b1)} + {{}} \\cdot ({a} - {fmt_paren(a1)})"
+    return line.format(exact) + (f" \\approx {line.format(approx)}" if approx else "")
+
+
+def _given(x1: Number, y1: Number, x2: Number, y2: Number) -> tuple[Quantity, ...]:
+    p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
+    return (
+        worked("P1", p1, f"P_1 = ({fmt_short(x1)}, {fmt_short(y1)})"),
+        worked("P2", p2, f"P_2 = ({fmt_short(x2)}, {fmt_short(y2)})"),
+    )
+
+
+def _bbox(*pts: tuple[Number, Number]) -> tuple[int, int, int, int]:
+    xs = [round_half_up(p[0]) for p in pts]
+    ys = [round_half_up(p[1]) for p in pts]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _title(name: str, x1: Number, y1: Number, x2: Number, y2: Number) -> str:
+    return f"{name}: ({fmt_short(x1)}, {fmt_short(y1)}) to ({fmt_short(x2)}, {fmt_short(y2)})"
+
+
+def line_solution(
+    algo: str,
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    *,
+    rounding: str | None = None,
+    tie: str | None = None,
+    start: str | None = None,
+    scale: str | None = None,
+    ends: str | None = None,
+    convention: str | None = None,
+    layout: str = "textbook",
+    derive: bool = False,
+    pseudocode: bool = False,
+    annotate: bool = False,
+) -> Solution:
+    """The worked solution of a line with one of :data:`ALGORITHMS`.
+
+    ``rounding`` (dda, basic), ``tie`` (bresenham) and ``start`` (bresenham, dda: ``"swap"``
+    to walk from the end with the smaller major coordinate, ``"given"`` from P1) and ``scale`` (midpoint: ``"integer"`` d = 2F(M) or ``"half"`` d = F(M)) and ``ends`` (wu:
+    ``"full"`` or ``"coverage"``) are the conventions
+    (:mod:`scanconv.algorithms.conventions`), ``convention`` a named preset; ``layout`` is
+    ``"notes"`` (Bresenham: row k plots (x_k, y_k), row 0 the start pixel) or ``"textbook"``;
+    ``derive`` adds the derivation, ``pseudocode`` the algorithm as a listing; ``annotate``
+    adds the notes naming the conventions used and the course notes' errata (the API's answers
+    have them; a pipeline stage that embeds a line leaves them out).
+
+    Raises ``ValueError`` for an unknown algorithm, a convention that does not apply to it, or
+    a non-integer end point with ``bresenham``.
+
+    >>> sol = line_solution("bresenham", 2, 2, 10, 6)
+    >>> for q in sol.derived[-3:]:
+    ...     print(q.text)
+    p₀ = 2Δy - Δx = 2·4 - 8 = 0
+    2Δy = 2·4 = 8   (added when pₖ < 0)
+    2Δy - 2Δx = 2·4 - 2·8 = -8   (added when pₖ ≥ 0)
+    >>> list(sol.pixels())[:4]
+    [(2, 2), (3, 3), (4, 3), (5, 4)]
+    """
+    if algo not in ALGORITHMS:
+        raise InputError(
+            f"unknown line algorithm {algo!r} (choose from {', '.join(ALGORITHMS)})", "algo"
+        )
+    if layout not in ("notes", "textbook"):
+        raise InputError(f"unknown layout {layout!r} (choose from notes, textbook)", "layout")
+    knobs = resolve(
+        "line",
+        algo,
+        convention,
+        {"rounding": rounding, "tie": tie, "start": start, "scale": scale, "ends": ends},
+    )
+    if algo == "wu":  # anti-aliased: two pixels per step with their intensities, its ends knob
+        if derive or pseudocode:
+            raise InputError(
+                "the derivation and the pseudocode cover bresenham, dda and basic, not wu",
+                "derive" if derive else "pseudocode",
+            )
+        return antialias_wu.wu_solution(x1, y1, x2, y2, ends=knobs["ends"])
+    sol: Solution = method("line", algo).load("answer")(x1, y1, x2, y2, knobs, layout)
+    if annotate:
+        points = (normalize(x1), normalize(y1), normalize(x2), normalize(y2))
+        extra = [convention_note("line", convention, knobs)]
+        erratum = line_errata(algo, points)
+        if erratum:
+            extra.append(erratum)
+        sol.notes = (*sol.notes, *extra)
+        sol.data = {**sol.data, "conventions": knobs, "layout": layout}
+    if derive or pseudocode:
+        _theory(sol, algo, x1, y1, x2, y2, knobs, derive, pseudocode)
+    return sol
+
+
+def _theory(
+    sol: Solution,
+    algo: str,
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    knobs: dict[str, str],
+    derive: bool,
+    code: bool,
+) -> None:
+    """Add the derivation (derived items) and the pseudocode (a listing) to ``sol``."""
+    dx, dy = normalize(x2 - x1), normalize(y2 - y1)
+    steep = abs_value(dy) > abs_value(dx)
+    sign = -1 if (dx > 0 > dy or dy > 0 > dx) else 1
+    listings: list[Code] = []
+    if algo == "bresenham":
+        sx, sy, _, _, steep, dmaj, dmin, sign, _, _ = orient(int(x1), int(y1), int(x2), int(y2))
+        if derive:
+            u0, v0 = (sy, sign * sx) if steep else (sx, sign * sy)
+            sol.derived = (
+                *sol.derived,
+                theory.DERIVATION,
+                *theory.bresenham_line_derivation(u0, v0, dmaj, dmin, steep, sign),
+            )
+        if code:
+            swapped = (sx, sy) != (int(x1), int(y1))
+            backward = swapped and knobs.get("start") == "given"
+            listings.append(
+                theory.bresenham_line_code(steep, sign, swapped, knobs["tie"], backward)
+            )
+    elif algo == "dda":
+        if derive:
+            sol.derived = (
+                *sol.derived,
+                theory.DERIVATION,
+                *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2)),
+            )
+        if code:
+            swapped = knobs.get("start") == "swap" and (dy if steep else dx) < 0
+            listings.append(theory.dda_code(steep, sign, knobs["rounding"], swapped))
+    elif algo == "basic":
+        if derive:
+            sol.derived = (
+                *sol.derived,
+                theory.DERIVATION,
+                *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2))[:1],
+            )
+        if code:
+            listings.append(theory.basic_code(steep, knobs["rounding"]))
+    elif algo == "midpoint":  # its answer always derives d; it has no pseudocode of its own
+        if code:
+            method("line", algo).load("pseudocode")
+    else:  # a method whose record names no derivation (wu) is refused before this
+        method("line", algo).load("derivation" if derive else "pseudocode")
+    sol.code = (*sol.code, *listings)
+
+
+def _swap_rule(maj: str, x1: Number, y1: Number, x2: Number, y2: Number) -> Quantity:
+    """The end points swapped so that the major coordinate increases (said first, so that
+    every line below uses the swapped names)."""
+    return rule(
+        "swap",
+        f"\\text{{swap the end points so that }} {maj} \\text{{ increases: }} "
+        f"(x_1, y_1) = ({fmt_short(x1)}, {fmt_short(y1)}), \\ "
+        f"(x_2, y_2) = ({fmt_short(x2)}, {fmt_short(y2)})",
+    )
+
+
+def _integer_ends(x1: Number, y1: Number, x2: Number, y2: Number) -> tuple[int, int, int, int]:
+    for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2")):
+        if normalize(v) != int(v):
+            raise InputError(
+                f"bresenham needs integer end points, got {n} = {fmt_exact(v)} "
+                "(the dda and basic algorithms take fractional end points)",
+                n,
+            )
+    return int(x1), int(y1), int(x2), int(y2)
+
+
+class _Walk(NamedTuple):
+    """Bresenham's walk as the working writes it: from (sx, sy) to (ex, ey)."""
+
+    sx: int
+    sy: int
+    ex: int
+    ey: int
+    steep: bool
+    dmaj: int
+    dmin: int
+    sign: int
+    stay: str
+    move: str
+    swapped: bool
+    backward: bool
+    """Walked from P1 as given, the major coordinate decreasing (``start = "given"``)."""
+
+    @property
+    def names(self) -> tuple[str, str]:
+        """The major and the minor coordinate."""
+        return ("y", "x") if self.steep else ("x", "y")
+
+
+def _walk(ix1: int, iy1: int, ix2: int, iy2: int, start: str) -> _Walk:
+    sx, sy, ex, ey, steep, dmaj, dmin, sign, stay, move = orient(ix1, iy1, ix2, iy2)
+    swapped = (sx, sy) != (ix1, iy1)
+    backward = swapped and start == "given"  # walk from P1, the major coordinate decreasing
+    if backward:
+        sx, sy, ex, ey = ix1, iy1, ix2, iy2
+        _, _, _, sign, stay, move = orient_from_p1(ix1, iy1, ix2, iy2)
+        swapped = False
+    return _Walk(sx, sy, ex, ey, steep, dmaj, dmin, sign, str(stay), str(move), swapped, backward)
+
+
+def _bresenham_derived(w: _Walk, tie: str) -> tuple[Quantity, ...]:
+    """Δx, Δy, the slope, p₀ and the two increments, after the swap if there is one."""
+    dx, dy = w.ex - w.sx, w.ey - w.sy  # after the swap, as the working is written
+    maj, mnr = w.names
+    dmin, dmaj = w.dmin, w.dmaj
+    dmin_t = f"|\\Delta {mnr}|" if w.sign < 0 else f"\\Delta {mnr}"
+    dmaj_t = f"|\\Delta {maj}|" if w.backward else f"\\Delta {maj}"
+    p0, inc_keep, inc_step, _ = bresenham_terms(dmaj, dmin)
+    lt, ge = ("\\le", ">") if tie == "keep" else ("<", "\\ge")
+    return (
+        *((_swap_rule(maj, w.sx, w.sy, w.ex, w.ey),) if w.swapped else ()),
+        _diff("x", w.sx, w.ex, "dx"),
+        _diff("y", w.sy, w.ey, "dy"),
+        _slope(dx, dy),
+        _major(dx, dy),
+        worked("p0", p0, f"p_0 = 2{dmin_t} - {dmaj_t} = 2 \\cdot {dmin} - {dmaj} = {p0}"),
+        worked(
+            "inc_keep",
+            inc_keep,
+            f"2{dmin_t} = 2 \\cdot {dmin} = {inc_keep} \\quad (\\text{{added when }} p_k {lt} 0)",
+        ),
+        worked(
+            "inc_step",
+            inc_step,
+            f"2{dmin_t} - 2{dmaj_t} = 2 \\cdot {dmin} - 2 \\cdot {dmaj} = {inc_step} "
+            f"\\quad (\\text{{added when }} p_k {ge} 0)",
+        ),
+    )
+
+
+def _bresenham_line_notes(w: _Walk, tie: str, layout: str) -> tuple[str, ...]:
+    """Where the walk starts, which way it goes and what p chooses (a tie included)."""
+    maj, mnr = w.names
+    if layout == "notes":
+        notes = [
+            f"Row $k$ plots $(x_k, y_k)$ and decides on $p_k$; row 0 is the start "
+            f"$({w.sx}, {w.sy})$, the last row the end point (no decision)."
+        ]
+    else:
+        notes = [f"Start at $({w.sx}, {w.sy})$, plotted before the first step."]
+    if w.backward:
+        notes.append(
+            f"Walked from $P_1$ as given, ${maj}$ decreasing by 1 each step (no swap); the "
+            "decisions are the swapped walk's, but a tie is now seen from the other end."
+        )
+    if tie == "keep":
+        notes.append(
+            f"$p_k \\le 0$ chooses {w.stay}, $p_k > 0$ chooses {w.move}; a tie ($p_k = 0$) "
+            f"keeps ${mnr}$."
+        )
+    else:
+        notes.append(
+            f"$p_k < 0$ chooses {w.stay}, $p_k \\ge 0$ chooses {w.move}; a tie ($p_k = 0$) "
+            f"steps ${mnr}$ too."
+        )
+    return tuple(notes)
+
+
+def _bresenham_solution(
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    tie: str = "step",
+    layout: str = "textbook",
+    start: str = "swap",
+) -> Solution:
+    ix1, iy1, ix2, iy2 = _integer_ends(x1, y1, x2, y2)
+    w = _walk(ix1, iy1, ix2, iy2, start)
+
+    def steps() -> Iterator[Step]:
+        if layout == "notes":
+            return bresenham_notes(ix1, iy1, ix2, iy2, tie, start)
+        return bresenham(ix1, iy1, ix2, iy2, tie, start)
+
+    def pixels() -> Iterator[Pixel]:
+        yield (w.sx, w.sy)
+        for s in bresenham(ix1, iy1, ix2, iy2, tie, start):
+            yield s.pixel
+
+    pixel_head = "(x_k, y_k)" if layout == "notes" else "(x_{k+1}, y_{k+1})"
+    return Solution(
+        primitive="line",
+        algorithm="bresenham",
+        title=_title("Bresenham's line algorithm", ix1, iy1, ix2, iy2),
+        given=_given(ix1, iy1, ix2, iy2),
+        derived=_bresenham_derived(w, tie),
+        columns=(
+            heading("k", "k"),
+            heading("p", "p_k"),
+            heading("decision", r"\text{decision}"),
+            heading("pixel", pixel_head),
+            heading("p_next", "p_{k+1}"),
+        ),
+        extra_keys=("p_next",),
+        steps=steps,
+        pixels=pixels,
+        bbox=_bbox((ix1, iy1), (ix2, iy2)),
+        geometry={"line": (ix1, iy1, ix2, iy2)},
+        notes=_bresenham_line_notes(w, tie, layout),
+    )
+
+
+def _dda_derived(
+    x1: Number, y1: Number, x2: Number, y2: Number, swapped: bool
+) -> tuple[Quantity, ...]:
+    """Δx, Δy, the slope, the number of steps and the increments (from the walk's start)."""
+    dx, dy = normalize(x2 - x1), normalize(y2 - y1)
+    steps_n = dda_steps(x1, y1, x2, y2)
+    xi, yi = dda_increments(x1, y1, x2, y2)
+    longest = max(abs_value(dx), abs_value(dy))
+    ceil_note = "" if longest == steps_n else f"{fmt_short(longest)},\\ \\text{{rounded up to }} "
+    incs = (
+        worked(
+            f"{name}_inc",
+            inc,
+            f"{name}_{{inc}} = \\frac{{\\Delta {name}}}{{\\text{{steps}}}} = "
+            f"\\frac{{{fmt_short(d)}}}{{{steps_n}}} = " + _tex_value(inc),
+        )
+        for name, d, inc in (("x", dx, xi), ("y", dy, yi))
+    )
+    maj = "y" if abs_value(dy) > abs_value(dx) else "x"
+    return (
+        *((_swap_rule(maj, x1, y1, x2, y2),) if swapped else ()),
+        _diff("x", x1, x2, "dx"),
+        _diff("y", y1, y2, "dy"),
+        _slope(dx, dy),
+        _major(dx, dy),
+        worked(
+            "steps",
+            steps_n,
+            f"\\text{{steps}} = \\max(|\\Delta x|, |\\Delta y|) = \\max({fmt_short(abs_value(dx))}, "
+            f"{fmt_short(abs_value(dy))}) = {ceil_note}{steps_n}",
+        ),
+        *(incs if steps_n else ()),
+    )
+
+
+_DDA_COLUMNS = (
+    heading("k", "k"),
+    heading("x", "x_k", 3),
+    heading("y", "y_k", 3),
+    heading("round_x", r"\operatorname{round}(x_k)"),
+    heading("round_y", r"\operatorname{round}(y_k)"),
+    heading("pixel", r"\text{pixel } (x, y)"),
+)
+
+
+def _dda_solution(
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    rounding: str = "half-up",
+    start: str = "given",
+) -> Solution:
+    asked = (x1, y1, x2, y2)
+    dx, dy = normalize(x2 - x1), normalize(y2 - y1)
+    steep = abs_value(dy) > abs_value(dx)
+    swapped = start == "swap" and (dy if steep else dx) < 0
+    if swapped:  # walk from the end with the smaller major coordinate
+        x1, y1, x2, y2 = x2, y2, x1, y1
+    notes = (
+        "$x_{k+1} = x_k + x_{inc}$ and $y_{k+1} = y_k + y_{inc}$, computed exactly;"
+        + (
+            r" pixels are round half up, $\lfloor v + 1/2 \rfloor$."
+            if rounding == "half-up"
+            else f" pixels are {ROUNDING_TEXT[rounding]}."
+        ),
+    )
+    return Solution(
+        primitive="line",
+        algorithm="dda",
+        title=_title("Simple DDA line algorithm", *asked),
+        given=_given(*asked),
+        derived=_dda_derived(x1, y1, x2, y2, swapped),
+        columns=_DDA_COLUMNS,
+        extra_keys=("x", "y", "round_x", "round_y"),
+        steps=lambda: dda(x1, y1, x2, y2, rounding),
+        pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2, rounding)),
+        bbox=_bbox((x1, y1), (x2, y2)),
+        geometry={"line": (x1, y1, x2, y2)},
+        notes=notes,
+    )
+
+
+def _basic_solution(
+    x1: Number, y1: Number, x2: Number, y2: Number, rounding: str = "half-up"
+) -> Solution:
+    dx, dy = normalize(x2 - x1), normalize(y2 - y1)
+    steep = abs_value(dy) > abs_value(dx)
+    derived = [
+        _diff("x", x1, x2, "dx"),
+        _diff("y", y1, y2, "dy"),
+        _slope(dx, dy),
+        _major(dx, dy),
+    ]
+    if steep:
+        inv = normalize(Fraction(dx) / dy)
+        derived.append(
+            worked(
+                "equation",
+                inv,
+                r"x = x_1 + \frac{\Delta x}{\Delta y}(y - y_1) = " + _substituted(x1, inv, "y", y1),
+            )
+        )
+        maj, mnr = "y", "x"
+    else:
+        m = normalize(Fraction(dy) / dx) if dx else 0
+        derived.append(
+            worked("equation", m, "y = y_1 + m(x - x_1) = " + _substituted(y1, m, "x", x1))
+        )
+        maj, mnr = "x", "y"
+    return Solution(
+        primitive="line",
+        algorithm="basic",
+        title=_title("Line by the basic (direct) method", x1, y1, x2, y2),
+        given=_given(x1, y1, x2, y2),
+        derived=tuple(derived),
+        columns=(
+            heading(maj, maj),
+            heading(mnr, f"{mnr} \\text{{ (calculated)}}", 3),
+            heading(f"round_{mnr}", f"{mnr} \\text{{ (rounded)}}"),
+            heading("pixel", r"\text{pixel } (x, y)"),
+        ),
+        extra_keys=(maj, mnr, f"round_{mnr}"),
+        steps=lambda: basic(x1, y1, x2, y2, rounding),
+        pixels=lambda: (s.pixel for s in basic(x1, y1, x2, y2, rounding)),
+        bbox=_bbox((x1, y1), (x2, y2)),
+        geometry={"line": (x1, y1, x2, y2)},
+        notes=(f"Each {mnr} is computed exactly and {ROUNDING_TEXT[rounding]}.",),
+    )
+
+
+# --- The answer builders the method records name (one signature for every line method) -----
+
+
+def bresenham_answer(
+    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
+) -> Solution:
+    """Bresenham's line (record ``line/bresenham``) with its conventions ``knobs``."""
+    return _bresenham_solution(x1, y1, x2, y2, knobs["tie"], layout, knobs["start"])
+
+
+def dda_answer(
+    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
+) -> Solution:
+    """The DDA (record ``line/dda``); it has one layout."""
+    return _dda_solution(x1, y1, x2, y2, knobs["rounding"], knobs["start"])
+
+
+def basic_answer(
+    x1: Number, y1: Number, x2: Number, y2: Number, knobs: dict[str, str], layout: str
+) -> Solution:
+    """The basic line algorithm (record ``line/basic``); it has one layout."""
+    return _basic_solution(x1, y1, x2, y2, knobs["rounding"])

@@ -1,0 +1,3 @@
+"""The clipping answers: Cohen-Sutherland and Liang-Barsky (`rectangle`), Cyrus-Beck,
+Nicholl-Lee-Nicholl, midpoint subdivision, and the polygon clippers (Sutherland-Hodgman,
+Weiler-Atherton)."""

@@ -1,0 +1,295 @@
+"""Marking a table that is not a pixel walk, by its own columns, with follow-through
+(the models of :mod:`.table_models`): dithering, error diffusion, Cyrus-Beck, NLL, midpoint
+subdivision, the inside-outside test, line styles, thick lines, bitmap characters and the
+frame buffer.
+
+The student's columns are matched to the answer's by their headings (the key, the heading
+as printed, or its TeX, in any case and spacing); a column the answer does not have is not
+marked. Each row is compared with the answer's row in the same place: a marked cell is right
+when it is the answer's own value, or the value the method's rule gives from the student's
+own earlier cells (follow-through, so one slip is charged once). The result is a
+:class:`~.marking_rows.Marking`, shown and batched as every marking is.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Iterator, Sequence
+from fractions import Fraction
+from typing import Any
+
+from ..core.checks import InputError
+from ..core.numeric import fmt_short, parse_number
+from ..core.records import Column, Solution
+from .limits import MAX_QUESTION_ROWS
+from .rows import Marking, RowText, Verdict
+from .table_models import (
+    CoxDeBoorTable,
+    CyrusBeckTable,
+    DiffusionTable,
+    DitherTable,
+    FrameBufferTable,
+    InsideVerdictsTable,
+    LineStyleTable,
+    MidpointClipTable,
+    NLLTable,
+    PlainRowsTable,
+    Row,
+    TableModel,
+)
+
+TABLE_RULES = (
+    "Marking rules: each row is compared with the answer's row in the same place; a row is "
+    "right when every marked cell is the answer's own value or the value the method's rule "
+    "gives from the student's own earlier cells (follow-through: one slip costs one row). A "
+    "row past the end costs one mark, a missing row is wrong."
+)
+
+
+def table_models_for(solution: Solution) -> list[TableModel]:
+    """The tables of ``solution`` a student's table may be (the inside-outside test: the
+    verdicts, or one point's edge tests); the one whose columns the student's headings
+    match best is marked."""
+    if solution.primitive == "inside":
+        verdicts: list[TableModel] = [InsideVerdictsTable()]
+        if len(solution.tables) == 2:  # one point: its edge tests too
+            verdicts.append(
+                PlainRowsTable(
+                    "P1", ("straddles", "x", "crossing", "sign"), "Each edge's test stands alone."
+                )
+            )
+        return verdicts
+    one = table_model_for(solution)
+    return [] if one is None else [one]
+
+
+_ROW_ALONE: dict[tuple[str, str], Callable[[], TableModel]] = {
+    ("clip", "cyrus-beck"): CyrusBeckTable,
+    ("clip", "nicholl-lee-nicholl"): NLLTable,
+    ("clip", "midpoint-subdivision"): MidpointClipTable,
+    ("line", "style"): LineStyleTable,
+    ("framebuffer", "arithmetic"): FrameBufferTable,
+    **dict.fromkeys(
+        [("line", "replication"), ("line", "brush")],  # a thick line, either way
+        lambda: PlainRowsTable(None, ("added",), "Each step's added pixels stand alone."),
+    ),
+    ("characters", "bitmap"): lambda: PlainRowsTable(
+        None, ("row", "column"), "Each pixel stands alone."
+    ),
+    ("characters", "stroke"): lambda: PlainRowsTable(
+        None, ("segment", "pixels"), "Each stroke's pixels stand alone."
+    ),
+    ("characters", "storage"): lambda: PlainRowsTable(
+        "Every packing",
+        ("glyph", "bits", "bytes"),
+        "Each packing's sizes stand alone (a glyph's bits, the font's bits and bytes).",
+    ),
+}
+"""The table models that need nothing of the answer but its method, by (primitive, algorithm)."""
+
+
+def table_model_for(solution: Solution) -> TableModel | None:
+    """The table model of ``solution``'s method, or ``None`` (a pixel walk, or unmarked)."""
+    key = (solution.primitive, solution.algorithm)
+    data = solution.data
+    if key in _ROW_ALONE:
+        return _ROW_ALONE[key]()
+    if key == ("dither", "ordered"):
+        return DitherTable(data.get("compare", ">"))
+    if key == ("dither", "threshold"):
+        return DitherTable(data.get("compare", ">="))
+    if key == ("dither", "floyd-steinberg"):
+        given = {q.key: q.value for q in solution.given}
+        return DiffusionTable(given["image"], given["top"], data, data.get("compare", ">="))
+    if key == ("curve", "bspline-basis-at"):
+        found = {q.key: q.value for q in solution.derived}
+        t = next(q.value for q in solution.given if q.key == "t")
+        return CoxDeBoorTable(found["knots"], t, int(found["span"]))
+    if key == ("dither", "pattern") and solution.tables:
+        title = solution.tables[0].title.split(" (")[0]  # "4 x 4 patterns"
+        return PlainRowsTable(title, ("pattern", "on"), "Each level's pattern stands alone.")
+    if solution.primitive == "inside":
+        return table_models_for(solution)[0]
+    return None
+
+
+def canon(value: Any) -> Any:
+    """A cell as compared: an exact number, a pair of them, lower-case text, or ``None``.
+
+    >>> canon("-6/7"), canon("(270/7, 50)"), canon(" Entering "), canon("-")
+    (Fraction(-6, 7), (Fraction(270, 7), Fraction(50, 1)), 'entering', None)
+    >>> canon("+1 (up)"), canon("Inside (odd)")
+    (Fraction(1, 1), 'inside')
+    """
+    if value is None or isinstance(value, bool):
+        return None if value is None else Fraction(int(value))
+    if isinstance(value, int | Fraction):
+        return Fraction(value)
+    if isinstance(value, float):
+        return Fraction(str(value))
+    if isinstance(value, tuple | list):
+        return tuple(canon(v) for v in value)
+    text = " ".join(str(value).replace("\u2212", "-").split()).lower()
+    if text in ("", "-", "\u2013"):
+        return None
+    remark = re.fullmatch(r"(.*[^\s(])\s+\([^()]*\)", text)
+    if remark:  # "+1 (up)", "inside (odd)": the remark is not marked
+        return canon(remark[1])
+    try:
+        return parse_number(text, 10**24)
+    except ValueError:
+        pass
+    pair = re.fullmatch(r"\(?\s*([^,()]+?)\s*,\s*([^,()]+?)\s*\)?", text)
+    if pair:
+        try:
+            return (parse_number(pair[1], 10**24), parse_number(pair[2], 10**24))
+        except ValueError:
+            pass
+    return text.replace("\u2260", "!=").replace("\u2264", "<=").replace("\u2265", ">=")
+
+
+def _norm(text: str) -> str:
+    return re.sub(r"\\text|[\s${}\\_*·.']", "", text).lower()
+
+
+def _answer_columns(solution: Solution, model: TableModel) -> tuple[Column, ...]:
+    if model.table is None:
+        return solution.columns
+    table = next((t for t in solution.tables if t.title.startswith(model.table)), None)
+    return () if table is None else table.columns
+
+
+def _answer(solution: Solution, model: TableModel) -> tuple[tuple[Column, ...], list[Row]]:
+    """The marked table's columns and its rows, canonical."""
+    if model.table is None:
+        keys = ("k", "p", "decision", "pixel")
+        extra = solution.extra_keys
+
+        def cells(s: Any) -> Iterator[Any]:
+            for c in solution.columns:
+                yield getattr(s, c.key) if c.key in keys else s.extra[extra.index(c.key)]
+
+        rows = []
+        for n, s in enumerate(solution.steps()):
+            if n > MAX_QUESTION_ROWS:
+                raise InputError(f"the question's table has more than {MAX_QUESTION_ROWS} rows")
+            rows.append(tuple(cells(s)))
+        columns = solution.columns
+    else:
+        table = next((t for t in solution.tables if t.title.startswith(model.table)), None)
+        if table is None:
+            raise InputError(f"the question has no {model.table!r} table to mark", "question")
+        columns, rows = table.columns, list(table.rows())
+    return columns, [{c.key: canon(v) for c, v in zip(columns, r, strict=False)} for r in rows]
+
+
+def _match(headers: Sequence[str], columns: Sequence[Column]) -> list[str | None]:
+    """Each heading's column key (``None``: not the answer's); a repeated heading takes the
+    next column of that name (NLL's two ``value`` columns)."""
+    taken: set[str] = set()
+    out: list[str | None] = []
+    for h in headers:
+        n = _norm(str(h))
+        key = next(
+            (c.key for c in columns
+             if c.key not in taken and n in (_norm(c.key), _norm(c.text), _norm(c.tex))),
+            None,
+        )  # fmt: skip
+        if key is not None:
+            taken.add(key)
+        out.append(key)
+    return out
+
+
+def _show(v: Any) -> str:
+    if v is None:
+        return "-"
+    if isinstance(v, tuple):
+        return "(" + ", ".join(_show(x) for x in v) + ")"
+    return fmt_short(v) if isinstance(v, Fraction) else str(v)
+
+
+def mark_table(
+    headers: Sequence[str],
+    raw: Sequence[tuple[str, list[Any]]],
+    solution: Solution,
+    models: Sequence[TableModel],
+    name: str,
+) -> Marking:
+    """Mark the student's rows ``raw`` (with their ``headers``) against ``solution``'s table
+    of the model whose marked columns the headings match most."""
+
+    def matched(m: TableModel) -> int:
+        keys = _match(headers, _answer_columns(solution, m))
+        return sum(k in keys for k in m.marked)
+
+    model = max(models, key=matched)
+    columns, answer = _answer(solution, model)
+    keys = _match(headers, columns)
+    marked = [k for k in model.marked if k in keys]
+    if not marked:
+        names = ", ".join(c.text for c in columns if c.key in model.marked)
+        raise InputError(f"{name}: no column to mark: the answer's table has {names}", "answer")
+    texts = [c.text for c in columns]
+    titles = {
+        c.key: c.text if texts.count(c.text) == 1 else f"{c.text} ({c.key.replace('_', ' ')})"
+        for c in columns
+    }
+    verdicts = _verdicts(raw, keys, marked, titles, model, answer)
+    right = sum(v.mark.startswith("right") for v in verdicts[: len(answer)])
+    right = max(0, right - max(0, len(raw) - len(answer)))
+    first = next((v for v in verdicts if not v.mark.startswith("right")), None)
+    return Marking(
+        tuple(verdicts),
+        right,
+        len(answer),
+        _first_error(first, titles),
+        "",
+        True,
+        tuple(titles[k] for k in marked),
+        "",
+        f"{TABLE_RULES} {model.rules}",
+    )
+
+
+def _verdicts(
+    raw: Sequence[tuple[str, list[Any]]],
+    keys: Sequence[str | None],
+    marked: list[str],
+    titles: dict[str, str],
+    model: TableModel,
+    answer: list[Row],
+) -> list[Verdict]:
+    """Each student row judged against what the model expects after the student's own rows
+    (follow-through), then a "missing" verdict for each answer row the student left out."""
+
+    def text(row: Row) -> RowText:
+        return RowText(", ".join(f"{titles[k]} = {_show(row.get(k))}" for k in marked))
+
+    own: list[Row] = []
+    verdicts: list[Verdict] = []
+    for n, (where, cells) in enumerate(raw):
+        row = {k: canon(v) for k, v in zip(keys, cells, strict=False) if k is not None}
+        own.append(row)
+        if n >= len(answer):
+            verdicts.append(Verdict(n + 1, where, text(row), None, "extra"))  # type: ignore[arg-type]
+            continue
+        exp = {k: canon(v) for k, v in model.expect(n, answer, own).items()}
+        wrong = tuple(k for k in marked if row.get(k) not in (exp.get(k), answer[n].get(k)))
+        follows = any(row.get(k) != answer[n].get(k) for k in marked)
+        mark = "wrong" if wrong else "right (follow-through)" if follows else "right"
+        verdicts.append(Verdict(n + 1, where, text(row), text(exp), mark, wrong))  # type: ignore[arg-type]
+    for n in range(len(raw), len(answer)):
+        verdicts.append(Verdict(n + 1, "-", None, text(answer[n]), "missing"))  # type: ignore[arg-type]
+    return verdicts
+
+
+def _first_error(v: Verdict | None, titles: dict[str, str]) -> str:
+    if v is None:
+        return ""
+    if v.mark == "missing":
+        return f"Row {v.row}: missing ({v.expected.text})"  # type: ignore[union-attr]
+    if v.mark == "extra":
+        return f"Row {v.row} ({v.where}): a row past the end of the table"
+    cells = ", ".join(titles[k] for k in v.wrong)
+    return f"Row {v.row} ({v.where}): {cells} wrong; expected {v.expected.text}"  # type: ignore[union-attr]

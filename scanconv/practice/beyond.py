@@ -1,0 +1,318 @@
+"""Practice questions on the topics beyond the notes (:mod:`.practice` registers them):
+dithering, inside-outside tests, clipping (Cohen-Sutherland, Liang-Barsky, Cyrus-Beck,
+midpoint subdivision, Weiler-Atherton, Nicholl-Lee-Nicholl), the frame buffer, line
+attributes (dashed and dotted lines, thick lines), character generation (bitmap, stroke,
+storage), the midpoint line and anti-aliasing (Wu's line with either end-point convention,
+area sampling, Hearn & Baker's sub-pixel supersampling). Each topic walks its kinds as the
+notes' topics do, so a few questions show every method; every question is worded with the
+method's own name (:mod:`.methods`)."""
+
+from __future__ import annotations
+
+import random
+from typing import Any
+
+from ..answers.methods import method
+from .records import PracticeQuestion, line_question
+
+
+def _image(rng: random.Random, rows: int, cols: int) -> str:
+    return "; ".join(" ".join(str(rng.randrange(0, 256)) for _ in range(cols)) for _ in range(rows))
+
+
+def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    if kind == "halftone":
+        n = 4 if difficulty == "hard" else 2
+        return PracticeQuestion(
+            "dither",
+            ("halftone", str(n)),
+            f"How many gray levels does a {n} x {n} halftone cell of a bilevel display give? "
+            "Draw the pattern of each level (from the Bayer matrix): which pixels are on.",
+            6 if n == 2 else 10,
+            frozenset({kind}),
+        )
+    rows, cols = {"easy": (2, 2), "exam": (2, 4), "hard": (4, 4)}[difficulty]
+    image = _image(rng, rows, cols)
+    argv: tuple[str, ...] = ("dither", kind, "--image", image, "--top", "255")
+    if kind == "ordered":
+        n = 4 if difficulty == "hard" else 2
+        argv += ("--matrix", str(n))
+        how = f"the {n} x {n} Bayer matrix"
+    elif kind == "threshold":
+        how = "a threshold of 128"
+        argv += ("--at", "128")
+    else:
+        how = "Floyd-Steinberg error diffusion (7/16, 3/16, 5/16, 1/16)"
+    return PracticeQuestion(
+        "dither",
+        argv,
+        f"Dither the {rows} x {cols} image [{image}] (gray levels 0 to 255) to black and white "
+        f"with {how}: give the table and the output.",
+        6 if difficulty == "easy" else 8,
+        frozenset({kind}),
+    )
+
+
+_POLYGONS = (
+    ((0, 0, 8, 0, 8, 8, 4, 3, 0, 8), "concave"),
+    ((0, 0, 8, 0, 8, 6, 0, 6), "convex"),
+    ((0, 0, 8, 6, 8, 0, 0, 6), "self-intersecting"),
+    ((1, 1, 9, 1, 5, 9), "convex"),
+)
+
+
+def inside(rng: random.Random, difficulty: str, kind: int) -> PracticeQuestion:
+    coords, shape = _POLYGONS[kind]
+    count = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
+    points = [str(rng.randrange(0, 9)) for _ in range(2 * count)]
+    rule = "both" if difficulty != "easy" else rng.choice(("even-odd", "nonzero"))
+    name = {"both": "the odd-even and the nonzero winding rules", "even-odd": "the odd-even rule",
+            "nonzero": "the nonzero winding rule"}[rule]  # fmt: skip
+    pairs = ", ".join(f"({points[i]}, {points[i + 1]})" for i in range(0, len(points), 2))
+    return PracticeQuestion(
+        "inside",
+        ("inside", *map(str, coords), "--points", *points, "--rule", rule),
+        f"Is each point {pairs} inside the {shape} polygon "
+        f"{', '.join(f'({coords[i]}, {coords[i + 1]})' for i in range(0, len(coords), 2))}? "
+        f"Use {name}, with each edge's test.",
+        6,
+        frozenset({shape, rule}),
+    )
+
+
+_CLIP_WINDOW = {"easy": (2, 2, 8, 6), "exam": (10, 10, 50, 40), "hard": (-10, -5, 30, 25)}
+
+
+def clipping(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    xmin, ymin, xmax, ymax = _CLIP_WINDOW[difficulty]
+    span = xmax - xmin
+    window = tuple(map(str, (xmin, ymin, xmax, ymax)))
+    title = method("clip", kind).title
+    if kind == "weiler-atherton":
+        # a concave polygon with a notch through the window's top edge
+        cx = (xmin + xmax) // 2
+        poly = (xmin - span // 4, ymin + 1, xmax + span // 4, ymin + 1, xmax + span // 4,
+                ymax + span // 3, cx, ymin + (ymax - ymin) // 2, xmin - span // 4,
+                ymax + span // 3)  # fmt: skip
+        argv: tuple[str, ...] = ("clip", "polygon", *map(str, poly), "--window", *window)
+        return PracticeQuestion(
+            "clip",
+            (*argv, "--method", kind),
+            f"Clip the polygon {_pairs(poly)} against the window ({xmin}, {ymin})-({xmax}, "
+            f"{ymax}) by {title}: give both vertex lists, the walks and the output.",
+            8,
+            frozenset({kind}),
+        )
+    x1 = rng.randrange(xmin - span // 2, xmin)
+    y1 = rng.randrange(ymin, ymax)
+    if kind == "nicholl-lee-nicholl":  # P1 in an edge or a corner region, by the seed
+        y1 = rng.randrange(ymin, ymax + (ymax - ymin) // 2)
+    x2 = rng.randrange(xmax + 1, xmax + span // 2 + 1)
+    y2 = rng.randrange(ymin - (ymax - ymin) // 2, ymax + (ymax - ymin) // 2)
+    ends = (str(x1), str(y1), str(x2), str(y2))
+    return PracticeQuestion(
+        "clip",
+        ("clip", "line", *ends, "--window", *window, "--method", kind),
+        f"Clip the line ({x1}, {y1})-({x2}, {y2}) against the window ({xmin}, {ymin})-({xmax}, "
+        f"{ymax}) by {title}.",
+        8,
+        frozenset({kind}),
+    )
+
+
+def _pairs(flat: tuple[int, ...]) -> str:
+    return ", ".join(f"({flat[i]}, {flat[i + 1]})" for i in range(0, len(flat), 2))
+
+
+_RESOLUTIONS = ((640, 480), (800, 600), (1024, 768), (1280, 1024), (1920, 1080))
+
+
+def framebuffer(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    w, h = rng.choice(_RESOLUTIONS)
+    bits = rng.choice((4, 8, 12, 24))
+    argv: tuple[str, ...] = ("framebuffer", str(w), str(h), str(bits))
+    if kind == "load":
+        rate = rng.choice((10**5, 10**6, 10**7))
+        argv += ("--rate", str(rate))
+        ask = f"how long does loading it take at {rate:,} bits per second?"
+    elif kind == "lut":
+        argv += ("--lut", "24")
+        ask = "with a 24-bit colour look-up table, how large is the table and how many colours?"
+    else:
+        interlaced = kind == "interlaced"
+        argv += ("--refresh", "60", *(("--interlaced",) if interlaced else ()))
+        ask = f"at 60 Hz{' interlaced' if interlaced else ''}, how long does each pixel get?"
+    return PracticeQuestion(
+        "framebuffer",
+        argv,
+        f"A raster system has a {w} x {h} frame buffer of {bits} bits per pixel: what is its "
+        f"size, and {ask}",
+        4,
+        frozenset({kind}),
+    )
+
+
+def attributes(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    length = {"easy": 6, "exam": 10, "hard": 16}[difficulty]
+    x1, y1 = rng.randrange(0, 5), rng.randrange(0, 5)
+    x2, y2 = x1 + length, y1 + rng.randrange(1, length // 2 + 1)
+    ends = tuple(map(str, (x1, y1, x2, y2)))
+    line = f"the line from ({x1}, {y1}) to ({x2}, {y2})"
+    if kind in ("dashed", "dotted"):
+        mask = rng.choice(("1110", "11100", "111000")) if kind == "dashed" else "10"
+        return PracticeQuestion(
+            "attributes",
+            ("linestyle", *ends, "--mask", mask),
+            f"Draw {line} {kind} with the pixel mask {mask} (Bresenham's line algorithm): "
+            "give each pixel, its mask bit and whether it is drawn.",
+            6,
+            frozenset({kind}),
+        )
+    width = rng.choice((3, 5)) if difficulty != "easy" else 3
+    brush = kind == "brush"
+    how = f"a {width} x {width} square brush" if brush else "pixel replication"
+    return PracticeQuestion(
+        "attributes",
+        ("thickline", *ends, "--width", str(width), *(("--brush",) if brush else ())),
+        f"Draw {line} {width} pixels thick by {how}: give the pixels each step adds.",
+        6,
+        frozenset({kind}),
+    )
+
+
+_AA_ASK = {
+    "wu": "each column's two pixels and their intensities",
+    "wu-coverage": "each column's two pixels and their intensities",
+    "area": "the intensity of each pixel the line covers",
+    "subpixel": "the sub-pixel decision table and each pixel's count and intensity",
+}
+
+
+def antialias(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    length = {"easy": 3, "exam": 6, "hard": 9}[difficulty]
+    x1, y1 = rng.randrange(0, 5), rng.randrange(0, 5)
+    x2, y2 = x1 + length, y1 + rng.randrange(1, length)
+    if rng.random() < 0.5:  # steep half the time
+        x2, y2 = x1 + (y2 - y1), y1 + length
+    name = "wu" if kind == "wu-coverage" else kind
+    argv: tuple[str, ...] = ("antialias", "line", str(x1), str(y1), str(x2), str(y2))
+    argv += ("--method", name, *(("--ends", "coverage") if kind == "wu-coverage" else ()))
+    title = method("antialias", name).title
+    how = {
+        "wu": f"with {title} algorithm",
+        "wu-coverage": f"with {title} algorithm, the end points weighted by the part of their "
+        "column the line covers",
+        "area": f"anti-aliased by {title} (the line one pixel thick)",
+        "subpixel": "anti-aliased by " + title.replace("a sub-pixel", "a 3 x 3 sub-pixel"),
+    }[kind]
+    return PracticeQuestion(
+        "antialias",
+        argv,
+        f"Draw the line from ({x1}, {y1}) to ({x2}, {y2}) {how}: give {_AA_ASK[kind]}.",
+        8 if difficulty == "easy" else 10,
+        frozenset({kind, *(("steep",) if y2 - y1 > x2 - x1 else ())}),
+    )
+
+
+_GLYPHS = "AEFHLTXZ"
+
+
+def characters(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    ch = rng.choice(_GLYPHS)
+    scale = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
+    if kind == "storage":
+        count = rng.choice((96, 128, 256))
+        w, h = rng.choice(((5, 7), (7, 9), (8, 8), (9, 14)))
+        return PracticeQuestion(
+            "characters",
+            ("char", "storage", str(count), str(w), str(h)),
+            f"A bitmap font holds {count} characters of {w} x {h} pixels, each row stored in "
+            "whole bytes: how many bytes does a character need, and the whole font?",
+            4,
+            frozenset({kind}),
+        )
+    x, y = rng.randrange(0, 6), rng.randrange(0, 6)
+    if kind == "bitmap":
+        return PracticeQuestion(
+            "characters",
+            (
+                "char",
+                "bitmap",
+                ch,
+                "--at",
+                str(x),
+                str(y),
+                *(("--scale", str(scale)) if scale > 1 else ()),
+            ),
+            f"Draw the character {ch} from its 5 x 7 bitmap with its bottom-left corner at "
+            f"({x}, {y}){f', scaled by {scale}' if scale > 1 else ''}: give the pixels of each set bit.",
+            6,
+            frozenset({kind}),
+        )
+    return PracticeQuestion(
+        "characters",
+        ("char", "stroke", ch, "--at", str(x), str(y), "--scale", str(scale + 1)),
+        f"Draw the stroke character {ch} at ({x}, {y}), scaled by {scale + 1}, each stroke by "
+        "Bresenham's line algorithm: give each stroke's end points and pixels.",
+        6,
+        frozenset({kind}),
+    )
+
+
+def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    """``kind``: ``octant 2, tie`` (a tie: d = 0 at some step)."""
+    q = line_question(rng, difficulty, (int(kind.split()[1].rstrip(",")), kind.endswith("tie")))
+    algo = q.argv.index("--algo") + 1
+    x1, y1, x2, y2 = q.argv[1:5]
+    return PracticeQuestion(
+        "midpoint-line",
+        (*q.argv[:algo], "midpoint"),
+        f"Scan-convert the line from ({x1}, {y1}) to ({x2}, {y2}) with the midpoint line "
+        "algorithm (d = F(M) at the midpoint): give d, the pixel chosen and the next d at "
+        "each step.",
+        q.marks,
+        (q.features - {"dda", "bresenham"}) | {"midpoint", kind},
+    )
+
+
+KINDS: dict[str, list[Any]] = {
+    "dither": ["ordered", "floyd-steinberg", "threshold", "halftone"],
+    "inside": [0, 1, 2, 3],
+    "clip": [
+        "cohen-sutherland",
+        "liang-barsky",
+        "cyrus-beck",
+        "midpoint-subdivision",
+        "weiler-atherton",
+        "nicholl-lee-nicholl",
+    ],
+    "framebuffer": ["load", "lut", "refresh", "interlaced"],
+    "attributes": ["dashed", "replication", "dotted", "brush"],
+    "characters": ["bitmap", "stroke", "storage"],
+    "antialias": ["wu", "area", "subpixel", "wu-coverage"],
+    "midpoint-line": [
+        f"octant {o}{', tie' if tie else ''}"
+        for o, tie in (
+            (1, False),
+            (2, True),
+            (8, False),
+            (7, True),
+            (3, True),
+            (4, False),
+            (5, True),
+            (6, False),
+        )
+    ],  # a tie: d = 0 at some step (the tie convention decides)
+}
+"""Each topic's kinds, walked in a seeded rotation."""
+
+MAKERS = {
+    "dither": dither,
+    "inside": inside,
+    "clip": clipping,
+    "framebuffer": framebuffer,
+    "attributes": attributes,
+    "characters": characters,
+    "midpoint-line": midpoint_line,
+    "antialias": antialias,
+}

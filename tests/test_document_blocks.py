@@ -1,0 +1,194 @@
+"""The typed answer document: every format is one mapping from the blocks,
+the builder declares the structure the stepper used to guess, and a document built by hand
+(no Solution behind it) renders in every format."""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+from itertools import count
+
+import pytest
+
+from scanconv.answers.compare import compare_lines
+from scanconv.answers.curves.bezier import bezier_at_solution
+from scanconv.answers.primitives.ellipse import ellipse_solution
+from scanconv.answers.primitives.line import line_solution
+from scanconv.core.records import Column, Move, PixelFigure, Step, heading, worked
+from scanconv.document import (
+    Document,
+    Drawing,
+    Given,
+    Notes,
+    Pixels,
+    StepTable,
+    Table,
+    Title,
+    Working,
+    document,
+    prose,
+)
+from scanconv.document.blocks import Block
+from scanconv.render import Format, Notice, Options, render
+from scanconv.render.html import HTML
+from scanconv.render.latex import LATEX
+from scanconv.render.stepper import stepping
+from scanconv.render.terminal import RICH
+from scanconv.render.text import MARKDOWN, PLAIN
+
+BLOCKS = Block.__args__  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize("mapping", [PLAIN, MARKDOWN, LATEX, RICH, HTML])
+def test_every_format_maps_every_block_type(mapping: dict[type, object]) -> None:
+    assert set(mapping) == set(BLOCKS)
+
+
+def test_the_builder_reads_a_solution_in_reading_order() -> None:
+    doc = document(line_solution("bresenham", 2, 2, 10, 6))
+    kinds = [type(b) for b in doc.blocks]
+    assert kinds == [Title, Given, Working, Notes, StepTable, Pixels]
+    table = doc.get(StepTable)
+    assert table.offset == 1 and table.symmetry == 1 and table.has_p and table.has_decision
+    assert doc.get(Pixels).labels()[(10, 6)] == 8
+
+
+def test_notes_carry_their_math_as_math() -> None:
+    note = prose(r"$p_k < 0$ chooses E, 50% of <b>")
+    assert note.segments[0] == (True, "p_k < 0")
+    assert all(not math for math, _ in note.segments[1:])
+    latex = "".join(c for c in render(_hand_made(), Format.latex) if isinstance(c, str))
+    assert r"$p_k < 0$ chooses E, 50\% of" in latex
+
+
+def test_the_ellipse_declares_its_regions_and_their_p() -> None:
+    doc = document(ellipse_solution(8, 6))
+    table = doc.get(StepTable)
+    assert not table.shown
+    st = stepping(doc)
+    assert st is not None and set(st.row_region) == {1, 2}
+    assert table.regions == "column" and table.region_p == ("p1_k", "p2_k")
+    captions = " ".join(st.captions)
+    assert "p1" in captions and "p2" in captions  # each region's own name of p
+
+
+def test_regions_are_read_as_declared_not_guessed() -> None:
+    """The same rows: ``restart`` starts region 2 where k starts again, ``none`` never does."""
+    doc = _hand_made()
+    regions = {}
+    for how in ("restart", "none"):
+        blocks = tuple(
+            b._replace(regions=how) if isinstance(b, StepTable) else b for b in doc.blocks
+        )
+        st = stepping(doc._replace(blocks=blocks))
+        assert st is not None
+        regions[how] = st.row_region
+    assert regions == {"restart": [1, 1, 2], "none": [1, 1, 1]}
+
+
+def test_a_comparison_steps_through_its_declared_table() -> None:
+    doc = document(compare_lines(0, 0, 6, 2))
+    assert [t.stepped for t in doc.every(Table)][:1] == [True]
+    flags = tuple(b._replace(stepped=False) if isinstance(b, Table) else b for b in doc.blocks)
+    assert stepping(doc) is not None
+    assert stepping(doc._replace(blocks=flags)) is None  # no flag, no stepper: nothing guessed
+
+
+def test_construction_points_are_a_table_flag() -> None:
+    doc = document(bezier_at_solution([(0, 0), (4, 8), (8, 0)], Fraction(1, 2)))
+    assert doc.get(Pixels).construction == "de Casteljau points"
+    page = "".join(c for c in render(doc, Format.html) if isinstance(c, str))
+    assert 'class="sc-level"' in page
+    plain = tuple(b._replace(points=False) if isinstance(b, Table) else b for b in doc.blocks)
+    page = "".join(c for c in render(doc._replace(blocks=plain), Format.html) if isinstance(c, str))
+    assert 'class="sc-level"' not in page
+
+
+def _hand_made() -> Document:
+    """A document no Solution stands behind: three rows, k restarting once."""
+    rows = [Step(0, 1, Move.E, (1, 0)), Step(1, -1, Move.NE, (2, 1)), Step(0, 3, Move.E, (3, 1))]
+    columns = (
+        Column("k", "k", "k"),
+        heading("p", "p_k"),
+        Column("decision", "move", r"\text{move}"),
+        heading("pixel", "(x_k, y_k)"),
+    )
+    pixels = ((0, 0), (1, 0), (2, 1), (3, 1))
+    numbers = dict(zip(pixels, count()))
+    return Document(
+        "demo",
+        "hand",
+        "A hand-made <answer>",
+        (
+            Title("A hand-made <answer>"),
+            Given((worked("n", 3, r"n = 3"),)),
+            Working((worked("p0", 1, r"p_0 = 2 - 1 = 1"),)),
+            Notes((prose(r"$p_k < 0$ chooses E, 50% of <b>"),)),
+            StepTable(columns, (), lambda: iter(rows)),
+            Table("Totals", (Column("n", "n", "n"),), lambda: iter([(3,)])),
+            Pixels(
+                lambda: iter(pixels),
+                (0, 0, 3, 1),
+                (),
+                "marked point",
+                {},
+                "curve",
+                (),
+                "outline",
+                None,
+                2,
+                lambda: numbers,
+                lambda: "number: row k",
+            ),
+            Drawing(PixelFigure(((0, 0),), ((1, 1),), (0, 0, 2, 2), "demo", "Demo figure")),
+        ),
+        {},
+    )
+
+
+@pytest.mark.parametrize("fmt", [f for f in Format if f is not Format.auto])
+def test_a_hand_made_document_renders_in_every_format(fmt: Format) -> None:
+    chunks = list(render(_hand_made(), fmt, Options()))
+    text = "".join(c for c in chunks if isinstance(c, str))
+    if fmt is Format.rich:
+        assert len([c for c in chunks if not isinstance(c, str | Notice)]) > 5
+        return
+    if fmt is Format.csv:
+        assert text.splitlines() == ["k,p,decision,x,y", "0,1,E,1,0", "1,-1,NE,2,1", "0,3,E,3,1"]
+        return
+    if fmt is Format.json:
+        data = json.loads(text)
+        assert data["pixels"] == [[0, 0], [1, 0], [2, 1], [3, 1]]
+        assert [s["p"] for s in data["steps"]] == [1, -1, 3]
+        assert data["tables"][0]["rows"] == [[3]]
+        return
+    assert "hand-made" in text and "Totals" in text
+    if fmt is Format.html:
+        assert "&lt;answer&gt;" in text and "<answer>" not in text
+
+
+def test_the_html_page_of_a_hand_made_document_steps_through_its_rows() -> None:
+    page = "".join(c for c in render(_hand_made(), Format.html) if isinstance(c, str))
+    assert page.count("data-pos=") >= 4 and "region 2" in page
+
+
+@pytest.mark.parametrize("fmt", [f for f in Format if f is not Format.auto])
+def test_every_format_is_declared_once_with_a_renderer_that_loads(fmt: Format) -> None:
+    from importlib import import_module
+
+    from scanconv.render import EXTENSIONS, FORMATS
+    from scanconv.render.budget import DEFAULT_COSTS
+
+    spec = FORMATS[fmt]
+    module, name = spec.renderer.split(":")
+    assert callable(getattr(import_module(f"scanconv.render.{module}"), name))
+    assert all(EXTENSIONS[ext] == fmt for ext in spec.extensions)
+    assert DEFAULT_COSTS[fmt.value] == spec.row_cost
+
+
+def test_the_derivation_is_its_own_part_of_the_working() -> None:
+    working = document(line_solution("bresenham", 2, 2, 10, 6, derive=True)).get(Working)
+    assert working.quantities and working.derivation[0].key == "derivation"
+    assert all(q.key != "derivation" for q in working.quantities)
+    plain = document(line_solution("bresenham", 2, 2, 10, 6)).get(Working)
+    assert plain.derivation == () and plain.lines == plain.quantities
