@@ -24,7 +24,6 @@ import re
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from functools import partial
 from itertools import chain, islice
-from typing import Any
 
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
@@ -49,7 +48,7 @@ from .cells import note_segments, numeric_column, prose_math, wrap_items
 from .grid import too_large
 from .latex_breaks import breakable_math
 from .text import Rows, figure_text, grid_block, pixel_count, step_rows, table_rows
-from .tikz import tikz_figure, tikz_grid
+from .tikz import grid_height, tikz_figure, tikz_grid
 
 MATH_TOKENS = (
     r"[-+*/(), ]",  # an operator, a bracket, a comma, a space
@@ -116,17 +115,20 @@ NEED = r"""\makeatletter
 \providecommand{\scneed}[1]{\par\penalty-100\begingroup\setlength{\dimen@}{#1}%
 \vskip\z@\@plus\dimen@\penalty-100\vskip\z@\@plus-\dimen@\vskip\dimen@
 \penalty9999\vskip-\dimen@\vskip\z@skip\endgroup}
+\providecommand{\scneedor}[2]{\begingroup\setlength{\dimen@}{#1}\addtolength{\dimen@}{#2}%
+\ifdim\dimen@>.9\textheight\setlength{\dimen@}{#1}\fi\scneed{\the\dimen@}\endgroup}
 \makeatother
 """
 r"""``\scneed{h}``: a page break here unless ``h`` of the page is left (needspace's way):
-a table's heading never ends a page without its table."""
+a table's heading never ends a page without its table. ``\\scneedor{h}{g}``: room for
+``h + g`` (a table and the grid under it) when that fits in 0.9 of the page, else for ``h``."""
 
 KEEP_ROWS = 15
 """A table of at most this many rows starts on the next page rather than be split; a longer
 one starts where it is, with at least a few rows under its heading."""
 
 
-def _heading(title: str, rows: int) -> str:
+def _heading(title: str, rows: int, after: float = 0) -> str:
     r"""A table's heading, kept with its table (or its first rows).
 
     Set ragged right, in a group ended by its own ``\\par``: a long title (a command line
@@ -136,8 +138,11 @@ def _heading(title: str, rows: int) -> str:
     \scneed{71pt}{\raggedright\paragraph{Step table}\mbox{}\\[1ex]\par}
     """
     need = 45 + 13 * (rows if rows <= KEEP_ROWS else 5)
+    room = f"\\scneed{{{need}pt}}"
+    if rows <= KEEP_ROWS and after:  # the grid below kept with it where the page can hold both
+        room = f"\\scneedor{{{need}pt}}{{{after:.0f}pt}}"
     title = tex_text(title)
-    return f"\\scneed{{{need}pt}}{{\\raggedright\\paragraph{{{title}}}\\mbox{{}}\\\\[1ex]\\par}}\n"
+    return f"{room}{{\\raggedright\\paragraph{{{title}}}\\mbox{{}}\\\\[1ex]\\par}}\n"
 
 
 TEXT_WIDTH = 345
@@ -238,7 +243,7 @@ WRAP_CHARS = 24
 """A text column with a cell longer than this is set as a paragraph column that wraps."""
 
 
-def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
+def _tables(title: str, columns: Sequence[Column], rows: Rows, after: float = 0) -> Iterator[str]:
     """One table, whole whenever it can be: in the largest type that fits the text width;
     with its long text columns wrapped (a comparison's sentences) rather than set smaller
     than ``\\small``; scaled down to the text
@@ -250,18 +255,18 @@ def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
     small = parts[0][1][0] in ("\\footnotesize", "\\scriptsize", "\\tiny")
     wrapped = wrap_spec(columns, head) if len(parts) > 1 or small else None
     if wrapped is not None:
-        yield _heading(title, len(head))
+        yield _heading(title, len(head), after)
         yield from _tabular(columns, ("\\small", True), chain(head, first), wrapped)
         yield "\n"
         return
     if (len(parts) > 1 or parts[0][1] == _TINY) and len(head) <= RESIZE_ROWS:
-        yield _heading(title, len(head))
+        yield _heading(title, len(head), after)
         yield from resized(columns, head)
         yield "\n"
         return
     for n, (part, layout) in enumerate(parts, 1):
         label = title if len(parts) == 1 else f"{title}, part {n} of {len(parts)}"
-        yield _heading(label, len(head))
+        yield _heading(label, len(head), after if n == len(parts) else 0)
         if len(parts) == 1:  # the whole table: the rows already started, read on
             yield from _tabular(columns, layout, chain(head, first))
         else:  # each part reads the rows afresh, keeping its own columns
@@ -392,8 +397,31 @@ def render_latex(answer: Solution | Document, options: Options) -> Iterator[str 
     doc = as_document(answer)
     yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}\n"
     yield NEED
-    for block in doc.blocks:
-        yield from LATEX[type(block)](block, options, doc)
+    kept, after = _kept_with_grid(doc, options)
+    for i, block in enumerate(doc.blocks):
+        if i == kept:
+            yield from LATEX[type(block)](block, options, doc, after)
+        else:
+            yield from LATEX[type(block)](block, options, doc)
+
+
+def _kept_with_grid(doc: Document, options: Options) -> tuple[int, float]:
+    """The index of the table set right above the pixel list and its grid, and how much room
+    (points) they take: its heading makes room for the table, the list and the grid together,
+    so that a page break never falls between a table's last rows and its grid (issue 39).
+    ``(-1, 0)`` when there is no such table or no grid drawn."""
+    blocks = doc.blocks
+    at = next((i for i, b in enumerate(blocks) if isinstance(b, Pixels)), -1)
+    table = at - 1
+    if at < 1 or not isinstance(blocks[table], StepTable | Table) or not options.grid:
+        return -1, 0
+    pixels = blocks[at]
+    assert isinstance(pixels, Pixels)
+    tall = None if too_large(pixels.bbox) else grid_height(doc, options.origin)
+    if tall is None:
+        return -1, 0
+    lines = sum(1 for _ in wrap_items(f"${fmt_pixel(p)}$" for p in pixels.pixels()))
+    return table, tall + 12 * lines + 30
 
 
 def _title(block: Title, options: Options, doc: Document) -> Iterator[str]:
@@ -459,13 +487,16 @@ def _notes(block: Notes, options: Options, doc: Document) -> Iterator[str]:
     yield "\\end{itemize}\n\n"
 
 
-def _step_table(block: StepTable, options: Options, doc: Document) -> Iterator[str]:
+def _step_table(
+    block: StepTable, options: Options, doc: Document, after: float = 0
+) -> Iterator[str]:
     if block.columns and block.shown:
-        yield from _tables("Step table", block.columns, partial(step_rows, block, options.exact))
+        rows = partial(step_rows, block, options.exact)
+        yield from _tables("Step table", block.columns, rows, after)
 
 
-def _table(block: Table, options: Options, doc: Document) -> Iterator[str]:
-    yield from _tables(block.title, block.columns, partial(table_rows, block, options.exact))
+def _table(block: Table, options: Options, doc: Document, after: float = 0) -> Iterator[str]:
+    yield from _tables(block.title, block.columns, partial(table_rows, block, options.exact), after)
 
 
 def _code(block: Pseudocode, options: Options, doc: Document) -> Iterator[str]:
@@ -540,7 +571,7 @@ def _drawing(block: Drawing, options: Options, doc: Document) -> Iterator[str]:
             yield picture
 
 
-LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = {
+LATEX: dict[type, Callable[..., Iterator[str | Notice]]] = {
     Contents: _contents,
     Question: _question,
     Title: _title,
@@ -553,7 +584,8 @@ LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = 
     Pixels: _pixels,
     Drawing: _drawing,
 }
-"""The ``latex`` format: one handler per block type."""
+"""The ``latex`` format: one handler per block type, called with the block, the options and
+the document (a table's handler also takes the room its grid needs below it)."""
 
 
 def _verbatim(lines: Sequence[str]) -> Iterator[str]:
