@@ -23,6 +23,7 @@ from ._api import compare_curves as compare_curves
 from ._api import compare_lines as compare_lines
 from ._api import continuity as continuity
 from ._api import dither_diffusion as dither_diffusion
+from ._api import dither_lookup as dither_lookup
 from ._api import dither_ordered as dither_ordered
 from ._api import dither_threshold as dither_threshold
 from ._api import ellipse as ellipse
@@ -122,6 +123,7 @@ __all__ = [
     "dda",
     "dda_line",
     "dither_diffusion",
+    "dither_lookup",
     "dither_ordered",
     "dither_threshold",
     "ellipse",

@@ -804,6 +804,19 @@ VOCABULARY[("dither", "ordered")] = Vocab(
     wrong_type=((*IMAGE, "--matrix", "2.5"), "must be an integer"),
     small={"--image": IMAGE_VALUES, "--top": ("1", "255"), "--matrix": ("2", "4", "0 1; 1 0")},
 )
+VOCABULARY[("dither", "lookup")] = Vocab(
+    valid=(("5", "2", "--matrix", "4", "--value", "100"), ("1", "1", "--count", "1")),
+    numbers=((0, 1, 3, 5), (0, 1)),
+    out_of_range=(
+        (("5", "2", "--matrix", "3"), "2, 4, 8 or 16"),
+        (("1", "1", *["1"] * 128), "1 .. 64 pixels"),
+    ),
+    too_few=((), "Missing argument"),
+    too_many=(("5", "2", "--matrix"), "requires an argument"),
+    wrong_type=(("5", "2", "3"), "pairs"),
+    small={"--matrix": ("2", "4"), "--value": ("0", "100", "255"), "--top": ("1", "255")},
+    positional=("0", "1", "2", "5"),
+)
 VOCABULARY[("halftone",)] = Vocab(
     valid=(("2",), ("4", "--level", "5", "--bits", "1")),
     numbers=((0,), (0, 2, 4)),

@@ -335,6 +335,20 @@ CASES += [
         {"scale": "centered"},
     ),
     (
+        ("dither", "lookup"),
+        ("19", "2", "--matrix", "5 2 7; 1 0 3; 6 8 4", "--scale", "given", "--count", "1"),
+        "dither_lookup",
+        ([(19, 2)], [[5, 2, 7], [1, 0, 3], [6, 8, 4]]),
+        {"scale": "given", "count": 1},
+    ),
+    (
+        ("dither", "floyd-steinberg"),
+        ("--image", "100 100; 100 100", "--top", "1", "--kernel", "burkes"),
+        "dither_diffusion",
+        ("100 100; 100 100", 1),
+        {"kernel": "burkes"},
+    ),
+    (
         ("dither", "floyd-steinberg"),
         ("--image", "100 100; 100 100", "--top", "1", "--order", "serpentine"),
         "dither_diffusion",

@@ -229,6 +229,7 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
         "OriginName": sample.ORIGINS, "PackingName": characters.PACKINGS,
         "ColorModelName": color.MODELS, "CompareName": knobs["compare"],
         "DitherScaleName": knobs["scale"], "DitherBaseName": knobs["base"],
+        "DitherCountName": knobs["count"],
         "KernelName": knobs["kernel"], "ScanOrderName": knobs["order"],
         "ArithmeticName": knobs["arithmetic"], "CarryName": knobs["carry"],
     }  # fmt: skip

@@ -98,6 +98,7 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
         (["dither", "threshold", "--image", ";".join([" ".join(["1"] * 65)] * 64)], "4,096")
     ],
     "algorithms.dither.MAX_ORDER": [(["halftone", "32"], "16")],
+    "answers.image.dither.MAX_LOOKUPS": [(["dither", "lookup", *(["1", "1"] * 65)], "1 .. 64")],
     "algorithms.inside.MAX_POINTS": [
         (["inside", "0", "0", "4", "0", "0", "4", "--points", *(["1", "1"] * 101)], "100")
     ],

@@ -28,6 +28,7 @@ class DitherScale(str, Enum):
 
     raw = "raw"
     centered = "centered"
+    given = "given"
 
 
 class Base(str, Enum):
@@ -42,6 +43,13 @@ class Kernel(str, Enum):
 
     floyd_steinberg = "floyd-steinberg"
     simple = "simple"
+    jarvis_judice_ninke = "jarvis-judice-ninke"
+    stucki = "stucki"
+    burkes = "burkes"
+    sierra = "sierra"
+    two_row_sierra = "two-row-sierra"
+    sierra_lite = "sierra-lite"
+    one_dimensional = "one-dimensional"
 
 
 class ScanOrder(str, Enum):
@@ -139,40 +147,79 @@ def dither_threshold(
     return commands.dither_threshold(image, top, at, compare)
 
 
+MatrixOpt = Annotated[
+    str,
+    typer.Option(
+        "--matrix",
+        "-m",
+        metavar="N|ROWS",
+        help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's.",
+    ),
+]
+ScaleOpt = Annotated[
+    DitherScale,
+    choice(
+        "--scale",
+        help="Thresholds: raw (D x TOP / n^2), centered ((D + 1/2) x TOP / n^2), or given "
+        "(the matrix's entries are thresholds already, in the image's units).",
+    ),
+]
+BaseOpt = Annotated[Base, choice("--base", help="The matrix's entries count from 0 or from 1.")]
+TransposeOpt = Annotated[
+    bool, typer.Option("--transpose", help="Index the matrix by x first (its transpose).")
+]
+
+
 @dither_app.command("ordered", context_settings=NUMERIC_ARGS)
 @answers(picture=True, origin=False)
 def dither_ordered(
     image: Image,
     top: Top = TOP,
-    matrix: Annotated[
-        str,
-        typer.Option(
-            "--matrix",
-            "-m",
-            metavar="N|ROWS",
-            help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's.",
-        ),
-    ] = "2",
+    matrix: MatrixOpt = "2",
     compare: CompareOpt = Compare.gt,
-    scale: Annotated[
-        DitherScale,
-        choice(
-            "--scale",
-            help="Thresholds: raw (D x TOP / n^2) or centered ((D + 1/2) x TOP / n^2).",
-        ),
-    ] = DitherScale.raw,
-    base: Annotated[
-        Base, choice("--base", help="The matrix's entries count from 0 or from 1.")
-    ] = Base.zero,
-    transpose: Annotated[
-        bool, typer.Option("--transpose", help="Index the matrix by x first (its transpose).")
-    ] = False,
+    scale: ScaleOpt = DitherScale.raw,
+    base: BaseOpt = Base.zero,
+    transpose: TransposeOpt = False,
 ) -> Solution:
     """Ordered dither: the threshold matrix tiled over the image, one comparison per pixel.
 
     Example: scanconv dither ordered --image "10 200; 60 90" --matrix 2
     """
     return commands.dither_ordered(image, top, matrix, compare, scale, base, transpose)
+
+
+@dither_app.command("lookup", context_settings=NUMERIC_ARGS)
+@answers(grid=False)
+def dither_lookup(
+    pixels: Annotated[
+        list[str],
+        typer.Argument(
+            metavar="X Y ...",
+            help="The pixels' screen positions: x across, y down (row y), in pairs.",
+            show_default=False,
+        ),
+    ],
+    matrix: MatrixOpt = "4",
+    top: Top = TOP,
+    value: Annotated[
+        Fraction | None,
+        num_option("--value", help="The pixels' intensity: each is on when it passes T."),
+    ] = None,
+    count: Annotated[
+        Base, choice("--count", help="Screen positions count from 0 or from 1.")
+    ] = Base.zero,
+    compare: CompareOpt = Compare.gt,
+    scale: ScaleOpt = DitherScale.raw,
+    base: BaseOpt = Base.zero,
+    transpose: TransposeOpt = False,
+) -> Solution:
+    """A pixel's dither threshold from its screen position: T[y mod n][x mod n].
+
+    Example: scanconv dither lookup 5 2 --matrix 4 --value 100
+    """
+    return commands.dither_lookup(
+        pixels, matrix, top, value, count, compare, scale, base, transpose
+    )
 
 
 @dither_app.command("floyd-steinberg", context_settings=NUMERIC_ARGS)
@@ -182,7 +229,12 @@ def dither_diffusion(
     top: Top = TOP,
     kernel: Annotated[
         Kernel,
-        choice("--kernel", help="floyd-steinberg (7, 3, 5, 1)/16 or simple (3, 3, 2)/8."),
+        choice(
+            "--kernel",
+            help="floyd-steinberg (7, 3, 5, 1)/16, simple (3, 3, 2)/8, jarvis-judice-ninke /48, "
+            "stucki /42, burkes /32, sierra /32, two-row-sierra /16, sierra-lite /4, or "
+            "one-dimensional (all to the next pixel).",
+        ),
     ] = Kernel.floyd_steinberg,
     order: Annotated[
         ScanOrder,

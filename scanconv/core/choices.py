@@ -34,6 +34,7 @@ __all__ = [
     "CompareName",
     "ConventionName",
     "DitherBaseName",
+    "DitherCountName",
     "DitherScaleName",
     "DivideName",
     "EllipseP0Name",
@@ -146,12 +147,25 @@ OriginName = Literal["bottom-left", "top-left"]
 """Where a sampled image's row 0 is (:data:`scanconv.algorithms.sample.ORIGINS`)."""
 CompareName = Literal[">", ">="]
 """A dither's comparison (:data:`scanconv.algorithms.dither.DITHER_KNOBS`, as the next five)."""
-DitherScaleName = Literal["raw", "centered"]
-"""The ordered dither's thresholds: ``d·top/n²`` (``raw``) or ``(d + 1/2)·top/n²`` (``centered``)."""
+DitherScaleName = Literal["raw", "centered", "given"]
+"""The ordered dither's thresholds: ``d·top/n²`` (``raw``), ``(d + 1/2)·top/n²`` (``centered``) or
+the entries themselves, already in the image's units (``given``)."""
 DitherBaseName = Literal["0", "1"]
 """The Bayer matrix's entries counted from 0 (``0 .. n² - 1``) or from 1."""
-KernelName = Literal["floyd-steinberg", "simple"]
-"""The error-diffusion kernel."""
+DitherCountName = Literal["0", "1"]
+"""A pixel's screen position counted from 0 or from 1 (a threshold's lookup)."""
+KernelName = Literal[
+    "floyd-steinberg",
+    "simple",
+    "jarvis-judice-ninke",
+    "stucki",
+    "burkes",
+    "sierra",
+    "two-row-sierra",
+    "sierra-lite",
+    "one-dimensional",
+]
+"""The error-diffusion kernel (:data:`scanconv.algorithms.dither.KERNELS`)."""
 ScanOrderName = Literal["raster", "serpentine"]
 """The error diffusion's scan: every row left to right, or alternate rows reversed."""
 ArithmeticName = Literal["exact", "integer"]

@@ -31,9 +31,14 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
             6 if n == 2 else 10,
             frozenset({kind}),
         )
+    if kind == "lookup":
+        return _lookup(rng, difficulty)
     rows, cols = {"easy": (2, 2), "exam": (2, 4), "hard": (4, 4)}[difficulty]
+    if kind == "kernel":
+        rows += 1  # the kernels reaching two rows down show their third row
     image = _image(rng, rows, cols)
-    argv: tuple[str, ...] = ("dither", kind, "--image", image, "--top", "255")
+    command = "floyd-steinberg" if kind == "kernel" else kind
+    argv: tuple[str, ...] = ("dither", command, "--image", image, "--top", "255")
     if kind == "ordered":
         n = 4 if difficulty == "hard" else 2
         argv += ("--matrix", str(n))
@@ -41,6 +46,10 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     elif kind == "threshold":
         how = "a threshold of 128"
         argv += ("--at", "128")
+    elif kind == "kernel":
+        kernel = rng.choice(_KERNELS)
+        argv += ("--kernel", kernel)
+        how = f"error diffusion with the {_KERNEL_NAMES[kernel]} kernel"
     else:
         how = "Floyd-Steinberg error diffusion (7/16, 3/16, 5/16, 1/16)"
     return PracticeQuestion(
@@ -50,6 +59,40 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
         f"with {how}: give the table and the output.",
         6 if difficulty == "easy" else 8,
         frozenset({kind}),
+    )
+
+
+_KERNEL_NAMES = {
+    "jarvis-judice-ninke": "Jarvis-Judice-Ninke (weights over 48)",
+    "stucki": "Stucki (over 42)",
+    "burkes": "Burkes (over 32)",
+    "sierra": "Sierra (three rows, over 32)",
+    "two-row-sierra": "two-row Sierra (over 16)",
+    "sierra-lite": "Sierra Lite (2/4 right, 1/4 below left, 1/4 below)",
+    "one-dimensional": "one-dimensional (all of the error to the next pixel)",
+}
+_KERNELS = tuple(_KERNEL_NAMES)
+
+
+def _lookup(rng: random.Random, difficulty: str) -> PracticeQuestion:
+    """A pixel's ordered-dither threshold from its screen position."""
+    n = 2 if difficulty == "easy" else 4
+    count = "1" if difficulty == "hard" else "0"
+    pixels = [(rng.randrange(int(count), 20), rng.randrange(int(count), 20)) for _ in range(2)]
+    value = rng.randrange(0, 256)
+    argv = (
+        "dither", "lookup", *(str(v) for p in pixels for v in p), "--matrix", str(n),
+        "--value", str(value), "--count", count,
+    )  # fmt: skip
+    where = " and ".join(f"({x}, {y})" for x, y in pixels)
+    return PracticeQuestion(
+        "dither",
+        argv,
+        f"With the {n} x {n} Bayer matrix tiled over the screen (positions counted from "
+        f"{count}, thresholds D x 255 / {n * n}), find the threshold of the pixels at {where} "
+        f"(x across, y down) and say whether a pixel of intensity {value} is on there.",
+        4,
+        frozenset({"lookup"}),
     )
 
 
@@ -276,7 +319,7 @@ def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQue
 
 
 KINDS: dict[str, list[Any]] = {
-    "dither": ["ordered", "floyd-steinberg", "threshold", "halftone"],
+    "dither": ["ordered", "floyd-steinberg", "threshold", "halftone", "kernel", "lookup"],
     "inside": [0, 1, 2, 3],
     "clip": [
         "cohen-sutherland",

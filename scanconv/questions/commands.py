@@ -382,6 +382,30 @@ def dither_ordered(
     )
 
 
+def dither_lookup(
+    pixels: list[Any],
+    matrix: Any,
+    top: Any,
+    value: Any,
+    count: Any,
+    compare: Any,
+    scale: Any,
+    base: Any,
+    transpose: bool,
+) -> Solution:
+    return api.dither_lookup(
+        pixels,
+        "4" if matrix is None else matrix,
+        255 if top is None else top,
+        value=value,
+        count=_text(count),
+        compare=_text(compare),
+        scale=_text(scale),
+        base=_text(base),
+        transpose=transpose,
+    )
+
+
 def dither_diffusion(
     image: str,
     top: Any,
@@ -455,7 +479,8 @@ BODIES: dict[str, Body] = {
         local_control, circle, ellipse, compare_line, compare_circle, compare_curves, transform,
         viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon,
         fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color,
-        theory, clip_convex, dither_threshold, dither_ordered, dither_diffusion, halftone, inside,
+        theory, clip_convex, dither_threshold, dither_ordered, dither_lookup, dither_diffusion,
+        halftone, inside,
         framebuffer, line_style, thick_line, char_bitmap, char_stroke, char_storage,
     )
 }  # fmt: skip

@@ -328,6 +328,7 @@ BOUNDED: dict[str, str] = {
     "dither_threshold": "a row per pixel, at most algorithms.dither.MAX_CELLS = 4,096",
     "dither_ordered": "a row per pixel, at most algorithms.dither.MAX_CELLS = 4,096",
     "dither_diffusion": "a row per pixel, at most algorithms.dither.MAX_CELLS = 4,096",
+    "dither_lookup": "a row per pixel, at most answers.image.dither.MAX_LOOKUPS = 64",
     "halftone": "n <= algorithms.dither.MAX_ORDER = 16: at most 257 patterns",
     "framebuffer": "closed-form arithmetic on exact integers",
     "char_stroke": "at most 4 strokes on a 5 x 7 grid, scaled at most 16 times",

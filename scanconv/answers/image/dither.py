@@ -29,7 +29,7 @@ from ...core.records import (
 from ..process._shared import matrix_tex, matrix_text
 from ._shared import matrix_columns
 
-METHODS = ("threshold", "ordered", "floyd-steinberg", "pattern")
+METHODS = ("threshold", "ordered", "lookup", "floyd-steinberg", "pattern")
 """The dithering methods, as ``scanconv dither METHOD`` takes them."""
 
 
@@ -188,6 +188,28 @@ def _dither_matrix(matrix: int | Sequence[Sequence[Number]]) -> tuple[d.Matrix, 
     return m, f"the {len(m)} x {len(m[0])} matrix given"
 
 
+def _thresholds(
+    dm: d.Matrix, top: Number, scale: str, base: str, transpose: bool
+) -> tuple[d.Matrix, list[Quantity], str]:
+    """The threshold matrix of ``dm``, the working that gives it (D, the rule, T) and its
+    conventions in words for the notes."""
+    table = d.thresholds(dm, top, scale=scale, base=base, transpose=transpose)
+    read = "by columns (transposed)" if transpose else "by rows"
+    if scale == "given":  # the entries are the thresholds, in the image's units
+        how = rule("T", r"T = D \text{ (the entries are thresholds, in the image's units)}")
+        note = f"thresholds given (T = D, in the image's units), the matrix read {read}"
+    else:
+        n2 = len(dm) * len(dm[0])
+        shift = "" if base == "0" else " - 1"
+        half = " + 1/2" if scale == "centered" else ""
+        how = rule("T", f"T(d) = (d{shift}{half}) \\cdot {fmt_short(top)} / {n2}")
+        note = (
+            f"thresholds {scale} (T = (d{shift}{half}) * top / n^2), entries from {base}, "
+            f"the matrix read {read}"
+        )
+    return table, [_matrix("D", "D", dm), how, _matrix("thresholds", "T", table)], note
+
+
 def ordered_solution(
     image: Sequence[Sequence[Number]],
     matrix: int | Sequence[Sequence[Number]] = 2,
@@ -206,27 +228,15 @@ def ordered_solution(
     """
     img = _checked(image, top)
     dm, named = _dither_matrix(matrix)
-    n2 = len(dm) * len(dm[0])
-    table = d.thresholds(dm, top, scale=scale, base=base, transpose=transpose)
     rel = _COMPARE_TEX[d.choice("compare", compare)]
-    shift = "" if base == "0" else " - 1"
-    half = " + 1/2" if scale == "centered" else ""
-    derived = [
-        _matrix("D", "D", dm),
-        rule(
-            "T",
-            f"T(d) = (d{shift}{half}) \\cdot {fmt_short(top)} / {n2}",
-        ),
-        _matrix("thresholds", "T", table),
+    table, derived, t_note = _thresholds(dm, top, scale, base, transpose)
+    derived.append(
         rule(
             "test",
             f"\\text{{on when }} I(i, j) {rel} T[i \\bmod {len(table)}][j \\bmod {len(table[0])}]",
-        ),
-    ]
-    notes = [
-        f"Conventions: compare {compare}, thresholds {scale} (T = (d{shift}{half}) * top / n^2), "
-        f"entries from {base}, the matrix read {'by columns (transposed)' if transpose else 'by rows'}.",
-    ]
+        )
+    )
+    notes = [f"Conventions: compare {compare}, {t_note}."]
     return _solution(
         "ordered",
         f"Ordered dither with {named}",
@@ -244,6 +254,109 @@ def ordered_solution(
             "compare": compare,
         },
     )
+
+
+MAX_LOOKUPS = 64
+"""The most pixels looked up in one answer."""
+
+
+def lookup_solution(
+    pixels: Sequence[tuple[int, int]],
+    matrix: int | Sequence[Sequence[Number]] = 4,
+    top: Number = 1,
+    *,
+    value: Number | None = None,
+    count: str = "0",
+    compare: str = ">",
+    scale: str = "raw",
+    base: str = "0",
+    transpose: bool = False,
+) -> Solution:
+    """Each pixel's threshold from its screen position: ``T[(y - c) mod n][(x - c) mod n]``
+    (positions counted from ``c`` = ``count``), and whether a pixel of intensity ``value`` there
+    is on.
+
+    >>> sol = lookup_solution([(5, 2)], 4, 16, value=10)
+    >>> [s.extra for s in sol.steps()]
+    [(5, 2, 2, 5, 2, 1, 11, 10, 0)]
+    """
+    if not 1 <= len(pixels) <= MAX_LOOKUPS:
+        raise InputError(f"give 1 .. {MAX_LOOKUPS} pixels (X Y pairs), got {len(pixels)}", "pixels")
+    if not top > 0:
+        raise InputError(f"the scale's top must be positive, got {fmt_short(top)}", "top")
+    dm, named = _dither_matrix(matrix)
+    rel = _COMPARE_TEX[d.choice("compare", compare)]
+    table, derived, t_note = _thresholds(dm, top, scale, base, transpose)
+    c = int(d.choice("count", count))
+    found = [d.lookup(table, x, y, count) for x, y in pixels]
+    n, m = len(table), len(table[0])
+    at = f"y - {c}" if c else "y"
+    derived.append(
+        rule(
+            "lookup",
+            f"i = {at}, \\; j = {at.replace('y', 'x')}, \\; T(x, y) = "
+            f"T[i \\bmod {n}][j \\bmod {m}]",
+        )
+    )
+    if value is not None:
+        derived.append(
+            rule("test", f"\\text{{on when }} I {rel} T(x, y), \\; I = {fmt_short(value)}")
+        )
+    outputs = None if value is None else [int(d._on(value, f.threshold, compare)) for f in found]
+    notes = [
+        f"Conventions: positions counted from {c} (x across, y down: row i = {at}, column "
+        f"j = {at.replace('y', 'x')}), {t_note}, compare {compare}.",
+    ]
+
+    def steps() -> Iterator[Step]:
+        for k, ((x, y), f) in enumerate(zip(pixels, found, strict=True)):
+            extra = (x, y, f.i, f.j, f.row, f.col, f.threshold)
+            decided = () if outputs is None else (value, outputs[k])
+            yield Step(k, None, None, (x, y), extra + decided)
+
+    columns = (
+        heading("k", "k"),
+        heading("x", "x"),
+        heading("y", "y"),
+        heading("i", "i"),
+        heading("j", "j"),
+        heading("row", rf"i \bmod {n}"),
+        heading("col", rf"j \bmod {m}"),
+        heading("threshold", "T"),
+        heading("value", "I"),
+        heading("output", r"\text{output}"),
+    )
+    keys = ("x", "y", "i", "j", "row", "col", "threshold", "value", "output")
+    return Solution(
+        primitive="dither",
+        algorithm="lookup",
+        title=f"Dither thresholds looked up by position ({named})",
+        given=(
+            worked(
+                "pixels",
+                [list(p) for p in pixels],
+                "(x, y) = " + ", ".join(f"({x}, {y})" for x, y in pixels),
+            ),
+            worked("top", top, f"\\text{{intensities on the scale }} 0 \\ldots {fmt_short(top)}"),
+        ),
+        derived=tuple(derived),
+        columns=columns if value is not None else columns[:-2],
+        extra_keys=keys if value is not None else keys[:-2],
+        steps=steps,
+        notes=tuple(notes),
+        data={
+            "matrix": [list(r) for r in dm],
+            "thresholds": [list(r) for r in table],
+            "lookups": [f.threshold for f in found],
+            "output": outputs,
+            "compare": compare,
+        },
+    )
+
+
+def _over(weight: Fraction, divisor: int) -> str:
+    """A kernel weight over the kernel's published divisor: ``2/8``, not ``1/4``."""
+    return "1" if divisor == 1 else f"{weight * divisor}/{divisor}"
 
 
 def _carries_text(carries: Sequence[d.Carry]) -> str:
@@ -281,7 +394,7 @@ def diffusion_solution(
             "kernel",
             r"\text{shares: }"
             + ", ".join(
-                f"{s.weight.numerator}/{s.weight.denominator} \\text{{ to }} (i{s.di:+d}, j{s.dj:+d})"
+                f"{_over(s.weight, d.KERNEL_DIVISORS[kernel])} \\text{{ to }} (i{s.di:+d}, j{s.dj:+d})"
                 for s in shares
             ),
         ),
@@ -291,6 +404,8 @@ def diffusion_solution(
         f"carries {carry}, on when I' {compare} {fmt_short(half)}; outputs 0 and {fmt_short(top)}.",
         "I' is the pixel's value plus the error it received; shares that fall outside the "
         "image are lost.",
+        f"Kernel {kernel}: weights over {d.KERNEL_DIVISORS[kernel]}, summing to 1; "
+        f"{d.KERNEL_SOURCES[kernel]}.",
     ]
     if order == "serpentine":
         notes.append("Odd rows are scanned right to left, the kernel mirrored (j - 1 is ahead).")

@@ -71,7 +71,9 @@ def dithering() -> Solution:
             "it, so a slow change of intensity shows no contour.",
             "Ordered dither: pixel $(i, j)$ is on when $I(i, j) > T[i \\bmod n][j \\bmod n]$, "
             "with the thresholds from the Bayer matrix $D_2 = [[0, 2], [3, 1]]$ scaled to the "
-            "intensity range; the image keeps its resolution.",
+            "intensity range (or a matrix given already in the image's units); the image keeps "
+            "its resolution. One pixel's threshold is looked up from its screen position: row "
+            "$y \\bmod n$, column $x \\bmod n$ (positions counted from 1: $(y - 1) \\bmod n$).",
             "Error diffusion (Floyd-Steinberg) rounds each pixel to the nearest level and "
             "passes the error on to the pixels not yet visited: 7/16, 3/16, 5/16, 1/16.",
         ),
@@ -107,9 +109,16 @@ def error_diffusion() -> Solution:
             "$I' \\ge \\text{top}/2$, else 0; error $e = I' - \\text{output}$, shared out.",
             "With exact arithmetic the image's total is kept, less the shares that fall off its "
             "edges; the serpentine order (odd rows right to left) avoids directional artefacts.",
+            "Other kernels spread the error further (the current row's weights from $j + 1$, "
+            "the rows below centred on $j$): Jarvis-Judice-Ninke $(7, 5; 3, 5, 7, 5, 3;"
+            " 1, 3, 5, 3, 1)/48$, Stucki $(8, 4; 2, 4, 8, 4, 2; 1, 2, 4, 2, 1)/42$, Burkes "
+            "$(8, 4; 2, 4, 8, 4, 2)/32$, Sierra $(5, 3; 2, 4, 5, 4, 2; 0, 2, 3, 2, 0)/32$, two-row "
+            "Sierra $(4, 3; 1, 2, 3, 2, 1)/16$, Sierra Lite $(2; 1, 1, 0)/4$; the one-dimensional "
+            "scheme carries all of the error to the next pixel of the row.",
         ),
         points=(
-            "The kernel's weights sum to 1: the error is moved, not lost.",
+            "Every kernel's weights sum to 1: the error is moved, not lost.",
+            "Errors are at most top/2: the mean shifts by at most that x the weight lost.",
             "Only pixels not yet visited receive error (right, and the next row).",
             "Integer code truncates each share; exact arithmetic keeps fractions.",
         ),
@@ -118,6 +127,12 @@ def error_diffusion() -> Solution:
                 "a 2 x 2 image of 100 on 0 .. 255 (scanconv dither floyd-steinberg --image "
                 "'100 100; 100 100')",
                 dither.diffusion_solution([[100, 100], [100, 100]], 255),
+                plot=False,
+            ),
+            embed(
+                "the same image with Stucki's kernel (scanconv dither floyd-steinberg --image "
+                "'100 100; 100 100' --kernel stucki)",
+                dither.diffusion_solution([[100, 100], [100, 100]], 255, kernel="stucki"),
                 plot=False,
             ),
         ),
