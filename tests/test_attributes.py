@@ -31,7 +31,7 @@ def test_bad_masks(text: str, param: str) -> None:
     assert info.value.param == param
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=80)
 @given(ends=ENDS)
 def test_the_centre_line_is_bresenhams(ends) -> None:
@@ -40,7 +40,7 @@ def test_the_centre_line_is_bresenhams(ends) -> None:
     assert {p for _, p in centre_line(*ends)} == set(zip(xs.tolist(), ys.tolist(), strict=True))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=80)
 @given(ends=ENDS, mask=st.text("01", min_size=1, max_size=12), repeat=st.integers(1, 4))
 def test_a_solid_mask_draws_every_pixel_and_the_mask_is_periodic(ends, mask, repeat) -> None:
@@ -51,7 +51,7 @@ def test_a_solid_mask_draws_every_pixel_and_the_mask_is_periodic(ends, mask, rep
     assert all(s.extra[1] == 1 for s in solid)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=80)
 @given(ends=ENDS, width=st.integers(1, 6), brush=st.booleans())
 def test_thick_lines_cover_the_span_of_every_centre_pixel(ends, width, brush) -> None:

@@ -39,7 +39,7 @@ def test_every_glyph_is_5_by_7() -> None:
                for g in FONT_5X7.values())  # fmt: skip
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(char=st.sampled_from(sorted(FONT_5X7)), scale=st.integers(1, 4), x0=st.integers(-5, 5))
 def test_a_scaled_bitmap_has_scale_squared_pixels_per_bit(char, scale, x0) -> None:

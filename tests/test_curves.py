@@ -81,7 +81,7 @@ def _point(step):
 # --- Bezier -------------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(points, st.integers(1, 12))
 def test_bezier_interpolates_its_end_points(pts, samples):
     rows = list(bezier(pts, samples))
@@ -90,14 +90,14 @@ def test_bezier_interpolates_its_end_points(pts, samples):
     assert _point(rows[-1]) == pts[-1]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(points, st.integers(1, 10))
 def test_bezier_stays_in_the_convex_hull(pts, samples):
     for s in bezier(pts, samples):
         assert _in_hull(_point(s), pts)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(st.integers(1, 12), unit_t)
 def test_bernstein_weights_are_nonnegative_and_sum_to_one(n, t):
     w = bernstein(n, t)
@@ -105,7 +105,7 @@ def test_bernstein_weights_are_nonnegative_and_sum_to_one(n, t):
     assert all(v >= 0 for v in w)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(points, unit_t)
 def test_de_casteljau_equals_bernstein_exactly(pts, t):
     *_, last = de_casteljau(pts, t)
@@ -162,7 +162,7 @@ def spline_cases(draw):
             continue
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60)
 @given(spline_cases(), st.integers(1, 9))
 def test_bspline_basis_is_a_partition_of_unity_on_the_domain(case, samples):
@@ -174,7 +174,7 @@ def test_bspline_basis_is_a_partition_of_unity_on_the_domain(case, samples):
         assert all(v >= 0 for v in w)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60)
 @given(spline_cases(), st.integers(1, 9), st.data())
 def test_bspline_local_control(case, samples, data):
@@ -192,7 +192,7 @@ def test_bspline_local_control(case, samples, data):
             assert _point(a) == _point(b), (t, lo, hi)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(points)
 def test_clamped_bspline_interpolates_its_end_points(pts):
     n = len(pts) - 1
@@ -218,8 +218,8 @@ def test_clamped_bspline_without_inner_knots_is_the_bezier_curve():
         assert a.extra[1:] == b.extra[1:]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 def test_bspline_agrees_with_scipy_on_random_inputs():
     # imported here, not with the module: a second of CPU each pytest process would pay
     # collecting the file (every xdist worker does), for this one test
@@ -338,7 +338,7 @@ def test_float_noise_does_not_move_a_pixel():
 # --- rasterizing --------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(st.lists(st.tuples(st.integers(-15, 15), st.integers(-15, 15)), min_size=1, max_size=12))
 def test_curve_pixels_are_8_connected_without_duplicates(samples):
     out = list(curve_pixels(samples))
@@ -347,7 +347,7 @@ def test_curve_pixels_are_8_connected_without_duplicates(samples):
     assert connected(set(out))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(
     st.tuples(st.integers(-20, 20), st.integers(-20, 20)),
     st.tuples(st.integers(-20, 20), st.integers(-20, 20)),
@@ -522,7 +522,7 @@ def test_bad_input_is_one_line_exit_2_nothing_on_stdout(case, command, words):
     assert_refused(run(*shlex.split(command), "--format", "plain"), words)
 
 
-# --- issue 13: the basis from a degree and knots alone ----------------------------------------
+# --- the basis from a degree and knots alone -------------------------------------------------
 
 
 def test_bspline_basis_from_degree_and_knots_alone():

@@ -258,7 +258,7 @@ def test_latex_fits_the_page_width(tmp_path: Path, name: str) -> None:
 
 
 def test_latex_wide_short_table_is_set_whole_never_in_parts(tmp_path: Path) -> None:
-    """Issue 27: the circle's 9-column symmetry table is one table (scaled to the text width),
+    """The circle's 9-column symmetry table is one table (scaled to the text width),
     not parts of its columns; it fits the page."""
     from scanconv.answers.primitives.circle import circle_solution
 
@@ -282,7 +282,7 @@ def test_latex_long_answer_breaks_pixels_and_pages(tmp_path: Path) -> None:
 
 
 def test_latex_wide_grid_is_drawn_to_fit(tmp_path: Path) -> None:
-    """Issue 27: the grid is drawn (TikZ), scaled to the text width, never typewriter text."""
+    """The grid is drawn (TikZ), scaled to the text width, never typewriter text."""
     out = _answer("line", "0", "0", "24", "4")
     assert "\\begin{tikzpicture}" in out and "\\begin{verbatim}" not in out
     typeset_each(tmp_path, PREAMBLE, out, _every(), _fits_within(1), passes=2)

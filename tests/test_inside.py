@@ -68,7 +68,7 @@ def _star_shaped(draw_angles: list[int], radii: list[int]) -> list[tuple[int, in
     return list(dict.fromkeys(pts))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(
     vertices=st.lists(st.tuples(st.integers(-8, 8), st.integers(-8, 8)), min_size=3, max_size=7),
@@ -90,7 +90,7 @@ def test_agrees_with_the_scan_line_fill_off_the_boundary(vertices, rule) -> None
             assert (v.even_odd if rule == "even-odd" else v.nonzero) == ((x, y) in filled)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(
     angles=st.lists(st.integers(0, 359), min_size=3, max_size=9, unique=True),

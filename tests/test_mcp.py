@@ -154,6 +154,25 @@ def texts(result: Any) -> list[str]:
 
 
 @needs_sdk
+def test_docs_mcp_md_lists_the_tools_the_model_sees_with_their_arguments(tools):
+    """docs/mcp.md's table of tools is the server's: every tool but the view's own
+    (``answer_page``, for the app), each with the arguments it takes, and ``practice``'s count
+    limit (1 to 20) is the one it enforces."""
+    import re
+
+    from scanconv.mcp_server.answers import MAX_PRACTICE
+    from scanconv.mcp_server.view import PAGE_TOOL
+
+    doc = (Path(__file__).resolve().parent.parent / "docs" / "mcp.md").read_text("utf-8")
+    rows = dict(re.findall(r"^\| `([a-z_]+)` \| ([^|]*) \|", doc, flags=re.M))
+    assert set(rows) == set(tools) - {PAGE_TOOL}
+    for name, arguments in rows.items():
+        said = set(re.findall(r"`([a-z_]+)`", arguments))
+        assert said == set(tools[name].input_schema.get("properties", {})), name
+    assert f"`count` (1 to {MAX_PRACTICE})" in rows["practice"]
+
+
+@needs_sdk
 def test_the_tools_are_listed_read_only_with_real_output_schemas(tools):
     assert set(tools) >= {"solve", "check", "practice", "theory", "vocabulary"}
     for name in ("solve", "check", "practice", "theory", "vocabulary"):

@@ -361,7 +361,7 @@ def _images() -> list[Solution]:
     ]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_every_quantity_and_heading_is_written_once() -> None:
     """The text of every given, derived value and heading is derived from its TeX."""
     for sol in _solutions():

@@ -2,7 +2,7 @@
 parameters, read from the typer app, in the form of :mod:`scanconv.questions.grammar`.
 
 The library parses questions without typer from that module's table; this one rebuilds the
-table from the command line's own declarations, so a test (``tests/test_questions_api.py``)
+table from the command line's own declarations, so a test (``tests/test_questions_files.py``)
 fails when the two differ, and ``python -m scanconv.cli.grammar`` prints the module to paste::
 
     python -m scanconv.cli.grammar > scanconv/questions/grammar_table.py

@@ -48,6 +48,7 @@ __all__ = [
     "LineScaleName",
     "LoopName",
     "MidpointName",
+    "MidpointStopName",
     "NormalsName",
     "OrderName",
     "OriginName",
@@ -118,6 +119,8 @@ ClipEndsName = Literal["exact", "truncated"]
 """Cyrus-Beck's clipped end points (:data:`scanconv.algorithms.cyrus_beck.ENDS`)."""
 MidpointName = Literal["rounded", "floor", "exact"]
 """Midpoint subdivision's midpoint (:data:`scanconv.algorithms.midpoint_clip.MIDPOINTS`)."""
+MidpointStopName = Literal["length", "edge"]
+"""Midpoint subdivision's stop rule (:data:`scanconv.algorithms.midpoint_clip.STOPS`)."""
 AAMethodName = Literal["area", "supersample", "wu", "subpixel"]
 """``method`` of the anti-aliasing functions (``AAMethod``)."""
 AcrossName = Literal["minor", "perpendicular"]

@@ -1,4 +1,4 @@
-"""Escaping defects of the attack report (issue 29, item 2): D3, D4, D8, D9 and D19.
+"""Hostile text read back as each output's reader reads it (attack report D3, D4, D8, D9, D19).
 
 Student file names (``check --batch``), question text and formula comments reach every format;
 each test feeds one hostile text through the command a teacher runs and reads the output as its

@@ -1,4 +1,4 @@
-"""The typed answer document (issue 26, item 2): every format is one mapping from the blocks,
+"""The typed answer document: every format is one mapping from the blocks,
 the builder declares the structure the stepper used to guess, and a document built by hand
 (no Solution behind it) renders in every format."""
 
