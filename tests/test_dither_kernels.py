@@ -1,6 +1,6 @@
 """The error-diffusion kernels beyond Floyd-Steinberg, a threshold looked up by screen position
-and a threshold matrix given in the image's units (issue 41, dithering): each against the
-kernel tables as published and an independent error diffusion written here."""
+and a threshold matrix given in the image's units: each against the kernel tables as
+published and an independent error diffusion written here."""
 
 from __future__ import annotations
 
@@ -101,7 +101,7 @@ def _lost_weight(name: str, rows: int, cols: int, serpentine: bool) -> Fraction:
     return total
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @_IMAGES
 def test_every_kernel_equals_the_published_table_applied_by_hand(
@@ -114,7 +114,7 @@ def test_every_kernel_equals_the_published_table_applied_by_hand(
     assert sol.data["output"] == [[int(v == 255) for v in row] for row in expected]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @_IMAGES
 def test_every_kernel_preserves_the_mean_within_its_bound(
