@@ -42,6 +42,7 @@ from ._api import parametric_parabola as parametric_parabola
 from ._api import pipeline_line as pipeline_line
 from ._api import pipeline_polygon as pipeline_polygon
 from ._api import polygon as polygon
+from ._api import printer as printer
 from ._api import quantize as quantize
 from ._api import ramp as ramp
 from ._api import sample as sample
@@ -145,6 +146,7 @@ __all__ = [
     "pipeline_line",
     "pipeline_polygon",
     "polygon",
+    "printer",
     "quantize",
     "questions",
     "ramp",

@@ -357,6 +357,22 @@ CASES += [
     ),
     (("halftone",), ("4", "--level", "5"), "halftone", (4,), {"level": "5"}),
     (
+        ("halftone",),
+        ("3", "--matrix", "6 8 4; 1 0 3; 5 2 7"),
+        "halftone",
+        (3,),
+        {"matrix": [[6, 8, 4], [1, 0, 3], [5, 2, 7]]},
+    ),
+    (("halftone",), ("5", "--order", "clustered"), "halftone", (5,), {"order": "clustered"}),
+    (("printer",), ("--dpi", "300", "--lpi", "60"), "printer", (300, 60), {}),
+    (
+        ("printer",),
+        ("--lpi", "150", "--levels", "257", "--count", "n2+1"),
+        "printer",
+        (),
+        {"lpi": 150, "levels": 257},
+    ),
+    (
         ("inside",),
         ("0", "0", "6", "0", "6", "6", "--points", "3", "1", "6", "3", "--boundary", "outside"),
         "inside",

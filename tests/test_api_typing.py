@@ -203,6 +203,7 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
         subpixel,
         wu,
     )
+    from scanconv.answers.image import halftone as answers_halftone
     from scanconv.answers.process.antialias import subpixel as answers_subpixel
     from scanconv.answers.process.fill import inside as answers_inside
 
@@ -231,6 +232,9 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
         "ColorModelName": color.MODELS, "CompareName": knobs["compare"],
         "DitherScaleName": knobs["scale"], "DitherBaseName": knobs["base"],
         "DitherCountName": knobs["count"],
+        "CellOrderName": dither.CELL_ORDERS,
+        "LevelCountName": answers_halftone.PRINTER_KNOBS["count"],
+        "PrinterDotsName": answers_halftone.PRINTER_KNOBS["dots"],
         "KernelName": knobs["kernel"], "ScanOrderName": knobs["order"],
         "ArithmeticName": knobs["arithmetic"], "CarryName": knobs["carry"],
     }  # fmt: skip

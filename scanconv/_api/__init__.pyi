@@ -31,6 +31,7 @@ from .dither import dither_lookup as dither_lookup
 from .dither import dither_ordered as dither_ordered
 from .dither import dither_threshold as dither_threshold
 from .dither import halftone as halftone
+from .dither import printer as printer
 from .image import quantize as quantize
 from .image import ramp as ramp
 from .image import sample as sample
@@ -112,6 +113,7 @@ __all__ = [
     "pipeline_line",
     "pipeline_polygon",
     "polygon",
+    "printer",
     "quantize",
     "ramp",
     "sample",

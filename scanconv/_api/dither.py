@@ -14,20 +14,25 @@ from .values import NumberLike, PointsLike, _choice, _flat, _number, _optional, 
 
 if TYPE_CHECKING:
     from ..answers.image import dither as answers_dither
+    from ..answers.image import halftone as answers_halftone
     from ..core.choices import (
         ArithmeticName,
         CarryName,
+        CellOrderName,
         CompareName,
         DitherBaseName,
         DitherCountName,
         DitherScaleName,
         KernelName,
+        LevelCountName,
+        PrinterDotsName,
         ScanOrderName,
     )
     from ..core.numeric import Number
     from ..core.records import Solution
 else:  # the command's answer module, loaded by its first call
     answers_dither = lazy.module("scanconv.answers.image.dither")
+    answers_halftone = lazy.module("scanconv.answers.image.halftone")
 
 
 MatrixLike = str | Sequence[Sequence[NumberLike]]
@@ -307,24 +312,37 @@ def dither_diffusion(
 
 
 @answers
-def halftone(n: NumberLike, *, level: NumberLike | None = None, bits: NumberLike = 1) -> Solution:
+def halftone(
+    n: NumberLike,
+    *,
+    level: NumberLike | None = None,
+    bits: NumberLike = 1,
+    order: CellOrderName = "bayer",
+    matrix: MatrixLike | None = None,
+) -> Solution:
     """The n x n halftone patterns (``scanconv halftone``): the levels they give and the pattern of
     each level, or of one.
 
     Parameters
     ----------
     n : int
-        The pattern's side.
+        The cell's side, 1 to 16: n² + 1 nested levels.
     level : int, optional
         Only this level's pattern.
     bits : int, default 1
         Bits a cell (more than 1: grey cells, ``n² (2**bits - 1) + 1`` levels).
+    order : {"bayer", "clustered"}, default "bayer"
+        How the cell fills: in the order of the Bayer matrix (for n not a power of 2, the
+        top-left n x n block of the next Bayer matrix, ranked), or a dot growing from the
+        centre.
+    matrix : str or rows of numbers, optional
+        The order given instead: an n x n matrix holding 0 .. n² - 1 (or 1 .. n²) once each.
 
     Returns
     -------
     Answer
         The table ``level, pattern (rows top first), cells on``; ``.data`` holds the number of
-        ``levels`` and the ``patterns``.
+        ``levels``, the cell's ``order`` and the ``patterns``.
 
     Examples
     --------
@@ -333,9 +351,63 @@ def halftone(n: NumberLike, *, level: NumberLike | None = None, bits: NumberLike
     (5, [[1, 0], [0, 1]])
     >>> list(halftone(2, level=3).tables[-1].rows())
     [(3, '1 1 / 0 1', 3)]
+    >>> halftone(5).data["levels"], halftone(3, matrix="6 8 4; 1 0 3; 5 2 7").data["patterns"][1]
+    (26, [[0, 0, 0], [0, 1, 0], [0, 0, 0]])
     """
     return answers_dither.pattern_solution(
         _whole(n, "n"),
         None if level is None else _whole(level, "level"),
         _whole(bits, "bits"),
+        order=_choice(order, "order"),
+        matrix=None if matrix is None else _matrix(matrix, "matrix"),
+    )
+
+
+@answers
+def printer(
+    dpi: NumberLike | None = None,
+    lpi: NumberLike | None = None,
+    *,
+    cell: NumberLike | None = None,
+    levels: NumberLike | None = None,
+    count: LevelCountName = "n2+1",
+    dots: PrinterDotsName = "whole",
+) -> Solution:
+    """A printer's halftone arithmetic (``scanconv printer``): from any two of the printer's dots
+    per inch, the screen's lines per inch and the cell (or the levels wanted), the rest.
+
+    Parameters
+    ----------
+    dpi : number, optional
+        The printer's resolution in dots per inch.
+    lpi : number, optional
+        The halftone screen's lines (cells) per inch.
+    cell : int, optional
+        The cell's side n in dots.
+    levels : int, optional
+        The grey levels wanted: the smallest cell giving them.
+    count : {"n2+1", "n2"}, default "n2+1"
+        An n x n cell's levels: n² + 1 (0 to n² dots on) or n² (the shades printed).
+    dots : {"whole", "exact"}, default "whole"
+        The cell from dpi / lpi: whole dots (rounded down) or the ratio itself.
+
+    Returns
+    -------
+    Answer
+        The working; ``.data`` holds ``n``, ``levels``, ``dpi``, ``lpi`` and ``cell_inches``.
+
+    Examples
+    --------
+    >>> printer(300, 60).data["levels"]
+    26
+    >>> printer(lpi=150, cell=16).data["dpi"]
+    2400
+    """
+    return answers_halftone.printer_solution(
+        _optional(dpi, "dpi"),
+        _optional(lpi, "lpi"),
+        cell=None if cell is None else _whole(cell, "cell"),
+        levels=None if levels is None else _whole(levels, "levels"),
+        count=_choice(count, "count"),
+        dots=_choice(dots, "dots"),
     )

@@ -145,12 +145,16 @@ KERNEL_SOURCES: dict[str, str] = {
 """Where each kernel is published (its answer names it in a note)."""
 
 
-def choice(knob: str, value: str) -> str:
-    """``value`` if it is one of the knob's values, else :class:`InputError` naming them."""
-    values = DITHER_KNOBS[knob]
+def choice_of(values: Sequence[str], value: str, knob: str) -> str:
+    """``value`` if it is one of ``values``, else :class:`InputError` naming them."""
     if value not in values:
         raise InputError(f"unknown {knob} {value!r} (choose from {', '.join(values)})", knob)
     return value
+
+
+def choice(knob: str, value: str) -> str:
+    """``value`` if it is one of the knob's values, else :class:`InputError` naming them."""
+    return choice_of(DITHER_KNOBS[knob], value, knob)
 
 
 def bayer(n: int) -> tuple[tuple[int, ...], ...]:
@@ -348,16 +352,67 @@ def error_diffusion(
             k += 1
 
 
-def pattern(n: int, level: int) -> tuple[tuple[int, ...], ...]:
-    """The n x n halftone pattern of intensity ``level`` (0 .. n²): the cells whose Bayer entry
-    is below the level are on, so each pattern contains the one before (no contouring).
+CELL_ORDERS = ("bayer", "clustered")
+"""How an n x n halftone cell's dots turn on (:func:`cell_order`), the default first."""
+
+
+def cell_order(n: int, order: str = "bayer") -> tuple[tuple[int, ...], ...]:
+    """The rank 0 .. n² - 1 at which each dot of an n x n halftone cell turns on (1 <= n <=
+    :data:`MAX_ORDER`).
+
+    ``bayer`` (dispersed): the Bayer matrix when n is a power of 2; for any other n the
+    top-left n x n block of the Bayer matrix of the next power of 2, its entries ranked.
+    ``clustered``: a dot growing from the cell's centre, nearest dots first (ties: row by row,
+    top first, then left to right).
+
+    >>> cell_order(2), cell_order(3)
+    (((0, 2), (3, 1)), ((0, 5, 2), (7, 4, 8), (3, 6, 1)))
+    >>> cell_order(3, "clustered")
+    ((5, 1, 6), (2, 0, 3), (7, 4, 8))
+    """
+    if not 1 <= n <= MAX_ORDER:
+        raise InputError(f"a halftone cell is 1 .. {MAX_ORDER} dots wide, got {n}", "n")
+    if choice_of(CELL_ORDERS, order, "order") == "bayer":
+        side = 1 << (n - 1).bit_length()
+        block = [row[:n] for row in bayer(side)[:n]] if side > 1 else [[0]]
+        key: dict[tuple[int, int], tuple[Number, ...]] = {
+            (i, j): (block[i][j],) for i in range(n) for j in range(n)
+        }
+    else:
+        c = Fraction(n - 1, 2)
+        key = {(i, j): ((i - c) ** 2 + (j - c) ** 2, i, j) for i in range(n) for j in range(n)}
+    ranked = {cell: r for r, cell in enumerate(sorted(key, key=key.__getitem__))}
+    return tuple(tuple(ranked[i, j] for j in range(n)) for i in range(n))
+
+
+def check_cell(rows: Sequence[Sequence[Number]]) -> tuple[tuple[int, ...], ...]:
+    """A cell's order given: a square matrix holding 0 .. n² - 1 (or 1 .. n², shifted to 0)
+    once each."""
+    m = check_matrix(rows, "cell order", "matrix")
+    n = len(m)
+    if len(m[0]) != n or n > MAX_ORDER:
+        raise InputError(f"a cell's order is square, at most {MAX_ORDER} wide", "matrix")
+    flat = sorted(m[i][j] for i in range(n) for j in range(n))
+    shift = 1 if flat == list(range(1, n * n + 1)) else 0
+    if flat != list(range(shift, n * n + shift)):
+        raise InputError(f"a {n} x {n} cell's order holds 0 .. {n * n - 1} once each", "matrix")
+    return tuple(tuple(int(v) - shift for v in row) for row in m)
+
+
+def pattern(
+    n: int, level: int, order: Sequence[Sequence[int]] | None = None
+) -> tuple[tuple[int, ...], ...]:
+    """The n x n halftone pattern of intensity ``level`` (0 .. n²): the dots whose rank in the
+    cell's ``order`` (default :func:`cell_order`) is below the level are on, so each pattern
+    contains the one before (no contouring).
 
     >>> pattern(2, 1), pattern(2, 3)
     (((1, 0), (0, 0)), ((1, 1), (0, 1)))
     """
     if not 0 <= level <= n * n:
         raise InputError(f"a {n} x {n} pattern has levels 0 .. {n * n}, got {level}", "level")
-    return tuple(tuple(int(d < level) for d in row) for row in bayer(n))
+    ranks = cell_order(n) if order is None else order
+    return tuple(tuple(int(d < level) for d in row) for row in ranks)
 
 
 def pattern_levels(n: int, bits: int = 1) -> int:

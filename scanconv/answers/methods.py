@@ -385,6 +385,12 @@ _DITHER = (
            no_generator="one pattern per level, from the Bayer matrix", model="PlainRowsTable"),
 )  # fmt: skip
 
+_PRINTER = (
+    _plain("printer", "halftone", "halftone printing arithmetic (dpi, lpi, cell, levels)",
+           "scanconv.answers.image.halftone:printer_solution", None,
+           no_generator="arithmetic, worked in one pass", model="PlainRowsTable"),
+)  # fmt: skip
+
 _INSIDE = tuple(
     _plain("inside", rule_name, f"inside-outside test ({title})", "scanconv.answers.process.fill.inside:inside_solution",
            _G + "inside:edge_tests", model="InsideVerdictsTable")
@@ -450,7 +456,7 @@ def _with_costs(m: Method) -> Method:
 METHODS: dict[str, Method] = {
     m.key: _with_costs(m)
     for m in (
-        *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE,
+        *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_PRINTER, *_INSIDE,
         *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS,
     )
 }  # fmt: skip

@@ -33,7 +33,7 @@ PANELS = (
     ("Curves", ("bezier", "bspline", "continuity", "local-control")),
     (
         "Image representation",
-        ("image", "storage", "quantize", "sample", "dither", "halftone", "framebuffer"),
+        ("image", "storage", "quantize", "sample", "dither", "halftone", "printer", "framebuffer"),
     ),
     ("Comparisons", ("compare",)),
     ("Teaching", ("sheet", "practice", "check", "mcp")),
@@ -197,6 +197,7 @@ TOPIC_OF = {
     "antialias": "fill",
     "dither": "syllabus",
     "halftone": "syllabus",
+    "printer": "syllabus",
     "inside": "syllabus",
     "framebuffer": "syllabus",
     "linestyle": "syllabus",

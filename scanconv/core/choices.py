@@ -27,6 +27,7 @@ __all__ = [
     "BitOrderName",
     "BoundaryName",
     "CarryName",
+    "CellOrderName",
     "CircleMethodName",
     "ClipEndsName",
     "ColorDepthName",
@@ -43,6 +44,7 @@ __all__ = [
     "InsideRuleName",
     "KernelName",
     "LayoutName",
+    "LevelCountName",
     "LineAlgorithmName",
     "LineClipMethodName",
     "LineScaleName",
@@ -55,6 +57,7 @@ __all__ = [
     "P0Name",
     "PackingName",
     "PolygonClipMethodName",
+    "PrinterDotsName",
     "RasterLineName",
     "ReconName",
     "RoundingName",
@@ -175,6 +178,12 @@ ArithmeticName = Literal["exact", "integer"]
 """The error diffusion's arithmetic: exact fractions, or each share truncated toward 0."""
 CarryName = Literal["kept", "clamped"]
 """Negative errors ``kept``, or ``clamped`` at 0."""
+LevelCountName = Literal["n2+1", "n2"]
+"""An n x n halftone cell's levels: n² + 1 or n² (:data:`scanconv.answers.image.halftone.PRINTER_KNOBS`)."""
+PrinterDotsName = Literal["whole", "exact"]
+"""A printer's cell from dpi / lpi: whole dots, or the ratio itself."""
+CellOrderName = Literal["bayer", "clustered"]
+"""How a halftone cell fills (:data:`scanconv.algorithms.dither.CELL_ORDERS`)."""
 BitOrderName = Literal["msb", "lsb"]
 """A line style's mask read from its most or least significant bit."""
 PackingName = Literal["rows", "columns", "bits"]

@@ -69,6 +69,9 @@ _ROW_ALONE: dict[tuple[str, str], Callable[[], TableModel]] = {
     ("clip", "midpoint-subdivision"): MidpointClipTable,
     ("line", "style"): LineStyleTable,
     ("framebuffer", "arithmetic"): FrameBufferTable,
+    ("printer", "halftone"): lambda: PlainRowsTable(
+        "Printer and screen", ("value",), "Each quantity stands alone (dpi, lpi, cell, levels)."
+    ),
     ("dither", "lookup"): lambda: PlainRowsTable(
         None,
         ("i", "j", "row", "col", "threshold", "output"),

@@ -22,7 +22,7 @@ def _image(rng: random.Random, rows: int, cols: int) -> str:
 
 def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     if kind == "halftone":
-        n = 4 if difficulty == "hard" else 2
+        n = {"easy": 2, "exam": rng.choice((2, 3)), "hard": rng.choice((4, 5))}[difficulty]
         return PracticeQuestion(
             "dither",
             ("halftone", str(n)),
@@ -31,6 +31,8 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
             6 if n == 2 else 10,
             frozenset({kind}),
         )
+    if kind == "printer":
+        return _printer(rng)
     if kind == "lookup":
         return _lookup(rng, difficulty)
     rows, cols = {"easy": (2, 2), "exam": (2, 4), "hard": (4, 4)}[difficulty]
@@ -72,6 +74,32 @@ _KERNEL_NAMES = {
     "one-dimensional": "one-dimensional (all of the error to the next pixel)",
 }
 _KERNELS = tuple(_KERNEL_NAMES)
+
+
+def _printer(rng: random.Random) -> PracticeQuestion:
+    """A printer's halftone arithmetic, asked forward (dpi, lpi) or back (dpi, levels)."""
+    dpi = rng.choice((300, 600, 1200, 2400))
+    if rng.random() < 0.5:
+        lpi = rng.choice((50, 60, 75, 100, 150))
+        argv: tuple[str, ...] = ("printer", "--dpi", str(dpi), "--lpi", str(lpi))
+        ask = (
+            f"prints a halftone screen of {lpi} lines per inch: how many dots a side has a "
+            "halftone cell, and how many gray levels does it give?"
+        )
+    else:
+        levels = rng.choice((17, 26, 65, 101, 257))
+        argv = ("printer", "--dpi", str(dpi), "--levels", str(levels))
+        ask = (
+            f"must print at least {levels} gray levels: what is the smallest halftone cell, and "
+            "how many lines per inch does the screen have?"
+        )
+    return PracticeQuestion(
+        "dither",
+        argv,
+        f"A {dpi} dpi printer {ask} (an n x n cell gives n^2 + 1 levels)",
+        4,
+        frozenset({"printer"}),
+    )
 
 
 def _lookup(rng: random.Random, difficulty: str) -> PracticeQuestion:
@@ -319,7 +347,15 @@ def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQue
 
 
 KINDS: dict[str, list[Any]] = {
-    "dither": ["ordered", "floyd-steinberg", "threshold", "halftone", "kernel", "lookup"],
+    "dither": [
+        "ordered",
+        "floyd-steinberg",
+        "threshold",
+        "halftone",
+        "kernel",
+        "lookup",
+        "printer",
+    ],
     "inside": [0, 1, 2, 3],
     "clip": [
         "cohen-sutherland",

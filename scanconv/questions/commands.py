@@ -426,8 +426,25 @@ def dither_diffusion(
     )
 
 
-def halftone(n: Any, level: Any, bits: Any) -> Solution:
-    return api.halftone(n, level=level, bits=1 if bits is None else bits)
+def halftone(n: Any, level: Any, bits: Any, order: Any = None, matrix: Any = None) -> Solution:
+    return api.halftone(
+        n,
+        level=level,
+        bits=1 if bits is None else bits,
+        order=_text(order) or "bayer",
+        matrix=matrix,
+    )
+
+
+def printer(dpi: Any, lpi: Any, cell: Any, levels: Any, count: Any, dots: Any) -> Solution:
+    return api.printer(
+        dpi,
+        lpi,
+        cell=cell,
+        levels=levels,
+        count=_text(count) or "n2+1",
+        dots=_text(dots) or "whole",
+    )
 
 
 def inside(words: list[str], rule: Any, boundary: Any) -> Solution:
@@ -480,7 +497,7 @@ BODIES: dict[str, Body] = {
         viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon,
         fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color,
         theory, clip_convex, dither_threshold, dither_ordered, dither_lookup, dither_diffusion,
-        halftone, inside,
+        halftone, printer, inside,
         framebuffer, line_style, thick_line, char_bitmap, char_stroke, char_storage,
     )
 }  # fmt: skip

@@ -331,6 +331,7 @@ BOUNDED: dict[str, str] = {
     "dither_lookup": "a row per pixel, at most answers.image.dither.MAX_LOOKUPS = 64",
     "halftone": "n <= algorithms.dither.MAX_ORDER = 16: at most 257 patterns",
     "framebuffer": "closed-form arithmetic on exact integers",
+    "printer": "closed-form arithmetic on exact numbers",
     "char_stroke": "at most 4 strokes on a 5 x 7 grid, scaled at most 16 times",
     "char_storage": "closed-form arithmetic on exact integers",
     "clip_convex": "one line against at most algorithms.cyrus_beck.MAX_EDGES = 64 edges",

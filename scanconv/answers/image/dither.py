@@ -451,23 +451,58 @@ def diffusion_solution(
     )
 
 
-def pattern_solution(n: int, level: int | None = None, bits: int = 1) -> Solution:
-    """The n x n halftone patterns: how many levels they give and the pattern of each level
-    (or of one ``level``).
+_ORDER_NOTES = {
+    "bayer": "the cells turn on in the order of the Bayer matrix",
+    "clustered": "a dot grows from the cell's centre, nearest cells first, ties row by row",
+    "given": "the cells turn on in the order given",
+}
+
+
+def _cell(n: int, order: str, matrix: Sequence[Sequence[Number]] | None) -> tuple[Any, str]:
+    """The cell's order (ranks 0 .. n² - 1) and how it was made, in words."""
+    if matrix is not None:
+        ranks = d.check_cell(matrix)
+        if len(ranks) != n:
+            raise InputError(f"the cell's order is {len(ranks)} wide, not {n}", "matrix")
+        return ranks, _ORDER_NOTES["given"]
+    ranks = d.cell_order(n, order)
+    if order == "bayer" and n & (n - 1):
+        side = 1 << (n - 1).bit_length()
+        return ranks, (
+            f"the cells turn on in the order of the top-left {n} x {n} block of the "
+            f"{side} x {side} Bayer matrix, its entries ranked 0 .. {n * n - 1}"
+        )
+    return ranks, _ORDER_NOTES[order]
+
+
+def pattern_solution(
+    n: int,
+    level: int | None = None,
+    bits: int = 1,
+    *,
+    order: str = "bayer",
+    matrix: Sequence[Sequence[Number]] | None = None,
+) -> Solution:
+    """The n x n halftone patterns (any n from 1 to 16): how many levels they give and the
+    pattern of each level (or of one ``level``); ``order`` how the cell fills (``bayer`` or
+    ``clustered``), or the order given as a ``matrix``.
 
     >>> sol = pattern_solution(2)
     >>> [r[1] for r in sol.tables[0].rows()]
     ['0 0 / 0 0', '1 0 / 0 0', '1 0 / 0 1', '1 1 / 0 1', '1 1 / 1 1']
+    >>> pattern_solution(5).data["levels"]
+    26
     """
-    if not 2 <= n <= d.MAX_ORDER or n & (n - 1):
-        raise InputError(f"a halftone cell is 2, 4, 8 or 16 pixels wide, got {n}", "n")
+    if not 1 <= n <= d.MAX_ORDER:
+        raise InputError(f"a halftone cell is 1 .. {d.MAX_ORDER} pixels wide, got {n}", "n")
     if not 1 <= bits <= 8:
         raise InputError(f"bits per pixel must be 1..8, got {bits}", "bits")
+    ranks, how = _cell(n, order, matrix)
     count = d.pattern_levels(n, bits)
     levels = range(n * n + 1) if level is None else (level,)
-    patterns = [(lv, d.pattern(n, lv)) for lv in levels]
+    patterns = [(lv, d.pattern(n, lv, ranks)) for lv in levels]
     derived = [
-        _matrix("D", "D", d.bayer(n)),
+        _matrix("D", "D", ranks),
         worked(
             "levels",
             count,
@@ -496,10 +531,16 @@ def pattern_solution(n: int, level: int | None = None, bits: int = 1) -> Solutio
         ),
         derived=tuple(derived),
         notes=(
-            "Each pattern contains the one before it (the cells turn on in the order of the "
-            "Bayer matrix), so a region of slowly changing intensity shows no contour.",
+            f"Each pattern contains the one before it ({how}), so a region of slowly changing "
+            "intensity shows no contour.",
+            f"An n x n cell of bilevel dots gives n^2 + 1 = {n * n + 1} nested levels: level l has "
+            "l dots on.",
         ),
         tables=(table,),
         figures=figures,
-        data={"levels": count, "patterns": {lv: [list(r) for r in p] for lv, p in patterns}},
+        data={
+            "levels": count,
+            "order": [list(r) for r in ranks],
+            "patterns": {lv: [list(r) for r in p] for lv, p in patterns},
+        },
     )

@@ -69,6 +69,9 @@ def dithering() -> Solution:
             "Halftone patterns: an $n \\times n$ cell of bilevel pixels gives $n^2 + 1$ levels "
             "(with $b$ bits a pixel, $n^2(2^b - 1) + 1$); each pattern contains the one before "
             "it, so a slow change of intensity shows no contour.",
+            "On a printer of $d$ dots per inch a halftone screen of $l$ lines (cells) per inch "
+            "has cells of $n = d / l$ dots a side and so $(d / l)^2 + 1$ levels: 300 dpi at 60 "
+            "lpi gives $5 \\times 5$ cells and 26 levels; a finer screen has fewer levels.",
             "Ordered dither: pixel $(i, j)$ is on when $I(i, j) > T[i \\bmod n][j \\bmod n]$, "
             "with the thresholds from the Bayer matrix $D_2 = [[0, 2], [3, 1]]$ scaled to the "
             "intensity range (or a matrix given already in the image's units); the image keeps "
