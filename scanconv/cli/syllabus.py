@@ -73,6 +73,20 @@ class Carry(str, Enum):
     clamped = "clamped"
 
 
+class Major(str, Enum):
+    """A frame buffer stores rows or columns one after another."""
+
+    row = "row"
+    column = "column"
+
+
+class RowZero(str, Enum):
+    """A frame buffer's y = 0: the top scan line or the bottom one."""
+
+    top = "top"
+    bottom = "bottom"
+
+
 class CellOrder(str, Enum):
     """How a halftone cell fills."""
 
@@ -391,12 +405,66 @@ def framebuffer(
     interlaced: Annotated[
         bool, typer.Option("--interlaced", help="Interlaced: --refresh counts fields.")
     ] = False,
+    dpi: Annotated[
+        Fraction | None,
+        num_option("--dpi", help="Dots per inch: W and H are the screen's size in inches."),
+    ] = None,
+    pixel: Annotated[
+        tuple[Fraction, Fraction] | None,
+        num_option(
+            "--pixel", metavar="X Y", help="The pixel whose frame-buffer address is wanted."
+        ),
+    ] = None,
+    address: Annotated[
+        Fraction | None,
+        num_option("--address", help="A byte address: the pixel stored there."),
+    ] = None,
+    base: Annotated[
+        Fraction | None, num_option("--base", help="The frame buffer's first byte (default 0).")
+    ] = None,
+    major: Annotated[
+        Major, choice("--major", help="The buffer holds rows (row-major) or columns.")
+    ] = Major.row,
+    row0: Annotated[
+        RowZero, choice("--row0", help="y = 0 is the top scan line or the bottom one.")
+    ] = RowZero.top,
+    count: Annotated[Base, choice("--count", help="x and y counted from 0 or from 1.")] = Base.zero,
+    hretrace: Annotated[
+        Fraction | None,
+        num_option("--hretrace", help="Horizontal retrace time, seconds (with --refresh)."),
+    ] = None,
+    vretrace: Annotated[
+        Fraction | None, num_option("--vretrace", help="Vertical retrace time, seconds.")
+    ] = None,
+    pixel_time: Annotated[
+        Fraction | None,
+        num_option("--pixel-time", help="Seconds a pixel gets: the frame rate follows."),
+    ] = None,
 ) -> Solution:
-    """Frame-buffer arithmetic: its size, bit planes and colours, a look-up table, load time.
+    """Frame-buffer arithmetic: pixels, size, bit planes, a look-up table, load and refresh
+    times, retrace, and a pixel's address.
 
-    Example: scanconv framebuffer 1280 1024 8 --lut 24 --rate 1e6 --refresh 60
+    Example: scanconv framebuffer 640 480 8 --pixel 340 150
     """
-    return commands.framebuffer(width, height, bits, lut, rate, refresh, interlaced)
+    return commands.framebuffer(
+        width,
+        height,
+        bits,
+        lut,
+        rate,
+        refresh,
+        interlaced,
+        dpi=dpi,
+        pixel=pixel,
+        address=address,
+        base=base,
+        major=major,
+        row0=row0,
+        count=count,
+        hretrace=hretrace,
+        vretrace=vretrace,
+        pixel_time=pixel_time,
+    )
 
 
 _X1 = num_arg("x of the first end point P1.", "X1")

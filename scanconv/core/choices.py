@@ -49,6 +49,7 @@ __all__ = [
     "LineClipMethodName",
     "LineScaleName",
     "LoopName",
+    "MajorName",
     "MidpointName",
     "MidpointStopName",
     "NormalsName",
@@ -61,6 +62,7 @@ __all__ = [
     "RasterLineName",
     "ReconName",
     "RoundingName",
+    "RowZeroName",
     "ScanOrderName",
     "StartName",
     "StrokeAlgorithmName",
@@ -182,6 +184,10 @@ LevelCountName = Literal["n2+1", "n2"]
 """An n x n halftone cell's levels: n² + 1 or n² (:data:`scanconv.answers.image.halftone.PRINTER_KNOBS`)."""
 PrinterDotsName = Literal["whole", "exact"]
 """A printer's cell from dpi / lpi: whole dots, or the ratio itself."""
+MajorName = Literal["row", "column"]
+"""A frame buffer stores rows or columns one after another (:data:`scanconv.algorithms.framebuffer.ADDRESS_KNOBS`)."""
+RowZeroName = Literal["top", "bottom"]
+"""A frame buffer's y = 0: the top scan line or the bottom one."""
 CellOrderName = Literal["bayer", "clustered"]
 """How a halftone cell fills (:data:`scanconv.algorithms.dither.CELL_ORDERS`)."""
 BitOrderName = Literal["msb", "lsb"]

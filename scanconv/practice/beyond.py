@@ -209,6 +209,20 @@ def framebuffer(rng: random.Random, difficulty: str, kind: str) -> PracticeQuest
     elif kind == "lut":
         argv += ("--lut", "24")
         ask = "with a 24-bit colour look-up table, how large is the table and how many colours?"
+    elif kind == "address":
+        x, y = rng.randrange(w), rng.randrange(h)
+        argv += ("--pixel", str(x), str(y))
+        ask = (
+            f"stored row by row from the top-left (from 0, at address 0), at which byte is pixel "
+            f"({x}, {y})?"
+        )
+    elif kind == "retrace":
+        argv += ("--refresh", "60", "--hretrace", "5e-6", "--vretrace", "5e-4")
+        ask = (
+            "at 60 Hz non-interlaced, with a horizontal retrace of 5 us and a vertical retrace of "
+            "500 us, what share of the refresh time is spent in retrace, and how long does a scan "
+            "line get?"
+        )
     else:
         interlaced = kind == "interlaced"
         argv += ("--refresh", "60", *(("--interlaced",) if interlaced else ()))
@@ -365,7 +379,7 @@ KINDS: dict[str, list[Any]] = {
         "weiler-atherton",
         "nicholl-lee-nicholl",
     ],
-    "framebuffer": ["load", "lut", "refresh", "interlaced"],
+    "framebuffer": ["load", "lut", "refresh", "interlaced", "address", "retrace"],
     "attributes": ["dashed", "replication", "dotted", "brush"],
     "characters": ["bitmap", "stroke", "storage"],
     "antialias": ["wu", "area", "subpixel", "wu-coverage"],

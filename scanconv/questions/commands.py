@@ -453,10 +453,21 @@ def inside(words: list[str], rule: Any, boundary: Any) -> Solution:
 
 
 def framebuffer(
-    width: Any, height: Any, bits: Any, lut: Any, rate: Any, refresh: Any, interlaced: bool
+    width: Any,
+    height: Any,
+    bits: Any,
+    lut: Any,
+    rate: Any,
+    refresh: Any,
+    interlaced: bool,
+    **more: Any,
 ) -> Solution:
+    """``framebuffer``'s answer; ``more``: the address, retrace and dpi options, as given."""
+    given = {k: _text(v) for k, v in more.items() if v is not None}
+    if "pixel" in given:
+        given["pixel"] = tuple(given["pixel"])
     return api.framebuffer(
-        width, height, bits, lut=lut, rate=rate, refresh=refresh, interlaced=interlaced
+        width, height, bits, lut=lut, rate=rate, refresh=refresh, interlaced=interlaced, **given
     )
 
 

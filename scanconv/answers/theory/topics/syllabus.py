@@ -386,12 +386,23 @@ def frame_buffer() -> Solution:
             "Size $= W \\times H \\times b$ bits for $b$ bits a pixel ($b$ bit planes, $2^b$ "
             "colours); a colour look-up table of $2^b$ entries of $w$ bits gives $2^b$ of "
             "$2^w$ colours at a time.",
+            "Pixel $(x, y)$ is stored at byte $\\text{base} + (y W + x) \\cdot b / 8$ when the "
+            "buffer holds the rows one after another from the top-left, counted from 0 "
+            "(column-major: $x H + y$; from the bottom row: $H - 1 - y$ for $y$).",
+            "At $f$ frames a second a scan line gets $1 / (H f)$ and a pixel $1 / (W H f)$; with "
+            "retraces $t_h$ a line and $t_v$ a frame the share of the time in retrace is "
+            "$(H t_h + t_v) f$, and a pixel time $t_p$ gives $f = 1 / (H (W t_p + t_h) + t_v)$.",
         ),
         examples=(
             embed(
                 "1280 x 1024 at 8 bits, a 24-bit LUT, 60 Hz (scanconv framebuffer 1280 1024 8 "
                 "--lut 24 --refresh 60)",
                 framebuffer.framebuffer_solution(1280, 1024, 8, lut=24, refresh=60),
+            ),
+            embed(
+                "the address of pixel (340, 150) of a 640 x 480 buffer at 8 bits (scanconv "
+                "framebuffer 640 480 8 --pixel 340 150)",
+                framebuffer.framebuffer_solution(640, 480, 8, pixel=(340, 150)),
             ),
         ),
     )
