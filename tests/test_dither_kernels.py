@@ -134,6 +134,7 @@ def test_every_kernel_preserves_the_mean_within_its_bound(
     assert sum(map(sum, image)) == out_total + lost
     bound = Fraction(255, 2) * _lost_weight(name, rows, cols, serpentine)
     assert abs(sum(map(sum, image)) - out_total) <= bound
+    assert d.lost_weight(name, rows, cols, order) == _lost_weight(name, rows, cols, serpentine)
 
 
 def test_one_dimensional_diffusion_of_half_grey_alternates() -> None:

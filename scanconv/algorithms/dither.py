@@ -415,6 +415,26 @@ def pattern(
     return tuple(tuple(int(d < level) for d in row) for row in ranks)
 
 
+def lost_weight(kernel: str, rows: int, cols: int, order: str = "raster") -> Fraction:
+    """The kernel weight of every pixel's shares that fall outside a ``rows`` x ``cols`` image,
+    summed: with exact shares and negative errors kept, the input's total less the output's is
+    at most ``top / 2`` times this (each error is at most ``top / 2``).
+
+    >>> lost_weight("floyd-steinberg", 2, 2)  # 3/16 + (7 + 1)/16 + (3 + 5 + 1)/16 + 1
+    Fraction(9, 4)
+    >>> lost_weight("one-dimensional", 3, 4)
+    Fraction(3, 1)
+    """
+    total = Fraction(0)
+    for i in range(rows):
+        sign = -1 if order == "serpentine" and i % 2 else 1
+        for j in range(cols):
+            for s in KERNELS[kernel]:
+                if not (0 <= i + s.di < rows and 0 <= j + sign * s.dj < cols):
+                    total += s.weight
+    return total
+
+
 def pattern_levels(n: int, bits: int = 1) -> int:
     """The intensity levels n x n cells of ``bits``-bit pixels give: ``n²(2^b - 1) + 1``.
 

@@ -409,6 +409,14 @@ def diffusion_solution(
     ]
     if order == "serpentine":
         notes.append("Odd rows are scanned right to left, the kernel mirrored (j - 1 is ahead).")
+    if arithmetic == "exact" and carry == "kept":
+        lost = d.lost_weight(kernel, len(img), len(img[0]), order)
+        notes.append(
+            "The mean is kept within its bound: each error is at most top/2, so the input's "
+            "total less the output's (the shares lost off the edges) is at most top/2 x "
+            f"{fmt_short(lost)} (the kernel weight falling outside) = "
+            f"{fmt_short(normalize(Fraction(top) / 2 * lost))}."
+        )
 
     def steps() -> Iterator[Step]:
         for s in d.error_diffusion(
