@@ -273,6 +273,12 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "marking.limits.MAX_QUESTION_ROWS": [
         (["check", str(CHECK / "slip.csv"), "--", "line", "0", "0", "10001", "0"], "10000")
     ],
+    "algorithms.window_clip.MAX_WINDOW_VERTICES": [
+        (
+            ["clip", "polygon", "0", "0", "1", "0", "0", "1", "--window-vertices", *_ring(65)],
+            "at most 64 window vertices",
+        )
+    ],
     "answers.process.clip.sutherland_hodgman.MAX_VERTICES": [
         (
             ["clip", "polygon", *POINTS_101, "--window", "0", "0", "5", "5"],
