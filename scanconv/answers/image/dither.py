@@ -260,6 +260,22 @@ MAX_LOOKUPS = 64
 """The most pixels looked up in one answer."""
 
 
+def _lookup_columns(n: int, m: int) -> tuple[Column, ...]:
+    """The columns of a lookup table (``value`` and ``output`` last: left out with no value)."""
+    return (
+        heading("k", "k"),
+        heading("x", "x"),
+        heading("y", "y"),
+        heading("i", "i"),
+        heading("j", "j"),
+        heading("row", rf"i \bmod {n}"),
+        heading("col", rf"j \bmod {m}"),
+        heading("threshold", "T"),
+        heading("value", "I"),
+        heading("output", r"\text{output}"),
+    )
+
+
 def lookup_solution(
     pixels: Sequence[tuple[int, int]],
     matrix: int | Sequence[Sequence[Number]] = 4,
@@ -314,18 +330,7 @@ def lookup_solution(
             decided = () if outputs is None else (value, outputs[k])
             yield Step(k, None, None, (x, y), extra + decided)
 
-    columns = (
-        heading("k", "k"),
-        heading("x", "x"),
-        heading("y", "y"),
-        heading("i", "i"),
-        heading("j", "j"),
-        heading("row", rf"i \bmod {n}"),
-        heading("col", rf"j \bmod {m}"),
-        heading("threshold", "T"),
-        heading("value", "I"),
-        heading("output", r"\text{output}"),
-    )
+    columns = _lookup_columns(n, m)
     keys = ("x", "y", "i", "j", "row", "col", "threshold", "value", "output")
     return Solution(
         primitive="dither",
@@ -361,6 +366,32 @@ def _over(weight: Fraction, divisor: int) -> str:
 
 def _carries_text(carries: Sequence[d.Carry]) -> str:
     return ", ".join(f"({c.pixel[1]}, {c.pixel[0]}) += {fmt_short(c.amount)}" for c in carries)
+
+
+def _diffusion_notes(
+    img: d.Matrix, top: Number, kernel: str, order: str, arithmetic: str, carry: str, compare: str
+) -> list[str]:
+    """The conventions of an error diffusion, its kernel's source and its mean bound."""
+    half = normalize(Fraction(top) / 2)
+    notes = [
+        f"Conventions: kernel {kernel}, {order} order, {arithmetic} arithmetic, negative "
+        f"carries {carry}, on when I' {compare} {fmt_short(half)}; outputs 0 and {fmt_short(top)}.",
+        "I' is the pixel's value plus the error it received; shares that fall outside the "
+        "image are lost.",
+        f"Kernel {kernel}: weights over {d.KERNEL_DIVISORS[kernel]}, summing to 1; "
+        f"{d.KERNEL_SOURCES[kernel]}.",
+    ]
+    if order == "serpentine":
+        notes.append("Odd rows are scanned right to left, the kernel mirrored (j - 1 is ahead).")
+    if arithmetic == "exact" and carry == "kept":
+        lost = d.lost_weight(kernel, len(img), len(img[0]), order)
+        notes.append(
+            "The mean is kept within its bound: each error is at most top/2, so the input's "
+            "total less the output's (the shares lost off the edges) is at most top/2 x "
+            f"{fmt_short(lost)} (the kernel weight falling outside) = "
+            f"{fmt_short(normalize(Fraction(top) / 2 * lost))}."
+        )
+    return notes
 
 
 def diffusion_solution(
@@ -399,24 +430,7 @@ def diffusion_solution(
             ),
         ),
     ]
-    notes = [
-        f"Conventions: kernel {kernel}, {order} order, {arithmetic} arithmetic, negative "
-        f"carries {carry}, on when I' {compare} {fmt_short(half)}; outputs 0 and {fmt_short(top)}.",
-        "I' is the pixel's value plus the error it received; shares that fall outside the "
-        "image are lost.",
-        f"Kernel {kernel}: weights over {d.KERNEL_DIVISORS[kernel]}, summing to 1; "
-        f"{d.KERNEL_SOURCES[kernel]}.",
-    ]
-    if order == "serpentine":
-        notes.append("Odd rows are scanned right to left, the kernel mirrored (j - 1 is ahead).")
-    if arithmetic == "exact" and carry == "kept":
-        lost = d.lost_weight(kernel, len(img), len(img[0]), order)
-        notes.append(
-            "The mean is kept within its bound: each error is at most top/2, so the input's "
-            "total less the output's (the shares lost off the edges) is at most top/2 x "
-            f"{fmt_short(lost)} (the kernel weight falling outside) = "
-            f"{fmt_short(normalize(Fraction(top) / 2 * lost))}."
-        )
+    notes = _diffusion_notes(img, top, kernel, order, arithmetic, carry, compare)
 
     def steps() -> Iterator[Step]:
         for s in d.error_diffusion(

@@ -290,6 +290,78 @@ def _frame_rate(w: int, h: int, tp: Number, hr: Number | None, vr: Number | None
     )
 
 
+def _size_lines(w: int, h: int, b: int) -> list[Quantity]:
+    """The pixel count, the size and the bit planes, with the numbers substituted."""
+    total = w * h * b
+    return [
+        worked(
+            "pixel_count",
+            w * h,
+            f"\\text{{pixels}} = W \\times H = {w} \\times {h} = {int_tex(w * h)}",
+        ),
+        worked(
+            "size_bits",
+            total,
+            f"\\text{{size}} = W \\times H \\times b = {w} \\times {h} \\times {b} = "
+            f"{int_tex(total)} \\text{{ bits}} = {_tex(size_text(Fraction(total, 8)))} "
+            "\\text{ bytes}",
+        ),
+        worked(
+            "colours",
+            1 << b,
+            f"\\text{{bit planes}} = b = {b}, \\text{{ colours}} = 2^b = {int_tex(1 << b)}",
+        ),
+    ]
+
+
+def _timing(
+    w: int,
+    h: int,
+    refresh: Number | None,
+    interlaced: bool,
+    hretrace: Number | None,
+    vretrace: Number | None,
+    pixel_time: Number | None,
+) -> tuple[list[Quantity], Number | None, Number | None]:
+    """The refresh times, the retrace share and the frame rate a pixel time gives, as asked;
+    and the retrace times checked."""
+    out: list[Quantity] = []
+    hr = (
+        None if hretrace is None else _positive(hretrace, "the horizontal retrace time", "hretrace")
+    )
+    vr = None if vretrace is None else _positive(vretrace, "the vertical retrace time", "vretrace")
+    if refresh is not None:
+        hz = _positive(refresh, "the refresh rate", "refresh")
+        out += _refresh(w, h, hz, interlaced)
+        if hr is not None or vr is not None:
+            if interlaced:
+                raise InputError(
+                    "retrace times are worked for a non-interlaced display", "interlaced"
+                )
+            out += _retrace(w, h, hz, hr, vr)
+    if pixel_time is not None:
+        out.append(_frame_rate(w, h, _positive(pixel_time, "the pixel time", "pixel_time"), hr, vr))
+    return out, hr, vr
+
+
+def _notes(named: dict[str, str] | None) -> tuple[str, ...]:
+    """The notes: the units, the bit planes and (``named``: an address asked) its conventions."""
+    return (
+        "KB and MB are 1000 and 1000^2 bytes, KiB and MiB 1024 and 1024^2 bytes: published "
+        "answers use either, so both are given.",
+        "A bit plane holds one bit of every pixel: b bits per pixel take b planes.",
+        *(
+            ()
+            if named is None
+            else (
+                f"Address conventions: {named['major']}-major, y = 0 the "
+                f"{named['row0']} scan line, x and y counted from {named['count']}; "
+                "byte address = base + k * b / 8.",
+            )
+        ),
+    )
+
+
 def framebuffer_solution(
     width: Number,
     height: Number,
@@ -334,25 +406,7 @@ def framebuffer_solution(
     w, h, derived = _resolution(width, height, dpi)
     b = _whole(bits, "bits per pixel", "bits", MAX_BITS)
     total = w * h * b
-    derived += [
-        worked(
-            "pixel_count",
-            w * h,
-            f"\\text{{pixels}} = W \\times H = {w} \\times {h} = {int_tex(w * h)}",
-        ),
-        worked(
-            "size_bits",
-            total,
-            f"\\text{{size}} = W \\times H \\times b = {w} \\times {h} \\times {b} = "
-            f"{int_tex(total)} \\text{{ bits}} = {_tex(size_text(Fraction(total, 8)))} "
-            "\\text{ bytes}",
-        ),
-        worked(
-            "colours",
-            1 << b,
-            f"\\text{{bit planes}} = b = {b}, \\text{{ colours}} = 2^b = {int_tex(1 << b)}",
-        ),
-    ]
+    derived += _size_lines(w, h, b)
     if lut is not None:
         derived += _lut(b, _whole(lut, "bits per LUT entry", "lut", MAX_BITS))
     if rate is not None:
@@ -360,23 +414,8 @@ def framebuffer_solution(
     named = {**dict.fromkeys(fb.ADDRESS_KNOBS, ""), **(conventions or {})}
     named = {k: v or fb.ADDRESS_KNOBS[k][0] for k, v in named.items()}
     derived += _address(w, h, b, pixel, address, base, named)
-    hr = (
-        None if hretrace is None else _positive(hretrace, "the horizontal retrace time", "hretrace")
-    )
-    vr = None if vretrace is None else _positive(vretrace, "the vertical retrace time", "vretrace")
-    if refresh is not None:
-        hz = _positive(refresh, "the refresh rate", "refresh")
-        derived += _refresh(w, h, hz, interlaced)
-        if hr is not None or vr is not None:
-            if interlaced:
-                raise InputError(
-                    "retrace times are worked for a non-interlaced display", "interlaced"
-                )
-            derived += _retrace(w, h, hz, hr, vr)
-    if pixel_time is not None:
-        derived.append(
-            _frame_rate(w, h, _positive(pixel_time, "the pixel time", "pixel_time"), hr, vr)
-        )
+    timing, hr, vr = _timing(w, h, refresh, interlaced, hretrace, vretrace, pixel_time)
+    derived += timing
     data: dict[str, Any] = {q.key: q.value for q in derived}
 
     def given() -> Iterator[Quantity]:
@@ -411,20 +450,7 @@ def framebuffer_solution(
         title=f"Frame buffer: {w} x {h}, {b} bits per pixel",
         given=tuple(given()),
         derived=tuple(derived),
-        notes=(
-            "KB and MB are 1000 and 1000^2 bytes, KiB and MiB 1024 and 1024^2 bytes: published "
-            "answers use either, so both are given.",
-            "A bit plane holds one bit of every pixel: b bits per pixel take b planes.",
-            *(
-                ()
-                if pixel is None and address is None
-                else (
-                    f"Address conventions: {named['major']}-major, y = 0 the "
-                    f"{named['row0']} scan line, x and y counted from {named['count']}; "
-                    "byte address = base + k * b / 8.",
-                )
-            ),
-        ),
+        notes=_notes(named if pixel is not None or address is not None else None),
         tables=(_size_table(total),),
         data=data,
     )

@@ -105,31 +105,15 @@ def _check_given(
         )
 
 
-def printer_solution(
-    dpi: Number | None = None,
-    lpi: Number | None = None,
-    *,
-    cell: int | None = None,
-    levels: int | None = None,
-    count: str = "n2+1",
-    dots: str = "whole",
-) -> Solution:
-    """A printer's halftone arithmetic from any two of the printer's ``dpi``, the screen's
-    ``lpi`` and the cell's side ``cell`` (or the ``levels`` wanted).
-
-    >>> sol = printer_solution(300, 60)
-    >>> for q in sol.derived:
-    ...     print(q.text)
-    n = dpi / lpi = 300 / 60 = 5 dots
-    levels = n² + 1 = 5² + 1 = 26
-    cell size = 1 / lpi = 1/60 inch
-    >>> printer_solution(300, levels=64, count="n2").data["lpi"]
-    Fraction(75, 2)
-    """
-    _knob("count", count)
-    _knob("dots", dots)
-    d, ll = _per_inch(dpi, "the printer's dpi", "dpi"), _per_inch(lpi, "the screen's lpi", "lpi")
-    _check_given(d, ll, cell, levels)
+def _side(
+    d: Fraction | None,
+    ll: Fraction | None,
+    cell: int | None,
+    levels: int | None,
+    count: str,
+    dots: str,
+) -> tuple[Number, list[Quantity]]:
+    """The cell's side n (given, the smallest for the levels, or dpi / lpi) and its working."""
     derived: list[Quantity] = []
     n: Number
     if levels is not None:
@@ -166,6 +150,35 @@ def printer_solution(
             raise InputError(
                 f"the screen ({fmt_short(ll)} lpi) is finer than the printer's dots", "lpi"
             )
+    return n, derived
+
+
+def printer_solution(
+    dpi: Number | None = None,
+    lpi: Number | None = None,
+    *,
+    cell: int | None = None,
+    levels: int | None = None,
+    count: str = "n2+1",
+    dots: str = "whole",
+) -> Solution:
+    """A printer's halftone arithmetic from any two of the printer's ``dpi``, the screen's
+    ``lpi`` and the cell's side ``cell`` (or the ``levels`` wanted).
+
+    >>> sol = printer_solution(300, 60)
+    >>> for q in sol.derived:
+    ...     print(q.text)
+    n = dpi / lpi = 300 / 60 = 5 dots
+    levels = n² + 1 = 5² + 1 = 26
+    cell size = 1 / lpi = 1/60 inch
+    >>> printer_solution(300, levels=64, count="n2").data["lpi"]
+    Fraction(75, 2)
+    """
+    _knob("count", count)
+    _knob("dots", dots)
+    d, ll = _per_inch(dpi, "the printer's dpi", "dpi"), _per_inch(lpi, "the screen's lpi", "lpi")
+    _check_given(d, ll, cell, levels)
+    n, derived = _side(d, ll, cell, levels, count, dots)
     derived.append(worked("levels", _levels_of(n, count), _levels_text(n, count)))
     if d is None:
         assert ll is not None
