@@ -221,8 +221,8 @@ def test_pattern_answer_lists_every_level() -> None:
     sol = pattern_solution(2, bits=2)
     assert sol.data["levels"] == 4 * 3 + 1
     assert [r[0] for r in sol.tables[0].rows()] == [0, 1, 2, 3, 4]
-    with pytest.raises(InputError):
-        pattern_solution(3)
+    with pytest.raises(InputError):  # any n from 1 to 16 is a cell now; 17 is not
+        pattern_solution(17)
 
 
 @pytest.mark.parametrize(

@@ -18,8 +18,13 @@ def test_every_question_of_the_bank_answers(tmp_path: Path) -> None:
     r = run("sheet", str(BANK), "-f", "json", "-o", str(out))
     assert r.code == 0, r.err
     doc = json.loads(out.read_text())
-    assert len(doc["questions"]) == 7 + 3
-    assert doc["total_marks"] == 10 + 10 + 10 + 8 + 8 + 4 + 4 + 8 + 4 + 4
+    assert len(doc["questions"]) == 7 + 3 + 5
+    assert doc["total_marks"] == 10 + 10 + 10 + 8 + 8 + 4 + 4 + 8 + 4 + 4 + 4 + 2 + 2 + 2 + 2
+    lookup = doc["questions"][10]["answer"]
+    assert lookup["lookups"] == [1] and lookup["output"] == [1]
+    # Stanford CS248 1996: 300 dpi at 10, 60, 150 cells per inch -> 901, 26, 5 levels
+    assert [q["answer"]["levels"] for q in doc["questions"][11:14]] == [901, 26, 5]
+    assert doc["questions"][14]["answer"]["index"] == 1016  # ISRO CS 2014
 
 
 def test_every_question_names_its_source() -> None:

@@ -376,11 +376,20 @@ _DITHER = (
            _G + "dither:threshold", model="DitherTable"),
     _plain("dither", "ordered", "ordered dither (Bayer matrix)", "scanconv.answers.image.dither:ordered_solution",
            _G + "dither:ordered", model="DitherTable"),
+    _plain("dither", "lookup", "dither threshold looked up by screen position",
+           "scanconv.answers.image.dither:lookup_solution", None,
+           no_generator="one closed-form lookup per pixel (algorithms.dither.lookup)", model="PlainRowsTable"),
     _plain("dither", "floyd-steinberg", "Floyd-Steinberg error diffusion",
            "scanconv.answers.image.dither:diffusion_solution", _G + "dither:error_diffusion",
            model="DiffusionTable"),
     _plain("halftone", "pattern", "halftone patterns", "scanconv.answers.image.dither:pattern_solution", None,
            no_generator="one pattern per level, from the Bayer matrix", model="PlainRowsTable"),
+)  # fmt: skip
+
+_PRINTER = (
+    _plain("printer", "halftone", "halftone printing arithmetic (dpi, lpi, cell, levels)",
+           "scanconv.answers.image.halftone:printer_solution", None,
+           no_generator="arithmetic, worked in one pass", model="PlainRowsTable"),
 )  # fmt: skip
 
 _INSIDE = tuple(
@@ -448,7 +457,7 @@ def _with_costs(m: Method) -> Method:
 METHODS: dict[str, Method] = {
     m.key: _with_costs(m)
     for m in (
-        *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE,
+        *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_PRINTER, *_INSIDE,
         *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS,
     )
 }  # fmt: skip

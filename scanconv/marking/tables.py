@@ -84,6 +84,14 @@ _ROW_ALONE: dict[tuple[str, str], Callable[[], TableModel]] = {
     ("clip", "midpoint-subdivision"): MidpointClipTable,
     ("line", "style"): LineStyleTable,
     ("framebuffer", "arithmetic"): FrameBufferTable,
+    ("printer", "halftone"): lambda: PlainRowsTable(
+        "Printer and screen", ("value",), "Each quantity stands alone (dpi, lpi, cell, levels)."
+    ),
+    ("dither", "lookup"): lambda: PlainRowsTable(
+        None,
+        ("i", "j", "row", "col", "threshold", "output"),
+        "Each pixel's lookup stands alone (its position, its matrix cell, its threshold).",
+    ),
     **dict.fromkeys(
         [("line", "replication"), ("line", "brush")],  # a thick line, either way
         lambda: PlainRowsTable(None, ("added",), "Each step's added pixels stand alone."),

@@ -23,7 +23,7 @@ def _image(rng: random.Random, rows: int, cols: int) -> str:
 
 def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     if kind == "halftone":
-        n = 4 if difficulty == "hard" else 2
+        n = {"easy": 2, "exam": rng.choice((2, 3)), "hard": rng.choice((4, 5))}[difficulty]
         return PracticeQuestion(
             "dither",
             ("halftone", str(n)),
@@ -32,9 +32,16 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
             6 if n == 2 else 10,
             frozenset({kind}),
         )
+    if kind == "printer":
+        return _printer(rng)
+    if kind == "lookup":
+        return _lookup(rng, difficulty)
     rows, cols = {"easy": (2, 2), "exam": (2, 4), "hard": (4, 4)}[difficulty]
+    if kind == "kernel":
+        rows += 1  # the kernels reaching two rows down show their third row
     image = _image(rng, rows, cols)
-    argv: tuple[str, ...] = ("dither", kind, "--image", image, "--top", "255")
+    command = "floyd-steinberg" if kind == "kernel" else kind
+    argv: tuple[str, ...] = ("dither", command, "--image", image, "--top", "255")
     if kind == "ordered":
         n = 4 if difficulty == "hard" else 2
         argv += ("--matrix", str(n))
@@ -42,6 +49,10 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     elif kind == "threshold":
         how = "a threshold of 128"
         argv += ("--at", "128")
+    elif kind == "kernel":
+        kernel = rng.choice(_KERNELS)
+        argv += ("--kernel", kernel)
+        how = f"error diffusion with the {_KERNEL_NAMES[kernel]} kernel"
     else:
         how = "Floyd-Steinberg error diffusion (7/16, 3/16, 5/16, 1/16)"
     return PracticeQuestion(
@@ -51,6 +62,66 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
         f"with {how}: give the table and the output.",
         6 if difficulty == "easy" else 8,
         frozenset({kind}),
+    )
+
+
+_KERNEL_NAMES = {
+    "jarvis-judice-ninke": "Jarvis-Judice-Ninke (weights over 48)",
+    "stucki": "Stucki (over 42)",
+    "burkes": "Burkes (over 32)",
+    "sierra": "Sierra (three rows, over 32)",
+    "two-row-sierra": "two-row Sierra (over 16)",
+    "sierra-lite": "Sierra Lite (2/4 right, 1/4 below left, 1/4 below)",
+    "one-dimensional": "one-dimensional (all of the error to the next pixel)",
+}
+_KERNELS = tuple(_KERNEL_NAMES)
+
+
+def _printer(rng: random.Random) -> PracticeQuestion:
+    """A printer's halftone arithmetic, asked forward (dpi, lpi) or back (dpi, levels)."""
+    dpi = rng.choice((300, 600, 1200, 2400))
+    if rng.random() < 0.5:
+        lpi = rng.choice((50, 60, 75, 100, 150))
+        argv: tuple[str, ...] = ("printer", "--dpi", str(dpi), "--lpi", str(lpi))
+        ask = (
+            f"prints a halftone screen of {lpi} lines per inch: how many dots a side has a "
+            "halftone cell, and how many gray levels does it give?"
+        )
+    else:
+        levels = rng.choice((17, 26, 65, 101, 257))
+        argv = ("printer", "--dpi", str(dpi), "--levels", str(levels))
+        ask = (
+            f"must print at least {levels} gray levels: what is the smallest halftone cell, and "
+            "how many lines per inch does the screen have?"
+        )
+    return PracticeQuestion(
+        "dither",
+        argv,
+        f"A {dpi} dpi printer {ask} (an n x n cell gives n^2 + 1 levels)",
+        4,
+        frozenset({"printer"}),
+    )
+
+
+def _lookup(rng: random.Random, difficulty: str) -> PracticeQuestion:
+    """A pixel's ordered-dither threshold from its screen position."""
+    n = 2 if difficulty == "easy" else 4
+    count = "1" if difficulty == "hard" else "0"
+    pixels = [(rng.randrange(int(count), 20), rng.randrange(int(count), 20)) for _ in range(2)]
+    value = rng.randrange(0, 256)
+    argv = (
+        "dither", "lookup", *(str(v) for p in pixels for v in p), "--matrix", str(n),
+        "--value", str(value), "--count", count,
+    )  # fmt: skip
+    where = " and ".join(f"({x}, {y})" for x, y in pixels)
+    return PracticeQuestion(
+        "dither",
+        argv,
+        f"With the {n} x {n} Bayer matrix tiled over the screen (positions counted from "
+        f"{count}, thresholds D x 255 / {n * n}), find the threshold of the pixels at {where} "
+        f"(x across, y down) and say whether a pixel of intensity {value} is on there.",
+        4,
+        frozenset({"lookup"}),
     )
 
 
@@ -182,6 +253,20 @@ def framebuffer(rng: random.Random, difficulty: str, kind: str) -> PracticeQuest
     elif kind == "lut":
         argv += ("--lut", "24")
         ask = "with a 24-bit colour look-up table, how large is the table and how many colours?"
+    elif kind == "address":
+        x, y = rng.randrange(w), rng.randrange(h)
+        argv += ("--pixel", str(x), str(y))
+        ask = (
+            f"stored row by row from the top-left (from 0, at address 0), at which byte is pixel "
+            f"({x}, {y})?"
+        )
+    elif kind == "retrace":
+        argv += ("--refresh", "60", "--hretrace", "5e-6", "--vretrace", "5e-4")
+        ask = (
+            "at 60 Hz non-interlaced, with a horizontal retrace of 5 us and a vertical retrace of "
+            "500 us, what share of the refresh time is spent in retrace, and how long does a scan "
+            "line get?"
+        )
     else:
         interlaced = kind == "interlaced"
         argv += ("--refresh", "60", *(("--interlaced",) if interlaced else ()))
@@ -335,7 +420,15 @@ def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQue
 
 
 KINDS: dict[str, list[Any]] = {
-    "dither": ["ordered", "floyd-steinberg", "threshold", "halftone"],
+    "dither": [
+        "ordered",
+        "floyd-steinberg",
+        "threshold",
+        "halftone",
+        "kernel",
+        "lookup",
+        "printer",
+    ],
     "inside": [0, 1, 2, 3, "left-bottom"],
     "clip": [
         "cohen-sutherland",
@@ -349,7 +442,7 @@ KINDS: dict[str, list[Any]] = {
         "sutherland-hodgman hexagon",
         "midpoint-subdivision edge stop",
     ],
-    "framebuffer": ["load", "lut", "refresh", "interlaced"],
+    "framebuffer": ["load", "lut", "refresh", "interlaced", "address", "retrace"],
     "attributes": ["dashed", "replication", "dotted", "brush", "mask lsb"],
     "characters": ["bitmap", "stroke", "storage", "font table", "glyph bytes"],
     "antialias": ["wu", "area", "subpixel", "wu-coverage"],
