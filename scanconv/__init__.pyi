@@ -23,6 +23,7 @@ from ._api import compare_curves as compare_curves
 from ._api import compare_lines as compare_lines
 from ._api import continuity as continuity
 from ._api import dither_diffusion as dither_diffusion
+from ._api import dither_lookup as dither_lookup
 from ._api import dither_ordered as dither_ordered
 from ._api import dither_threshold as dither_threshold
 from ._api import ellipse as ellipse
@@ -41,6 +42,7 @@ from ._api import parametric_parabola as parametric_parabola
 from ._api import pipeline_line as pipeline_line
 from ._api import pipeline_polygon as pipeline_polygon
 from ._api import polygon as polygon
+from ._api import printer as printer
 from ._api import quantize as quantize
 from ._api import ramp as ramp
 from ._api import sample as sample
@@ -122,6 +124,7 @@ __all__ = [
     "dda",
     "dda_line",
     "dither_diffusion",
+    "dither_lookup",
     "dither_ordered",
     "dither_threshold",
     "ellipse",
@@ -143,6 +146,7 @@ __all__ = [
     "pipeline_line",
     "pipeline_polygon",
     "polygon",
+    "printer",
     "quantize",
     "questions",
     "ramp",

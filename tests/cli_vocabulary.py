@@ -804,15 +804,40 @@ VOCABULARY[("dither", "ordered")] = Vocab(
     wrong_type=((*IMAGE, "--matrix", "2.5"), "must be an integer"),
     small={"--image": IMAGE_VALUES, "--top": ("1", "255"), "--matrix": ("2", "4", "0 1; 1 0")},
 )
+VOCABULARY[("dither", "lookup")] = Vocab(
+    valid=(("5", "2", "--matrix", "4", "--value", "100"), ("1", "1", "--count", "1")),
+    numbers=((0, 1, 3, 5), (0, 1)),
+    out_of_range=(
+        (("5", "2", "--matrix", "3"), "2, 4, 8 or 16"),
+        (("1", "1", *["1"] * 128), "1 .. 64 pixels"),
+    ),
+    too_few=((), "Missing argument"),
+    too_many=(("5", "2", "--matrix"), "requires an argument"),
+    wrong_type=(("5", "2", "3"), "pairs"),
+    small={"--matrix": ("2", "4"), "--value": ("0", "100", "255"), "--top": ("1", "255")},
+    positional=("0", "1", "2", "5"),
+)
 VOCABULARY[("halftone",)] = Vocab(
     valid=(("2",), ("4", "--level", "5", "--bits", "1")),
     numbers=((0,), (0, 2, 4)),
-    out_of_range=((("32",), "2, 4, 8 or 16"), (("2", "--level", "9"), "levels 0 .. 4")),
+    out_of_range=((("32",), "1 .. 16"), (("2", "--level", "9"), "levels 0 .. 4")),
     too_few=((), "Missing argument"),
     too_many=(("2", "3"), "unexpected extra argument"),
     wrong_type=(("2.5",), "must be an integer"),
     small={"--level": ("0", "1", "3"), "--bits": ("1", "2")},
     positional=("2", "4", "3", "0"),
+)
+VOCABULARY[("printer",)] = Vocab(
+    valid=(("--dpi", "300", "--lpi", "60"), ("--lpi", "150", "--cell", "16", "--count", "n2")),
+    numbers=((1, 3), (1, 3)),
+    out_of_range=(
+        (("--dpi", "300", "--cell", "5000"), "1 .. 4096"),
+        (("--dpi", "1e7", "--lpi", "60"), "1,000,000"),
+    ),
+    too_few=(("--dpi", "300"), "give two of"),
+    too_many=(("--dpi", "300", "--lpi", "60", "--cell", "5"), "give two of"),
+    wrong_type=(("--dpi", "300", "--cell", "2.5"), "must be an integer"),
+    small={"--dpi": ("300", "600"), "--lpi": ("60", "100"), "--cell": ("2", "5")},
 )
 VOCABULARY[("inside",)] = Vocab(
     valid=(("0", "0", "6", "0", "6", "6", "3", "2", "0", "6", "--points", "3", "1", "3", "4"),),

@@ -335,6 +335,20 @@ CASES += [
         {"scale": "centered"},
     ),
     (
+        ("dither", "lookup"),
+        ("19", "2", "--matrix", "5 2 7; 1 0 3; 6 8 4", "--scale", "given", "--count", "1"),
+        "dither_lookup",
+        ([(19, 2)], [[5, 2, 7], [1, 0, 3], [6, 8, 4]]),
+        {"scale": "given", "count": 1},
+    ),
+    (
+        ("dither", "floyd-steinberg"),
+        ("--image", "100 100; 100 100", "--top", "1", "--kernel", "burkes"),
+        "dither_diffusion",
+        ("100 100; 100 100", 1),
+        {"kernel": "burkes"},
+    ),
+    (
         ("dither", "floyd-steinberg"),
         ("--image", "100 100; 100 100", "--top", "1", "--order", "serpentine"),
         "dither_diffusion",
@@ -342,6 +356,22 @@ CASES += [
         {"order": "serpentine"},
     ),
     (("halftone",), ("4", "--level", "5"), "halftone", (4,), {"level": "5"}),
+    (
+        ("halftone",),
+        ("3", "--matrix", "6 8 4; 1 0 3; 5 2 7"),
+        "halftone",
+        (3,),
+        {"matrix": [[6, 8, 4], [1, 0, 3], [5, 2, 7]]},
+    ),
+    (("halftone",), ("5", "--order", "clustered"), "halftone", (5,), {"order": "clustered"}),
+    (("printer",), ("--dpi", "300", "--lpi", "60"), "printer", (300, 60), {}),
+    (
+        ("printer",),
+        ("--lpi", "150", "--levels", "257", "--count", "n2+1"),
+        "printer",
+        (),
+        {"lpi": 150, "levels": 257},
+    ),
     (
         ("inside",),
         ("0", "0", "6", "0", "6", "6", "--points", "3", "1", "6", "3", "--boundary", "outside"),

@@ -203,6 +203,8 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
         subpixel,
         wu,
     )
+    from scanconv.algorithms import framebuffer as algorithms_framebuffer
+    from scanconv.answers.image import halftone as answers_halftone
     from scanconv.answers.process.antialias import subpixel as answers_subpixel
     from scanconv.answers.process.fill import inside as answers_inside
 
@@ -230,6 +232,12 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
         "OriginName": sample.ORIGINS, "PackingName": characters.PACKINGS,
         "ColorModelName": color.MODELS, "CompareName": knobs["compare"],
         "DitherScaleName": knobs["scale"], "DitherBaseName": knobs["base"],
+        "DitherCountName": knobs["count"],
+        "CellOrderName": dither.CELL_ORDERS,
+        "MajorName": algorithms_framebuffer.ADDRESS_KNOBS["major"],
+        "RowZeroName": algorithms_framebuffer.ADDRESS_KNOBS["row0"],
+        "LevelCountName": answers_halftone.PRINTER_KNOBS["count"],
+        "PrinterDotsName": answers_halftone.PRINTER_KNOBS["dots"],
         "KernelName": knobs["kernel"], "ScanOrderName": knobs["order"],
         "ArithmeticName": knobs["arithmetic"], "CarryName": knobs["carry"],
     }  # fmt: skip

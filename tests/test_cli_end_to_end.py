@@ -232,7 +232,7 @@ BAD = [
     ("dither ordered --image '1 2' --base 2", "--base"),
     ("dither floyd-steinberg --image '1 2' --kernel jarvis", "--kernel"),
     ("halftone 2 --level 9", "--level"),
-    ("halftone 3", "2, 4, 8 or 16"),
+    ("halftone 17", "1 .. 16"),
     ("inside 0 0 6 0 6 6", "--points"),
     ("inside 0 0 6 0 6 6 --points 1 1 --boundary edge", "--boundary"),
     ("framebuffer 640 480 8 --rate 0", "--rate"),

@@ -98,6 +98,12 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
         (["dither", "threshold", "--image", ";".join([" ".join(["1"] * 65)] * 64)], "4,096")
     ],
     "algorithms.dither.MAX_ORDER": [(["halftone", "32"], "16")],
+    "answers.image.dither.MAX_LOOKUPS": [(["dither", "lookup", *(["1", "1"] * 65)], "1 .. 64")],
+    "answers.image.framebuffer.MAX_SIDE": [(["framebuffer", "1000001", "1", "8"], "1,000,000")],
+    "answers.image.halftone.MAX_CELL": [(["printer", "--dpi", "300", "--cell", "4097"], "4096")],
+    "answers.image.halftone.MAX_DPI": [
+        (["printer", "--dpi", "1000001", "--lpi", "1"], "1,000,000")
+    ],
     "algorithms.inside.MAX_POINTS": [
         (["inside", "0", "0", "4", "0", "0", "4", "--points", *(["1", "1"] * 101)], "100")
     ],

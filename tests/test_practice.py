@@ -164,7 +164,7 @@ COMMANDS = {
     "attributes": {"linestyle", "thickline"},
     "characters": {"char"},
     "midpoint-line": {"line"},
-    "dither": {"dither", "halftone"},
+    "dither": {"dither", "halftone", "printer"},
 }
 
 

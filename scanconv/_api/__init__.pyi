@@ -27,9 +27,11 @@ from .curves import bspline_basis as bspline_basis
 from .curves import continuity as continuity
 from .curves import local_control as local_control
 from .dither import dither_diffusion as dither_diffusion
+from .dither import dither_lookup as dither_lookup
 from .dither import dither_ordered as dither_ordered
 from .dither import dither_threshold as dither_threshold
 from .dither import halftone as halftone
+from .dither import printer as printer
 from .image import quantize as quantize
 from .image import ramp as ramp
 from .image import sample as sample
@@ -92,6 +94,7 @@ __all__ = [
     "compare_lines",
     "continuity",
     "dither_diffusion",
+    "dither_lookup",
     "dither_ordered",
     "dither_threshold",
     "ellipse",
@@ -110,6 +113,7 @@ __all__ = [
     "pipeline_line",
     "pipeline_polygon",
     "polygon",
+    "printer",
     "quantize",
     "ramp",
     "sample",

@@ -10,23 +10,29 @@ from typing import TYPE_CHECKING, Literal
 from ..core import lazy
 from ..core.checks import InputError
 from ..display import answers
-from .values import NumberLike, _choice, _number, _optional, _whole
+from .values import NumberLike, PointsLike, _choice, _flat, _number, _optional, _whole
 
 if TYPE_CHECKING:
     from ..answers.image import dither as answers_dither
+    from ..answers.image import halftone as answers_halftone
     from ..core.choices import (
         ArithmeticName,
         CarryName,
+        CellOrderName,
         CompareName,
         DitherBaseName,
+        DitherCountName,
         DitherScaleName,
         KernelName,
+        LevelCountName,
+        PrinterDotsName,
         ScanOrderName,
     )
     from ..core.numeric import Number
     from ..core.records import Solution
 else:  # the command's answer module, loaded by its first call
     answers_dither = lazy.module("scanconv.answers.image.dither")
+    answers_halftone = lazy.module("scanconv.answers.image.halftone")
 
 
 MatrixLike = str | Sequence[Sequence[NumberLike]]
@@ -139,9 +145,10 @@ def dither_ordered(
     compare : {">", ">="}, default ">"
         A pixel is on when its value is ``>`` the threshold (Hearn & Baker's "if I > D_n(j, k)")
         or ``>=`` it.
-    scale : {"raw", "centered"}, default "raw"
+    scale : {"raw", "centered", "given"}, default "raw"
         Entry d's threshold: the intensity scaled to 0 .. n² compared with d (``raw``, Hearn &
-        Baker's form), or ``(d + 1/2) top / n²`` (``centered``, the middle of its band).
+        Baker's form), ``(d + 1/2) top / n²`` (``centered``, the middle of its band), or d
+        itself, a matrix given already in the image's units (``given``).
     base : {"0", "1"}, default "0"
         The matrix entries counted from 0 (``0 .. n² - 1``, the usual Bayer matrix) or from 1.
     transpose : bool, default False
@@ -179,6 +186,67 @@ def dither_ordered(
 
 
 @answers
+def dither_lookup(
+    pixels: PointsLike,
+    matrix: int | MatrixLike = 4,
+    top: NumberLike = 255,
+    *,
+    value: NumberLike | None = None,
+    count: DitherCountName | Literal[0, 1] = "0",
+    compare: CompareName = ">",
+    scale: DitherScaleName = "raw",
+    base: DitherBaseName | Literal[0, 1] = "0",
+    transpose: bool = False,
+) -> Solution:
+    """Each pixel's dither threshold from its screen position (``scanconv dither lookup``):
+    ``T[(y - c) mod n][(x - c) mod n]``, and whether a pixel of intensity ``value`` is on there.
+
+    Parameters
+    ----------
+    pixels : sequence of (x, y), or flat numbers
+        The screen positions: x across, y down (row y of the image).
+    matrix : int, str or rows of numbers, default 4
+        The Bayer matrix's order n (2, 4, 8, 16), or the matrix itself.
+    top : number, default 255
+        The largest intensity.
+    value : number, optional
+        The intensity of the pixels: each is on when it passes its threshold.
+    count : {"0", "1"}, default "0"
+        Positions counted from 0 or from 1 (then ``(x - 1) mod n``).
+    compare, scale, base, transpose : str, str, str, bool
+        As :func:`dither_ordered` takes them (``compare`` default ``">"``).
+
+    Returns
+    -------
+    Answer
+        One row per pixel: ``x, y, i, j, i mod n, j mod n, T`` (and ``I, output`` with a
+        value); ``.data["lookups"]`` holds the thresholds.
+
+    Examples
+    --------
+    >>> dither_lookup([(5, 2)], 4, 16).data["lookups"]
+    [11]
+    >>> dither_lookup([6, 3], 4, 16, count=1, value=12).data["output"]
+    [1]
+    """
+    flat = _flat(pixels, "pixels")
+    if len(flat) % 2 or not all(v == int(v) for v in flat):
+        raise InputError("pixels are whole X Y pairs", "pixels")
+    pairs = [(int(flat[k]), int(flat[k + 1])) for k in range(0, len(flat), 2)]
+    return answers_dither.lookup_solution(
+        pairs,
+        _dither_matrix(matrix),
+        _number(top, "top"),
+        value=_optional(value, "value"),
+        count=_choice(str(count) if isinstance(count, int) else count, "count"),
+        compare=_choice(compare, "compare"),
+        scale=_choice(scale, "scale"),
+        base=_choice(str(base) if isinstance(base, int) else base, "base"),
+        transpose=bool(transpose),
+    )
+
+
+@answers
 def dither_diffusion(
     image: MatrixLike,
     top: NumberLike = 255,
@@ -198,9 +266,13 @@ def dither_diffusion(
         separated by ``;`` or ``/`` and the values by spaces or commas (``"10 200; 60 90"``).
     top : number, default 255
         The largest intensity; a pixel's error is its value minus the level it is given.
-    kernel : {"floyd-steinberg", "simple"}, default "floyd-steinberg"
-        The shares of the error: Floyd-Steinberg's 7/16 right, 3/16, 5/16, 1/16 below, or the
-        simple 3/8 right, 3/8 below, 2/8 diagonal taught under the same name.
+    kernel : str, default "floyd-steinberg"
+        The shares of the error: Floyd-Steinberg's 7/16 right, 3/16, 5/16, 1/16 below, the
+        simple 3/8 right, 3/8 below, 2/8 diagonal taught under the same name,
+        ``"jarvis-judice-ninke"`` (/48), ``"stucki"`` (/42), ``"burkes"`` (/32), ``"sierra"``
+        (/32), ``"two-row-sierra"`` (/16), ``"sierra-lite"`` (/4) or ``"one-dimensional"``
+        (all of the error to the next pixel); each source is named in the answer's notes
+        (:data:`scanconv.algorithms.dither.KERNEL_SOURCES`).
     order : {"raster", "serpentine"}, default "raster"
         Every row left to right, or alternate rows right to left.
     arithmetic : {"exact", "integer"}, default "exact"
@@ -240,24 +312,37 @@ def dither_diffusion(
 
 
 @answers
-def halftone(n: NumberLike, *, level: NumberLike | None = None, bits: NumberLike = 1) -> Solution:
+def halftone(
+    n: NumberLike,
+    *,
+    level: NumberLike | None = None,
+    bits: NumberLike = 1,
+    order: CellOrderName = "bayer",
+    matrix: MatrixLike | None = None,
+) -> Solution:
     """The n x n halftone patterns (``scanconv halftone``): the levels they give and the pattern of
     each level, or of one.
 
     Parameters
     ----------
     n : int
-        The pattern's side.
+        The cell's side, 1 to 16: n² + 1 nested levels.
     level : int, optional
         Only this level's pattern.
     bits : int, default 1
         Bits a cell (more than 1: grey cells, ``n² (2**bits - 1) + 1`` levels).
+    order : {"bayer", "clustered"}, default "bayer"
+        How the cell fills: in the order of the Bayer matrix (for n not a power of 2, the
+        top-left n x n block of the next Bayer matrix, ranked), or a dot growing from the
+        centre.
+    matrix : str or rows of numbers, optional
+        The order given instead: an n x n matrix holding 0 .. n² - 1 (or 1 .. n²) once each.
 
     Returns
     -------
     Answer
         The table ``level, pattern (rows top first), cells on``; ``.data`` holds the number of
-        ``levels`` and the ``patterns``.
+        ``levels``, the cell's ``order`` and the ``patterns``.
 
     Examples
     --------
@@ -266,9 +351,63 @@ def halftone(n: NumberLike, *, level: NumberLike | None = None, bits: NumberLike
     (5, [[1, 0], [0, 1]])
     >>> list(halftone(2, level=3).tables[-1].rows())
     [(3, '1 1 / 0 1', 3)]
+    >>> halftone(5).data["levels"], halftone(3, matrix="6 8 4; 1 0 3; 5 2 7").data["patterns"][1]
+    (26, [[0, 0, 0], [0, 1, 0], [0, 0, 0]])
     """
     return answers_dither.pattern_solution(
         _whole(n, "n"),
         None if level is None else _whole(level, "level"),
         _whole(bits, "bits"),
+        order=_choice(order, "order"),
+        matrix=None if matrix is None else _matrix(matrix, "matrix"),
+    )
+
+
+@answers
+def printer(
+    dpi: NumberLike | None = None,
+    lpi: NumberLike | None = None,
+    *,
+    cell: NumberLike | None = None,
+    levels: NumberLike | None = None,
+    count: LevelCountName = "n2+1",
+    dots: PrinterDotsName = "whole",
+) -> Solution:
+    """A printer's halftone arithmetic (``scanconv printer``): from any two of the printer's dots
+    per inch, the screen's lines per inch and the cell (or the levels wanted), the rest.
+
+    Parameters
+    ----------
+    dpi : number, optional
+        The printer's resolution in dots per inch.
+    lpi : number, optional
+        The halftone screen's lines (cells) per inch.
+    cell : int, optional
+        The cell's side n in dots.
+    levels : int, optional
+        The grey levels wanted: the smallest cell giving them.
+    count : {"n2+1", "n2"}, default "n2+1"
+        An n x n cell's levels: n² + 1 (0 to n² dots on) or n² (the shades printed).
+    dots : {"whole", "exact"}, default "whole"
+        The cell from dpi / lpi: whole dots (rounded down) or the ratio itself.
+
+    Returns
+    -------
+    Answer
+        The working; ``.data`` holds ``n``, ``levels``, ``dpi``, ``lpi`` and ``cell_inches``.
+
+    Examples
+    --------
+    >>> printer(300, 60).data["levels"]
+    26
+    >>> printer(lpi=150, cell=16).data["dpi"]
+    2400
+    """
+    return answers_halftone.printer_solution(
+        _optional(dpi, "dpi"),
+        _optional(lpi, "lpi"),
+        cell=None if cell is None else _whole(cell, "cell"),
+        levels=None if levels is None else _whole(levels, "levels"),
+        count=_choice(count, "count"),
+        dots=_choice(dots, "dots"),
     )

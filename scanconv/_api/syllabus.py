@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Literal
 
 from ..core import lazy
 from ..core.checks import InputError
@@ -31,8 +31,11 @@ if TYPE_CHECKING:
     from ..core.choices import (
         BitOrderName,
         BoundaryName,
+        DitherCountName,
         InsideRuleName,
+        MajorName,
         PackingName,
+        RowZeroName,
         StrokeAlgorithmName,
     )
     from ..core.records import Solution
@@ -104,13 +107,23 @@ def framebuffer(
     rate: NumberLike | None = None,
     refresh: NumberLike | None = None,
     interlaced: bool = False,
+    dpi: NumberLike | None = None,
+    pixel: PointLike | None = None,
+    address: NumberLike | None = None,
+    base: NumberLike = 0,
+    major: MajorName = "row",
+    row0: RowZeroName = "top",
+    count: DitherCountName | Literal[0, 1] = "0",
+    hretrace: NumberLike | None = None,
+    vretrace: NumberLike | None = None,
+    pixel_time: NumberLike | None = None,
 ) -> Solution:
     """Frame-buffer arithmetic (``scanconv framebuffer``).
 
     Parameters
     ----------
-    width, height : int
-        The raster, in pixels.
+    width, height : number
+        The raster, in pixels (with ``dpi``: the screen's size in inches).
     bits : int
         Bits a pixel (``2**bits`` colours at once).
     lut : int, optional
@@ -118,16 +131,39 @@ def framebuffer(
     rate : number, optional
         Bits a second: the time to load the frame buffer.
     refresh : number, optional
-        The refresh rate in Hz: the pixel rate and the time for one pixel.
+        The refresh rate in Hz: the pixel rate, the time for a scan line and for one pixel.
     interlaced : bool, default False
         An interlaced display: each refresh draws one field (half the lines), so the frames
         per second are half the refresh rate.
+    dpi : number, optional
+        Dots per inch: ``width`` and ``height`` are inches, the pixels across and down
+        ``inches x dpi`` (rounded down).
+    pixel : (x, y), optional
+        The pixel whose address in the buffer is wanted.
+    address : number, optional
+        A byte address (fractional inside a byte): the pixel stored there.
+    base : int, default 0
+        The buffer's first byte.
+    major : {"row", "column"}, default "row"
+        The buffer holds the rows one after another (``k = y W + x``) or the columns.
+    row0 : {"top", "bottom"}, default "top"
+        y = 0 is the top scan line (the usual frame-buffer order) or the bottom one.
+    count : {"0", "1"}, default "0"
+        x and y counted from 0 or from 1.
+    hretrace, vretrace : number, optional
+        The horizontal and vertical retrace times in seconds: the share of the refresh time
+        spent in retrace (with ``refresh``) and the frame rate (with ``pixel_time``).
+    pixel_time : number, optional
+        The time a pixel gets, in seconds: the frame rate ``1 / (H (W t_p + t_h) + t_v)``.
 
     Returns
     -------
     Answer
-        The working; ``.data`` holds ``size_bits``, ``colours`` and, as asked, ``lut_entries``,
-        ``lut_bits``, ``palette``, ``load_time``, ``pixel_rate`` and ``pixel_time``, exact.
+        The working; ``.data`` holds ``pixels``, ``size_bits``, ``colours`` and, as asked,
+        ``lut_entries``, ``lut_bits``, ``palette``, ``load_time``, ``pixel_rate``,
+        ``line_time``, ``pixel_time``, ``index``, ``address``, ``pixel_at``,
+        ``retrace_fraction``, ``line_time_traced``, ``pixel_time_traced`` and ``frame_rate``,
+        exact.
 
     Examples
     --------
@@ -136,6 +172,10 @@ def framebuffer(
     >>> data = framebuffer(640, 480, 8, lut=24, rate=10**6, refresh=60).data
     >>> data["palette"], data["load_time"], data["pixel_time"]
     (16777216, Fraction(1536, 625), Fraction(1, 18432000))
+    >>> framebuffer(640, 480, 8, pixel=(340, 150)).data["address"]
+    96340
+    >>> framebuffer(1280, 1024, 1, refresh=60, hretrace="5e-6", vretrace="5e-4").data["retrace_fraction"]
+    Fraction(843, 2500)
     """
     return answers_framebuffer.framebuffer_solution(
         *_numbers(width=width, height=height, bits=bits),
@@ -143,7 +183,26 @@ def framebuffer(
         rate=_optional(rate, "rate"),
         refresh=_optional(refresh, "refresh"),
         interlaced=bool(interlaced),
+        dpi=_optional(dpi, "dpi"),
+        pixel=None if pixel is None else _whole_pair(pixel, "pixel"),
+        address=_optional(address, "address"),
+        base=_whole(base, "base"),
+        conventions={
+            "major": _choice(major, "major"),
+            "row0": _choice(row0, "row0"),
+            "count": _choice(str(count) if isinstance(count, int) else count, "count"),
+        },
+        hretrace=_optional(hretrace, "hretrace"),
+        vretrace=_optional(vretrace, "vretrace"),
+        pixel_time=_optional(pixel_time, "pixel_time"),
     )
+
+
+def _whole_pair(point: PointLike, param: str) -> tuple[int, int]:
+    x, y = _pair(point, param)
+    if x != int(x) or y != int(y):
+        raise InputError(f"{param}: a pixel's x and y are whole numbers", param)
+    return int(x), int(y)
 
 
 @answers

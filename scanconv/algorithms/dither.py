@@ -11,12 +11,17 @@ The conventions that change the printed numbers are named and settable (:data:`D
   I > D_n(j, k), we turn on the pixel") or ``>=`` it;
 - ``scale``: the threshold of matrix entry d on the scale 0..top is ``d·top/n²`` (``raw``: the
   intensity scaled to 0..n² compared with d itself, Hearn & Baker's form) or ``(d + 1/2)·top/n²``
-  (``centered``: the middle of the entry's band);
+  (``centered``: the middle of the entry's band),
+  or the entries taken as thresholds already in the image's units (``given``);
+- ``count``: a pixel's screen position counted from 0 or from 1 (a threshold looked up at
+  ``(x, y)`` is ``D[(y - c) mod n][(x - c) mod n]``);
 - ``base``: matrix entries counted from 0 (``0 .. n² - 1``, the usual Bayer matrix) or from 1;
 - ``transpose``: the matrix read as ``D[i mod n][j mod n]`` (row by row, the default) or as
   ``D[j mod n][i mod n]`` (Hearn & Baker index D by x first);
-- error diffusion: the ``kernel`` (Floyd–Steinberg's 7/16, 3/16, 5/16, 1/16, or the simple
-  3/8, 3/8, 2/8 taught under the same name), the ``order`` (``raster`` or ``serpentine``),
+- error diffusion: the ``kernel`` (Floyd–Steinberg's 7/16, 3/16, 5/16, 1/16, the simple
+  3/8, 3/8, 2/8 taught under the same name, Jarvis–Judice–Ninke, Stucki, Burkes, the Sierra
+  family or the one-dimensional kernel: :data:`KERNELS`, each source in
+  :data:`KERNEL_SOURCES`), the ``order`` (``raster`` or ``serpentine``),
   ``arithmetic`` (``exact`` fractions, or ``integer``: each share truncated toward zero as C's
   integer division does) and ``carry`` (negative errors ``kept`` or ``clamped`` at 0).
 
@@ -47,9 +52,20 @@ MAX_CELLS = 4096
 
 DITHER_KNOBS: dict[str, tuple[str, ...]] = {
     "compare": (">", ">="),
-    "scale": ("raw", "centered"),
+    "scale": ("raw", "centered", "given"),
     "base": ("0", "1"),
-    "kernel": ("floyd-steinberg", "simple"),
+    "count": ("0", "1"),
+    "kernel": (
+        "floyd-steinberg",
+        "simple",
+        "jarvis-judice-ninke",
+        "stucki",
+        "burkes",
+        "sierra",
+        "two-row-sierra",
+        "sierra-lite",
+        "one-dimensional",
+    ),
     "order": ("raster", "serpentine"),
     "arithmetic": ("exact", "integer"),
     "carry": ("kept", "clamped"),
@@ -65,28 +81,80 @@ class Share(NamedTuple):
     weight: Fraction
 
 
+def _kernel(divisor: int, *rows: tuple[int, tuple[int, ...]]) -> tuple[Share, ...]:
+    """The shares of a kernel written as published: each row ``(di, weights)`` with the weights
+    of columns ``j - 2 .. j + 2`` (the current row's from ``j + 1``), over ``divisor``."""
+    shares = []
+    for di, weights in rows:
+        first = 1 if di == 0 else -(len(weights) // 2)
+        shares += [Share(di, first + k, Fraction(w, divisor)) for k, w in enumerate(weights) if w]
+    return tuple(shares)
+
+
 KERNELS: dict[str, tuple[Share, ...]] = {
-    "floyd-steinberg": (
-        Share(0, 1, Fraction(7, 16)),
-        Share(1, -1, Fraction(3, 16)),
-        Share(1, 0, Fraction(5, 16)),
-        Share(1, 1, Fraction(1, 16)),
-    ),
+    "floyd-steinberg": _kernel(16, (0, (7,)), (1, (3, 5, 1))),
     "simple": (
         Share(0, 1, Fraction(3, 8)),
         Share(1, 0, Fraction(3, 8)),
         Share(1, 1, Fraction(2, 8)),
     ),
+    "jarvis-judice-ninke": _kernel(48, (0, (7, 5)), (1, (3, 5, 7, 5, 3)), (2, (1, 3, 5, 3, 1))),
+    "stucki": _kernel(42, (0, (8, 4)), (1, (2, 4, 8, 4, 2)), (2, (1, 2, 4, 2, 1))),
+    "burkes": _kernel(32, (0, (8, 4)), (1, (2, 4, 8, 4, 2))),
+    "sierra": _kernel(32, (0, (5, 3)), (1, (2, 4, 5, 4, 2)), (2, (0, 2, 3, 2, 0))),
+    "two-row-sierra": _kernel(16, (0, (4, 3)), (1, (1, 2, 3, 2, 1))),
+    "sierra-lite": _kernel(4, (0, (2,)), (1, (1, 1, 0))),
+    "one-dimensional": _kernel(1, (0, (1,))),
 }
-"""The error-diffusion kernels, by name."""
+"""The error-diffusion kernels, by name: each share's offset from the pixel and its weight (the
+weights of every kernel sum to 1, so the error is moved, not lost)."""
+
+KERNEL_DIVISORS: dict[str, int] = {
+    "floyd-steinberg": 16,
+    "simple": 8,
+    "jarvis-judice-ninke": 48,
+    "stucki": 42,
+    "burkes": 32,
+    "sierra": 32,
+    "two-row-sierra": 16,
+    "sierra-lite": 4,
+    "one-dimensional": 1,
+}
+"""The common denominator each kernel is published with (its weights are written over it)."""
+
+KERNEL_SOURCES: dict[str, str] = {
+    "floyd-steinberg": 'R. W. Floyd and L. Steinberg, "An adaptive algorithm for spatial '
+    'greyscale", Proc. SID 17 (1976)',
+    "simple": "the three-share simplification taught under Floyd and Steinberg's name "
+    "(3/8 right, 3/8 below, 2/8 below right)",
+    "jarvis-judice-ninke": 'J. F. Jarvis, C. N. Judice and W. H. Ninke, "A survey of '
+    'techniques for the display of continuous tone pictures on bilevel displays", Computer '
+    "Graphics and Image Processing 5 (1976)",
+    "stucki": 'P. Stucki, "MECCA - a multiple-error correction computation algorithm for '
+    'bi-level image hardcopy reproduction", IBM Research RZ1060 (1981)',
+    "burkes": "D. Burkes, the Burkes error filter (1988), as tabled in L. Crocker's DHALF.TXT "
+    '(1989) and T. Helland, "Image dithering: eleven algorithms" (2012)',
+    "sierra": "F. Sierra (1989), as tabled in L. Crocker's DHALF.TXT and T. Helland (2012)",
+    "two-row-sierra": "F. Sierra (1990), as tabled in L. Crocker's DHALF.TXT and T. Helland (2012)",
+    "sierra-lite": 'F. Sierra\'s "Filter Lite" (1990), as tabled in T. Helland (2012)',
+    "one-dimensional": "one-dimensional error diffusion, all of the error to the next pixel of "
+    'the row (S. Hocevar, "Libcaca study", part 3, "Error diffusion" (2007); Wikipedia, '
+    '"Error diffusion")',
+    # the simple kernel: no paper; taught under Floyd and Steinberg's name
+}
+"""Where each kernel is published (its answer names it in a note)."""
+
+
+def choice_of(values: Sequence[str], value: str, knob: str) -> str:
+    """``value`` if it is one of ``values``, else :class:`InputError` naming them."""
+    if value not in values:
+        raise InputError(f"unknown {knob} {value!r} (choose from {', '.join(values)})", knob)
+    return value
 
 
 def choice(knob: str, value: str) -> str:
     """``value`` if it is one of the knob's values, else :class:`InputError` naming them."""
-    values = DITHER_KNOBS[knob]
-    if value not in values:
-        raise InputError(f"unknown {knob} {value!r} (choose from {', '.join(values)})", knob)
-    return value
+    return choice_of(DITHER_KNOBS[knob], value, knob)
 
 
 def bayer(n: int) -> tuple[tuple[int, ...], ...]:
@@ -149,6 +217,9 @@ def thresholds(
     """
     choice("scale", scale)
     shift = int(choice("base", base))
+    if scale == "given":  # the entries are the thresholds, in the image's units
+        given = tuple(zip(*matrix, strict=True)) if transpose else matrix
+        return tuple(tuple(normalize(Fraction(v)) for v in row) for row in given)
     n2 = len(matrix) * len(matrix[0])
     half = Fraction(1, 2) if scale == "centered" else 0
     cells = tuple(zip(*matrix, strict=True)) if transpose else matrix
@@ -175,6 +246,34 @@ def ordered(image: Matrix, table: Matrix, compare: str = ">") -> Iterator[Step]:
         for j, v in enumerate(row):
             t = table[i % n][j % m]
             yield new_step(Step, (i * len(row) + j, None, None, (j, i), (v, t, _on(v, t, compare))))
+
+
+class Lookup(NamedTuple):
+    """One pixel's threshold looked up from its screen position: the position counted from 0,
+    the matrix cell it falls on and the threshold there."""
+
+    i: int
+    j: int
+    row: int
+    col: int
+    threshold: Number
+
+
+def lookup(table: Matrix, x: int, y: int, count: str = "0") -> Lookup:
+    """The threshold of the pixel at column ``x``, row ``y`` (counted from ``count``):
+    ``table[(y - c) mod n][(x - c) mod m]``.
+
+    >>> lookup(thresholds(bayer(4), 16), 5, 2)
+    Lookup(i=2, j=5, row=2, col=1, threshold=11)
+    >>> lookup(thresholds(bayer(4), 16), 6, 3, "1").threshold
+    11
+    """
+    c = int(choice("count", count))
+    i, j = y - c, x - c
+    if i < 0 or j < 0:
+        raise InputError(f"positions count from {c}: got ({x}, {y})", "pixels")
+    n, m = len(table), len(table[0])
+    return Lookup(i, j, i % n, j % m, table[i % n][j % m])
 
 
 def threshold(image: Matrix, t: Number, compare: str = ">=") -> Iterator[Step]:
@@ -253,16 +352,87 @@ def error_diffusion(
             k += 1
 
 
-def pattern(n: int, level: int) -> tuple[tuple[int, ...], ...]:
-    """The n x n halftone pattern of intensity ``level`` (0 .. n²): the cells whose Bayer entry
-    is below the level are on, so each pattern contains the one before (no contouring).
+CELL_ORDERS = ("bayer", "clustered")
+"""How an n x n halftone cell's dots turn on (:func:`cell_order`), the default first."""
+
+
+def cell_order(n: int, order: str = "bayer") -> tuple[tuple[int, ...], ...]:
+    """The rank 0 .. n² - 1 at which each dot of an n x n halftone cell turns on (1 <= n <=
+    :data:`MAX_ORDER`).
+
+    ``bayer`` (dispersed): the Bayer matrix when n is a power of 2; for any other n the
+    top-left n x n block of the Bayer matrix of the next power of 2, its entries ranked.
+    ``clustered``: a dot growing from the cell's centre, nearest dots first (ties: row by row,
+    top first, then left to right).
+
+    >>> cell_order(2), cell_order(3)
+    (((0, 2), (3, 1)), ((0, 5, 2), (7, 4, 8), (3, 6, 1)))
+    >>> cell_order(3, "clustered")
+    ((5, 1, 6), (2, 0, 3), (7, 4, 8))
+    """
+    if not 1 <= n <= MAX_ORDER:
+        raise InputError(f"a halftone cell is 1 .. {MAX_ORDER} dots wide, got {n}", "n")
+    if choice_of(CELL_ORDERS, order, "order") == "bayer":
+        side = 1 << (n - 1).bit_length()
+        block = [row[:n] for row in bayer(side)[:n]] if side > 1 else [[0]]
+        key: dict[tuple[int, int], tuple[Number, ...]] = {
+            (i, j): (block[i][j],) for i in range(n) for j in range(n)
+        }
+    else:
+        c = Fraction(n - 1, 2)
+        key = {(i, j): ((i - c) ** 2 + (j - c) ** 2, i, j) for i in range(n) for j in range(n)}
+    ranked = {cell: r for r, cell in enumerate(sorted(key, key=key.__getitem__))}
+    return tuple(tuple(ranked[i, j] for j in range(n)) for i in range(n))
+
+
+def check_cell(rows: Sequence[Sequence[Number]]) -> tuple[tuple[int, ...], ...]:
+    """A cell's order given: a square matrix holding 0 .. n² - 1 (or 1 .. n², shifted to 0)
+    once each."""
+    m = check_matrix(rows, "cell order", "matrix")
+    n = len(m)
+    if len(m[0]) != n or n > MAX_ORDER:
+        raise InputError(f"a cell's order is square, at most {MAX_ORDER} wide", "matrix")
+    flat = sorted(m[i][j] for i in range(n) for j in range(n))
+    shift = 1 if flat == list(range(1, n * n + 1)) else 0
+    if flat != list(range(shift, n * n + shift)):
+        raise InputError(f"a {n} x {n} cell's order holds 0 .. {n * n - 1} once each", "matrix")
+    return tuple(tuple(int(v) - shift for v in row) for row in m)
+
+
+def pattern(
+    n: int, level: int, order: Sequence[Sequence[int]] | None = None
+) -> tuple[tuple[int, ...], ...]:
+    """The n x n halftone pattern of intensity ``level`` (0 .. n²): the dots whose rank in the
+    cell's ``order`` (default :func:`cell_order`) is below the level are on, so each pattern
+    contains the one before (no contouring).
 
     >>> pattern(2, 1), pattern(2, 3)
     (((1, 0), (0, 0)), ((1, 1), (0, 1)))
     """
     if not 0 <= level <= n * n:
         raise InputError(f"a {n} x {n} pattern has levels 0 .. {n * n}, got {level}", "level")
-    return tuple(tuple(int(d < level) for d in row) for row in bayer(n))
+    ranks = cell_order(n) if order is None else order
+    return tuple(tuple(int(d < level) for d in row) for row in ranks)
+
+
+def lost_weight(kernel: str, rows: int, cols: int, order: str = "raster") -> Fraction:
+    """The kernel weight of every pixel's shares that fall outside a ``rows`` x ``cols`` image,
+    summed: with exact shares and negative errors kept, the input's total less the output's is
+    at most ``top / 2`` times this (each error is at most ``top / 2``).
+
+    >>> lost_weight("floyd-steinberg", 2, 2)  # 3/16 + (7 + 1)/16 + (3 + 5 + 1)/16 + 1
+    Fraction(9, 4)
+    >>> lost_weight("one-dimensional", 3, 4)
+    Fraction(3, 1)
+    """
+    total = Fraction(0)
+    for i in range(rows):
+        sign = -1 if order == "serpentine" and i % 2 else 1
+        for j in range(cols):
+            for s in KERNELS[kernel]:
+                if not (0 <= i + s.di < rows and 0 <= j + sign * s.dj < cols):
+                    total += s.weight
+    return total
 
 
 def pattern_levels(n: int, bits: int = 1) -> int:

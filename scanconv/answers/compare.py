@@ -19,8 +19,9 @@ from typing import TYPE_CHECKING, Any
 
 from ..core import lazy
 from ..core.checks import InputError, check_integer
+from ..core.ideal import IdealCircle, IdealLine
 from ..core.numeric import Number, fmt, fmt_short, normalize
-from ..core.records import Pixel, PixelFigure, Solution, Table, heading, rule
+from ..core.records import Pixel, PixelFigure, Plot, Solution, Table, Walk, heading, rule
 from .methods import METHODS, compared, method
 
 if TYPE_CHECKING:
@@ -207,13 +208,13 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool =
         *(heading(m, f"\\text{{{NAMES[m]}}}") for m in methods),
         heading("reason", r"\text{differ}"),
     )
-    tables = [Table(f"Pixels side by side ({mnr} for each {maj})", columns, rows)]
+    tables = [Table(f"Pixels side by side ({mnr} for each {maj})", columns, rows, stepped=True)]
     if integer:
         tables.append(
             Table(
                 "Arithmetic per pixel",
                 (
-                    heading("method", r"\text{method}"),
+                    heading("method", r"\text{method}", role="label"),
                     heading("work", r"\text{per pixel}"),
                     heading("arithmetic", r"\text{arithmetic}"),
                 ),
@@ -229,9 +230,8 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool =
         given=sols["dda"].given,
         derived=derived,
         notes=tuple(notes),
-        tables=(*tables, *_theory("line", theory)),
-        figures=_disagreement_figure(all_pixels),
-        geometry={"line": (x1, y1, x2, y2)},
+        walk=Walk(tables=(*tables, *_theory("line", theory))),
+        plot=Plot(figures=_disagreement_figure(all_pixels), ideal=(IdealLine(x1, y1, x2, y2),)),
         data={"methods": list(methods), "columns_differing": len(differing)},
     )
 
@@ -419,12 +419,16 @@ def compare_circles(r: Number, theory: bool = False) -> Solution:
         given=sols[REFERENCE].given[:1],
         derived=derived,
         notes=tuple(notes),
-        tables=(
-            Table("First octant side by side (y for each x)", columns, rows),
-            *_theory("circle", theory),
+        walk=Walk(
+            tables=(
+                Table("First octant side by side (y for each x)", columns, rows, stepped=True),
+                *_theory("circle", theory),
+            )
         ),
-        figures=_disagreement_figure({m: _plotted(sols[m]) for m in methods}),
-        geometry={"circle": (0, 0, ir)},
+        plot=Plot(
+            figures=_disagreement_figure({m: _plotted(sols[m]) for m in methods}),
+            ideal=(IdealCircle(0, 0, ir),),
+        ),
         data={"methods": list(methods), "columns_differing": len(differing)},
     )
 
@@ -485,19 +489,30 @@ def _circle_notes(
                 f"where the midpoint method plots ({x}, {ref}){gap}."
             )
             continue
-        samples = ", ".join(
-            f"({fmt(px, 3)}, {fmt(py, 3)})" for px, py in _octant_samples(sols[m], x)
-        )
+        if m in _DECIDED_AT_THE_POINT:  # its points are pixels: no samples between them
+            samples = ", ".join(f"({x}, {y})" for y in cols[m].get(x, []))
+        else:
+            samples = ", ".join(
+                f"({fmt(px, 3)}, {fmt(py, 3)})" for px, py in _octant_samples(sols[m], x)
+            )
         what = {
             "off": f"the {NAMES[m]} method's point in this column, {samples}, is not at the "
             f"pixel centre and rounds to y = {_cell(cols[m][x])}, the midpoint method's "
             f"to y = {ref}",
             "twice": f"the {NAMES[m]} method's points {samples} both round into this column",
+            "decides": f"the {NAMES[m]} method tests p = x^2 + y^2 - r^2 at its point, not at "
+            f"the midpoint between the two candidate pixels, and plots {samples}, where the "
+            f"midpoint method plots ({x}, {ref})",
             "skips": f"none of the {NAMES[m]} method's points rounds into this column",
             "beyond": f"the {NAMES[m]} method's point {samples} lies past the midpoint "
             "method's last column",
-        }[kind]
+        }["decides" if kind == "off" and m in _DECIDED_AT_THE_POINT else kind]
         yield f"{head}; {what}."
+
+
+_DECIDED_AT_THE_POINT = ("general",)
+"""The methods that step pixel by pixel on a test at the point itself (the notes' general
+method): where one differs from the midpoint method, that test is the reason."""
 
 
 def _octant_samples(sol: Solution, x: int) -> Iterator[tuple[Any, Any]]:
@@ -546,9 +561,11 @@ def compare_curves() -> Solution:
             "A clamped B-spline does pass through its first and last control points "
             "(erratum E4); the notes' 'does not pass' holds for unclamped knots.",
         ),
-        tables=(
-            th.theory_table(
-                "Theory: Bezier vs B-spline", ("point", "Bezier", "B-spline"), th.CURVE_THEORY
-            ),
+        walk=Walk(
+            tables=(
+                th.theory_table(
+                    "Theory: Bezier vs B-spline", ("point", "Bezier", "B-spline"), th.CURVE_THEORY
+                )._replace(stepped=True),
+            )
         ),
     )

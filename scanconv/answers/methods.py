@@ -177,6 +177,7 @@ _NO_PRACTICE = "no practice topic draws it"
 
 _A = "scanconv.answers.primitives."
 _L = _A + "line:"
+_LP = _A + "line_pieces:"
 _D = "scanconv.answers.theory.derivations:"
 _MODELS = "scanconv.marking.models:"
 _ERRATA = "scanconv.answers.theory.errata:"
@@ -186,7 +187,7 @@ _LINE = (
     Method(
         command="line", name="basic", title="basic line algorithm (y = mx + c)",
         answer=_L + "basic_answer", generator=_G + "lines:basic",
-        derivation=_L + "basic_derivation", pseudocode=_L + "basic_pseudocode",
+        derivation=_LP + "basic_derivation", pseudocode=_LP + "basic_pseudocode",
         raster=_G + "raster:line", errata=_ERRATA + "none", rows=_L + "rows",
         cost=16.2, short="basic",
         facts=(("work", "{mnr} = {mnr}1 + m({maj} - {maj}1)"), ("arithmetic", "fractions, rounding")),
@@ -195,17 +196,17 @@ _LINE = (
     Method(
         command="line", name="dda", title="DDA line algorithm",
         answer=_L + "dda_answer", generator=_G + "lines:dda",
-        derivation=_L + "dda_derivation", pseudocode=_L + "dda_pseudocode",
+        derivation=_LP + "dda_derivation", pseudocode=_LP + "dda_pseudocode",
         model=_MODELS + "dda_line", raster=_G + "raster:line", errata=_ERRATA + "dda_line",
-        practice=_L + "dda_practice", rows=_L + "rows", cost=20.7, short="DDA",
+        practice=_LP + "dda_practice", rows=_L + "rows", cost=20.7, short="DDA",
         facts=(("work", "x += x_inc, y += y_inc"), ("arithmetic", "fractions, rounding")),
     ),
     Method(
         command="line", name="bresenham", title="Bresenham's line algorithm",
         answer=_L + "bresenham_answer", generator=_G + "lines:bresenham",
-        derivation=_L + "bresenham_derivation", pseudocode=_L + "bresenham_pseudocode",
+        derivation=_LP + "bresenham_derivation", pseudocode=_LP + "bresenham_pseudocode",
         model=_MODELS + "bresenham_line", raster=_G + "raster:line",
-        errata=_ERRATA + "bresenham_line", practice=_L + "bresenham_practice", rows=_L + "rows",
+        errata=_ERRATA + "bresenham_line", practice=_LP + "bresenham_practice", rows=_L + "rows",
         cost=9.8, short="Bresenham",
         facts=(("work", "p += 2{d} or 2{d} - 2d{maj}"), ("arithmetic", "integers only")),
     ),
@@ -248,10 +249,12 @@ _CIRCLE_SHORT = {
     "midpoint": "midpoint",
     "bresenham": "Bresenham",
     "polynomial": "polynomial",
+    "general": "general",  # the notes' general method: question 30 compares it (issue 39)
     "trig": "trig",
     "symmetric-dda": "sym. DDA",
 }
 _CIRCLE_TAGS = {
+    "general": "general",
     "bresenham": "Bresenham",
     "polynomial": "poly",
     "trig": "trig",
@@ -448,11 +451,20 @@ _DITHER = (
            _G + "dither:threshold", model="DitherTable"),
     _plain("dither", "ordered", "ordered dither (Bayer matrix)", "scanconv.answers.image.dither:ordered_solution",
            _G + "dither:ordered", model="DitherTable"),
+    _plain("dither", "lookup", "dither threshold looked up by screen position",
+           "scanconv.answers.image.dither:lookup_solution", None,
+           no_generator="one closed-form lookup per pixel (algorithms.dither.lookup)", model="PlainRowsTable"),
     _plain("dither", "floyd-steinberg", "Floyd-Steinberg error diffusion",
            "scanconv.answers.image.dither:diffusion_solution", _G + "dither:error_diffusion",
            model="DiffusionTable"),
     _plain("halftone", "pattern", "halftone patterns", "scanconv.answers.image.dither:pattern_solution", None,
            no_generator="one pattern per level, from the Bayer matrix", model="PlainRowsTable"),
+)  # fmt: skip
+
+_PRINTER = (
+    _plain("printer", "halftone", "halftone printing arithmetic (dpi, lpi, cell, levels)",
+           "scanconv.answers.image.halftone:printer_solution", None,
+           no_generator="arithmetic, worked in one pass", model="PlainRowsTable"),
 )  # fmt: skip
 
 _INSIDE = tuple(
@@ -526,7 +538,7 @@ def _with_costs(m: Method) -> Method:
 METHODS: dict[str, Method] = {
     m.key: _with_costs(m)
     for m in (
-        *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_INSIDE,
+        *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_PRINTER, *_INSIDE,
         *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS,
     )
 }  # fmt: skip

@@ -28,6 +28,7 @@ class DitherScale(str, Enum):
 
     raw = "raw"
     centered = "centered"
+    given = "given"
 
 
 class Base(str, Enum):
@@ -42,6 +43,13 @@ class Kernel(str, Enum):
 
     floyd_steinberg = "floyd-steinberg"
     simple = "simple"
+    jarvis_judice_ninke = "jarvis-judice-ninke"
+    stucki = "stucki"
+    burkes = "burkes"
+    sierra = "sierra"
+    two_row_sierra = "two-row-sierra"
+    sierra_lite = "sierra-lite"
+    one_dimensional = "one-dimensional"
 
 
 class ScanOrder(str, Enum):
@@ -63,6 +71,20 @@ class Carry(str, Enum):
 
     kept = "kept"
     clamped = "clamped"
+
+
+class Major(str, Enum):
+    """A frame buffer stores rows or columns one after another."""
+
+    row = "row"
+    column = "column"
+
+
+class RowZero(str, Enum):
+    """A frame buffer's y = 0: the top scan line or the bottom one."""
+
+    top = "top"
+    bottom = "bottom"
 
 
 class InsideRule(str, Enum):
@@ -141,40 +163,79 @@ def dither_threshold(
     return commands.dither_threshold(image, top, at, compare)
 
 
+MatrixOpt = Annotated[
+    str,
+    typer.Option(
+        "--matrix",
+        "-m",
+        metavar="N|ROWS",
+        help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's.",
+    ),
+]
+ScaleOpt = Annotated[
+    DitherScale,
+    choice(
+        "--scale",
+        help="Thresholds: raw (D x TOP / n^2), centered ((D + 1/2) x TOP / n^2), or given "
+        "(the matrix's entries are thresholds already, in the image's units).",
+    ),
+]
+BaseOpt = Annotated[Base, choice("--base", help="The matrix's entries count from 0 or from 1.")]
+TransposeOpt = Annotated[
+    bool, typer.Option("--transpose", help="Index the matrix by x first (its transpose).")
+]
+
+
 @dither_app.command("ordered", context_settings=NUMERIC_ARGS)
 @answers(picture=True, origin=False)
 def dither_ordered(
     image: Image,
     top: Top = TOP,
-    matrix: Annotated[
-        str,
-        typer.Option(
-            "--matrix",
-            "-m",
-            metavar="N|ROWS",
-            help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's.",
-        ),
-    ] = "2",
+    matrix: MatrixOpt = "2",
     compare: CompareOpt = Compare.gt,
-    scale: Annotated[
-        DitherScale,
-        choice(
-            "--scale",
-            help="Thresholds: raw (D x TOP / n^2) or centered ((D + 1/2) x TOP / n^2).",
-        ),
-    ] = DitherScale.raw,
-    base: Annotated[
-        Base, choice("--base", help="The matrix's entries count from 0 or from 1.")
-    ] = Base.zero,
-    transpose: Annotated[
-        bool, typer.Option("--transpose", help="Index the matrix by x first (its transpose).")
-    ] = False,
+    scale: ScaleOpt = DitherScale.raw,
+    base: BaseOpt = Base.zero,
+    transpose: TransposeOpt = False,
 ) -> Solution:
     """Ordered dither: the threshold matrix tiled over the image, one comparison per pixel.
 
     Example: scanconv dither ordered --image "10 200; 60 90" --matrix 2
     """
     return commands.dither_ordered(image, top, matrix, compare, scale, base, transpose)
+
+
+@dither_app.command("lookup", context_settings=NUMERIC_ARGS)
+@answers(grid=False)
+def dither_lookup(
+    pixels: Annotated[
+        list[str],
+        typer.Argument(
+            metavar="X Y ...",
+            help="The pixels' screen positions: x across, y down (row y), in pairs.",
+            show_default=False,
+        ),
+    ],
+    matrix: MatrixOpt = "4",
+    top: Top = TOP,
+    value: Annotated[
+        Fraction | None,
+        num_option("--value", help="The pixels' intensity: each is on when it passes T."),
+    ] = None,
+    count: Annotated[
+        Base, choice("--count", help="Screen positions count from 0 or from 1.")
+    ] = Base.zero,
+    compare: CompareOpt = Compare.gt,
+    scale: ScaleOpt = DitherScale.raw,
+    base: BaseOpt = Base.zero,
+    transpose: TransposeOpt = False,
+) -> Solution:
+    """A pixel's dither threshold from its screen position: T[y mod n][x mod n].
+
+    Example: scanconv dither lookup 5 2 --matrix 4 --value 100
+    """
+    return commands.dither_lookup(
+        pixels, matrix, top, value, count, compare, scale, base, transpose
+    )
 
 
 @dither_app.command("floyd-steinberg", context_settings=NUMERIC_ARGS)
@@ -184,7 +245,12 @@ def dither_diffusion(
     top: Top = TOP,
     kernel: Annotated[
         Kernel,
-        choice("--kernel", help="floyd-steinberg (7, 3, 5, 1)/16 or simple (3, 3, 2)/8."),
+        choice(
+            "--kernel",
+            help="floyd-steinberg (7, 3, 5, 1)/16, simple (3, 3, 2)/8, jarvis-judice-ninke /48, "
+            "stucki /42, burkes /32, sierra /32, two-row-sierra /16, sierra-lite /4, or "
+            "one-dimensional (all to the next pixel).",
+        ),
     ] = Kernel.floyd_steinberg,
     order: Annotated[
         ScanOrder,
@@ -204,24 +270,6 @@ def dither_diffusion(
     Example: scanconv dither floyd-steinberg --image "100 100; 100 100"
     """
     return commands.dither_diffusion(image, top, kernel, order, arithmetic, carry, compare)
-
-
-@app.command(context_settings=NUMERIC_ARGS)
-@answers(grid=False)
-def halftone(
-    n: Annotated[Fraction, num_arg("N, the halftone cell's width: 2, 4, 8 or 16.", "N")],
-    level: Annotated[
-        Fraction | None, num_option("--level", "-l", help="Only the pattern of this level.")
-    ] = None,
-    bits: Annotated[
-        Fraction | None, num_option("--bits", help="Bits per pixel of the device (default 1).")
-    ] = None,
-) -> Solution:
-    """Halftone patterns: the levels an N x N cell gives and the pattern of each level.
-
-    Example: scanconv halftone 2
-    """
-    return commands.halftone(n, level, bits)
 
 
 @app.command(context_settings=NUMERIC_ARGS)
@@ -275,12 +323,66 @@ def framebuffer(
     interlaced: Annotated[
         bool, typer.Option("--interlaced", help="Interlaced: --refresh counts fields.")
     ] = False,
+    dpi: Annotated[
+        Fraction | None,
+        num_option("--dpi", help="Dots per inch: W and H are the screen's size in inches."),
+    ] = None,
+    pixel: Annotated[
+        tuple[Fraction, Fraction] | None,
+        num_option(
+            "--pixel", metavar="X Y", help="The pixel whose frame-buffer address is wanted."
+        ),
+    ] = None,
+    address: Annotated[
+        Fraction | None,
+        num_option("--address", help="A byte address: the pixel stored there."),
+    ] = None,
+    base: Annotated[
+        Fraction | None, num_option("--base", help="The frame buffer's first byte (default 0).")
+    ] = None,
+    major: Annotated[
+        Major, choice("--major", help="The buffer holds rows (row-major) or columns.")
+    ] = Major.row,
+    row0: Annotated[
+        RowZero, choice("--row0", help="y = 0 is the top scan line or the bottom one.")
+    ] = RowZero.top,
+    count: Annotated[Base, choice("--count", help="x and y counted from 0 or from 1.")] = Base.zero,
+    hretrace: Annotated[
+        Fraction | None,
+        num_option("--hretrace", help="Horizontal retrace time, seconds (with --refresh)."),
+    ] = None,
+    vretrace: Annotated[
+        Fraction | None, num_option("--vretrace", help="Vertical retrace time, seconds.")
+    ] = None,
+    pixel_time: Annotated[
+        Fraction | None,
+        num_option("--pixel-time", help="Seconds a pixel gets: the frame rate follows."),
+    ] = None,
 ) -> Solution:
-    """Frame-buffer arithmetic: its size, bit planes and colours, a look-up table, load time.
+    """Frame-buffer arithmetic: pixels, size, bit planes, a look-up table, load and refresh
+    times, retrace, and a pixel's address.
 
-    Example: scanconv framebuffer 1280 1024 8 --lut 24 --rate 1e6 --refresh 60
+    Example: scanconv framebuffer 640 480 8 --pixel 340 150
     """
-    return commands.framebuffer(width, height, bits, lut, rate, refresh, interlaced)
+    return commands.framebuffer(
+        width,
+        height,
+        bits,
+        lut,
+        rate,
+        refresh,
+        interlaced,
+        dpi=dpi,
+        pixel=pixel,
+        address=address,
+        base=base,
+        major=major,
+        row0=row0,
+        count=count,
+        hretrace=hretrace,
+        vretrace=vretrace,
+        pixel_time=pixel_time,
+    )
 
 
 _X1 = num_arg("x of the first end point P1.", "X1")

@@ -27,6 +27,7 @@ __all__ = [
     "BitOrderName",
     "BoundaryName",
     "CarryName",
+    "CellOrderName",
     "CircleMethodName",
     "ClipEndsName",
     "ColorDepthName",
@@ -34,6 +35,7 @@ __all__ = [
     "CompareName",
     "ConventionName",
     "DitherBaseName",
+    "DitherCountName",
     "DitherScaleName",
     "DivideName",
     "EllipseP0Name",
@@ -42,10 +44,12 @@ __all__ = [
     "InsideRuleName",
     "KernelName",
     "LayoutName",
+    "LevelCountName",
     "LineAlgorithmName",
     "LineClipMethodName",
     "LineScaleName",
     "LoopName",
+    "MajorName",
     "MidpointName",
     "MidpointStopName",
     "NormalsName",
@@ -54,9 +58,11 @@ __all__ = [
     "P0Name",
     "PackingName",
     "PolygonClipMethodName",
+    "PrinterDotsName",
     "RasterLineName",
     "ReconName",
     "RoundingName",
+    "RowZeroName",
     "ScanOrderName",
     "StartName",
     "StrokeAlgorithmName",
@@ -149,18 +155,41 @@ OriginName = Literal["bottom-left", "top-left"]
 """Where a sampled image's row 0 is (:data:`scanconv.algorithms.sample.ORIGINS`)."""
 CompareName = Literal[">", ">="]
 """A dither's comparison (:data:`scanconv.algorithms.dither.DITHER_KNOBS`, as the next five)."""
-DitherScaleName = Literal["raw", "centered"]
-"""The ordered dither's thresholds: ``d·top/n²`` (``raw``) or ``(d + 1/2)·top/n²`` (``centered``)."""
+DitherScaleName = Literal["raw", "centered", "given"]
+"""The ordered dither's thresholds: ``d·top/n²`` (``raw``), ``(d + 1/2)·top/n²`` (``centered``) or
+the entries themselves, already in the image's units (``given``)."""
 DitherBaseName = Literal["0", "1"]
 """The Bayer matrix's entries counted from 0 (``0 .. n² - 1``) or from 1."""
-KernelName = Literal["floyd-steinberg", "simple"]
-"""The error-diffusion kernel."""
+DitherCountName = Literal["0", "1"]
+"""A pixel's screen position counted from 0 or from 1 (a threshold's lookup)."""
+KernelName = Literal[
+    "floyd-steinberg",
+    "simple",
+    "jarvis-judice-ninke",
+    "stucki",
+    "burkes",
+    "sierra",
+    "two-row-sierra",
+    "sierra-lite",
+    "one-dimensional",
+]
+"""The error-diffusion kernel (:data:`scanconv.algorithms.dither.KERNELS`)."""
 ScanOrderName = Literal["raster", "serpentine"]
 """The error diffusion's scan: every row left to right, or alternate rows reversed."""
 ArithmeticName = Literal["exact", "integer"]
 """The error diffusion's arithmetic: exact fractions, or each share truncated toward 0."""
 CarryName = Literal["kept", "clamped"]
 """Negative errors ``kept``, or ``clamped`` at 0."""
+LevelCountName = Literal["n2+1", "n2"]
+"""An n x n halftone cell's levels: n² + 1 or n² (:data:`scanconv.answers.image.halftone.PRINTER_KNOBS`)."""
+PrinterDotsName = Literal["whole", "exact"]
+"""A printer's cell from dpi / lpi: whole dots, or the ratio itself."""
+MajorName = Literal["row", "column"]
+"""A frame buffer stores rows or columns one after another (:data:`scanconv.algorithms.framebuffer.ADDRESS_KNOBS`)."""
+RowZeroName = Literal["top", "bottom"]
+"""A frame buffer's y = 0: the top scan line or the bottom one."""
+CellOrderName = Literal["bayer", "clustered"]
+"""How a halftone cell fills (:data:`scanconv.algorithms.dither.CELL_ORDERS`)."""
 BitOrderName = Literal["msb", "lsb"]
 """A line style's mask read from its most or least significant bit; a glyph row's leftmost pixel in a byte's most or least significant bit."""
 PackingName = Literal["rows", "columns", "bits"]

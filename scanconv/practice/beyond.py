@@ -13,6 +13,7 @@ import random
 from typing import Any
 
 from ..answers.methods import method
+from . import windows
 from .records import PracticeQuestion, line_question
 
 
@@ -22,7 +23,7 @@ def _image(rng: random.Random, rows: int, cols: int) -> str:
 
 def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     if kind == "halftone":
-        n = 4 if difficulty == "hard" else 2
+        n = {"easy": 2, "exam": rng.choice((2, 3)), "hard": rng.choice((4, 5))}[difficulty]
         return PracticeQuestion(
             "dither",
             ("halftone", str(n)),
@@ -31,9 +32,16 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
             6 if n == 2 else 10,
             frozenset({kind}),
         )
+    if kind == "printer":
+        return _printer(rng)
+    if kind == "lookup":
+        return _lookup(rng, difficulty)
     rows, cols = {"easy": (2, 2), "exam": (2, 4), "hard": (4, 4)}[difficulty]
+    if kind == "kernel":
+        rows += 1  # the kernels reaching two rows down show their third row
     image = _image(rng, rows, cols)
-    argv: tuple[str, ...] = ("dither", kind, "--image", image, "--top", "255")
+    command = "floyd-steinberg" if kind == "kernel" else kind
+    argv: tuple[str, ...] = ("dither", command, "--image", image, "--top", "255")
     if kind == "ordered":
         n = 4 if difficulty == "hard" else 2
         argv += ("--matrix", str(n))
@@ -41,6 +49,10 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     elif kind == "threshold":
         how = "a threshold of 128"
         argv += ("--at", "128")
+    elif kind == "kernel":
+        kernel = rng.choice(_KERNELS)
+        argv += ("--kernel", kernel)
+        how = f"error diffusion with the {_KERNEL_NAMES[kernel]} kernel"
     else:
         how = "Floyd-Steinberg error diffusion (7/16, 3/16, 5/16, 1/16)"
     return PracticeQuestion(
@@ -53,6 +65,66 @@ def dither(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     )
 
 
+_KERNEL_NAMES = {
+    "jarvis-judice-ninke": "Jarvis-Judice-Ninke (weights over 48)",
+    "stucki": "Stucki (over 42)",
+    "burkes": "Burkes (over 32)",
+    "sierra": "Sierra (three rows, over 32)",
+    "two-row-sierra": "two-row Sierra (over 16)",
+    "sierra-lite": "Sierra Lite (2/4 right, 1/4 below left, 1/4 below)",
+    "one-dimensional": "one-dimensional (all of the error to the next pixel)",
+}
+_KERNELS = tuple(_KERNEL_NAMES)
+
+
+def _printer(rng: random.Random) -> PracticeQuestion:
+    """A printer's halftone arithmetic, asked forward (dpi, lpi) or back (dpi, levels)."""
+    dpi = rng.choice((300, 600, 1200, 2400))
+    if rng.random() < 0.5:
+        lpi = rng.choice((50, 60, 75, 100, 150))
+        argv: tuple[str, ...] = ("printer", "--dpi", str(dpi), "--lpi", str(lpi))
+        ask = (
+            f"prints a halftone screen of {lpi} lines per inch: how many dots a side has a "
+            "halftone cell, and how many gray levels does it give?"
+        )
+    else:
+        levels = rng.choice((17, 26, 65, 101, 257))
+        argv = ("printer", "--dpi", str(dpi), "--levels", str(levels))
+        ask = (
+            f"must print at least {levels} gray levels: what is the smallest halftone cell, and "
+            "how many lines per inch does the screen have?"
+        )
+    return PracticeQuestion(
+        "dither",
+        argv,
+        f"A {dpi} dpi printer {ask} (an n x n cell gives n^2 + 1 levels)",
+        4,
+        frozenset({"printer"}),
+    )
+
+
+def _lookup(rng: random.Random, difficulty: str) -> PracticeQuestion:
+    """A pixel's ordered-dither threshold from its screen position."""
+    n = 2 if difficulty == "easy" else 4
+    count = "1" if difficulty == "hard" else "0"
+    pixels = [(rng.randrange(int(count), 20), rng.randrange(int(count), 20)) for _ in range(2)]
+    value = rng.randrange(0, 256)
+    argv = (
+        "dither", "lookup", *(str(v) for p in pixels for v in p), "--matrix", str(n),
+        "--value", str(value), "--count", count,
+    )  # fmt: skip
+    where = " and ".join(f"({x}, {y})" for x, y in pixels)
+    return PracticeQuestion(
+        "dither",
+        argv,
+        f"With the {n} x {n} Bayer matrix tiled over the screen (positions counted from "
+        f"{count}, thresholds D x 255 / {n * n}), find the threshold of the pixels at {where} "
+        f"(x across, y down) and say whether a pixel of intensity {value} is on there.",
+        4,
+        frozenset({"lookup"}),
+    )
+
+
 _POLYGONS = (
     ((0, 0, 8, 0, 8, 8, 4, 3, 0, 8), "concave"),
     ((0, 0, 8, 0, 8, 6, 0, 6), "convex"),
@@ -61,8 +133,10 @@ _POLYGONS = (
 )
 
 
-def inside(rng: random.Random, difficulty: str, kind: int) -> PracticeQuestion:
-    coords, shape = _POLYGONS[kind]
+def inside(rng: random.Random, difficulty: str, kind: int | str) -> PracticeQuestion:
+    if kind == "left-bottom":
+        return _on_the_boundary(rng, difficulty)
+    coords, shape = _POLYGONS[int(kind)]
     count = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
     points = [str(rng.randrange(0, 9)) for _ in range(2 * count)]
     rule = "both" if difficulty != "easy" else rng.choice(("even-odd", "nonzero"))
@@ -80,10 +154,51 @@ def inside(rng: random.Random, difficulty: str, kind: int) -> PracticeQuestion:
     )
 
 
+def _on_the_boundary(rng: random.Random, difficulty: str) -> PracticeQuestion:
+    """Points on a rectangle's edges (one on a left or bottom edge, one on a right or top
+    edge) and one inside, by the left-bottom boundary rule."""
+    w, h = (rng.randrange(4, 9) * {"easy": 1, "exam": 2, "hard": 3}[difficulty] for _ in "wh")
+    near = rng.choice(((0, rng.randrange(1, h)), (rng.randrange(1, w), 0)))
+    far = rng.choice(((w, rng.randrange(1, h)), (rng.randrange(1, w), h)))
+    points = [near, far, (rng.randrange(1, w), rng.randrange(1, h))]
+    rng.shuffle(points)
+    coords = (0, 0, w, 0, w, h, 0, h)
+    return PracticeQuestion(
+        "inside",
+        (
+            "inside",
+            *map(str, coords),
+            "--points",
+            *(str(v) for p in points for v in p),
+            "--rule",
+            "even-odd",
+            "--boundary",
+            "left-bottom",
+        ),
+        f"Is each point {_pairs(tuple(v for p in points for v in p))} inside the rectangle "
+        f"{_pairs(coords)} by the odd-even rule? A point on the boundary is inside on a left "
+        "or bottom edge and outside on a right or top edge (the scan-line fill's rule): give "
+        "each point's crossings and verdict.",
+        6,
+        frozenset({"left-bottom", "rectangle"}),
+    )
+
+
 _CLIP_WINDOW = {"easy": (2, 2, 8, 6), "exam": (10, 10, 50, 40), "hard": (-10, -5, 30, 25)}
 
 
+_SHAPED = {
+    "sutherland-hodgman triangle": windows.triangle_window,
+    "sutherland-hodgman hexagon": windows.hexagon_window,
+    "weiler-atherton touching": windows.touching,
+    "midpoint-subdivision edge stop": windows.edge_stop,
+}
+"""The clipping kinds against a window of any shape (:mod:`.windows`)."""
+
+
 def clipping(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    if kind in _SHAPED:
+        return _SHAPED[kind](rng, difficulty, kind)
     xmin, ymin, xmax, ymax = _CLIP_WINDOW[difficulty]
     span = xmax - xmin
     window = tuple(map(str, (xmin, ymin, xmax, ymax)))
@@ -138,6 +253,20 @@ def framebuffer(rng: random.Random, difficulty: str, kind: str) -> PracticeQuest
     elif kind == "lut":
         argv += ("--lut", "24")
         ask = "with a 24-bit colour look-up table, how large is the table and how many colours?"
+    elif kind == "address":
+        x, y = rng.randrange(w), rng.randrange(h)
+        argv += ("--pixel", str(x), str(y))
+        ask = (
+            f"stored row by row from the top-left (from 0, at address 0), at which byte is pixel "
+            f"({x}, {y})?"
+        )
+    elif kind == "retrace":
+        argv += ("--refresh", "60", "--hretrace", "5e-6", "--vretrace", "5e-4")
+        ask = (
+            "at 60 Hz non-interlaced, with a horizontal retrace of 5 us and a vertical retrace of "
+            "500 us, what share of the refresh time is spent in retrace, and how long does a scan "
+            "line get?"
+        )
     else:
         interlaced = kind == "interlaced"
         argv += ("--refresh", "60", *(("--interlaced",) if interlaced else ()))
@@ -158,6 +287,17 @@ def attributes(rng: random.Random, difficulty: str, kind: str) -> PracticeQuesti
     x2, y2 = x1 + length, y1 + rng.randrange(1, length // 2 + 1)
     ends = tuple(map(str, (x1, y1, x2, y2)))
     line = f"the line from ({x1}, {y1}) to ({x2}, {y2})"
+    if kind == "mask lsb":  # the mask as written, its bit 0 applied first
+        mask = rng.choice(("1100", "11000", "111000", "11110000"))
+        return PracticeQuestion(
+            "attributes",
+            ("linestyle", *ends, "--mask", mask, "--bits", "lsb"),
+            f"Draw {line} with the line mask {mask} (bit {len(mask) - 1} on the left, bit 0 "
+            "on the right), applied from its least significant bit (Bresenham's line "
+            "algorithm): give each pixel, its mask bit and whether it is drawn.",
+            6,
+            frozenset({kind, "dashed"}),
+        )
     if kind in ("dashed", "dotted"):
         mask = rng.choice(("1110", "11100", "111000")) if kind == "dashed" else "10"
         return PracticeQuestion(
@@ -220,6 +360,10 @@ _GLYPHS = "AEFHLTXZ"
 def characters(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     ch = rng.choice(_GLYPHS)
     scale = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
+    if kind == "font table":
+        return windows.font_table(rng, difficulty, kind, ch)
+    if kind == "glyph bytes":
+        return windows.glyph_bytes(rng, difficulty, kind, ch)
     if kind == "storage":
         count = rng.choice((96, 128, 256))
         w, h = rng.choice(((5, 7), (7, 9), (8, 8), (9, 14)))
@@ -276,8 +420,16 @@ def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQue
 
 
 KINDS: dict[str, list[Any]] = {
-    "dither": ["ordered", "floyd-steinberg", "threshold", "halftone"],
-    "inside": [0, 1, 2, 3],
+    "dither": [
+        "ordered",
+        "floyd-steinberg",
+        "threshold",
+        "halftone",
+        "kernel",
+        "lookup",
+        "printer",
+    ],
+    "inside": [0, 1, 2, 3, "left-bottom"],
     "clip": [
         "cohen-sutherland",
         "liang-barsky",
@@ -285,10 +437,14 @@ KINDS: dict[str, list[Any]] = {
         "midpoint-subdivision",
         "weiler-atherton",
         "nicholl-lee-nicholl",
+        "sutherland-hodgman triangle",
+        "weiler-atherton touching",
+        "sutherland-hodgman hexagon",
+        "midpoint-subdivision edge stop",
     ],
-    "framebuffer": ["load", "lut", "refresh", "interlaced"],
-    "attributes": ["dashed", "replication", "dotted", "brush"],
-    "characters": ["bitmap", "stroke", "storage"],
+    "framebuffer": ["load", "lut", "refresh", "interlaced", "address", "retrace"],
+    "attributes": ["dashed", "replication", "dotted", "brush", "mask lsb"],
+    "characters": ["bitmap", "stroke", "storage", "font table", "glyph bytes"],
     "antialias": ["wu", "area", "subpixel", "wu-coverage"],
     "midpoint-line": [
         f"octant {o}{', tie' if tie else ''}"

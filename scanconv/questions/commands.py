@@ -396,6 +396,30 @@ def dither_ordered(
     )
 
 
+def dither_lookup(
+    pixels: list[Any],
+    matrix: Any,
+    top: Any,
+    value: Any,
+    count: Any,
+    compare: Any,
+    scale: Any,
+    base: Any,
+    transpose: bool,
+) -> Solution:
+    return api.dither_lookup(
+        pixels,
+        "4" if matrix is None else matrix,
+        255 if top is None else top,
+        value=value,
+        count=_text(count),
+        compare=_text(compare),
+        scale=_text(scale),
+        base=_text(base),
+        transpose=transpose,
+    )
+
+
 def dither_diffusion(
     image: str,
     top: Any,
@@ -416,8 +440,25 @@ def dither_diffusion(
     )
 
 
-def halftone(n: Any, level: Any, bits: Any) -> Solution:
-    return api.halftone(n, level=level, bits=1 if bits is None else bits)
+def halftone(n: Any, level: Any, bits: Any, order: Any = None, matrix: Any = None) -> Solution:
+    return api.halftone(
+        n,
+        level=level,
+        bits=1 if bits is None else bits,
+        order=_text(order) or "bayer",
+        matrix=matrix,
+    )
+
+
+def printer(dpi: Any, lpi: Any, cell: Any, levels: Any, count: Any, dots: Any) -> Solution:
+    return api.printer(
+        dpi,
+        lpi,
+        cell=cell,
+        levels=levels,
+        count=_text(count) or "n2+1",
+        dots=_text(dots) or "whole",
+    )
 
 
 def inside(words: list[str], rule: Any, boundary: Any) -> Solution:
@@ -426,10 +467,21 @@ def inside(words: list[str], rule: Any, boundary: Any) -> Solution:
 
 
 def framebuffer(
-    width: Any, height: Any, bits: Any, lut: Any, rate: Any, refresh: Any, interlaced: bool
+    width: Any,
+    height: Any,
+    bits: Any,
+    lut: Any,
+    rate: Any,
+    refresh: Any,
+    interlaced: bool,
+    **more: Any,
 ) -> Solution:
+    """``framebuffer``'s answer; ``more``: the address, retrace and dpi options, as given."""
+    given = {k: _text(v) for k, v in more.items() if v is not None}
+    if "pixel" in given:
+        given["pixel"] = tuple(given["pixel"])
     return api.framebuffer(
-        width, height, bits, lut=lut, rate=rate, refresh=refresh, interlaced=interlaced
+        width, height, bits, lut=lut, rate=rate, refresh=refresh, interlaced=interlaced, **given
     )
 
 
@@ -506,7 +558,8 @@ BODIES: dict[str, Body] = {
         local_control, circle, ellipse, compare_line, compare_circle, compare_curves, transform,
         viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon,
         fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color,
-        theory, clip_convex, dither_threshold, dither_ordered, dither_diffusion, halftone, inside,
+        theory, clip_convex, dither_threshold, dither_ordered, dither_lookup, dither_diffusion,
+        halftone, printer, inside,
         framebuffer, line_style, thick_line, char_bitmap, char_stroke, char_storage,
     )
 }  # fmt: skip

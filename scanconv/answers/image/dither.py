@@ -14,14 +14,16 @@ from typing import Any
 
 from ...algorithms import dither as d
 from ...core.checks import InputError
-from ...core.numeric import Number, fmt_short, normalize
+from ...core.numeric import Number, fmt, fmt_short, normalize
 from ...core.records import (
     Column,
+    Plot,
     Quantity,
     ShadedMatrix,
     Solution,
     Step,
     Table,
+    Walk,
     heading,
     rule,
     worked,
@@ -29,7 +31,7 @@ from ...core.records import (
 from ..process._shared import matrix_tex, matrix_text
 from ._shared import matrix_columns
 
-METHODS = ("threshold", "ordered", "floyd-steinberg", "pattern")
+METHODS = ("threshold", "ordered", "lookup", "floyd-steinberg", "pattern")
 """The dithering methods, as ``scanconv dither METHOD`` takes them."""
 
 
@@ -91,7 +93,7 @@ def _rows_of(steps: Callable[[], Iterator[Step]], width: int) -> Callable[[], It
     return rows
 
 
-_CELL = (heading("k", "k"), heading("i", "i"), heading("j", "j"))
+_CELL = (heading("k", "k", role="label"), heading("i", "i"), heading("j", "j"))
 _DECIDED = (
     heading("value", "I(i, j)"),
     heading("threshold", "T"),
@@ -135,12 +137,14 @@ def _solution(
         title=title,
         given=tuple(_given_image(image, top)),
         derived=tuple(derived),
-        columns=(*_CELL, *columns),
-        extra_keys=("i", "j", *extra_keys),
-        steps=rows,
         notes=tuple(notes),
-        tables=(out_table,),
-        figures=(picture,),
+        walk=Walk(
+            columns=(*_CELL, *columns),
+            extra_keys=("i", "j", *extra_keys),
+            steps=rows,
+            tables=(out_table,),
+        ),
+        plot=Plot(figures=(picture,)),
         data={**data, "output": [list(r) for r in out]},
     )
 
@@ -188,6 +192,28 @@ def _dither_matrix(matrix: int | Sequence[Sequence[Number]]) -> tuple[d.Matrix, 
     return m, f"the {len(m)} x {len(m[0])} matrix given"
 
 
+def _thresholds(
+    dm: d.Matrix, top: Number, scale: str, base: str, transpose: bool
+) -> tuple[d.Matrix, list[Quantity], str]:
+    """The threshold matrix of ``dm``, the working that gives it (D, the rule, T) and its
+    conventions in words for the notes."""
+    table = d.thresholds(dm, top, scale=scale, base=base, transpose=transpose)
+    read = "by columns (transposed)" if transpose else "by rows"
+    if scale == "given":  # the entries are the thresholds, in the image's units
+        how = rule("T", r"T = D \text{ (the entries are thresholds, in the image's units)}")
+        note = f"thresholds given (T = D, in the image's units), the matrix read {read}"
+    else:
+        n2 = len(dm) * len(dm[0])
+        shift = "" if base == "0" else " - 1"
+        half = " + 1/2" if scale == "centered" else ""
+        how = rule("T", f"T(d) = (d{shift}{half}) \\cdot {fmt_short(top)} / {n2}")
+        note = (
+            f"thresholds {scale} (T = (d{shift}{half}) * top / n^2), entries from {base}, "
+            f"the matrix read {read}"
+        )
+    return table, [_matrix("D", "D", dm), how, _matrix("thresholds", "T", table)], note
+
+
 def ordered_solution(
     image: Sequence[Sequence[Number]],
     matrix: int | Sequence[Sequence[Number]] = 2,
@@ -206,27 +232,15 @@ def ordered_solution(
     """
     img = _checked(image, top)
     dm, named = _dither_matrix(matrix)
-    n2 = len(dm) * len(dm[0])
-    table = d.thresholds(dm, top, scale=scale, base=base, transpose=transpose)
     rel = _COMPARE_TEX[d.choice("compare", compare)]
-    shift = "" if base == "0" else " - 1"
-    half = " + 1/2" if scale == "centered" else ""
-    derived = [
-        _matrix("D", "D", dm),
-        rule(
-            "T",
-            f"T(d) = (d{shift}{half}) \\cdot {fmt_short(top)} / {n2}",
-        ),
-        _matrix("thresholds", "T", table),
+    table, derived, t_note = _thresholds(dm, top, scale, base, transpose)
+    derived.append(
         rule(
             "test",
             f"\\text{{on when }} I(i, j) {rel} T[i \\bmod {len(table)}][j \\bmod {len(table[0])}]",
-        ),
-    ]
-    notes = [
-        f"Conventions: compare {compare}, thresholds {scale} (T = (d{shift}{half}) * top / n^2), "
-        f"entries from {base}, the matrix read {'by columns (transposed)' if transpose else 'by rows'}.",
-    ]
+        )
+    )
+    notes = [f"Conventions: compare {compare}, {t_note}."]
     return _solution(
         "ordered",
         f"Ordered dither with {named}",
@@ -246,8 +260,146 @@ def ordered_solution(
     )
 
 
+MAX_LOOKUPS = 64
+"""The most pixels looked up in one answer."""
+
+
+def _lookup_columns(n: int, m: int) -> tuple[Column, ...]:
+    """The columns of a lookup table (``value`` and ``output`` last: left out with no value)."""
+    return (
+        heading("k", "k"),
+        heading("x", "x"),
+        heading("y", "y"),
+        heading("i", "i"),
+        heading("j", "j"),
+        heading("row", rf"i \bmod {n}"),
+        heading("col", rf"j \bmod {m}"),
+        heading("threshold", "T"),
+        heading("value", "I"),
+        heading("output", r"\text{output}"),
+    )
+
+
+def lookup_solution(
+    pixels: Sequence[tuple[int, int]],
+    matrix: int | Sequence[Sequence[Number]] = 4,
+    top: Number = 1,
+    *,
+    value: Number | None = None,
+    count: str = "0",
+    compare: str = ">",
+    scale: str = "raw",
+    base: str = "0",
+    transpose: bool = False,
+) -> Solution:
+    """Each pixel's threshold from its screen position: ``T[(y - c) mod n][(x - c) mod n]``
+    (positions counted from ``c`` = ``count``), and whether a pixel of intensity ``value`` there
+    is on.
+
+    >>> sol = lookup_solution([(5, 2)], 4, 16, value=10)
+    >>> [s.extra for s in sol.steps()]
+    [(5, 2, 2, 5, 2, 1, 11, 10, 0)]
+    """
+    if not 1 <= len(pixels) <= MAX_LOOKUPS:
+        raise InputError(f"give 1 .. {MAX_LOOKUPS} pixels (X Y pairs), got {len(pixels)}", "pixels")
+    if not top > 0:
+        raise InputError(f"the scale's top must be positive, got {fmt_short(top)}", "top")
+    dm, named = _dither_matrix(matrix)
+    rel = _COMPARE_TEX[d.choice("compare", compare)]
+    table, derived, t_note = _thresholds(dm, top, scale, base, transpose)
+    c = int(d.choice("count", count))
+    found = [d.lookup(table, x, y, count) for x, y in pixels]
+    n, m = len(table), len(table[0])
+    at = f"y - {c}" if c else "y"
+    derived.append(
+        rule(
+            "lookup",
+            f"i = {at}, \\; j = {at.replace('y', 'x')}, \\; T(x, y) = "
+            f"T[i \\bmod {n}][j \\bmod {m}]",
+        )
+    )
+    if value is not None:
+        derived.append(
+            rule("test", f"\\text{{on when }} I {rel} T(x, y), \\; I = {fmt_short(value)}")
+        )
+    outputs = None if value is None else [int(d._on(value, f.threshold, compare)) for f in found]
+    notes = [
+        f"Conventions: positions counted from {c} (x across, y down: row i = {at}, column "
+        f"j = {at.replace('y', 'x')}), {t_note}, compare {compare}.",
+    ]
+
+    def steps() -> Iterator[Step]:
+        for k, ((x, y), f) in enumerate(zip(pixels, found, strict=True)):
+            extra = (x, y, f.i, f.j, f.row, f.col, f.threshold)
+            decided = () if outputs is None else (value, outputs[k])
+            yield Step(k, None, None, (x, y), extra + decided)
+
+    columns = _lookup_columns(n, m)
+    keys = ("x", "y", "i", "j", "row", "col", "threshold", "value", "output")
+    return Solution(
+        primitive="dither",
+        algorithm="lookup",
+        title=f"Dither thresholds looked up by position ({named})",
+        given=(
+            worked(
+                "pixels",
+                [list(p) for p in pixels],
+                "(x, y) = " + ", ".join(f"({x}, {y})" for x, y in pixels),
+            ),
+            worked("top", top, f"\\text{{intensities on the scale }} 0 \\ldots {fmt_short(top)}"),
+        ),
+        derived=tuple(derived),
+        walk=Walk(
+            columns=columns if value is not None else columns[:-2],
+            extra_keys=keys if value is not None else keys[:-2],
+            steps=steps,
+        ),
+        notes=tuple(notes),
+        data={
+            "matrix": [list(r) for r in dm],
+            "thresholds": [list(r) for r in table],
+            "lookups": [f.threshold for f in found],
+            "output": outputs,
+            "compare": compare,
+        },
+    )
+
+
+def _over(weight: Fraction, divisor: int) -> str:
+    """A kernel weight over the kernel's published divisor: ``2/8``, not ``1/4``."""
+    return "1" if divisor == 1 else f"{weight * divisor}/{divisor}"
+
+
 def _carries_text(carries: Sequence[d.Carry]) -> str:
-    return ", ".join(f"({c.pixel[1]}, {c.pixel[0]}) += {fmt_short(c.amount)}" for c in carries)
+    """Each share in the form of the table's other values (3 decimals, a whole number as it is),
+    never a decimal in one row and a fraction in the next (issue 39, item 8)."""
+    return ", ".join(f"({c.pixel[1]}, {c.pixel[0]}) += {fmt(c.amount)}" for c in carries)
+
+
+def _diffusion_notes(
+    img: d.Matrix, top: Number, kernel: str, order: str, arithmetic: str, carry: str, compare: str
+) -> list[str]:
+    """The conventions of an error diffusion, its kernel's source and its mean bound."""
+    half = normalize(Fraction(top) / 2)
+    notes = [
+        f"Conventions: kernel {kernel}, {order} order, {arithmetic} arithmetic, negative "
+        f"carries {carry}, on when I' {compare} {fmt_short(half)}; outputs 0 and {fmt_short(top)}.",
+        "I' is the pixel's value plus the error it received; shares that fall outside the "
+        "image are lost.",
+        f"Kernel {kernel}: weights over {d.KERNEL_DIVISORS[kernel]}, summing to 1; "
+        f"{d.KERNEL_SOURCES[kernel]}.",
+    ]
+    if order == "serpentine":
+        notes.append("Odd rows are scanned right to left, the kernel mirrored (j - 1 is ahead).")
+    if arithmetic == "exact" and carry == "kept":
+        lost = d.lost_weight(kernel, len(img), len(img[0]), order)
+        notes.append(
+            "The mean is kept within its bound: each error is at most top/2, so the input's "
+            "total less the output's (the shares lost off the edges) is at most top/2 x "
+            f"{fmt_short(lost)} (the kernel weight falling outside) = "
+            f"{fmt_short(normalize(Fraction(top) / 2 * lost))}."
+        )
+    return notes
 
 
 def diffusion_solution(
@@ -281,19 +433,12 @@ def diffusion_solution(
             "kernel",
             r"\text{shares: }"
             + ", ".join(
-                f"{s.weight.numerator}/{s.weight.denominator} \\text{{ to }} (i{s.di:+d}, j{s.dj:+d})"
+                f"{_over(s.weight, d.KERNEL_DIVISORS[kernel])} \\text{{ to }} (i{s.di:+d}, j{s.dj:+d})"
                 for s in shares
             ),
         ),
     ]
-    notes = [
-        f"Conventions: kernel {kernel}, {order} order, {arithmetic} arithmetic, negative "
-        f"carries {carry}, on when I' {compare} {fmt_short(half)}; outputs 0 and {fmt_short(top)}.",
-        "I' is the pixel's value plus the error it received; shares that fall outside the "
-        "image are lost.",
-    ]
-    if order == "serpentine":
-        notes.append("Odd rows are scanned right to left, the kernel mirrored (j - 1 is ahead).")
+    notes = _diffusion_notes(img, top, kernel, order, arithmetic, carry, compare)
 
     def steps() -> Iterator[Step]:
         for s in d.error_diffusion(
@@ -336,23 +481,58 @@ def diffusion_solution(
     )
 
 
-def pattern_solution(n: int, level: int | None = None, bits: int = 1) -> Solution:
-    """The n x n halftone patterns: how many levels they give and the pattern of each level
-    (or of one ``level``).
+_ORDER_NOTES = {
+    "bayer": "the cells turn on in the order of the Bayer matrix",
+    "clustered": "a dot grows from the cell's centre, nearest cells first, ties row by row",
+    "given": "the cells turn on in the order given",
+}
+
+
+def _cell(n: int, order: str, matrix: Sequence[Sequence[Number]] | None) -> tuple[Any, str]:
+    """The cell's order (ranks 0 .. n² - 1) and how it was made, in words."""
+    if matrix is not None:
+        ranks = d.check_cell(matrix)
+        if len(ranks) != n:
+            raise InputError(f"the cell's order is {len(ranks)} wide, not {n}", "matrix")
+        return ranks, _ORDER_NOTES["given"]
+    ranks = d.cell_order(n, order)
+    if order == "bayer" and n & (n - 1):
+        side = 1 << (n - 1).bit_length()
+        return ranks, (
+            f"the cells turn on in the order of the top-left {n} x {n} block of the "
+            f"{side} x {side} Bayer matrix, its entries ranked 0 .. {n * n - 1}"
+        )
+    return ranks, _ORDER_NOTES[order]
+
+
+def pattern_solution(
+    n: int,
+    level: int | None = None,
+    bits: int = 1,
+    *,
+    order: str = "bayer",
+    matrix: Sequence[Sequence[Number]] | None = None,
+) -> Solution:
+    """The n x n halftone patterns (any n from 1 to 16): how many levels they give and the
+    pattern of each level (or of one ``level``); ``order`` how the cell fills (``bayer`` or
+    ``clustered``), or the order given as a ``matrix``.
 
     >>> sol = pattern_solution(2)
     >>> [r[1] for r in sol.tables[0].rows()]
     ['0 0 / 0 0', '1 0 / 0 0', '1 0 / 0 1', '1 1 / 0 1', '1 1 / 1 1']
+    >>> pattern_solution(5).data["levels"]
+    26
     """
-    if not 2 <= n <= d.MAX_ORDER or n & (n - 1):
-        raise InputError(f"a halftone cell is 2, 4, 8 or 16 pixels wide, got {n}", "n")
+    if not 1 <= n <= d.MAX_ORDER:
+        raise InputError(f"a halftone cell is 1 .. {d.MAX_ORDER} pixels wide, got {n}", "n")
     if not 1 <= bits <= 8:
         raise InputError(f"bits per pixel must be 1..8, got {bits}", "bits")
+    ranks, how = _cell(n, order, matrix)
     count = d.pattern_levels(n, bits)
     levels = range(n * n + 1) if level is None else (level,)
-    patterns = [(lv, d.pattern(n, lv)) for lv in levels]
+    patterns = [(lv, d.pattern(n, lv, ranks)) for lv in levels]
     derived = [
-        _matrix("D", "D", d.bayer(n)),
+        _matrix("D", "D", ranks),
         worked(
             "levels",
             count,
@@ -381,10 +561,16 @@ def pattern_solution(n: int, level: int | None = None, bits: int = 1) -> Solutio
         ),
         derived=tuple(derived),
         notes=(
-            "Each pattern contains the one before it (the cells turn on in the order of the "
-            "Bayer matrix), so a region of slowly changing intensity shows no contour.",
+            f"Each pattern contains the one before it ({how}), so a region of slowly changing "
+            "intensity shows no contour.",
+            f"An n x n cell of bilevel dots gives n^2 + 1 = {n * n + 1} nested levels: level l has "
+            "l dots on.",
         ),
-        tables=(table,),
-        figures=figures,
-        data={"levels": count, "patterns": {lv: [list(r) for r in p] for lv, p in patterns}},
+        walk=Walk(tables=(table,)),
+        plot=Plot(figures=figures),
+        data={
+            "levels": count,
+            "order": [list(r) for r in ranks],
+            "patterns": {lv: [list(r) for r in p] for lv, p in patterns},
+        },
     )

@@ -21,6 +21,7 @@ from ...algorithms.circles import (
 from ...algorithms.conventions import ROUNDING_TEXT, convention_note, resolve, rounder
 from ...core import lazy
 from ...core.checks import InputError, check_integer
+from ...core.ideal import IdealCircle
 from ...core.numeric import (
     Number,
     fmt_value,
@@ -29,10 +30,13 @@ from ...core.numeric import (
 from ...core.records import (
     Move,
     Pixel,
+    Plot,
     Quantity,
     Solution,
     Step,
     Table,
+    Theory,
+    Walk,
     heading,
     rule,
     worked,
@@ -236,16 +240,11 @@ def circle_solution(
     derivation = rec.load("derivation") if derive else None
     listing = rec.load("pseudocode") if pseudocode else None
     title, derived, columns, extra_keys, steps, points, notes = rec.load("answer")(q)
-    if method in FLOAT_METHODS:
-        notes = (*notes, _rounding_note(rounding))
-    notes = (
-        *notes,
-        "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
-        "once, the first time it is plotted.",
+    notes = _circle_notes(method, notes, rounding)
+    added = Theory(
+        (theory.DERIVATION, *derivation(q)) if derivation is not None else (),
+        (listing(q),) if listing is not None else (),
     )
-    if derivation is not None:
-        derived = (*derived, theory.DERIVATION, *derivation(q))
-    code = (listing(q),) if listing is not None else ()
     data: dict[str, Any] = {"rounding": rounding} if method in FLOAT_METHODS else {}
     if annotate:
         notes = (*notes, convention_note("circle", convention, knobs))
@@ -260,20 +259,37 @@ def circle_solution(
         title=f"{title}: r = {ir}, centre ({ixc}, {iyc})",
         given=_circle_given(ir, ixc, iyc),
         derived=derived,
-        columns=columns,
-        extra_keys=extra_keys,
-        steps=steps,
-        pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
-        bbox=(ixc - ir, iyc - ir, ixc + ir, iyc + ir),
         notes=notes,
-        tables=(symmetry_table(points, images, ixc, iyc),),
-        marks=((ixc, iyc),),
-        geometry={"circle": (ixc, iyc, ir), "symmetry": 8, "center": (ixc, iyc)},
+        walk=Walk(
+            columns=columns,
+            extra_keys=extra_keys,
+            steps=steps,
+            tables=(symmetry_table(points, images, ixc, iyc),),
+            symmetry=8,
+            center=(ixc, iyc),
+        ),
+        plot=Plot(
+            pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
+            bbox=(ixc - ir, iyc - ir, ixc + ir, iyc + ir),
+            marks=((ixc, iyc),),
+            ideal=(IdealCircle(ixc, iyc, ir),),
+        ),
+        theory=added,
         data=data,
-        code=code,
     )
     sol.question = q
     return sol
+
+
+def _circle_notes(method: str, notes: tuple[str, ...], rounding: str) -> tuple[str, ...]:
+    """The method's notes, its rounding rule (a float method) and the 8-way symmetry's."""
+    if method in FLOAT_METHODS:
+        notes = (*notes, _rounding_note(rounding))
+    return (
+        *notes,
+        "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
+        "once, the first time it is plotted.",
+    )
 
 
 def _as_is(pixels: Iterator[Pixel]) -> Iterator[Pixel]:
@@ -355,7 +371,7 @@ def _midpoint_notes(
 
 
 _MIDPOINT_NOTES_COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("x_k", "x_k"),
     heading("y_k", "y_k"),
     heading("p", "p_k"),
@@ -363,7 +379,7 @@ _MIDPOINT_NOTES_COLUMNS = (
     heading("pixel", r"\text{plot } (x_k, y_k)"),
 )
 _MIDPOINT_COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("p", "p_k"),
     heading("pixel", "(x_{k+1}, y_{k+1})"),
     heading("two_x", "2x_{k+1}"),
@@ -456,7 +472,7 @@ def _general_parts(r: int, knobs: dict[str, str]) -> Parts:
         return general(r, tie, loop)
 
     columns = (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("x_k", "x"),
         heading("y_k", "y"),
         heading("p", "p"),
@@ -506,7 +522,7 @@ def _bresenham_parts(r: int, tie: str, xstep: str = "last") -> Parts:
         rule("loop", r"x_{k+1} = x_k + 1;\ \text{plot } (x_k, y_k) \text{ while } x \le y"),
     )
     columns = (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("p", "d_k"),
         heading("decision", r"\text{decision}"),
         heading("pixel", "(x_k, y_k)"),

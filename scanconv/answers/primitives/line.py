@@ -21,6 +21,7 @@ from ...algorithms.lines import (
 )
 from ...core import lazy
 from ...core.checks import InputError
+from ...core.ideal import IdealLine
 from ...core.numeric import (
     Number,
     fmt_exact,
@@ -30,7 +31,18 @@ from ...core.numeric import (
     normalize,
     round_half_up,
 )
-from ...core.records import Code, Pixel, Quantity, Solution, Step, heading, rule, worked
+from ...core.records import (
+    Pixel,
+    Plot,
+    Quantity,
+    Solution,
+    Step,
+    Theory,
+    Walk,
+    heading,
+    rule,
+    worked,
+)
 from ..asked import LineQuestion, knob_values, line_question
 from ..methods import method
 
@@ -179,10 +191,11 @@ def line_solution(
     derivation = rec.load("derivation") if derive else None
     listing = rec.load("pseudocode") if pseudocode else None
     sol: Solution = rec.load("answer")(q)
-    if derivation is not None:
-        sol.derived = (*sol.derived, *derivation(q))
-    if listing is not None:
-        sol.code = (*sol.code, listing(q))
+    if derivation is not None or listing is not None:
+        sol.theory = Theory(
+            derivation(q) if derivation is not None else sol.theory.derivation,
+            (*sol.theory.code, listing(q)) if listing is not None else sol.theory.code,
+        )
     sol.question = q
     return sol
 
@@ -202,13 +215,6 @@ def annotated(sol: Solution, q: LineQuestion) -> Solution:
     return sol
 
 
-def _orientation(q: LineQuestion) -> tuple[Number, Number, bool, int]:
-    """Δx, Δy, whether y is the major axis, and the sign of the slope."""
-    dx, dy = normalize(q.x2 - q.x1), normalize(q.y2 - q.y1)
-    sign = -1 if (dx > 0 > dy or dy > 0 > dx) else 1
-    return dx, dy, abs_value(dy) > abs_value(dx), sign
-
-
 # --- The pieces the line records name: each takes the question -----------------------------
 
 
@@ -220,68 +226,6 @@ def rows(q: LineQuestion) -> int:
     """
     dx, dy = abs(Fraction(q.x2 - q.x1)), abs(Fraction(q.y2 - q.y1))
     return math.ceil(max(dx, dy)) + 1
-
-
-def bresenham_derivation(q: LineQuestion) -> tuple[Quantity, ...]:
-    """``--derive`` for Bresenham's line: p and its increments from the line's equation."""
-    sx, sy, _, _, steep, dmaj, dmin, sign, _, _ = orient(*(int(v) for v in q.ends))
-    u0, v0 = (sy, sign * sx) if steep else (sx, sign * sy)
-    return (
-        theory.DERIVATION,
-        *theory.bresenham_line_derivation(u0, v0, dmaj, dmin, steep, sign),
-    )
-
-
-def bresenham_pseudocode(q: LineQuestion) -> Code:
-    """``--algorithm`` for Bresenham's line, in the question's octant and conventions."""
-    ix1, iy1, ix2, iy2 = (int(v) for v in q.ends)
-    sx, sy, _, _, steep, _, _, sign, _, _ = orient(ix1, iy1, ix2, iy2)
-    swapped = (sx, sy) != (ix1, iy1)
-    backward = swapped and q.knobs.start == "given"
-    return theory.bresenham_line_code(steep, sign, swapped, str(q.knobs.tie), backward)
-
-
-def dda_derivation(q: LineQuestion) -> tuple[Quantity, ...]:
-    """``--derive`` for the DDA: the increments from the slope."""
-    dx, dy, _, _ = _orientation(q)
-    return (theory.DERIVATION, *theory.dda_derivation(dx, dy, dda_steps(*q.points)))
-
-
-def dda_pseudocode(q: LineQuestion) -> Code:
-    """``--algorithm`` for the DDA."""
-    dx, dy, steep, sign = _orientation(q)
-    swapped = q.knobs.start == "swap" and (dy if steep else dx) < 0
-    return theory.dda_code(steep, sign, str(q.knobs.rounding), swapped)
-
-
-def basic_derivation(q: LineQuestion) -> tuple[Quantity, ...]:
-    """``--derive`` for the basic method: the slope (the DDA's first line)."""
-    dx, dy, _, _ = _orientation(q)
-    return (theory.DERIVATION, *theory.dda_derivation(dx, dy, dda_steps(*q.points))[:1])
-
-
-def basic_pseudocode(q: LineQuestion) -> Code:
-    """``--algorithm`` for the basic method."""
-    _, _, steep, _ = _orientation(q)
-    return theory.basic_code(steep, str(q.knobs.rounding))
-
-
-def _practice(name: str, q: LineQuestion) -> str:
-    return (
-        f"Scan-convert the line from ({fmt_short(q.x1)}, {fmt_short(q.y1)}) to "
-        f"({fmt_short(q.x2)}, {fmt_short(q.y2)}) with {name}: give the step table and the "
-        "pixels plotted."
-    )
-
-
-def dda_practice(q: LineQuestion) -> str:
-    """A practice question's wording for the DDA."""
-    return _practice("the DDA algorithm", q)
-
-
-def bresenham_practice(q: LineQuestion) -> str:
-    """A practice question's wording for Bresenham's line."""
-    return _practice("Bresenham's line algorithm", q)
 
 
 def _swap_rule(maj: str, x1: Number, y1: Number, x2: Number, y2: Number) -> Quantity:
@@ -427,19 +371,23 @@ def _bresenham_solution(
         title=_title("Bresenham's line algorithm", ix1, iy1, ix2, iy2),
         given=_given(ix1, iy1, ix2, iy2),
         derived=_bresenham_derived(w, tie),
-        columns=(
-            heading("k", "k"),
-            heading("p", "p_k"),
-            heading("decision", r"\text{decision}"),
-            heading("pixel", pixel_head),
-            heading("p_next", "p_{k+1}"),
-        ),
-        extra_keys=("p_next",),
-        steps=steps,
-        pixels=pixels,
-        bbox=_bbox((ix1, iy1), (ix2, iy2)),
-        geometry={"line": (ix1, iy1, ix2, iy2)},
         notes=_bresenham_line_notes(w, tie, layout),
+        walk=Walk(
+            columns=(
+                heading("k", "k", role="label"),
+                heading("p", "p_k"),
+                heading("decision", r"\text{decision}"),
+                heading("pixel", pixel_head),
+                heading("p_next", "p_{k+1}"),
+            ),
+            extra_keys=("p_next",),
+            steps=steps,
+        ),
+        plot=Plot(
+            pixels=pixels,
+            bbox=_bbox((ix1, iy1), (ix2, iy2)),
+            ideal=(IdealLine(ix1, iy1, ix2, iy2),),
+        ),
     )
 
 
@@ -479,7 +427,7 @@ def _dda_derived(
 
 
 _DDA_COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("x", "x_k", 3),
     heading("y", "y_k", 3),
     heading("round_x", r"\operatorname{round}(x_k)"),
@@ -516,13 +464,17 @@ def _dda_solution(
         title=_title("Simple DDA line algorithm", *asked),
         given=_given(*asked),
         derived=_dda_derived(x1, y1, x2, y2, swapped),
-        columns=_DDA_COLUMNS,
-        extra_keys=("x", "y", "round_x", "round_y"),
-        steps=lambda: dda(x1, y1, x2, y2, rounding),
-        pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2, rounding)),
-        bbox=_bbox((x1, y1), (x2, y2)),
-        geometry={"line": (x1, y1, x2, y2)},
         notes=notes,
+        walk=Walk(
+            columns=_DDA_COLUMNS,
+            extra_keys=("x", "y", "round_x", "round_y"),
+            steps=lambda: dda(x1, y1, x2, y2, rounding),
+        ),
+        plot=Plot(
+            pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2, rounding)),
+            bbox=_bbox((x1, y1), (x2, y2)),
+            ideal=(IdealLine(x1, y1, x2, y2),),
+        ),
     )
 
 
@@ -559,18 +511,22 @@ def _basic_solution(
         title=_title("Line by the basic (direct) method", x1, y1, x2, y2),
         given=_given(x1, y1, x2, y2),
         derived=tuple(derived),
-        columns=(
-            heading(maj, maj),
-            heading(mnr, f"{mnr} \\text{{ (calculated)}}", 3),
-            heading(f"round_{mnr}", f"{mnr} \\text{{ (rounded)}}"),
-            heading("pixel", r"\text{pixel } (x, y)"),
-        ),
-        extra_keys=(maj, mnr, f"round_{mnr}"),
-        steps=lambda: basic(x1, y1, x2, y2, rounding),
-        pixels=lambda: (s.pixel for s in basic(x1, y1, x2, y2, rounding)),
-        bbox=_bbox((x1, y1), (x2, y2)),
-        geometry={"line": (x1, y1, x2, y2)},
         notes=(f"Each {mnr} is computed exactly and {ROUNDING_TEXT[rounding]}.",),
+        walk=Walk(
+            columns=(
+                heading(maj, maj),
+                heading(mnr, f"{mnr} \\text{{ (calculated)}}", 3),
+                heading(f"round_{mnr}", f"{mnr} \\text{{ (rounded)}}"),
+                heading("pixel", r"\text{pixel } (x, y)"),
+            ),
+            extra_keys=(maj, mnr, f"round_{mnr}"),
+            steps=lambda: basic(x1, y1, x2, y2, rounding),
+        ),
+        plot=Plot(
+            pixels=lambda: (s.pixel for s in basic(x1, y1, x2, y2, rounding)),
+            bbox=_bbox((x1, y1), (x2, y2)),
+            ideal=(IdealLine(x1, y1, x2, y2),),
+        ),
     )
 
 

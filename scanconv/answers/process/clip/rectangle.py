@@ -26,7 +26,7 @@ from ....algorithms.process_choices import LineClipMethod
 from ....core import lazy
 from ....core.checks import InputError
 from ....core.numeric import Number, fmt_paren, fmt_short, normalize
-from ....core.records import Column, Quantity, Solution, Table
+from ....core.records import Column, Plot, Quantity, Solution, Table, Walk
 from .._shared import (
     Clipped,
     check_rect,
@@ -41,10 +41,14 @@ from .._shared import (
 from ._shared import clipped_quantity, code_reason
 
 if TYPE_CHECKING:
+    from ....algorithms import cyrus_beck as cb_algorithm
+    from ....algorithms import nll as nll_algorithm
     from . import cyrus_beck, nll
 else:
     cyrus_beck = lazy.module("scanconv.answers.process.clip.cyrus_beck")
     nll = lazy.module("scanconv.answers.process.clip.nll")
+    cb_algorithm = lazy.module("scanconv.algorithms.cyrus_beck")
+    nll_algorithm = lazy.module("scanconv.algorithms.nll")
 
 LINE_METHODS = tuple(m.value for m in LineClipMethod)
 """The line clipping methods, by name."""
@@ -216,7 +220,7 @@ def cs_parts(p1: Point, p2: Point, w: Rect, r: CSResult) -> tuple[list[Quantity]
 
 
 _LB_COLUMNS = (
-    Column("k", "k", "k"),
+    Column("k", "k", "k", role="label"),
     Column("reason", "boundary", r"\text{boundary}"),
     Column("p", "p_k", "p_k"),
     Column("q", "q_k", "q_k"),
@@ -411,7 +415,7 @@ def clip_line_solution(
         given=(point_quantity("P1", p1), point_quantity("P2", p2), rect_quantity("window", w)),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=tuple(tables),
-        figures=clip_figure(list(seg) if seg else [], w, [p1, p2], "clipped segment"),
+        walk=Walk(tables=tuple(tables)),
+        plot=Plot(figures=clip_figure(list(seg) if seg else [], w, [p1, p2], "clipped segment")),
         data={"clipped": None if seg is None else [list(seg[0]), list(seg[1])]},
     )

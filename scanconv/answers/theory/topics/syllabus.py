@@ -69,9 +69,14 @@ def dithering() -> Solution:
             "Halftone patterns: an $n \\times n$ cell of bilevel pixels gives $n^2 + 1$ levels "
             "(with $b$ bits a pixel, $n^2(2^b - 1) + 1$); each pattern contains the one before "
             "it, so a slow change of intensity shows no contour.",
+            "On a printer of $d$ dots per inch a halftone screen of $l$ lines (cells) per inch "
+            "has cells of $n = d / l$ dots a side and so $(d / l)^2 + 1$ levels: 300 dpi at 60 "
+            "lpi gives $5 \\times 5$ cells and 26 levels; a finer screen has fewer levels.",
             "Ordered dither: pixel $(i, j)$ is on when $I(i, j) > T[i \\bmod n][j \\bmod n]$, "
             "with the thresholds from the Bayer matrix $D_2 = [[0, 2], [3, 1]]$ scaled to the "
-            "intensity range; the image keeps its resolution.",
+            "intensity range (or a matrix given already in the image's units); the image keeps "
+            "its resolution. One pixel's threshold is looked up from its screen position: row "
+            "$y \\bmod n$, column $x \\bmod n$ (positions counted from 1: $(y - 1) \\bmod n$).",
             "Error diffusion (Floyd-Steinberg) rounds each pixel to the nearest level and "
             "passes the error on to the pixels not yet visited: 7/16, 3/16, 5/16, 1/16.",
         ),
@@ -107,9 +112,16 @@ def error_diffusion() -> Solution:
             "$I' \\ge \\text{top}/2$, else 0; error $e = I' - \\text{output}$, shared out.",
             "With exact arithmetic the image's total is kept, less the shares that fall off its "
             "edges; the serpentine order (odd rows right to left) avoids directional artefacts.",
+            "Other kernels spread the error further (the current row's weights from $j + 1$, "
+            "the rows below centred on $j$): Jarvis-Judice-Ninke $(7, 5; 3, 5, 7, 5, 3;"
+            " 1, 3, 5, 3, 1)/48$, Stucki $(8, 4; 2, 4, 8, 4, 2; 1, 2, 4, 2, 1)/42$, Burkes "
+            "$(8, 4; 2, 4, 8, 4, 2)/32$, Sierra $(5, 3; 2, 4, 5, 4, 2; 0, 2, 3, 2, 0)/32$, two-row "
+            "Sierra $(4, 3; 1, 2, 3, 2, 1)/16$, Sierra Lite $(2; 1, 1, 0)/4$; the one-dimensional "
+            "scheme carries all of the error to the next pixel of the row.",
         ),
         points=(
-            "The kernel's weights sum to 1: the error is moved, not lost.",
+            "Every kernel's weights sum to 1: the error is moved, not lost.",
+            "Errors are at most top/2: the mean shifts by at most that x the weight lost.",
             "Only pixels not yet visited receive error (right, and the next row).",
             "Integer code truncates each share; exact arithmetic keeps fractions.",
         ),
@@ -118,6 +130,12 @@ def error_diffusion() -> Solution:
                 "a 2 x 2 image of 100 on 0 .. 255 (scanconv dither floyd-steinberg --image "
                 "'100 100; 100 100')",
                 dither.diffusion_solution([[100, 100], [100, 100]], 255),
+                plot=False,
+            ),
+            embed(
+                "the same image with Stucki's kernel (scanconv dither floyd-steinberg --image "
+                "'100 100; 100 100' --kernel stucki)",
+                dither.diffusion_solution([[100, 100], [100, 100]], 255, kernel="stucki"),
                 plot=False,
             ),
         ),
@@ -368,12 +386,23 @@ def frame_buffer() -> Solution:
             "Size $= W \\times H \\times b$ bits for $b$ bits a pixel ($b$ bit planes, $2^b$ "
             "colours); a colour look-up table of $2^b$ entries of $w$ bits gives $2^b$ of "
             "$2^w$ colours at a time.",
+            "Pixel $(x, y)$ is stored at byte $\\text{base} + (y W + x) \\cdot b / 8$ when the "
+            "buffer holds the rows one after another from the top-left, counted from 0 "
+            "(column-major: $x H + y$; from the bottom row: $H - 1 - y$ for $y$).",
+            "At $f$ frames a second a scan line gets $1 / (H f)$ and a pixel $1 / (W H f)$; with "
+            "retraces $t_h$ a line and $t_v$ a frame the share of the time in retrace is "
+            "$(H t_h + t_v) f$, and a pixel time $t_p$ gives $f = 1 / (H (W t_p + t_h) + t_v)$.",
         ),
         examples=(
             embed(
                 "1280 x 1024 at 8 bits, a 24-bit LUT, 60 Hz (scanconv framebuffer 1280 1024 8 "
                 "--lut 24 --refresh 60)",
                 framebuffer.framebuffer_solution(1280, 1024, 8, lut=24, refresh=60),
+            ),
+            embed(
+                "the address of pixel (340, 150) of a 640 x 480 buffer at 8 bits (scanconv "
+                "framebuffer 640 480 8 --pixel 340 150)",
+                framebuffer.framebuffer_solution(640, 480, 8, pixel=(340, 150)),
             ),
         ),
     )
