@@ -80,6 +80,8 @@ def breakable_math(tex: str) -> str:
     'clipped (2 vertices): $(1, 0),\\allowbreak (6, 0)$'
     >>> breakable_math(r"x_{\text{max}} = 4 \quad (\text{r is the largest})")
     '$x_{\\text{max}} = 4 \\quad ($r is the largest$)$'
+    >>> breakable_math(r"\text{area} = 4 \quad (\text{before: } 28)")
+    'area $= 4 \\quad ($before: $28)$'
     >>> breakable_math(r"\textbf{3. draw the edges}")
     '\\textbf{3. draw the edges}'
     >>> breakable_math(r"\begin{bmatrix} 1 & 2 \end{bmatrix}, x_\text{a}")
@@ -92,11 +94,14 @@ def breakable_math(tex: str) -> str:
             continue
         core = _EDGE_SPACE.sub("", piece)
         if core:
-            before = " " if core != piece.lstrip() and out and not out[-1:].isspace() else ""
-            after = " " if core != piece.rstrip() else ""
+            lead, trail = _LEAD.match(piece), _TRAIL.search(piece)  # a space at either end
+            before = " " if lead and lead.group() and out and not out[-1:].isspace() else ""
+            after = " " if trail and trail.group() else ""
             out += f"{before}${core}${after}"
     return out.strip()
 
 
+_LEAD = re.compile(r"^(?:\\ |\s)*")
+_TRAIL = re.compile(r"(?:(?<!\\)\s|\\ )*$")
 _EDGE_SPACE = re.compile(r"^(?:\\ |\s)+|(?:(?<!\\)\s|\\ )+$")
 """The spaces (``\\ `` too) at either end of a piece of math: a space between text and math."""
