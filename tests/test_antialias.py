@@ -295,7 +295,7 @@ def test_the_limits_at_their_edge():
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_line_algo_wu_is_the_antialias_answer():
-    """``scanconv line ... --algo wu`` (the issue's spelling) prints exactly the Wu answer of
+    """``scanconv line ... --algo wu`` (wu as a line method) prints exactly the Wu answer of
     ``antialias line --method wu``; the derivation and the pipeline refuse it by name."""
     via_line = run("line", "0", "0", "8", "3", "--algo", "wu", "-f", "json")
     via_aa = run("antialias", "line", "0", "0", "8", "3", "--method", "wu", "-f", "json")

@@ -78,3 +78,26 @@ def test_style_answer() -> None:
     sol = line_style_solution(0, 0, 7, 2, "110")
     assert [s.extra[2] for s in sol.steps()] == ["draw", "draw", "skip"] * 2 + ["draw", "draw"]
     assert sol.marks == ((2, 1), (5, 1))
+
+
+@settings(deadline=None, max_examples=150)
+@given(
+    mask=st.text("01", min_size=1, max_size=16),
+    order=st.sampled_from(["msb", "lsb"]),
+    length=st.integers(1, 40),
+)
+def test_the_mask_is_shown_as_written_and_each_pixel_takes_its_bit(mask, order, length) -> None:
+    """The answer gives the mask as written (and in hexadecimal) with its bit order; pixel k
+    takes the written mask's bit (k mod n) places from its left (msb) or its right (lsb)."""
+    sol = line_style_solution(0, 0, length, 1, mask, bits=order)
+    written = next(q for q in sol.given if q.key == "written")
+    hex_shown = written.text.split(" = ")[2].split(" ")[0]
+    assert written.value == mask and int(hex_shown, 16) == int(mask, 2)
+    assert len(hex_shown) - 2 == -(-len(mask) // 4)  # a digit for every 4 bits
+    assert f"{mask} (read {order} first" in sol.title
+    n = int(mask, 2)
+    for k, step in enumerate(sol.steps()):
+        place = k % len(mask)
+        want = n >> (len(mask) - 1 - place) & 1 if order == "msb" else n >> place & 1
+        assert step.extra[1] == want
+        assert step.extra[2] == ("draw" if want else "skip")

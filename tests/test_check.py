@@ -40,6 +40,7 @@ from scanconv.marking.models import (
     chain,
 )
 from scanconv.marking.student_table import Cell, field_of, parse_text, read_table
+from scanconv.render import formats
 from scanconv.render.marking import neutral
 
 from .helpers import assert_refused, run
@@ -422,7 +423,7 @@ def test_a_right_table_has_no_diagnosis():
 
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop
-@pytest.mark.parametrize("fmt", ["plain", "markdown", "latex", "csv", "json", "rich"])
+@pytest.mark.parametrize("fmt", formats("answer"))
 def test_every_format_shows_the_marks(fmt):
     r = run("check", str(DATA / "slip.csv"), "--", *LINE, "-f", fmt)
     assert r.code == 0 and r.err == ""

@@ -16,13 +16,17 @@ from pathlib import Path
 
 import pytest
 
+from scanconv.answers.methods import methods_of
+from scanconv.render import formats
+
 from .helpers import assert_refused, run, run_process
 
 ANSI = re.compile(r"\x1b\[")
 COLOUR = re.compile(r"\x1b\[[0-9;]*(3[0-7]|38;|9[0-7])[0-9;]*m")
 BOX = re.compile(r"[\u2500-\u257f]")
 LINE = ("line", "2", "2", "10", "6", "--algo", "bresenham")
-FORMATS = ("rich", "markdown", "latex", "csv", "json", "plain")
+FORMATS = formats("answer")
+"""Every format of a single answer, from the format table (a new one is walked here at once)."""
 
 
 PAIR = re.compile(r"\((-?\d+), (-?\d+)\)")
@@ -62,7 +66,7 @@ def _table_pixels(out: str, fmt: str) -> list[tuple[int, int]]:
 
 
 @pytest.mark.parametrize("fmt", FORMATS)
-@pytest.mark.parametrize("algo", ["bresenham", "dda", "basic"])
+@pytest.mark.parametrize("algo", [m for m in methods_of("line") if m != "wu"])  # wu: intensities
 def test_every_format_and_algorithm(fmt, algo):
     """Each format, parsed, gives the solution's own pixels: JSON ``pixels`` and each step's
     ``pixel``, the CSV rows' x and y, the table rows and the list of pixels plotted."""
@@ -86,9 +90,17 @@ def test_every_format_and_algorithm(fmt, algo):
         x, y = header.index(px), header.index(py)
         assert [(int(row[x]), int(row[y])) for row in rows] == steps
         assert pixels[len(pixels) - len(rows) :] == steps  # every row's pixel is plotted
-    else:
+    elif fmt == "html":
+        drawn = re.findall(
+            r'<rect class="sc-px" data-i="\d+" data-x="(-?\d+)" data-y="(-?\d+)"', r.out
+        )
+        assert [(int(x), int(y)) for x, y in drawn] == pixels
+        assert r.out.count("<tr data-pos=") == len(steps)
+    elif fmt in ("rich", "markdown", "latex", "plain"):
         assert _plotted(r.out) == pixels
         assert _table_pixels(r.out, fmt) == steps
+    else:
+        pytest.fail(f"no reader here for the format {fmt}: add one")
 
 
 def test_plain_is_ascii():
@@ -313,7 +325,7 @@ def test_python_dash_m_and_version():
 
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop
-@pytest.mark.parametrize("fmt", (*FORMATS, "html"))
+@pytest.mark.parametrize("fmt", FORMATS)
 def test_typer_cli_runner_every_format(fmt):
     from typer.testing import CliRunner
 

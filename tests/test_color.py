@@ -91,7 +91,7 @@ def test_pure_green_in_hsi_as_the_codeguru_thread_works_it() -> None:
     assert (hsi.h, hsi.s, hsi.i * 255) == (120, 1, 85)  # exact: arccos(-1/2) is 120 degrees
 
 
-def test_the_issues_example_is_exact_in_every_model() -> None:
+def test_rgb_51_102_153_is_exact_in_every_model() -> None:
     rgb = (F(1, 5), F(2, 5), F(3, 5))  # (51, 102, 153) / 255
     assert c.rgb_to_cmy(*rgb) == (F(4, 5), F(3, 5), F(2, 5))
     assert c.rgb_to_hsv(*rgb)[:3] == (210, F(2, 3), F(3, 5))

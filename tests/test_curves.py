@@ -31,6 +31,7 @@ from scanconv.answers.curves.bezier import bezier_solution
 from scanconv.answers.curves.bspline import bspline_solution
 from scanconv.answers.primitives.parametric import parametric_solution
 from scanconv.core.checks import InputError
+from scanconv.render import formats
 
 from .helpers import assert_refused, connected, run
 
@@ -262,7 +263,7 @@ def test_bspline_agrees_with_scipy_on_random_inputs():
             x = float(t)
             if t == knots[n + 1]:
                 # scipy looks up the span [t_n-1, t_n) at the right end, which is empty when the
-                # end knot is repeated (the trap the issue names): compare with its left limit.
+                # end knot is repeated (a known trap): compare with its left limit.
                 x = float(np.nextafter(x, -np.inf))
             theirs = ref(x)
             assert lo <= x <= hi
@@ -462,7 +463,8 @@ def test_local_control_bezier_moves_everywhere_bspline_only_locally():
 
 # --- CLI ----------------------------------------------------------------------------------------
 
-ISSUE_COMMANDS = [
+CURVE_COMMANDS = [
+    # one command line of each curve and each of its forms, typed as a student types it
     "parametric circle --center 0 0 --radius 5 --samples 16",
     "parametric ellipse --center 0 0 --a 8 --b 4",
     "parametric parabola --t-range -3 3",
@@ -475,9 +477,9 @@ ISSUE_COMMANDS = [
 ]
 
 
-@pytest.mark.parametrize("command", ISSUE_COMMANDS)
-@pytest.mark.parametrize("fmt", ["plain", "markdown", "latex", "csv", "json", "rich"])
-def test_the_issue_command_lines_work_verbatim(command, fmt):
+@pytest.mark.parametrize("command", CURVE_COMMANDS)
+@pytest.mark.parametrize("fmt", formats("answer"))
+def test_each_curve_command_line_answers_in_every_format(command, fmt):
     import shlex
 
     r = run(*shlex.split(command), "--format", fmt)

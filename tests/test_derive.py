@@ -7,10 +7,11 @@ import pytest
 
 from scanconv import _api as api
 from scanconv.core.working import tex_to_unicode
+from scanconv.render import formats
 
 from .helpers import run
 
-FORMATS = ("plain", "markdown", "latex", "json", "csv", "rich")
+FORMATS = formats("answer")
 
 CASES = [
     ("line", "2", "2", "10", "6"),

@@ -1,5 +1,5 @@
 """Every count and claim the README and docs/ make about the program, checked against the
-program (issue 39, item 6): the README's length, its links and the docs' links, every output
+program: the README's length, its links and the docs' links, every output
 a page shows, every command line and flag a page names, the counts (topics, exam questions,
 commands), the formats and presets listed, the modules named, and pandoc's reading of the
 README.
@@ -473,6 +473,26 @@ def test_the_formats_the_readme_lists_are_the_programs():
     assert extensions and all(EXTENSIONS[ext] in formats("answer") for ext in extensions)
 
 
+def test_the_formats_docs_formats_md_lists_are_the_programs():
+    """docs/formats.md's table has a row for ``auto`` and each format of a single answer; the
+    extensions it says name a format each name one of them, every such format is named by
+    one, and the extensions it says refuse a contradicting ``--format`` are the binding ones."""
+    from scanconv.render import EXTENSIONS, FORMATS, Format, formats
+
+    text = TEXT[ROOT / "docs" / "formats.md"].split("## Output formats", 1)[1]
+    rows = re.findall(r"^\| `([a-z]+)`", text.split("\n\n## ", 1)[0], flags=re.M)
+    assert rows == [f.value for f in Format]
+    prose = " ".join(text.split())
+    follows = re.search(r"when `--format` is not given \(((?:`[.a-z]+`[,/ ]*)+)\)", prose)
+    refused = re.search(r"contradicts ((?:a )?(?:`[.a-z]+`(?:, | or )?)+) file is refused", prose)
+    assert follows is not None and refused is not None
+    named = {EXTENSIONS[ext] for ext in re.findall(r"`([.a-z]+)`", follows[1])}
+    assert named == {name for name in formats("answer") if FORMATS[name].extensions}
+    binding = {FORMATS[EXTENSIONS[ext]].binding for ext in re.findall(r"`([.a-z]+)`", refused[1])}
+    listed = {EXTENSIONS[ext] for ext in re.findall(r"`([.a-z]+)`", refused[1])}
+    assert binding == {True} and listed == {n for n, spec in FORMATS.items() if spec.binding}
+
+
 def test_the_presets_the_readme_names_are_the_programs():
     from scanconv.algorithms.conventions import PRESETS
 
@@ -481,6 +501,7 @@ def test_the_presets_the_readme_names_are_the_programs():
     assert ["notes", *re.findall(r"`([a-z-]+)`", said[1])] == list(PRESETS)
 
 
+@pytest.mark.slow  # four answers
 def test_the_spellings_and_the_default_format_the_readme_gives_hold():
     """A point typed ``2,2`` or ``(2,2)`` and a size ``1024x768`` are the plain numbers, and
     Markdown is the format when the output is not a terminal (as in these in-process runs)."""

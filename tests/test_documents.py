@@ -27,6 +27,7 @@ import typer
 
 from scanconv.cli import app
 from scanconv.core.records import Solution
+from scanconv.render import formats
 from scanconv.render import grid as gridmod
 
 from .cli_vocabulary import DOCUMENTS, NOT_WALKED
@@ -308,7 +309,7 @@ def test_rich_shows_the_derivation_unless_brief() -> None:
     assert note_unicode("$p_k < 0$") in full.out
 
 
-@pytest.mark.parametrize("fmt", ["rich", "markdown", "latex", "plain", "csv", "json"])
+@pytest.mark.parametrize("fmt", formats("answer"))
 def test_explain_is_a_no_op_kept_for_old_scripts(fmt: str) -> None:
     base = run("line", "2", "2", "10", "6", "--format", fmt)
     assert run("line", "2", "2", "10", "6", "--format", fmt, "--explain").out == base.out

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+from scanconv.render import formats
 from scanconv.render.latex import _cell
 from tests.external import pandoc, typeset
 from tests.helpers import run
@@ -180,7 +181,7 @@ def test_score_sheet_carries_no_control_character(tmp_path: Path, fmt: str) -> N
 
 # --- D19: bidirectional overrides and formula comments ----------------------------------------
 
-SHEET_FORMATS = ("markdown", "plain", "latex", "json", "html")
+SHEET_FORMATS = tuple(f for f in formats("document") if f in formats("answer"))
 
 
 @pytest.mark.parametrize("fmt", SHEET_FORMATS)
@@ -195,7 +196,7 @@ def test_bidi_override_never_reaches_a_sheet(tmp_path: Path, fmt: str, kind: str
         assert BIDI in json.loads(r.out)["title"]  # escaped, the data unchanged
 
 
-@pytest.mark.parametrize("fmt", ("markdown", "plain", "latex", "json", "html", "rich", "csv"))
+@pytest.mark.parametrize("fmt", formats("answer"))
 def test_bidi_override_in_a_formula_comment(fmt: str) -> None:
     r = run("sample", f"x + y # {BIDI}abc", "--size", "3", "-L", "2", "-f", fmt)
     assert r.code == 0, r.err

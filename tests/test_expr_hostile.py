@@ -22,7 +22,7 @@ from scanconv.core.expr import MAX_BRACKETS, MAX_DEPTH, MAX_LENGTH, compile_expr
 
 from .helpers import python_calls
 
-#: (issue item, formula, a word of the refusal)
+#: (kind of attack, formula, a word of the refusal)
 HOSTILE = [
     ("__import__", "__import__('os').system('echo pwned')", "attribute access"),
     ("__import__", "__import__('os')", "'__import__' is not allowed"),
@@ -61,7 +61,7 @@ HOSTILE = [
 IDS = [f"{item}: {text[:30]!r}" for item, text, _ in HOSTILE]
 
 
-def test_every_item_of_the_issue_is_covered():
+def test_every_kind_of_attack_is_covered():
     items = {item for item, _, _ in HOSTILE}
     assert items == {
         "__import__",

@@ -25,6 +25,7 @@ from scanconv.algorithms.ramp import ramp
 from scanconv.algorithms.sample import sample_levels
 from scanconv.answers.image.ramp import ramp_solution
 from scanconv.answers.image.storage import storage_solution
+from scanconv.render import formats
 
 from .helpers import run
 
@@ -359,7 +360,7 @@ COMMANDS = [
 
 
 @pytest.mark.parametrize("args", COMMANDS, ids=[a[0] for a in COMMANDS])
-@pytest.mark.parametrize("fmt", ["plain", "markdown", "latex", "csv", "json", "rich"])
+@pytest.mark.parametrize("fmt", formats("answer"))
 def test_every_format(args, fmt):
     r = run(*args, "--format", fmt)
     assert r.code == 0, r.err

@@ -267,6 +267,12 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "marking.limits.MAX_QUESTION_ROWS": [
         (["check", str(CHECK / "slip.csv"), "--", "line", "0", "0", "10001", "0"], "10000")
     ],
+    "algorithms.window_clip.MAX_WINDOW_VERTICES": [
+        (
+            ["clip", "polygon", "0", "0", "1", "0", "0", "1", "--window-vertices", *_ring(65)],
+            "at most 64 window vertices",
+        )
+    ],
     "answers.process.clip.sutherland_hodgman.MAX_VERTICES": [
         (
             ["clip", "polygon", *POINTS_101, "--window", "0", "0", "5", "5"],
@@ -286,6 +292,9 @@ NOTED = {
 SERVED = {
     "mcp_server.answers.MAX_PRACTICE": "tests/test_mcp.py, "
     "test_a_question_too_long_and_a_bad_practice_set_are_refused",
+    # the site's test yourself, marked by the library: tests/test_marking_steps.py
+    "marking.mark.MAX_STEP_TEXT": "test_typed_words_are_read_as_check_reads_a_cell",
+    "site.page.MAX_STEPS": "test_the_site_marks_at_most_its_steps",
 }
 
 ALLOCATORS = ("empty", "zeros", "ones", "full", "arange", "linspace", "meshgrid", "indices")

@@ -15,13 +15,17 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.lines import basic, bresenham, dda
 from scanconv.algorithms.midpoint_line import midpoint_line
+from scanconv.answers.methods import methods_of
 from scanconv.answers.primitives.line import line_solution
 from scanconv.core.numeric import round_half_up
 from scanconv.core.records import Move
 
 coord = st.integers(min_value=-60, max_value=60)
 lines = st.tuples(coord, coord, coord, coord)
-ALGOS = ("bresenham", "dda", "basic")
+NOT_ONE_PIXEL_A_STEP = {"wu": "anti-aliased: two pixels a column, each with an intensity"}
+"""The line methods the pixel properties below do not hold for, and why."""
+ALGOS = tuple(m for m in methods_of("line") if m not in NOT_ONE_PIXEL_A_STEP)
+"""Every line method of the records that plots one pixel a step (a new one is walked at once)."""
 
 
 def pixels(algo: str, x1: int, y1: int, x2: int, y2: int) -> list[tuple[int, int]]:
@@ -187,6 +191,11 @@ def test_half_up_not_half_even():
 )
 def test_moves_by_octant(line, moves):
     assert {s.decision.value for s in bresenham(*line) if s.decision} == moves
+
+
+def test_the_excluded_methods_are_line_methods():
+    assert set(NOT_ONE_PIXEL_A_STEP) < set(methods_of("line"))
+    assert {"basic", "dda", "bresenham", "midpoint"} <= set(ALGOS)
 
 
 @pytest.mark.parametrize("algo", ALGOS)

@@ -39,7 +39,7 @@ pytestmark = pytest.mark.slow  # each test talks to a server process
 
 URI = "ui://scanconv/stepper.html"
 
-#: One question of each kind the issue names: a line, a circle, an ellipse, a clipping, a
+#: One question of each kind the server is asked for: a line, a circle, an ellipse, a clipping, a
 #: fill and a Bezier curve.
 QUESTIONS = (
     "line 5 5 13 9 --algo bresenham",
@@ -63,7 +63,7 @@ VTU_RIGHT = """k,p_k,(x_{k+1}, y_{k+1})
 7,-8,"(13, 9)"
 """
 
-#: The same line with the tie the other way (p = 0 keeps y), as the chat answer of the issue
+#: The same line with the tie the other way (p = 0 keeps y), as a chat answer
 #: plots it, and a slip in row 5.
 VTU_SLIPPED = """k,p_k,(x_{k+1}, y_{k+1})
 0,0,"(6, 5)"
@@ -535,7 +535,19 @@ def inspect(inspector: Path, *args: str, refused: bool = False) -> Any:
     """The Inspector's JSON for one request to ``scanconv mcp`` (it exits 5 for a tool result
     with ``isError``)."""
     done = subprocess.run(
-        [str(inspector), "--cli", sys.executable, "-m", "scanconv", "mcp", *args],
+        # a generous connect timeout (the Inspector's default, 15 s, is a hang guard that a
+        # loaded machine's Python start-up can exceed: not a timing of scanconv)
+        [
+            str(inspector),
+            "--cli",
+            sys.executable,
+            "-m",
+            "scanconv",
+            "mcp",
+            *args,
+            "--connect-timeout",
+            "120000",
+        ],
         capture_output=True,
         text=True,
         timeout=300,

@@ -44,7 +44,7 @@ def _one_per_command() -> dict[str, list[str]]:
         if (words[0],) in DOCUMENTS:  # documents have no terminal layout (cli_vocabulary)
             continue
         cases.setdefault(name, _as_rich(args))
-    # the cases the issue named: a radius-12 grid, a quadratic B-spline's basis columns
+    # the widest cases: a radius-12 grid, a quadratic B-spline's basis columns
     cases["circle 12"] = ["circle", "12", "--format", "rich"]
     cases["bspline p2"] = ["bspline", *"0 0 1 2 3 3 4 0 5 2".split(), "--degree", "2", "-f", "rich"]
     cases["circle 20"] = ["circle", "20", "--format", "rich"]

@@ -59,6 +59,7 @@ def _param(param: Any, ctx: Any) -> Param:
         secondary=tuple(param.secondary_opts) if is_option else (),
         multiple=bool(getattr(param, "multiple", False)),
         metavar="" if is_option else param.get_error_hint(ctx)[1:-1],
+        help=" ".join((getattr(param, "help", None) or "").split()),
     )
 
 
@@ -143,13 +144,16 @@ def module_text() -> str:
         params = [
             f"S[{p.name!r}]" if common.get(p.name) == p else _param_source(p) for p in spec.params
         ]
-        own = [s for s in params if not s.startswith("S[")]
-        shared = [s for s in params if s.startswith("S[")]
+        rows: list[list[str]] = []  # in the command's order, the shared ones run on one line
+        for s in params:
+            if rows and s.startswith("S[") and rows[-1][-1].startswith("S["):
+                rows[-1].append(s)
+            else:
+                rows.append([s])
         flags = f", no_args_is_help={spec.no_args_is_help!r}" if spec.no_args_is_help else ""
         lines += [
             f"    {path!r}: Spec({path!r}, {spec.function!r}, (",
-            *(f"        {s}," for s in own),
-            f"        {', '.join(shared)},",
+            *(f"        {', '.join(row)}," for row in rows),
             f"    ), own={spec.own!r}, ignore_unknown={spec.ignore_unknown!r}{flags}),",
         ]
     lines += ["}", "# fmt: on"]

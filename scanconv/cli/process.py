@@ -77,6 +77,13 @@ class Midpoint(str, Enum):
     exact = "exact"
 
 
+class MidpointStop(str, Enum):
+    """Midpoint subdivision's stop rule: one unit long, or a midpoint on the window's edge."""
+
+    length = "length"
+    edge = "edge"
+
+
 NormalsOpt = Annotated[
     Normals | None,
     typer.Option(
@@ -159,6 +166,15 @@ def clip_line(
             help="midpoint-subdivision: each midpoint rounded (default), floored or exact.",
         ),
     ] = None,
+    stop: Annotated[
+        MidpointStop | None,
+        typer.Option(
+            "--stop",
+            case_sensitive=False,
+            help="midpoint-subdivision: split until one unit long (length, default), or also "
+            "stop where a midpoint lands on the window's edge (edge).",
+        ),
+    ] = None,
 ) -> Solution:
     """Clip the segment (X1, Y1)-(X2, Y2) against the window: region codes (T B R L) and one
     row per iteration (Cohen-Sutherland), the p_k, q_k table and u1, u2 (Liang-Barsky), t per
@@ -167,7 +183,7 @@ def clip_line(
 
     Example: scanconv clip line 7 9 11 4 --window 4 4 10 8 --method cohen-sutherland
     """
-    return commands.clip_line(x1, y1, x2, y2, window, method, normals, ends, midpoint)
+    return commands.clip_line(x1, y1, x2, y2, window, method, normals, ends, midpoint, stop)
 
 
 @clip_app.command("convex", context_settings=NUMERIC_ARGS)
@@ -196,19 +212,41 @@ def clip_convex(
 @clip_app.command("polygon", context_settings=NUMERIC_ARGS)
 @answers()
 def clip_polygon(
-    vertices: Vertices,
-    window: Window,
+    words: Annotated[
+        list[str],
+        typer.Argument(
+            metavar="X1 Y1 X2 Y2 X3 Y3 ... [--window-vertices X Y X Y X Y ...]",
+            help="The polygon's vertices in order; then, for a window of any shape, "
+            "--window-vertices and its vertices in order (convex for Sutherland-Hodgman).",
+            show_default=False,
+        ),
+    ],
+    window: Annotated[
+        Rect | None,
+        typer.Option(
+            "--window",
+            "-w",
+            parser=number,
+            metavar="XMIN YMIN XMAX YMAX",
+            show_default=False,
+            help="A rectangular clipping window in world coordinates (closed: its edges are "
+            "inside); or give --window-vertices after the polygon.",
+        ),
+    ] = None,
     method: Annotated[
         PolygonClipMethod,
         typer.Option("--method", "-m", case_sensitive=False, help="Polygon clipping method."),
     ] = PolygonClipMethod.sutherland_hodgman,
 ) -> Solution:
-    """Clip a polygon against the window edge by edge (left, right, bottom, top): one table per
-    edge, the clipped polygon, and the degenerate edges a concave polygon leaves.
+    """Clip a polygon against the window edge by edge (left, right, bottom, top; a polygon
+    window's edges in order): one table per edge, the clipped polygon, and the degenerate
+    edges a concave polygon leaves.
 
     Example: scanconv clip polygon 100 150 200 250 300 200 --window 150 150 200 200
+
+    Against a triangle: scanconv clip polygon 0 0 4 0 4 4 0 4 --window-vertices 1 -1 6 4 1 4
     """
-    return api.clip_polygon(vertices, window, method=method)
+    return commands.clip_polygon(words, window, method)
 
 
 @pipeline_app.command("line", context_settings=NUMERIC_ARGS)

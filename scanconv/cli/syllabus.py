@@ -78,10 +78,12 @@ class Boundary(str, Enum):
 
     inside = "inside"
     outside = "outside"
+    left_bottom = "left-bottom"
 
 
 class BitOrder(str, Enum):
-    """Which end of a line mask is applied first."""
+    """Which end of a line mask is applied first; which bit of a byte a glyph row's leftmost
+    pixel is."""
 
     msb = "msb"
     lsb = "lsb"
@@ -237,7 +239,12 @@ def inside(
         InsideRule, choice("--rule", help="even-odd, nonzero winding, or both.")
     ] = InsideRule.both,
     boundary: Annotated[
-        Boundary, choice("--boundary", help="A point on the boundary is inside or outside.")
+        Boundary,
+        choice(
+            "--boundary",
+            help="A point on the boundary is inside, outside, or as the count says "
+            "(left-bottom: on a left or bottom edge inside, a right or top edge outside).",
+        ),
     ] = Boundary.inside,
 ) -> Solution:
     """Inside-outside test: each point against each edge, the crossings and the winding number.
@@ -352,12 +359,21 @@ def char_bitmap(
     ] = None,
     at: At = None,
     scale: Scale = None,
+    bit_order: Annotated[
+        BitOrder,
+        choice(
+            "--bit-order",
+            help="The glyph's bytes: a row's leftmost pixel the most significant bit (msb, "
+            "the usual font: a row reads as written) or the least (lsb).",
+        ),
+    ] = BitOrder.msb,
 ) -> Solution:
-    """A character drawn from its bitmap: each row's pixels, placed and scaled.
+    """A character drawn from its bitmap: each row's pixels, placed and scaled, and the glyph
+    packed into bytes row by row.
 
     Example: scanconv char bitmap A --at 2 1
     """
-    return commands.char_bitmap(char, rows, at, scale)
+    return commands.char_bitmap(char, rows, at, scale, bit_order)
 
 
 @char_app.command("stroke", context_settings=NUMERIC_ARGS)
@@ -387,9 +403,32 @@ def char_storage(
         Packing,
         choice("--packing", help="A glyph in whole bytes per row, per column, or packed bits."),
     ] = Packing.rows,
+    char: Annotated[
+        str | None,
+        typer.Option(
+            "--char",
+            metavar="C",
+            help="A character whose glyph's number and address the font table gives.",
+        ),
+    ] = None,
+    first: Annotated[
+        Fraction | None,
+        num_option(
+            "--first", metavar="CODE", help="The code of the font's first glyph (default 0)."
+        ),
+    ] = None,
+    base: Annotated[
+        str | None,
+        typer.Option(
+            "--base",
+            metavar="ADDRESS",
+            help="The first glyph's byte address, decimal or 0x hexadecimal (default 0).",
+        ),
+    ] = None,
 ) -> Solution:
-    """A bitmap font's storage: the bytes per glyph and for the whole font.
+    """A bitmap font's storage: the bytes per glyph and for the whole font, and the font
+    table: each glyph's address, one after another.
 
     Example: scanconv char storage 128 5 7
     """
-    return commands.char_storage(count, width, height, packing)
+    return commands.char_storage(count, width, height, packing, char, first, base)

@@ -228,6 +228,7 @@ def clip_line(
     normals: Any = None,
     ends: Any = None,
     midpoint: Any = None,
+    stop: Any = None,
 ) -> Solution:
     return api.clip_line(
         x1,
@@ -239,10 +240,13 @@ def clip_line(
         normals=_text(normals),
         ends=_text(ends),
         midpoint=_text(midpoint),
+        stop=_text(stop),
     )
 
 
-def numbers_around(words: list[str], flag: str, param: str) -> tuple[list[Any], list[Any]]:
+def numbers_around(
+    words: list[str], flag: str, param: str, required: bool = True
+) -> tuple[list[Any], list[Any]]:
     """``X1 Y1 ... FLAG X Y ...`` (the words of ``inside`` and ``clip convex``): the numbers
     before ``flag`` and the numbers after it.
 
@@ -265,7 +269,7 @@ def numbers_around(words: list[str], flag: str, param: str) -> tuple[list[Any], 
             if isinstance(err, UsageError):
                 raise
             raise UsageError(f"Invalid value: {err}") from None
-    if not after:
+    if not after and required:
         raise UsageError(f"Missing option '{flag}' (give {flag} X Y ...)")
     return before, after
 
@@ -283,8 +287,18 @@ def clip_convex(words: list[str], normals: Any, ends: Any) -> Solution:
     )
 
 
-def clip_polygon(vertices: Any, window: Any, method: Any) -> Solution:
-    return api.clip_polygon(vertices, window, method=method)
+def clip_polygon(words: list[str], window: Any, method: Any) -> Solution:
+    """``clip polygon``: the polygon's vertices, and the window as ``--window`` (a rectangle)
+    or ``--window-vertices X Y ...`` after them (a polygon), one or the other."""
+    vertices, corners = numbers_around(words, "--window-vertices", "window", required=False)
+    if corners and window is not None:
+        raise UsageError("give the window as --window or --window-vertices, not both")
+    if not corners and window is None:
+        raise UsageError(
+            "Missing option '--window' (give --window XMIN YMIN XMAX YMAX, or "
+            "--window-vertices X Y ... after the polygon)"
+        )
+    return api.clip_polygon(vertices, corners or window, method=method)
 
 
 def pipeline_line(
@@ -429,8 +443,14 @@ def thick_line(x1: Any, y1: Any, x2: Any, y2: Any, width: Any, brush: bool) -> S
     return api.thick_line(x1, y1, x2, y2, width, brush=brush)
 
 
-def char_bitmap(char: str, rows: Any, at: Any, scale: Any) -> Solution:
-    return api.char_bitmap(char, rows=rows, at=at or (0, 0), scale=1 if scale is None else scale)
+def char_bitmap(char: str, rows: Any, at: Any, scale: Any, bit_order: Any = None) -> Solution:
+    return api.char_bitmap(
+        char,
+        rows=rows,
+        at=at or (0, 0),
+        scale=1 if scale is None else scale,
+        bit_order=_text(bit_order) or "msb",
+    )
 
 
 def char_stroke(char: str, at: Any, scale: Any, algo: Any) -> Solution:
@@ -439,8 +459,39 @@ def char_stroke(char: str, at: Any, scale: Any, algo: Any) -> Solution:
     )
 
 
-def char_storage(count: Any, width: Any, height: Any, packing: Any) -> Solution:
-    return api.char_storage(count, width, height, packing=_text(packing))
+def char_storage(
+    count: Any,
+    width: Any,
+    height: Any,
+    packing: Any,
+    char: Any = None,
+    first: Any = None,
+    base: Any = None,
+) -> Solution:
+    return api.char_storage(
+        count,
+        width,
+        height,
+        packing=_text(packing),
+        char=char,
+        first=0 if first is None else first,
+        base=0 if base is None else _address(base),
+    )
+
+
+def _address(text: Any) -> int:
+    """A memory address as a user writes it: decimal (``4096``) or hexadecimal (``0x1000``).
+
+    >>> _address("0x1000"), _address("4096")
+    (4096, 4096)
+    """
+    s = str(text).strip().lower()
+    try:
+        return int(s[2:], 16) if s.startswith("0x") else int(s)
+    except ValueError:
+        raise InputError(
+            f"an address is a whole number or 0x hexadecimal, got {text!r}", "base"
+        ) from None
 
 
 def theory(topic: str, list_: bool = False) -> Solution:

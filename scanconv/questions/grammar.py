@@ -27,6 +27,8 @@ class Param(NamedTuple):
     """An option that may be given several times (``color --to``): a tuple of values."""
     metavar: str = ""
     """A positional argument's name in messages (``X2``; empty: the name itself)."""
+    help: str = ""
+    """What it is, in the command line's own words (its ``--help`` text)."""
 
     @property
     def hint(self) -> str:
