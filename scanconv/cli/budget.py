@@ -24,7 +24,7 @@ from ..render.work import estimate as library_estimate
 from .output import Output, format_for_file, resolve
 
 __all__ = ["DOCUMENT_COMMANDS", "ESTIMATES", "LIBRARY_NAMES", "check", "check_question"]
-__all__ += ["estimate", "library_call"]
+__all__ += ["DocumentTooLarge", "estimate", "library_call"]
 
 DOCUMENT_COMMANDS = {
     "sheet": "each question (check_question) and their total (render.budget.document)",
@@ -67,13 +67,18 @@ def check(name: str, arguments: Mapping[str, Any], out: Output) -> None:
         raise ValueError(_worded(err, function)) from None
 
 
+class DocumentTooLarge(ValueError):
+    """A question beyond the budget of a document (alone or with the questions before it):
+    the questions after it are not read on, as each would be refused for the same reason."""
+
+
 def check_question(name: str, arguments: Mapping[str, Any]) -> None:
-    """Refuse (``ValueError``, one line) a question beyond the budget of a document, alone
-    or with the questions before it (:func:`scanconv.render.budget.document`)."""
+    """Refuse (:class:`DocumentTooLarge`, one line) a question beyond the budget of a
+    document, alone or with the questions before it (:func:`scanconv.render.budget.document`)."""
     try:
         check_in_document(*library_call(name, arguments))
     except BudgetError as err:
-        raise ValueError(str(err)) from None
+        raise DocumentTooLarge(str(err)) from None
 
 
 def _worded(err: Any, function: str) -> str:

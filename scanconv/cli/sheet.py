@@ -43,7 +43,7 @@ from ..render import Options
 from ..render.budget import document
 from ..render.sheet import Answered, Question, Sheet, sheet_document
 from .application import app
-from .budget import check_question
+from .budget import DocumentTooLarge, check_question
 from .options import DocumentFormatOpt, OutputOpt
 from .output import Pending, check_paths, document_format, fail, note, write_all, write_atomic
 
@@ -103,6 +103,9 @@ def _answer_all(questions: Iterable[Question], source: str) -> list[Answered]:
     for q in questions:
         try:
             solution, options = answer(q.argv)
+        except DocumentTooLarge as err:  # the document, not this line: the rest not read on
+            errors.append(QuestionError(source, q.line, " ".join(str(err).split())))
+            break
         except ValueError as err:
             errors.append(QuestionError(source, q.line, " ".join(str(err).split())))
         except RecursionError:

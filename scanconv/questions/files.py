@@ -193,7 +193,9 @@ def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
             errors.append(err)
             wording = []
             if len(questions) == MAX_QUESTIONS:
-                break
+                # a sheet over the limit is refused at once: its questions are not weighed
+                # one by one for their own errors (a thousand of them would be answered)
+                raise every(errors) from None
     if wording:
         errors.append(QuestionError(source, number, "'>' wording without a question after it"))
     if errors:

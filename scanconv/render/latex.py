@@ -46,9 +46,9 @@ from ..document import (
 from . import Notice, Options
 from .cells import note_segments, numeric_column, prose_math, wrap_items
 from .grid import too_large
-from .latex_breaks import breakable_math
+from .latex_breaks import breakable_math, kept_with_grid
 from .text import Rows, figure_text, grid_block, pixel_count, step_rows, table_rows
-from .tikz import grid_height, tikz_figure, tikz_grid
+from .tikz import tikz_figure, tikz_grid
 
 MATH_TOKENS = (
     r"[-+*/(), ]",  # an operator, a bracket, a comma, a space
@@ -397,31 +397,12 @@ def render_latex(answer: Solution | Document, options: Options) -> Iterator[str 
     doc = as_document(answer)
     yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}\n"
     yield NEED
-    kept, after = _kept_with_grid(doc, options)
+    kept, after = kept_with_grid(doc, options)
     for i, block in enumerate(doc.blocks):
         if i == kept:
             yield from LATEX[type(block)](block, options, doc, after)
         else:
             yield from LATEX[type(block)](block, options, doc)
-
-
-def _kept_with_grid(doc: Document, options: Options) -> tuple[int, float]:
-    """The index of the table set right above the pixel list and its grid, and how much room
-    (points) they take: its heading makes room for the table, the list and the grid together,
-    so that a page break never falls between a table's last rows and its grid (issue 39).
-    ``(-1, 0)`` when there is no such table or no grid drawn."""
-    blocks = doc.blocks
-    at = next((i for i, b in enumerate(blocks) if isinstance(b, Pixels)), -1)
-    table = at - 1
-    if at < 1 or not isinstance(blocks[table], StepTable | Table) or not options.grid:
-        return -1, 0
-    pixels = blocks[at]
-    assert isinstance(pixels, Pixels)
-    tall = None if too_large(pixels.bbox) else grid_height(doc, options.origin)
-    if tall is None:
-        return -1, 0
-    lines = sum(1 for _ in wrap_items(f"${fmt_pixel(p)}$" for p in pixels.pixels()))
-    return table, tall + 12 * lines + 30
 
 
 def _title(block: Title, options: Options, doc: Document) -> Iterator[str]:

@@ -13,7 +13,14 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["breakable_math"]
+from ..core.numeric import fmt_pixel
+from ..document import Document, Pixels, StepTable, Table
+from . import Options
+from .cells import wrap_items
+from .grid import too_large
+from .tikz import grid_height
+
+__all__ = ["breakable_math", "kept_with_grid"]
 
 _TOKEN = re.compile(
     r"\\begin\{[^{}]*\}|\\end\{[^{}]*\}|\\left\b|\\right\b|\\text(?:bf)?\{|\\[a-zA-Z]+|\\.|.",
@@ -80,6 +87,8 @@ def breakable_math(tex: str) -> str:
     'clipped (2 vertices): $(1, 0),\\allowbreak (6, 0)$'
     >>> breakable_math(r"x_{\text{max}} = 4 \quad (\text{r is the largest})")
     '$x_{\\text{max}} = 4 \\quad ($r is the largest$)$'
+    >>> breakable_math(r"\text{area} = 4 \quad (\text{before: } 28)")
+    'area $= 4 \\quad ($before: $28)$'
     >>> breakable_math(r"\textbf{3. draw the edges}")
     '\\textbf{3. draw the edges}'
     >>> breakable_math(r"\begin{bmatrix} 1 & 2 \end{bmatrix}, x_\text{a}")
@@ -92,11 +101,33 @@ def breakable_math(tex: str) -> str:
             continue
         core = _EDGE_SPACE.sub("", piece)
         if core:
-            before = " " if core != piece.lstrip() and out and not out[-1:].isspace() else ""
-            after = " " if core != piece.rstrip() else ""
+            lead, trail = _LEAD.match(piece), _TRAIL.search(piece)  # a space at either end
+            before = " " if lead and lead.group() and out and not out[-1:].isspace() else ""
+            after = " " if trail and trail.group() else ""
             out += f"{before}${core}${after}"
     return out.strip()
 
 
+_LEAD = re.compile(r"^(?:\\ |\s)*")
+_TRAIL = re.compile(r"(?:(?<!\\)\s|\\ )*$")
 _EDGE_SPACE = re.compile(r"^(?:\\ |\s)+|(?:(?<!\\)\s|\\ )+$")
 """The spaces (``\\ `` too) at either end of a piece of math: a space between text and math."""
+
+
+def kept_with_grid(doc: Document, options: Options) -> tuple[int, float]:
+    """The index of the table set right above the pixel list and its grid, and how much room
+    (points) they take: its heading makes room for the table, the list and the grid together,
+    so that a page break never falls between a table's last rows and its grid (issue 39).
+    ``(-1, 0)`` when there is no such table or no grid drawn."""
+    blocks = doc.blocks
+    at = next((i for i, b in enumerate(blocks) if isinstance(b, Pixels)), -1)
+    table = at - 1
+    if at < 1 or not isinstance(blocks[table], StepTable | Table) or not options.grid:
+        return -1, 0
+    pixels = blocks[at]
+    assert isinstance(pixels, Pixels)
+    tall = None if too_large(pixels.bbox) else grid_height(doc, options.origin)
+    if tall is None:
+        return -1, 0
+    lines = sum(1 for _ in wrap_items(f"${fmt_pixel(p)}$" for p in pixels.pixels()))
+    return table, tall + 12 * lines + 30
