@@ -130,10 +130,15 @@ class Command:
     def __annotations__(self) -> dict[str, Any]:  # type: ignore[override]  # get_type_hints
         return {p.name: p.annotation for p in self.parameters}
 
+    @property
+    def own(self) -> Iterable[str]:
+        """The names of the parameters the function takes."""
+        return inspect.signature(self.__wrapped__).parameters
+
     def __call__(self, **kwargs: Any) -> None:
-        own = inspect.signature(self.__wrapped__).parameters
+        own = set(self.own)
         values = {name: kwargs[name] for name in SHARED if name in kwargs}
-        for name in values.keys() - own.keys():
+        for name in values.keys() - own:
             del kwargs[name]
         out = Output(**values)
         # two outputs naming one file (-o f.svg --svg f.svg): one would be lost (N9)

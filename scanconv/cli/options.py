@@ -33,14 +33,14 @@ NUMERIC_ARGS: dict[str, Any] = {"ignore_unknown_options": True}
 # --- parsers ----------------------------------------------------------------------------------
 
 
-def number(text: str | Fraction) -> Fraction:
+def number(text: str | Fraction | int) -> Fraction:
     """typer parser for an exact number (integer, decimal or a/b); defaults pass through.
 
     A value that looks like an option (``--bogus`` where a number belongs, which
     ``ignore_unknown_options`` hands over as a value) is click's "No such option".
     """
-    if isinstance(text, Fraction):  # a default value
-        return text
+    if isinstance(text, Fraction | int):  # a default value
+        return Fraction(text)
     try:
         return parse_number(text)
     except ValueError as err:

@@ -11,6 +11,7 @@ from ..display import Answer
 from ..render import Options
 from .budget import estimated
 from .commands import BODIES
+from .declared import BY_FUNCTION
 from .grammar import error_message
 from .parser import CommandLine, parse
 from .words import UsageError
@@ -48,7 +49,8 @@ def solve(line: CommandLine) -> Solution:
     ...
     scanconv.core.checks.InputError: --degree: degree must satisfy 1 <= p <= n = 1 (n + 1 = 2 control points), got p = 3
     """
-    body = BODIES[line.function]
+    declared = BY_FUNCTION.get(line.function)
+    body = declared.answerer() if declared is not None else BODIES[line.function]
     try:
         return body(**line.arguments)
     except UsageError:

@@ -43,10 +43,6 @@ def _text(value: Any) -> Any:
     return getattr(value, "value", value)
 
 
-def line(x1: Any, y1: Any, x2: Any, y2: Any, **conventions: Any) -> Solution:
-    return api.line(x1, y1, x2, y2, **conventions)
-
-
 def storage(
     m: Any, n: Any, levels: Any, bits: Any, binary: bool, color: Any, frames: Any
 ) -> Solution:
@@ -142,14 +138,6 @@ def continuity(values: list[Any], samples: Any) -> Solution:
 def local_control(points: Any, move: Any, degree: Any, knots: Any, samples: Any) -> Solution:
     index, x, y = move
     return api.local_control(points, index, (x, y), degree, knots, samples)
-
-
-def circle(r: Any, center: Any, **conventions: Any) -> Solution:
-    return api.circle(r, center or (0, 0), **conventions)
-
-
-def ellipse(rx: Any, ry: Any, center: Any, **conventions: Any) -> Solution:
-    return api.ellipse(rx, ry, center or (0, 0), **conventions)
 
 
 def compare_line(x1: Any, y1: Any, x2: Any, y2: Any, theory: bool) -> Solution:
@@ -450,13 +438,14 @@ def theory(topic: str, list_: bool = False) -> Solution:
 BODIES: dict[str, Body] = {
     fn.__name__: fn
     for fn in (
-        line, storage, quantize, sample, image_ramp, parametric_circle, parametric_ellipse,
+        storage, quantize, sample, image_ramp, parametric_circle, parametric_ellipse,
         parametric_parabola, parametric_line, parametric_custom, bezier, bspline, continuity,
-        local_control, circle, ellipse, compare_line, compare_circle, compare_curves, transform,
+        local_control, compare_line, compare_circle, compare_curves, transform,
         viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon,
         fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color,
         theory, clip_convex, dither_threshold, dither_ordered, dither_diffusion, halftone, inside,
         framebuffer, line_style, thick_line, char_bitmap, char_stroke, char_storage,
     )
 }  # fmt: skip
-"""Each command's answer, by the command's function name (``parametric_circle``)."""
+"""Each command's answer, by the command's function name (``parametric_circle``), for the
+commands not yet declared by their library function (:mod:`.declared`)."""

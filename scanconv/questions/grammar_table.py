@@ -1,5 +1,5 @@
-"""The grammar of every question command: generated from the command line's
-declarations by ``python -m scanconv.cli.grammar`` (do not edit: a test compares)."""
+"""The grammar of every question command: generated from the library's declarations
+by ``python -m scanconv.questions.grammar`` (do not edit: a test compares)."""
 
 from fractions import Fraction
 
@@ -98,7 +98,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('points', 'move', 'degree', 'knots', 'samples'), ignore_unknown=True),
     ('circle',): Spec(('circle',), 'circle', (
         Param('r', (), 'number', required=True, metavar='R'),
-        Param('center', ('--center', '-c'), 'number', nargs=2),
+        Param('center', ('--center', '-c'), 'number', nargs=2, default=(0, 0)),
         Param('method', ('--method', '-m'), 'choice', default='midpoint', choices=('midpoint', 'bresenham', 'polynomial', 'general', 'trig', 'symmetric-dda')),
         Param('rounding', ('--rounding',), 'choice', choices=('half-up', 'trunc', 'half-even', 'c-cast', 'half-away')),
         Param('tie', ('--tie',), 'choice', choices=('step', 'keep')),
@@ -115,7 +115,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('ellipse',): Spec(('ellipse',), 'ellipse', (
         Param('rx', (), 'number', required=True, metavar='RX'),
         Param('ry', (), 'number', required=True, metavar='RY'),
-        Param('center', ('--center', '-c'), 'number', nargs=2),
+        Param('center', ('--center', '-c'), 'number', nargs=2, default=(0, 0)),
         Param('loop', ('--loop',), 'choice', choices=('strict', 'inclusive')),
         Param('tie', ('--tie',), 'choice', choices=('step', 'keep')),
         Param('p0', ('--p0',), 'choice', choices=('exact', 'rounded')),

@@ -1,0 +1,40 @@
+"""The declarations several commands share (:mod:`scanconv.core.declare`): the conventions'
+options, the layout, the derivation and pseudocode flags, a centre. A command's function
+writes its parameter's type and default, and one of these as its ``Annotated`` metadata."""
+
+from __future__ import annotations
+
+from ..core.declare import Opt
+
+CONVENTION = Opt(
+    "--convention",
+    help="A named preset of the conventions: notes (default), hearn-baker, foley, "
+    "wikipedia (lines only); single options override it.",
+)
+LAYOUT = Opt("--layout", help="Table rows as the notes print them, or the textbook's.")
+DERIVE = Opt("--derive", help="Add the derivation with this input's numbers.")
+PSEUDOCODE = Opt("--algorithm", help="Add the pseudocode of the variant used for this input.")
+ROUNDING = Opt(
+    "--rounding",
+    help="How computed coordinates become pixels: half-up floor(v + 1/2), trunc, half-even "
+    "(Python round), c-cast (int)(v + 0.5), half-away (C round).",
+)
+TIE = Opt(
+    "--tie",
+    help="A decision parameter of 0: step the minor coordinate (if p < 0 keep) or keep it "
+    "(if p <= 0 keep).",
+)
+START = Opt(
+    "--start",
+    help="Which point is plotted first: swap (the end with the smaller major coordinate; "
+    "Bresenham's default) or given (P1, stepping toward P2; the DDA's default).",
+)
+LOOP = Opt("--loop", help="The octant (region-1) loop: strict (x < y) or inclusive (x <= y).")
+CENTER = Opt(
+    "--center",
+    "-c",
+    metavar="XC YC",
+    help="Centre (xc, yc), integers; default (0, 0).",
+    show_default=False,
+)
+"""The centre of a circle or ellipse."""

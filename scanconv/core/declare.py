@@ -1,0 +1,197 @@
+"""A command's parameters, declared once, on the library function that answers it.
+
+A function of :mod:`scanconv._api` is a command: each parameter the command takes carries,
+in its ``Annotated`` type, an :class:`Arg` (a positional argument: its help and the name
+messages call it) or an :class:`Opt` (an option: its flags and help). Nothing here knows a
+command-line parser: the command line (:mod:`scanconv.cli.declared`) turns each into its
+parser's declaration, the question language (:mod:`scanconv.questions.grammar`) into its
+grammar, and the site into its forms; the default is the function's, stated once.
+
+:func:`declared` reads a function's declaration: each parameter's :class:`Declared` record,
+with its kind (how a word becomes its value) worked out from its type.
+
+>>> from scanconv._api.shapes import ellipse
+>>> [(d.name, d.kind, d.nargs) for d in declared(ellipse)][:3]
+[('rx', 'number', 1), ('ry', 'number', 1), ('center', 'number', 2)]
+"""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from enum import Enum
+from fractions import Fraction
+from pathlib import Path
+from typing import Annotated, Any, NamedTuple, Union, get_args, get_origin
+
+KINDS = ("number", "integer", "coordinate", "choice", "flag", "text")
+"""How a word becomes a parameter's value: an exact number, a whole number, a number or the
+``:`` between two point lists, one of an enum's values, a flag (no word), text."""
+
+
+@dataclass(frozen=True)
+class Arg:
+    """A positional argument: its help, and its name in messages (``X1``; default the
+    parameter's name in capitals). ``kind`` overrides the kind the type gives."""
+
+    help: str
+    metavar: str | None = None
+    kind: str | None = None
+
+
+@dataclass(frozen=True, init=False)
+class Opt:
+    """An option: its flags (``"--algo", "-a"``; ``"--grid/--no-grid"`` for a flag that has
+    both), its help, and how its help shows it: ``metavar`` (``"XC YC"``), ``show_default``,
+    ``hidden``. ``kind`` overrides the kind the type gives; ``multiple``: the option may be
+    given again, each time adding a value."""
+
+    names: tuple[str, ...]
+    help: str
+    metavar: str | None = None
+    kind: str | None = None
+    show_default: bool = True
+    hidden: bool = False
+    multiple: bool = False
+
+    def __init__(
+        self,
+        *names: str,
+        help: str,
+        metavar: str | None = None,
+        kind: str | None = None,
+        show_default: bool = True,
+        hidden: bool = False,
+        multiple: bool = False,
+    ) -> None:
+        values: dict[str, Any] = {"names": names, "help": help, "metavar": metavar}
+        values |= {"kind": kind, "show_default": show_default, "hidden": hidden}
+        values["multiple"] = multiple
+        for key, value in values.items():
+            object.__setattr__(self, key, value)
+
+    @property
+    def flags(self) -> tuple[str, ...]:
+        """The flags that give the value (``--grid`` of ``--grid/--no-grid``)."""
+        return tuple(n.split("/")[0] for n in self.names)
+
+    @property
+    def secondary(self) -> tuple[str, ...]:
+        """The flags that set a flag false (``--no-grid``)."""
+        return tuple(n.split("/")[1] for n in self.names if "/" in n)
+
+
+class Declared(NamedTuple):
+    """One parameter of a command, as its library function declares it."""
+
+    name: str
+    meta: Arg | Opt
+    kind: str
+    """One of :data:`KINDS`."""
+    nargs: int
+    """How many words it takes (-1: all that are left)."""
+    choices: type[Enum] | None
+    """A choice's enum."""
+    optional: bool
+    """Whether ``None`` is a value (the library's default for it)."""
+    default: Any
+    """The function's default (``inspect.Parameter.empty``: required)."""
+
+    @property
+    def required(self) -> bool:
+        return self.default is inspect.Parameter.empty
+
+
+class _Lenient(dict[str, Any]):
+    """Names an annotation may use that are only imported for type checkers: the ``Literal``
+    aliases of :mod:`scanconv.core.choices` (``LineAlgorithmName``), which never decide a
+    kind (the enum beside them does), so their module is not imported to read a signature."""
+
+    def __missing__(self, key: str) -> Any:
+        if key.endswith("Name"):
+            return type(key, (), {})
+        raise KeyError(key)
+
+
+def _evaluate(annotation: Any, namespace: dict[str, Any]) -> Any:
+    if isinstance(annotation, str):
+        return eval(annotation, namespace, _Lenient())  # our own source
+    return annotation
+
+
+def _members(hint: Any) -> tuple[Any, ...]:
+    origin = get_origin(hint)
+    if origin is Union or type(hint).__name__ == "UnionType":
+        return get_args(hint)
+    return (hint,)
+
+
+def _kind_of(hint: Any) -> tuple[str, int, type[Enum] | None]:
+    """The kind, the word count and the enum of a parameter's type."""
+    members = [m for m in _members(hint) if m is not type(None)]
+    enums = [m for m in members if isinstance(m, type) and issubclass(m, Enum)]
+    if enums:
+        return "choice", 1, enums[0]
+    origin = get_origin(members[0])
+    if origin is tuple:
+        kind, _, _ = _kind_of(get_args(members[0])[0])
+        return kind, len(get_args(members[0])), None
+    if origin in (list, Sequence) or any(get_origin(m) in (list, Sequence) for m in members):
+        inner = next(m for m in members if get_origin(m) in (list, Sequence))
+        kind, _, _ = _kind_of(get_args(inner)[0])
+        return kind, -1, None
+    if members == [bool]:
+        return "flag", 1, None
+    if Fraction in members:
+        return "number", 1, None
+    if members == [int]:
+        return "integer", 1, None
+    if members[0] in (str, Path):
+        return "text", 1, None
+    raise TypeError(f"no kind for {hint!r}")
+
+
+DECLARATION = "__declaration__"
+"""The attribute that keeps a function's annotations as written, when the ones ``help()``
+shows are :func:`plain` (:func:`scanconv.display.answers`)."""
+
+
+def plain(annotation: Any) -> Any:
+    """An annotation without its declaration, as ``help()`` shows it.
+
+    >>> plain('Annotated[PointLike, Opt("--center", help="The centre, (x, y).")]')
+    'PointLike'
+    >>> plain("bool")
+    'bool'
+    """
+    if isinstance(annotation, str) and annotation.startswith("Annotated["):
+        depth = 0
+        for i, ch in enumerate(annotation[10:], 10):
+            depth += (ch in "[(") - (ch in "])")
+            if ch == "," and depth == 0:
+                return annotation[10:i].strip()
+    if get_origin(annotation) is Annotated:
+        return get_args(annotation)[0]
+    return annotation
+
+
+def declared(fn: Callable[..., Any]) -> tuple[Declared, ...]:
+    """The declared parameters of the library function ``fn``, in its order (a parameter
+    with no :class:`Arg` or :class:`Opt` is the library's alone: no command takes it)."""
+    fn = inspect.unwrap(fn)
+    namespace = fn.__globals__
+    written = getattr(fn, DECLARATION, fn.__annotations__)
+    out = []
+    for name, p in inspect.signature(fn).parameters.items():
+        hint = _evaluate(written.get(name, p.annotation), namespace)
+        if get_origin(hint) is not Annotated:
+            continue
+        base, *extras = get_args(hint)
+        meta = next((m for m in extras if isinstance(m, Arg | Opt)), None)
+        if meta is None:
+            continue
+        kind, nargs, enum = _kind_of(base)
+        optional = type(None) in _members(base)
+        out.append(Declared(name, meta, meta.kind or kind, nargs, enum, optional, p.default))
+    return tuple(out)

@@ -1,0 +1,75 @@
+"""The commands of the question language, each answered by one function of
+:mod:`scanconv._api` whose signature declares its parameters (:mod:`scanconv.core.declare`).
+
+:data:`COMMANDS` names, for each command, that function and the output options it takes;
+everything else (its arguments, options, defaults, choices, help) is read from the function.
+The command line registers its commands from here (:mod:`scanconv.cli.declared`), the question
+grammar is generated from here (``python -m scanconv.questions.grammar``) and a question is
+answered by calling the function (:func:`scanconv.questions.answering.solve`).
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable
+from typing import Any, NamedTuple
+
+NOT_QUESTIONS = ("check", "exam", "mcp", "practice", "sheet", "site")
+"""Commands that write documents or mark: never a question."""
+
+OUTPUTS = ("fmt", "grid", "origin", "output", "brief", "exact", "explain", "svg", "png")
+"""The output options every command shares, in the order they follow its own."""
+
+
+class Command(NamedTuple):
+    """One command: its words, the library function that answers it, its output options."""
+
+    path: tuple[str, ...]
+    api: str
+    """The function: ``"shapes.line"`` is :func:`scanconv._api.shapes.line`."""
+    figures: bool = False
+    """Whether it draws a figure (``--svg``, ``--png``)."""
+    grid: bool = True
+    """Whether it shows a grid (``--grid/--no-grid``)."""
+    origin: bool = True
+    """Whether the grid has an orientation (``--origin``)."""
+    picture: bool = False
+    """Whether the grid is the shaded text picture."""
+    ignore_unknown: bool = True
+    """Whether a word that looks like an unknown option is a value (``-3``)."""
+
+    @property
+    def function(self) -> str:
+        """What the work budget knows it by: its words joined (``parametric_circle``)."""
+        return "_".join(self.path).replace("-", "_")
+
+    @property
+    def outputs(self) -> tuple[str, ...]:
+        """Its output options, in :data:`OUTPUTS`' order."""
+        shown = {"grid": self.grid, "origin": self.grid and self.origin}
+        shown |= {"svg": self.figures, "png": self.figures}
+        return tuple(name for name in OUTPUTS if shown.get(name, True))
+
+    def declaration(self) -> Callable[..., Any]:
+        """The library function whose signature declares the command (its module imported
+        now)."""
+        module, _, name = self.api.rpartition(".")
+        return getattr(importlib.import_module(f"scanconv._api.{module}"), name)  # type: ignore[no-any-return]
+
+    def answerer(self) -> Callable[..., Any]:
+        """The function that answers: the public one, ``scanconv._api.NAME`` (the same
+        function, looked up by its public name each time)."""
+        return getattr(importlib.import_module("scanconv._api"), self.api.rpartition(".")[2])  # type: ignore[no-any-return]
+
+
+_ALL = (
+    Command(("line",), "shapes.line", figures=True),
+    Command(("circle",), "shapes.circle", figures=True),
+    Command(("ellipse",), "shapes.ellipse", figures=True),
+)
+
+COMMANDS: dict[tuple[str, ...], Command] = {c.path: c for c in _ALL}
+"""Every declared command, by its words."""
+
+BY_FUNCTION: dict[str, Command] = {c.function: c for c in _ALL}
+"""Every declared command, by its budget name (:attr:`Command.function`)."""
