@@ -38,3 +38,9 @@ CENTER = Opt(
     show_default=False,
 )
 """The centre of a circle or ellipse."""
+
+SIZE = Opt("--size", help="M x N: M rows, N columns (8x8, or 8 for square).")
+"""An image's size."""
+BITS = Opt("--bits", help="Bits per pixel B (1-24; storage also 32, 48, 64).")
+THEORY = Opt("--theory", help="Add the points the notes' comparison questions expect.")
+"""``compare``'s comparison points."""

@@ -18,7 +18,18 @@ from ..algorithms.circle_choices import P0, CircleMethod, EllipseP0, Loop, Updat
 from ..core import lazy
 from ..core.declare import Arg, Opt
 from ..display import answers
-from .params import CENTER, CONVENTION, DERIVE, LAYOUT, LOOP, PSEUDOCODE, ROUNDING, START, TIE
+from .params import (
+    CENTER,
+    CONVENTION,
+    DERIVE,
+    LAYOUT,
+    LOOP,
+    PSEUDOCODE,
+    ROUNDING,
+    START,
+    THEORY,
+    TIE,
+)
 from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _pair
 
 if TYPE_CHECKING:
@@ -407,7 +418,11 @@ def ellipse(
 
 @answers
 def compare_lines(
-    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, theory: bool = False
+    x1: Annotated[NumberLike, Arg()],
+    y1: Annotated[NumberLike, Arg()],
+    x2: Annotated[NumberLike, Arg()],
+    y2: Annotated[NumberLike, Arg()],
+    theory: Annotated[bool, THEORY] = False,
 ) -> Solution:
     """The basic method, the DDA and Bresenham side by side over one line, column by column
     (``scanconv compare line``).
@@ -446,7 +461,9 @@ def compare_lines(
 
 
 @answers
-def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
+def compare_circles(
+    r: Annotated[NumberLike, Arg()], theory: Annotated[bool, THEORY] = False
+) -> Solution:
     """Every circle method over the first octant of one circle, column by column
     (``scanconv compare circle``).
 

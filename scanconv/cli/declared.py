@@ -15,6 +15,7 @@ from fractions import Fraction
 from typing import Annotated, Any
 
 import typer
+from typer._types import TyperChoice
 
 from ..core.declare import Arg, Declared, declared
 from ..questions.declared import COMMANDS
@@ -29,20 +30,23 @@ _TYPES |= {"flag": bool, "text": str}
 def typer_parameter(d: Declared) -> inspect.Parameter:
     """The parameter typer reads for the declared one: its type, its typer declaration and
     the library's default."""
-    base: Any = d.choices if d.kind == "choice" else _TYPES[d.kind]
+    texts = d.choices if isinstance(d.choices, tuple) else None
+    base: Any = d.choices if d.kind == "choice" and not texts else _TYPES.get(d.kind, str)
     if d.nargs == -1:
         base = list[base]
     elif d.nargs > 1:
         base = tuple[(base,) * d.nargs]  # type: ignore[misc]
     if d.optional:
         base = base | None
-    options: dict[str, Any] = {"help": d.meta.help, "metavar": d.meta.metavar}
+    options: dict[str, Any] = {"help": d.meta.help or None, "metavar": d.meta.metavar}
     if d.kind in _PARSERS:
         options["parser"] = _PARSERS[d.kind]
     if isinstance(d.meta, Arg):
         info = typer.Argument(show_default=False, **options)
     else:
-        if d.kind == "choice":
+        if texts:
+            options["click_type"] = TyperChoice(texts, case_sensitive=False)
+        elif d.kind == "choice":
             options["case_sensitive"] = False
         if d.meta.hidden:
             options["hidden"] = True
@@ -86,9 +90,12 @@ class DeclaredCommand(Command):
 
     @functools.cached_property
     def parameters(self) -> list[inspect.Parameter]:
-        own = [typer_parameter(d) for d in self.declared]
-        names = {p.name for p in own}
-        return own + [self._shared[n] for n in SHARED if n in self._shared and n not in names]
+        own = {d.name: typer_parameter(d) for d in self.declared}
+        return [p for name, p in own.items() if name not in SHARED] + [
+            own.get(name) or self._shared[name]
+            for name in SHARED
+            if name in own or name in self._shared
+        ]
 
 
 def command(group: typer.Typer, path: tuple[str, ...], help: str) -> None:

@@ -35,7 +35,7 @@ class Arg:
     """A positional argument: its help, and its name in messages (``X1``; default the
     parameter's name in capitals). ``kind`` overrides the kind the type gives."""
 
-    help: str
+    help: str = ""
     metavar: str | None = None
     kind: str | None = None
 
@@ -44,8 +44,9 @@ class Arg:
 class Opt:
     """An option: its flags (``"--algo", "-a"``; ``"--grid/--no-grid"`` for a flag that has
     both), its help, and how its help shows it: ``metavar`` (``"XC YC"``), ``show_default``,
-    ``hidden``. ``kind`` overrides the kind the type gives; ``multiple``: the option may be
-    given again, each time adding a value."""
+    ``hidden``. ``kind`` overrides the kind the type gives; ``choices``: the texts a choice
+    takes, where its type is a ``Literal`` (an enum's values are its choices); ``multiple``:
+    the option may be given again, each time adding a value."""
 
     names: tuple[str, ...]
     help: str
@@ -54,6 +55,7 @@ class Opt:
     show_default: bool = True
     hidden: bool = False
     multiple: bool = False
+    choices: tuple[str, ...] = ()
 
     def __init__(
         self,
@@ -64,10 +66,11 @@ class Opt:
         show_default: bool = True,
         hidden: bool = False,
         multiple: bool = False,
+        choices: tuple[str, ...] = (),
     ) -> None:
         values: dict[str, Any] = {"names": names, "help": help, "metavar": metavar}
         values |= {"kind": kind, "show_default": show_default, "hidden": hidden}
-        values["multiple"] = multiple
+        values |= {"multiple": multiple, "choices": choices}
         for key, value in values.items():
             object.__setattr__(self, key, value)
 
@@ -91,8 +94,8 @@ class Declared(NamedTuple):
     """One of :data:`KINDS`."""
     nargs: int
     """How many words it takes (-1: all that are left)."""
-    choices: type[Enum] | None
-    """A choice's enum."""
+    choices: type[Enum] | tuple[str, ...] | None
+    """A choice's enum, or its texts."""
     optional: bool
     """Whether ``None`` is a value (the library's default for it)."""
     default: Any
@@ -191,7 +194,11 @@ def declared(fn: Callable[..., Any]) -> tuple[Declared, ...]:
         meta = next((m for m in extras if isinstance(m, Arg | Opt)), None)
         if meta is None:
             continue
-        kind, nargs, enum = _kind_of(base)
+        choices: type[Enum] | tuple[str, ...] | None
+        if isinstance(meta, Opt) and meta.choices:
+            kind, nargs, choices = "choice", 1, meta.choices
+        else:
+            kind, nargs, choices = _kind_of(base)
         optional = type(None) in _members(base)
-        out.append(Declared(name, meta, meta.kind or kind, nargs, enum, optional, p.default))
+        out.append(Declared(name, meta, meta.kind or kind, nargs, choices, optional, p.default))
     return tuple(out)

@@ -43,34 +43,8 @@ def _text(value: Any) -> Any:
     return getattr(value, "value", value)
 
 
-def storage(
-    m: Any, n: Any, levels: Any, bits: Any, binary: bool, color: Any, frames: Any
-) -> Solution:
-    return api.storage(
-        m,
-        n,
-        levels=levels,
-        bits=bits,
-        binary=binary,
-        color=_text(color),
-        frames=1 if frames is None else frames,
-    )
-
-
 def quantize(bits: Any, value_range: Any, kind: Any, recon: Any) -> Solution:
     return api.quantize(bits, value_range, integer=_text(kind) == "integer", recon=_text(recon))
-
-
-def sample(
-    expr: str, size: str, levels: Any, domain: Any, value_range: Any, origin: Any
-) -> Solution:
-    return api.sample(
-        expr, size, levels, domain=domain, value_range=value_range, origin=_text(origin)
-    )
-
-
-def image_ramp(size: str, levels: Any) -> Solution:
-    return api.ramp(size, 8 if levels is None else levels)
 
 
 def parametric_circle(r: Any, center: Any, radius: Any, t_range: Any, samples: Any) -> Solution:
@@ -138,18 +112,6 @@ def continuity(values: list[Any], samples: Any) -> Solution:
 def local_control(points: Any, move: Any, degree: Any, knots: Any, samples: Any) -> Solution:
     index, x, y = move
     return api.local_control(points, index, (x, y), degree, knots, samples)
-
-
-def compare_line(x1: Any, y1: Any, x2: Any, y2: Any, theory: bool) -> Solution:
-    return api.compare_lines(x1, y1, x2, y2, theory=theory)
-
-
-def compare_circle(r: Any, theory: bool) -> Solution:
-    return api.compare_circles(r, theory=theory)
-
-
-def compare_curves() -> Solution:
-    return api.compare_curves()
 
 
 def _is_number(word: str) -> bool:
@@ -438,9 +400,9 @@ def theory(topic: str, list_: bool = False) -> Solution:
 BODIES: dict[str, Body] = {
     fn.__name__: fn
     for fn in (
-        storage, quantize, sample, image_ramp, parametric_circle, parametric_ellipse,
+        quantize, parametric_circle, parametric_ellipse,
         parametric_parabola, parametric_line, parametric_custom, bezier, bspline, continuity,
-        local_control, compare_line, compare_circle, compare_curves, transform,
+        local_control, transform,
         viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon,
         fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color,
         theory, clip_convex, dither_threshold, dither_ordered, dither_diffusion, halftone, inside,

@@ -37,11 +37,13 @@ class Command(NamedTuple):
     """Whether the grid is the shaded text picture."""
     ignore_unknown: bool = True
     """Whether a word that looks like an unknown option is a value (``-3``)."""
+    name: str = ""
+    """What the work budget knows it by, where that is not its words joined."""
 
     @property
     def function(self) -> str:
         """What the work budget knows it by: its words joined (``parametric_circle``)."""
-        return "_".join(self.path).replace("-", "_")
+        return self.name or "_".join(self.path).replace("-", "_")
 
     @property
     def outputs(self) -> tuple[str, ...]:
@@ -66,6 +68,12 @@ _ALL = (
     Command(("line",), "shapes.line", figures=True),
     Command(("circle",), "shapes.circle", figures=True),
     Command(("ellipse",), "shapes.ellipse", figures=True),
+    Command(("compare", "line"), "shapes.compare_lines"),
+    Command(("compare", "circle"), "shapes.compare_circles"),
+    Command(("compare", "curves"), "shapes.compare_curves", grid=False, ignore_unknown=False),
+    Command(("storage",), "image.storage", grid=False),
+    Command(("sample",), "image.sample", picture=True),
+    Command(("image", "ramp"), "image.ramp", picture=True, origin=False, ignore_unknown=False),
 )
 
 COMMANDS: dict[tuple[str, ...], Command] = {c.path: c for c in _ALL}

@@ -122,6 +122,12 @@ def default_text(value: Any) -> Any:
     return value
 
 
+def _texts(choices: Any) -> tuple[str, ...]:
+    if choices is None:
+        return ()
+    return tuple(c.value if isinstance(c, Enum) else c for c in choices)
+
+
 def param_of(d: Declared) -> Param:
     """The grammar's parameter for a declared one (:func:`scanconv.core.declare.declared`)."""
     from ..core.declare import Opt
@@ -135,10 +141,10 @@ def param_of(d: Declared) -> Param:
         nargs=d.nargs,
         required=d.required,
         default=None if d.required or d.default is None else default_text(d.default),
-        choices=tuple(c.value for c in d.choices) if d.choices is not None else (),
+        choices=_texts(d.choices),
         secondary=meta.secondary if isinstance(meta, Opt) else (),
         multiple=meta.multiple if isinstance(meta, Opt) else False,
-        metavar="" if option else meta.metavar or d.name.upper(),
+        metavar="" if option else meta.metavar or d.name,
     )
 
 

@@ -50,7 +50,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('bits', ('--bits',), 'number'),
         Param('binary', ('--binary',), 'flag', default=False),
         Param('color', ('--color',), 'choice', choices=('rgb24',)),
-        Param('frames', ('--frames',), 'number'),
+        Param('frames', ('--frames',), 'number', default=1),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('m', 'n', 'levels', 'bits', 'binary', 'color', 'frames'), ignore_unknown=True),
     ('quantize',): Spec(('quantize',), 'quantize', (
@@ -196,7 +196,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('topic', 'list_'), ignore_unknown=False, no_args_is_help=True),
     ('image', 'ramp'): Spec(('image', 'ramp'), 'image_ramp', (
         Param('size', ('--size',), 'text', default='8'),
-        Param('levels', ('--levels', '-L'), 'number'),
+        Param('levels', ('--levels', '-L'), 'number', default=8),
         S['fmt'], S['grid'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('size', 'levels'), ignore_unknown=False),
     ('compare', 'line'): Spec(('compare', 'line'), 'compare_line', (
