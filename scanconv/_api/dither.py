@@ -5,10 +5,11 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Annotated, Literal
 
 from ..core import lazy
 from ..core.checks import InputError
+from ..core.declare import Arg, Opt
 from ..display import answers
 from .values import NumberLike, _choice, _number, _optional, _whole
 
@@ -33,6 +34,21 @@ MatrixLike = str | Sequence[Sequence[NumberLike]]
 """An image or a dither matrix: rows of numbers, or text with the rows separated by ``;`` or
 ``/`` and the values by spaces or commas (``"10 200; 60 90"``); with ``;`` a value may be a
 fraction (``"1/2 0; 1 1"``)."""
+
+IMAGE = Opt(
+    "--image",
+    "-i",
+    metavar="ROWS",
+    help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: "
+    "'10 200; 60 90'.",
+    kind="text",
+)
+TOP = Opt("--top", help="The top of the scale: values run 0..TOP, an on pixel is TOP.")
+COMPARE = Opt(
+    "--compare",
+    help="A pixel is on when its value is > or >= the threshold.",
+    choices=(">", ">="),
+)
 
 
 def _matrix(value: MatrixLike, param: str) -> list[list[Number]]:
@@ -65,11 +81,13 @@ def _matrix(value: MatrixLike, param: str) -> list[list[Number]]:
 
 @answers
 def dither_threshold(
-    image: MatrixLike,
-    top: NumberLike = 255,
+    image: Annotated[MatrixLike, IMAGE],
+    top: Annotated[NumberLike, TOP] = 255,
     *,
-    at: NumberLike | None = None,
-    compare: CompareName = ">=",
+    at: Annotated[
+        NumberLike | None, Opt("--at", "-t", help="The threshold T (default TOP / 2).")
+    ] = None,
+    compare: Annotated[CompareName, COMPARE] = ">=",
 ) -> Solution:
     """Thresholding (``scanconv dither threshold``): each pixel on when its value passes one
     threshold.
@@ -180,14 +198,42 @@ def dither_ordered(
 
 @answers
 def dither_diffusion(
-    image: MatrixLike,
-    top: NumberLike = 255,
+    image: Annotated[MatrixLike, IMAGE],
+    top: Annotated[NumberLike, TOP] = 255,
     *,
-    kernel: KernelName = "floyd-steinberg",
-    order: ScanOrderName = "raster",
-    arithmetic: ArithmeticName = "exact",
-    carry: CarryName = "kept",
-    compare: CompareName = ">=",
+    kernel: Annotated[
+        KernelName,
+        Opt(
+            "--kernel",
+            help="floyd-steinberg (7, 3, 5, 1)/16 or simple (3, 3, 2)/8.",
+            choices=("floyd-steinberg", "simple"),
+        ),
+    ] = "floyd-steinberg",
+    order: Annotated[
+        ScanOrderName,
+        Opt(
+            "--order",
+            help="raster: every row left to right; serpentine: alternate rows.",
+            choices=("raster", "serpentine"),
+        ),
+    ] = "raster",
+    arithmetic: Annotated[
+        ArithmeticName,
+        Opt(
+            "--arithmetic",
+            help="Error shares kept exact or truncated to integers.",
+            choices=("exact", "integer"),
+        ),
+    ] = "exact",
+    carry: Annotated[
+        CarryName,
+        Opt(
+            "--carry",
+            help="Negative carried values kept, or clamped at 0.",
+            choices=("kept", "clamped"),
+        ),
+    ] = "kept",
+    compare: Annotated[CompareName, COMPARE] = ">=",
 ) -> Solution:
     """Error diffusion to two levels, 0 and ``top`` (``scanconv dither floyd-steinberg``).
 
@@ -240,7 +286,17 @@ def dither_diffusion(
 
 
 @answers
-def halftone(n: NumberLike, *, level: NumberLike | None = None, bits: NumberLike = 1) -> Solution:
+def halftone(
+    n: Annotated[NumberLike, Arg("N, the halftone cell's width: 2, 4, 8 or 16.", "N")],
+    *,
+    level: Annotated[
+        NumberLike | None, Opt("--level", "-l", help="Only the pattern of this level.")
+    ] = None,
+    bits: Annotated[
+        NumberLike,
+        Opt("--bits", help="Bits per pixel of the device (default 1).", show_default=False),
+    ] = 1,
+) -> Solution:
     """The n x n halftone patterns (``scanconv halftone``): the levels they give and the pattern of
     each level, or of one.
 

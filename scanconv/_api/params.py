@@ -4,7 +4,13 @@ writes its parameter's type and default, and one of these as its ``Annotated`` m
 
 from __future__ import annotations
 
-from ..core.declare import Opt
+from ..core.declare import Arg, Opt
+
+X1 = Arg("x of the first end point P1.", "X1")
+Y1 = Arg("y of the first end point P1.", "Y1")
+X2 = Arg("x of the second end point P2.", "X2")
+Y2 = Arg("y of the second end point P2.", "Y2")
+"""A line's end points."""
 
 CONVENTION = Opt(
     "--convention",

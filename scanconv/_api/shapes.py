@@ -29,6 +29,10 @@ from .params import (
     START,
     THEORY,
     TIE,
+    X1,
+    X2,
+    Y1,
+    Y2,
 )
 from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _pair
 
@@ -63,10 +67,10 @@ else:  # each command's answer module, loaded by its first call
 
 @answers
 def line(
-    x1: Annotated[NumberLike, Arg("x of the first end point P1.", "X1")],
-    y1: Annotated[NumberLike, Arg("y of the first end point P1.", "Y1")],
-    x2: Annotated[NumberLike, Arg("x of the second end point P2.", "X2")],
-    y2: Annotated[NumberLike, Arg("y of the second end point P2.", "Y2")],
+    x1: Annotated[NumberLike, X1],
+    y1: Annotated[NumberLike, Y1],
+    x2: Annotated[NumberLike, X2],
+    y2: Annotated[NumberLike, Y2],
     algo: Annotated[
         LineAlgorithm | LineAlgorithmName, Opt("--algo", "-a", help="Line algorithm.")
     ] = "bresenham",

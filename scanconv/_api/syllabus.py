@@ -6,11 +6,13 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Annotated
 
 from ..core import lazy
 from ..core.checks import InputError
+from ..core.declare import Arg, Opt
 from ..display import answers
+from .params import X1, X2, Y1, Y2
 from .values import (
     NumberLike,
     PointLike,
@@ -41,6 +43,15 @@ else:  # each command's answer module, loaded by its first call
     answers_characters = lazy.module("scanconv.answers.primitives.characters")
     answers_framebuffer = lazy.module("scanconv.answers.image.framebuffer")
     answers_inside = lazy.module("scanconv.answers.process.fill.inside")
+
+CHAR = Arg("The character (A-Z, 0-9).", "CHAR")
+AT = Opt(
+    "--at",
+    metavar="X Y",
+    help="The character's bottom-left corner (default 0 0).",
+    show_default=False,
+)
+SCALE = Opt("--scale", help="Scale factor, 1..16 (default 1).", show_default=False)
 
 MAX_GLYPH = 64
 """The largest glyph drawn from rows given (64 x 64 bits; scaled at most 16 times)."""
@@ -94,14 +105,25 @@ def inside(
 
 @answers
 def framebuffer(
-    width: NumberLike,
-    height: NumberLike,
-    bits: NumberLike,
+    width: Annotated[NumberLike, Arg("W, pixels across.", "W")],
+    height: Annotated[NumberLike, Arg("H, pixels down.", "H")],
+    bits: Annotated[NumberLike, Arg("B, bits per pixel (bit planes).", "BITS")],
     *,
-    lut: NumberLike | None = None,
-    rate: NumberLike | None = None,
-    refresh: NumberLike | None = None,
-    interlaced: bool = False,
+    lut: Annotated[
+        NumberLike | None,
+        Opt("--lut", help="Bits of a colour look-up-table entry: the table's size."),
+    ] = None,
+    rate: Annotated[
+        NumberLike | None,
+        Opt("--rate", help="Transfer rate in bits per second: the time to load a frame."),
+    ] = None,
+    refresh: Annotated[
+        NumberLike | None,
+        Opt("--refresh", help="Refresh rate in Hz: the time to access a pixel."),
+    ] = None,
+    interlaced: Annotated[
+        bool, Opt("--interlaced", help="Interlaced: --refresh counts fields.")
+    ] = False,
 ) -> Solution:
     """Frame-buffer arithmetic (``scanconv framebuffer``).
 
@@ -146,14 +168,24 @@ def framebuffer(
 
 @answers
 def line_style(
-    x1: NumberLike,
-    y1: NumberLike,
-    x2: NumberLike,
-    y2: NumberLike,
-    mask: str,
+    x1: Annotated[NumberLike, X1],
+    y1: Annotated[NumberLike, Y1],
+    x2: Annotated[NumberLike, X2],
+    y2: Annotated[NumberLike, Y2],
+    mask: Annotated[str, Opt("--mask", metavar="BITS", help="The pixel mask, e.g. 1110 (dashes).")],
     *,
-    bits: BitOrderName = "msb",
-    repeat: NumberLike = 1,
+    bits: Annotated[
+        BitOrderName,
+        Opt(
+            "--bits",
+            help="Read the mask from its most (msb) or least (lsb) significant bit.",
+            choices=("msb", "lsb"),
+        ),
+    ] = "msb",
+    repeat: Annotated[
+        NumberLike,
+        Opt("--repeat", help="Use each bit for N pixels (default 1).", show_default=False),
+    ] = 1,
 ) -> Solution:
     """A dashed or dotted line (``scanconv linestyle``): Bresenham's pixels, each drawn when its bit
     of the mask is 1.
@@ -206,13 +238,15 @@ def line_style(
 
 @answers
 def thick_line(
-    x1: NumberLike,
-    y1: NumberLike,
-    x2: NumberLike,
-    y2: NumberLike,
-    width: NumberLike,
+    x1: Annotated[NumberLike, X1],
+    y1: Annotated[NumberLike, Y1],
+    x2: Annotated[NumberLike, X2],
+    y2: Annotated[NumberLike, Y2],
+    width: Annotated[NumberLike, Opt("--width", "-W", help="The line's width in pixels.")],
     *,
-    brush: bool = False,
+    brush: Annotated[
+        bool, Opt("--brush", help="A square brush instead of pixel replication.")
+    ] = False,
 ) -> Solution:
     """A thick line (``scanconv thickline``): at each pixel of Bresenham's line, a span of pixels
     across the minor axis, or a square brush.
@@ -268,11 +302,20 @@ def _char(char: str) -> str:
 
 @answers
 def char_bitmap(
-    char: str,
+    char: Annotated[str, CHAR],
     *,
-    rows: str | Sequence[str] | None = None,
-    at: PointLike = (0, 0),
-    scale: NumberLike = 1,
+    rows: Annotated[
+        str | Sequence[str] | None,
+        Opt(
+            "--rows",
+            "-r",
+            metavar="ROWS",
+            help="The glyph's rows, top first, separated by '/': 01110/10001/... (default: "
+            "the 5 x 7 font's).",
+        ),
+    ] = None,
+    at: Annotated[PointLike, AT] = (0, 0),
+    scale: Annotated[NumberLike, SCALE] = 1,
 ) -> Solution:
     """A character drawn from its bitmap (``scanconv char bitmap``).
 
@@ -330,11 +373,19 @@ def char_bitmap(
 
 @answers
 def char_stroke(
-    char: str,
+    char: Annotated[str, CHAR],
     *,
-    at: PointLike = (0, 0),
-    scale: NumberLike = 1,
-    algo: StrokeAlgorithmName = "bresenham",
+    at: Annotated[PointLike, AT] = (0, 0),
+    scale: Annotated[NumberLike, SCALE] = 1,
+    algo: Annotated[
+        StrokeAlgorithmName,
+        Opt(
+            "--algo",
+            "-a",
+            help="The line algorithm each stroke is drawn with.",
+            choices=("bresenham", "dda"),
+        ),
+    ] = "bresenham",
 ) -> Solution:
     """A stroke (vector) character (``scanconv char stroke``): each segment scaled, placed and
     drawn by a line algorithm.
@@ -371,7 +422,18 @@ def char_stroke(
 
 @answers
 def char_storage(
-    count: NumberLike, width: NumberLike, height: NumberLike, *, packing: PackingName = "rows"
+    count: Annotated[NumberLike, Arg("How many characters the font holds.", "COUNT")],
+    width: Annotated[NumberLike, Arg("A glyph's width in pixels.", "WIDTH")],
+    height: Annotated[NumberLike, Arg("A glyph's height in pixels.", "HEIGHT")],
+    *,
+    packing: Annotated[
+        PackingName,
+        Opt(
+            "--packing",
+            help="A glyph in whole bytes per row, per column, or packed bits.",
+            choices=("rows", "columns", "bits"),
+        ),
+    ] = "rows",
 ) -> Solution:
     """The storage of a bitmap font (``scanconv char storage``).
 

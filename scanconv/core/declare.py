@@ -136,13 +136,13 @@ def _kind_of(hint: Any) -> tuple[str, int, type[Enum] | None]:
     enums = [m for m in members if isinstance(m, type) and issubclass(m, Enum)]
     if enums:
         return "choice", 1, enums[0]
-    origin = get_origin(members[0])
+    first = members[0]  # the first type decides: str | Sequence[str] is text
+    origin = get_origin(first)
     if origin is tuple:
-        kind, _, _ = _kind_of(get_args(members[0])[0])
-        return kind, len(get_args(members[0])), None
-    if origin in (list, Sequence) or any(get_origin(m) in (list, Sequence) for m in members):
-        inner = next(m for m in members if get_origin(m) in (list, Sequence))
-        kind, _, _ = _kind_of(get_args(inner)[0])
+        kind, _, _ = _kind_of(get_args(first)[0])
+        return kind, len(get_args(first)), None
+    if origin in (list, Sequence):
+        kind, _, _ = _kind_of(get_args(first)[0])
         return kind, -1, None
     if members == [bool]:
         return "flag", 1, None
@@ -150,7 +150,7 @@ def _kind_of(hint: Any) -> tuple[str, int, type[Enum] | None]:
         return "number", 1, None
     if members == [int]:
         return "integer", 1, None
-    if members[0] in (str, Path):
+    if first in (str, Path):
         return "text", 1, None
     raise TypeError(f"no kind for {hint!r}")
 

@@ -308,10 +308,6 @@ def color(model: Any, values: list[str], to: Any, unit: bool, bits: Any) -> Solu
     return color_api(model, *numbers, to=targets, unit=unit, bits=8 if bits is None else bits)
 
 
-def dither_threshold(image: str, top: Any, at: Any, compare: Any) -> Solution:
-    return api.dither_threshold(image, 255 if top is None else top, at=at, compare=_text(compare))
-
-
 def dither_ordered(
     image: str,
     top: Any,
@@ -332,65 +328,9 @@ def dither_ordered(
     )
 
 
-def dither_diffusion(
-    image: str,
-    top: Any,
-    kernel: Any,
-    order: Any,
-    arithmetic: Any,
-    carry: Any,
-    compare: Any,
-) -> Solution:
-    return api.dither_diffusion(
-        image,
-        255 if top is None else top,
-        kernel=_text(kernel),
-        order=_text(order),
-        arithmetic=_text(arithmetic),
-        carry=_text(carry),
-        compare=_text(compare),
-    )
-
-
-def halftone(n: Any, level: Any, bits: Any) -> Solution:
-    return api.halftone(n, level=level, bits=1 if bits is None else bits)
-
-
 def inside(words: list[str], rule: Any, boundary: Any) -> Solution:
     vertices, points = numbers_around(words, "--points", "points")
     return api.inside(vertices, points, rule=_text(rule), boundary=_text(boundary))
-
-
-def framebuffer(
-    width: Any, height: Any, bits: Any, lut: Any, rate: Any, refresh: Any, interlaced: bool
-) -> Solution:
-    return api.framebuffer(
-        width, height, bits, lut=lut, rate=rate, refresh=refresh, interlaced=interlaced
-    )
-
-
-def line_style(x1: Any, y1: Any, x2: Any, y2: Any, mask: str, bits: Any, repeat: Any) -> Solution:
-    return api.line_style(
-        x1, y1, x2, y2, mask, bits=_text(bits), repeat=1 if repeat is None else repeat
-    )
-
-
-def thick_line(x1: Any, y1: Any, x2: Any, y2: Any, width: Any, brush: bool) -> Solution:
-    return api.thick_line(x1, y1, x2, y2, width, brush=brush)
-
-
-def char_bitmap(char: str, rows: Any, at: Any, scale: Any) -> Solution:
-    return api.char_bitmap(char, rows=rows, at=at or (0, 0), scale=1 if scale is None else scale)
-
-
-def char_stroke(char: str, at: Any, scale: Any, algo: Any) -> Solution:
-    return api.char_stroke(
-        char, at=at or (0, 0), scale=1 if scale is None else scale, algo=_text(algo)
-    )
-
-
-def char_storage(count: Any, width: Any, height: Any, packing: Any) -> Solution:
-    return api.char_storage(count, width, height, packing=_text(packing))
 
 
 def theory(topic: str, list_: bool = False) -> Solution:
@@ -400,13 +340,7 @@ def theory(topic: str, list_: bool = False) -> Solution:
 BODIES: dict[str, Body] = {
     fn.__name__: fn
     for fn in (
-        quantize, parametric_circle, parametric_ellipse,
-        parametric_parabola, parametric_line, parametric_custom, bezier, bspline, continuity,
-        local_control, transform,
-        viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon,
-        fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color,
-        theory, clip_convex, dither_threshold, dither_ordered, dither_diffusion, halftone, inside,
-        framebuffer, line_style, thick_line, char_bitmap, char_stroke, char_storage,
+        quantize, parametric_circle, parametric_ellipse, parametric_parabola, parametric_line, parametric_custom, bezier, bspline, continuity, local_control, transform, viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon, fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color, theory, clip_convex, dither_ordered, inside,
     )
 }  # fmt: skip
 """Each command's answer, by the command's function name (``parametric_circle``), for the

@@ -73,6 +73,21 @@ _ALL = (
     Command(("compare", "curves"), "shapes.compare_curves", grid=False, ignore_unknown=False),
     Command(("storage",), "image.storage", grid=False),
     Command(("sample",), "image.sample", picture=True),
+    Command(("dither", "threshold"), "dither.dither_threshold", picture=True, origin=False),
+    Command(
+        ("dither", "floyd-steinberg"),
+        "dither.dither_diffusion",
+        picture=True,
+        origin=False,
+        name="dither_diffusion",
+    ),
+    Command(("halftone",), "dither.halftone", grid=False),
+    Command(("framebuffer",), "syllabus.framebuffer", grid=False),
+    Command(("linestyle",), "syllabus.line_style", name="line_style"),
+    Command(("thickline",), "syllabus.thick_line", name="thick_line"),
+    Command(("char", "bitmap"), "syllabus.char_bitmap"),
+    Command(("char", "stroke"), "syllabus.char_stroke"),
+    Command(("char", "storage"), "syllabus.char_storage", grid=False),
     Command(("image", "ramp"), "image.ramp", picture=True, origin=False, ignore_unknown=False),
 )
 

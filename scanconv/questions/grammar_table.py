@@ -143,7 +143,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('halftone',): Spec(('halftone',), 'halftone', (
         Param('n', (), 'number', required=True, metavar='N'),
         Param('level', ('--level', '-l'), 'number'),
-        Param('bits', ('--bits',), 'number'),
+        Param('bits', ('--bits',), 'number', default=1),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('n', 'level', 'bits'), ignore_unknown=True),
     ('inside',): Spec(('inside',), 'inside', (
@@ -169,7 +169,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('y2', (), 'number', required=True, metavar='Y2'),
         Param('mask', ('--mask',), 'text', required=True),
         Param('bits', ('--bits',), 'choice', default='msb', choices=('msb', 'lsb')),
-        Param('repeat', ('--repeat',), 'number'),
+        Param('repeat', ('--repeat',), 'number', default=1),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('x1', 'y1', 'x2', 'y2', 'mask', 'bits', 'repeat'), ignore_unknown=True),
     ('thickline',): Spec(('thickline',), 'thick_line', (
@@ -280,7 +280,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('vertices', 'window', 'method'), ignore_unknown=True),
     ('dither', 'threshold'): Spec(('dither', 'threshold'), 'dither_threshold', (
         Param('image', ('--image', '-i'), 'text', required=True),
-        Param('top', ('--top',), 'number', default=Fraction(255, 1)),
+        Param('top', ('--top',), 'number', default=255),
         Param('at', ('--at', '-t'), 'number'),
         Param('compare', ('--compare',), 'choice', default='>=', choices=('>', '>=')),
         S['fmt'], S['grid'], S['output'], S['brief'], S['exact'], S['explain'],
@@ -297,7 +297,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('image', 'top', 'matrix', 'compare', 'scale', 'base', 'transpose'), ignore_unknown=True),
     ('dither', 'floyd-steinberg'): Spec(('dither', 'floyd-steinberg'), 'dither_diffusion', (
         Param('image', ('--image', '-i'), 'text', required=True),
-        Param('top', ('--top',), 'number', default=Fraction(255, 1)),
+        Param('top', ('--top',), 'number', default=255),
         Param('kernel', ('--kernel',), 'choice', default='floyd-steinberg', choices=('floyd-steinberg', 'simple')),
         Param('order', ('--order',), 'choice', default='raster', choices=('raster', 'serpentine')),
         Param('arithmetic', ('--arithmetic',), 'choice', default='exact', choices=('exact', 'integer')),
@@ -308,14 +308,14 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('char', 'bitmap'): Spec(('char', 'bitmap'), 'char_bitmap', (
         Param('char', (), 'text', required=True, metavar='CHAR'),
         Param('rows', ('--rows', '-r'), 'text'),
-        Param('at', ('--at',), 'number', nargs=2),
-        Param('scale', ('--scale',), 'number'),
+        Param('at', ('--at',), 'number', nargs=2, default=(0, 0)),
+        Param('scale', ('--scale',), 'number', default=1),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('char', 'rows', 'at', 'scale'), ignore_unknown=True),
     ('char', 'stroke'): Spec(('char', 'stroke'), 'char_stroke', (
         Param('char', (), 'text', required=True, metavar='CHAR'),
-        Param('at', ('--at',), 'number', nargs=2),
-        Param('scale', ('--scale',), 'number'),
+        Param('at', ('--at',), 'number', nargs=2, default=(0, 0)),
+        Param('scale', ('--scale',), 'number', default=1),
         Param('algo', ('--algo', '-a'), 'choice', default='bresenham', choices=('bresenham', 'dda')),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('char', 'at', 'scale', 'algo'), ignore_unknown=True),
