@@ -12,6 +12,49 @@ X2 = Arg("x of the second end point P2.", "X2")
 Y2 = Arg("y of the second end point P2.", "Y2")
 """A line's end points."""
 
+VERTICES = Arg("The polygon's vertices, in order.", "X1 Y1 X2 Y2 X3 Y3 ...")
+WINDOW = Opt(
+    "--window",
+    "-w",
+    metavar="XMIN YMIN XMAX YMAX",
+    show_default=False,
+    help="The clipping window in world coordinates (closed: its edges are inside).",
+    nargs=4,
+)
+VIEWPORT = Opt(
+    "--viewport",
+    metavar="XMIN YMIN XMAX YMAX",
+    show_default=False,
+    help="The viewport in device coordinates.",
+    nargs=4,
+)
+NORMALS = Opt(
+    "--normals",
+    help="cyrus-beck: the edge normals point outward (default) or inward.",
+    choices=("outward", "inward"),
+)
+ENDS = Opt(
+    "--ends",
+    help="cyrus-beck: the clipped end points exact (default) or truncated.",
+    choices=("exact", "truncated"),
+)
+
+SAMPLES = Opt(
+    "--samples",
+    "-n",
+    help="Steps of t: the curve is tabulated at N + 1 values of t, both ends included "
+    "(default 16; parametric line: max(|dx|, |dy|)).",
+    kind="integer",
+    show_default=False,
+)
+T_RANGE = Opt(
+    "--t-range",
+    metavar="T0 T1",
+    help="Parameter range; numbers or formulas such as 2*pi (default: the curve's own).",
+    kind="text",
+    show_default=False,
+)
+
 CONVENTION = Opt(
     "--convention",
     help="A named preset of the conventions: notes (default), hearn-baker, foley, "

@@ -46,7 +46,8 @@ class Opt:
     both), its help, and how its help shows it: ``metavar`` (``"XC YC"``), ``show_default``,
     ``hidden``. ``kind`` overrides the kind the type gives; ``choices``: the texts a choice
     takes, where its type is a ``Literal`` (an enum's values are its choices); ``multiple``:
-    the option may be given again, each time adding a value."""
+    the option may be given again, each time adding a value; ``nargs``: the words it takes,
+    where its type does not say (a window's four numbers typed as a sequence)."""
 
     names: tuple[str, ...]
     help: str
@@ -56,6 +57,7 @@ class Opt:
     hidden: bool = False
     multiple: bool = False
     choices: tuple[str, ...] = ()
+    nargs: int | None = None
 
     def __init__(
         self,
@@ -67,10 +69,11 @@ class Opt:
         hidden: bool = False,
         multiple: bool = False,
         choices: tuple[str, ...] = (),
+        nargs: int | None = None,
     ) -> None:
         values: dict[str, Any] = {"names": names, "help": help, "metavar": metavar}
         values |= {"kind": kind, "show_default": show_default, "hidden": hidden}
-        values |= {"multiple": multiple, "choices": choices}
+        values |= {"multiple": multiple, "choices": choices, "nargs": nargs}
         for key, value in values.items():
             object.__setattr__(self, key, value)
 
@@ -199,6 +202,7 @@ def declared(fn: Callable[..., Any]) -> tuple[Declared, ...]:
             kind, nargs, choices = "choice", 1, meta.choices
         else:
             kind, nargs, choices = _kind_of(base)
+            nargs = getattr(meta, "nargs", None) or nargs
         optional = type(None) in _members(base)
         out.append(Declared(name, meta, meta.kind or kind, nargs, choices, optional, p.default))
     return tuple(out)

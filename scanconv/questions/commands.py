@@ -56,22 +56,6 @@ def parametric_circle(r: Any, center: Any, radius: Any, t_range: Any, samples: A
     return api.parametric_circle(center, chosen, t_range=t_range, samples=samples)
 
 
-def parametric_ellipse(center: Any, a: Any, b: Any, t_range: Any, samples: Any) -> Solution:
-    return api.parametric_ellipse(center, a, b, t_range=t_range, samples=samples)
-
-
-def parametric_parabola(vertex: Any, a: Any, t_range: Any, samples: Any) -> Solution:
-    return api.parametric_parabola(vertex, a, t_range=t_range, samples=samples)
-
-
-def parametric_line(x0: Any, y0: Any, x1: Any, y1: Any, t_range: Any, samples: Any) -> Solution:
-    return api.parametric_line(x0, y0, x1, y1, t_range=t_range, samples=samples)
-
-
-def parametric_custom(x: str, y: str, t_range: Any, samples: Any) -> Solution:
-    return api.parametric_custom(x, y, t_range=t_range, samples=samples)
-
-
 def bezier(points: Any, samples: Any, t: Any) -> Solution:
     if t is not None:
         return api.bezier_at(points, t)
@@ -164,34 +148,6 @@ def transform(words: list[str], inverse: bool) -> Solution:
     return api.transform(points, ops, inverse=inverse)
 
 
-def viewport(window: Any, viewport: Any, points: Any) -> Solution:
-    return api.viewport(window, viewport, points or [])
-
-
-def clip_line(
-    x1: Any,
-    y1: Any,
-    x2: Any,
-    y2: Any,
-    window: Any,
-    method: Any,
-    normals: Any = None,
-    ends: Any = None,
-    midpoint: Any = None,
-) -> Solution:
-    return api.clip_line(
-        x1,
-        y1,
-        x2,
-        y2,
-        window,
-        method=method,
-        normals=_text(normals),
-        ends=_text(ends),
-        midpoint=_text(midpoint),
-    )
-
-
 def numbers_around(words: list[str], flag: str, param: str) -> tuple[list[Any], list[Any]]:
     """``X1 Y1 ... FLAG X Y ...`` (the words of ``inside`` and ``clip convex``): the numbers
     before ``flag`` and the numbers after it.
@@ -231,20 +187,6 @@ def clip_convex(words: list[str], normals: Any, ends: Any) -> Solution:
     return api.clip_convex(
         x1, y1, x2, y2, window, normals=_text(normals) or "outward", ends=_text(ends) or "exact"
     )
-
-
-def clip_polygon(vertices: Any, window: Any, method: Any) -> Solution:
-    return api.clip_polygon(vertices, window, method=method)
-
-
-def pipeline_line(
-    x1: Any, y1: Any, x2: Any, y2: Any, window: Any, viewport: Any, algo: Any, clip: Any
-) -> Solution:
-    return api.pipeline_line(x1, y1, x2, y2, window, viewport, algo=algo, clip=clip)
-
-
-def pipeline_polygon(vertices: Any, window: Any, viewport: Any, fill: bool, rule: Any) -> Solution:
-    return api.pipeline_polygon(vertices, window, viewport, fill=fill, rule=_text(rule))
 
 
 def polygon(vertices: Any, rule: Any) -> Solution:
@@ -340,7 +282,7 @@ def theory(topic: str, list_: bool = False) -> Solution:
 BODIES: dict[str, Body] = {
     fn.__name__: fn
     for fn in (
-        quantize, parametric_circle, parametric_ellipse, parametric_parabola, parametric_line, parametric_custom, bezier, bspline, continuity, local_control, transform, viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon, fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color, theory, clip_convex, dither_ordered, inside,
+        quantize, parametric_circle, bezier, bspline, continuity, local_control, transform, polygon, fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color, theory, clip_convex, dither_ordered, inside,
     )
 }  # fmt: skip
 """Each command's answer, by the command's function name (``parametric_circle``), for the

@@ -132,7 +132,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('viewport',): Spec(('viewport',), 'viewport', (
         Param('window', ('--window', '-w'), 'number', nargs=4, required=True),
         Param('viewport', ('--viewport',), 'number', nargs=4, required=True),
-        Param('points', (), 'number', nargs=-1, metavar='[X1 Y1 ...]'),
+        Param('points', (), 'number', nargs=-1, default=(), metavar='[X1 Y1 ...]'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('window', 'viewport', 'points'), ignore_unknown=True),
     ('polygon',): Spec(('polygon',), 'polygon', (
@@ -224,16 +224,16 @@ SPECS: dict[tuple[str, ...], Spec] = {
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('r', 'center', 'radius', 't_range', 'samples'), ignore_unknown=True),
     ('parametric', 'ellipse'): Spec(('parametric', 'ellipse'), 'parametric_ellipse', (
-        Param('center', ('--center',), 'number', nargs=2, default=(Fraction(0, 1), Fraction(0, 1))),
-        Param('a', ('--a',), 'number', default=Fraction(2, 1)),
-        Param('b', ('--b',), 'number', default=Fraction(1, 1)),
+        Param('center', ('--center',), 'number', nargs=2, default=(0, 0)),
+        Param('a', ('--a',), 'number', default=2),
+        Param('b', ('--b',), 'number', default=1),
         Param('t_range', ('--t-range',), 'text', nargs=2),
         Param('samples', ('--samples', '-n'), 'integer'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('center', 'a', 'b', 't_range', 'samples'), ignore_unknown=True),
     ('parametric', 'parabola'): Spec(('parametric', 'parabola'), 'parametric_parabola', (
-        Param('vertex', ('--vertex',), 'number', nargs=2, default=(Fraction(0, 1), Fraction(0, 1))),
-        Param('a', ('--a',), 'number', default=Fraction(1, 1)),
+        Param('vertex', ('--vertex',), 'number', nargs=2, default=(0, 0)),
+        Param('a', ('--a',), 'number', default=1),
         Param('t_range', ('--t-range',), 'text', nargs=2),
         Param('samples', ('--samples', '-n'), 'integer'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
