@@ -12,6 +12,12 @@ X2 = Arg("x of the second end point P2.", "X2")
 Y2 = Arg("y of the second end point P2.", "Y2")
 """A line's end points."""
 
+WU_ENDS = Opt(
+    "--ends",
+    help="wu: end points at full intensity (full, the default) or weighted by the part of the "
+    "end column the line covers (coverage, as Wikipedia's pseudocode).",
+)
+
 VERTICES = Arg("The polygon's vertices, in order.", "X1 Y1 X2 Y2 X3 Y3 ...")
 WINDOW = Opt(
     "--window",

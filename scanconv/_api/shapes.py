@@ -29,6 +29,7 @@ from .params import (
     START,
     THEORY,
     TIE,
+    WU_ENDS,
     X1,
     X2,
     Y1,
@@ -85,14 +86,7 @@ def line(
             help="midpoint: d = 2F(M), integers (integer, the default) or d = F(M), halves (half).",
         ),
     ] = None,
-    ends: Annotated[
-        WuEnds | WuEndsName | None,
-        Opt(
-            "--ends",
-            help="wu: end points at full intensity (full, the default) or weighted by the "
-            "part of the end column the line covers (coverage, as Wikipedia's pseudocode).",
-        ),
-    ] = None,
+    ends: Annotated[WuEnds | WuEndsName | None, WU_ENDS] = None,
     convention: Annotated[Convention | ConventionName | None, CONVENTION] = None,
     layout: Annotated[Layout | LayoutName, LAYOUT] = "notes",
     derive: Annotated[bool, DERIVE] = False,

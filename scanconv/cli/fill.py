@@ -10,13 +10,13 @@ from typing import Annotated
 
 import typer
 
-from .. import _api as api
 from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid, WuEnds
 from ..core.records import Solution
 from ..questions import commands
 from .application import _subapp, app
 from .command import answers
-from .options import NUMERIC_ARGS, Center, Num, Vertices, choice, integer, num_option, number
+from .declared import command
+from .options import NUMERIC_ARGS, choice, integer, num_option, number
 
 fill_app = _subapp(
     "fill", "Seed fills from a pixel: boundary fill and flood fill, 4- or 8-connected."
@@ -105,15 +105,15 @@ LineSamples = Annotated[
 ]
 
 
-@app.command(context_settings=NUMERIC_ARGS)
-@answers(figures=True)
-def polygon(vertices: Vertices, rule: Rule = FillRule.even_odd) -> Solution:
-    """Scan-line polygon fill: the edge table, then per scan line the active edge table, the
+command(
+    app,
+    ("polygon",),
+    help="""Scan-line polygon fill: the edge table, then per scan line the active edge table, the
     intersections, the spans and pixels filled (pixel centres; half-open spans and edges).
 
     Example: scanconv polygon 2 3 7 1 13 5 13 11 7 7 2 9
-    """
-    return api.polygon(vertices, rule=rule)
+    """,
+)
 
 
 OptVertices = Annotated[
@@ -199,63 +199,35 @@ fill_flood = fill_app.command("flood", context_settings=NUMERIC_ARGS)(
 )
 
 
-@antialias_app.command("line", context_settings=NUMERIC_ARGS)
-@answers(figures=True)
-def antialias_line(
-    x1: Num,
-    y1: Num,
-    x2: Num,
-    y2: Num,
-    method: Method = AAMethod.area,
-    samples: LineSamples = None,
-    levels: Levels = 8,
-    ends: Ends = None,
-    width: Width = Fraction(1),
-    across: AcrossOpt = Across.minor,
-    subgrid: SubgridOpt = None,
-    divide: DivideOpt = None,
-) -> Solution:
-    """An anti-aliased line: Wu's algorithm (the two pixels of each step and their
+command(
+    antialias_app,
+    ("antialias", "line"),
+    help="""An anti-aliased line: Wu's algorithm (the two pixels of each step and their
     intensities), a line w wide by area sampling or supersampling, or Hearn & Baker's
     supersampling (Bresenham on a 3 x 3 sub-pixel grid, the sub-pixels counted per pixel).
 
     Example: scanconv antialias line 0 0 8 3 --method wu
-    """
-    return api.antialias_line(
-        x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends, width=width,
-        across=across, subgrid=subgrid, divide=divide,
-    )  # fmt: skip
+    """,
+)
 
 
-@antialias_app.command("circle", context_settings=NUMERIC_ARGS)
-@answers(figures=True)
-def antialias_circle(
-    r: Num,
-    center: Center = None,
-    method: Method = AAMethod.area,
-    samples: Samples = 4,
-    levels: Levels = 8,
-) -> Solution:
-    """An anti-aliased circle one pixel wide (the ring r - 1/2 <= d <= r + 1/2): each pixel's
+command(
+    antialias_app,
+    ("antialias", "circle"),
+    help="""An anti-aliased circle one pixel wide (the ring r - 1/2 <= d <= r + 1/2): each pixel's
     covered area, or the fraction of its N x N samples inside.
 
     Example: scanconv antialias circle 5 --method supersample --samples 4
-    """
-    return api.antialias_circle(r, center or (0, 0), method=method, samples=samples, levels=levels)
+    """,
+)
 
 
-@antialias_app.command("polygon", context_settings=NUMERIC_ARGS)
-@answers(figures=True)
-def antialias_polygon(
-    vertices: Vertices,
-    method: Method = AAMethod.area,
-    samples: Samples = 4,
-    levels: Levels = 8,
-    rule: Rule = FillRule.even_odd,
-) -> Solution:
-    """An anti-aliased polygon: each pixel's exactly covered area, or the fraction of its
+command(
+    antialias_app,
+    ("antialias", "polygon"),
+    help="""An anti-aliased polygon: each pixel's exactly covered area, or the fraction of its
     N x N samples inside.
 
     Example: scanconv antialias polygon 0 0 7 2 4 6
-    """
-    return api.antialias_polygon(vertices, method=method, samples=samples, levels=levels, rule=rule)
+    """,
+)

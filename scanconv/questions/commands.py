@@ -189,10 +189,6 @@ def clip_convex(words: list[str], normals: Any, ends: Any) -> Solution:
     )
 
 
-def polygon(vertices: Any, rule: Any) -> Solution:
-    return api.polygon(vertices, rule=rule)
-
-
 def _seed_fill(kind: Any) -> Body:
     def fill(
         seed: Any, vertices: Any, rows: Any, connectivity: Any, order: Any, span: bool
@@ -213,25 +209,6 @@ def _seed_fill(kind: Any) -> Body:
 
 fill_boundary = _seed_fill("boundary")
 fill_flood = _seed_fill("flood")
-
-
-def antialias_line(
-    x1: Any, y1: Any, x2: Any, y2: Any, method: Any, samples: Any, levels: Any,
-    ends: Any = None, width: Any = 1, across: Any = "minor", subgrid: Any = None,
-    divide: Any = None,
-) -> Solution:  # fmt: skip
-    return api.antialias_line(
-        x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends, width=width,
-        across=across, subgrid=subgrid, divide=divide,
-    )  # fmt: skip
-
-
-def antialias_circle(r: Any, center: Any, method: Any, samples: Any, levels: Any) -> Solution:
-    return api.antialias_circle(r, center or (0, 0), method=method, samples=samples, levels=levels)
-
-
-def antialias_polygon(vertices: Any, method: Any, samples: Any, levels: Any, rule: Any) -> Solution:
-    return api.antialias_polygon(vertices, method=method, samples=samples, levels=levels, rule=rule)
 
 
 def color(model: Any, values: list[str], to: Any, unit: bool, bits: Any) -> Solution:
@@ -282,7 +259,7 @@ def theory(topic: str, list_: bool = False) -> Solution:
 BODIES: dict[str, Body] = {
     fn.__name__: fn
     for fn in (
-        quantize, parametric_circle, bezier, bspline, continuity, local_control, transform, polygon, fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color, theory, clip_convex, dither_ordered, inside,
+        quantize, parametric_circle, bezier, bspline, continuity, local_control, transform, fill_boundary, fill_flood, color, theory, clip_convex, dither_ordered, inside,
     )
 }  # fmt: skip
 """Each command's answer, by the command's function name (``parametric_circle``), for the

@@ -372,7 +372,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('samples', ('--samples', '-n'), 'integer'),
         Param('levels', ('--levels', '-L'), 'integer', default=8),
         Param('ends', ('--ends',), 'choice', choices=('full', 'coverage')),
-        Param('width', ('--width', '-w'), 'number', default=Fraction(1, 1)),
+        Param('width', ('--width', '-w'), 'number', default=1),
         Param('across', ('--across',), 'choice', default='minor', choices=('minor', 'perpendicular')),
         Param('subgrid', ('--subgrid',), 'choice', choices=('span', 'centre')),
         Param('divide', ('--divide',), 'choice', choices=('n', 'n2')),
@@ -380,7 +380,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('x1', 'y1', 'x2', 'y2', 'method', 'samples', 'levels', 'ends', 'width', 'across', 'subgrid', 'divide'), ignore_unknown=True),
     ('antialias', 'circle'): Spec(('antialias', 'circle'), 'antialias_circle', (
         Param('r', (), 'number', required=True, metavar='r'),
-        Param('center', ('--center', '-c'), 'number', nargs=2),
+        Param('center', ('--center', '-c'), 'number', nargs=2, default=(0, 0)),
         Param('method', ('--method', '-m'), 'choice', default='area', choices=('area', 'supersample', 'wu', 'subpixel')),
         Param('samples', ('--samples', '-n'), 'integer', default=4),
         Param('levels', ('--levels', '-L'), 'integer', default=8),
