@@ -112,13 +112,38 @@ def polygon(
 @answers
 def fill(
     method: FillMethodName,
-    seed: PointLike,
+    seed: Annotated[
+        PointLike, Opt("--seed", "-s", metavar="X Y", help="The seed pixel.", kind="integer")
+    ],
     *,
-    vertices: PointsLike | None = None,
-    rows: str | Sequence[str] | None = None,
-    connectivity: NumberLike = 4,
-    order: Order | OrderName = "stack",
-    span: bool = False,
+    vertices: Annotated[
+        PointsLike | None,
+        Arg(
+            "A polygon whose Bresenham outline is the boundary (or give --rows).",
+            "[X1 Y1 X2 Y2 X3 Y3 ...]",
+        ),
+    ] = None,
+    rows: Annotated[
+        str | Sequence[str] | None,
+        Opt(
+            "--rows",
+            "-r",
+            metavar="ROWS",
+            help="The grid as text rows, top row first, separated by '/': '#' boundary, '.' "
+            "empty, '*' fill colour, other letters other colours; the bottom row is y = 0.",
+            show_default=False,
+        ),
+    ] = None,
+    connectivity: Annotated[
+        NumberLike, Opt("--connectivity", "-k", help="Neighbours: 4 or 8.", kind="integer")
+    ] = 4,
+    order: Annotated[
+        Order | OrderName,
+        Opt("--order", help="stack: last in first out; queue: first in first out."),
+    ] = "stack",
+    span: Annotated[
+        bool, Opt("--span", help="The span (scan-line seed) fill: a whole run per seed.")
+    ] = False,
 ) -> Solution:
     """A seed fill, step by step (``scanconv fill boundary``, ``scanconv fill flood``).
 

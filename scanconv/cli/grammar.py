@@ -10,7 +10,6 @@ the command line and the questions would read a word differently.
 
 from __future__ import annotations
 
-import inspect
 from typing import Any
 
 import typer
@@ -79,7 +78,7 @@ def declared() -> tuple[dict[tuple[str, ...], Spec], tuple[str, ...]]:
         )
         ctx = command.make_context(path[-1], ["--help"], resilient_parsing=True)
         params = tuple(_param(p, ctx) for p in command.params if p.name != "help")
-        own = tuple(inspect.signature(callback.__wrapped__).parameters)
+        own = tuple(callback.own)
         specs[path] = Spec(
             path=path,
             function=callback.__name__,

@@ -189,28 +189,6 @@ def clip_convex(words: list[str], normals: Any, ends: Any) -> Solution:
     )
 
 
-def _seed_fill(kind: Any) -> Body:
-    def fill(
-        seed: Any, vertices: Any, rows: Any, connectivity: Any, order: Any, span: bool
-    ) -> Solution:
-        return api.fill(
-            kind,
-            seed,
-            vertices=vertices or None,
-            rows=rows,
-            connectivity=connectivity,
-            order=order,
-            span=span,
-        )
-
-    fill.__name__ = fill.__qualname__ = f"fill_{kind}"
-    return fill
-
-
-fill_boundary = _seed_fill("boundary")
-fill_flood = _seed_fill("flood")
-
-
 def color(model: Any, values: list[str], to: Any, unit: bool, bits: Any) -> Solution:
     targets = list(to or [])
     numbers: list[str] = []
@@ -259,7 +237,7 @@ def theory(topic: str, list_: bool = False) -> Solution:
 BODIES: dict[str, Body] = {
     fn.__name__: fn
     for fn in (
-        quantize, parametric_circle, bezier, bspline, continuity, local_control, transform, fill_boundary, fill_flood, color, theory, clip_convex, dither_ordered, inside,
+        quantize, parametric_circle, bezier, bspline, continuity, local_control, transform, color, theory, clip_convex, dither_ordered, inside,
     )
 }  # fmt: skip
 """Each command's answer, by the command's function name (``parametric_circle``), for the

@@ -10,6 +10,7 @@ answered by calling the function (:func:`scanconv.questions.answering.solve`).
 
 from __future__ import annotations
 
+import functools
 import importlib
 from collections.abc import Callable
 from typing import Any, NamedTuple
@@ -39,6 +40,8 @@ class Command(NamedTuple):
     """Whether a word that looks like an unknown option is a value (``-3``)."""
     name: str = ""
     """What the work budget knows it by, where that is not its words joined."""
+    given: tuple[tuple[str, Any], ...] = ()
+    """Arguments the command gives the function itself (``fill boundary``: ``method``)."""
 
     @property
     def function(self) -> str:
@@ -61,7 +64,8 @@ class Command(NamedTuple):
     def answerer(self) -> Callable[..., Any]:
         """The function that answers: the public one, ``scanconv._api.NAME`` (the same
         function, looked up by its public name each time)."""
-        return getattr(importlib.import_module("scanconv._api"), self.api.rpartition(".")[2])  # type: ignore[no-any-return]
+        fn = getattr(importlib.import_module("scanconv._api"), self.api.rpartition(".")[2])
+        return functools.partial(fn, **dict(self.given)) if self.given else fn
 
 
 _ALL = (
@@ -84,6 +88,8 @@ _ALL = (
     Command(("antialias", "line"), "areas.antialias_line", figures=True),
     Command(("antialias", "circle"), "areas.antialias_circle", figures=True),
     Command(("antialias", "polygon"), "areas.antialias_polygon", figures=True),
+    Command(("fill", "boundary"), "areas.fill", figures=True, given=(("method", "boundary"),)),
+    Command(("fill", "flood"), "areas.fill", figures=True, given=(("method", "flood"),)),
     Command(("storage",), "image.storage", grid=False),
     Command(("sample",), "image.sample", picture=True),
     Command(("dither", "threshold"), "dither.dither_threshold", picture=True, origin=False),
