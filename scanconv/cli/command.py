@@ -163,10 +163,11 @@ def flag_for(param: str | None, params: Iterable[inspect.Parameter]) -> str | No
     """The command's option for the library parameter ``param``, or ``None`` (no parameter,
     or a positional argument, which the message already names by its value).
 
-    >>> import inspect
-    >>> from scanconv.cli.options import Center
-    >>> center = inspect.Parameter("center", inspect.Parameter.KEYWORD_ONLY, annotation=Center)
-    >>> flag_for("xc", [center]), flag_for("radius", [center])
+    >>> from scanconv._api.shapes import circle
+    >>> from scanconv.cli.declared import typer_parameter
+    >>> from scanconv.core.declare import declared
+    >>> params = [typer_parameter(d) for d in declared(circle)]
+    >>> flag_for("xc", params), flag_for("r", params)
     ('--center', None)
     """
     if param is None:

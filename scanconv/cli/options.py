@@ -1,9 +1,10 @@
 """The command line's vocabulary: the parsers, the choices and the option declarations.
 
-Every value a command takes is declared here once, as an ``Annotated`` alias that carries its
-typer declaration: a command's signature then reads ``r: Num, center: Center = None``.
-Numbers are parsed by click through :func:`number` and :func:`integer`, so a bad one is
-refused before the command runs, naming its option. Formulas (``--at``, ``--t-range``,
+A command's own parameters are declared on its library function (:mod:`scanconv.core.declare`,
+turned into typer's declarations by :mod:`scanconv.cli.declared`); the few commands not yet
+declared there take the ``Annotated`` aliases below (``points: Points``). Numbers are parsed
+by click through :func:`number` and :func:`integer`, so a bad one is refused before the
+command runs, naming its option. Formulas (``--at``, ``--t-range``,
 ``--domain``), sizes (``--size``) and knot vectors (``--knots``) are text the library parses
 itself; the API (:mod:`scanconv._api`) takes the same text.
 
@@ -87,15 +88,6 @@ class Origin(str, Enum):
 
 # --- values -----------------------------------------------------------------------------------
 
-Num = Annotated[Fraction, typer.Argument(parser=number, show_default=False)]
-"""A positional exact number (integer, decimal or a/b); negative values are accepted."""
-
-
-def num_arg(help: str, metavar: str | None = None) -> Any:
-    """A positional exact number with its help (``scanconv storage --help`` lists it)."""
-    return typer.Argument(parser=number, show_default=False, help=help, metavar=metavar)
-
-
 Points = Annotated[
     list[Fraction],
     typer.Argument(parser=number, metavar="X0 Y0 X1 Y1 ...", help="Control points as x y pairs."),
@@ -113,22 +105,11 @@ Segments = Annotated[
 """Two point lists separated by ``:`` (split by :func:`segments`)."""
 
 
-Center = Annotated[
-    tuple[Fraction, Fraction] | None,
-    num_option(
-        "--center", "-c", metavar="XC YC", help="Centre (xc, yc), integers; default (0, 0)."
-    ),
-]
-"""The centre of a circle or ellipse (``None``: the origin)."""
-
 ORIGIN = (Fraction(0), Fraction(0))
 """The default centre or vertex of a parametric curve."""
 
 CurveCenter = Annotated[
     tuple[Fraction, Fraction], num_option("--center", metavar="X Y", help="Centre (xc, yc).")
-]
-Vertex = Annotated[
-    tuple[Fraction, Fraction], num_option("--vertex", metavar="H K", help="Vertex (h, k).")
 ]
 
 
@@ -164,9 +145,6 @@ Knots = Annotated[
         "--knots",
         help="open (clamped uniform), uniform, or an explicit comma list of n + p + 2 values.",
     ),
-]
-Size = Annotated[
-    str, typer.Option("--size", help="M x N: M rows, N columns (8x8, or 8 for square).")
 ]
 
 # --- the output options, shared by every command (added by ``answers``) ------------------------
@@ -245,14 +223,3 @@ PngOpt = Annotated[
         dir_okay=False,
     ),
 ]
-
-Vertices = Annotated[
-    list[Fraction],
-    typer.Argument(
-        parser=number,
-        metavar="X1 Y1 X2 Y2 X3 Y3 ...",
-        help="The polygon's vertices, in order.",
-        show_default=False,
-    ),
-]
-"""The vertices of a polygon, as numbers X1 Y1 X2 Y2 ... (``2,2`` and ``(2, 2)`` too)."""
