@@ -34,7 +34,7 @@ DOCUMENT_COMMANDS = {
     "each question the page answers goes through scanconv.questions, which checks the budget",
     "check": "the question (check_question); --batch: render.budget.check_batch",
     "mcp": "a server: each tool call's question goes through scanconv.questions.check_budget "
-    "in every format the answer is written in (scanconv.mcp_server.budget), a practice call "
+    "in every format the answer is written in (scanconv.questions.answered), a practice call "
     "holds at most mcp_server.answers.MAX_PRACTICE questions",
 }
 """The commands that run other commands as questions, and how their work is bounded."""

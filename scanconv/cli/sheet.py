@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from ..questions import parse, shown_with, solve
+from ..questions import answered, parse, shown_with
 from ..questions.files import (
     MAX_FILE_BYTES,
     MAX_QUESTIONS,
@@ -42,7 +42,6 @@ from ..render import Options
 from ..render.budget import document
 from ..render.sheet import Answered, Question, Sheet, sheet_document
 from .application import app
-from .budget import check_question
 from .options import DocumentFormatOpt, OutputOpt
 from .output import Pending, check_paths, document_format, fail, note, write_all, write_atomic
 
@@ -71,10 +70,9 @@ def answer(argv: Iterable[str]) -> tuple[Solution, Options]:
     """
     line = parse(list(argv))
     options = shown_with(line)
-    # The one place a question's work is weighed before it is done (the per-question
-    # budget): line.function names the command, line.arguments holds its values.
-    check_question(line.function, line.arguments)  # alone and with the questions before it
-    return solve(line), options
+    # the library's one pipeline: the document's budget (alone and with the questions
+    # before it) before any work
+    return answered(line, document=True)[1], options
 
 
 def answer_questions(
