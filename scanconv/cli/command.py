@@ -144,10 +144,14 @@ class Command:
         # two outputs naming one file (-o f.svg --svg f.svg): one would be lost (N9)
         check_paths([], [("--output", out.output), ("--svg", out.svg), ("--png", out.png)])
         try:
-            check_budget(self.__name__, kwargs, out)  # before any work
-            emit(self.__wrapped__(**kwargs), Output(**values))
+            emit(self.answer(kwargs, out), Output(**values))
         except ValueError as err:  # InputError included
             fail(error_message(err, self.parameters))
+
+    def answer(self, kwargs: dict[str, Any], out: Output) -> Solution:
+        """The answer, its work weighed against the budget of ``out``'s format first."""
+        check_budget(self.__name__, kwargs, out)  # before any work
+        return self.__wrapped__(**kwargs)
 
 
 def error_message(err: ValueError, params: Iterable[inspect.Parameter]) -> str:

@@ -19,8 +19,10 @@ from typer._types import TyperChoice
 
 from ..core.declare import Arg, Declared, declared
 from ..questions.declared import COMMANDS
+from .budget import answered
 from .command import SHARED, Command, _shared
 from .options import NUMERIC_ARGS, coordinate, integer, number
+from .output import Output
 
 _PARSERS = {"number": number, "integer": integer, "coordinate": coordinate}
 _TYPES: dict[str, Any] = {"number": Fraction, "integer": int, "coordinate": Any}
@@ -87,6 +89,11 @@ class DeclaredCommand(Command):
     @property
     def own(self) -> list[str]:
         return [d.name for d in self.declared]
+
+    def answer(self, kwargs: dict[str, Any], out: Output) -> Any:
+        """The answer through the library's one question pipeline
+        (:func:`scanconv.cli.budget.answered`)."""
+        return answered(self.spec.path, kwargs, out)
 
     @functools.cached_property
     def parameters(self) -> list[inspect.Parameter]:

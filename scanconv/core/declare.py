@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import inspect
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from enum import Enum
 from fractions import Fraction
 from pathlib import Path
@@ -30,34 +29,37 @@ KINDS = ("number", "integer", "coordinate", "choice", "flag", "text")
 ``:`` between two point lists, one of an enum's values, a flag (no word), text."""
 
 
-@dataclass(frozen=True)
-class Arg:
+class Arg(NamedTuple):
     """A positional argument: its help, and its name in messages (``X1``; default the
-    parameter's name in capitals). ``kind`` overrides the kind the type gives."""
+    parameter's name). ``kind`` overrides the kind the type gives."""
 
     help: str = ""
     metavar: str | None = None
     kind: str | None = None
 
 
-@dataclass(frozen=True, init=False)
 class Opt:
     """An option: its flags (``"--algo", "-a"``; ``"--grid/--no-grid"`` for a flag that has
     both), its help, and how its help shows it: ``metavar`` (``"XC YC"``), ``show_default``,
     ``hidden``. ``kind`` overrides the kind the type gives; ``choices``: the texts a choice
     takes, where its type is a ``Literal`` (an enum's values are its choices); ``multiple``:
     the option may be given again, each time adding a value; ``nargs``: the words it takes,
-    where its type does not say (a window's four numbers typed as a sequence)."""
+    where its type does not say (a window's four numbers typed as a sequence).
 
-    names: tuple[str, ...]
-    help: str
-    metavar: str | None = None
-    kind: str | None = None
-    show_default: bool = True
-    hidden: bool = False
-    multiple: bool = False
-    choices: tuple[str, ...] = ()
-    nargs: int | None = None
+    (A plain class, not a dataclass: reading one costs the command line's start-up nothing.)
+    """
+
+    __slots__ = (
+        "choices",
+        "help",
+        "hidden",
+        "kind",
+        "metavar",
+        "multiple",
+        "names",
+        "nargs",
+        "show_default",
+    )
 
     def __init__(
         self,
@@ -71,11 +73,12 @@ class Opt:
         choices: tuple[str, ...] = (),
         nargs: int | None = None,
     ) -> None:
-        values: dict[str, Any] = {"names": names, "help": help, "metavar": metavar}
-        values |= {"kind": kind, "show_default": show_default, "hidden": hidden}
-        values |= {"multiple": multiple, "choices": choices, "nargs": nargs}
-        for key, value in values.items():
-            object.__setattr__(self, key, value)
+        self.names, self.help, self.metavar, self.kind = names, help, metavar, kind
+        self.show_default, self.hidden, self.multiple = show_default, hidden, multiple
+        self.choices, self.nargs = choices, nargs
+
+    def __repr__(self) -> str:
+        return f"Opt({', '.join(map(repr, self.names))}, help={self.help!r})"
 
     @property
     def flags(self) -> tuple[str, ...]:

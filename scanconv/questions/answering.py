@@ -14,20 +14,23 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from typing import TYPE_CHECKING
 
+from ..core import lazy
 from ..core.checks import InputError
 from ..display import Answer
 from ..render import Format, Options
 from ..render.budget import check_question as check_in_document
 from .budget import estimated, library_call
-from .commands import BODIES
 from .declared import BY_FUNCTION
-from .grammar import error_message
-from .parser import CommandLine, parse
+from .grammar import CommandLine, error_message
 from .words import UsageError
 
 if TYPE_CHECKING:
     from ..core.records import Solution
     from ..display import Answer
+    from . import commands, parser
+else:  # a declared command read by the command line needs neither
+    commands = lazy.module("scanconv.questions.commands")
+    parser = lazy.module("scanconv.questions.parser")
 
 
 def answered(
@@ -74,7 +77,7 @@ def answered(
     ...
     scanconv.render.budget.BudgetError: the table has about 1,979,900 rows; circle/midpoint in json ...
     """
-    line = question if isinstance(question, CommandLine) else parse(question)
+    line = question if isinstance(question, CommandLine) else parser.parse(question)
     if document:
         check_in_document(*library_call(line.function, line.arguments))
     for fmt in formats:
@@ -105,6 +108,7 @@ def solve(line: CommandLine) -> Solution:
 
     Examples
     --------
+    >>> from scanconv.questions import parse
     >>> solve(parse("circle 5 --method bresenham")).title
     "Bresenham's circle algorithm: r = 5, centre (0, 0)"
     >>> solve(parse("bspline 0 0 1 1 --degree 3"))
@@ -114,7 +118,7 @@ def solve(line: CommandLine) -> Solution:
     """
     estimated(line, None)  # before any work
     declared = BY_FUNCTION.get(line.function)
-    body = declared.answerer() if declared is not None else BODIES[line.function]
+    body = declared.answerer() if declared is not None else commands.BODIES[line.function]
     try:
         return body(**line.arguments)
     except UsageError:
@@ -148,6 +152,7 @@ def shown_with(line: CommandLine, where: str = "the sheet") -> Options:
 
     Examples
     --------
+    >>> from scanconv.questions import parse
     >>> shown_with(parse("circle 5 --no-grid --exact"))
     Options(grid=False, origin='bottom-left', brief=False, exact=True, width=None)
     >>> shown_with(parse("circle 5 -o a.md"))

@@ -71,6 +71,30 @@ class Spec(NamedTuple):
     no_args_is_help: bool = False
 
 
+class CommandLine(NamedTuple):
+    """A parsed question: the command, its arguments and its display options."""
+
+    spec: Spec
+    arguments: dict[str, Any]
+    """The answer's parameters by the command's names, their values converted (a choice as
+    its text, a number as a Fraction, a list of points as a list)."""
+    display: dict[str, Any]
+    """The shared output options (grid, origin, brief, exact, format, output, svg, png), as
+    given or by default: how the answer is shown, not what it is."""
+    words: tuple[str, ...]
+    """The question's words, as given."""
+
+    @property
+    def path(self) -> tuple[str, ...]:
+        """The command's words: ``("parametric", "circle")``."""
+        return self.spec.path
+
+    @property
+    def function(self) -> str:
+        """The command's function name (``parametric_circle``), as the work budget knows it."""
+        return self.spec.function
+
+
 ALIASES = {
     "xc": "center",
     "yc": "center",
