@@ -388,7 +388,7 @@ VOCABULARY: dict[tuple[str, ...], Vocab] = {
 }
 
 
-# For tests/cli_vocabulary.py, appended inside VOCABULARY (issue 18: transform, viewport, clip, pipeline).
+# For tests/cli_vocabulary.py, appended inside VOCABULARY: transform, viewport, clip, pipeline.
 WINDOW = ("--window", "0", "0", "4", "4")
 VIEWPORT = ("--viewport", "0", "0", "8", "8")
 RECT_VALUES = ("0", "1", "2", "4", "10", "-2", "1/2")
@@ -573,7 +573,7 @@ PROCESS_VOCABULARY = {
 }
 VOCABULARY.update(PROCESS_VOCABULARY)
 
-# Polygon filling, seed fill and anti-aliasing (issue 17).
+# Polygon filling, seed fill and anti-aliasing.
 
 TRIANGLE = ("0", "0", "7", "2", "4", "6")
 DIAMOND = ("2", "0", "4", "2", "2", "4", "0", "2")
@@ -701,7 +701,7 @@ VOCABULARY[("color",)] = Vocab(
     positional=("rgb", "hsv", "0", "1", "1/2", "255", "120"),
 )
 
-# Teacher tools (issue 15): sheet takes a question file (golden/teach/*.questions), practice
+# Teacher tools: sheet takes a question file (golden/teach/*.questions), practice
 # numbers only.
 TEACH = Path(__file__).resolve().parent.parent / "golden" / "teach"
 QUESTIONS = str(TEACH / "short.questions")
@@ -740,7 +740,7 @@ VOCABULARY[("theory",)] = Vocab(
     positional=("raster-display", "dda", "symmetry", "nope", "3"),
 )
 
-# check (issue 15): a student's table, then -- and the question; the numbers are the question's.
+# check: a student's table, then -- and the question; the numbers are the question's.
 CHECK_DATA = Path(__file__).resolve().parent / "data" / "check"
 STUDENT = str(CHECK_DATA / "slip.csv")
 VOCABULARY[("check",)] = Vocab(
@@ -770,8 +770,8 @@ VOCABULARY[("exam",)] = Vocab(
     small={"--section": ("1", "dda", "14", "circle")},
 )
 
-# The rest of the syllabus (issue 30): dithering, halftones, the inside-outside test, the frame
-# buffer, line attributes, characters, and clipping against a convex window.
+# The commands beyond lines and curves: dithering, halftones, the inside-outside test, the
+# frame buffer, line attributes, characters, and clipping against a convex window.
 IMAGE = ("--image", "10 200; 60 90")
 BIG_IMAGE = "; ".join([" ".join(["0"] * 64)] * 65)  # 4160 cells, beyond MAX_CELLS
 IMAGE_VALUES = ("0 255", "10 200; 60 90", "1/2 1; 0 1", "100, 100 / 100, 100")

@@ -37,7 +37,7 @@ from .helpers import run
 coord = st.integers(-12, 12)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(x1=coord, y1=coord, x2=coord, y2=coord)
 def test_wu_columns_sum_to_one_in_every_octant(x1, y1, x2, y2):
     steps = list(wu(x1, y1, x2, y2))
@@ -51,7 +51,7 @@ def test_wu_columns_sum_to_one_in_every_octant(x1, y1, x2, y2):
     assert {first[2], last[2]} == {(x1, y1), (x2, y2)} and first[4] == last[4] == 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(x1=coord, y1=coord, x2=coord, y2=coord)
 def test_the_bulk_wu_line_is_the_table(x1, y1, x2, y2):
     xs, ys, v = raster_fill.line_aa(x1, y1, x2, y2)
@@ -63,7 +63,7 @@ def test_the_bulk_wu_line_is_the_table(x1, y1, x2, y2):
     assert list(zip(zip(xs.tolist(), ys.tolist(), strict=True), v.tolist(), strict=True)) == table
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(x1=coord, y1=coord, x2=coord, y2=coord)
 def test_skimage_line_aa_weights_the_perpendicular_distance(x1, y1, x2, y2):
     """skimage.draw.line_aa (Zingl) draws the same pixel pairs; its intensity is
@@ -152,7 +152,7 @@ def test_area_sampling_is_the_area_clipped_to_each_pixel_square(pts):
 polygons = st.lists(st.tuples(st.integers(-5, 5), st.integers(-5, 5)), min_size=3, max_size=7)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(pts=polygons, rule=st.sampled_from(["even-odd", "nonzero"]))
 def test_area_sampled_intensities_sum_to_the_exact_area(pts, rule):
     try:
@@ -164,7 +164,7 @@ def test_area_sampled_intensities_sum_to_the_exact_area(pts, rule):
     assert sum(cov.values(), Fraction(0)) == region_area(pts, rule)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(pts=polygons, rule=st.sampled_from(["even-odd", "nonzero"]))
 def test_one_sample_per_pixel_is_the_scan_line_fill(pts, rule):
     try:
@@ -198,7 +198,7 @@ def test_supersampling_approaches_the_area():
     assert abs(got - area) < Fraction(1, 4)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_ring_of_a_circle():
     cov = ring_area(5)
     assert sum(cov.values()) == pytest.approx(2 * math.pi * 5, abs=1e-9)
@@ -283,7 +283,7 @@ def test_bad_input_is_refused(call, word, param):
         assert isinstance(err.value, InputError) and err.value.param == param
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_limits_at_their_edge():
     antialias_solution(
         "polygon", [0, 0, 99, 0, 0, 99], method="supersample", samples=1
@@ -293,9 +293,9 @@ def test_the_limits_at_their_edge():
     assert np.isclose(sum(ring_area(48).values()), 2 * math.pi * 48)  # 99 x 99 cells
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_line_algo_wu_is_the_antialias_answer():
-    """``scanconv line ... --algo wu`` (the issue's spelling) prints exactly the Wu answer of
+    """``scanconv line ... --algo wu`` (wu as a line method) prints exactly the Wu answer of
     ``antialias line --method wu``; the derivation and the pipeline refuse it by name."""
     via_line = run("line", "0", "0", "8", "3", "--algo", "wu", "-f", "json")
     via_aa = run("antialias", "line", "0", "0", "8", "3", "--method", "wu", "-f", "json")

@@ -141,10 +141,10 @@ CASES: list[tuple[tuple[str, ...], tuple[str, ...], str, tuple[Any, ...], dict[s
     ),
 ]
 
-# Bezier vs B-spline: the comparison the notes ask for (issue 13).
+# Bezier vs B-spline: the comparison the notes ask for.
 CASES += [(("compare", "curves"), (), "compare_curves", (), {})]
 
-# Transformation, viewport, clipping and the pipeline (issue 18).
+# Transformation, viewport, clipping and the pipeline.
 W4 = ("--window", "0", "0", "4", "4")
 CASES += [
     (
@@ -240,7 +240,7 @@ CASES += [
     ),
 ]
 
-# Polygon filling, seed fill and anti-aliasing (issue 17).
+# Polygon filling, seed fill and anti-aliasing.
 CASES += [
     (
         ("polygon",),
@@ -294,7 +294,7 @@ CASES += [
 ]
 
 
-# Colour conversions and the theory answers (issue 22).
+# Colour conversions and the theory answers.
 CASES += [
     (
         ("color",),
@@ -311,7 +311,7 @@ CASES += [
         {"to": "rgb"},
     ),
     (("theory",), ("symmetry",), "theory", ("symmetry",), {}),
-    # issue 15: marking a student's table (the question as scanconv's own arguments)
+    # marking a student's table (the question as scanconv's own arguments)
     (
         ("check",),
         (STUDENT, "--", "line", "2", "2", "10", "6"),
@@ -319,7 +319,7 @@ CASES += [
         (STUDENT, "line 2 2 10 6"),
         {},
     ),
-    # issue 30: the rest of the syllabus
+    # dithering, the inside test, the frame buffer, line attributes, characters, clipping
     (
         ("dither", "threshold"),
         ("--image", "10 200; 60 90", "--at", "128"),
@@ -393,7 +393,7 @@ def test_the_api_and_the_cli_give_the_same_answer(path, argv, name, args, kwargs
     assert _json(getattr(scanconv, name)(*args, **kwargs)) == cli.out
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_every_command_and_every_function_has_a_case():
     paths = {path for path, _ in commands()} - DOCUMENTS
     assert paths == {path for path, *_ in CASES}
@@ -445,7 +445,7 @@ def test_bad_input_is_an_input_error_naming_the_parameter(call, param, words):
     assert info.value.param == param and words in str(info.value), str(info.value)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_importing_the_api_imports_no_answer_module():
     """The library is imported inside the functions: start-up stays cheap."""
     import subprocess

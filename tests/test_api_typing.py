@@ -1,4 +1,4 @@
-"""One typed public API (issue 26, item 3): the names a type checker sees, the signatures help()
+"""The typed public API: the names a type checker sees, the signatures help()
 shows, every library error an InputError with ``.param``, the numbers the API takes."""
 
 from __future__ import annotations
@@ -224,6 +224,7 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
     tuples = {
         "RasterLineName": raster.LINE_ALGORITHMS, "NormalsName": cyrus_beck.NORMALS,
         "ClipEndsName": cyrus_beck.ENDS, "MidpointName": midpoint_clip.MIDPOINTS,
+        "MidpointStopName": midpoint_clip.STOPS,
         "FillMethodName": seedfill.METHODS, "InsideRuleName": answers_inside.RULES,
         "BoundaryName": inside.BOUNDARY, "ReconName": quantize.RECON,
         "OriginName": sample.ORIGINS, "PackingName": characters.PACKINGS,

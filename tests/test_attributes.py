@@ -31,7 +31,7 @@ def test_bad_masks(text: str, param: str) -> None:
     assert info.value.param == param
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=80)
 @given(ends=ENDS)
 def test_the_centre_line_is_bresenhams(ends) -> None:
@@ -40,7 +40,7 @@ def test_the_centre_line_is_bresenhams(ends) -> None:
     assert {p for _, p in centre_line(*ends)} == set(zip(xs.tolist(), ys.tolist(), strict=True))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=80)
 @given(ends=ENDS, mask=st.text("01", min_size=1, max_size=12), repeat=st.integers(1, 4))
 def test_a_solid_mask_draws_every_pixel_and_the_mask_is_periodic(ends, mask, repeat) -> None:
@@ -51,7 +51,7 @@ def test_a_solid_mask_draws_every_pixel_and_the_mask_is_periodic(ends, mask, rep
     assert all(s.extra[1] == 1 for s in solid)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=80)
 @given(ends=ENDS, width=st.integers(1, 6), brush=st.booleans())
 def test_thick_lines_cover_the_span_of_every_centre_pixel(ends, width, brush) -> None:
@@ -78,3 +78,26 @@ def test_style_answer() -> None:
     sol = line_style_solution(0, 0, 7, 2, "110")
     assert [s.extra[2] for s in sol.steps()] == ["draw", "draw", "skip"] * 2 + ["draw", "draw"]
     assert sol.marks == ((2, 1), (5, 1))
+
+
+@settings(deadline=None, max_examples=150)
+@given(
+    mask=st.text("01", min_size=1, max_size=16),
+    order=st.sampled_from(["msb", "lsb"]),
+    length=st.integers(1, 40),
+)
+def test_the_mask_is_shown_as_written_and_each_pixel_takes_its_bit(mask, order, length) -> None:
+    """The answer gives the mask as written (and in hexadecimal) with its bit order; pixel k
+    takes the written mask's bit (k mod n) places from its left (msb) or its right (lsb)."""
+    sol = line_style_solution(0, 0, length, 1, mask, bits=order)
+    written = next(q for q in sol.given if q.key == "written")
+    hex_shown = written.text.split(" = ")[2].split(" ")[0]
+    assert written.value == mask and int(hex_shown, 16) == int(mask, 2)
+    assert len(hex_shown) - 2 == -(-len(mask) // 4)  # a digit for every 4 bits
+    assert f"{mask} (read {order} first" in sol.title
+    n = int(mask, 2)
+    for k, step in enumerate(sol.steps()):
+        place = k % len(mask)
+        want = n >> (len(mask) - 1 - place) & 1 if order == "msb" else n >> place & 1
+        assert step.extra[1] == want
+        assert step.extra[2] == ("draw" if want else "skip")

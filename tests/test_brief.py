@@ -1,6 +1,6 @@
 """``--brief`` leaves scanconv's own notes (the conventions it states, the table's layout, the
 errata) out in every format, so homework keeps the student's working without the tool's
-remarks; on a terminal it leaves the derivation out too (issue 39 item 5)."""
+remarks; on a terminal it leaves the derivation out too."""
 
 from __future__ import annotations
 

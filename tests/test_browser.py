@@ -207,7 +207,7 @@ def test_a_circle_lights_each_point_and_its_8_images(opened):
 
 
 def test_a_circle_of_radius_5_steps_through_its_5_octant_points(opened):
-    """The issue's 'done when': all 5 octant points, the 8 images lit in turn."""
+    """All 5 octant points, the 8 images lit in turn."""
     page, answer = opened("circle", "5")
     assert len(answer["steps"]) == 5
     page.key("Home")

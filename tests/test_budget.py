@@ -193,13 +193,14 @@ def test_every_estimated_command_has_a_refusal_case():
             covered.add(f"parametric_{args[1]}")
         else:
             covered.add(names[key])
-    # the budgets added by issue 29 have their refusal cases in tests/test_budget_unified.py
+    # the antialias and pipeline budgets: their refusal cases are in
+    # tests/test_budget_entry_points.py
     unified = {"antialias_line", "antialias_circle", "antialias_polygon", "pipeline_line"}
     unified |= {"pipeline_polygon", "bspline_basis"}
     assert covered | unified == set(ESTIMATES)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_same_request_is_accepted_in_csv_and_starts_at_once():
     r = run("sample", "x*y", "--size", "300", "-L", "4", "-f", "csv")
     assert r.code == 0 and r.out.count("\n") == 301
@@ -360,7 +361,7 @@ LONG_POLYNOMIAL = "+".join(f"{i + 1}*t**{i}" for i in range(40))
 #: (samples + 1) x 240 evaluations, is beyond EXACT_WORK: one more than 4,165 (999,840 is within
 #: it). Just past the edge, not 10,000 or 20,000: the float64 values cost as many scalar
 #: evaluations as the exact work they replace, so every sample beyond the edge is CPU spent
-#: proving nothing more (issue 29: this test took half a minute of CPU with 10**4 and 2 x 10**4).
+#: proving nothing more (this test took half a minute of CPU with 10**4 and 2 x 10**4).
 FLOAT_SAMPLES = 4_200
 
 

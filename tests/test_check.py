@@ -5,9 +5,9 @@ arithmetic is in the comments of :data:`DIAGNOSES`), never by running scanconv w
 The step models that follow-through re-runs are checked against the library's own tables in
 every octant and for every convention knob.
 
-The two random-input properties (any bytes, any table) run 100 examples each (300 before issue
-29's suite targets); the hand-written wrong tables and ``test_marking_trust`` cover the
-reader's known hazards one by one.
+The two random-input properties (any bytes, any table) run 100 examples each (they ran
+300 before the suite had a time budget); the hand-written wrong tables and
+``test_marking_layouts`` cover the reader's known hazards one by one.
 """
 
 from __future__ import annotations
@@ -39,6 +39,7 @@ from scanconv.marking.models import (
     chain,
 )
 from scanconv.marking.student_table import Cell, field_of, parse_text, read_table
+from scanconv.render import formats
 from scanconv.render.marking import neutral
 
 from .helpers import assert_refused, run
@@ -207,7 +208,7 @@ def test_a_malformed_table_is_one_clear_line(name, words):
     assert_refused(r, *words)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_other_bad_tables(tmp_path):
     cases = {
         "x-only.csv": ("k,p,x\n0,0,2\n", "no column for y"),
@@ -233,7 +234,7 @@ def test_nothing_in_a_cell_is_evaluated():
         parse_text("k,p,x,y\n0,2*3,2,2\n", "expr.csv")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_bad_question_is_one_line():
     student = str(DATA / "slip.csv")
     assert_refused(run("check", student, "--", "line", "2", "2"), "Missing argument")
@@ -314,7 +315,7 @@ def test_a_wrong_pixel_after_the_slip_is_still_wrong():
     assert (m.right, m.total) == (5, 8)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_start_row_present_or_not():
     # the notes' layout without its start row: p0 is never written (step 1 wrong), the rest
     # follows
@@ -420,8 +421,8 @@ def test_a_right_table_has_no_diagnosis():
 # --- output -----------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.parametrize("fmt", ["plain", "markdown", "latex", "csv", "json", "rich"])
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.parametrize("fmt", formats("answer"))
 def test_every_format_shows_the_marks(fmt):
     r = run("check", str(DATA / "slip.csv"), "--", *LINE, "-f", fmt)
     assert r.code == 0 and r.err == ""
@@ -438,7 +439,7 @@ def test_the_options_may_follow_the_question(tmp_path):
     assert target.read_text().startswith("## Marking")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_markdown_renders_through_pandoc(tmp_path):
     pytest.importorskip("pypandoc")
     from .test_documents import _to_html
@@ -479,7 +480,7 @@ def _class_of_30(folder: Path) -> list[str]:
     return sorted(names)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_thirty_csvs_make_one_score_csv(tmp_path):
     folder = tmp_path / "class"
     folder.mkdir()
@@ -556,7 +557,7 @@ def test_the_api_marks_against_a_question_or_a_solution():
     assert by_solution.data["first_error"] == by_words.data["first_error"]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=100, deadline=None)  # was 300: see the module's note
 @given(st.binary(max_size=300))
 def test_any_bytes_are_a_table_or_one_input_error(data):
@@ -597,8 +598,8 @@ def _tables(draw):
     return "\n".join(lines) + "\n"
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)  # was 300: see the module's note
 @given(_tables(), st.sampled_from(QUESTIONS))
 def test_any_table_is_marked_or_refused_in_one_line(text, question):

@@ -1,6 +1,6 @@
 """``check`` reads what students write: decisions in words (East, North-East, right,
 diagonal, ...), a name and roll number above the table, and a decision it cannot read named
-as such, never as blank (issue 39 item 2). Every table here is written by hand from the
+as such, never as blank. Every table here is written by hand from the
 notes' algorithms: Bresenham's line (2, 2) to (10, 6) takes p = 0, -8, 0, -8, ... and NE, E,
 NE, E, ...; the midpoint circle r = 5 takes p = -4, -1, 4, 3 and E, E, SE, SE."""
 

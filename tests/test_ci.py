@@ -53,7 +53,7 @@ def test_the_command_checks_lint_format_types_and_coverage():
     assert re.search(r'\[tool\.mypy\][^\[]*files = \["scanconv"\]', pyproject)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize(
     "failing",
     [

@@ -87,7 +87,7 @@ def nearest_rows(r: int) -> set[Pixel]:
 def one_piece(pixels: list[Pixel]) -> bool:
     """The pixels form one 8-connected piece: scipy's labelling of them as an image (in C; the
     breadth-first search of :func:`tests.helpers.connected` in Python took most of the CPU of
-    the sweep below, issue 29)."""
+    the sweep below)."""
     ndimage = pytest.importorskip("scipy.ndimage")
     xs, ys = (np.array(v) for v in zip(*pixels, strict=True))
     image = np.zeros((xs.max() - xs.min() + 1, ys.max() - ys.min() + 1), dtype=bool)
@@ -107,8 +107,8 @@ def touches_circle(p: Pixel, r: int, h: Fraction = Fraction(1)) -> bool:
 # --- octant walk ---------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize(("method", "rounding"), VARIANTS)
 @given(r=radius)
 @settings(deadline=None)
@@ -122,8 +122,8 @@ def test_octant_starts_at_top_and_is_an_8_connected_monotone_walk(method, roundi
     assert all(x <= y for x, y in pts[:-1]) and pts[-1][0] <= pts[-1][1] + 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize(("method", "rounding"), VARIANTS)
 @given(r=radius, xc=centre, yc=centre)
 @settings(deadline=None)
@@ -138,7 +138,7 @@ def test_pixels_are_symmetric_about_the_centre_and_unique(method, rounding, r, x
     assert (min(xs), min(ys), max(xs), max(ys)) == sol.bbox
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow
 @pytest.mark.parametrize(("method", "rounding"), VARIANTS)
 def test_the_whole_circle_is_closed_without_gaps(method, rounding):
@@ -147,8 +147,8 @@ def test_the_whole_circle_is_closed_without_gaps(method, rounding):
         assert one_piece(pixel_list(method, r, rounding=rounding)), r
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize(("method", "rounding"), VARIANTS)
 @given(r=st.integers(min_value=0, max_value=3000))
 @settings(deadline=None, max_examples=50)
@@ -162,8 +162,8 @@ def test_every_pixel_is_within_one_pixel_of_the_circle(method, rounding, r):
         assert touches_circle(p, r, h), p
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("method", ["midpoint", "bresenham", "polynomial"])
 @given(r=st.integers(min_value=0, max_value=3000))
 @settings(deadline=None, max_examples=50)
@@ -173,7 +173,7 @@ def test_nearest_pixel_methods_are_within_half_a_pixel_radially(method, r):
         assert max(0, 2 * r - 1) ** 2 <= 4 * (x * x + y * y) <= (2 * r + 1) ** 2
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow  # about a second of CPU
 def test_pixel_order_is_the_documented_one():
     """Rebuilt with a full set: each octant point's 8 images in order, first occurrence only."""
@@ -194,7 +194,7 @@ def test_pixel_order_is_the_documented_one():
 # --- midpoint against independent definitions -------------------------------------------------
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow
 @pytest.mark.parametrize("r", range(0, 201))
 def test_midpoint_equals_bresenham_and_the_nearest_pixel_definition(r):
@@ -204,7 +204,7 @@ def test_midpoint_equals_bresenham_and_the_nearest_pixel_definition(r):
     assert mid == set(pixel_list("polynomial", r))  # column rounding, octant closed at 45°
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow
 @given(r=st.integers(min_value=200, max_value=5000))
 @settings(deadline=None, max_examples=60)
@@ -213,7 +213,7 @@ def test_midpoint_equals_bresenham_for_large_radii(r):
     assert mid == set(pixel_list("bresenham", r)) == nearest_rows(r)
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow
 @given(r=st.integers(min_value=0, max_value=2000))
 @settings(deadline=None, max_examples=80)
@@ -224,7 +224,7 @@ def test_midpoint_equals_skimage_bresenham(r):
     assert set(pixel_list("midpoint", r)) == theirs
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_midpoint_decision_parameter_is_the_midpoint_residual():
     # p_k = f(x_k + 1, y_k - 1/2) - 1/4 with f = x² + y² - r² (Hearn & Baker's integer form)
     for r in range(0, 150):
@@ -242,7 +242,7 @@ def test_bresenham_d_is_the_sum_of_the_two_candidates_residuals():
             assert s.p == (x + 1) ** 2 * 2 + y * y + (y - 1) ** 2 - 2 * r * r
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_bresenham_d_is_twice_the_midpoint_p_plus_one():
     for r in range(0, 300):
         pairs = list(zip(bresenham(r), midpoint(r), strict=False))
@@ -281,8 +281,8 @@ def test_polynomial_rounds_the_true_square_root(r):
             check_polynomial_step(s, r, rounding)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("rounding", ["half-up", "trunc"])
 def test_polynomial_whole_octant(rounding):
     for r in range(0, 300):
@@ -300,8 +300,8 @@ def test_polynomial_whole_octant(rounding):
         assert sol.derived[1].value == x - 1  # the working names the last x
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @given(r=st.integers(min_value=1, max_value=3000))
 @settings(deadline=None, max_examples=50)
 def test_trig_follows_cos_and_sin(r):
@@ -323,7 +323,7 @@ def test_trig_follows_cos_and_sin(r):
         assert s.pixel == point(s.k) and s.pixel[0] <= s.pixel[1]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_trig_step_count_is_exact():
     for r in range(1, 20000):
         v = math.pi * r / 4
@@ -331,7 +331,7 @@ def test_trig_step_count_is_exact():
         assert trig_steps(r) == math.floor(v)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_symmetric_dda_is_the_exact_recurrence():
     for r in range(1, 70):
         n = max(k for k in range(1, 12) if 2 ** (k - 1) <= r)
@@ -351,7 +351,7 @@ def test_symmetric_dda_is_the_exact_recurrence():
         assert math.floor(x + half) > math.floor(y + half)  # stopped at the first point past 45°
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow  # about a second of CPU
 def test_symmetric_dda_trunc_and_largest_radius():
     for s in symmetric_dda(37, "trunc"):
@@ -457,7 +457,7 @@ def test_a_huge_radius_streams_its_table():
     ]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_every_format_renders_a_circle_and_an_ellipse():
     for fmt in ("markdown", "plain", "latex", "csv", "json", "rich"):
         for args in (("circle", "4", "-m", "trig"), ("ellipse", "5", "3")):
@@ -467,7 +467,7 @@ def test_every_format_renders_a_circle_and_an_ellipse():
                 assert r.out.isascii()
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_real_process_error():
     r = run_process("circle", "-3")
     assert r.code == 2 and r.out == "" and "non-negative" in r.err
@@ -501,7 +501,7 @@ def readme_table() -> str:
     return "\n".join(lines)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_readme_method_table_is_the_codes_output():
     """The circle-methods table in docs/guide.md is this code's output (regenerate it with
     ``python -m tests.test_circles``)."""

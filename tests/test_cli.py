@@ -16,13 +16,17 @@ from pathlib import Path
 
 import pytest
 
+from scanconv.answers.methods import methods_of
+from scanconv.render import formats
+
 from .helpers import assert_refused, run, run_process
 
 ANSI = re.compile(r"\x1b\[")
 COLOUR = re.compile(r"\x1b\[[0-9;]*(3[0-7]|38;|9[0-7])[0-9;]*m")
 BOX = re.compile(r"[\u2500-\u257f]")
 LINE = ("line", "2", "2", "10", "6", "--algo", "bresenham")
-FORMATS = ("rich", "markdown", "latex", "csv", "json", "plain")
+FORMATS = formats("answer")
+"""Every format of a single answer, from the format table (a new one is walked here at once)."""
 
 
 PAIR = re.compile(r"\((-?\d+), (-?\d+)\)")
@@ -62,7 +66,7 @@ def _table_pixels(out: str, fmt: str) -> list[tuple[int, int]]:
 
 
 @pytest.mark.parametrize("fmt", FORMATS)
-@pytest.mark.parametrize("algo", ["bresenham", "dda", "basic"])
+@pytest.mark.parametrize("algo", [m for m in methods_of("line") if m != "wu"])  # wu: intensities
 def test_every_format_and_algorithm(fmt, algo):
     """Each format, parsed, gives the solution's own pixels: JSON ``pixels`` and each step's
     ``pixel``, the CSV rows' x and y, the table rows and the list of pixels plotted."""
@@ -86,9 +90,17 @@ def test_every_format_and_algorithm(fmt, algo):
         x, y = header.index(px), header.index(py)
         assert [(int(row[x]), int(row[y])) for row in rows] == steps
         assert pixels[len(pixels) - len(rows) :] == steps  # every row's pixel is plotted
-    else:
+    elif fmt == "html":
+        drawn = re.findall(
+            r'<rect class="sc-px" data-i="\d+" data-x="(-?\d+)" data-y="(-?\d+)"', r.out
+        )
+        assert [(int(x), int(y)) for x, y in drawn] == pixels
+        assert r.out.count("<tr data-pos=") == len(steps)
+    elif fmt in ("rich", "markdown", "latex", "plain"):
         assert _plotted(r.out) == pixels
         assert _table_pixels(r.out, fmt) == steps
+    else:
+        pytest.fail(f"no reader here for the format {fmt}: add one")
 
 
 def test_plain_is_ascii():
@@ -113,7 +125,7 @@ def test_json_shape():
     doc = json.loads(r.out)
     assert doc["primitive"] == "line" and doc["algorithm"] == "bresenham"
     assert doc["derived"]["p0"] == 0 and doc["given"]["P1"] == [2, 2]
-    # the notes' layout (issue 13): row k plots (x_k, y_k), row 0 the start point
+    # the notes' layout: row k plots (x_k, y_k), row 0 the start point
     assert doc["steps"][0] == {"k": 0, "p": 0, "decision": "NE", "pixel": [2, 2], "p_next": -8}
     assert doc["pixels"][0] == [2, 2] and doc["pixels"][-1] == [10, 6]
     assert [s["pixel"] for s in doc["steps"]] == doc["pixels"]
@@ -150,7 +162,7 @@ def test_latex_fragment_escapes_text_and_sets_numbers_in_math():
     assert "≥" not in out and "→" not in out
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_auto_is_markdown_when_piped():
     r = run_process(*LINE)
     assert r.code == 0
@@ -218,7 +230,7 @@ def test_bad_input_is_one_line_exit_2(args, message):
     assert_refused(run(*args), message)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_bad_input_in_a_real_process():
     r = run_process("line", "x", "1", "2", "3")
     assert r.code == 2 and r.out == "" and r.err.count("\n") == 1
@@ -250,7 +262,7 @@ def test_bad_input_never_truncates_an_existing_file(tmp_path: Path):
     assert [p.name for p in tmp_path.iterdir()] == ["keep.md"]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_broken_pipe_is_quiet():
     proc = subprocess.run(
         f"{sys.executable} -m scanconv line 0 0 1000000 3 --format csv | head -1",
@@ -263,7 +275,7 @@ def test_broken_pipe_is_quiet():
     assert "Error" not in proc.stderr and "Traceback" not in proc.stderr
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_ctrl_c_during_a_long_stream_exits_130_quietly():
     proc = subprocess.Popen(
         [sys.executable, "-m", "scanconv", "line", "0", "0", "1999999", "1", "-f", "csv"],
@@ -279,7 +291,7 @@ def test_ctrl_c_during_a_long_stream_exits_130_quietly():
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_grid_too_large_is_a_note_on_stderr():
     r = run("line", "0", "0", "500", "3", "-f", "markdown")
     assert r.code == 0
@@ -305,15 +317,15 @@ def test_negative_coordinates_are_arguments_not_options():
     assert (rows[-1]["x"], rows[-1]["y"]) == ("4", "5") and len(rows) == 9
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_python_dash_m_and_version():
     r = run_process("--version")
     assert r.code == 0 and r.out.startswith("scanconv ")
     assert run_process("line", "--help").out.startswith("Usage: scanconv line")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.parametrize("fmt", (*FORMATS, "html"))
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.parametrize("fmt", FORMATS)
 def test_typer_cli_runner_every_format(fmt):
     from typer.testing import CliRunner
 
@@ -390,7 +402,7 @@ def test_the_library_says_not_a_number_without_naming_options():
         parse_number("--bogus")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_shared_options_are_declared_once_and_added_by_answers():
     """The drawing commands get --svg and --png; storage and quantize no grid; sample keeps
     its own --origin help (and reads the option itself)."""
@@ -421,7 +433,7 @@ def test_a_group_without_a_command_prints_its_help(group: tuple[str, ...]) -> No
     assert r.out.startswith("Usage: scanconv") and "\n\n" in r.out
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_help_groups_the_commands_by_topic_with_examples() -> None:
     out = run("--help").out
     for panel in ("Lines, circles and ellipses:", "Curves:", "Image representation:"):

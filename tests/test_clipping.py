@@ -6,7 +6,7 @@ output for a convex polygon has the area of its intersection with the window, co
 independently (the convex hull of the vertices inside the other shape and the edge crossings).
 Textbook examples are checked value by value, each with its source.
 
-Example counts (issue 29, a suite within 5 minutes): 100 a property (they were 200 to 400);
+Example counts (the whole suite within 5 minutes): 100 a property (they were 200 to 400);
 Liang–Barsky is also compared on random segments with Cyrus–Beck (``test_cyrus_beck``, 200
 examples) and the midpoint subdivision (``test_midpoint_clip``), so Cohen–Sutherland and
 Liang–Barsky together meet about 450 random segments a run.
@@ -65,7 +65,7 @@ def on_segment(q, a, b):
 # --- properties -------------------------------------------------------------------------------
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow
 @settings(max_examples=100, deadline=None)  # was 400: see the module's note
 @given(point, point, windows())
@@ -76,7 +76,7 @@ def test_cohen_sutherland_and_liang_barsky_agree_exactly(p1, p2, w):
     assert len(cs.iterations) <= 4
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow
 @settings(max_examples=100, deadline=None)  # was 400: see the module's note
 @given(point, point, windows())
@@ -97,7 +97,7 @@ def test_a_clipped_segment_is_inside_the_window_and_on_the_line(p1, p2, w):
         assert r.segment[1] == p2
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow
 @settings(max_examples=100, deadline=None)  # was 300: see the module's note
 @given(point, point, windows())
@@ -167,7 +167,7 @@ def intersection_area(poly, w):
     return abs(polygon_area(h)) if len(h) >= 3 else 0
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow
 @settings(max_examples=100, deadline=None)  # was 250: see the module's note
 @given(st.lists(point, min_size=3, max_size=9), windows())
@@ -186,7 +186,7 @@ def test_sutherland_hodgman_of_a_convex_polygon_is_the_intersection(points, w):
 @st.composite
 def points_inside(draw):
     """A window and 3 to 9 points in it (closed): drawn from the whole plane, as this test's
-    points were until issue 29, not one polygon in 100 fell inside its window, so the test ran
+    points once were, not one polygon in 100 fell inside its window, so the test ran
     its assertion on none of them."""
     w = draw(windows())
     xs = st.fractions(min_value=w[0], max_value=w[2], max_denominator=6)
@@ -194,7 +194,7 @@ def points_inside(draw):
     return draw(st.lists(st.tuples(xs, ys), min_size=3, max_size=9)), w
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.slow
 @settings(max_examples=100, deadline=None)  # was 200: see the module's note
 @given(points_inside())

@@ -91,7 +91,7 @@ def test_pure_green_in_hsi_as_the_codeguru_thread_works_it() -> None:
     assert (hsi.h, hsi.s, hsi.i * 255) == (120, 1, 85)  # exact: arccos(-1/2) is 120 degrees
 
 
-def test_the_issues_example_is_exact_in_every_model() -> None:
+def test_rgb_51_102_153_is_exact_in_every_model() -> None:
     rgb = (F(1, 5), F(2, 5), F(3, 5))  # (51, 102, 153) / 255
     assert c.rgb_to_cmy(*rgb) == (F(4, 5), F(3, 5), F(2, 5))
     assert c.rgb_to_hsv(*rgb)[:3] == (210, F(2, 3), F(3, 5))
@@ -105,7 +105,7 @@ def test_the_issues_example_is_exact_in_every_model() -> None:
 LEVEL = st.integers(0, 255)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(LEVEL, LEVEL, LEVEL)
 def test_rgb_to_cmy_and_hsv_and_back_is_exact(r: int, g: int, b: int) -> None:
     rgb = (F(r, 255), F(g, 255), F(b, 255))
@@ -114,7 +114,7 @@ def test_rgb_to_cmy_and_hsv_and_back_is_exact(r: int, g: int, b: int) -> None:
     assert c.hsv_to_rgb(hsv.h, hsv.s, hsv.v) == rgb
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(LEVEL, LEVEL, LEVEL)
 def test_rgb_to_hsi_and_back_is_within_the_stated_precision(r: int, g: int, b: int) -> None:
     rgb = (F(r, 255), F(g, 255), F(b, 255))
@@ -127,7 +127,7 @@ def test_rgb_to_hsi_and_back_is_within_the_stated_precision(r: int, g: int, b: i
     assert levels == [r, g, b]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(LEVEL, LEVEL, LEVEL)
 def test_the_cli_round_trip_through_hsv_prints_the_input(r: int, g: int, b: int) -> None:
     hsv = json.loads(run("color", "rgb", str(r), str(g), str(b), "--to", "hsv", "-f", "json").out)

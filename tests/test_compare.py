@@ -47,8 +47,8 @@ def test_positive_slope_all_agree_and_say_so():
     assert solution.data["columns_differing"] == 0
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)
 @given(st.tuples(*[st.integers(-12, 12)] * 4))
 def test_integer_lines_differ_only_at_ties(ends):
@@ -73,8 +73,8 @@ def test_integer_lines_differ_only_at_ties(ends):
         assert pixels == shown
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)
 @given(st.tuples(*[st.integers(-40, 40).map(lambda n: Fraction(n, 4))] * 4))
 def test_fractional_lines_compare_basic_and_dda_only(ends):

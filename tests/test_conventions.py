@@ -1,4 +1,4 @@
-"""Issue 13: the named conventions (knobs and presets), the notes' layout, and the notes' own
+"""The named conventions (knobs and presets), the notes' layout, and the notes' own
 computational examples run by their stated algorithms."""
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ def test_line_tie_changes_pixels_only_where_p_is_zero(x1, y1, x2, y2):
         assert step[-1].pixel == keep[-1].pixel  # both end on the end point
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(st.integers(0, 300))
 def test_circle_tie_changes_points_only_where_p_is_zero(r):
     for gen in (circles.midpoint, circles.bresenham, circles.general):
@@ -50,8 +50,8 @@ def test_circle_tie_changes_points_only_where_p_is_zero(r):
             assert step[first].p == keep[first].p == 0
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @given(st.integers(0, 500))
 def test_p0_five_quarters_decides_as_one_minus_r_with_strict_ties(r):
     a = list(circles.midpoint(r, p0="1-r"))
@@ -60,8 +60,8 @@ def test_p0_five_quarters_decides_as_one_minus_r_with_strict_ties(r):
     assert all(sb.p - sa.p == Fraction(1, 4) for sa, sb in zip(a, b, strict=True))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @given(st.integers(0, 500))
 def test_update_changes_the_working_only(r):
     assert list(circles.midpoint(r, update="old")) == list(circles.midpoint(r, update="new"))
@@ -71,7 +71,7 @@ def test_update_changes_the_working_only(r):
     assert [q.tex for q in new.derived] != [q.tex for q in old.derived]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(st.integers(0, 300))
 def test_inclusive_loop_only_extends_the_strict_walk(r):
     for gen in (circles.midpoint, circles.general):
@@ -85,7 +85,7 @@ def test_inclusive_loop_only_extends_the_strict_walk(r):
     assert len(px) == len(set(px))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(st.integers(0, 40), st.integers(0, 40))
 def test_ellipse_loop_changes_region_one_only_on_an_equal_boundary(rx, ry):
     strict = list(ellipses.midpoint_ellipse(rx, ry, "strict"))
@@ -103,7 +103,7 @@ def test_ellipse_loop_changes_region_one_only_on_an_equal_boundary(rx, ry):
 halves = st.fractions(min_value=-30, max_value=30, max_denominator=4)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(halves, halves, halves, halves, st.sampled_from(sorted(ROUNDINGS)))
 def test_dda_rounding_changes_pixels_only_at_halves_or_negatives(x1, y1, x2, y2, rounding):
     base = list(lines.dda(x1, y1, x2, y2))
@@ -148,7 +148,7 @@ def test_an_explicit_knob_overrides_the_preset():
     }
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_answers_state_their_conventions_in_every_format():
     for fmt in ("plain", "markdown", "latex", "json", "rich"):
         r = run("line", "2", "2", "10", "6", "--convention", "foley", "-f", fmt)
@@ -253,7 +253,7 @@ def _mirror(points, steep):
     return [(x, -y) if steep else (-x, y) for x, y in points]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(coord, coord, coord, coord, st.sampled_from(["step", "keep"]))
 def test_start_given_walks_from_p1_as_the_mirrored_swap_walk(x1, y1, x2, y2, tie):
     """Walking from P1 with the major coordinate decreasing is the swap walk of the mirrored
@@ -269,7 +269,7 @@ def test_start_given_walks_from_p1_as_the_mirrored_swap_walk(x1, y1, x2, y2, tie
     assert given_walk == _mirror(mirrored, steep)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(coord, coord, coord, coord)
 def test_start_changes_bresenham_pixels_only_where_a_tie_is_met(x1, y1, x2, y2):
     swap = api.line(x1, y1, x2, y2, start="swap")
@@ -278,8 +278,8 @@ def test_start_changes_bresenham_pixels_only_where_a_tie_is_met(x1, y1, x2, y2):
         assert set(swap.pixels()) == set(given_walk.pixels())
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @given(halves, halves, halves, halves)
 def test_dda_start_changes_pixels_only_at_halves(x1, y1, x2, y2):
     given_walk = api.line(x1, y1, x2, y2, algo="dda", start="given")
@@ -313,13 +313,13 @@ def test_start_examples_by_hand():
     assert "start = swap" in text
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 def test_ellipse_exact_quarters_meet_no_tie_on_small_ellipses():
     """Why the ellipse's tie knob matters only with p0 = rounded: with exact quarters no
     decision parameter of these ellipses is 0, so the two tie rules agree."""
     # The quadrant's steps from the generator itself (the plotted pixels are their mirror
-    # images): the worked answers around them cost ten times as much (issue 29).
+    # images): the worked answers around them cost ten times as much.
     for rx in range(1, 25):
         for ry in range(1, 25):
             step = list(ellipses.midpoint_ellipse(rx, ry))
@@ -347,8 +347,8 @@ def test_ellipse_rounded_p0_and_tie_by_hand():
     assert "= -146 -> -145 (rounded)" in text
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @given(st.integers(1, 30), st.integers(1, 30))
 def test_ellipse_tie_changes_the_walk_only_from_its_first_tie(rx, ry):
     step = list(api.ellipse(rx, ry, p0="rounded").steps())

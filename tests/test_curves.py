@@ -31,6 +31,7 @@ from scanconv.answers.curves.bezier import bezier_solution
 from scanconv.answers.curves.bspline import bspline_solution
 from scanconv.answers.primitives.parametric import parametric_solution
 from scanconv.core.checks import InputError
+from scanconv.render import formats
 
 from .helpers import assert_refused, connected, run
 
@@ -81,7 +82,7 @@ def _point(step):
 # --- Bezier -------------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(points, st.integers(1, 12))
 def test_bezier_interpolates_its_end_points(pts, samples):
     rows = list(bezier(pts, samples))
@@ -90,14 +91,14 @@ def test_bezier_interpolates_its_end_points(pts, samples):
     assert _point(rows[-1]) == pts[-1]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(points, st.integers(1, 10))
 def test_bezier_stays_in_the_convex_hull(pts, samples):
     for s in bezier(pts, samples):
         assert _in_hull(_point(s), pts)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(st.integers(1, 12), unit_t)
 def test_bernstein_weights_are_nonnegative_and_sum_to_one(n, t):
     w = bernstein(n, t)
@@ -105,7 +106,7 @@ def test_bernstein_weights_are_nonnegative_and_sum_to_one(n, t):
     assert all(v >= 0 for v in w)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(points, unit_t)
 def test_de_casteljau_equals_bernstein_exactly(pts, t):
     *_, last = de_casteljau(pts, t)
@@ -162,7 +163,7 @@ def spline_cases(draw):
             continue
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60)
 @given(spline_cases(), st.integers(1, 9))
 def test_bspline_basis_is_a_partition_of_unity_on_the_domain(case, samples):
@@ -174,7 +175,7 @@ def test_bspline_basis_is_a_partition_of_unity_on_the_domain(case, samples):
         assert all(v >= 0 for v in w)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60)
 @given(spline_cases(), st.integers(1, 9), st.data())
 def test_bspline_local_control(case, samples, data):
@@ -192,7 +193,7 @@ def test_bspline_local_control(case, samples, data):
             assert _point(a) == _point(b), (t, lo, hi)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(points)
 def test_clamped_bspline_interpolates_its_end_points(pts):
     n = len(pts) - 1
@@ -218,8 +219,8 @@ def test_clamped_bspline_without_inner_knots_is_the_bezier_curve():
         assert a.extra[1:] == b.extra[1:]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 def test_bspline_agrees_with_scipy_on_random_inputs():
     # imported here, not with the module: a second of CPU each pytest process would pay
     # collecting the file (every xdist worker does), for this one test
@@ -262,7 +263,7 @@ def test_bspline_agrees_with_scipy_on_random_inputs():
             x = float(t)
             if t == knots[n + 1]:
                 # scipy looks up the span [t_n-1, t_n) at the right end, which is empty when the
-                # end knot is repeated (the trap the issue names): compare with its left limit.
+                # end knot is repeated (a known trap): compare with its left limit.
                 x = float(np.nextafter(x, -np.inf))
             theirs = ref(x)
             assert lo <= x <= hi
@@ -338,7 +339,7 @@ def test_float_noise_does_not_move_a_pixel():
 # --- rasterizing --------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(st.lists(st.tuples(st.integers(-15, 15), st.integers(-15, 15)), min_size=1, max_size=12))
 def test_curve_pixels_are_8_connected_without_duplicates(samples):
     out = list(curve_pixels(samples))
@@ -347,7 +348,7 @@ def test_curve_pixels_are_8_connected_without_duplicates(samples):
     assert connected(set(out))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(
     st.tuples(st.integers(-20, 20), st.integers(-20, 20)),
     st.tuples(st.integers(-20, 20), st.integers(-20, 20)),
@@ -462,7 +463,8 @@ def test_local_control_bezier_moves_everywhere_bspline_only_locally():
 
 # --- CLI ----------------------------------------------------------------------------------------
 
-ISSUE_COMMANDS = [
+CURVE_COMMANDS = [
+    # one command line of each curve and each of its forms, typed as a student types it
     "parametric circle --center 0 0 --radius 5 --samples 16",
     "parametric ellipse --center 0 0 --a 8 --b 4",
     "parametric parabola --t-range -3 3",
@@ -475,9 +477,9 @@ ISSUE_COMMANDS = [
 ]
 
 
-@pytest.mark.parametrize("command", ISSUE_COMMANDS)
-@pytest.mark.parametrize("fmt", ["plain", "markdown", "latex", "csv", "json", "rich"])
-def test_the_issue_command_lines_work_verbatim(command, fmt):
+@pytest.mark.parametrize("command", CURVE_COMMANDS)
+@pytest.mark.parametrize("fmt", formats("answer"))
+def test_each_curve_command_line_answers_in_every_format(command, fmt):
     import shlex
 
     r = run(*shlex.split(command), "--format", fmt)
@@ -522,7 +524,7 @@ def test_bad_input_is_one_line_exit_2_nothing_on_stdout(case, command, words):
     assert_refused(run(*shlex.split(command), "--format", "plain"), words)
 
 
-# --- issue 13: the basis from a degree and knots alone ----------------------------------------
+# --- the basis from a degree and knots alone -------------------------------------------------
 
 
 def test_bspline_basis_from_degree_and_knots_alone():

@@ -17,7 +17,7 @@ from scanconv.core.checks import InputError
 C = st.integers(-30, 30)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=200)
 @given(p0=st.tuples(C, C), p1=st.tuples(C, C), a=st.tuples(C, C), b=st.tuples(C, C))
 def test_equals_liang_barsky_on_rectangles(p0, p1, a, b) -> None:

@@ -1,4 +1,4 @@
-"""Issue 13: --derive (the derivation with this input's numbers), --algorithm (the pseudocode of
+"""--derive (the derivation with this input's numbers), --algorithm (the pseudocode of
 the variant used) and the comparison theory tables, in every format."""
 
 from __future__ import annotations
@@ -7,10 +7,11 @@ import pytest
 
 from scanconv import _api as api
 from scanconv.core.working import tex_to_unicode
+from scanconv.render import formats
 
 from .helpers import run
 
-FORMATS = ("plain", "markdown", "latex", "json", "csv", "rich")
+FORMATS = formats("answer")
 
 CASES = [
     ("line", "2", "2", "10", "6"),
@@ -82,7 +83,7 @@ def test_pseudocode_is_the_variant_used():
     assert "x = 0;  y = r;  p = 5/4 - r" in code and any("2*x + 3" in c for c in code)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize(
     ("args", "words"),
     [

@@ -85,7 +85,7 @@ def test_bad_input_names_the_keyword():
     assert "--" not in str(err.value)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_import_scanconv_is_lazy():
     code = (
         "import sys, scanconv; "

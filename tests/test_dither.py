@@ -83,7 +83,7 @@ def test_ordered_conventions_change_the_numbers_as_stated() -> None:
     assert centred == [[Fraction(1, 2), Fraction(5, 2)], [Fraction(7, 2), Fraction(3, 2)]]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(
     n=st.sampled_from([2, 4, 8]),
@@ -102,7 +102,7 @@ def test_ordered_equals_a_tiled_numpy_comparison(n, rows, cols, seed, compare) -
     assert sol.data["output"] == expected.astype(int).tolist()
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(n=st.sampled_from([2, 4]), level=st.integers(0, 255), centred=st.booleans())
 def test_ordered_dither_preserves_the_mean_of_a_flat_tile(n, level, centred) -> None:
@@ -159,7 +159,7 @@ def _oracle(image: list[list[int]], top: int, serpentine: bool) -> list[list[int
     return out
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(
     rows=st.integers(1, 7),
@@ -174,7 +174,7 @@ def test_floyd_steinberg_equals_an_independent_implementation(rows, cols, seed, 
     assert sol.data["output"] == _oracle(image, 255, serpentine)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=40)
 @given(rows=st.integers(1, 6), cols=st.integers(1, 6), seed=st.integers(0, 2**32 - 1))
 def test_error_diffusion_loses_only_what_falls_off_the_image(rows, cols, seed) -> None:

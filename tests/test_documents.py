@@ -27,6 +27,7 @@ import typer
 
 from scanconv.cli import app
 from scanconv.core.records import Solution
+from scanconv.render import formats
 from scanconv.render import grid as gridmod
 
 from .cli_vocabulary import DOCUMENTS, NOT_WALKED
@@ -258,7 +259,7 @@ def test_latex_fits_the_page_width(tmp_path: Path, name: str) -> None:
 
 
 def test_latex_wide_short_table_is_set_whole_never_in_parts(tmp_path: Path) -> None:
-    """Issue 27: the circle's 9-column symmetry table is one table (scaled to the text width),
+    """The circle's 9-column symmetry table is one table (scaled to the text width),
     not parts of its columns; it fits the page."""
     from scanconv.answers.primitives.circle import circle_solution
 
@@ -282,7 +283,7 @@ def test_latex_long_answer_breaks_pixels_and_pages(tmp_path: Path) -> None:
 
 
 def test_latex_wide_grid_is_drawn_to_fit(tmp_path: Path) -> None:
-    """Issue 27: the grid is drawn (TikZ), scaled to the text width, never typewriter text."""
+    """The grid is drawn (TikZ), scaled to the text width, never typewriter text."""
     out = _answer("line", "0", "0", "24", "4")
     assert "\\begin{tikzpicture}" in out and "\\begin{verbatim}" not in out
     typeset_each(tmp_path, PREAMBLE, out, _every(), _fits_within(1), passes=2)
@@ -308,7 +309,7 @@ def test_rich_shows_the_derivation_unless_brief() -> None:
     assert note_unicode("$p_k < 0$") in full.out
 
 
-@pytest.mark.parametrize("fmt", ["rich", "markdown", "latex", "plain", "csv", "json"])
+@pytest.mark.parametrize("fmt", formats("answer"))
 def test_explain_is_a_no_op_kept_for_old_scripts(fmt: str) -> None:
     base = run("line", "2", "2", "10", "6", "--format", fmt)
     assert run("line", "2", "2", "10", "6", "--format", fmt, "--explain").out == base.out

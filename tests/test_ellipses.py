@@ -44,7 +44,7 @@ def pixel_list(rx: int, ry: int, xc: int = 0, yc: int = 0) -> list[Pixel]:
 def pixel_set(rx: int, ry: int) -> set[Pixel]:
     """The pixels of :func:`pixel_list` (centre 0, 0) straight from the algorithm's quadrant,
     without the worked answer around them: the tests of the pixels' geometry call it on
-    hundreds of ellipses, and the answer's working cost ten times the pixels (issue 29).
+    hundreds of ellipses, and the answer's working cost ten times the pixels.
     ``Solution.pixels()`` is exactly these images of these points (scanconv/answers/primitives/ellipse.py),
     and :func:`test_pixel_order_is_the_documented_one` checks the answer's own list."""
     return set(symmetric_pixels(quadrant_points(rx, ry)))
@@ -62,7 +62,7 @@ def touches_ellipse(p: Pixel, rx: int, ry: int) -> bool:
     return f(*near) <= 0 <= f(*far)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(rx=axis, ry=axis)
 @settings(deadline=None)
 def test_quadrant_is_an_8_connected_walk_from_top_to_tip(rx, ry):
@@ -73,8 +73,8 @@ def test_quadrant_is_an_8_connected_walk_from_top_to_tip(rx, ry):
         assert (x1 - x0, y1 - y0) in ((1, 0), (1, -1), (0, -1))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @given(rx=axis, ry=axis, xc=centre, yc=centre)
 @settings(deadline=None)
 def test_pixels_are_symmetric_unique_and_in_the_box(rx, ry, xc, yc):
@@ -86,8 +86,8 @@ def test_pixels_are_symmetric_unique_and_in_the_box(rx, ry, xc, yc):
     assert (min(xs), min(ys), max(xs), max(ys)) == ellipse_solution(rx, ry, xc, yc).bbox
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @given(rx=axis, ry=axis)
 @settings(deadline=None)
 def test_closed_outline_close_to_the_ideal_ellipse(rx, ry):
@@ -96,8 +96,8 @@ def test_closed_outline_close_to_the_ideal_ellipse(rx, ry):
     assert all(touches_ellipse(p, rx, ry) for p in px)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @given(axes=flat)
 @settings(deadline=None, max_examples=40)
 def test_flat_ellipses_reach_their_tips(axes):
@@ -146,7 +146,7 @@ def test_hearn_and_baker_rx8_ry6_tables():
     ]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_decision_parameters_are_the_midpoint_residuals():
     """p1_k = f(x_k + 1, y_k - 1/2) and p2_k = f(x_k + 1/2, y_k - 1), f = ry²x² + rx²y² - rx²ry²."""
     for rx in range(0, 25):
@@ -172,8 +172,8 @@ def test_equal_axes_give_the_midpoint_circle(r):
     assert set(pixel_list(r, r)) == set(circle_solution("midpoint", r).pixels())
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 def test_loosely_agrees_with_skimage_ellipse_perimeter():
     draw = pytest.importorskip("skimage.draw")
     for rx in range(1, 30):
@@ -205,8 +205,8 @@ def test_degenerate_axes_are_segments():
     assert sorted(pixel_list(0, 2)) == [(0, y) for y in range(-2, 3)]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 def test_large_axes_terminate_quickly_with_every_step_a_unit_move():
     for rx, ry in ((100000, 3), (3, 100000), (20000, 15000)):
         n = sum(1 for _ in midpoint_ellipse(rx, ry))

@@ -25,7 +25,7 @@ def _key(text: str) -> str:
     return re.sub(r"[^a-z0-9|>]+", " ", text.replace("$", "").lower()).strip()
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_every_exam_question_of_the_notes_is_answered_in_the_shipped_file() -> None:
     if not NOTES.exists():
         pytest.skip(f"the course notes are not here ({NOTES}): nothing to cover")
@@ -91,7 +91,7 @@ def test_bad_sections_are_one_line_exit_2(argv: tuple[str, ...], word: str) -> N
     assert word in r.err
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_markdown_book_opens_with_its_contents() -> None:
     out = run("exam", "--format", "markdown").out
     head, _, body = out.partition("\n## Scan conversion\n")
@@ -101,7 +101,7 @@ def test_the_markdown_book_opens_with_its_contents() -> None:
     assert head.index("## Contents") < len(head)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_html_book_links_its_contents_to_every_question() -> None:
     r = run("exam", "--section", "4", "-f", "html")
     assert r.code == 0, r.err
@@ -113,7 +113,7 @@ def test_the_html_book_links_its_contents_to_every_question() -> None:
         assert r.out.index(f'id="{target}"') > r.out.index("</nav>")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_json_book_has_question_section_and_answer() -> None:
     book = json.loads(run("exam", "--format", "json").out)
     assert len(book["questions"]) == 37

@@ -133,7 +133,7 @@ ALLOWED = [
 ]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize(("text", "ref"), ALLOWED, ids=[a[0] for a in ALLOWED])
 @given(t=st.floats(min_value=-5, max_value=5, allow_nan=False))
 def test_allowed_input_matches_math(text, ref, t: float) -> None:

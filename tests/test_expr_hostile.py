@@ -2,7 +2,7 @@
 
 ``tests/test_expr.py`` checks each refusal's message and work (Python calls); this file adds the memory
 bound (tracemalloc in-process; a memory-capped subprocess through the CLI, with its peak
-resident size), and the variants an attacker would try next for each item of issue 8:
+resident size), and the variants an attacker would try next for each refusal:
 ``__import__``, attribute access, lambdas, comprehensions, ``9**9**9``, very long and deeply
 nested expressions.
 """
@@ -22,7 +22,7 @@ from scanconv.core.expr import MAX_BRACKETS, MAX_DEPTH, MAX_LENGTH, compile_expr
 
 from .helpers import python_calls
 
-#: (issue item, formula, a word of the refusal)
+#: (kind of attack, formula, a word of the refusal)
 HOSTILE = [
     ("__import__", "__import__('os').system('echo pwned')", "attribute access"),
     ("__import__", "__import__('os')", "'__import__' is not allowed"),
@@ -61,7 +61,7 @@ HOSTILE = [
 IDS = [f"{item}: {text[:30]!r}" for item, text, _ in HOSTILE]
 
 
-def test_every_item_of_the_issue_is_covered():
+def test_every_kind_of_attack_is_covered():
     items = {item for item, _, _ in HOSTILE}
     assert items == {
         "__import__",
@@ -145,7 +145,7 @@ CHILD = textwrap.dedent(
 )
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_cli_refuses_them_all_within_1_gib_and_a_small_peak():
     """Through the command line, in a process capped at 1 GiB of address space: every formula
     is one line of error, exit 2, and the process's peak resident size stays small."""

@@ -120,7 +120,7 @@ def test_curve_figure_draws_the_curve_and_the_control_polygon():
 # --- step numbers -------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60, deadline=None)
 @given(st.tuples(*[st.integers(-8, 8)] * 4))
 def test_bresenham_numbers_start_0_and_step_k_k_plus_1(ends):
@@ -135,7 +135,7 @@ def test_bresenham_numbers_start_0_and_step_k_k_plus_1(ends):
         assert labels[s.pixel] == s.k + 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60, deadline=None)
 @given(st.tuples(*[st.integers(-8, 8)] * 4))
 def test_dda_numbers_row_k(ends):
@@ -230,7 +230,7 @@ def test_failed_figure_never_truncates_an_existing_file(tmp_path: Path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["keep.svg"]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_png_option_writes_a_png(tmp_path: Path):
     pytest.importorskip("PIL")
     target = tmp_path / "line.png"
@@ -339,7 +339,7 @@ def test_ellipse_figure_draws_the_ellipse_and_marks_the_centre():
     assert set(figure.step_labels(solution)) == set(solution.pixels())
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_png_draws_the_same_shapes():
     Image = pytest.importorskip("PIL.Image")
     from io import BytesIO
@@ -361,7 +361,7 @@ def test_png_draws_the_same_shapes():
         assert rgb_of(paint.fill or paint.stroke or "") in colours, cls
 
 
-# --- polygons, seed fills and anti-aliasing (issue 17): outline and grey levels ---------------
+# --- polygons, seed fills and anti-aliasing: outline and grey levels ---------------------------
 
 
 def _cells(root: ET.Element, cls: str, fig: figure.Figure, sol: Solution) -> dict:
@@ -462,7 +462,7 @@ def test_grey_levels_run_from_white_to_black_in_equal_steps():
     assert figure.grey_of(0, 2) == "#ffffff" and figure.grey_of(1, 2) == "#000000"
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_seed_fill_figure_numbers_pixels_in_fill_order_and_draws_the_boundary(tmp_path: Path):
     import scanconv
 

@@ -106,7 +106,7 @@ rows_st = st.integers(2, 8).flatmap(
 )
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(rows=rows_st, data=st.data())
 def test_every_fill_is_the_connected_component(rows, data):
     grid = parse_rows(rows)
@@ -159,7 +159,7 @@ def test_bad_input_is_refused(kwargs, word, param):
     assert err.value.param == param
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_grid_limit_at_its_edge():
     check_size(100, 100)
     assert MAX_SEED_CELLS == 100 * 100

@@ -15,7 +15,7 @@ process limited in time and memory, is ``benchmarks/fuzz.py``.
 ``SCANCONV_FUZZ_EXAMPLES`` sets the total number of examples (default 100, spread over the
 commands, at least 10 each); ``SCANCONV_FUZZ_EXAMPLES=3000 pytest tests/test_fuzz.py`` is a
 long run in-process. The suite's share is kept small (it was 30 a command and 200 edge calls,
-a sixth of the suite's time, issue 29): the depth is the long fuzz's, run before a release.
+a sixth of the suite's time): the depth is the long fuzz's, run before a release.
 """
 
 from __future__ import annotations
@@ -185,7 +185,7 @@ def test_every_command_is_fuzzed_from_its_vocabulary():
     assert {path for path, _ in COMMANDS} >= set(VOCABULARY) - {("check", "batch")}
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("path", [p for p, _ in COMMANDS], ids=" ".join)
 def test_random_argument_vectors_never_escape_main(path, tmp_path_factory):
     command = dict(COMMANDS)[path]
@@ -238,7 +238,7 @@ def _sweep(path: tuple[str, ...]) -> list[list[str]]:
     return argvs
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("path", [p for p, _ in COMMANDS], ids=" ".join)
 def test_each_number_of_a_valid_call_at_each_edge_never_escapes_main(path, tmp_path):
     """Every number slot of every valid call, one at a time, at each small edge: what reaches

@@ -15,6 +15,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from scanconv.algorithms.process_choices import LineClipMethod
+
 from .helpers import run_limited
 from .references import (
     RULES,
@@ -90,7 +92,11 @@ def test_every_midpoint_circle_octant_is_the_plain_one(r, tie, loop, fmt):
 
 
 small = st.integers(-30, 30)
-METHODS = ["cohen-sutherland", "liang-barsky", "cyrus-beck", "nicholl-lee-nicholl"]
+ROUNDED = {
+    "midpoint-subdivision": "rounds its midpoints: within one unit (tests/test_midpoint_clip.py)"
+}
+METHODS = [m.value for m in LineClipMethod if m.value not in ROUNDED]
+"""Every line clipping method of ``clip line -m`` that finds the exact segment."""
 
 
 @settings(max_examples=150, deadline=None)

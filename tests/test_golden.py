@@ -146,7 +146,7 @@ def _commands() -> set[str]:
     return walk(typer.main.get_command(app), "")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_every_command_and_format_has_a_golden_case() -> None:
     if os.environ.get("SCANCONV_GOLDEN_DIR"):
         pytest.skip("a custom golden directory: the coverage rule is for the project's own")

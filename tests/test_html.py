@@ -92,7 +92,7 @@ def json_answer(*argv: str) -> dict:
 # --- structure --------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_line_page_holds_the_answer_and_its_steps():
     page = page_of("line", "2", "2", "10", "6")
     answer = json_answer("line", "2", "2", "10", "6")
@@ -135,7 +135,7 @@ def test_a_line_page_holds_the_answer_and_its_steps():
     assert len(doc.elements("input", "sc-slider")) == 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_circle_lights_each_octant_point_and_its_images_together():
     answer = json_answer("circle", "5")
     data = data_of(page_of("circle", "5"))
@@ -152,7 +152,7 @@ def test_a_circle_lights_each_octant_point_and_its_images_together():
     assert min(data["pos"]) == 1  # the circle's row 0 plots its own point: nothing at the start
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_ellipse_regions_are_told_apart_and_its_region_tables_step():
     page = page_of("ellipse", "8", "6")
     answer = json_answer("ellipse", "8", "6")
@@ -172,7 +172,7 @@ def test_the_ellipse_regions_are_told_apart_and_its_region_tables_step():
     assert "Region 2, row k = 0" in data["captions"][first_of_2]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_bezier_curve_steps_its_samples_and_draws_the_control_polygon():
     page = page_of("bezier", "0", "0", "1", "2", "3", "3", "4", "0", "--samples", "8")
     answer = json_answer("bezier", "0", "0", "1", "2", "3", "3", "4", "0", "--samples", "8")
@@ -185,7 +185,7 @@ def test_a_bezier_curve_steps_its_samples_and_draws_the_control_polygon():
     assert 'class="sc-control"' in page and page.count('class="sc-cpoint"') == 4
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_an_answer_without_steps_steps_its_pixels_and_one_without_pixels_has_no_stepper():
     argv = ("fill", "flood", "2", "0", "4", "2", "2", "4", "0", "2", "--seed", "2", "2")
     page = page_of(*argv)
@@ -203,7 +203,7 @@ def test_an_answer_without_steps_steps_its_pixels_and_one_without_pixels_has_no_
     assert "<table" in storage
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_comparison_steps_through_its_methods_side_by_side():
     page = page_of("compare", "line", "2", "8", "10", "4")
     answer = json_answer("compare", "line", "2", "8", "10", "4")
@@ -350,7 +350,7 @@ def test_a_long_answer_is_capped_and_says_so(monkeypatch):
     assert max(data["pos"]) == 10  # the later pixels light at the last step
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_page_for_a_large_circle_holds_every_step():
     """(How long it takes to build is measured by benchmarks/bench_html.py, not asserted.)"""
     page = page_of("circle", "1000")
@@ -360,7 +360,7 @@ def test_the_page_for_a_large_circle_holds_every_step():
 # --- files and bad input --------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_output_html_file_takes_its_format_from_the_name(tmp_path: Path):
     for name in ("a.html", "b.HTM"):
         r = run("line", "2", "2", "10", "6", "-o", str(tmp_path / name))
@@ -384,7 +384,7 @@ def test_bad_input_writes_no_page(tmp_path: Path):
 # --- notebook --------------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_notebook_repr_is_a_scoped_stepper_with_a_unique_id():
     import scanconv
 
@@ -428,7 +428,7 @@ def test_print_gives_the_plain_answer():
     assert "sc-px:not(.on){fill:var(--sc-px)!important" in printing  # every pixel
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_options_reach_the_page():
     from scanconv.answers.primitives.line import line_solution
 
@@ -441,7 +441,7 @@ def test_options_reach_the_page():
     assert "y \u2193" in top
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize(
     "args",
     [
@@ -451,7 +451,7 @@ def test_options_reach_the_page():
     ],
 )
 def test_anti_aliased_pages_draw_each_pixel_in_its_grey(args):
-    """Issue 17: the page shows intensities as grey levels, the level the JSON answer gives."""
+    """The page shows intensities as grey levels, the level the JSON answer gives."""
     from scanconv.render.figure import grey_of
 
     data = json.loads(run(*args, "--format", "json").out)

@@ -25,6 +25,7 @@ from scanconv.algorithms.ramp import ramp
 from scanconv.algorithms.sample import sample_levels
 from scanconv.answers.image.ramp import ramp_solution
 from scanconv.answers.image.storage import storage_solution
+from scanconv.render import formats
 
 from .helpers import run
 
@@ -77,14 +78,14 @@ def test_ramp_cli_csv_is_the_notes_matrix():
     assert [row[1:] for row in rows[1:]] == [line.split("\t") for line in NOTES_MATRIX.splitlines()]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(m=st.integers(1, 40), n=st.integers(1, 40), levels=st.integers(2, 20))
 def test_ramp_is_a_triangle_wave(m, n, levels):
     a = ramp(m, n, levels).astype(int)
     assert a.min() >= 0 and a.max() <= levels - 1
     # walk from 0, turning around at 0 and L - 1 (independent of the modulo): walk[s] is the
     # value after s steps, each cell's value that at s = i + j (one walk for the whole matrix,
-    # not one per cell: issue 29)
+    # not one per cell)
     walk, v, d = [0], 0, 1
     for _ in range(m + n - 2):
         if not 0 <= v + d <= levels - 1:
@@ -133,13 +134,13 @@ def quantizers(draw):
 values = st.fractions(min_value=-3000, max_value=3000, max_denominator=64)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(q=quantizers(), v=values)
 def test_level_in_range(q, v):
     assert 0 <= q.level(v) <= q.levels - 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(q=quantizers(), v=values)
 def test_level_matches_definition(q, v):
     width = q.hi - q.lo + (1 if q.integer else 0)
@@ -149,8 +150,8 @@ def test_level_matches_definition(q, v):
     assert q.level(v) == k
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @given(q=quantizers(), vs=st.lists(values, min_size=2, max_size=30))
 def test_level_is_monotonic(q, vs):
     vs = sorted(vs)
@@ -161,7 +162,7 @@ def test_level_is_monotonic(q, vs):
     assert arr.min() >= 0 and arr.max() <= q.levels - 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(q=quantizers())
 def test_intervals_partition_the_range(q):
     cells = [q.interval(k) for k in range(q.levels)]
@@ -196,7 +197,7 @@ def test_two_bit_reconstruction_of_8_bit_inputs():
 # --- storage ----------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=100)
 @given(
     m=st.integers(1, 10**6),
@@ -249,7 +250,7 @@ def test_storage_depth_options(option, bits_per_pixel):
 # --- sampling ---------------------------------------------------------------------------------
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60, deadline=None)
 @given(m=st.integers(1, 12), n=st.integers(1, 12), levels=st.integers(2, 40))
 def test_sample_x_plus_y_against_exact_levels(m, n, levels):
@@ -263,7 +264,7 @@ def test_sample_x_plus_y_against_exact_levels(m, n, levels):
             assert s.levels[i, j] == k
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=60, deadline=None)
 @given(
     m=st.integers(1, 10),
@@ -359,7 +360,7 @@ COMMANDS = [
 
 
 @pytest.mark.parametrize("args", COMMANDS, ids=[a[0] for a in COMMANDS])
-@pytest.mark.parametrize("fmt", ["plain", "markdown", "latex", "csv", "json", "rich"])
+@pytest.mark.parametrize("fmt", formats("answer"))
 def test_every_format(args, fmt):
     r = run(*args, "--format", fmt)
     assert r.code == 0, r.err
@@ -374,7 +375,7 @@ def test_every_format(args, fmt):
         assert len({len(row) for row in rows}) == 1 and len(rows) > 1
 
 
-# --- issue 13: frame-buffer depths in storage, quantize keeps its limit ----------------------
+# --- frame-buffer depths in storage, quantize keeps its limit ---------------------------------
 
 
 @pytest.mark.parametrize("bits", [32, 48, 64])

@@ -68,7 +68,7 @@ def _star_shaped(draw_angles: list[int], radii: list[int]) -> list[tuple[int, in
     return list(dict.fromkeys(pts))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(
     vertices=st.lists(st.tuples(st.integers(-8, 8), st.integers(-8, 8)), min_size=3, max_size=7),
@@ -90,7 +90,7 @@ def test_agrees_with_the_scan_line_fill_off_the_boundary(vertices, rule) -> None
             assert (v.even_odd if rule == "even-odd" else v.nonzero) == ((x, y) in filled)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(
     angles=st.lists(st.integers(0, 359), min_size=3, max_size=9, unique=True),
@@ -125,3 +125,36 @@ def test_bad_input_names_its_parameter(kwargs, param) -> None:
     with pytest.raises(InputError) as info:
         inside_solution(**kwargs)
     assert info.value.param == param
+
+
+def test_the_left_bottom_rule_by_hand() -> None:
+    """The square (0, 0)-(4, 4): on the left edge (0, 2) and the bottom edge (2, 0) inside, on
+    the right (4, 2) and the top (2, 4) outside; the corner (0, 0) inside (the square lies up
+    and to its right), the three others outside."""
+    got = [
+        verdict(SQUARE, p, "left-bottom").even_odd
+        for p in ((0, 2), (2, 0), (4, 2), (2, 4), (0, 0), (4, 0), (4, 4), (0, 4))
+    ]
+    assert got == [True, True, False, False, True, False, False, False]
+    assert verdict(SQUARE, (4, 2), "left-bottom").on_boundary == 1  # still said to be on BC
+
+
+@settings(deadline=None, max_examples=150)
+@given(
+    vertices=st.lists(st.tuples(st.integers(-6, 6), st.integers(-6, 6)), min_size=3, max_size=7,
+                      unique=True),
+    point=st.tuples(st.integers(-7, 7), st.integers(-7, 7)),
+)  # fmt: skip
+def test_the_left_bottom_rule_is_the_point_moved_up_and_right(vertices, point) -> None:
+    """On the boundary or not, the left-bottom verdict is the plain verdict of the point moved
+    a hair right and a hair less up, (x + d, y + d^2), which is on no edge (d small against
+    the grid's smallest features)."""
+    shapely_geometry = pytest.importorskip("shapely.geometry")
+    poly = shapely_geometry.Polygon(vertices)
+    assume(poly.is_valid and poly.area > 0)
+    d = Fraction(1, 10**4)
+    moved = (point[0] + d, point[1] + d * d)
+    n = len(vertices)
+    assert not any(on_segment(moved, vertices[i], vertices[(i + 1) % n]) for i in range(n))
+    want = poly.contains(shapely_geometry.Point(float(moved[0]), float(moved[1])))
+    assert verdict(vertices, point, "left-bottom").even_odd == want

@@ -257,15 +257,21 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "answers.process.transform.MAX_TRANSFORMS": [
         (["transform", "0", "0", *["--translate", "1", "1"] * 21], "at most 20 transformations"),
     ],
-    # scanconv check (issue 15): a student's file, and the question it is marked against
+    # scanconv check: a student's file, and the question it is marked against
     "marking.student_table.MAX_TABLE_BYTES": [
         (["check", str(CHECK / "too-large.csv"), "--", "line", "2", "2", "10", "6"], "bytes")
     ],
     "marking.student_table.MAX_TABLE_ROWS": [
         (["check", str(CHECK / "too-many-rows.csv"), "--", "line", "2", "2", "10", "6"], "5000")
     ],
-    "marking.mark.MAX_QUESTION_ROWS": [
+    "marking.limits.MAX_QUESTION_ROWS": [
         (["check", str(CHECK / "slip.csv"), "--", "line", "0", "0", "10001", "0"], "10000")
+    ],
+    "algorithms.window_clip.MAX_WINDOW_VERTICES": [
+        (
+            ["clip", "polygon", "0", "0", "1", "0", "0", "1", "--window-vertices", *_ring(65)],
+            "at most 64 window vertices",
+        )
     ],
     "answers.process.clip.sutherland_hodgman.MAX_VERTICES": [
         (

@@ -15,13 +15,17 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.lines import basic, bresenham, dda
 from scanconv.algorithms.midpoint_line import midpoint_line
+from scanconv.answers.methods import methods_of
 from scanconv.answers.primitives.line import line_solution
 from scanconv.core.numeric import round_half_up
 from scanconv.core.records import Move
 
 coord = st.integers(min_value=-60, max_value=60)
 lines = st.tuples(coord, coord, coord, coord)
-ALGOS = ("bresenham", "dda", "basic")
+NOT_ONE_PIXEL_A_STEP = {"wu": "anti-aliased: two pixels a column, each with an intensity"}
+"""The line methods the pixel properties below do not hold for, and why."""
+ALGOS = tuple(m for m in methods_of("line") if m not in NOT_ONE_PIXEL_A_STEP)
+"""Every line method of the records that plots one pixel a step (a new one is walked at once)."""
 
 
 def pixels(algo: str, x1: int, y1: int, x2: int, y2: int) -> list[tuple[int, int]]:
@@ -43,8 +47,8 @@ def ideal_minor(line: tuple[int, int, int, int], a: int) -> Fraction:
     return x1 + Fraction(x2 - x1, y2 - y1) * (a - y1)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("algo", ALGOS)
 @given(line=lines)
 def test_both_end_points_plotted(algo, line):
@@ -52,8 +56,8 @@ def test_both_end_points_plotted(algo, line):
     assert (line[0], line[1]) in px and (line[2], line[3]) in px
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("algo", ALGOS)
 @given(line=lines)
 def test_one_pixel_per_major_step(algo, line):
@@ -66,8 +70,8 @@ def test_one_pixel_per_major_step(algo, line):
     )
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("algo", ALGOS)
 @given(line=lines)
 def test_consecutive_pixels_are_8_connected(algo, line):
@@ -76,8 +80,8 @@ def test_consecutive_pixels_are_8_connected(algo, line):
         assert max(abs(a[0] - b[0]), abs(a[1] - b[1])) == 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("algo", ALGOS)
 @given(line=lines)
 def test_within_half_a_pixel_of_the_ideal_line(algo, line):
@@ -86,7 +90,7 @@ def test_within_half_a_pixel_of_the_ideal_line(algo, line):
         assert abs(p[1 - m] - ideal_minor(line, p[m])) <= Fraction(1, 2)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(line=lines)
 def test_algorithms_agree_except_at_ties(line):
     """basic, dda and bresenham choose the same pixel wherever the ideal line is not half-way."""
@@ -102,7 +106,7 @@ def test_algorithms_agree_except_at_ties(line):
             assert by_major["bresenham"][a] in (b, b - 1)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(line=lines)
 def test_bresenham_p_is_the_textbook_decision_parameter(line):
     """p_k = Δmajor · (d1 - d2): the distances from the ideal line to the two candidates."""
@@ -124,7 +128,7 @@ def test_bresenham_p_is_the_textbook_decision_parameter(line):
         prev = s.pixel
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(line=lines)
 def test_bresenham_decision_names_the_move(line):
     sol = line_solution("bresenham", *line)
@@ -134,14 +138,14 @@ def test_bresenham_decision_names_the_move(line):
         assert s.decision is Move.from_delta(s.pixel[0] - prev[0], s.pixel[1] - prev[1])
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(line=lines)
 def test_bresenham_integers_only(line):
     for s in bresenham(*line):
         assert type(s.p) is int and type(s.extra[0]) is int
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(line=lines)
 def test_dda_is_exact(line):
     """x_k and y_k equal P1 + k/steps · (P2 - P1) exactly, and the last row is P2."""
@@ -189,6 +193,11 @@ def test_moves_by_octant(line, moves):
     assert {s.decision.value for s in bresenham(*line) if s.decision} == moves
 
 
+def test_the_excluded_methods_are_line_methods():
+    assert set(NOT_ONE_PIXEL_A_STEP) < set(methods_of("line"))
+    assert {"basic", "dda", "bresenham", "midpoint"} <= set(ALGOS)
+
+
 @pytest.mark.parametrize("algo", ALGOS)
 def test_single_point(algo):
     assert pixels(algo, 3, -3, 3, -3) == [(3, -3)]
@@ -204,7 +213,7 @@ def test_unknown_algorithm():
         line_solution("spiral", 0, 0, 1, 1)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=50)
 @given(
     x1=st.fractions(min_value=-20, max_value=20, max_denominator=8),

@@ -1,4 +1,4 @@
-"""Quiz files for an LMS (issue 31, item 3): ``sheet``/``practice`` ``--format moodle`` and
+"""Quiz files for an LMS: ``sheet``/``practice`` ``--format moodle`` and
 ``--format gift`` (docs/lms.md).
 
 The Moodle XML is read back by a reader written here with xml.etree (the Cloze blanks
@@ -367,7 +367,7 @@ dither floyd-steinberg --image '98 240 243 203; 77 118 77 199' --top 255
 """
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_moodle_cloze_blanks_hold_the_json_key() -> None:
     xml, _, answers = documents(EXAMPLES)
     assert_moodle_key(xml, answers)
@@ -383,7 +383,7 @@ def test_moodle_cloze_blanks_hold_the_json_key() -> None:
     assert dda.blanks[6] == Blank("NUMERICAL", 1, (("0.428571", TOLERANCE),))  # x_1 = 3/7
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_gift_read_back_by_gift_pegjs_holds_the_json_key(gift_reader: GiftReader) -> None:
     _, text, answers = documents(EXAMPLES)
     assert_gift_key(gift_reader, text, answers)
@@ -395,7 +395,7 @@ def test_gift_read_back_by_gift_pegjs_holds_the_json_key(gift_reader: GiftReader
     assert first["choices"] == {"type": "range", "number": 0, "range": 0}
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_ellipse_asks_its_step_table_once() -> None:
     """The ellipse's region tables split the step table: asked once, with the regions as
     row labels; the 4-way symmetry table's images follow from the quadrant's points: they
@@ -410,7 +410,7 @@ def test_the_ellipse_asks_its_step_table_once() -> None:
     assert "4-way symmetry" in html.unescape(ET.tostring(first.element, "unicode"))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_other_tables_are_blanks_too(gift_reader: GiftReader) -> None:
     """Secondary tables: clipping parameters given as text ("2/47"), a storage table's
     sizes ("~0.05722"), verdict words, points written as text."""
@@ -427,7 +427,7 @@ def test_other_tables_are_blanks_too(gift_reader: GiftReader) -> None:
     assert ("0.05722", "0.000005") in sizes and ("480000", "0") in sizes
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_questions_without_tables_are_essays(gift_reader: GiftReader) -> None:
     """A theory question, and one with more blanks than a question holds: an essay question
     whose general feedback and grader's information are the key."""
@@ -442,7 +442,7 @@ def test_questions_without_tables_are_essays(gift_reader: GiftReader) -> None:
     assert "Definition" in parsed[0]["globalFeedback"]["text"]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_notice_for_an_essay_fallback(tmp_path: Path) -> None:
     """The CLI: -o quiz.xml chooses Moodle XML by the one extension map; an answer too large
     for blanks is said on stderr."""
@@ -457,7 +457,31 @@ def test_notice_for_an_essay_fallback(tmp_path: Path) -> None:
     assert [q.type for q in read_moodle(out.read_text(encoding="utf-8"))] == ["essay", "cloze"]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+def test_the_marks_notice_names_each_question_in_whole_words(tmp_path: Path) -> None:
+    """A question of fewer marks than blanks is named on stderr by its number, its title cut
+    at a word (never "rotate by 9" for "rotate by 90") and its blank count, the number of
+    Cloze blanks Moodle reads in that question."""
+    questions = tmp_path / "q.txt"
+    questions.write_text(
+        "[3] transform 0 0 4 0 4 3 --rotate 90 --about 2 1\n[4] circle 5\n", encoding="utf-8"
+    )
+    out = tmp_path / "quiz.xml"
+    done = subprocess.run(
+        [*SCANCONV, "sheet", str(questions), "-o", str(out)], capture_output=True, text=True
+    )
+    assert done.returncode == 0 and done.stdout == "", done.stderr
+    quiz = read_moodle(out.read_text(encoding="utf-8"))
+    named = re.findall(r"(Q\d+) \((.*?)\) to (\d+) \(it has (\d+) blanks\)", done.stderr)
+    assert [n[0] for n in named] == ["Q1", "Q2"]
+    for (_, shown, marks, blanks), question, want in zip(named, quiz, (3, 4), strict=True):
+        assert (int(marks), int(blanks)) == (want, len(question.blanks))
+        title = question.name.partition(" ")[2]
+        words = shown.removesuffix(" ...").split(" ")
+        assert title.split(" ")[: len(words)] == words, (shown, title)
+
+
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_practice_writes_both_quiz_files(tmp_path: Path, gift_reader: GiftReader) -> None:
     """practice: the worksheet as GIFT, the key as Moodle XML, from the same questions."""
     gift_file, xml_file = tmp_path / "quiz.gift", tmp_path / "quiz.xml"
@@ -473,7 +497,7 @@ def test_practice_writes_both_quiz_files(tmp_path: Path, gift_reader: GiftReader
     assert_gift_key(gift_reader, gift_file.read_text(encoding="utf-8"), answers)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_contradicting_format_is_refused(tmp_path: Path) -> None:
     questions = tmp_path / "q.txt"
     questions.write_text("line 2 2 10 6\n", encoding="utf-8")
@@ -501,7 +525,7 @@ circles = st.builds(
 )  # fmt: skip
 
 
-@pytest.mark.slow  # 20 examples (40 before, issue 29: each is read back by node's gift-pegjs)
+@pytest.mark.slow  # 20 examples: each is read back by node's gift-pegjs
 @settings(
     max_examples=20, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
 )
@@ -518,7 +542,7 @@ def test_random_lines_and_circles_hold_the_key(
 fractions = st.fractions(min_value=-(10**6), max_value=10**6, max_denominator=10**4)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=300, deadline=None)
 @given(fractions)
 def test_the_tolerance_rule(value: Fraction) -> None:

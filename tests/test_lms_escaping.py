@@ -1,4 +1,4 @@
-"""Quiz files with hostile text (issue 31, item 3): a question file's title and wording, a
+"""Quiz files with hostile text: a question file's title and wording, a
 table's headings and a short answer holding ``{ } ~ = # : ]]> <script>`` reach Moodle XML and
 GIFT through the one escaper of each format, and read back (xml.etree and the Cloze reader of
 :mod:`tests.test_lms`; the npm parser gift-pegjs) as the text they were, with no blank, tag or
@@ -47,7 +47,7 @@ def test_hostile_title_and_wording_in_moodle_xml() -> None:
     assert theory.type == "essay" and not theory.blanks
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_hostile_title_and_wording_in_gift(gift_reader: GiftReader) -> None:
     _, text, _ = documents(f"title: {HOSTILE}\n> W {HOSTILE}\nline 2 2 10 6\ntheory dda\n")
     parsed = gift_reader.parse(text)
@@ -93,7 +93,7 @@ words = st.text(st.sampled_from(list('{}~=#:\\/"&<>ab;')), min_size=1, max_size=
 hostile = st.one_of(printable, st.text(st.sampled_from(list("{}~=#:]>[<&\\/\"' x%")), max_size=30))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(
     max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
 )
@@ -122,7 +122,7 @@ def _corpus() -> list[str]:
     return [t for t in CORPUS if "\x00" not in t]  # a NUL byte: not a text file, refused
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("text", _corpus(), ids=lambda t: repr(t[:16]))
 def test_the_escaping_corpus_in_both_quiz_formats(gift_reader: GiftReader, text: str) -> None:
     """The corpus every format is tried with (tests/test_escaping.py) as a sheet's title,

@@ -22,7 +22,7 @@ from typing import Any
 
 import pytest
 
-from scanconv.render import stepper
+from scanconv.render import formats, stepper
 from scanconv.render import text as text_render
 from tests.helpers import run
 
@@ -176,6 +176,14 @@ SHEET_FORMATS = {
     "moodle": rows_moodle,
 }
 """A GIFT quiz asks one row a question (its feedback is that row), so it holds no table."""
+
+
+def test_every_format_has_a_reader_here() -> None:
+    """A new format of the format table fails here until its table has a reader above."""
+    assert set(ANSWER_FORMATS) == set(formats("answer"))
+    assert set(SHEET_FORMATS) | {"gift"} == set(formats("document"))
+
+
 LINES = {"51-rows": (0, 0, 50, 10), "1501-rows": (0, 0, 1500, 7)}
 
 

@@ -111,7 +111,7 @@ def _no(mode: int) -> bool:
     return False
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_version_and_help_in_process():
     r = run("--version")
     assert r.code == 0 and r.out.startswith("scanconv ") and r.err == ""

@@ -1,4 +1,4 @@
-"""Round trip (issue 28): every step table scanconv writes, in csv, markdown, json and plain,
+"""Round trip: every step table scanconv writes, in csv, markdown, json and plain,
 gets full marks from ``check`` against its own question, for every method and layout; every
 CSV scanconv writes has unique column names. The marking runs in-process."""
 
@@ -75,7 +75,7 @@ def other_questions(draw):
     return api.pipeline_line(*a, *b, window=(-40, -40, 40, 40), viewport=(0, 0, 80, 80))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=150, deadline=None)
 @given(questions() | other_questions(), st.sampled_from(list(FORMATS)), st.booleans())
 def test_scanconv_own_table_gets_full_marks(solution, fmt, named):
@@ -122,7 +122,7 @@ def test_every_command_csv_has_unique_column_names(command):
     assert _unique(next(csv.reader(io.StringIO(r.out))))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=30, deadline=None)
 @given(questions())
 def test_every_step_table_csv_has_unique_column_names(solution):

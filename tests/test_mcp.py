@@ -39,7 +39,7 @@ pytestmark = pytest.mark.slow  # each test talks to a server process
 
 URI = "ui://scanconv/stepper.html"
 
-#: One question of each kind the issue names: a line, a circle, an ellipse, a clipping, a
+#: One question of each kind the server is asked for: a line, a circle, an ellipse, a clipping, a
 #: fill and a Bezier curve.
 QUESTIONS = (
     "line 5 5 13 9 --algo bresenham",
@@ -63,7 +63,7 @@ VTU_RIGHT = """k,p_k,(x_{k+1}, y_{k+1})
 7,-8,"(13, 9)"
 """
 
-#: The same line with the tie the other way (p = 0 keeps y), as the chat answer of the issue
+#: The same line with the tie the other way (p = 0 keeps y), as a chat answer
 #: plots it, and a slip in row 5.
 VTU_SLIPPED = """k,p_k,(x_{k+1}, y_{k+1})
 0,0,"(6, 5)"
@@ -151,6 +151,25 @@ def texts(result: Any) -> list[str]:
 
 
 # --- the tools and their schemas ----------------------------------------------------------
+
+
+@needs_sdk
+def test_docs_mcp_md_lists_the_tools_the_model_sees_with_their_arguments(tools):
+    """docs/mcp.md's table of tools is the server's: every tool but the view's own
+    (``answer_page``, for the app), each with the arguments it takes, and ``practice``'s count
+    limit (1 to 20) is the one it enforces."""
+    import re
+
+    from scanconv.mcp_server.answers import MAX_PRACTICE
+    from scanconv.mcp_server.view import PAGE_TOOL
+
+    doc = (Path(__file__).resolve().parent.parent / "docs" / "mcp.md").read_text("utf-8")
+    rows = dict(re.findall(r"^\| `([a-z_]+)` \| ([^|]*) \|", doc, flags=re.M))
+    assert set(rows) == set(tools) - {PAGE_TOOL}
+    for name, arguments in rows.items():
+        said = set(re.findall(r"`([a-z_]+)`", arguments))
+        assert said == set(tools[name].input_schema.get("properties", {})), name
+    assert f"`count` (1 to {MAX_PRACTICE})" in rows["practice"]
 
 
 @needs_sdk
@@ -516,7 +535,19 @@ def inspect(inspector: Path, *args: str, refused: bool = False) -> Any:
     """The Inspector's JSON for one request to ``scanconv mcp`` (it exits 5 for a tool result
     with ``isError``)."""
     done = subprocess.run(
-        [str(inspector), "--cli", sys.executable, "-m", "scanconv", "mcp", *args],
+        # a generous connect timeout (the Inspector's default, 15 s, is a hang guard that a
+        # loaded machine's Python start-up can exceed: not a timing of scanconv)
+        [
+            str(inspector),
+            "--cli",
+            sys.executable,
+            "-m",
+            "scanconv",
+            "mcp",
+            *args,
+            "--connect-timeout",
+            "120000",
+        ],
         capture_output=True,
         text=True,
         timeout=300,

@@ -1,4 +1,4 @@
-"""Small modules and functions (issue 26's "done when"): no module of scanconv over 600 lines,
+"""Small modules and functions: no module of scanconv over 600 lines,
 no function over 80 lines (its docstring not counted), none of cyclomatic complexity over 20
 (radon's measure, as `radon cc -s --min D scanconv` prints it)."""
 

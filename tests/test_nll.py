@@ -99,7 +99,7 @@ C = st.integers(-20, 80)
 Q = st.fractions(min_value=-20, max_value=80, max_denominator=7)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=600)
 @given(p1=st.tuples(C, C), p2=st.tuples(C, C))
 def test_equals_liang_barsky_on_integer_lines(p1, p2) -> None:
@@ -109,7 +109,7 @@ def test_equals_liang_barsky_on_integer_lines(p1, p2) -> None:
     assert r.segment == lb.segment, (p1, p2, r)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=300)
 @given(p1=st.tuples(Q, Q), p2=st.tuples(Q, Q), w=st.sampled_from([W, (0, 0, 1, 1), (-3, 2, 4, 3)]))
 def test_equals_liang_barsky_on_fraction_lines(p1, p2, w) -> None:
@@ -118,7 +118,7 @@ def test_equals_liang_barsky_on_fraction_lines(p1, p2, w) -> None:
     assert r.accepted == lb.accepted and r.segment == lb.segment, (p1, p2, w, r)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=200)
 @given(
     p1=st.tuples(st.sampled_from([10, 30, 50, 0, 60]), st.sampled_from([10, 30, 50, 0, 60])),

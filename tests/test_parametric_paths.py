@@ -19,7 +19,7 @@ def _verdict(check, x: str, y: str, t0, t1, samples: int) -> str:
     return "accepted"
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize(
     ("x", "y", "t0", "t1", "samples", "refused_at"),
     [

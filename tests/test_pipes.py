@@ -42,7 +42,7 @@ PIPES = [
 ]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize(("args", "first"), PIPES)
 def test_head_closes_the_pipe_and_scanconv_exits_quietly(args, first):
     command = " ".join(shlex.quote(a) for a in (sys.executable, "-m", "scanconv", *args))

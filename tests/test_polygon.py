@@ -161,7 +161,7 @@ coord = st.integers(-8, 8)
 inner = st.fractions(min_value=0, max_value=1, max_denominator=8).filter(lambda t: 0 < t < 1)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(tx=inner, ty=inner, w=st.integers(1, 10), h=st.integers(1, 10))
 def test_polygons_sharing_edges_never_overlap_and_leave_no_gap(tx, ty, w, h):
     """Four triangles fanned from a point inside a rectangle tile it: their fills are
@@ -181,7 +181,7 @@ def test_polygons_sharing_edges_never_overlap_and_leave_no_gap(tx, ty, w, h):
     assert seen == set(fill_pixels(corners)) and total == w * h
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(suppress_health_check=[HealthCheck.filter_too_much])
 @given(
     a=st.tuples(coord, coord),
@@ -205,7 +205,7 @@ def test_two_triangles_on_either_side_of_an_edge(a, b, c, d):
 polygons = st.lists(st.tuples(coord, coord), min_size=3, max_size=8)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(pts=polygons, rule=st.sampled_from(["even-odd", "nonzero"]))
 def test_the_bulk_fill_is_the_table_fill(pts, rule):
     try:
@@ -228,7 +228,7 @@ def _on_boundary(p, pts):
     return False
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @given(pts=polygons)
 def test_skimage_polygon_differs_only_on_the_boundary(pts):
     """skimage.draw.polygon fills the closed polygon (centres on any edge included); scanconv

@@ -14,7 +14,8 @@ from pathlib import Path
 import pytest
 
 from scanconv.cli.sheet import answer_questions, read_questions
-from scanconv.practice.notes import DIFFICULTIES, TOPICS, octant, practice, question_file
+from scanconv.practice.notes import DIFFICULTIES, TOPICS, practice, question_file
+from scanconv.practice.records import octant
 
 from .helpers import assert_refused, run
 
@@ -74,7 +75,7 @@ EXPECTED |= {"steep", "negative slope", "right to left", "centre away", "tall", 
 EXPECTED |= {"cubic", "quadratic"}
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("difficulty", DIFFICULTIES)
 def test_over_1000_seeds_every_promised_variety_appears(difficulty: str) -> None:
     seen: set[str] = set()
@@ -91,7 +92,7 @@ def test_over_1000_seeds_every_promised_variety_appears(difficulty: str) -> None
     assert ties > 0
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("difficulty", DIFFICULTIES)
 def test_eight_line_questions_cover_every_octant_and_four_ties(difficulty: str) -> None:
     for seed in range(200):
@@ -107,7 +108,7 @@ def test_eight_line_questions_cover_every_octant_and_four_ties(difficulty: str) 
             assert all(_has_tie(q.argv) for q in tied)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("difficulty", DIFFICULTIES)
 def test_no_question_is_degenerate(difficulty: str) -> None:
     for seed in range(300):
@@ -130,7 +131,7 @@ def test_no_question_is_degenerate(difficulty: str) -> None:
                 assert any((xn - x0) * (y - y0) != (yn - y0) * (x - x0) for x, y in points), a
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_exam_lines_have_6_to_12_steps_and_small_integers() -> None:
     for seed in range(300):
         for q in practice("line", 10, seed, "exam"):
@@ -140,7 +141,7 @@ def test_exam_lines_have_6_to_12_steps_and_small_integers() -> None:
             assert q.marks == 14
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_exam_circles_have_6_to_12_rows() -> None:
     sheet = read_questions(question_file(practice("circle", 40, 3, "exam"), "c"))
     for a in answer_questions(sheet.questions):
@@ -148,7 +149,7 @@ def test_exam_circles_have_6_to_12_rows() -> None:
         assert 6 <= steps <= 12, (a.question.argv, steps)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("difficulty", DIFFICULTIES)
 def test_every_generated_question_is_answered_by_scanconv(difficulty: str) -> None:
     for seed in range(15):
@@ -158,7 +159,7 @@ def test_every_generated_question_is_answered_by_scanconv(difficulty: str) -> No
         assert [a.question.argv for a in answered] == [q.argv for q in questions]
 
 
-#: The topics whose questions are other commands (issue 30's syllabus topics).
+#: The topics whose questions are other commands than the topic's name.
 COMMANDS = {
     "attributes": {"linestyle", "thickline"},
     "characters": {"char"},
@@ -172,7 +173,7 @@ def test_each_topic_gives_only_its_own_questions(topic: str) -> None:
     assert {q.argv[0] for q in practice(topic, 12, 9)} == COMMANDS.get(topic, {topic})
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_same_seed_gives_byte_identical_files(tmp_path: Path) -> None:
     outputs = []
     for n in range(2):
@@ -190,7 +191,7 @@ def test_the_same_seed_gives_byte_identical_files(tmp_path: Path) -> None:
     assert run("practice", "--seed", "42", "--count", "12").out.encode() == outputs[0][0]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_worksheet_and_key_are_the_sheets_of_the_question_file(tmp_path: Path) -> None:
     q, k = tmp_path / "q.txt", tmp_path / "k.md"
     r = run(

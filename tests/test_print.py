@@ -1,4 +1,4 @@
-"""Print-perfect documents (issue 27): the exam book, an answer key and a worksheet typeset with
+"""Print-perfect documents: the exam book, an answer key and a worksheet typeset with
 pdflatex and read back with pdftotext, as a reader of the paper would see them.
 
 Each PDF fails on: an option printed with an en dash (``–algo``); raw TeX in the text (``ˆ``,
@@ -166,7 +166,7 @@ def _visible(html: str) -> str:
     return "".join(page.parts)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("name", HTML_PAGES)
 def test_html_page_shows_no_raw_tex(name: str) -> None:
     r = run(*HTML_PAGES[name], "--format", "html")
@@ -176,7 +176,7 @@ def test_html_page_shows_no_raw_tex(name: str) -> None:
     assert not raw, (raw[:5], [ln for ln in text.splitlines() if re.search(r"\^|_\{", ln)][:3])
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_exam_book_html_shows_no_raw_tex() -> None:
     r = run("exam", "--format", "html", "--section", "circle")
     assert r.code == 0, r.err

@@ -1,4 +1,4 @@
-"""The question language's limits and work budget at its entry points (issue 38, N8 and N2):
+"""The question language's limits and work budget at its entry points (attack report N8, N2):
 ``scanconv.questions.parse``, ``answer`` and ``read_questions`` refuse a question longer than a
 line of a question file, or a text larger than a question file, before any work, and
 ``check_budget`` refuses a question beyond a format's budget as the command line does. "Before

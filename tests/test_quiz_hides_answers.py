@@ -20,6 +20,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from scanconv.algorithms.process_choices import LineClipMethod
 from scanconv.cli.sheet import answer_questions, read_questions
 from scanconv.render.sheet import sheet_document
 
@@ -95,7 +96,8 @@ def gift_leaks(text: str) -> list[tuple[str, str, set[Fraction]]]:
 
 
 coord = st.integers(0, 12)
-METHODS = ("cohen-sutherland", "liang-barsky", "cyrus-beck", "nicholl-lee-nicholl")
+METHODS = tuple(m.value for m in LineClipMethod)
+"""Every line clipping method of ``clip line -m``."""
 
 
 @st.composite
@@ -139,8 +141,8 @@ def test_no_blank_is_answered_beside_it(lines: list[str]) -> None:
     assert gift_leaks(gift) == []
 
 
-def test_the_issue_s_questions_hide_their_working() -> None:
-    """The three questions of the report: the working stays in the feedback."""
+def test_clip_polygon_and_transform_questions_hide_their_working() -> None:
+    """The three questions whose working once showed the answer: it stays in the feedback."""
     xml, gift = quiz_files(
         [
             "clip line 7 9 11 4 --window 4 4 10 8",

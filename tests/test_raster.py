@@ -4,7 +4,7 @@ Each closed form in :mod:`scanconv.raster` is checked against the step generator
 (``Solution.pixels()``), on thousands of random inputs and on the degenerate cases, and the
 integer helper against Python's exact integers. No timing here: see ``benchmarks/bench.py``.
 
-Example counts (issue 29, a suite within 5 minutes): the line property ran 1,000 examples per
+Example counts (the whole suite within 5 minutes): the line property ran 1,000 examples per
 algorithm, the floor-sum and isqrt helpers 600 and 500; 100 each now (the project's most), with
 the degenerate cases pinned by ``@example`` and the small inputs swept exhaustively (every
 circle of radius below 200, every ellipse of semi-axes below 40). The same closed forms are
@@ -56,7 +56,7 @@ def generator_pixels(algo: str, *line: int | Fraction) -> list[tuple[int, int]]:
 # --- lines ------------------------------------------------------------------------------------
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
 @settings(max_examples=100, deadline=None)  # was 1000: see the module's note
 @given(x1=coord, y1=coord, x2=coord, y2=coord)
@@ -72,7 +72,7 @@ def test_line_matches_generator(algo, x1, y1, x2, y2):
     )
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
 @settings(max_examples=100, deadline=None)
 @given(x1=far, y1=far, dx=short, dy=short)
@@ -84,7 +84,7 @@ def test_line_far_from_the_origin(algo, x1, y1, dx, dy):
     )
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("algo", ["dda", "basic"])
 @settings(max_examples=100, deadline=None)  # was 400: see the module's note
 @given(x1=frac, y1=frac, x2=frac, y2=frac)
@@ -96,7 +96,7 @@ def test_fractional_line_matches_generator(algo, x1, y1, x2, y2):
     )
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("algo", raster.LINE_ALGORITHMS)
 @pytest.mark.parametrize(
     "end",
@@ -109,7 +109,7 @@ def test_long_line_crosses_blocks(algo, end):
     assert got == generator_pixels(algo, -5, 7, *end)
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)
 @given(x1=st.integers(-500, 500), y1=st.integers(-500, 500), dx=st.integers(0, 500), dy=short)
 def test_bresenham_equals_skimage_when_walking_the_same_way(x1, y1, dx, dy):
@@ -124,7 +124,7 @@ def test_bresenham_equals_skimage_when_walking_the_same_way(x1, y1, dx, dy):
     assert np.array_equal(xs, cc) and np.array_equal(ys, rr)
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("algo", ["bresenham", "dda"])
 @settings(max_examples=100, deadline=None)
 @given(x1=short, y1=short, x2=short, y2=short)
@@ -251,7 +251,7 @@ def test_floor_affine_every_path(alpha, beta, n, path, sign):
     assert raster._affine_path(a, b, c, n) == path
     got = raster._floor_affine(alpha, beta, n, offset=offset, sign=sign).tolist()
     # every value against the same floor in Python's integers (a hundred times faster than
-    # Fractions over these 100,000 values: issue 29), and that integer form against the
+    # Fractions over these 100,000 values), and that integer form against the
     # Fraction definition at both ends and on each side of every block boundary
     assert got == [(a + b * k) // c for k in range(n)]
     seams = {j + d for j in range(0, n + 1, raster.BLOCK) for d in (-2, -1, 0, 1)}
@@ -269,7 +269,7 @@ def test_circle_every_small_radius():
             assert as_pixels(raster_conic.circle(r, *centre)) == expected, (r, centre)
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)
 @given(r=st.integers(0, 1500), xc=st.integers(-(10**9), 10**9), yc=st.integers(-(10**9), 10**9))
 def test_circle_matches_both_generators(r, xc, yc):
@@ -278,7 +278,7 @@ def test_circle_matches_both_generators(r, xc, yc):
     assert got == list(circle_solution("bresenham", r, xc, yc).pixels())
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)
 @given(r=st.integers(0, 3000), xc=st.integers(-500, 500), yc=st.integers(-500, 500))
 def test_circle_pixel_set_equals_skimage_bresenham(r, xc, yc):
@@ -289,7 +289,7 @@ def test_circle_pixel_set_equals_skimage_bresenham(r, xc, yc):
     )
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @pytest.mark.parametrize("r", [98_765, 123_457])
 def test_circle_large_radius(r):
     assert as_pixels(raster_conic.circle(r, 5, -5)) == list(
@@ -309,18 +309,18 @@ def test_circle_rejects_bad_input():
 # --- ellipses ---------------------------------------------------------------------------------
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 def test_ellipse_every_small_pair_of_semi_axes():
     # The step generator's quadrant and its images, as Solution.pixels() yields them
     # (scanconv/answers/primitives/ellipse.py), without the worked answer that costs ten times the pixels
-    # on these small ellipses (issue 29); the property below compares the Solution itself.
+    # on these small ellipses; the property below compares the Solution itself.
     for rx in range(40):
         for ry in range(40):
             expected = list(symmetric_pixels(quadrant_points(rx, ry), 2, -3))
             assert as_pixels(raster_conic.ellipse(rx, ry, 2, -3)) == expected, (rx, ry)
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)
 @given(
     rx=st.integers(0, 1200),
@@ -346,7 +346,7 @@ def test_ellipse_on_or_near_an_axis_matches_generator(rx, ry):
     assert got == list(ellipse_solution(rx, ry, 1, -1).pixels())
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=60, deadline=None)
 @given(rx=st.integers(1, 5_000), ry=st.integers(1, 25))
 def test_flat_ellipse_matches_generator(rx, ry):
@@ -354,7 +354,7 @@ def test_flat_ellipse_matches_generator(rx, ry):
         assert as_pixels(raster_conic.ellipse(a, b)) == list(ellipse_solution(a, b).pixels())
 
 
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 def test_ellipse_large_semi_axes():
     got = as_pixels(raster_conic.ellipse(100_003, 60_001, -7, 9))
     assert got == list(ellipse_solution(100_003, 60_001, -7, 9).pixels())

@@ -1,4 +1,4 @@
-"""The "Test yourself" data of the HTML page (issue 31, item 2), without a browser.
+"""The "Test yourself" data of the HTML page, without a browser.
 
 The script interprets a descriptor (rules and rows, :mod:`scanconv.render.selftest`); here the
 descriptor is applied by a small interpreter written in the test, apart from the program, and
@@ -220,7 +220,7 @@ def page_data(*argv: str) -> tuple[str, dict[str, Any] | None]:
     return r.out, json.loads(found[0]) if found else None
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize(
     "argv",
     [
@@ -272,7 +272,7 @@ def test_the_data_block_cannot_close_its_script():
     assert json.loads(body) == descriptor(s)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_every_answer_of_a_document_and_a_notebook_answer_get_their_own_test():
     doc = html_document(
         [("Q1", line_solution("bresenham", 0, 0, 5, 2)), ("Q2", circle_solution("trig", 4)),
@@ -297,7 +297,7 @@ ARGV = {
 }
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_every_method_with_a_marking_model_has_the_test_and_no_other_of_its_command():
     from scanconv.answers.methods import METHODS
 

@@ -125,7 +125,7 @@ def test_each_answer_is_the_commands_own_json_answer(argv: tuple[str, ...], tmp_
     assert question["marks"] == 3 and question["line"] == 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_markdown_key_holds_each_answer_as_the_command_writes_it(tmp_path: Path) -> None:
     path = _file(tmp_path, "".join(_line(q) + "\n" for q in QUESTIONS))
     key = run("sheet", str(path))
@@ -194,7 +194,7 @@ def test_unknown_commands_get_a_suggestion(tmp_path: Path) -> None:
     assert_refused(r, "'image' needs one of its commands", "ramp")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_one_bad_line_in_200_writes_nothing(tmp_path: Path) -> None:
     lines = [f"[2] line 0 0 {8 + i % 5} {i % 7} --algo dda" for i in range(200)]
     lines[136] = "circle 5 --method sideways"
@@ -261,7 +261,7 @@ def _tables(markdown: str) -> list[list[list[str]]]:
     return tables
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_worksheet_has_the_keys_tables_emptied(tmp_path: Path) -> None:
     path = _file(tmp_path, "".join(_line(q) + "\n" for q in QUESTIONS))
     key = run("sheet", str(path), "--key").out
@@ -304,7 +304,7 @@ def test_a_worksheet_in_json_gives_the_row_counts(tmp_path: Path) -> None:
 HOSTILE = r"A|B <script>alert(1)</script> \input{/etc/passwd} \write18{rm} $x$ 50% #1 & {_} ~ ^"
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_user_text_is_escaped_in_every_format(tmp_path: Path) -> None:
     path = _file(tmp_path, f"title: {HOSTILE}\nsection: {HOSTILE}\n> {HOSTILE}\nline 2 2 5 4\n")
     tex = run("sheet", str(path), "-f", "latex", "--standalone").out
@@ -380,7 +380,7 @@ def test_the_html_worksheet_escapes_user_text_and_has_the_keys_row_counts(tmp_pa
     assert all(c == "" for t in page.tables for row in t[1:] for c in row[1:])
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_html_key_holds_each_answers_section_and_escapes_user_text(tmp_path: Path) -> None:
     from scanconv.render.html import answer_section
 
@@ -465,7 +465,7 @@ def test_latex_sheets_compile_paginated_per_question_with_no_overfull_box(
     )
     r = run("sheet", str(path), kind, "--format", "latex", "--standalone")
     assert r.code == 0, r.err
-    # Issue 27: a question starts on a new page when it does not fit (\\scneed), not always.
+    # A question starts on a new page when it does not fit (\\scneed), not always.
     starts = re.findall(r"\\scneed\{\d+pt\}\n\\(?:sub)?section\*", r.out)
     assert len(starts) == len(QUESTIONS) - 1
     log = _compile(tmp_path, r.out)

@@ -1,4 +1,4 @@
-"""The site in a real browser (issue 31, item 1): built once per session with
+"""The site in a real browser: built once per session with
 ``scanconv.site.build``, served by a local ``http.server`` thread on 127.0.0.1, and driven in
 Debian's headless Chromium through Playwright (the session's ``browser``: tests/conftest.py).
 

@@ -115,7 +115,7 @@ def test_a_failed_fetch_leaves_no_folder(tmp_path: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == []
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_site_from_a_fake_runtime(tmp_path: Path, fake_runtime: bytes) -> None:
     built = build_site(tmp_path / "site", _exam, cache=tmp_path, fetch=lambda url: fake_runtime)
     site = tmp_path / "site"
@@ -140,7 +140,7 @@ def test_the_site_from_a_fake_runtime(tmp_path: Path, fake_runtime: bytes) -> No
     assert (site / "index.html").read_text().count('class="sc-form"') > 40
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_rebuild_replaces_the_site_and_a_failed_one_keeps_it(
     tmp_path: Path, fake_runtime: bytes, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -165,7 +165,7 @@ def test_a_rebuild_replaces_the_site_and_a_failed_one_keeps_it(
     )
 
 
-# --- what a build may replace (issue 38, N3 and N10) ------------------------------------------
+# --- what a build may replace (attack report N3, N10) -----------------------------------------
 
 
 def _tree(folder: Path) -> dict[str, bytes | None]:
@@ -219,7 +219,7 @@ def test_a_folder_with_a_site_json_a_build_did_not_write_is_refused_and_left_alo
     assert sorted(p.name for p in tmp_path.iterdir()) == ["cache", "proj"]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_built_site_is_rebuilt(tmp_path: Path, cached: Path, built: Path) -> None:
     (built / "exam.html").write_text("older")
     r = run("site", "build", str(built), "--cache", str(cached))
@@ -238,7 +238,7 @@ ADDED = {  # what a user adds to a built site, and how the refusal names it
 }
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("name", ADDED)
 def test_a_built_site_with_a_file_a_build_does_not_write_is_refused_naming_it(
     tmp_path: Path, cached: Path, built: Path, name: str
@@ -252,7 +252,7 @@ def test_a_built_site_with_a_file_a_build_does_not_write_is_refused_naming_it(
     assert _tree(built) == before
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_link_in_a_built_site_is_refused(tmp_path: Path, cached: Path, built: Path) -> None:
     """A build writes plain files: a link where one of them was is not the build's."""
     (built / "exam.html").unlink()
@@ -265,7 +265,7 @@ def test_a_link_in_a_built_site_is_refused(tmp_path: Path, cached: Path, built: 
     assert (built / "exam.html").is_symlink() and (tmp_path / "cache").is_dir()
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_building_into_the_current_folder_is_refused_and_leaves_nothing(
     tmp_path: Path, cached: Path, built: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -278,7 +278,7 @@ def test_building_into_the_current_folder_is_refused_and_leaves_nothing(
     assert _tree(tmp_path) == before
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_site_that_cannot_be_moved_aside_leaves_no_temporary_folder(
     tmp_path: Path, cached: Path, built: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -299,7 +299,7 @@ def test_a_site_that_cannot_be_moved_aside_leaves_no_temporary_folder(
     assert _tree(tmp_path) == before
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_page_answers_what_the_cli_answers() -> None:
     question = "ellipse 8 6 --no-grid"
     shown = solve_page("scanconv " + question + " --format json -o x.json")
@@ -333,7 +333,7 @@ def test_a_command_that_needs_numpy_says_so_where_there_is_none(
     }
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_dependency_that_is_not_installed_or_not_pure_python_is_refused(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
@@ -356,7 +356,7 @@ def test_a_question_longer_than_a_sheet_line_is_refused_by_the_page() -> None:
     assert got["ok"] is False and f"at most {MAX_LINE_CHARS:,} characters" in got["error"]
 
 
-# --- the page's budget (issue 38, N2) -------------------------------------------------------
+# --- the page's budget (attack report N2) ------------------------------------------------------
 
 BEYOND = {  # refused by the command line in the page's formats: 288 s and 108 s on the page
     "circle 2800000": "csv",

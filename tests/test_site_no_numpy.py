@@ -1,5 +1,5 @@
 """Every exam command answers without numpy (the browser's Python, Pyodide, has none), and
-gives the same JSON and HTML page as it does with numpy (issue 31, item 1).
+gives the same JSON and HTML page as it does with numpy.
 
 One subprocess, where ``import numpy`` fails (``sys.modules["numpy"] = None`` before scanconv
 is imported), answers one question of every command through the library's question language
@@ -111,7 +111,7 @@ def test_every_command_has_a_question_or_a_reason() -> None:
     assert not covered & set(NEEDS_NUMPY)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_child_cannot_import_numpy() -> None:
     probe = 'import sys; sys.modules["numpy"] = None\ntry:\n import numpy\nexcept ImportError:\n print("refused")'
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True)

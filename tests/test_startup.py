@@ -45,7 +45,7 @@ def loaded_after(*args: str) -> set[str]:
 SLOW = pytest.mark.slow
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize(
     "fmt", ["plain", *(pytest.param(f, marks=SLOW) for f in ("csv", "json", "latex"))]
 )
@@ -74,7 +74,7 @@ def test_rich_format_loads_rich():
     assert "rich" in loaded_after("line", "2", "2", "10", "6", "--format", "rich")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_only_the_named_command_is_built():
     every = typer.main.get_command(app).commands  # type: ignore[attr-defined]
     assert len(every) > 1
@@ -94,7 +94,7 @@ print(*sorted(c.__name__ for c in callbacks if "parameters" in vars(c)))
 """
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize(
     ("args", "built"),
     [

@@ -51,7 +51,7 @@ def test_data_formats_stream_row_by_row(fmt):
     assert pulled[0] <= 50
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("fmt", [Format.plain, Format.markdown])
 def test_text_formats_buffer_only_the_padded_head(fmt):
     sol, pulled = counted(line_solution("bresenham", 0, 0, LENGTH, 1))

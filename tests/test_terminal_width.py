@@ -44,7 +44,7 @@ def _one_per_command() -> dict[str, list[str]]:
         if (words[0],) in DOCUMENTS:  # documents have no terminal layout (cli_vocabulary)
             continue
         cases.setdefault(name, _as_rich(args))
-    # the cases the issue named: a radius-12 grid, a quadratic B-spline's basis columns
+    # the widest cases: a radius-12 grid, a quadratic B-spline's basis columns
     cases["circle 12"] = ["circle", "12", "--format", "rich"]
     cases["bspline p2"] = ["bspline", *"0 0 1 2 3 3 4 0 5 2".split(), "--degree", "2", "-f", "rich"]
     cases["circle 20"] = ["circle", "20", "--format", "rich"]
@@ -54,7 +54,7 @@ def _one_per_command() -> dict[str, list[str]]:
 CASES = _one_per_command()
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("width", WIDTHS)
 @pytest.mark.parametrize("name", sorted(CASES))
 def test_rich_output_fits_the_terminal(
@@ -69,7 +69,7 @@ def test_rich_output_fits_the_terminal(
     assert "_{" not in result.out and "\\" not in result.out, "TeX source in the terminal"
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_wide_table_is_split_repeating_its_first_column(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("COLUMNS", "80")
     out = run("circle", "5", "--method", "bresenham", "--format", "rich").out
@@ -77,7 +77,7 @@ def test_a_wide_table_is_split_repeating_its_first_column(monkeypatch: pytest.Mo
     assert out.count("(x, y)") >= 2
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_grid_too_wide_says_how_to_see_it(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("COLUMNS", "60")
     result = run("circle", "20", "--format", "rich")
@@ -85,14 +85,14 @@ def test_a_grid_too_wide_says_how_to_see_it(monkeypatch: pytest.MonkeyPatch) -> 
     assert " | " not in result.out  # no grid rows
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_radius_12_grid_shrinks_its_cells_to_fit_80(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("COLUMNS", "80")
     out = run("circle", "12", "--format", "rich").out
     assert "12 | " in out and "o = centre" in out and "marked point" not in out
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_terminal_shows_the_working_unless_brief(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("COLUMNS", "80")
     full = run("line", "2", "2", "10", "6", "--algo", "bresenham", "--format", "rich").out

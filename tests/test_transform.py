@@ -50,7 +50,7 @@ radicals = st.builds(Radical, small, small, small, small)
 size = st.fractions(min_value=Fraction(1, 5), max_value=30, max_denominator=5)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=100, deadline=None)
 @given(radicals, radicals)
 def test_radicals_are_a_field(a, b):
@@ -61,7 +61,7 @@ def test_radicals_are_a_field(a, b):
         assert simplify(b * (1 / b)) == 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=100, deadline=None)
 @given(radicals)
 def test_floor_is_exact(a):
@@ -89,8 +89,8 @@ _OPS = st.one_of(
 )
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(max_examples=100, deadline=None)
 @given(st.lists(_OPS, min_size=1, max_size=5))
 def test_composing_with_the_inverse_gives_the_identity(ops):
@@ -111,7 +111,7 @@ def test_sin_and_cos_at_multiples_of_15_degrees_are_exact(k):
     assert math.isclose(float(s), math.sin(math.radians(15 * k)), abs_tol=1e-12)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=100, deadline=None)
 @given(small, small, size, size, small, small, size, size)
 def test_the_window_corners_go_to_the_viewport_corners(wx, wy, ww, wh, vx, vy, vw, vh):
@@ -259,7 +259,7 @@ def test_bad_input_is_an_input_error(call, param, words):
     assert "--" not in str(err.value)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_limits_are_inclusive():
     assert transform_solution([0, 0], "translate 1 1 " * MAX_TRANSFORMS).data["after"] == [[20, 20]]
     assert len(transform_solution([1] * (2 * MAX_POINTS), "rotate 30").data["after"]) == MAX_POINTS

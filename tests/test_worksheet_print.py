@@ -1,5 +1,5 @@
 """A worksheet printed: every word at 7 pt or more, read back from the PDF with
-``pdftotext -bbox`` (issue 39: the symmetry and Cohen-Sutherland headings were set at about
+``pdftotext -bbox`` (the symmetry and Cohen-Sutherland headings were once set at about
 2 pt), and the row labels and given values filled in."""
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """A worksheet fills in what a question gives and leaves what it asks: each row's label and
 given values (a point's name and coordinates, the points a transform is applied to) are
-printed, every answer and working cell is left blank (issue 39: the P1/P2 row labels were
+printed, every answer and working cell is left blank (the P1/P2 row labels were once
 empty)."""
 
 from __future__ import annotations

@@ -30,6 +30,7 @@ if TYPE_CHECKING:
         LineAlgorithmName,
         LineClipMethodName,
         MidpointName,
+        MidpointStopName,
         NormalsName,
         PolygonClipMethodName,
     )
@@ -148,6 +149,15 @@ def clip_line(
             choices=("rounded", "floor", "exact"),
         ),
     ] = None,
+    stop: Annotated[
+        MidpointStopName | None,
+        Opt(
+            "--stop",
+            help="midpoint-subdivision: split until one unit long (length, default), or also "
+            "stop where a midpoint lands on the window's edge (edge).",
+            choices=("length", "edge"),
+        ),
+    ] = None,
 ) -> Solution:
     """A segment clipped against a rectangular window (``scanconv clip line``).
 
@@ -168,6 +178,10 @@ def clip_line(
     midpoint : {"rounded", "floor", "exact"}, optional
         Midpoint subdivision only: the midpoint rounded half up (default), floored (the hardware
         shift) or exact.
+    stop : {"length", "edge"}, optional
+        Midpoint subdivision only: split until a piece is decided or one unit long (default),
+        or also stop where a midpoint lands on the window's edge (the piece beyond it is
+        outside but for that point, the clipped end), as many published answers do.
 
     Returns
     -------
@@ -201,7 +215,7 @@ def clip_line(
     rect = _rect(window, "window")
     name = _choice(method, "method")
     _only(name, {"normals": normals, "ends": ends}, "cyrus-beck")
-    _only(name, {"midpoint": midpoint}, "midpoint-subdivision")
+    _only(name, {"midpoint": midpoint, "stop": stop}, "midpoint-subdivision")
     if name == "cyrus-beck":
         x0, y0, x1_, y1_ = rect
         corners = [x0, y0, x1_, y0, x1_, y1_, x0, y1_]
@@ -210,7 +224,7 @@ def clip_line(
         )
     if name == "midpoint-subdivision":
         return answers_midpoint_clip.midpoint_clip_solution(
-            a, b, c, d, list(rect), midpoint=midpoint or "rounded"
+            a, b, c, d, list(rect), midpoint=midpoint or "rounded", stop=stop or "length"
         )
     if name == "nicholl-lee-nicholl":
         return answers_nll.nll_solution(a, b, c, d, rect)
@@ -273,24 +287,25 @@ def clip_convex(
 
 @answers
 def clip_polygon(
-    vertices: Annotated[PointsLike, VERTICES],
-    window: Annotated[Sequence[NumberLike], WINDOW],
-    method: Annotated[
-        PolygonClipMethod | PolygonClipMethodName,
-        Opt("--method", "-m", help="Polygon clipping method."),
-    ] = "sutherland-hodgman",
+    vertices: PointsLike,
+    window: Sequence[NumberLike] | PointsLike,
+    method: PolygonClipMethod | PolygonClipMethodName = "sutherland-hodgman",
 ) -> Solution:
-    """A polygon clipped against a rectangular window (``scanconv clip polygon``).
+    """A polygon clipped against a rectangular window, or a polygon window
+    (``scanconv clip polygon``).
 
     Parameters
     ----------
     vertices : sequence of (x, y), or flat numbers
         The polygon's vertices in order.
-    window : (xmin, ymin, xmax, ymax)
-        The clipping window, four numbers.
+    window : (xmin, ymin, xmax, ymax), or a polygon's vertices
+        The clipping window: four numbers, a rectangle; or three or more vertices (pairs, or
+        six or more flat numbers) in order: any convex window for Sutherland-Hodgman (a
+        triangle, a hexagon), any simple polygon for Weiler-Atherton.
     method : {"sutherland-hodgman", "weiler-atherton"} or PolygonClipMethod, default "sutherland-hodgman"
-        Sutherland-Hodgman (against each edge in turn: left, right, bottom, top) or
-        Weiler-Atherton (walking the polygon and the window, one polygon per piece).
+        Sutherland-Hodgman (against each edge in turn: left, right, bottom, top; a polygon
+        window's edges C1C2, C2C3, ... in order) or Weiler-Atherton (walking the polygon and
+        the window, one polygon per piece).
 
     Returns
     -------
@@ -309,9 +324,24 @@ def clip_polygon(
     [[1, 3], [1, 1], [3, 1]]
     >>> clip_polygon([(0, 0), (8, 0), (8, 8)], (2, 1, 9, 3), "weiler-atherton").data["polygons"]
     [[[8, 1], [8, 3], [3, 3], [2, 2], [2, 1]]]
+    >>> clip_polygon([(0, 0), (4, 0), (4, 4), (0, 4)], [(1, -1), (6, 4), (1, 4)]).data["clipped"]
+    [[4, 4], [1, 4], [1, 0], [2, 0], [4, 2]]
     """
     name = _choice(method, "method")
-    flat, rect = _flat(vertices, "vertices"), _rect(window, "window")
+    flat = _flat(vertices, "vertices")
+    if isinstance(window, str) or not (
+        len(window) == 4 and not isinstance(window[0], tuple | list)
+    ):
+        shape = _flat(window, "window")
+        if name == "weiler-atherton":
+            return answers_weiler_atherton.weiler_atherton_solution(flat, shape)
+        if name != "sutherland-hodgman":
+            raise InputError(
+                f"unknown polygon clipping method {name!r} (sutherland-hodgman, weiler-atherton)",
+                "method",
+            )
+        return answers_clip_polygon.clip_polygon_window_solution(flat, shape)
+    rect = _rect(window, "window")  # type: ignore[arg-type]
     if name == "weiler-atherton":
         x0, y0, x1, y1 = rect
         return answers_weiler_atherton.weiler_atherton_solution(

@@ -77,8 +77,10 @@ def inside(
     rule : {"both", "even-odd", "nonzero"}, default "both"
         The rule: crossings of a ray from the point (odd: inside), the winding number (nonzero:
         inside), or both side by side.
-    boundary : {"inside", "outside"}, default "inside"
-        What a point on the boundary counts as.
+    boundary : {"inside", "outside", "left-bottom"}, default "inside"
+        What a point on the boundary counts as: inside, outside, or what the half-open count
+        gives (``left-bottom``: on a left or bottom edge inside, on a right or top edge
+        outside, the scan-line fill's pixel rule).
 
     Returns
     -------
@@ -316,8 +318,18 @@ def char_bitmap(
     ] = None,
     at: Annotated[PointLike, AT] = (0, 0),
     scale: Annotated[NumberLike, SCALE] = 1,
+    bit_order: Annotated[
+        BitOrderName,
+        Opt(
+            "--bit-order",
+            help="The glyph's bytes: a row's leftmost pixel the most significant bit (msb, "
+            "the usual font: a row reads as written) or the least (lsb).",
+            choices=("msb", "lsb"),
+        ),
+    ] = "msb",
 ) -> Solution:
-    """A character drawn from its bitmap (``scanconv char bitmap``).
+    """A character drawn from its bitmap, and the glyph packed into bytes
+    (``scanconv char bitmap``).
 
     Parameters
     ----------
@@ -330,11 +342,16 @@ def char_bitmap(
         The glyph's bottom-left corner.
     scale : int, default 1
         Each bit drawn as a ``scale x scale`` block.
+    bit_order : {"msb", "lsb"}, default "msb"
+        How a row goes into its bytes (padded with 0 on the right to whole bytes): the
+        leftmost pixel the most significant bit (a row reads as written, the usual bitmap
+        font) or the least.
 
     Returns
     -------
     Answer
-        The bitmap, row by row, and the pixels it sets (y up).
+        The bitmap, row by row, the pixels it sets (y up), and the glyph's bytes
+        (``.data["bytes"]``, a list per row).
 
     Examples
     --------
@@ -343,6 +360,8 @@ def char_bitmap(
     ['10000', '10000', '10000', '10000', '10000', '10000', '11111']
     >>> sorted(sol.pixels())[:3]
     [(0, 0), (0, 1), (0, 2)]
+    >>> sol.data["bytes"][-1], char_bitmap("L", bit_order="lsb").data["bytes"][-1]  # 11111
+    ([248], [31])
     >>> print(char_bitmap("L").grid(), end="")
      7 | .  .  .  .  .  .  .
      6 | .  #  .  .  .  .  .
@@ -368,6 +387,7 @@ def char_bitmap(
         x0=x0,
         y0=y0,
         scale=_whole(scale, "scale"),
+        bit_order=_choice(bit_order, "bit_order"),
     )
 
 
@@ -422,20 +442,16 @@ def char_stroke(
 
 @answers
 def char_storage(
-    count: Annotated[NumberLike, Arg("How many characters the font holds.", "COUNT")],
-    width: Annotated[NumberLike, Arg("A glyph's width in pixels.", "WIDTH")],
-    height: Annotated[NumberLike, Arg("A glyph's height in pixels.", "HEIGHT")],
+    count: NumberLike,
+    width: NumberLike,
+    height: NumberLike,
     *,
-    packing: Annotated[
-        PackingName,
-        Opt(
-            "--packing",
-            help="A glyph in whole bytes per row, per column, or packed bits.",
-            choices=("rows", "columns", "bits"),
-        ),
-    ] = "rows",
+    packing: PackingName = "rows",
+    char: str | None = None,
+    first: NumberLike = 0,
+    base: NumberLike = 0,
 ) -> Solution:
-    """The storage of a bitmap font (``scanconv char storage``).
+    """The storage of a bitmap font and its font table (``scanconv char storage``).
 
     Parameters
     ----------
@@ -446,11 +462,19 @@ def char_storage(
     packing : {"rows", "columns", "bits"}, default "rows"
         Each row padded to whole bytes, each column padded to whole bytes, or the bits packed
         with no padding.
+    char : str, optional
+        A character whose glyph's address is asked: its glyph number (its code less
+        ``first``) and start address.
+    first : int, default 0
+        The character code of the font's first glyph (32 for a font that starts at the space).
+    base : int, default 0
+        The byte address of the first glyph; each glyph follows the one before.
 
     Returns
     -------
     Answer
-        The working; ``.data`` holds ``per_glyph`` and the total ``bits``.
+        The working and the font table (each glyph's start address); ``.data`` holds
+        ``per_glyph`` and the total ``bits``.
 
     Examples
     --------
@@ -458,10 +482,15 @@ def char_storage(
     {'bits': 7168, 'per_glyph': 56, 'packing': 'rows'}
     >>> char_storage(128, 5, 7, packing="bits").data["bits"]
     4480
+    >>> char_storage(128, 8, 8, char="A", base=0x1000).derived[-1].value  # 4096 + 65 x 8
+    4616
     """
     return answers_characters.font_storage_solution(
         _whole(count, "count"),
         _whole(width, "width"),
         _whole(height, "height"),
         packing=_choice(packing, "packing"),
+        char=None if char is None else _char(char),
+        first=_whole(first, "first"),
+        base=_whole(base, "base"),
     )

@@ -117,6 +117,53 @@ def storage(count: int, width: int, height: int, packing: str = "rows") -> Stora
     return Storage(per, per * count)
 
 
+BIT_ORDERS = ("msb", "lsb")
+"""How a glyph row's pixels go into a byte: the leftmost pixel in the most significant bit
+(``msb``, the usual bitmap font: a row reads as written) or in the least (``lsb``)."""
+
+
+class RowBytes(NamedTuple):
+    """One glyph row packed into whole bytes."""
+
+    row: str
+    """The row as written, padded on the right with 0 to whole bytes."""
+    values: tuple[int, ...]
+    """Its bytes, first byte first."""
+
+
+def row_bytes(rows: Sequence[str], bit_order: str = "msb") -> tuple[RowBytes, ...]:
+    """Each row of a glyph (``"01110"``) packed into whole bytes, row by row: padded on the
+    right with 0 to a multiple of 8 pixels, then each 8 pixels one byte, the leftmost pixel
+    its most significant bit (``msb``) or its least (``lsb``).
+
+    >>> row_bytes(["01110", "10001"])
+    (RowBytes(row='01110000', values=(112,)), RowBytes(row='10001000', values=(136,)))
+    >>> row_bytes(["01110"], "lsb")[0].values  # 0b00001110 read backwards: 0x0E
+    (14,)
+    >>> row_bytes(["111111111"])[0].values  # 9 pixels: two bytes
+    (255, 128)
+    """
+    if bit_order not in BIT_ORDERS:
+        raise InputError(f"the bit order is msb or lsb, got {bit_order!r}", "bit_order")
+    out = []
+    for r in rows:
+        padded = r + "0" * (-len(r) % 8)
+        chunks = [padded[i : i + 8] for i in range(0, len(padded), 8)]
+        values = tuple(int(c if bit_order == "msb" else c[::-1], 2) for c in chunks)
+        out.append(RowBytes(padded, values))
+    return tuple(out)
+
+
+def glyph_offset(index: int, per_glyph_bits: int, base: int = 0) -> int:
+    """The byte address of glyph number ``index`` (0 first) in a font table of glyphs of
+    ``per_glyph_bits`` each, stored one after another from ``base``.
+
+    >>> glyph_offset(65, 64, 0x1000)  # 'A' in an 8 x 8 font: 0x1000 + 65 x 8
+    4616
+    """
+    return base + index * per_glyph_bits // 8
+
+
 def glyph(char: str, rows: Sequence[str] | None = None) -> tuple[str, ...]:
     """The rows of ``char`` (from :data:`FONT_5X7`) or the ``rows`` given (1/0 or #/.).
 

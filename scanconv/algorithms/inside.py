@@ -9,8 +9,11 @@ The ray goes from the point toward +x. Conventions, named and settable:
   and horizontal edges never count. This is the rule of the scan-line fill
   (:mod:`scanconv.algorithms.polygon`, edges counted on ``y_min <= y < y_max``), so both agree
   on every point off the boundary.
-- ``boundary``: a point on an edge or a vertex is ``inside`` (the default) or ``outside``; it is
-  found exactly before any counting.
+- ``boundary``: a point on an edge or a vertex is ``inside`` (the default) or ``outside``, found
+  exactly before any counting; or ``left-bottom``, the edge rule of the scan-line fill's
+  pixels: the count itself decides, so a point on a left or bottom edge is inside and one on a
+  right or top edge outside (the point moved a hair right and a hair less up), and a vertex
+  is inside where the polygon's inside lies up and to the right of it.
 
 Each test yields one :class:`EdgeTest` per edge, the row a student writes.
 
@@ -29,7 +32,7 @@ from ..core.numeric import Number, normalize
 
 Point = tuple[Number, Number]
 
-BOUNDARY = ("inside", "outside")
+BOUNDARY = ("inside", "outside", "left-bottom")
 """What a point on the polygon's boundary is."""
 
 MAX_POINTS = 100
@@ -109,6 +112,9 @@ def verdict(vertices: Sequence[Point], point: Point, boundary: str = "inside") -
     Verdict(point=(1, 2), on_boundary=None, crossings=1, winding=1, even_odd=True, nonzero=True)
     >>> verdict([(0, 0), (4, 0), (4, 4), (0, 4)], (4, 2)).even_odd
     True
+    >>> [verdict([(0, 0), (4, 0), (4, 4), (0, 4)], p, "left-bottom").even_odd
+    ...  for p in ((0, 2), (2, 0), (4, 2), (2, 4), (0, 0), (4, 4))]
+    [True, True, False, False, True, False]
     """
     if boundary not in BOUNDARY:
         raise InputError(f"boundary must be inside or outside, got {boundary!r}", "boundary")
@@ -117,7 +123,7 @@ def verdict(vertices: Sequence[Point], point: Point, boundary: str = "inside") -
     tests = list(edge_tests(vertices, point))
     crossings = sum(t.crossing for t in tests)
     winding = sum(t.sign for t in tests)
-    if on is not None:
+    if on is not None and boundary != "left-bottom":
         inside = boundary == "inside"
         return Verdict(point, on, crossings, winding, inside, inside)
-    return Verdict(point, None, crossings, winding, crossings % 2 == 1, winding != 0)
+    return Verdict(point, on, crossings, winding, crossings % 2 == 1, winding != 0)

@@ -9,10 +9,13 @@ the next ``out`` point, switches to the clip list and follows it to the next ``i
 switches back, and so on until it returns to its start: one output polygon; it repeats while
 an ``in`` point is unvisited.
 
-A crossing exactly at a vertex, or edges that overlap, make the labels ambiguous; they are
-refused with a line naming the point (move the polygon by a fraction to answer). With no
-crossing the answer is the subject (inside the clip region), the clip polygon (inside the
-subject) or nothing.
+Polygons that touch are clipped too: a vertex on the other polygon's edge, two vertices
+together, edges along each other. Every point where the boundaries meet is inserted, and its
+label is read from the subject's pieces on either side of it (each piece kept when its
+midpoint is inside the clip polygon, or on its boundary running the same way): ``in`` where
+the piece before is not kept and the one after is, ``out`` the other way round, ``touch``
+where neither changes (the walk does not switch lists there). With no ``in`` point the answer
+is the subject (inside the clip region), the clip polygon (inside the subject) or nothing.
 
 References: K. Weiler and P. Atherton, "Hidden surface removal using polygon area sorting",
 SIGGRAPH 1977; Hearn & Baker, *Computer Graphics*, C version, 2nd ed., §6-8.
@@ -26,7 +29,7 @@ from typing import NamedTuple
 
 from ..core.checks import InputError
 from ..core.numeric import Number, normalize
-from .inside import verdict
+from .inside import on_segment, verdict
 
 Point = tuple[Number, Number]
 
@@ -41,6 +44,9 @@ class Entry(NamedTuple):
     """``vertex``, ``in`` or ``out``."""
     crossing: int | None
     """The crossing's number (I1, I2, ...), shared by both lists; ``None`` for a vertex."""
+    vertex: int | None = None
+    """The polygon's vertex number (1, 2, ...) when the entry is one of its vertices (a
+    vertex where the boundaries meet is a crossing too); ``None`` for a point inside an edge."""
 
 
 class WAResult(NamedTuple):
@@ -70,75 +76,110 @@ def _ccw(pts: Sequence[Point], name: str) -> tuple[list[Point], bool]:
     return (list(pts), False) if a > 0 else (list(reversed(pts)), True)
 
 
-def _cross(a: Point, b: Point, c: Point, d: Point) -> tuple[Fraction, Fraction] | None:
-    """The parameters ``(t, u)`` where ``ab`` meets ``cd`` inside both (``None`` if they do
-    not); an :class:`InputError` for a touching or overlapping case."""
+def _meet(a: Point, b: Point, c: Point, d: Point) -> list[tuple[Fraction, Fraction]]:
+    """Where the segments ``ab`` and ``cd`` meet, as parameters ``(t, u)`` along each: one
+    point for a crossing or a touch (an end on the other segment, two ends together), the
+    two ends of the shared part where they overlap, none where they do not meet."""
     r = (b[0] - a[0], b[1] - a[1])
     s = (d[0] - c[0], d[1] - c[1])
     den = r[0] * s[1] - r[1] * s[0]
     qp = (c[0] - a[0], c[1] - a[1])
-    if den == 0:
-        if qp[0] * r[1] - qp[1] * r[0] == 0:  # collinear: overlap or touch
-            lo, hi = sorted((_proj(c, a, r), _proj(d, a, r)))
-            if hi > 0 and lo < 1:
-                raise InputError(f"edges overlap along {_show(a)}-{_show(b)}", "subject")
-            if hi == 0 or lo == 1:
-                touch = a if hi == 0 else b
-                raise InputError(
-                    f"the polygons cross at a vertex, {_show(touch)}: move one slightly", "subject"
-                )
-        return None
-    t = Fraction(qp[0] * s[1] - qp[1] * s[0]) / den
-    u = Fraction(qp[0] * r[1] - qp[1] * r[0]) / den
-    if not (0 <= t <= 1 and 0 <= u <= 1):
-        return None
-    if t in (0, 1) or u in (0, 1):
-        p = (normalize(a[0] + t * r[0]), normalize(a[1] + t * r[1]))
-        raise InputError(
-            f"the polygons cross at a vertex, {_show(p)}: move one slightly", "subject"
-        )
-    return t, u
+    if den != 0:
+        t = Fraction(qp[0] * s[1] - qp[1] * s[0]) / den
+        u = Fraction(qp[0] * r[1] - qp[1] * r[0]) / den
+        return [(t, u)] if 0 <= t <= 1 and 0 <= u <= 1 else []
+    if qp[0] * r[1] - qp[1] * r[0] != 0:
+        return []  # parallel, apart
+    tc, td = _proj(c, a, r), _proj(d, a, r)  # collinear: the shared part, if any
+    lo, hi = max(Fraction(0), min(tc, td)), min(Fraction(1), max(tc, td))
+    if lo > hi:
+        return []
+    return [(t, (t - tc) / (td - tc)) for t in sorted({lo, hi})]
 
 
 def _proj(p: Point, a: Point, r: tuple[Number, Number]) -> Fraction:
     return Fraction((p[0] - a[0]) * r[0] + (p[1] - a[1]) * r[1]) / (r[0] * r[0] + r[1] * r[1])
 
 
-def _show(p: Point) -> str:
-    return f"({normalize(p[0])}, {normalize(p[1])})"
+def _at(a: Point, b: Point, t: Fraction) -> Point:
+    return (normalize(a[0] + t * (b[0] - a[0])), normalize(a[1] + t * (b[1] - a[1])))
 
 
-def _lists(subject: list[Point], clip: list[Point]) -> tuple[list[Entry], list[Entry], int]:
-    """Both vertex lists with the crossings inserted and labelled."""
+def _points(
+    subject: list[Point], clip: list[Point]
+) -> tuple[
+    dict[Point, int], list[list[tuple[Fraction, Point]]], list[list[tuple[Fraction, Point]]]
+]:
+    """Every point where the two boundaries meet, numbered in the order found (each subject
+    edge against each clip edge), and the points on each edge with their parameter."""
     ns, nc = len(subject), len(clip)
-    on_subject: list[list[tuple[Fraction, Point, int]]] = [[] for _ in range(ns)]
-    on_clip: list[list[tuple[Fraction, Point, int]]] = [[] for _ in range(nc)]
-    count = 0
+    number: dict[Point, int] = {}
+    on_s: list[list[tuple[Fraction, Point]]] = [[] for _ in range(ns)]
+    on_c: list[list[tuple[Fraction, Point]]] = [[] for _ in range(nc)]
     for i in range(ns):
         a, b = subject[i], subject[(i + 1) % ns]
         for j in range(nc):
-            hit = _cross(a, b, clip[j], clip[(j + 1) % nc])
-            if hit is not None:
-                t, u = hit
-                p = (normalize(a[0] + t * (b[0] - a[0])), normalize(a[1] + t * (b[1] - a[1])))
-                on_subject[i].append((t, p, count))
-                on_clip[j].append((u, p, count))
-                count += 1
+            c, d = clip[j], clip[(j + 1) % nc]
+            for t, u in _meet(a, b, c, d):
+                p = _at(a, b, t)
+                number.setdefault(p, len(number))
+                on_s[i].append((t, p))
+                on_c[j].append((u, p))
+    return number, on_s, on_c
+
+
+def _boundary_list(
+    vertices: list[Point], on: list[list[tuple[Fraction, Point]]], number: dict[Point, int]
+) -> list[tuple[Point, int | None, int | None]]:
+    """A polygon's boundary in order: each vertex, then the meeting points inside its edge;
+    a point where the boundaries meet carries its number (a vertex on the other polygon's
+    boundary too)."""
+    out: list[tuple[Point, int | None, int | None]] = []
+    for i, v in enumerate(vertices):
+        out.append((v, number.get(v), i + 1))
+        nxt = vertices[(i + 1) % len(vertices)]
+        for _, p in sorted(set(on[i])):
+            if p not in (v, nxt):
+                out.append((p, number[p], None))
+    return out
+
+
+def _kept(a: Point, b: Point, other: list[Point], shared: bool) -> bool:
+    """Whether the piece ``a -> b`` of one boundary lies inside the other polygon; a piece
+    along the other's boundary counts when ``shared`` and the two run the same way (the
+    subject's pieces: a shared edge is the clipped polygon's once)."""
+    m = (Fraction(a[0] + b[0]) / 2, Fraction(a[1] + b[1]) / 2)
+    n = len(other)
+    for j in range(n):
+        c, d = other[j], other[(j + 1) % n]
+        if on_segment(m, c, d):
+            same = (b[0] - a[0]) * (d[0] - c[0]) + (b[1] - a[1]) * (d[1] - c[1]) > 0
+            return shared and same
+    return verdict(other, m).even_odd
+
+
+def _lists(subject: list[Point], clip: list[Point]) -> tuple[list[Entry], list[Entry], int]:
+    """Both vertex lists with the meeting points inserted and labelled: ``in`` where the
+    subject's boundary enters the clipped polygon's, ``out`` where it leaves it, ``touch``
+    where it meets the clip polygon without either (a vertex touching, an edge along)."""
+    number, on_s, on_c = _points(subject, clip)
+    s_pts = _boundary_list(subject, on_s, number)
+    c_pts = _boundary_list(clip, on_c, number)
+    n = len(s_pts)
+    kept = [_kept(s_pts[k][0], s_pts[(k + 1) % n][0], clip, True) for k in range(n)]
     labels: dict[int, str] = {}
-    subject_list: list[Entry] = []
-    for i in range(ns):
-        start_inside = verdict(clip, subject[i]).even_odd
-        subject_list.append(Entry(subject[i], "vertex", None))
-        inside = start_inside
-        for _, p, c in sorted(on_subject[i]):
-            labels[c] = "out" if inside else "in"
-            inside = not inside
-            subject_list.append(Entry(p, labels[c], c))
-    clip_list: list[Entry] = []
-    for j in range(nc):
-        clip_list.append(Entry(clip[j], "vertex", None))
-        clip_list.extend(Entry(p, labels[c], c) for _, p, c in sorted(on_clip[j]))
-    return subject_list, clip_list, count
+    for k, (_, c, _) in enumerate(s_pts):
+        if c is not None:
+            came, goes = kept[k - 1], kept[k]
+            labels[c] = "in" if goes and not came else "out" if came and not goes else "touch"
+    subject_list = [Entry(p, "vertex" if c is None else labels[c], c, v) for p, c, v in s_pts]
+    clip_list = [Entry(p, "vertex" if c is None else labels[c], c, v) for p, c, v in c_pts]
+    return subject_list, clip_list, len(number)
+
+
+def _inside_parts(entries: list[Entry], other: list[Point], shared: bool) -> bool:
+    n = len(entries)
+    return any(_kept(entries[k].point, entries[(k + 1) % n].point, other, shared) for k in range(n))
 
 
 def weiler_atherton(subject: Sequence[Point], clip: Sequence[Point]) -> WAResult:
@@ -150,12 +191,12 @@ def weiler_atherton(subject: Sequence[Point], clip: Sequence[Point]) -> WAResult
     """
     subj, rs = _ccw(subject, "subject")
     clp, rc = _ccw(clip, "clip")
-    s_list, c_list, count = _lists(subj, clp)
+    s_list, c_list, _ = _lists(subj, clp)
     flipped = tuple(n for n, r in (("subject", rs), ("clip", rc)) if r)
-    if count == 0:
-        if verdict(clp, subj[0]).even_odd:
+    if not any(e.label == "in" for e in s_list):  # the boundaries never cross
+        if _inside_parts(s_list, clp, True):
             return WAResult(tuple(s_list), tuple(c_list), (), (tuple(subj),), flipped)
-        if verdict(subj, clp[0]).even_odd:
+        if _inside_parts(c_list, subj, False):
             return WAResult(tuple(s_list), tuple(c_list), (), (tuple(clp),), flipped)
         return WAResult(tuple(s_list), tuple(c_list), (), (), flipped)
     where = {("s", e.crossing): i for i, e in enumerate(s_list) if e.crossing is not None} | {
@@ -174,14 +215,12 @@ def weiler_atherton(subject: Sequence[Point], clip: Sequence[Point]) -> WAResult
 
 
 def _names(entries: list[Entry], prefix: str) -> dict[tuple[str, int], str]:
-    out, n = {}, 0
-    for i, e in enumerate(entries):
-        if e.crossing is None:
-            n += 1
-            out[(prefix.lower(), i)] = f"{prefix}{n}"
-        else:
-            out[(prefix.lower(), i)] = f"I{e.crossing + 1}"
-    return out
+    """Each entry's name in the walks: ``I1``, ``I2``, ... for a point where the boundaries
+    meet, ``S3`` (``C3``) for the polygon's third vertex."""
+    return {
+        (prefix.lower(), i): f"{prefix}{e.vertex}" if e.crossing is None else f"I{e.crossing + 1}"
+        for i, e in enumerate(entries)
+    }
 
 
 def _walk(
@@ -206,7 +245,7 @@ def _walk(
             visited.add(e.crossing)
         walk.append(names[(side, i)])
         poly.append(e.point)
-        if e.crossing is not None and (e.label == "out") == (side == "s"):
+        if e.crossing is not None and e.label == ("out" if side == "s" else "in"):
             side = "c" if side == "s" else "s"
             i = where[(side, e.crossing)]
         i = (i + 1) % len(lists[side])

@@ -88,6 +88,12 @@ class Origin(str, Enum):
 
 # --- values -----------------------------------------------------------------------------------
 
+
+def num_arg(help: str, metavar: str | None = None) -> Any:
+    """A positional exact number with its help (``scanconv char storage --help`` lists it)."""
+    return typer.Argument(parser=number, show_default=False, help=help, metavar=metavar)
+
+
 Points = Annotated[
     list[Fraction],
     typer.Argument(parser=number, metavar="X0 Y0 X1 Y1 ...", help="Control points as x y pairs."),

@@ -9,6 +9,7 @@ from typing import Annotated
 
 import typer
 
+from ..algorithms.process_choices import PolygonClipMethod
 from ..core.records import Solution
 from ..questions import commands
 from .application import app, clip_app, pipeline_app
@@ -18,27 +19,6 @@ from .options import NUMERIC_ARGS, number
 
 Rect = tuple[Fraction, Fraction, Fraction, Fraction]
 
-Window = Annotated[
-    Rect,
-    typer.Option(
-        "--window",
-        "-w",
-        parser=number,
-        metavar="XMIN YMIN XMAX YMAX",
-        show_default=False,
-        help="The clipping window in world coordinates (closed: its edges are inside).",
-    ),
-]
-Viewport = Annotated[
-    Rect,
-    typer.Option(
-        "--viewport",
-        parser=number,
-        metavar="XMIN YMIN XMAX YMAX",
-        show_default=False,
-        help="The viewport in device coordinates.",
-    ),
-]
 
 TRANSFORM_HELP = """Compose 2D transformations (homogeneous coordinates, column vectors) and
 apply them to the points X1 Y1 X2 Y2 ..., in the order given.
@@ -159,15 +139,42 @@ def clip_convex(
     return commands.clip_convex(words, normals, ends)
 
 
-command(
-    clip_app,
-    ("clip", "polygon"),
-    help="""Clip a polygon against the window edge by edge (left, right, bottom, top): one table per
-    edge, the clipped polygon, and the degenerate edges a concave polygon leaves.
+@clip_app.command("polygon", context_settings=NUMERIC_ARGS)
+@answers()
+def clip_polygon(
+    words: Annotated[
+        list[str],
+        typer.Argument(
+            metavar="X1 Y1 X2 Y2 X3 Y3 ... [--window-vertices X Y X Y X Y ...]",
+            help="The polygon's vertices in order; then, for a window of any shape, "
+            "--window-vertices and its vertices in order (convex for Sutherland-Hodgman).",
+            show_default=False,
+        ),
+    ],
+    window: Annotated[
+        Rect | None,
+        typer.Option(
+            "--window",
+            "-w",
+            parser=number,
+            metavar="XMIN YMIN XMAX YMAX",
+            show_default=False,
+            help="A rectangular clipping window in world coordinates (closed: its edges are "
+            "inside); or give --window-vertices after the polygon.",
+        ),
+    ] = None,
+    method: Annotated[
+        PolygonClipMethod,
+        typer.Option("--method", "-m", case_sensitive=False, help="Polygon clipping method."),
+    ] = PolygonClipMethod.sutherland_hodgman,
+) -> Solution:
+    """Clip a polygon against the window edge by edge (left, right, bottom, top; a polygon
+    window's edges in order): one table per edge, the clipped polygon, and the degenerate
+    edges a concave polygon leaves.
 
     Example: scanconv clip polygon 100 150 200 250 300 200 --window 150 150 200 200
-    """,
-)
+    """
+    return commands.clip_polygon(words, window, method)
 
 
 command(

@@ -14,7 +14,7 @@ from ..questions import commands
 from .application import app, char_app, dither_app
 from .command import answers
 from .declared import command
-from .options import NUMERIC_ARGS, choice, num_option
+from .options import NUMERIC_ARGS, choice, num_arg, num_option
 
 
 class Compare(str, Enum):
@@ -51,6 +51,15 @@ class Boundary(str, Enum):
 
     inside = "inside"
     outside = "outside"
+    left_bottom = "left-bottom"
+
+
+class Packing(str, Enum):
+    """How a glyph's bits are packed into bytes."""
+
+    rows = "rows"
+    columns = "columns"
+    bits = "bits"
 
 
 Image = Annotated[
@@ -134,7 +143,12 @@ def inside(
         InsideRule, choice("--rule", help="even-odd, nonzero winding, or both.")
     ] = InsideRule.both,
     boundary: Annotated[
-        Boundary, choice("--boundary", help="A point on the boundary is inside or outside.")
+        Boundary,
+        choice(
+            "--boundary",
+            help="A point on the boundary is inside, outside, or as the count says "
+            "(left-bottom: on a left or bottom edge inside, a right or top edge outside).",
+        ),
     ] = Boundary.inside,
 ) -> Solution:
     """Inside-outside test: each point against each edge, the crossings and the winding number.
@@ -189,7 +203,8 @@ command(
 command(
     char_app,
     ("char", "bitmap"),
-    help="""A character drawn from its bitmap: each row's pixels, placed and scaled.
+    help="""A character drawn from its bitmap: each row's pixels, placed and scaled, and the glyph
+    packed into bytes row by row.
 
     Example: scanconv char bitmap A --at 2 1
     """,
@@ -202,11 +217,44 @@ command(
     Example: scanconv char stroke T --scale 2
     """,
 )
-command(
-    char_app,
-    ("char", "storage"),
-    help="""A bitmap font's storage: the bytes per glyph and for the whole font.
+
+
+@char_app.command("storage", context_settings=NUMERIC_ARGS)
+@answers(grid=False)
+def char_storage(
+    count: Annotated[Fraction, num_arg("How many characters the font holds.", "COUNT")],
+    width: Annotated[Fraction, num_arg("A glyph's width in pixels.", "WIDTH")],
+    height: Annotated[Fraction, num_arg("A glyph's height in pixels.", "HEIGHT")],
+    packing: Annotated[
+        Packing,
+        choice("--packing", help="A glyph in whole bytes per row, per column, or packed bits."),
+    ] = Packing.rows,
+    char: Annotated[
+        str | None,
+        typer.Option(
+            "--char",
+            metavar="C",
+            help="A character whose glyph's number and address the font table gives.",
+        ),
+    ] = None,
+    first: Annotated[
+        Fraction | None,
+        num_option(
+            "--first", metavar="CODE", help="The code of the font's first glyph (default 0)."
+        ),
+    ] = None,
+    base: Annotated[
+        str | None,
+        typer.Option(
+            "--base",
+            metavar="ADDRESS",
+            help="The first glyph's byte address, decimal or 0x hexadecimal (default 0).",
+        ),
+    ] = None,
+) -> Solution:
+    """A bitmap font's storage: the bytes per glyph and for the whole font, and the font
+    table: each glyph's address, one after another.
 
     Example: scanconv char storage 128 5 7
-    """,
-)
+    """
+    return commands.char_storage(count, width, height, packing, char, first, base)

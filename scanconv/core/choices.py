@@ -47,6 +47,7 @@ __all__ = [
     "LineScaleName",
     "LoopName",
     "MidpointName",
+    "MidpointStopName",
     "NormalsName",
     "OrderName",
     "OriginName",
@@ -117,6 +118,8 @@ ClipEndsName = Literal["exact", "truncated"]
 """Cyrus-Beck's clipped end points (:data:`scanconv.algorithms.cyrus_beck.ENDS`)."""
 MidpointName = Literal["rounded", "floor", "exact"]
 """Midpoint subdivision's midpoint (:data:`scanconv.algorithms.midpoint_clip.MIDPOINTS`)."""
+MidpointStopName = Literal["length", "edge"]
+"""Midpoint subdivision's stop rule (:data:`scanconv.algorithms.midpoint_clip.STOPS`)."""
 AAMethodName = Literal["area", "supersample", "wu", "subpixel"]
 """``method`` of the anti-aliasing functions (``AAMethod``)."""
 AcrossName = Literal["minor", "perpendicular"]
@@ -133,7 +136,7 @@ FillMethodName = Literal["boundary", "flood"]
 """The seed fill (:data:`scanconv.algorithms.seedfill.METHODS`)."""
 InsideRuleName = Literal["both", "even-odd", "nonzero"]
 """The inside test's rule (:data:`scanconv.answers.process.fill.inside.RULES`)."""
-BoundaryName = Literal["inside", "outside"]
+BoundaryName = Literal["inside", "outside", "left-bottom"]
 """What a point on the boundary counts as (:data:`scanconv.algorithms.inside.BOUNDARY`)."""
 
 # --- images, dithering, attributes, characters, colour ---------------------------------------
@@ -159,7 +162,7 @@ ArithmeticName = Literal["exact", "integer"]
 CarryName = Literal["kept", "clamped"]
 """Negative errors ``kept``, or ``clamped`` at 0."""
 BitOrderName = Literal["msb", "lsb"]
-"""A line style's mask read from its most or least significant bit."""
+"""A line style's mask read from its most or least significant bit; a glyph row's leftmost pixel in a byte's most or least significant bit."""
 PackingName = Literal["rows", "columns", "bits"]
 """A bitmap font's packing (:data:`scanconv.algorithms.characters.PACKINGS`)."""
 ColorModelName = Literal["rgb", "cmy", "hsv", "hsi", "grey"]

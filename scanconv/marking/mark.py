@@ -32,6 +32,7 @@ from ..core.checks import InputError
 from ..core.decisions import resolve_move
 from ..core.records import Pixel, Solution
 from .diagnose import OTHER_FORM, diagnose, model_for, other_form, states_steps
+from .limits import MAX_QUESTION_ROWS
 from .models import DDALine, Model, State, chain
 from .rows import (
     LAYOUTS,
@@ -75,11 +76,6 @@ __all__ = [
     "safe_text",
     "score",
 ]
-
-MAX_QUESTION_ROWS = 10**4
-"""Most rows of a question's table that ``check`` marks against: twice the longest student
-table (:data:`~scanconv.marking.student_table.MAX_TABLE_ROWS`); a longer question is refused
-before any marking (its table, and each convention's, is held in memory)."""
 
 
 def _check_size(rows: int) -> None:

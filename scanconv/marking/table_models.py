@@ -14,7 +14,7 @@ earlier rows, with the method's own rule:
   pixels, a slope compared again) is expected from the student's own earlier rows.
 
 A cell equal to the answer's own is always right (a slip not carried on costs one row).
-``tests/test_marking_syllabus.py`` marks a right table, a table with one slip and a table
+``tests/test_marking_tables.py`` marks a right table, a table with one slip and a table
 that follows a slip through.
 """
 

@@ -16,12 +16,12 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterator, Sequence
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from ..core import lazy
 from ..core.checks import InputError
 from ..core.numeric import fmt_short, parse_number
 from ..core.records import Column, Solution
+from .limits import MAX_QUESTION_ROWS
 from .rows import Marking, RowText, Verdict
 from .table_models import (
     CoxDeBoorTable,
@@ -37,11 +37,6 @@ from .table_models import (
     Row,
     TableModel,
 )
-
-if TYPE_CHECKING:
-    from . import mark as marking
-else:
-    marking = lazy.module("scanconv.marking.mark")
 
 TABLE_RULES = (
     "Marking rules: each row is compared with the answer's row in the same place; a row is "
@@ -176,10 +171,8 @@ def _answer(solution: Solution, model: TableModel) -> tuple[tuple[Column, ...], 
 
         rows = []
         for n, s in enumerate(solution.steps()):
-            if n > marking.MAX_QUESTION_ROWS:
-                raise InputError(
-                    f"the question's table has more than {marking.MAX_QUESTION_ROWS} rows"
-                )
+            if n > MAX_QUESTION_ROWS:
+                raise InputError(f"the question's table has more than {MAX_QUESTION_ROWS} rows")
             rows.append(tuple(cells(s)))
         columns = solution.columns
     else:

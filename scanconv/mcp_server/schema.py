@@ -1,7 +1,7 @@
 """The structured content of each tool, declared so that the server lists a real output
 schema (the SDK reads these types into JSON Schema, and checks each result against it).
 
-:class:`Answer` is scanconv's stable JSON (``--format json``; the README's "JSON output",
+:class:`Answer` is scanconv's stable JSON (``--format json``; docs/formats.md's "JSON output",
 :mod:`scanconv.render.data`): every answer has its head (``primitive`` .. ``columns``) and
 ``steps``; ``pixels``, ``tables``, ``pseudocode`` and a command's own fields (``conventions``,
 ``layout``, a marking's ``score``) only where the answer has them. A step has ``k`` and its

@@ -13,7 +13,7 @@ import random
 from typing import Any
 
 from ..answers.methods import method
-from .notes import PracticeQuestion, _line
+from .records import PracticeQuestion, line_question
 
 
 def _image(rng: random.Random, rows: int, cols: int) -> str:
@@ -261,7 +261,7 @@ def characters(rng: random.Random, difficulty: str, kind: str) -> PracticeQuesti
 
 def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     """``kind``: ``octant 2, tie`` (a tie: d = 0 at some step)."""
-    q = _line(rng, difficulty, (int(kind.split()[1].rstrip(",")), kind.endswith("tie")))
+    q = line_question(rng, difficulty, (int(kind.split()[1].rstrip(",")), kind.endswith("tie")))
     algo = q.argv.index("--algo") + 1
     x1, y1, x2, y2 = q.argv[1:5]
     return PracticeQuestion(

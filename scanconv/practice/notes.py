@@ -26,10 +26,11 @@ from __future__ import annotations
 import random
 from collections.abc import Callable, Iterator
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any
 
 from ..core import lazy
 from ..core.checks import InputError
+from .records import MARKS, PracticeQuestion, line_question
 
 if TYPE_CHECKING:
     from . import beyond as practice_more
@@ -49,86 +50,10 @@ MIX: tuple[str, ...] = ("line", "circle", "line", "ellipse", "bezier", "line", "
 MIX += ("bspline", "storage", "quantize")
 
 
-class PracticeQuestion(NamedTuple):
-    """One generated question."""
-
-    topic: str
-    argv: tuple[str, ...]
-    """The command line, without ``scanconv``."""
-    wording: str
-    """The question in words, as an exam would ask it."""
-    marks: int
-    features: frozenset[str]
-    """The variety it shows: ``octant 3``, ``steep``, ``negative slope``, ``right to left``,
-    ``tie``, ``centre away``, ``tall``, ``cubic``, ``at t``, ..."""
-
-
-class _Range(NamedTuple):
-    steps: tuple[int, int]
-    """Smallest and largest major length (a line's steps)."""
-    low: int
-    high: int
-    """The coordinates' range."""
-
-
-_LINE = {
-    "easy": _Range((3, 6), 0, 10),
-    "exam": _Range((6, 12), 0, 20),
-    "hard": _Range((13, 20), -20, 20),
-}
 _RADIUS = {"easy": (4, 7), "exam": (8, 15), "hard": (17, 30)}
 _AXES = {"easy": (2, 5), "exam": (3, 8), "hard": (8, 14)}
 _CENTRE = {"easy": (1, 6), "exam": (2, 10), "hard": (5, 20)}
 _CURVE = {"easy": (0, 6), "exam": (0, 10), "hard": (-10, 10)}
-_MARKS = {"easy": 6, "exam": 14, "hard": 14}
-
-
-# the eight octants: (dx, dy) from the major length L and the minor length m
-_OCTANTS: dict[int, Callable[[int, int], tuple[int, int]]] = {
-    1: lambda L, m: (L, m),
-    2: lambda L, m: (m, L),
-    3: lambda L, m: (-m, L),
-    4: lambda L, m: (-L, m),
-    5: lambda L, m: (-L, -m),
-    6: lambda L, m: (-m, -L),
-    7: lambda L, m: (m, -L),
-    8: lambda L, m: (L, -m),
-}
-
-
-def octant(dx: int, dy: int) -> int:
-    """The octant (1 to 8, counter-clockwise from the positive x axis) of the direction
-    ``(dx, dy)`` of a line that is neither horizontal, vertical nor diagonal.
-
-    >>> [octant(8, 4), octant(4, 8), octant(-4, 8), octant(-8, -4), octant(8, -4)]
-    [1, 2, 3, 5, 8]
-    """
-    steep = abs(dy) > abs(dx)
-    if dx > 0 and dy > 0:
-        return 2 if steep else 1
-    if dx < 0 < dy:
-        return 3 if steep else 4
-    if dx < 0 and dy < 0:
-        return 6 if steep else 5
-    return 7 if steep else 8
-
-
-def line_features(dx: int, dy: int, tie: bool) -> frozenset[str]:
-    """The variety a line shows.
-
-    >>> sorted(line_features(-3, 6, False))
-    ['negative slope', 'octant 3', 'right to left', 'steep']
-    """
-    found = {f"octant {octant(dx, dy)}"}
-    if abs(dy) > abs(dx):
-        found.add("steep")
-    if (dx < 0) != (dy < 0):
-        found.add("negative slope")
-    if dx < 0:
-        found.add("right to left")
-    if tie:
-        found.add("tie")
-    return frozenset(found)
 
 
 def _line_kinds(rng: random.Random) -> list[tuple[int, bool]]:
@@ -139,32 +64,6 @@ def _line_kinds(rng: random.Random) -> list[tuple[int, bool]]:
     first = [(o, i % 2 == 0) for i, o in enumerate(order)]
     second = [(o, i % 2 == 1) for i, o in enumerate(order)]
     return first + second
-
-
-def _line(rng: random.Random, difficulty: str, kind: tuple[int, bool]) -> PracticeQuestion:
-    which, tie = kind
-    r = _LINE[difficulty]
-    lo, hi = r.steps
-    if tie:  # slope 1/2 with an odd minor length: p = 0 in Bresenham, .5 in DDA
-        major = rng.choice([n for n in range(lo, hi + 1) if n % 4 == 2])
-        minor = major // 2
-    else:
-        major = rng.randrange(lo, hi + 1)
-        minor = rng.choice([m for m in range(1, major) if 2 * m != major] or [1])
-    dx, dy = _OCTANTS[which](major, minor)
-    x1 = rng.randrange(max(r.low, r.low - dx), min(r.high, r.high - dx) + 1)
-    y1 = rng.randrange(max(r.low, r.low - dy), min(r.high, r.high - dy) + 1)
-    x2, y2 = x1 + dx, y1 + dy
-    algo = rng.choice(("dda", "bresenham"))
-    name = "the DDA algorithm" if algo == "dda" else "Bresenham's line algorithm"
-    return PracticeQuestion(
-        "line",
-        ("line", str(x1), str(y1), str(x2), str(y2), "--algo", algo),
-        f"Scan-convert the line from ({x1}, {y1}) to ({x2}, {y2}) with {name}: give the "
-        "step table and the pixels plotted.",
-        _MARKS[difficulty],
-        line_features(dx, dy, tie) | {algo},
-    )
 
 
 def _centre(rng: random.Random, difficulty: str) -> tuple[int, int]:
@@ -200,7 +99,7 @@ def _circle(rng: random.Random, difficulty: str, kind: tuple[str, bool]) -> Prac
         tuple(argv),
         f"Draw the circle of radius {r} {where} with {name}: give one octant's step table "
         "and the points of the other octants by symmetry.",
-        _MARKS[difficulty],
+        MARKS[difficulty],
         frozenset(features),
     )
 
@@ -224,7 +123,7 @@ def _ellipse(rng: random.Random, difficulty: str, kind: tuple[bool, bool]) -> Pr
         tuple(argv),
         f"Draw the ellipse with rx = {rx} and ry = {ry} {where} with the midpoint ellipse "
         "algorithm: give the step tables of regions 1 and 2.",
-        _MARKS[difficulty],
+        MARKS[difficulty],
         frozenset(features),
     )
 
@@ -268,7 +167,7 @@ def _bezier(rng: random.Random, difficulty: str, kind: tuple[int, bool]) -> Prac
         "bezier",
         tuple(argv),
         f"For the {shape} Bezier curve with control points {_listed(pts)}, {task}.",
-        _MARKS[difficulty] // 2 if at else _MARKS[difficulty],
+        MARKS[difficulty] // 2 if at else MARKS[difficulty],
         frozenset({shape, "at t" if at else "samples"}),
     )
 
@@ -290,7 +189,7 @@ def _bspline(rng: random.Random, difficulty: str, kind: tuple[int, bool]) -> Pra
         tuple(argv),
         f"For the B-spline of degree {degree} with control points {_listed(pts)} and an "
         f"open uniform knot vector, {task}.",
-        _MARKS[difficulty],
+        MARKS[difficulty],
         frozenset({f"degree {degree}", "at t" if at else "samples"}),
     )
 
@@ -367,7 +266,7 @@ def _kinds(topic: str, rng: random.Random) -> list[Any]:
 
 
 _MAKERS: dict[str, Callable[[random.Random, str, object], PracticeQuestion]] = {
-    "line": _line,  # type: ignore[dict-item]
+    "line": line_question,  # type: ignore[dict-item]
     "circle": _circle,  # type: ignore[dict-item]
     "ellipse": _ellipse,  # type: ignore[dict-item]
     "bezier": _bezier,  # type: ignore[dict-item]

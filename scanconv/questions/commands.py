@@ -148,7 +148,9 @@ def transform(words: list[str], inverse: bool) -> Solution:
     return api.transform(points, ops, inverse=inverse)
 
 
-def numbers_around(words: list[str], flag: str, param: str) -> tuple[list[Any], list[Any]]:
+def numbers_around(
+    words: list[str], flag: str, param: str, required: bool = True
+) -> tuple[list[Any], list[Any]]:
     """``X1 Y1 ... FLAG X Y ...`` (the words of ``inside`` and ``clip convex``): the numbers
     before ``flag`` and the numbers after it.
 
@@ -171,7 +173,7 @@ def numbers_around(words: list[str], flag: str, param: str) -> tuple[list[Any], 
             if isinstance(err, UsageError):
                 raise
             raise UsageError(f"Invalid value: {err}") from None
-    if not after:
+    if not after and required:
         raise UsageError(f"Missing option '{flag}' (give {flag} X Y ...)")
     return before, after
 
@@ -187,6 +189,20 @@ def clip_convex(words: list[str], normals: Any, ends: Any) -> Solution:
     return api.clip_convex(
         x1, y1, x2, y2, window, normals=_text(normals) or "outward", ends=_text(ends) or "exact"
     )
+
+
+def clip_polygon(words: list[str], window: Any, method: Any) -> Solution:
+    """``clip polygon``: the polygon's vertices, and the window as ``--window`` (a rectangle)
+    or ``--window-vertices X Y ...`` after them (a polygon), one or the other."""
+    vertices, corners = numbers_around(words, "--window-vertices", "window", required=False)
+    if corners and window is not None:
+        raise UsageError("give the window as --window or --window-vertices, not both")
+    if not corners and window is None:
+        raise UsageError(
+            "Missing option '--window' (give --window XMIN YMIN XMAX YMAX, or "
+            "--window-vertices X Y ... after the polygon)"
+        )
+    return api.clip_polygon(vertices, corners or window, method=method)
 
 
 def color(model: Any, values: list[str], to: Any, unit: bool, bits: Any) -> Solution:
@@ -230,6 +246,41 @@ def inside(words: list[str], rule: Any, boundary: Any) -> Solution:
     return api.inside(vertices, points, rule=_text(rule), boundary=_text(boundary))
 
 
+def char_storage(
+    count: Any,
+    width: Any,
+    height: Any,
+    packing: Any,
+    char: Any = None,
+    first: Any = None,
+    base: Any = None,
+) -> Solution:
+    return api.char_storage(
+        count,
+        width,
+        height,
+        packing=_text(packing),
+        char=char,
+        first=0 if first is None else first,
+        base=0 if base is None else _address(base),
+    )
+
+
+def _address(text: Any) -> int:
+    """A memory address as a user writes it: decimal (``4096``) or hexadecimal (``0x1000``).
+
+    >>> _address("0x1000"), _address("4096")
+    (4096, 4096)
+    """
+    s = str(text).strip().lower()
+    try:
+        return int(s[2:], 16) if s.startswith("0x") else int(s)
+    except ValueError:
+        raise InputError(
+            f"an address is a whole number or 0x hexadecimal, got {text!r}", "base"
+        ) from None
+
+
 def theory(topic: str, list_: bool = False) -> Solution:
     return theory_api(topic)
 
@@ -237,7 +288,8 @@ def theory(topic: str, list_: bool = False) -> Solution:
 BODIES: dict[str, Body] = {
     fn.__name__: fn
     for fn in (
-        quantize, parametric_circle, bezier, bspline, continuity, local_control, transform, color, theory, clip_convex, dither_ordered, inside,
+        quantize, parametric_circle, bezier, bspline, continuity, local_control, transform, color,
+        theory, clip_convex, clip_polygon, dither_ordered, inside, char_storage,
     )
 }  # fmt: skip
 """Each command's answer, by the command's function name (``parametric_circle``), for the

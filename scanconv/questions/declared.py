@@ -81,7 +81,6 @@ _ALL = (
     Command(("parametric", "custom"), "parametric.parametric_custom", figures=True),
     Command(("viewport",), "process.viewport"),
     Command(("clip", "line"), "process.clip_line"),
-    Command(("clip", "polygon"), "process.clip_polygon"),
     Command(("pipeline", "line"), "process.pipeline_line"),
     Command(("pipeline", "polygon"), "process.pipeline_polygon"),
     Command(("polygon",), "areas.polygon", figures=True),
@@ -106,7 +105,6 @@ _ALL = (
     Command(("thickline",), "syllabus.thick_line", name="thick_line"),
     Command(("char", "bitmap"), "syllabus.char_bitmap"),
     Command(("char", "stroke"), "syllabus.char_stroke"),
-    Command(("char", "storage"), "syllabus.char_storage", grid=False),
     Command(("image", "ramp"), "image.ramp", picture=True, origin=False, ignore_unknown=False),
 )
 

@@ -149,7 +149,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('inside',): Spec(('inside',), 'inside', (
         Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ... --points X Y ...'),
         Param('rule', ('--rule',), 'choice', default='both', choices=('both', 'even-odd', 'nonzero')),
-        Param('boundary', ('--boundary',), 'choice', default='inside', choices=('inside', 'outside')),
+        Param('boundary', ('--boundary',), 'choice', default='inside', choices=('inside', 'outside', 'left-bottom')),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('words', 'rule', 'boundary'), ignore_unknown=True),
     ('framebuffer',): Spec(('framebuffer',), 'framebuffer', (
@@ -264,8 +264,9 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('normals', ('--normals',), 'choice', choices=('outward', 'inward')),
         Param('ends', ('--ends',), 'choice', choices=('exact', 'truncated')),
         Param('midpoint', ('--midpoint',), 'choice', choices=('rounded', 'floor', 'exact')),
+        Param('stop', ('--stop',), 'choice', choices=('length', 'edge')),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('x1', 'y1', 'x2', 'y2', 'window', 'method', 'normals', 'ends', 'midpoint'), ignore_unknown=True),
+    ), own=('x1', 'y1', 'x2', 'y2', 'window', 'method', 'normals', 'ends', 'midpoint', 'stop'), ignore_unknown=True),
     ('clip', 'convex'): Spec(('clip', 'convex'), 'clip_convex', (
         Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 --window-vertices X Y X Y X Y ...'),
         Param('normals', ('--normals',), 'choice', choices=('outward', 'inward')),
@@ -273,11 +274,11 @@ SPECS: dict[tuple[str, ...], Spec] = {
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('words', 'normals', 'ends'), ignore_unknown=True),
     ('clip', 'polygon'): Spec(('clip', 'polygon'), 'clip_polygon', (
-        Param('vertices', (), 'number', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ...'),
-        Param('window', ('--window', '-w'), 'number', nargs=4, required=True),
+        Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ... [--window-vertices X Y X Y X Y ...]'),
+        Param('window', ('--window', '-w'), 'number', nargs=4),
         Param('method', ('--method', '-m'), 'choice', default='sutherland-hodgman', choices=('sutherland-hodgman', 'weiler-atherton')),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('vertices', 'window', 'method'), ignore_unknown=True),
+    ), own=('words', 'window', 'method'), ignore_unknown=True),
     ('dither', 'threshold'): Spec(('dither', 'threshold'), 'dither_threshold', (
         Param('image', ('--image', '-i'), 'text', required=True),
         Param('top', ('--top',), 'number', default=255),
@@ -310,8 +311,9 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('rows', ('--rows', '-r'), 'text'),
         Param('at', ('--at',), 'number', nargs=2, default=(0, 0)),
         Param('scale', ('--scale',), 'number', default=1),
+        Param('bit_order', ('--bit-order',), 'choice', default='msb', choices=('msb', 'lsb')),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('char', 'rows', 'at', 'scale'), ignore_unknown=True),
+    ), own=('char', 'rows', 'at', 'scale', 'bit_order'), ignore_unknown=True),
     ('char', 'stroke'): Spec(('char', 'stroke'), 'char_stroke', (
         Param('char', (), 'text', required=True, metavar='CHAR'),
         Param('at', ('--at',), 'number', nargs=2, default=(0, 0)),
@@ -324,8 +326,11 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('width', (), 'number', required=True, metavar='WIDTH'),
         Param('height', (), 'number', required=True, metavar='HEIGHT'),
         Param('packing', ('--packing',), 'choice', default='rows', choices=('rows', 'columns', 'bits')),
+        Param('char', ('--char',), 'text'),
+        Param('first', ('--first',), 'number'),
+        Param('base', ('--base',), 'text'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('count', 'width', 'height', 'packing'), ignore_unknown=True),
+    ), own=('count', 'width', 'height', 'packing', 'char', 'first', 'base'), ignore_unknown=True),
     ('pipeline', 'line'): Spec(('pipeline', 'line'), 'pipeline_line', (
         Param('x1', (), 'number', required=True, metavar='x1'),
         Param('y1', (), 'number', required=True, metavar='y1'),

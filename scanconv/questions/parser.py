@@ -1,7 +1,7 @@
 """Parsing a question: scanconv's own arguments (``line 2 2 10 6 --algo dda``) read against
 the command's grammar (:mod:`.grammar_table`) into a :class:`CommandLine`, without the
 command line's parser, but as it reads them: the same words, the same defaults and the same
-messages (``tests/test_questions_api.py`` holds the two side by side)."""
+messages (``tests/test_questions_files.py`` holds the two side by side)."""
 
 from __future__ import annotations
 

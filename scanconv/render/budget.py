@@ -444,7 +444,7 @@ diagnosis: 40 files of 5,000 rows against 9,999 question rows took 82 s)."""
 def check_batch(sizes: Sequence[int], question: Solution | int) -> None:
     """Refuse a batch of files (their sizes in bytes) beyond :data:`BATCH_FILES` or
     :data:`BATCH_SECONDS` of marking against ``question`` (its Solution, whose rows are
-    counted up to :data:`~scanconv.marking.mark.MAX_QUESTION_ROWS`, or that count), before
+    counted up to :data:`~scanconv.marking.limits.MAX_QUESTION_ROWS`, or that count), before
     any file is read. A file's rows are estimated from its size (a row is at least 8 bytes,
     at most :data:`~scanconv.marking.student_table.MAX_TABLE_ROWS`).
 

@@ -2,7 +2,7 @@
 
 CSV is the step table only, one header row of unique column names; a pixel column becomes two
 columns ``x`` and ``y`` (``plot_x`` and ``plot_y`` next to the algorithm's own coordinates,
-:func:`pixel_names`). JSON is one object (documented in the README, "JSON output")::
+:func:`pixel_names`). JSON is one object (documented in docs/formats.md, "JSON output")::
 
     {"primitive": "line", "algorithm": "bresenham", "title": ..., "given": {...},
      "derived": {...}, "working": [...], "notes": [...], "columns": [...],

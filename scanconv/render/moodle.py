@@ -118,12 +118,25 @@ def marks_notice(q: QuizQuestion) -> str | None:
     >>> from scanconv.render.lms import GapTable
     >>> t = GapTable("t", ("a",), (((Gap("number", ("1",)),), (Gap("number", ("2",)),)),))
     >>> marks_notice(QuizQuestion("Q1 line", "w", (), (t,), "", 1))
-    'Q1 line to 1 (it has 2 blanks)'
+    'Q1 (line) to 1 (it has 2 blanks)'
+    >>> marks_notice(QuizQuestion("Q3 2D transformation: rotate by 90 degrees about (2, 1)",
+    ...                           "w", (), (t,), "", 1))
+    'Q3 (2D transformation: rotate by 90 degrees about ...) to 1 (it has 2 blanks)'
     """
     blanks = _blanks(q)
     if q.marks is None or not blanks or _carried(blanks, q.marks):
         return None
-    return f"{q.name.partition(' ')[0]} {q.name.partition(' ')[2][:30]} to {q.marks} (it has {blanks} blanks)"
+    number, _, title = q.name.partition(" ")
+    return f"{number} ({_shortened(title)}) to {q.marks} (it has {blanks} blanks)"
+
+
+def _shortened(title: str, most: int = 48) -> str:
+    """A question's title in a notice: whole, or cut at a word (never inside one) with "...",
+    so that it never reads as other words ("rotate by 9" for "rotate by 90")."""
+    if len(title) <= most:
+        return title
+    cut = title[: most + 1].rsplit(" ", 1)[0] if " " in title[:most] else title[:most]
+    return cut.rstrip(" ,;:") + " ..."
 
 
 def _cell(pieces: Sequence[Piece], weight: Iterator[int]) -> str:

@@ -4,7 +4,7 @@
 and its parameter names) and returns the :class:`Work` of its answer: the rows of its step
 table (or the cells of its matrix), the method whose row cost applies and the parameter that
 makes it large. Every library function is either in :data:`ESTIMATES` or in :data:`BOUNDED`
-with the reason its answer is small whatever its arguments (``tests/test_budget_unified.py``
+with the reason its answer is small whatever its arguments (``tests/test_budget_entry_points.py``
 walks every command and function). The estimates only need to be close and never much below
 (an ellipse's rows are counted from its region boundary); an argument the estimate cannot read
 is left to the function's own validation.

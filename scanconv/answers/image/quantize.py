@@ -81,7 +81,7 @@ def quantization_rows(bits: int, quantizer: Quantizer | None = None) -> Iterator
     levels = 1 << bits
     # quantization_rows(3) -> (0, '000', 'Black'), (1, '001', 'Very Dark Gray'), ... (7, '111', 'White')
     # 2^24 rows at most: the columns are made by C-level map/zip over shared prefixes, the
-    # values those of gray_name and format(k, "0{bits}b") (tests/test_quantize_fast.py)
+    # values those of gray_name and format(k, "0{bits}b") (tests/test_image_quantize_table.py)
     rows = zip(range(levels), _codes(bits), _gray_names(levels), strict=True)
     if quantizer is None:
         return rows

@@ -74,8 +74,24 @@ def line_style_solution(
     skipped = tuple(s.pixel for s in steps if not s.extra[1])
     n = len(m.bits)
     shown = "".join(map(str, m.bits))
+    written = shown if bits == "msb" else shown[::-1]
+    hex_digits = -(-n // 4)
+    as_hex = f"0x{int(written, 2):0{hex_digits}X}"
+    first, last = (n - 1, 0) if bits == "msb" else (0, n - 1)
+    written_q = (
+        worked(
+            "written",
+            written,
+            f"\\text{{mask as written}} = {written} = {as_hex} "
+            f"\\ (\\text{{bit {n - 1} on the left, bit 0 on the right}})",
+        ),
+    )
     derived = [
-        worked("mask", shown, f"\\text{{mask (in the order applied)}} = {shown}"),
+        worked(
+            "mask",
+            shown,
+            f"\\text{{read {bits} first (bit {first} to bit {last}): in the order applied}} = {shown}",
+        ),
         rule(
             "bit",
             f"\\text{{pixel }} k \\text{{ uses bit }} \\lfloor k / {m.repeat} \\rfloor \\bmod {n}",
@@ -92,8 +108,8 @@ def line_style_solution(
     return Solution(
         primitive="line",
         algorithm="style",
-        title=f"Line style {shown} (x{m.repeat}): ({ends[0]}, {ends[1]}) to ({ends[2]}, {ends[3]})",
-        given=tuple(_given(ends)),
+        title=f"Line style {written} (read {bits} first, x{m.repeat}): ({ends[0]}, {ends[1]}) to ({ends[2]}, {ends[3]})",
+        given=(*_given(ends), *written_q),
         derived=tuple(derived),
         columns=(
             heading("k", "k"),
@@ -110,6 +126,7 @@ def line_style_solution(
             f"Bits read {bits} first (msb: as written; lsb: OpenGL's glLineStipple, bit 0 "
             f"first), each bit for {m.repeat} pixel(s); the centre line is Bresenham's, from "
             "the end with the smaller major coordinate.",
+            "bit: the bit's place in the order applied (0 first); value: that bit.",
         ),
         marks=skipped,
         marks_label="skipped pixel",

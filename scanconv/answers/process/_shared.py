@@ -239,3 +239,20 @@ def clip_figure(
     if not fits(box):
         return ()
     return (PixelFigure(tuple(outline(shape)), tuple(rect_outline(win)), box, legend, title),)
+
+
+def window_figure(
+    kept: Sequence[NumPoint], window: Sequence[NumPoint], others: Sequence[NumPoint], what: str
+) -> tuple[PixelFigure, ...]:
+    """A polygon window's border as ``o`` and a clipped shape's outline as ``#`` (rounded half
+    up): :func:`clip_figure` for a window of any shape."""
+    win = [(round_half_up(x), round_half_up(y)) for x, y in window]
+    shape = [(round_half_up(x), round_half_up(y)) for x, y in kept]
+    box = grid_bbox(win, shape, [(round_half_up(x), round_half_up(y)) for x, y in others])
+    legend = f"# = {what}, o = window edge, @ = both"
+    title = f"The window (o) and the {what} (#), rounded half up:"
+    if not kept:
+        title = f"The window (o); the {what} is empty:"
+    if not fits(box):
+        return ()
+    return (PixelFigure(tuple(outline(shape)), tuple(outline(win)), box, legend, title),)

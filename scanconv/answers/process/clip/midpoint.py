@@ -57,6 +57,7 @@ def midpoint_clip_solution(
     window: tuple[Number, ...] | list[Number],
     *,
     midpoint: str = "rounded",
+    stop: str = "length",
 ) -> Solution:
     """Midpoint subdivision of ``(x1, y1)``-``(x2, y2)`` against ``(xmin, ymin, xmax, ymax)``.
 
@@ -74,7 +75,7 @@ def midpoint_clip_solution(
     if not (w[0] < w[2] and w[1] < w[3]):
         raise InputError("the window needs xmin < xmax and ymin < ymax", "window")
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
-    pieces = list(subdivide(p1, p2, w, midpoint))
+    pieces = list(subdivide(p1, p2, w, midpoint, stop))
     parts = visible(pieces)
     how = {
         "rounded": r"\text{rounded half up}",
@@ -103,12 +104,31 @@ def midpoint_clip_solution(
             ),
             rule("split", f"\\text{{else split at }} P_m = ((x_1 + x_2)/2, (y_1 + y_2)/2), {how}"),
             rule("stop", r"\text{a piece one unit long keeps its inside end}"),
+            *(
+                (
+                    rule(
+                        "edge",
+                        r"\text{a piece from a point on an edge to a point beyond that edge: "
+                        r"the point is the clipped end}",
+                    ),
+                )
+                if stop == "edge"
+                else ()
+            ),
             worked(
                 "visible", [[list(a), list(b)] for a, b in parts], f"\\text{{visible: {shown}}}"
             ),
         ),
         notes=(
             f"Midpoints {midpoint} (rounded: half up; floor: (a + b) >> 1; exact: fractions).",
+            "Stop rule: "
+            + (
+                "edge (a midpoint on the window's edge is the clipped end: the piece beyond it "
+                "is not split further; length, the other rule, splits until one unit long)."
+                if stop == "edge"
+                else "length (split until decided or one unit long; edge, the other rule, "
+                "stops where a midpoint lands on the window's edge)."
+            ),
             "Region codes are TBRL: top, bottom, right, left, 1 where the point is beyond that "
             "edge; the window's edges are inside.",
         ),

@@ -13,7 +13,7 @@ from ....algorithms.nll import EDGE_OF, REGION_NAMES, NLLResult, nicholl_lee_nic
 from ....core.numeric import Number, fmt_paren, fmt_short, normalize
 from ....core.records import Quantity, Solution, Table, heading, rule, worked
 from .._shared import check_rect, clip_figure, factor, point_quantity, pt, rect_quantity
-from .rectangle import clipped_quantity, code_reason
+from ._shared import clipped_quantity, code_reason
 
 _LIMIT = {"L": "x_{\\min}", "R": "x_{\\max}", "B": "y_{\\min}", "T": "y_{\\max}"}
 

@@ -37,6 +37,7 @@ from .._shared import (
     rect_quantity,
     rect_text,
 )
+from ._shared import clipped_quantity, code_reason
 
 if TYPE_CHECKING:
     from . import cyrus_beck, nll
@@ -64,21 +65,6 @@ def code_text(code: int) -> str:
     '1010'
     """
     return f"{code:04b}"
-
-
-def code_reason(p: Point, w: Rect) -> str:
-    """Why a point has its code: ``y = 9 > ymax = 8 (T)``; ``inside`` for 0000."""
-    x, y = p
-    why = []
-    if y > w[3]:
-        why.append(f"y = {fmt_short(y)} > ymax = {fmt_short(w[3])} (T)")
-    if y < w[1]:
-        why.append(f"y = {fmt_short(y)} < ymin = {fmt_short(w[1])} (B)")
-    if x > w[2]:
-        why.append(f"x = {fmt_short(x)} > xmax = {fmt_short(w[2])} (R)")
-    if x < w[0]:
-        why.append(f"x = {fmt_short(x)} < xmin = {fmt_short(w[0])} (L)")
-    return ", ".join(why) if why else "inside (on an edge counts as inside)"
 
 
 def trivial_tests(c1: int, c2: int) -> str:
@@ -375,23 +361,6 @@ def _solution_parts(
     seg = sol.data["clipped"]
     segment = None if seg is None else ((seg[0][0], seg[0][1]), (seg[1][0], seg[1][1]))
     return list(sol.derived[:-1]), list(sol.tables), segment
-
-
-def clipped_quantity(seg: tuple[Point, Point] | None) -> Quantity:
-    """The last line of a clipping answer: the clipped segment, or that it is rejected."""
-    if seg is None:
-        return Quantity(
-            "clipped",
-            None,
-            "the segment is rejected: no part of it is inside the window",
-            r"\text{rejected}",
-        )
-    return Quantity(
-        "clipped",
-        [list(seg[0]), list(seg[1])],
-        f"clipped segment: {pt_approx(seg[0])} to {pt_approx(seg[1])}",
-        f"\\text{{clipped segment: }} {pt(seg[0])} \\text{{ to }} {pt(seg[1])}",
-    )
 
 
 def clip_line_solution(

@@ -1,5 +1,5 @@
 """The worked answer of Sutherland–Hodgman polygon clipping against a closed rectangular
-window: one table per window edge (its input vertices, each polygon edge's case and output),
+window, or any convex one (a triangle, a hexagon: edge by edge in the window's order): one table per window edge (its input vertices, each polygon edge's case and output),
 the clipped polygon and its area, and the degenerate edges a concave polygon leaves.
 """
 
@@ -19,6 +19,12 @@ from ....algorithms.clipping import (
     polygon_area,
     sutherland_hodgman,
 )
+from ....algorithms.window_clip import (
+    WindowEdge,
+    convex_window,
+    overlapping_window_edges,
+    sutherland_hodgman_window,
+)
 from ....core.checks import InputError
 from ....core.numeric import Number, fmt_short, normalize
 from ....core.records import Column, Quantity, Solution, Table
@@ -30,6 +36,7 @@ from .._shared import (
     pt,
     rect_quantity,
     rect_text,
+    window_figure,
 )
 
 MAX_VERTICES = 100
@@ -65,26 +72,11 @@ def check_vertices(coords: Sequence[Number]) -> tuple[Point, ...]:
     return vertices
 
 
-def polygon_parts(
-    vertices: Sequence[Point], w: Rect
-) -> tuple[list[Quantity], list[Table], tuple[Point, ...], list[str]]:
-    """The working, the per-edge tables, the clipped polygon and the notes of a
-    Sutherland–Hodgman run (for :mod:`.pipeline` too)."""
-    stages = sutherland_hodgman(vertices, w)
-    final = stages[-1].outputs
-    convex = is_convex(vertices)
-    derived = [
-        Quantity(
-            "convex",
-            convex,
-            f"the polygon is {'convex' if convex else 'concave'}",
-            f"\\text{{the polygon is {'convex' if convex else 'concave'}}}",
-        )
-    ]
-    tables = []
+def _stage_parts(stages: Sequence[Any], line_of: Any) -> tuple[list[Quantity], list[Table]]:
+    """Each stage's output (working) and its table: the polygon edges' cases and outputs."""
+    derived, tables = [], []
     for st in stages:
-        value = boundary(st.edge, w)
-        line = f"{_EDGE_LINE[st.edge]} = {fmt_short(value)}"
+        line = line_of(st.edge)
         derived.append(
             Quantity(
                 f"after_{st.edge}",
@@ -107,41 +99,75 @@ def polygon_parts(
                 rows,
             )
         )
+    return derived, tables
+
+
+def _convex_quantity(vertices: Sequence[Point]) -> tuple[bool, Quantity]:
+    convex = is_convex(vertices)
+    word = "convex" if convex else "concave"
+    return convex, Quantity(
+        "convex", convex, f"the polygon is {word}", f"\\text{{the polygon is {word}}}"
+    )
+
+
+def _result(vertices: Sequence[Point], final: Sequence[Point]) -> list[Quantity]:
     area_in, area_out = (
         abs(polygon_area(vertices)),
         abs(polygon_area(final)) if final else Fraction(0),
     )
-    derived.append(
+    return [
         Quantity(
             "clipped",
             [list(p) for p in final],
             f"clipped polygon ({len(final)} vertices): {pts(final)}",
             f"\\text{{clipped polygon ({len(final)} vertices): }} {pts(final)}",
-        )
-    )
-    derived.append(
+        ),
         Quantity(
             "area",
             normalize(area_out),
             f"area = |shoelace sum|/2 = {fmt_short(area_out)} (the polygon's own area: {fmt_short(area_in)})",
             f"\\text{{area}} = {fmt_short(area_out)} \\quad (\\text{{before: }} {fmt_short(area_in)})",
-        )
+        ),
+    ]
+
+
+_CASES_NOTE = (
+    "For each polygon edge V1 -> V2: in -> in outputs V2; in -> out the crossing I; out -> in I "
+    "and V2; out -> out nothing. On the edge counts as inside, and a crossing that is the "
+    "vertex itself is output once."
+)
+
+
+def _concave_note(degenerate: Sequence[tuple[Point, Point]]) -> str:
+    extra = (
+        (" Here: " + "; ".join(f"{pt(a)} -> {pt(b)}" for a, b in degenerate) + ".")
+        if degenerate
+        else " Here the clipped part is in one piece, so there are none."
     )
+    return (
+        "The polygon is concave: where its clipped part falls into pieces, Sutherland-Hodgman still returns one polygon, joining the pieces by degenerate edges that run along the window boundary and back."
+        + extra
+    )
+
+
+def polygon_parts(
+    vertices: Sequence[Point], w: Rect
+) -> tuple[list[Quantity], list[Table], tuple[Point, ...], list[str]]:
+    """The working, the per-edge tables, the clipped polygon and the notes of a
+    Sutherland–Hodgman run (for :mod:`.pipeline` too)."""
+    stages = sutherland_hodgman(vertices, w)
+    final = stages[-1].outputs
+    convex, convex_q = _convex_quantity(vertices)
+    derived, tables = _stage_parts(
+        stages, lambda edge: f"{_EDGE_LINE[edge]} = {fmt_short(boundary(edge, w))}"
+    )
+    derived = [convex_q, *derived, *_result(vertices, final)]
     notes = [
         "The window edges are taken in the order left, right, bottom, top; each one's output is the next one's input.",
-        "For each polygon edge V1 -> V2: in -> in outputs V2; in -> out the crossing I; out -> in I and V2; out -> out nothing. On the edge counts as inside, and a crossing that is the vertex itself is output once.",
+        _CASES_NOTE,
     ]
-    degenerate = overlapping_edges(final, w) if final else ()
     if not convex:
-        extra = (
-            (" Here: " + "; ".join(f"{pt(a)} -> {pt(b)}" for a, b in degenerate) + ".")
-            if degenerate
-            else " Here the clipped part is in one piece, so there are none."
-        )
-        notes.append(
-            "The polygon is concave: where its clipped part falls into pieces, Sutherland-Hodgman still returns one polygon, joining the pieces by degenerate edges that run along the window boundary and back."
-            + extra
-        )
+        notes.append(_concave_note(overlapping_edges(final, w) if final else ()))
     return derived, tables, final, notes
 
 
@@ -173,4 +199,50 @@ def clip_polygon_solution(coords: Sequence[Number], window: Sequence[Number]) ->
             if final
             else [],
         },
+    )
+
+
+def _window_line(edge: WindowEdge) -> str:
+    return f"from {pt(edge.a)} to {pt(edge.b)}"
+
+
+def clip_polygon_window_solution(
+    coords: Sequence[Number], window_coords: Sequence[Number]
+) -> Solution:
+    """The worked answer of Sutherland–Hodgman clipping of the polygon ``x1 y1 x2 y2 ...``
+    against the convex window ``x1 y1 x2 y2 x3 y3 ...`` (a triangle, a hexagon, ...).
+
+    >>> sol = clip_polygon_window_solution([0, 0, 4, 0, 4, 4, 0, 4], [1, -1, 6, 4, 1, 4])
+    >>> sol.derived[-2].text
+    'clipped polygon (5 vertices): (4, 4), (1, 4), (1, 0), (2, 0), (4, 2)'
+    """
+    vertices = check_vertices(coords)
+    window, flipped = convex_window(check_points(window_coords, "window"))
+    stages = sutherland_hodgman_window(vertices, window)
+    final = stages[-1].outputs
+    convex, convex_q = _convex_quantity(vertices)
+    derived, tables = _stage_parts(stages, _window_line)
+    notes = [
+        "The window's edges C1 -> C2, C2 -> C3, ... are taken in order, counter-clockwise; each "
+        "one's output is the next one's input. A point is inside an edge when it is on the "
+        "window's side of its line or on it: (C2 - C1) x (P - C1) >= 0.",
+        _CASES_NOTE,
+    ]
+    if flipped:
+        notes.append("The window was given clockwise: its vertices are taken in reverse order.")
+    if not convex:
+        notes.append(_concave_note(overlapping_window_edges(final, window) if final else ()))
+    return Solution(
+        primitive="clip",
+        algorithm="sutherland-hodgman",
+        title=f"Sutherland-Hodgman polygon clipping: {len(vertices)} vertices, a convex window of {len(window)}",
+        given=(
+            *(point_quantity(f"V{i}", v) for i, v in enumerate(vertices, 1)),
+            *(point_quantity(f"C{i}", c) for i, c in enumerate(window, 1)),
+        ),
+        derived=(convex_q, *derived, *_result(vertices, final)),
+        notes=tuple(notes),
+        tables=tuple(tables),
+        figures=window_figure(final, window, vertices, "clipped polygon"),
+        data={"clipped": [list(p) for p in final], "window": [list(c) for c in window]},
     )

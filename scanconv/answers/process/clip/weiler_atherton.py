@@ -20,16 +20,19 @@ def _points(coords: Sequence[Number], name: str) -> list[tuple[Number, Number]]:
     return [(normalize(coords[i]), normalize(coords[i + 1])) for i in range(0, len(coords), 2)]
 
 
+_KIND = {"in": "in (entering)", "out": "out (leaving)", "touch": "touch (no switch)"}
+
+
 def _list_table(title: str, prefix: str, entries: Sequence[Entry]) -> Table:
     def rows() -> Iterator[tuple[Any, ...]]:
-        n = 0
         for e in entries:
             if e.crossing is None:
-                n += 1
-                yield (f"{prefix}{n}", pt(e.point), "vertex")
+                yield (f"{prefix}{e.vertex}", pt(e.point), "vertex")
             else:
-                kind = "in (entering)" if e.label == "in" else "out (leaving)"
-                yield (f"I{e.crossing + 1}", pt(e.point), kind)
+                name = f"I{e.crossing + 1}"
+                if e.vertex is not None:
+                    name += f" = {prefix}{e.vertex}"
+                yield (name, pt(e.point), _KIND[e.label])
 
     return Table(
         title,
@@ -61,6 +64,14 @@ def weiler_atherton_solution(subject: Sequence[Number], clip: Sequence[Number]) 
         arrow = " \\to ".join((*walk, walk[0]))
         derived.append(worked(f"walk{i}", list(walk), f"\\text{{walk {i}: }} {arrow}"))
     notes = ["Both polygons are walked counter-clockwise."]
+    if any(e.label == "touch" for e in r.subject):
+        notes.append(
+            "Where the polygons only touch (a vertex on the other's edge, an edge along "
+            "another), the point is inserted as a touch: the walk does not switch lists there. "
+            "Each point's label is read from the subject's pieces on either side of it: a piece "
+            "is inside when its midpoint is inside the clip polygon (or on its edge, running "
+            "the same way)."
+        )
     if r.reversed:
         notes.append(f"Given clockwise and reversed: the {' and '.join(r.reversed)} polygon.")
     if not r.walks:

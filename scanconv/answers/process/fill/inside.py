@@ -55,7 +55,9 @@ def _edge_table(vertices: Sequence[io.Point], point: io.Point, number: int) -> T
     )
 
 
-def _verdicts_table(verdicts: Sequence[io.Verdict], rule_name: str, n: int) -> Table:
+def _verdicts_table(
+    verdicts: Sequence[io.Verdict], rule_name: str, n: int, boundary: str = "inside"
+) -> Table:
     def word(v: bool) -> str:
         return "inside" if v else "outside"
 
@@ -64,7 +66,7 @@ def _verdicts_table(verdicts: Sequence[io.Verdict], rule_name: str, n: int) -> T
             on = "-" if v.on_boundary is None else f"on {_edge_name(v.on_boundary, n)}"
             row: list[Any] = [f"P{i} {pt(v.point)}", on, v.crossings]
             parity = "odd" if v.crossings % 2 else "even"
-            why = "boundary" if v.on_boundary is not None else parity
+            why = "boundary" if v.on_boundary is not None and boundary != "left-bottom" else parity
             if rule_name != "nonzero":
                 row.append(f"{word(v.even_odd)} ({why})")
             row.append(v.winding)
@@ -157,7 +159,13 @@ def inside_solution(
     derived = _INSIDE_RULES
     notes = (
         *_INSIDE_NOTES[:1],
-        f"A point on the boundary is {boundary} (found exactly before counting).",
+        (
+            "A point on the boundary is as the count gives (left-bottom): on a left or bottom "
+            "edge inside, on a right or top edge outside, the scan-line fill's rule for pixels "
+            "on an edge."
+            if boundary == "left-bottom"
+            else f"A point on the boundary is {boundary} (found exactly before counting)."
+        ),
         *_INSIDE_NOTES[1:],
     )
     figures = _points_figure(pts, tested, verdicts)
@@ -170,7 +178,7 @@ def inside_solution(
         notes=tuple(notes),
         tables=(
             *(_edge_table(pts, p, i) for i, p in enumerate(tested, 1)),
-            _verdicts_table(verdicts, rule_name, n),
+            _verdicts_table(verdicts, rule_name, n, boundary),
         ),
         figures=figures,
         geometry={

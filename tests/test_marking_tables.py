@@ -217,7 +217,7 @@ CELLS = st.one_of(
 )
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(
     question=st.sampled_from([CB_Q, NLL_Q, MID_Q, DITHER_Q, "framebuffer 1280 1024 8",

@@ -1,4 +1,4 @@
-"""Escaping defects of the attack report (issue 29, item 2): D3, D4, D8, D9 and D19.
+"""Hostile text read back as each output's reader reads it (attack report D3, D4, D8, D9, D19).
 
 Student file names (``check --batch``), question text and formula comments reach every format;
 each test feeds one hostile text through the command a teacher runs and reads the output as its
@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+from scanconv.render import formats
 from scanconv.render.latex import _cell
 from tests.external import pandoc, typeset
 from tests.helpers import run
@@ -180,7 +181,7 @@ def test_score_sheet_carries_no_control_character(tmp_path: Path, fmt: str) -> N
 
 # --- D19: bidirectional overrides and formula comments ----------------------------------------
 
-SHEET_FORMATS = ("markdown", "plain", "latex", "json", "html")
+SHEET_FORMATS = tuple(f for f in formats("document") if f in formats("answer"))
 
 
 @pytest.mark.parametrize("fmt", SHEET_FORMATS)
@@ -195,7 +196,7 @@ def test_bidi_override_never_reaches_a_sheet(tmp_path: Path, fmt: str, kind: str
         assert BIDI in json.loads(r.out)["title"]  # escaped, the data unchanged
 
 
-@pytest.mark.parametrize("fmt", ("markdown", "plain", "latex", "json", "html", "rich", "csv"))
+@pytest.mark.parametrize("fmt", formats("answer"))
 def test_bidi_override_in_a_formula_comment(fmt: str) -> None:
     r = run("sample", f"x + y # {BIDI}abc", "--size", "3", "-L", "2", "-f", fmt)
     assert r.code == 0, r.err

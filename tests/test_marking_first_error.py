@@ -4,8 +4,8 @@ A right table (Bresenham's line, the midpoint circle, written here from the note
 by scanconv) gets one slip in one cell; ``check`` marks it, and every value the sentence calls
 expected ("the pixel should be (3, 3)") is the value the expected column shows for that row.
 A right cell is never called wrong: the row of a decision word slipped with the right pixel
-and next p is wrong in its decision only (issue 39 item 3: "the pixel should be (3, 2), not
-(3, 3)" beside an expected column showing (3, 3)).
+and next p is wrong in its decision only (never "the pixel should be (3, 2), not (3, 3)" beside an
+expected column showing (3, 3)).
 """
 
 from __future__ import annotations

@@ -194,7 +194,7 @@ def fake_pdflatex(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("PATH", f"{bin_dir}{os.pathsep}{os.environ['PATH']}")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.usefixtures("fake_pdflatex")
 def test_sheet_pdf_and_output_are_written_together_or_not_at_all(tmp_path: Path) -> None:
     question = _file(tmp_path, QUESTIONS)
@@ -207,7 +207,7 @@ def test_sheet_pdf_and_output_are_written_together_or_not_at_all(tmp_path: Path)
     assert pdf.read_bytes().startswith(b"%PDF") and (tmp_path / "x.md").exists()
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.usefixtures("fake_pdflatex")
 def test_practice_writes_every_file_or_none(tmp_path: Path) -> None:
     out = [
@@ -232,7 +232,7 @@ def test_practice_writes_every_file_or_none(tmp_path: Path) -> None:
     ]
 
 
-# --- the question language in the library (issue 26, item 4) --------------------------------
+# --- the question language in the library ------------------------------------------------------
 
 #: Questions, right and wrong, that the library must read exactly as the command line does.
 PARITY = [
@@ -328,7 +328,7 @@ def test_the_library_reads_a_question_as_the_command_line_does(question: str) ->
     assert (code, text) == (cli.code, expected)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_grammar_is_the_command_lines_declarations() -> None:
     from scanconv.cli.command import SHARED as CLI_SHARED
     from scanconv.cli.grammar import declared
@@ -387,7 +387,7 @@ def test_every_command_of_the_grammar_has_an_answer() -> None:
         inspect.signature(body).bind(**dict.fromkeys(spec.own))  # takes them all
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_questions_are_answered_without_the_command_line() -> None:
     code = (
         "import sys, scanconv\n"

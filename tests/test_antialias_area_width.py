@@ -1,4 +1,4 @@
-"""Area sampling of a line of width w (issue 30, item 7): measured along the minor axis (the
+"""Area sampling of a line of width w: measured along the minor axis (the
 default, a parallelogram) or perpendicular to the line (a rectangle); against a published
 exercise and an independent clipping of the strip to every pixel square."""
 
@@ -63,8 +63,8 @@ def test_codeshive_exercise_is_reproduced():
 TRIPLES = [(3, 4), (4, 3), (5, 12), (-8, 6), (6, -8), (0, 5), (-4, -3)]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(deadline=None, max_examples=60)
 @given(
     st.sampled_from(TRIPLES),
@@ -86,7 +86,7 @@ def test_perpendicular_strip_equals_clipping_each_pixel(d, x1, y1, w):
     assert sum(ours.values()) == w * length
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=60)
 @given(
     *(st.integers(-6, 6) for _ in range(4)),
@@ -141,7 +141,7 @@ def test_bad_widths_are_one_line_and_exit_2(args, word):
     assert r.code == 2 and not r.out and word in r.err and len(r.err.splitlines()) == 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_budget_counts_the_width():
     from scanconv.render.work import estimate
 

@@ -1,4 +1,4 @@
-"""The table of contents is a block of the document (issue 26): :class:`Contents`, mapped by
+"""The table of contents is a block of the document: :class:`Contents`, mapped by
 every format like any other block, for the exam book and for ``sheet --contents``. The exam
 command composes nothing itself."""
 

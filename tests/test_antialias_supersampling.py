@@ -1,4 +1,4 @@
-"""Hearn & Baker's supersampling of a line (issue 30, item 7): Bresenham on a 3 x 3 sub-pixel
+"""Hearn & Baker's supersampling of a line: Bresenham on a 3 x 3 sub-pixel
 grid, its decision table, and each pixel's intensity from its count of sub-pixels; against two
 published worked examples, Hearn & Baker's own description, and independent computations."""
 
@@ -62,7 +62,7 @@ def test_hearn_bakers_stated_levels_appear_on_a_line_from_10_20():
 pixels_ = st.integers(-8, 8)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=150)
 @given(pixels_, pixels_, pixels_, pixels_, st.sampled_from([1, 3, 5]))
 def test_centre_walk_is_bresenham_on_the_scaled_line(x1, y1, x2, y2, n):
@@ -84,7 +84,7 @@ def test_centre_walk_is_bresenham_on_the_scaled_line(x1, y1, x2, y2, n):
     assert intensities(nine) == {p: F(k, n * n) for p, k in brute.items()}  # count / n²
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=150)
 @given(pixels_, pixels_, pixels_, pixels_, st.integers(1, 5))
 def test_span_walk_is_the_nearest_sub_row_and_fills_every_sub_column(x1, y1, x2, y2, n):

@@ -1,4 +1,4 @@
-"""The rest of the syllabus (issue 30) from end to end: each command of ``scanconv dither``,
+"""The image, fill and attribute commands from end to end: each command of ``scanconv dither``,
 ``halftone``, ``inside``, ``framebuffer``, ``linestyle``, ``thickline``, ``char`` and
 ``clip convex``, and the new conventions of ``line``, ``circle`` and ``clip line``, run as a
 student runs them: in every data format, its JSON values against the library's own answer

@@ -115,7 +115,7 @@ RANGES = [
 ]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("bits", [1, 2, 3, 5, 8, 10])
 @pytest.mark.parametrize(("lo", "hi", "integer", "recon"), RANGES)
 def test_rows_over_a_range_are_the_exact_formulas(bits, lo, hi, integer, recon):
@@ -134,7 +134,7 @@ def test_rows_over_a_range_are_the_exact_formulas(bits, lo, hi, integer, recon):
 # 13 and 14: one and two prefix digits before the 2^12 suffixes, and 8 and 16 whole thousands
 # of gray names; 15 (was 17: 4 times the rows, no case the others miss) three digits.
 # The 24-bit table is spot-checked below.
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @pytest.mark.parametrize("bits", [13, 14, 15])
 def test_rows_past_one_block_are_the_exact_table(bits):
     """Beyond 12 bits the codes are a prefix before 2^12 suffixes: every row checked."""
@@ -206,7 +206,7 @@ def test_csv_fast_path_is_taken_for_plain_cells():
     )
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_batches_larger_than_one_batch_keep_every_row():
     bits = 13  # 8192 rows: two whole batches of the renderer and more
     batch = batch_rows(5)  # a quantizer's table: k, code, and three more columns

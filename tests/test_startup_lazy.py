@@ -53,7 +53,7 @@ def test_a_private_or_unknown_name_is_an_attribute_error_without_reading_the_stu
         scanconv.nope  # noqa: B018
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_a_lazy_module_is_imported_on_first_read_only():
     code = (
         "import sys\n"
@@ -110,7 +110,7 @@ def _by_patterns(s: str) -> str:
 _ALPHABET = "".join(_FROM_SUB) + "".join(_FROM_SUP) + "pxy12 +-=()ΔεθΣ·≤\x1b\u202e\x7f\t"
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=400, deadline=None)
 @given(st.text(alphabet=_ALPHABET, max_size=24))
 def test_ascii_text_is_what_the_patterns_gave(s):
@@ -133,7 +133,7 @@ def _outcome(text: str) -> object:
         return str(err)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(max_examples=400, deadline=None)
 @given(st.text(alphabet="0123456789+-./eE \u2212\u0662\u00b2x", max_size=8))
 def test_the_integer_shortcut_accepts_what_the_pattern_accepts(text):
@@ -159,7 +159,7 @@ def test_an_in_process_run_leaves_the_callers_collector_alone(capsys):
     assert capsys.readouterr().out.startswith("k,")
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_program_freezes_what_its_start_up_made():
     code = (
         "import gc, sys\n"

@@ -1,4 +1,4 @@
-"""Marking you can trust (issue 28): any layout, any heading, scanconv's own tables; one slip
+"""Marking by steps in any layout: any heading, scanconv's own tables; one slip
 costs one step.
 
 Every student table here was written by hand from the mistake it shows, and its score worked
@@ -399,7 +399,7 @@ def test_each_common_mistake_is_diagnosed(tmp_path, question, text, marks, words
     assert words in result["diagnosis"], result["diagnosis"]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_batch_csv_gives_each_file_its_single_run_score(tmp_path):
     folder = tmp_path / "class"
     folder.mkdir()

@@ -126,7 +126,7 @@ def test_an_unknown_document_format_names_the_tables_formats() -> None:
         assert ", ".join(formats("document")) in str(err.value)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_key_file_of_practice_goes_by_the_same_extension_map(tmp_path: Path) -> None:
     for ext in [e for f in formats("document") for e in FORMATS[f].extensions]:
         key = tmp_path / f"key{ext}"

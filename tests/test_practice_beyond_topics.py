@@ -1,4 +1,4 @@
-"""Practice on the syllabus topics added with issue 30 (scanconv.practice.beyond): line
+"""Practice on the topics beyond the notes' own (scanconv.practice.beyond): line
 attributes, characters, the midpoint line, anti-aliasing and NLL clipping: the same seed gives the same
 questions, every kind comes in as many questions, each is worded with its method and answered
 by scanconv, and the CLI writes a worksheet and its key."""

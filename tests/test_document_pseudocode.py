@@ -1,4 +1,4 @@
-"""The pseudocode of ``--algorithm`` (issue 26, item 2) is a :class:`Pseudocode` block, shown as
+"""The pseudocode of ``--algorithm`` is a :class:`Pseudocode` block, shown as
 a numbered code listing in every format, never as a table: not stepped through, not emptied
 into a worksheet's table, not marked, not asked in a quiz."""
 
@@ -107,7 +107,7 @@ def _count_lines(text: str, line: str) -> int:
     return sum(1 for x in text.splitlines() if x.rstrip() == line or x.rstrip() == "  " + line)
 
 
-@pytest.mark.slow  # over 50 ms a case (issue 29)
+@pytest.mark.slow  # over 50 ms a case
 @pytest.mark.parametrize("key", CASES)
 def test_each_format_shows_every_line_once_with_its_indentation(key: str) -> None:
     doc = document(_answer(key))

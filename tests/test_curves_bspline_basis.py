@@ -1,5 +1,5 @@
 """``bspline --basis --at t``: a B-spline basis given by its degree and knots alone, evaluated
-at one t with every Cox–de Boor step worked (issue 30, item 7); against a published table, an
+at one t with every Cox–de Boor step worked; against a published table, an
 independent recursive Cox–de Boor and the partition of unity."""
 
 from __future__ import annotations
@@ -102,7 +102,7 @@ def knots_and_t(draw):
     return degree, u, t
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=100)
 @given(knots_and_t())
 def test_every_value_equals_the_naive_recursion(case):
@@ -114,7 +114,7 @@ def test_every_value_equals_the_naive_recursion(case):
         assert value == cox_de_boor(u, i, d, t)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=100)
 @given(knots_and_t())
 def test_the_basis_sums_to_one_inside_the_domain(case):

@@ -1,4 +1,4 @@
-"""Wu's line conventions (issue 30, item 7): the end points at full intensity (Wu 1991, the
+"""Wu's line conventions: the end points at full intensity (Wu 1991, the
 default) or weighted by their fractional coverage (the widely copied version), and fractional
 end points; against a published table and an independent transcription of the pseudocode."""
 
@@ -83,7 +83,7 @@ def test_rosetta_code_table_is_reproduced():
     assert ours == published
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=100)
 @given(coords, coords, coords, coords)
 def test_coverage_ends_equal_the_pseudocode_transcribed(x1, y1, x2, y2):
@@ -109,8 +109,8 @@ def _covered(lo: Fraction, hi: Fraction, column: int) -> Fraction:
     return max(Fraction(0), min(hi, column + half) - max(lo, column - half))
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
-@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
+@pytest.mark.no_cover  # repeats covered lines: tracing tripled its CPU
 @settings(deadline=None, max_examples=100)
 @given(coords, coords, coords, coords)
 def test_each_columns_two_intensities_sum_to_its_coverage(x1, y1, x2, y2):
@@ -122,7 +122,7 @@ def test_each_columns_two_intensities_sum_to_its_coverage(x1, y1, x2, y2):
         assert s.extra[4] + s.extra[5] == 1
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 @settings(deadline=None, max_examples=100)
 @given(*(st.integers(-20, 20) for _ in range(4)))
 def test_full_ends_with_integer_points_are_wus_steps(x1, y1, x2, y2):

@@ -1,5 +1,5 @@
-"""Published examples of dithering and of the inside-outside test, reproduced (issue 30's
-"Done when"). Each source states its own algorithm; where it gives numbers they are checked
+"""Published examples of dithering and of the inside-outside test, reproduced.
+Each source states its own algorithm; where it gives numbers they are checked
 as printed, where it gives only the rule (no numeric worked example was found for ordered
 dither with the 4 x 4 Bayer matrix, nor for Floyd-Steinberg on a small matrix: docs/errata.md,
 N2) the rule is applied by hand here to a small image and scanconv must agree.
@@ -29,7 +29,7 @@ def _image(rows: tuple[tuple[int, ...], ...]) -> str:
     return "; ".join(" ".join(map(str, r)) for r in rows)
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_gatech_ordered_dither_rule_and_matrix() -> None:
     """http://www.cc.gatech.edu/gvu/multimedia/nsfmmedia/cware/graphics/notes/ragra/flpol/flpol05.html
     "i = x mod 4, j = y mod 4; then if I(x, y) > D(i, j) the point (x, y) is

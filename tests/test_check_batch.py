@@ -101,7 +101,7 @@ def test_the_batch_output_beside_the_folder_is_written(tmp_path: Path) -> None:
     assert _rows((tmp_path / "scores.csv").read_text())["a.csv"][1:3] == ["7", "8"]
 
 
-@pytest.mark.slow  # over 50 ms a case: outside the inner loop (issue 29)
+@pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_messages_stay_one_short_line(tmp_path: Path) -> None:
     """A heading of 20,000 columns, a JSON number of 5,000 digits: one line naming the file."""
     wide = tmp_path / "wide.csv"
