@@ -14,7 +14,6 @@ from ..algorithms.choices import (
     Tie,
     WuEnds,
 )
-from ..algorithms.circle_choices import P0, CircleMethod, EllipseP0, Loop, Update, XStep
 from ..core import lazy
 from ..core.declare import Arg, Opt
 from ..display import answers
@@ -38,6 +37,7 @@ from .params import (
 from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _pair
 
 if TYPE_CHECKING:
+    from ..algorithms import circle_choices
     from ..answers import compare as answers_compare
     from ..answers.primitives import circle as answers_circle
     from ..answers.primitives import ellipse as answers_ellipse
@@ -59,7 +59,9 @@ if TYPE_CHECKING:
         XStepName,
     )
     from ..core.records import Solution
-else:  # each command's answer module, loaded by its first call
+else:  # each command's answer module, loaded by its first call; the circle's choices when
+    # its declaration is read (a line's run needs none of them)
+    circle_choices = lazy.module("scanconv.algorithms.circle_choices")
     answers_circle = lazy.module("scanconv.answers.primitives.circle")
     answers_compare = lazy.module("scanconv.answers.compare")
     answers_ellipse = lazy.module("scanconv.answers.primitives.ellipse")
@@ -189,7 +191,7 @@ def circle(
     r: Annotated[NumberLike, Arg("The radius r (a whole number).", "R")],
     center: Annotated[PointLike, CENTER] = (0, 0),
     method: Annotated[
-        CircleMethod | CircleMethodName,
+        circle_choices.CircleMethod | CircleMethodName,
         Opt(
             "--method",
             "-m",
@@ -202,15 +204,16 @@ def circle(
     *,
     tie: Annotated[Tie | TieName | None, TIE] = None,
     p0: Annotated[
-        P0 | P0Name | None, Opt("--p0", help="midpoint: p0 printed as 1-r (integers) or 5/4-r.")
+        circle_choices.P0 | P0Name | None,
+        Opt("--p0", help="midpoint: p0 printed as 1-r (integers) or 5/4-r."),
     ] = None,
-    loop: Annotated[Loop | LoopName | None, LOOP] = None,
+    loop: Annotated[circle_choices.Loop | LoopName | None, LOOP] = None,
     update: Annotated[
-        Update | UpdateName | None,
+        circle_choices.Update | UpdateName | None,
         Opt("--update", help="midpoint: increments written with the new x or the old x."),
     ] = None,
     xstep: Annotated[
-        XStep | XStepName | None,
+        circle_choices.XStep | XStepName | None,
         Opt(
             "--xstep",
             help="bresenham: d updated before x += 1 (last, Bresenham's own) or after it "
@@ -327,10 +330,10 @@ def ellipse(
     ry: Annotated[NumberLike, Arg("The semi-axis ry along y (a whole number).", "RY")],
     center: Annotated[PointLike, CENTER] = (0, 0),
     *,
-    loop: Annotated[Loop | LoopName | None, LOOP] = None,
+    loop: Annotated[circle_choices.Loop | LoopName | None, LOOP] = None,
     tie: Annotated[Tie | TieName | None, TIE] = None,
     p0: Annotated[
-        EllipseP0 | EllipseP0Name | None,
+        circle_choices.EllipseP0 | EllipseP0Name | None,
         Opt(
             "--p0",
             help="Each region's first p: exact (quarters) or rounded as Hearn & Baker's code does, "

@@ -78,10 +78,6 @@ class DeclaredCommand(Command):
         self.__doc__ = help
         self._shared = shared
 
-    @property
-    def __wrapped__(self) -> Any:  # type: ignore[override]
-        return self.spec.answerer()
-
     @functools.cached_property
     def declared(self) -> tuple[Declared, ...]:
         return declared(self.spec.declaration())

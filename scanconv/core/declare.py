@@ -22,20 +22,24 @@ from collections.abc import Callable, Sequence
 from enum import Enum
 from fractions import Fraction
 from pathlib import Path
-from typing import Annotated, Any, NamedTuple, Union, get_args, get_origin
+from typing import Annotated, Any, Union, get_args, get_origin
 
 KINDS = ("number", "integer", "coordinate", "choice", "flag", "text")
 """How a word becomes a parameter's value: an exact number, a whole number, a number or the
 ``:`` between two point lists, one of an enum's values, a flag (no word), text."""
 
 
-class Arg(NamedTuple):
+class Arg:
     """A positional argument: its help, and its name in messages (``X1``; default the
     parameter's name). ``kind`` overrides the kind the type gives."""
 
-    help: str = ""
-    metavar: str | None = None
-    kind: str | None = None
+    __slots__ = ("help", "kind", "metavar")
+
+    def __init__(self, help: str = "", metavar: str | None = None, kind: str | None = None):
+        self.help, self.metavar, self.kind = help, metavar, kind
+
+    def __repr__(self) -> str:
+        return f"Arg({self.help!r}, {self.metavar!r})"
 
 
 class Opt:
@@ -91,21 +95,28 @@ class Opt:
         return tuple(n.split("/")[1] for n in self.names if "/" in n)
 
 
-class Declared(NamedTuple):
-    """One parameter of a command, as its library function declares it."""
+class Declared:
+    """One parameter of a command, as its library function declares it: its ``name``, its
+    ``meta`` (:class:`Arg` or :class:`Opt`), its ``kind`` (one of :data:`KINDS`), ``nargs``
+    (the words it takes; -1: all that are left), ``choices`` (a choice's enum, or its texts),
+    ``optional`` (whether ``None`` is a value: the library's default for it) and ``default``
+    (the function's; ``inspect.Parameter.empty``: required). A plain class: reading a
+    declaration at start-up builds no named-tuple class."""
 
-    name: str
-    meta: Arg | Opt
-    kind: str
-    """One of :data:`KINDS`."""
-    nargs: int
-    """How many words it takes (-1: all that are left)."""
-    choices: type[Enum] | tuple[str, ...] | None
-    """A choice's enum, or its texts."""
-    optional: bool
-    """Whether ``None`` is a value (the library's default for it)."""
-    default: Any
-    """The function's default (``inspect.Parameter.empty``: required)."""
+    __slots__ = ("choices", "default", "kind", "meta", "name", "nargs", "optional")
+
+    def __init__(
+        self,
+        name: str,
+        meta: Arg | Opt,
+        kind: str,
+        nargs: int,
+        choices: type[Enum] | tuple[str, ...] | None,
+        optional: bool,
+        default: Any,
+    ) -> None:
+        self.name, self.meta, self.kind, self.nargs = name, meta, kind, nargs
+        self.choices, self.optional, self.default = choices, optional, default
 
     @property
     def required(self) -> bool:

@@ -80,9 +80,9 @@ def answered(
     line = question if isinstance(question, CommandLine) else parser.parse(question)
     if document:
         check_in_document(*library_call(line.function, line.arguments))
-    for fmt in formats:
-        estimated(line, Format(fmt))
-    return line, solve(line)
+    for fmt in (*formats,) or (None,):  # none given: what no format prints
+        estimated(line, None if fmt is None else Format(fmt))
+    return line, _solve(line)
 
 
 def solve(line: CommandLine) -> Solution:
@@ -117,6 +117,11 @@ def solve(line: CommandLine) -> Solution:
     scanconv.core.checks.InputError: --degree: degree must satisfy 1 <= p <= n = 1 (n + 1 = 2 control points), got p = 3
     """
     estimated(line, None)  # before any work
+    return _solve(line)
+
+
+def _solve(line: CommandLine) -> Solution:
+    """:func:`solve` once the work is weighed."""
     declared = BY_FUNCTION.get(line.function)
     body = declared.answerer() if declared is not None else commands.BODIES[line.function]
     try:
