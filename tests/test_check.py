@@ -16,6 +16,7 @@ import csv
 import io
 import itertools
 import json
+import re
 import shutil
 from fractions import Fraction
 from pathlib import Path
@@ -612,3 +613,40 @@ def test_any_table_is_marked_or_refused_in_one_line(text, question):
     scored = [v for v in m.verdicts if v.row > 0]
     assert 0 <= m.right <= m.total <= len(scored)
     assert (m.first_error == "") == (m.right == m.total)
+
+
+@pytest.mark.slow  # a real process
+def test_check_echoes_the_question_as_typed(tmp_path: Path) -> None:
+    """Issue 39, item 8: a dither question came back as ``--image 10 200_ 60 90``, its quotes
+    lost and its ``;`` made ``_``. The echo is the question a shell reads back to the same
+    words (quoted where a word holds a space), in the text formats and in the JSON notes."""
+    import shlex
+
+    from tests.helpers import run_process
+
+    question = ["dither", "ordered", "--image", "10 200 60 90; 30 150 220 5", "--matrix", "2"]
+    table = run_process(*question, "--format", "csv").out
+    (tmp_path / "d.csv").write_text(table, encoding="utf-8")
+    for fmt in ("plain", "json"):
+        done = run_process("check", str(tmp_path / "d.csv"), "--", *question, "--format", fmt)
+        assert done.code == 0, done.err
+        echoed = re.search(r"against scanconv (.*?)\.(?:\"|$|\n)", done.out, re.MULTILINE)
+        assert echoed, done.out
+        assert shlex.split(echoed.group(1)) == question, echoed.group(1)
+
+
+@pytest.mark.slow  # a real process
+def test_the_notes_topic_9_circle_marked_against_bresenham_is_named(tmp_path: Path) -> None:
+    """Issue 39, item 8: a student who works the notes' Topic 9 circle (p = 1 - r, worked here
+    by hand for r = 5: p = -4, -1, 4, 3, 6) and is marked against Bresenham's d0 = 3 - 2r is
+    told which form it is, by the notes' own name for it."""
+    from tests.helpers import run_process
+
+    table = "k,x,y,p,decision\n0,0,5,-4,E\n1,1,5,-1,E\n2,2,5,4,SE\n3,3,4,3,SE\n4,4,3,6,\n"
+    (tmp_path / "t9.csv").write_text(table, encoding="utf-8")
+    done = run_process(
+        "check", str(tmp_path / "t9.csv"), "--", "circle", "5", "--method", "bresenham"
+    )
+    assert done.code == 0, done.err
+    diagnosis = next(ln for ln in done.out.splitlines() if "Diagnosis" in ln)
+    assert "Topic 9" in diagnosis and "p0 = 1 - r" in diagnosis and "d0 = 3 - 2r" in diagnosis

@@ -223,3 +223,43 @@ def test_cli_compare_circle():
     for bad in ("-3", "2.5", "x"):
         result = run("compare", "circle", bad)
         assert result.code == 2 and result.out == "" and result.err.count("\n") == 1
+
+
+def _notes_general_circle(r: int) -> dict[int, int]:
+    """The notes' general method as its algorithm box prints it (Topic 7: x = 0, y = r,
+    p = 0; while x < y: E adds 2x + 1, SE 2x - 2y + 1, with the new x and y): the y plotted
+    at each x of the octant. Written here from the box, not from scanconv."""
+    x, y, p = 0, r, 0
+    out = {x: y}
+    while x < y:
+        x += 1
+        if p < 0:
+            p += 2 * x + 1
+        else:
+            y -= 1
+            p += 2 * x - 2 * y + 1
+        out[x] = y
+    return out
+
+
+def test_compare_circle_sets_the_notes_general_method_beside_bresenham() -> None:
+    """Issue 39, item 8: question 30 of the notes ("Compare general method and Bresenham's
+    algorithm for circle drawing", docs/cheatsheet.md: ``compare circle 6 --theory``) asks
+    for the general method, which the side-by-side table left out. Its column is the notes'
+    box run by hand (r = 6: y = 6, 5, 5, 5, 4), and the rows where it differs from the
+    midpoint method say why."""
+    import json
+
+    from tests.helpers import run
+
+    done = json.loads(run("compare", "circle", "6", "--theory", "--format", "json").out)
+    assert "general" in done["methods"]
+    table = done["tables"][0]
+    keys = [c["key"] if isinstance(c, dict) else c for c in table["columns"]]
+    col, reason = keys.index("general"), keys.index("reason")
+    by_hand = _notes_general_circle(6)
+    assert by_hand == {0: 6, 1: 5, 2: 5, 3: 5, 4: 4}
+    for row in table["rows"]:
+        assert int(row[col]) == by_hand[int(row[0])], row
+        assert ("general off" in (row[reason] or "")) == (by_hand[int(row[0])] != row[2]), row
+    assert any("general method tests p = x² + y² - r² at its point" in n for n in done["notes"])

@@ -250,3 +250,28 @@ def test_a_one_row_image_and_a_one_value_matrix():
             d.check_matrix(rows, "image", "image")
     with pytest.raises(InputError, match="every row of the image must have 2 values"):
         d.check_matrix([[1, 2], []], "image", "image")
+
+
+def test_floyd_steinberg_carries_are_in_one_form() -> None:
+    """Issue 39, item 8: the carried column printed ``43.75`` in one row and ``49455/1024`` in
+    another. Every share is now in the form of the table's other values: 3 decimals (half up),
+    a whole number as it is. The shares are worked by hand: e = 100 shares 7/16, 5/16, 1/16 as
+    43.75, 31.25, 6.25; then e = 143.75 - 255 = -111.25; then 100 - 111.25 * 7/16."""
+    from tests.helpers import run
+
+    out = run(
+        "dither", "floyd-steinberg", "--image", "100 100 100; 100 100 100", "--format", "csv"
+    ).out
+    import csv
+    import io
+    import re
+
+    rows = list(csv.DictReader(io.StringIO(out)))
+    carried = [r["carries"] for r in rows]
+    assert carried[0] == "(0, 1) += 43.750, (1, 0) += 31.250, (1, 1) += 6.250"
+    assert carried[1] == "(0, 2) += -48.672, (1, 0) += -20.859, (1, 1) += -34.766, (1, 2) += -6.953"
+    e2 = Fraction(100) - Fraction(11125, 100) * Fraction(7, 16)
+    assert e2 == Fraction(51328125, 10**6)
+    assert carried[2] == "(1, 1) += 9.624, (1, 2) += 16.040"  # 3/16 and 5/16 of e2
+    amounts = [a for c in carried for a in re.findall(r"\+= (\S+?)(?:,|$)", c)]
+    assert amounts and all(re.fullmatch(r"-?\d+(\.\d{3})?", a) for a in amounts), amounts

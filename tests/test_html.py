@@ -418,7 +418,12 @@ def test_the_style_is_scoped_and_the_script_finds_elements_inside_each_answer():
     # Elements are looked up from the answer's root; the document only to find the roots.
     lookups = re.findall(r"(\w+)\.querySelector(?:All)?\(", JS)
     assert set(lookups) <= {"root", "document"}
-    assert re.findall(r"document\.querySelectorAll\(([^)]*)\)", JS) == ['".scanconv[data-stepper]"']
+    # the roots: those with a stepper (the stepper, test yourself), every answer (the cue on a
+    # working formula cut at its box's edge)
+    assert re.findall(r"document\.querySelectorAll\(([^)]*)\)", JS) == [
+        '".scanconv[data-stepper]"',
+        '".scanconv"',
+    ]
 
 
 def test_print_gives_the_plain_answer():

@@ -292,6 +292,9 @@ NOTED = {
 SERVED = {
     "mcp_server.answers.MAX_PRACTICE": "tests/test_mcp.py, "
     "test_a_question_too_long_and_a_bad_practice_set_are_refused",
+    # the site's test yourself, marked by the library: tests/test_marking_steps.py
+    "marking.mark.MAX_STEP_TEXT": "test_typed_words_are_read_as_check_reads_a_cell",
+    "site.page.MAX_STEPS": "test_the_site_marks_at_most_its_steps",
 }
 
 ALLOCATORS = ("empty", "zeros", "ones", "full", "arange", "linspace", "meshgrid", "indices")

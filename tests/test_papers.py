@@ -18,8 +18,8 @@ def test_every_question_of_the_bank_answers(tmp_path: Path) -> None:
     r = run("sheet", str(BANK), "-f", "json", "-o", str(out))
     assert r.code == 0, r.err
     doc = json.loads(out.read_text())
-    assert len(doc["questions"]) == 7
-    assert doc["total_marks"] == 10 + 10 + 10 + 8 + 8 + 4 + 4
+    assert len(doc["questions"]) == 7 + 3
+    assert doc["total_marks"] == 10 + 10 + 10 + 8 + 8 + 4 + 4 + 8 + 4 + 4
 
 
 def test_every_question_names_its_source() -> None:
@@ -34,3 +34,17 @@ def test_every_question_names_its_source() -> None:
         elif line and not line.startswith(("#", "title:")):
             said = wording + " " + section
             assert any(k in said for k in ("MU ", "VTU ", "SPPU ", "worked example")), line
+
+
+def test_the_published_clipping_and_font_answers_come_out() -> None:
+    """Rosetta Code's clipped polygon (its ten points, with (100, 200) on the edge kept too);
+    font8x8's 'A' as 0x0C 0x1E 0x33 0x33 0x3F 0x33 0x33 0x00 (lsb first); the raw 8 x 16
+    font's 4096 bytes and 'A' at 0x410."""
+    r = run("sheet", str(BANK), "-f", "plain")
+    assert r.code == 0, r.err
+    assert "(100, 350/3), (125, 100), (275, 100), (300, 350/3)" in r.out
+    assert "(175, 300), (125, 300), (100, 250), (100, 200)" in r.out
+    hexes = [line.split()[3] for line in r.out.splitlines() if line.strip()[:1].isdigit()
+             and len(line.split()) == 5 and line.split()[3].startswith("0x")]  # fmt: skip
+    assert hexes == ["0x0C", "0x1E", "0x33", "0x33", "0x3F", "0x33", "0x33", "0x00"]
+    assert "4096 bytes" in r.out and "65 x 128/8 = 1040 (0x410)" in r.out

@@ -46,5 +46,27 @@ def test_the_page_fits_a_phone_and_long_working_lines_scroll(
             assert line["overflow"] == "auto" and line["right"] <= PHONE, line
         if argv == ANSWERS[0]:  # not vacuous: this page's working does not fit in 390 px
             assert [w["scroll"] > w["client"] for w in wide].count(True) >= 1
+        # a cue where a formula is cut at its box's edge, and only there (issue 39, item 7)
+        cues = page.evaluate(CUES)
+        assert cues and all(c["cue"] == (c["scroll"] > c["client"] + 1) for c in cues), cues
+        assert [c["cue"] for c in cues].count(True) == len(wide)
+        if wide:
+            page.screenshot(path=f"/tmp/site2-cue-{argv[0]}.png")
+            # scrolled to its end, the cue moves to the left edge
+            after = page.evaluate(SCROLLED)
+            assert after == {"right": False, "left": True, "shadow": True}, after
     finally:
         give_back(page)
+
+
+CUES = """() => [...document.querySelectorAll('.sc-working math, .sc-given math')].map(m => ({
+  scroll: m.scrollWidth, client: m.clientWidth, cue: m.classList.contains('sc-clip'),
+}))"""
+
+SCROLLED = """async () => {
+  const m = document.querySelector('math.sc-clip');
+  m.scrollLeft = m.scrollWidth;
+  await new Promise((done) => setTimeout(done, 100));
+  return {right: m.classList.contains('sc-clip'), left: m.classList.contains('sc-clipl'),
+          shadow: getComputedStyle(m).boxShadow !== 'none'};
+}"""

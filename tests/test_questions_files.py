@@ -368,7 +368,9 @@ def test_a_declaration_is_the_grammar_the_command_line_and_the_answer() -> None:
         """Not a command: a declaration to read."""
 
     turns, loop = declared(spin)  # fast has no declaration: the library's alone
-    assert param_of(turns) == Param("turns", ("--turns", "-t"), "integer", default=3)
+    assert param_of(turns) == Param(
+        "turns", ("--turns", "-t"), "integer", default=3, help="How many."
+    )
     assert param_of(loop).choices == ("strict", "inclusive") and param_of(loop).default is None
     option = typer_parameter(turns)
     assert option.default == 3 and option.annotation.__metadata__[0].param_decls == ("-t",)

@@ -148,6 +148,18 @@ def test_a_wrong_bresenham_line_is_marked_with_follow_through(quiz):
     assert q.score() == "Score: 21 / 24 (88 %)"
 
 
+def test_the_rules_own_pixel_after_a_wrong_decision_word_is_right(quiz):
+    """The walkthrough's step (issue 39, item 3): p0 = 0, decision E, and the right pixel
+    (3, 3). The pixel is the rule's own step, so the decision word is the one slip, as
+    ``check`` judges it: the pixel is not called wrong (it was: 1 of 3 marks)."""
+    q = quiz(*LINE)
+    q.start()
+    f = q.answer("0", "E", "3, 3")
+    assert "\u2717 decision: E; p\u2080 = 0 chooses NE" in f
+    assert "\u2713 next pixel (3, 3) (the rule's step: the decision was the slip)" in f
+    assert q.score() == "Score so far: 2 / 3"
+
+
 def test_the_table_hides_from_the_current_row_on_and_the_stepper_keys_give_nothing_away(quiz):
     q = quiz(*LINE)
     q.start()
@@ -290,7 +302,20 @@ def test_the_mode_fits_a_phone(quiz):
     for sel in ("input[name=p]", "select[name=decision]", "input[name=pixel]"):
         b = q.page.locator(sel).bounding_box()
         assert b is not None and b["x"] + b["width"] <= 390, sel
+    # targets of at least 24 CSS px (WCAG 2.2, 2.5.8): the grid's cells (13 px before) and the
+    # controls; a grid too wide for the screen scrolls in its own box, never the page
+    sizes = q.page.evaluate(TARGETS)
+    assert len(sizes) > 10 and [s for s in sizes if min(s[1], s[2]) < 24] == []
+    assert q.page.evaluate("document.documentElement.scrollWidth") <= 390
+    q.page.screenshot(path="/tmp/site2-selftest-phone.png")
     q.answer("-4", "E", (3, 8))
+
+
+TARGETS = """() => [...document.querySelectorAll(`svg.sc-stepgrid rect.sc-px, .sc-testpanel input,
+  .sc-testpanel select, .sc-testpanel button, .sc-selftest button`)]
+  .filter(e => e.getClientRects().length)
+  .map(e => { const r = e.getBoundingClientRect(); return [e.tagName, r.width, r.height]; })"""
+"""The tag, width and height of every target of the test on the screen."""
 
 
 def test_the_tip_of_a_flat_ellipse_asks_the_pixel_only(quiz):

@@ -208,6 +208,32 @@ def test_one_bad_line_in_200_writes_nothing(tmp_path: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == ["key.out", "q.txt"]
 
 
+def test_every_bad_line_of_a_file_is_reported_at_once(tmp_path: Path) -> None:
+    """Issue 39, item 8: ``sheet`` named only the first bad line, so a teacher fixed a file one
+    run at a time. Now each bad line, of the file's syntax or of its question, has its own
+    line on stderr, in the file's order; exit 2, nothing on stdout, nothing written."""
+    text = (
+        "title: T\n"
+        "line 2 2 10 6\n"
+        "line 2 2\n"  # 3: a missing argument
+        "[x] circle 5\n"  # 4: marks misspelt
+        "circle 5 --method sideways\n"  # 5: an unknown method
+        "circle 8\n"
+        "line 1 1 'x\n"  # 7: unbalanced quotes
+        "title: again\n"  # 8: a second title
+    )
+    path = _file(tmp_path, text)
+    target = tmp_path / "key.md"
+    r = run("sheet", str(path), "-o", str(target))
+    assert r.code == 2 and r.out == "" and "Traceback" not in r.err
+    lines = r.err.splitlines()
+    assert all(ln.startswith(f"scanconv: error: {path}:") for ln in lines), lines
+    assert [int(ln.split(f"{path}:")[1].split(":")[0]) for ln in lines] == [3, 4, 5, 7, 8]
+    assert "Missing argument 'X2'" in lines[0] and "'sideways'" in lines[2]
+    assert "unbalanced quotes" in lines[3] and "second title" in lines[4]
+    assert not target.exists() and sorted(p.name for p in tmp_path.iterdir()) == ["q.txt"]
+
+
 def test_unreadable_question_files(tmp_path: Path) -> None:
     assert_refused(run("sheet", str(tmp_path / "missing.txt")), "missing.txt", "No such file")
     assert_refused(run("sheet", str(tmp_path)), "is a directory")

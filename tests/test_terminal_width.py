@@ -103,3 +103,22 @@ def test_the_terminal_shows_the_working_unless_brief(monkeypatch: pytest.MonkeyP
     pixels = full.index("Pixels plotted")
     grid = full.index("7 | ")
     assert full[pixels:grid].endswith("\n\n"), "a blank line between the pixels and the grid"
+
+
+@pytest.mark.parametrize("columns", [60, 80, 120])
+def test_a_wrapped_note_keeps_its_indent(columns: int, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Issue 39, item 8: the "Conventions" note holds a bracket group longer than the line;
+    it ran past the screen's edge and rich broke it at column 0. Each of the note's lines
+    now fits the width and every line after its first keeps the note's indent; its words are
+    the note's words, in order (none lost to the wrapping)."""
+    from scanconv import _api
+
+    monkeypatch.setenv("COLUMNS", str(columns))
+    out = run("line", "2", "2", "10", "6", "--format", "rich").out.splitlines()
+    start = next(i for i, ln in enumerate(out) if ln.startswith("  - Conventions"))
+    end = next(i for i in range(start + 1, len(out)) if not out[i].startswith("    "))
+    lines = out[start:end]
+    assert len(lines) > 1 and all(len(ln) <= columns for ln in out), [len(ln) for ln in out]
+    note = next(n for n in _api.line(2, 2, 10, 6, "bresenham").notes if n.startswith("Conv"))
+    shown = " ".join(ln.strip() for ln in lines).removeprefix("- ")
+    assert shown.split() == note.replace("$", "").split()

@@ -42,7 +42,8 @@ CIRCLE_METHODS = compared("circle")
 NAMES = {m.name: m.short for m in METHODS.values() if m.command in ("line", "circle") and m.short}
 """Display names of the methods (table headings), from their records."""
 
-SHORT = {"bresenham": "Bresenham", "polynomial": "poly", "trig": "trig", "symmetric-dda": "SDDA"}
+SHORT = {"bresenham": "Bresenham", "polynomial": "poly", "general": "general", "trig": "trig"}
+SHORT["symmetric-dda"] = "SDDA"
 """Names of the circle methods in reason tags (``trig off``, ``SDDA twice``)."""
 
 #: Reason tags shown in the table; the notes explain each one that occurs, with its numbers.
@@ -470,19 +471,30 @@ def _circle_notes(
                 f"where the midpoint method plots ({x}, {ref}){gap}."
             )
             continue
-        samples = ", ".join(
-            f"({fmt(px, 3)}, {fmt(py, 3)})" for px, py in _octant_samples(sols[m], x)
-        )
+        if m in _DECIDED_AT_THE_POINT:  # its points are pixels: no samples between them
+            samples = ", ".join(f"({x}, {y})" for y in cols[m].get(x, []))
+        else:
+            samples = ", ".join(
+                f"({fmt(px, 3)}, {fmt(py, 3)})" for px, py in _octant_samples(sols[m], x)
+            )
         what = {
             "off": f"the {NAMES[m]} method's point in this column, {samples}, is not at the "
             f"pixel centre and rounds to y = {_cell(cols[m][x])}, the midpoint method's "
             f"to y = {ref}",
             "twice": f"the {NAMES[m]} method's points {samples} both round into this column",
+            "decides": f"the {NAMES[m]} method tests p = x^2 + y^2 - r^2 at its point, not at "
+            f"the midpoint between the two candidate pixels, and plots {samples}, where the "
+            f"midpoint method plots ({x}, {ref})",
             "skips": f"none of the {NAMES[m]} method's points rounds into this column",
             "beyond": f"the {NAMES[m]} method's point {samples} lies past the midpoint "
             "method's last column",
-        }[kind]
+        }["decides" if kind == "off" and m in _DECIDED_AT_THE_POINT else kind]
         yield f"{head}; {what}."
+
+
+_DECIDED_AT_THE_POINT = ("general",)
+"""The methods that step pixel by pixel on a test at the point itself (the notes' general
+method): where one differs from the midpoint method, that test is the reason."""
 
 
 def _octant_samples(sol: Solution, x: int) -> Iterator[tuple[Any, Any]]:

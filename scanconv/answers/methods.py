@@ -200,6 +200,7 @@ _CIRCLE_SHORT = {
     "midpoint": "midpoint",
     "bresenham": "Bresenham",
     "polynomial": "polynomial",
+    "general": "general",  # the notes' general method: question 30 compares it (issue 39)
     "trig": "trig",
     "symmetric-dda": "sym. DDA",
 }

@@ -7,6 +7,7 @@ exactly what it means on the command line, flags, conventions and error messages
 
 from __future__ import annotations
 
+import shlex
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any
@@ -113,7 +114,7 @@ def check(
     exact = own.get("exact", exact)
     try:
         solution = solve(question)
-        text = " ".join(question)
+        text = shlex.join(question)  # the words as typed: quotes kept around "10 200; 30 5"
         if batch is not None:
             _batch(Path(batch), solution, text, fmt, output)
             return

@@ -49,6 +49,7 @@ def _param(param: Any, ctx: Any) -> Param:
         secondary=tuple(param.secondary_opts) if is_option else (),
         multiple=bool(getattr(param, "multiple", False)),
         metavar="" if is_option else param.get_error_hint(ctx)[1:-1],
+        help=" ".join((getattr(param, "help", None) or "").split()),
     )
 
 

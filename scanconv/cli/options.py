@@ -25,6 +25,7 @@ from typer._click.exceptions import NoSuchOption  # typer vendors click
 from typer._types import TyperChoice
 
 from ..core.numeric import parse_number
+from ..questions.declared import PICTURE
 from ..questions.words import looks_like_option
 from ..render import Format, formats
 
@@ -171,7 +172,7 @@ DocumentFormatOpt = Annotated[
 """``--format`` of every document command (sheet, exam, practice), declared once: ``auto`` and
 the formats :data:`scanconv.render.FORMATS` gives a document writer."""
 GridOpt = Annotated[bool, typer.Option("--grid/--no-grid", help="Draw the text pixel grid.")]
-PictureOpt = Annotated[bool, typer.Option("--grid/--no-grid", help="Draw the shaded text picture.")]
+PictureOpt = Annotated[bool, typer.Option("--grid/--no-grid", help=PICTURE)]
 OriginOpt = Annotated[
     Origin,
     choice(

@@ -173,6 +173,8 @@ def clip_polygon(
     edges a concave polygon leaves.
 
     Example: scanconv clip polygon 100 150 200 250 300 200 --window 150 150 200 200
+
+    Against a triangle: scanconv clip polygon 0 0 4 0 4 4 0 4 --window-vertices 1 -1 6 4 1 4
     """
     return commands.clip_polygon(words, window, method)
 

@@ -34,6 +34,7 @@ from ..questions.files import (
     MAX_FILE_BYTES,
     MAX_QUESTIONS,
     QuestionError,
+    every,
     read_file,
     read_questions,
     strip_comment,
@@ -95,15 +96,19 @@ def answer_questions(
 
 
 def _answer_all(questions: Iterable[Question], source: str) -> list[Answered]:
-    out = []
+    """Every question answered; every bad one named (:func:`~scanconv.questions.files.every`)."""
+    out, errors = [], []
     for q in questions:
         try:
             solution, options = answer(q.argv)
         except ValueError as err:
-            raise QuestionError(source, q.line, " ".join(str(err).split())) from None
+            errors.append(QuestionError(source, q.line, " ".join(str(err).split())))
         except RecursionError:
-            raise QuestionError(source, q.line, "input too deeply nested") from None
-        out.append(Answered(q, solution, options))
+            errors.append(QuestionError(source, q.line, "input too deeply nested"))
+        else:
+            out.append(Answered(q, solution, options))
+    if errors:
+        raise every(errors)
     return out
 
 
@@ -113,7 +118,15 @@ def _answer_all(questions: Iterable[Question], source: str) -> list[Answered]:
 def build(path: str, outputs: Sequence[str] = ()) -> tuple[Sheet, list[Answered]]:
     """Read and answer the question file ``path`` for a document written in ``outputs``
     (:func:`answer_questions`); a ``ValueError`` for any bad input."""
-    sheet = read_file(path)
+    try:
+        sheet = read_file(path)
+    except QuestionError as bad:  # its good questions are answered too: every bad line named
+        if bad.sheet is not None:
+            try:
+                answer_questions(bad.sheet.questions, bad.sheet.source, outputs)
+            except QuestionError as more:
+                raise every([bad, more]) from None
+        raise
     return sheet, answer_questions(sheet.questions, sheet.source, outputs)
 
 
@@ -249,6 +262,10 @@ def sheet(
         latex = None
         if pdf is not None:
             latex = sheet_document(sheet, answered, kind, "latex", standalone=True)
+    except QuestionError as err:  # a line on stderr for each bad line of the file
+        for line in err.lines[:-1]:
+            note(f"error: {line}")
+        fail(err.lines[-1])
     except ValueError as err:
         fail(" ".join(str(err).split()))
     write_outputs(text, output, latex, pdf, quiet=fmt == "auto")

@@ -268,6 +268,11 @@ def _line_mistakes(solution: Solution, model: BresenhamLine) -> list[Variant]:
     return out
 
 
+TOPIC_9 = "the course notes' Topic 9 form of Bresenham's circle"
+"""How the diagnosis names the circle with p0 = 1 - r: the form the notes' Topic 9 prints
+under the name of Bresenham's circle algorithm (scanconv's method 'midpoint')."""
+
+
 def _circle_mistakes(solution: Solution, model: Model) -> list[Variant]:
     asked = dict(solution.data.get("conventions", {}))
     r = int(_given(solution)["r"])
@@ -286,12 +291,9 @@ def _circle_mistakes(solution: Solution, model: Model) -> list[Variant]:
     other = other_form(model)
     if other is not None:
         asked_form, used = (
-            ("p0 = 1 - r (the notes' Bresenham's circle)", "Bresenham's own d0 = 3 - 2r")
+            (f"p0 = 1 - r ({TOPIC_9})", "Bresenham's own d0 = 3 - 2r")
             if isinstance(model, MidpointCircle)
-            else (
-                "d0 = 3 - 2r",
-                "p0 = 1 - r (the notes' Bresenham's circle, the method 'midpoint')",
-            )
+            else ("d0 = 3 - 2r", f"{TOPIC_9}, p0 = 1 - r (the method 'midpoint')")
         )
         out.append(
             Variant(

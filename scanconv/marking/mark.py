@@ -23,7 +23,7 @@ can show.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -51,6 +51,7 @@ from .rows import (
 from .student_table import (
     Cell,
     StudentTable,
+    cell_of,
     parse_text,
     raw_text,
     read_text,
@@ -70,6 +71,7 @@ __all__ = [
     "expect",
     "mark",
     "mark_file",
+    "mark_steps",
     "marking_solution",
     "model_for",
     "reached",
@@ -364,6 +366,73 @@ def mark(table: StudentTable, solution: Solution) -> Marking:
     if note:
         diagnosis = f"{note} {diagnosis}".strip()
     return _marking(verdicts, len(answer), right, marked, diagnosis, True, lay, start)
+
+
+MAX_STEP_TEXT = 200
+"""Most characters of one answer :func:`mark_steps` reads (a longer one is unreadable)."""
+
+
+def _typed(
+    text: str, field: str, where: str
+) -> Cell | tuple[Cell | None, Cell | None] | str | None:
+    """One answer as typed, read as a table's cell (an unreadable number is blank)."""
+    if len(text) > MAX_STEP_TEXT:
+        return None
+    try:
+        return cell_of(text, field, "test yourself", where)
+    except InputError:
+        return None
+
+
+def _step(i: int, typed: Mapping[str, str], dda: bool) -> Got:
+    """Step ``i`` as typed: p_k (the DDA: the exact x_{k+1}, y_{k+1}), the decision and the
+    point it reaches."""
+    where = f"step {i + 1}"
+    got = {
+        f: _typed(str(typed.get(f, "")), field, where)
+        for f, field in (("p", "p"), ("decision", "decision"), ("pixel", "xy"), ("exact", "xy"))
+    }
+    p, decision, point, exact = (got[f] for f in ("p", "decision", "pixel", "exact"))
+    return Got(
+        where,
+        p if isinstance(p, Cell) and not dda else None,
+        decision if isinstance(decision, str) and not dda else None,
+        point if isinstance(point, tuple) and not isinstance(point, Cell) else None,
+        exact if isinstance(exact, tuple) and not isinstance(exact, Cell) and dda else None,
+        None,
+        where,
+    )
+
+
+def mark_steps(solution: Solution, steps: Sequence[Mapping[str, str]]) -> Marking:
+    """Steps written one at a time (the page's "Test yourself") marked as :func:`mark` marks
+    a table, by the same follow-through: each step ``{"p", "decision", "pixel"}`` as typed
+    (``"-8"``, ``"East"``, ``"4, 3"``; the DDA's ``{"exact", "pixel"}``, the exact
+    x_{k+1}, y_{k+1}), in the textbooks' layout (p_k, the decision, the point it reaches).
+    The score is out of the steps written. A question without a step model is an
+    :class:`~scanconv.core.checks.InputError`.
+
+    >>> from scanconv.answers.primitives.line import line_solution
+    >>> s = line_solution("bresenham", 2, 2, 10, 6)
+    >>> m = mark_steps(s, [{"p": "0", "decision": "NE", "pixel": "3, 3"},
+    ...                    {"p": "8", "decision": "NE", "pixel": "4, 4"},
+    ...                    {"p": "0", "decision": "NE", "pixel": "5, 5"}])
+    >>> m.right, m.total, [v.mark for v in m.verdicts]
+    (2, 3, ['right', 'wrong', 'right (follow-through)'])
+    >>> m.first_error
+    'Row 2 (step 2): p should be -8, not 8 (the step from (2, 2) with p = 0).'
+    """
+    model = model_for(solution)
+    if model is None:
+        raise InputError("this answer has no step model to mark its steps by", "question")
+    states = list(chain(model, MAX_QUESTION_ROWS + 1))
+    _check_size(len(states))
+    dda = isinstance(model, DDALine)
+    marked = {"pixel", "exact"} if dda else {"p", "decision", "pixel"}
+    rows = [_step(i, typed, dda) for i, typed in enumerate(steps[:MAX_QUESTION_ROWS])]
+    verdicts = _follow(model, rows, states_steps(model, states), marked)[: len(rows)]
+    right = sum(v.mark.startswith("right") for v in verdicts)
+    return _marking(verdicts, len(rows), right, marked, "", True, Layout("after", False), None)
 
 
 def mark_file(path: Path, solution: Solution) -> Marking:

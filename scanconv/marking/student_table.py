@@ -565,6 +565,16 @@ def _value(raw: Any, field: str, name: str, where: str) -> Value:
     return _number(text, name, where)
 
 
+def cell_of(text: str, field: str, name: str, where: str) -> Value:
+    """One cell as a student wrote it, read as a table's cell of ``field`` is (``decision``:
+    a move, ``xy``: a pixel, else a number); ``name`` and ``where`` name it in messages.
+
+    >>> cell_of("East", "decision", "a", "step 1"), cell_of("\u22128", "p", "a", "step 1")
+    ('E', Cell(value=Fraction(-8, 1), places=0))
+    """
+    return move_of(text) if field == "decision" else _value(text, field, name, where)
+
+
 def _number(raw: Any, name: str, where: str) -> Cell:
     if isinstance(raw, (int, float)) and not isinstance(raw, bool):
         raw = repr(raw)

@@ -50,6 +50,11 @@ class TableModel:
         it (``own[i]`` is the student's row ``i`` itself: its inputs)."""
         return dict(answer[i])
 
+    def read(self, key: str, value: Any) -> Any:
+        """The student's cell of column ``key`` in the spelling the answer's cells use
+        (default: as written), before it is read as a number or text."""
+        return value
+
 
 def _num(v: Any) -> Fraction | None:
     return v if isinstance(v, Fraction) else None
@@ -339,4 +344,96 @@ class CoxDeBoorTable(TableModel):
         left = self._weight(self.t - self.u[j], j, j + d) * lower(j)
         right = self._weight(self.u[j + d + 1] - self.t, j + 1, j + d + 1) * lower(j + 1)
         exp["N"] = left + right
+        return exp
+
+
+def _bytes_of(v: Any, base: int) -> list[int] | None:
+    """A cell of bytes as written (``00011111``, ``0x1f 0x80``, ``31 128``), read in
+    ``base``; ``None`` where it is not."""
+    if isinstance(v, Fraction):
+        text = str(v.numerator) if v.denominator == 1 and v >= 0 else ""
+    else:
+        text = str(v or "")
+    try:
+        values = [int(t, base) for t in text.replace("0x", "").split()]
+    except ValueError:
+        return None
+    return values if values and all(0 <= b < 256 for b in values) else None
+
+
+class GlyphBytesTable(TableModel):
+    """A glyph packed into bytes row by row: each row's byte bits stand alone (from the
+    glyph's row), its hexadecimal and decimal follow from the row's own bits as written."""
+
+    table = "The glyph as bytes"
+    marked = ("bits", "hex", "decimal")
+    rules = (
+        "Each row stands alone: its byte bits are the glyph's row padded to whole bytes in the "
+        "answer's bit order, and its hexadecimal and decimal are the row's own bits as written."
+    )
+
+    def read(self, key: str, value: Any) -> Any:
+        """A cell as written, in one spelling: hexadecimal as ``0x1f`` (``1F``, ``1Fh``,
+        ``$1F`` and ``0x1F`` alike), bits grouped in whole bytes."""
+        if not isinstance(value, str):
+            return value
+        text = " ".join(value.replace(",", " ").split())
+        if key == "hex":
+            tokens = [t.lower().removeprefix("0x").removeprefix("$").removesuffix("h")
+                      for t in text.split()]  # fmt: skip
+            try:
+                return " ".join(f"0x{int(t, 16):02x}" for t in tokens) or value
+            except ValueError:
+                return value
+        if key == "bits" and text and set(text) <= {"0", "1", " "}:
+            bits = text.replace(" ", "")
+            if len(bits) % 8 == 0:
+                return " ".join(bits[n : n + 8] for n in range(0, len(bits), 8))
+        return text if key == "decimal" else value
+
+    def expect(self, i: int, answer: Sequence[Row], own: Sequence[Row]) -> Row:
+        exp = dict(answer[i])
+        values = _bytes_of(own[i].get("bits"), 2)
+        if values is not None:
+            exp["hex"] = " ".join(f"0x{b:02x}" for b in values)
+        else:
+            values = _bytes_of(own[i].get("hex"), 16)
+        if values is not None:
+            exp["decimal"] = " ".join(str(b) for b in values)
+        return exp
+
+
+class FontTableTable(TableModel):
+    """The font table: each glyph's address from the row's own glyph number as written
+    (the first glyph's address plus the number times the bytes a glyph takes)."""
+
+    table = "The font table"
+    marked = ("glyph", "address")
+    rules = (
+        "Each row stands alone: a glyph's number is its code less the first glyph's, and its "
+        "address the base plus the row's own number times the bytes a glyph takes."
+    )
+
+    def __init__(self, per_glyph: int) -> None:
+        self.per_glyph = per_glyph
+
+    def read(self, key: str, value: Any) -> Any:
+        """An address written in hexadecimal alone (``0x10E7``) as the number it is."""
+        text = value.strip().lower() if isinstance(value, str) else ""
+        if key == "address" and text.startswith("0x"):
+            try:
+                return str(int(text, 16))
+            except ValueError:
+                return value
+        return value
+
+    def expect(self, i: int, answer: Sequence[Row], own: Sequence[Row]) -> Row:
+        exp = dict(answer[i])
+        glyph, theirs, at = (
+            _num(own[i].get("glyph")),
+            _num(exp.get("glyph")),
+            _num(exp.get("address")),
+        )
+        if self.per_glyph % 8 == 0 and glyph is not None and theirs is not None and at is not None:
+            exp["address"] = at + (glyph - theirs) * Fraction(self.per_glyph, 8)
         return exp

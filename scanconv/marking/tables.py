@@ -1,7 +1,7 @@
 """Marking a table that is not a pixel walk, by its own columns, with follow-through
 (the models of :mod:`.table_models`): dithering, error diffusion, Cyrus-Beck, NLL, midpoint
-subdivision, the inside-outside test, line styles, thick lines, bitmap characters and the
-frame buffer.
+subdivision, the inside-outside test, line styles, thick lines, bitmap characters (and a
+glyph's bytes, a font table) and the frame buffer.
 
 The student's columns are matched to the answer's by their headings (the key, the heading
 as printed, or its TeX, in any case and spacing); a column the answer does not have is not
@@ -28,7 +28,9 @@ from .table_models import (
     CyrusBeckTable,
     DiffusionTable,
     DitherTable,
+    FontTableTable,
     FrameBufferTable,
+    GlyphBytesTable,
     InsideVerdictsTable,
     LineStyleTable,
     MidpointClipTable,
@@ -60,7 +62,20 @@ def table_models_for(solution: Solution) -> list[TableModel]:
             )
         return verdicts
     one = table_model_for(solution)
+    if one is not None and solution.primitive == "characters":
+        return [one, *_glyph_tables(solution)]
     return [] if one is None else [one]
+
+
+def _glyph_tables(solution: Solution) -> list[TableModel]:
+    """A character's other tables: a glyph's bytes row by row, a font's table of addresses."""
+    titles = [t.title for t in solution.tables]
+    found: list[TableModel] = []
+    if any(t.startswith("The glyph as bytes") for t in titles):
+        found.append(GlyphBytesTable())
+    if any(t.startswith("The font table") for t in titles):
+        found.append(FontTableTable(int(solution.data["per_glyph"])))
+    return found
 
 
 _ROW_ALONE: dict[tuple[str, str], Callable[[], TableModel]] = {
@@ -269,7 +284,9 @@ def _verdicts(
     own: list[Row] = []
     verdicts: list[Verdict] = []
     for n, (where, cells) in enumerate(raw):
-        row = {k: canon(v) for k, v in zip(keys, cells, strict=False) if k is not None}
+        row = {
+            k: canon(model.read(k, v)) for k, v in zip(keys, cells, strict=False) if k is not None
+        }
         own.append(row)
         if n >= len(answer):
             verdicts.append(Verdict(n + 1, where, text(row), None, "extra"))  # type: ignore[arg-type]

@@ -155,15 +155,15 @@ def explain(v: Verdict, fields: Sequence[str]) -> str:
     return f"{at}: {'; '.join(parts)}{why}."
 
 
-_UNSAFE = re.compile(r"[^\w .,:=+/()<>-]")
+_UNSAFE = re.compile(r"[^\w .,:;'=+/()<>-]")
 
 
 def safe_text(text: str, limit: int = 120) -> str:
     """File names and command words for an answer's notes: no ``$`` (notes read it as math),
     backslashes, braces or control characters.
 
-    >>> safe_text("al$ice{}.csv")
-    'al_ice__.csv'
+    >>> safe_text("al$ice{}.csv"), safe_text("dither ordered --image '10 200; 30 5'")
+    ('al_ice__.csv', "dither ordered --image '10 200; 30 5'")
     """
     return _UNSAFE.sub("_", text)[:limit]
 

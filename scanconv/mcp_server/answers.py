@@ -118,7 +118,7 @@ def check(question: str, table: str) -> Reply:
     solution = questions_marking.marking_answer(line, SHOWN)
     text = student_table.checked_text(table, TABLE_NAME)
     marked = answers_marking.mark_text(text, solution, TABLE_NAME)
-    result = answers_marking.marking_solution(marked, solution, TABLE_NAME, " ".join(line.words))
+    result = answers_marking.marking_solution(marked, solution, TABLE_NAME, shlex.join(line.words))
     data, shown = _shown(result, Options())
     return Reply.of(data, shown)
 

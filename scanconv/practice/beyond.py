@@ -13,6 +13,7 @@ import random
 from typing import Any
 
 from ..answers.methods import method
+from . import windows
 from .records import PracticeQuestion, line_question
 
 
@@ -61,8 +62,10 @@ _POLYGONS = (
 )
 
 
-def inside(rng: random.Random, difficulty: str, kind: int) -> PracticeQuestion:
-    coords, shape = _POLYGONS[kind]
+def inside(rng: random.Random, difficulty: str, kind: int | str) -> PracticeQuestion:
+    if kind == "left-bottom":
+        return _on_the_boundary(rng, difficulty)
+    coords, shape = _POLYGONS[int(kind)]
     count = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
     points = [str(rng.randrange(0, 9)) for _ in range(2 * count)]
     rule = "both" if difficulty != "easy" else rng.choice(("even-odd", "nonzero"))
@@ -80,10 +83,51 @@ def inside(rng: random.Random, difficulty: str, kind: int) -> PracticeQuestion:
     )
 
 
+def _on_the_boundary(rng: random.Random, difficulty: str) -> PracticeQuestion:
+    """Points on a rectangle's edges (one on a left or bottom edge, one on a right or top
+    edge) and one inside, by the left-bottom boundary rule."""
+    w, h = (rng.randrange(4, 9) * {"easy": 1, "exam": 2, "hard": 3}[difficulty] for _ in "wh")
+    near = rng.choice(((0, rng.randrange(1, h)), (rng.randrange(1, w), 0)))
+    far = rng.choice(((w, rng.randrange(1, h)), (rng.randrange(1, w), h)))
+    points = [near, far, (rng.randrange(1, w), rng.randrange(1, h))]
+    rng.shuffle(points)
+    coords = (0, 0, w, 0, w, h, 0, h)
+    return PracticeQuestion(
+        "inside",
+        (
+            "inside",
+            *map(str, coords),
+            "--points",
+            *(str(v) for p in points for v in p),
+            "--rule",
+            "even-odd",
+            "--boundary",
+            "left-bottom",
+        ),
+        f"Is each point {_pairs(tuple(v for p in points for v in p))} inside the rectangle "
+        f"{_pairs(coords)} by the odd-even rule? A point on the boundary is inside on a left "
+        "or bottom edge and outside on a right or top edge (the scan-line fill's rule): give "
+        "each point's crossings and verdict.",
+        6,
+        frozenset({"left-bottom", "rectangle"}),
+    )
+
+
 _CLIP_WINDOW = {"easy": (2, 2, 8, 6), "exam": (10, 10, 50, 40), "hard": (-10, -5, 30, 25)}
 
 
+_SHAPED = {
+    "sutherland-hodgman triangle": windows.triangle_window,
+    "sutherland-hodgman hexagon": windows.hexagon_window,
+    "weiler-atherton touching": windows.touching,
+    "midpoint-subdivision edge stop": windows.edge_stop,
+}
+"""The clipping kinds against a window of any shape (:mod:`.windows`)."""
+
+
 def clipping(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    if kind in _SHAPED:
+        return _SHAPED[kind](rng, difficulty, kind)
     xmin, ymin, xmax, ymax = _CLIP_WINDOW[difficulty]
     span = xmax - xmin
     window = tuple(map(str, (xmin, ymin, xmax, ymax)))
@@ -158,6 +202,17 @@ def attributes(rng: random.Random, difficulty: str, kind: str) -> PracticeQuesti
     x2, y2 = x1 + length, y1 + rng.randrange(1, length // 2 + 1)
     ends = tuple(map(str, (x1, y1, x2, y2)))
     line = f"the line from ({x1}, {y1}) to ({x2}, {y2})"
+    if kind == "mask lsb":  # the mask as written, its bit 0 applied first
+        mask = rng.choice(("1100", "11000", "111000", "11110000"))
+        return PracticeQuestion(
+            "attributes",
+            ("linestyle", *ends, "--mask", mask, "--bits", "lsb"),
+            f"Draw {line} with the line mask {mask} (bit {len(mask) - 1} on the left, bit 0 "
+            "on the right), applied from its least significant bit (Bresenham's line "
+            "algorithm): give each pixel, its mask bit and whether it is drawn.",
+            6,
+            frozenset({kind, "dashed"}),
+        )
     if kind in ("dashed", "dotted"):
         mask = rng.choice(("1110", "11100", "111000")) if kind == "dashed" else "10"
         return PracticeQuestion(
@@ -220,6 +275,10 @@ _GLYPHS = "AEFHLTXZ"
 def characters(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
     ch = rng.choice(_GLYPHS)
     scale = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
+    if kind == "font table":
+        return windows.font_table(rng, difficulty, kind, ch)
+    if kind == "glyph bytes":
+        return windows.glyph_bytes(rng, difficulty, kind, ch)
     if kind == "storage":
         count = rng.choice((96, 128, 256))
         w, h = rng.choice(((5, 7), (7, 9), (8, 8), (9, 14)))
@@ -277,7 +336,7 @@ def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQue
 
 KINDS: dict[str, list[Any]] = {
     "dither": ["ordered", "floyd-steinberg", "threshold", "halftone"],
-    "inside": [0, 1, 2, 3],
+    "inside": [0, 1, 2, 3, "left-bottom"],
     "clip": [
         "cohen-sutherland",
         "liang-barsky",
@@ -285,10 +344,14 @@ KINDS: dict[str, list[Any]] = {
         "midpoint-subdivision",
         "weiler-atherton",
         "nicholl-lee-nicholl",
+        "sutherland-hodgman triangle",
+        "weiler-atherton touching",
+        "sutherland-hodgman hexagon",
+        "midpoint-subdivision edge stop",
     ],
     "framebuffer": ["load", "lut", "refresh", "interlaced"],
-    "attributes": ["dashed", "replication", "dotted", "brush"],
-    "characters": ["bitmap", "stroke", "storage"],
+    "attributes": ["dashed", "replication", "dotted", "brush", "mask lsb"],
+    "characters": ["bitmap", "stroke", "storage", "font table", "glyph bytes"],
     "antialias": ["wu", "area", "subpixel", "wu-coverage"],
     "midpoint-line": [
         f"octant {o}{', tie' if tie else ''}"

@@ -18,6 +18,9 @@ from typing import Any, NamedTuple
 NOT_QUESTIONS = ("check", "exam", "mcp", "practice", "sheet", "site")
 """Commands that write documents or mark: never a question."""
 
+PICTURE = "Draw the shaded text picture."
+"""The help of ``--grid/--no-grid`` where the grid is the shaded picture (``sample``)."""
+
 OUTPUTS = ("fmt", "grid", "origin", "output", "brief", "exact", "explain", "svg", "png")
 """The output options every command shares, in the order they follow its own."""
 

@@ -21,23 +21,48 @@ from __future__ import annotations
 import os
 import re
 import stat
+from collections.abc import Sequence
 
 from ..render.sheet import Question, Sheet
 from .limits import MAX_FILE_BYTES, MAX_LINE_CHARS, check_text_size
 
 __all__ = ["MAX_FILE_BYTES", "MAX_LINE_CHARS", "MAX_QUESTIONS", "QuestionError"]
-__all__ += ["read_file", "read_questions", "split_lines", "strip_comment"]
+__all__ += ["every", "read_file", "read_questions", "split_lines", "strip_comment"]
 
 MAX_QUESTIONS = 1000
 """The most questions one sheet takes (a 200-question key is the benchmark)."""
 
 
 class QuestionError(ValueError):
-    """A bad line of a question file: ``str()`` is ``SOURCE:LINE: message``."""
+    """A bad line of a question file: ``str()`` is ``SOURCE:LINE: message``. The error of a
+    file with several bad lines (:func:`every`) holds them all in ``errors``, its ``str()``
+    a line each, and ``sheet`` holds the file's good questions (issue 39: every bad line is
+    reported at once, not the first alone)."""
 
     def __init__(self, source: str, line: int, message: str) -> None:
         super().__init__(f"{source}:{line}: {message}")
         self.source, self.line, self.message = source, line, message
+        self.errors: tuple[QuestionError, ...] = (self,)
+        self.sheet: Sheet | None = None
+
+    @property
+    def lines(self) -> list[str]:
+        """One line per bad line: ``SOURCE:LINE: message``, its spaces collapsed."""
+        return [f"{e.source}:{e.line}: {' '.join(e.message.split())}" for e in self.errors]
+
+
+def every(errors: Sequence[QuestionError], sheet: Sheet | None = None) -> QuestionError:
+    """The bad lines of one file as one error, in the order of their lines.
+
+    >>> err = every([QuestionError("q", 5, "b"), QuestionError("q", 2, "a")])
+    >>> str(err).splitlines(), err.line, err.lines
+    (['q:2: a', 'q:5: b'], 2, ['q:2: a', 'q:5: b'])
+    """
+    ordered = sorted((e for err in errors for e in err.errors), key=lambda e: e.line)
+    first = QuestionError(ordered[0].source, ordered[0].line, ordered[0].message)
+    first.args = ("\n".join(str(e) for e in ordered),)
+    first.errors, first.sheet = tuple(ordered), sheet
+    return first
 
 
 _MARKS = re.compile(r"^\[\s*(\d{1,4})\s*(?:marks?\s*)?\]\s*", re.IGNORECASE)
@@ -124,61 +149,78 @@ def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
     >>> read_questions("title: A\\x1b[31mB\\nline 0 0 1 1").title
     'A\\ufffd[31mB'
     """
-    import shlex
-
     check_text_size(text, source)
     title = ""
     section = ""
     wording: list[str] = []
     questions: list[Question] = []
+    errors: list[QuestionError] = []
     number = 0
     for number, raw in enumerate(split_lines(text.removeprefix("\ufeff")), 1):
-        if len(raw) > MAX_LINE_CHARS:
-            raise QuestionError(
-                source, number, f"a line of {len(raw):,} characters; at most {MAX_LINE_CHARS:,}"
-            )
-        stripped = _CONTROL.sub("\ufffd", raw).strip()
-        if not stripped or stripped.startswith("#"):
-            continue
-        if stripped.startswith(">"):
-            wording.append(stripped[1:].strip())
-            continue
-        keyword = _KEYWORD.match(stripped)
-        if keyword:
-            name, value = keyword.group(1).lower(), " ".join(keyword.group(2).split())
-            if not value:
-                raise QuestionError(source, number, f"'{name}:' needs a text after it")
-            if name == "title":
-                if title:
-                    raise QuestionError(source, number, "a second title line (one per sheet)")
-                title = value
-            else:
-                section = value
-            continue
-        marks = None
-        found = _MARKS.match(stripped)
-        if found:
-            marks = int(found.group(1))
-            stripped = stripped[found.end() :]
-        elif stripped.startswith("["):
-            raise QuestionError(
-                source, number, "marks are written [N] or [N marks] before the question, e.g. [4]"
-            )
         try:
-            argv = tuple(shlex.split(strip_comment(stripped)))
-        except ValueError as err:
-            raise QuestionError(source, number, f"unbalanced quotes: {err}") from None
-        if not argv:
-            raise QuestionError(source, number, "marks without a question")
-        if len(questions) == MAX_QUESTIONS:
-            raise QuestionError(source, number, f"at most {MAX_QUESTIONS} questions in one sheet")
-        questions.append(
-            Question(len(questions) + 1, number, argv, marks, " ".join(wording), section)
-        )
-        wording = []
+            if len(raw) > MAX_LINE_CHARS:
+                raise QuestionError(
+                    source, number, f"a line of {len(raw):,} characters; at most {MAX_LINE_CHARS:,}"
+                )
+            stripped = _CONTROL.sub("\ufffd", raw).strip()
+            if not stripped or stripped.startswith("#"):
+                continue
+            if stripped.startswith(">"):
+                wording.append(stripped[1:].strip())
+                continue
+            keyword = _KEYWORD.match(stripped)
+            if keyword:
+                name, value = keyword.group(1).lower(), " ".join(keyword.group(2).split())
+                if not value:
+                    raise QuestionError(source, number, f"'{name}:' needs a text after it")
+                if name == "title":
+                    if title:
+                        raise QuestionError(source, number, "a second title line (one per sheet)")
+                    title = value
+                else:
+                    section = value
+                continue
+            marks, argv = _question(stripped, source, number)
+            if len(questions) == MAX_QUESTIONS:
+                raise QuestionError(
+                    source, number, f"at most {MAX_QUESTIONS} questions in one sheet"
+                )
+            questions.append(
+                Question(len(questions) + 1, number, argv, marks, " ".join(wording), section)
+            )
+            wording = []
+        except QuestionError as err:  # the next lines are read on: every bad line is named
+            errors.append(err)
+            wording = []
+            if len(questions) == MAX_QUESTIONS:
+                break
     if wording:
-        raise QuestionError(source, number, "'>' wording without a question after it")
+        errors.append(QuestionError(source, number, "'>' wording without a question after it"))
+    if errors:
+        raise every(errors, Sheet(title, tuple(questions), source))
     return Sheet(title, tuple(questions), source)
+
+
+def _question(line: str, source: str, number: int) -> tuple[int | None, tuple[str, ...]]:
+    """A question line's marks (``None``: none given) and its words."""
+    import shlex
+
+    marks = None
+    found = _MARKS.match(line)
+    if found:
+        marks = int(found.group(1))
+        line = line[found.end() :]
+    elif line.startswith("["):
+        raise QuestionError(
+            source, number, "marks are written [N] or [N marks] before the question, e.g. [4]"
+        )
+    try:
+        argv = tuple(shlex.split(strip_comment(line)))
+    except ValueError as err:
+        raise QuestionError(source, number, f"unbalanced quotes: {err}") from None
+    if not argv:
+        raise QuestionError(source, number, "marks without a question")
+    return marks, argv
 
 
 def _read_bytes(path: str) -> bytes:

@@ -38,6 +38,8 @@ class Param(NamedTuple):
     """An option that may be given several times (``color --to``): a tuple of values."""
     metavar: str = ""
     """A positional argument's name in messages (``X2``; empty: the name itself)."""
+    help: str = ""
+    """What it is, in the command line's own words (its ``--help`` text)."""
 
     @property
     def hint(self) -> str:
@@ -169,16 +171,19 @@ def param_of(d: Declared) -> Param:
         secondary=meta.secondary if isinstance(meta, Opt) else (),
         multiple=meta.multiple if isinstance(meta, Opt) else False,
         metavar="" if option else meta.metavar or d.name,
+        help=" ".join(meta.help.split()),
     )
 
 
 def spec_of(command: Command, shared: dict[str, Param]) -> Spec:
     """The grammar of a declared command, its output options those of ``shared``."""
     from ..core.declare import declared
-    from .declared import OUTPUTS
+    from .declared import OUTPUTS, PICTURE
 
     own = {d.name: param_of(d) for d in declared(command.declaration())}
     params = [p for name, p in own.items() if name not in OUTPUTS]
+    if command.picture:  # the same flag, shown as the picture
+        shared = {**shared, "grid": shared["grid"]._replace(help=PICTURE)}
     params += [own.get(name) or shared[name] for name in command.outputs]
     return Spec(
         path=command.path,
@@ -241,13 +246,16 @@ def module_text() -> str:
         params = [
             f"S[{p.name!r}]" if table.S.get(p.name) == p else _param_source(p) for p in spec.params
         ]
-        own = [s for s in params if not s.startswith("S[")]
-        shared = [s for s in params if s.startswith("S[")]
+        rows: list[list[str]] = []  # in the command's order, the shared ones run on one line
+        for s in params:
+            if rows and s.startswith("S[") and rows[-1][-1].startswith("S["):
+                rows[-1].append(s)
+            else:
+                rows.append([s])
         flags = f", no_args_is_help={spec.no_args_is_help!r}" if spec.no_args_is_help else ""
         lines += [
             f"    {path!r}: Spec({path!r}, {spec.function!r}, (",
-            *(f"        {s}," for s in own),
-            f"        {', '.join(shared)},",
+            *(f"        {', '.join(row)}," for row in rows),
             f"    ), own={spec.own!r}, ignore_unknown={spec.ignore_unknown!r}{flags}),",
         ]
     lines += ["}", "# fmt: on"]

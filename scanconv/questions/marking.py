@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import os
+import shlex
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -131,7 +132,7 @@ def check(answer: str | os.PathLike[str], question: str | Sequence[str] | Soluti
         solution, text = question, question.title
     else:
         words = split(question)
-        solution, text = marking_question(words), " ".join(words)
+        solution, text = marking_question(words), shlex.join(words)
     path = Path(answer)
     return Answer.of(
         answers_marking.marking_solution(

@@ -71,6 +71,10 @@ class Spec(NamedTuple):
     :data:`~scanconv.render.budget.SHEET_ROWS`. A GIFT quiz writes each blank as a question
     carrying the stem and the working: about 4.7 KB a row (80,000 rows: 373 MB, 1.58 GB of
     memory), so it holds 10,000 rows (about 47 MB)."""
+    mapping: str = ""
+    """``module:NAME`` in :mod:`scanconv.render` of its mapping from block types to text, for
+    a block written alone (``exam --contents``: the contents with nothing answered); ``""``:
+    none (json writes the contents as data, the others have no such page)."""
 
     @property
     def serves(self) -> tuple[str, ...]:
@@ -86,7 +90,13 @@ class Spec(NamedTuple):
 FORMATS: dict[str, Spec] = {
     "rich": Spec("terminal:render_rich", (), False, 3000.0, 256 * 256, 10_000),
     "latex": Spec(
-        "latex:render_latex", (".tex",), True, 100.0, 256 * 256, sheet="sheet_latex:latex_sheet"
+        "latex:render_latex",
+        (".tex",),
+        True,
+        100.0,
+        256 * 256,
+        sheet="sheet_latex:latex_sheet",
+        mapping="latex:LATEX",
     ),
     "markdown": Spec(
         "text:render_markdown",
@@ -95,9 +105,16 @@ FORMATS: dict[str, Spec] = {
         90.0,
         256 * 256,
         sheet="sheet:markdown_sheet",
+        mapping="text:MARKDOWN",
     ),
     "plain": Spec(
-        "text:render_plain", (".txt",), False, 60.0, 1024 * 1024, sheet="sheet:plain_sheet"
+        "text:render_plain",
+        (".txt",),
+        False,
+        60.0,
+        1024 * 1024,
+        sheet="sheet:plain_sheet",
+        mapping="text:PLAIN",
     ),
     "csv": Spec("data:render_csv", (".csv",), True, 20.0, streams=True),
     "json": Spec(

@@ -24,7 +24,6 @@ import re
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from functools import partial
 from itertools import chain, islice
-from typing import Any
 
 from ..core.numeric import fmt_pixel
 from ..core.records import Column, Solution
@@ -47,8 +46,9 @@ from ..document import (
 from . import Notice, Options
 from .cells import note_segments, numeric_column, prose_math, wrap_items
 from .grid import too_large
+from .latex_breaks import breakable_math
 from .text import Rows, figure_text, grid_block, pixel_count, step_rows, table_rows
-from .tikz import tikz_figure, tikz_grid
+from .tikz import grid_height, tikz_figure, tikz_grid
 
 MATH_TOKENS = (
     r"[-+*/(), ]",  # an operator, a bracket, a comma, a space
@@ -92,9 +92,13 @@ def _cell(text: str) -> str:
     """
     if text == "-":
         return "--"
-    if math_cell(text):
-        return f"${text}$"
+    if math_cell(text):  # a list of points breaks between them (a wrapped column's cell)
+        return "$" + _BETWEEN_POINTS.sub(r")\1$ $(", text) + "$"
     return prose_tex(text)
+
+
+_BETWEEN_POINTS = re.compile(r"\)(,?) \(")
+"""The space between two points of a cell (``(3, 2) (1, 2)``, ``(3, 2), (1, 2)``)."""
 
 
 def prose_tex(text: str) -> str:
@@ -111,24 +115,34 @@ NEED = r"""\makeatletter
 \providecommand{\scneed}[1]{\par\penalty-100\begingroup\setlength{\dimen@}{#1}%
 \vskip\z@\@plus\dimen@\penalty-100\vskip\z@\@plus-\dimen@\vskip\dimen@
 \penalty9999\vskip-\dimen@\vskip\z@skip\endgroup}
+\providecommand{\scneedor}[2]{\begingroup\setlength{\dimen@}{#1}\addtolength{\dimen@}{#2}%
+\ifdim\dimen@>.9\textheight\setlength{\dimen@}{#1}\fi\scneed{\the\dimen@}\endgroup}
 \makeatother
 """
 r"""``\scneed{h}``: a page break here unless ``h`` of the page is left (needspace's way):
-a table's heading never ends a page without its table."""
+a table's heading never ends a page without its table. ``\\scneedor{h}{g}``: room for
+``h + g`` (a table and the grid under it) when that fits in 0.9 of the page, else for ``h``."""
 
 KEEP_ROWS = 15
 """A table of at most this many rows starts on the next page rather than be split; a longer
 one starts where it is, with at least a few rows under its heading."""
 
 
-def _heading(title: str, rows: int) -> str:
+def _heading(title: str, rows: int, after: float = 0) -> str:
     r"""A table's heading, kept with its table (or its first rows).
 
+    Set ragged right, in a group ended by its own ``\\par``: a long title (a command line
+    in it) breaks at its spaces, never past the margin.
+
     >>> print(_heading("Step table", 2), end="")
-    \scneed{71pt}\paragraph{Step table}\mbox{}\\[1ex]
+    \scneed{71pt}{\raggedright\paragraph{Step table}\mbox{}\\[1ex]\par}
     """
     need = 45 + 13 * (rows if rows <= KEEP_ROWS else 5)
-    return f"\\scneed{{{need}pt}}\\paragraph{{{tex_text(title)}}}\\mbox{{}}\\\\[1ex]\n"
+    room = f"\\scneed{{{need}pt}}"
+    if rows <= KEEP_ROWS and after:  # the grid below kept with it where the page can hold both
+        room = f"\\scneedor{{{need}pt}}{{{after:.0f}pt}}"
+    title = tex_text(title)
+    return f"{room}{{\\raggedright\\paragraph{{{title}}}\\mbox{{}}\\\\[1ex]\\par}}\n"
 
 
 TEXT_WIDTH = 345
@@ -229,7 +243,7 @@ WRAP_CHARS = 24
 """A text column with a cell longer than this is set as a paragraph column that wraps."""
 
 
-def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
+def _tables(title: str, columns: Sequence[Column], rows: Rows, after: float = 0) -> Iterator[str]:
     """One table, whole whenever it can be: in the largest type that fits the text width;
     with its long text columns wrapped (a comparison's sentences) rather than set smaller
     than ``\\small``; scaled down to the text
@@ -241,18 +255,18 @@ def _tables(title: str, columns: Sequence[Column], rows: Rows) -> Iterator[str]:
     small = parts[0][1][0] in ("\\footnotesize", "\\scriptsize", "\\tiny")
     wrapped = wrap_spec(columns, head) if len(parts) > 1 or small else None
     if wrapped is not None:
-        yield _heading(title, len(head))
+        yield _heading(title, len(head), after)
         yield from _tabular(columns, ("\\small", True), chain(head, first), wrapped)
         yield "\n"
         return
     if (len(parts) > 1 or parts[0][1] == _TINY) and len(head) <= RESIZE_ROWS:
-        yield _heading(title, len(head))
+        yield _heading(title, len(head), after)
         yield from resized(columns, head)
         yield "\n"
         return
     for n, (part, layout) in enumerate(parts, 1):
         label = title if len(parts) == 1 else f"{title}, part {n} of {len(parts)}"
-        yield _heading(label, len(head))
+        yield _heading(label, len(head), after if n == len(parts) else 0)
         if len(parts) == 1:  # the whole table: the rows already started, read on
             yield from _tabular(columns, layout, chain(head, first))
         else:  # each part reads the rows afresh, keeping its own columns
@@ -271,7 +285,7 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
     >>> wrap_spec(cols, [["speed", "slower"]]) is None
     True
     >>> wrap_spec(cols, [["error", "round-off accumulates along the line, and more"]])
-    'l>{\\\\raggedright\\\\arraybackslash}p{300.6pt}'
+    'l>{\\\\raggedright\\\\arraybackslash}p{293.8pt}'
     """
     longest = [max((len(r[i]) for r in rows), default=0) for i in range(len(columns))]
     wrap = [
@@ -284,7 +298,7 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
         for c, n, w in zip(columns, longest, wrap, strict=True)
         if not w
     )
-    room = 0.97 * TEXT_WIDTH - fixed - 6 * sum(wrap)
+    room = 0.95 * TEXT_WIDTH - fixed - 6 * sum(wrap)  # 5% to spare: the estimate is rough
     total = sum(n for n, w in zip(longest, wrap, strict=True) if w)
     if room < 60 * sum(wrap):
         return None
@@ -383,13 +397,36 @@ def render_latex(answer: Solution | Document, options: Options) -> Iterator[str 
     doc = as_document(answer)
     yield "% scanconv answer; needs \\usepackage{booktabs,amsmath,longtable,array,graphicx,tikz}\n"
     yield NEED
-    for block in doc.blocks:
-        yield from LATEX[type(block)](block, options, doc)
+    kept, after = _kept_with_grid(doc, options)
+    for i, block in enumerate(doc.blocks):
+        if i == kept:
+            yield from LATEX[type(block)](block, options, doc, after)
+        else:
+            yield from LATEX[type(block)](block, options, doc)
+
+
+def _kept_with_grid(doc: Document, options: Options) -> tuple[int, float]:
+    """The index of the table set right above the pixel list and its grid, and how much room
+    (points) they take: its heading makes room for the table, the list and the grid together,
+    so that a page break never falls between a table's last rows and its grid (issue 39).
+    ``(-1, 0)`` when there is no such table or no grid drawn."""
+    blocks = doc.blocks
+    at = next((i for i, b in enumerate(blocks) if isinstance(b, Pixels)), -1)
+    table = at - 1
+    if at < 1 or not isinstance(blocks[table], StepTable | Table) or not options.grid:
+        return -1, 0
+    pixels = blocks[at]
+    assert isinstance(pixels, Pixels)
+    tall = None if too_large(pixels.bbox) else grid_height(doc, options.origin)
+    if tall is None:
+        return -1, 0
+    lines = sum(1 for _ in wrap_items(f"${fmt_pixel(p)}$" for p in pixels.pixels()))
+    return table, tall + 12 * lines + 30
 
 
 def _title(block: Title, options: Options, doc: Document) -> Iterator[str]:
     unit = "subsection" if block.level <= 2 else "subsubsection"
-    yield f"\\{unit}*{{{tex_text(block.text)}}}\n\n"
+    yield f"\\{unit}*{{\\raggedright {tex_text(block.text)}}}\n\n"  # breaks, never overfull
 
 
 def _question(block: Question, options: Options, doc: Document) -> Iterator[str]:
@@ -426,39 +463,40 @@ def tex_command(command: str) -> str:
 
 
 def _given(block: Given, options: Options, doc: Document) -> Iterator[str]:
-    """The given values in one paragraph; a value that is only words (``\\text{shape: ...}``)
-    is set as text, so the line can break inside it (a box of math cannot)."""
-    items = []
-    for q in block.quantities:
-        words = _ONLY_TEXT.fullmatch(q.tex)
-        items.append(words.group(1) if words else f"${q.tex}$")
+    """The given values in one paragraph; the words of a value (``\\text{shape: ...}``) are
+    set as text, so the line can break inside them (a box of math cannot)."""
+    items = (breakable_math(q.tex) for q in block.quantities)
     yield "\\paragraph{Given} " + ", ".join(items) + "\n\n"
 
 
-_ONLY_TEXT = re.compile(r"\\text\{([^{}$]*)\}")
-"""A formula that is one ``\\text{...}`` with no braces or math inside: its words, as text."""
-
-
 def _working(block: Working, options: Options, doc: Document) -> Iterator[str]:
-    yield "\\paragraph{Working}\n\\begin{itemize}\n"
+    yield "\\paragraph{Working}\n\\begin{itemize}\\raggedright\n"  # lines break, never past the edge
     for q in block.lines:
-        yield f"  \\item ${q.tex}$\n"
+        yield f"  \\item {breakable_math(q.tex)}\n"
     yield "\\end{itemize}\n\n"
 
 
 def _notes(block: Notes, options: Options, doc: Document) -> Iterator[str]:
+    """The notes as a list, one bullet each (as the terminal and Markdown set them apart),
+    never one paragraph after another that reads as one run of text."""
+    if not block.notes:
+        return
+    yield "\\paragraph{Notes}\n\\begin{itemize}\\raggedright\n"
     for note in block.notes:
-        yield f"\\noindent {prose_tex_segments(note.segments)}\\par\n"
-    yield "\n"
+        yield f"  \\item {prose_tex_segments(note.segments)}\n"
+    yield "\\end{itemize}\n\n"
 
 
-def _step_table(block: StepTable, options: Options, doc: Document) -> Iterator[str]:
+def _step_table(
+    block: StepTable, options: Options, doc: Document, after: float = 0
+) -> Iterator[str]:
     if block.columns and block.shown:
-        yield from _tables("Step table", block.columns, partial(step_rows, block, options.exact))
+        rows = partial(step_rows, block, options.exact)
+        yield from _tables("Step table", block.columns, rows, after)
 
 
-def _table(block: Table, options: Options, doc: Document) -> Iterator[str]:
-    yield from _tables(block.title, block.columns, partial(table_rows, block, options.exact))
+def _table(block: Table, options: Options, doc: Document, after: float = 0) -> Iterator[str]:
+    yield from _tables(block.title, block.columns, partial(table_rows, block, options.exact), after)
 
 
 def _code(block: Pseudocode, options: Options, doc: Document) -> Iterator[str]:
@@ -467,7 +505,7 @@ def _code(block: Pseudocode, options: Options, doc: Document) -> Iterator[str]:
     small enough to fit the text width.
 
     >>> print("".join(_code(Pseudocode("t", ("a", "  b^2")), Options(), None)), end="")
-    \scneed{71pt}\paragraph{t}\mbox{}\\[1ex]
+    \scneed{71pt}{\raggedright\paragraph{t}\mbox{}\\[1ex]\par}
     <BLANKLINE>
     \noindent\begin{minipage}{\linewidth}\ttfamily
     \mbox{}1~~a\\
@@ -533,7 +571,7 @@ def _drawing(block: Drawing, options: Options, doc: Document) -> Iterator[str]:
             yield picture
 
 
-LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = {
+LATEX: dict[type, Callable[..., Iterator[str | Notice]]] = {
     Contents: _contents,
     Question: _question,
     Title: _title,
@@ -546,7 +584,8 @@ LATEX: dict[type, Callable[[Any, Options, Document], Iterator[str | Notice]]] = 
     Pixels: _pixels,
     Drawing: _drawing,
 }
-"""The ``latex`` format: one handler per block type."""
+"""The ``latex`` format: one handler per block type, called with the block, the options and
+the document (a table's handler also takes the room its grid needs below it)."""
 
 
 def _verbatim(lines: Sequence[str]) -> Iterator[str]:

@@ -56,6 +56,11 @@ padding:.18em .55em;text-align:center;white-space:nowrap}
 .scanconv .sc-scroll table.sc-table th{position:sticky;top:0;z-index:1}
 .scanconv .sc-tablebox{overflow-x:auto;max-width:100%}
 .scanconv .sc-working math,.scanconv .sc-given math{max-width:100%;overflow-x:auto;overflow-y:hidden;vertical-align:middle}
+.scanconv math.sc-clip{box-shadow:inset -16px 0 10px -10px rgba(0,0,0,.5);\
+border-right:2px dotted var(--sc-px-edge)}
+.scanconv math.sc-clipl{box-shadow:inset 16px 0 10px -10px rgba(0,0,0,.5)}
+.scanconv math.sc-clip.sc-clipl{box-shadow:inset -16px 0 10px -10px rgba(0,0,0,.5),\
+inset 16px 0 10px -10px rgba(0,0,0,.5)}
 .scanconv table.sc-table td.sc-num{text-align:right}
 .scanconv tr[data-pos]{cursor:pointer}
 .scanconv tr[data-pos]:hover td{background:#f2f7fc}
@@ -272,8 +277,38 @@ JS = r"""
 """
 """The stepper: one script for every answer on the page (see the module)."""
 
+CLIP_JS = r"""
+(function () {
+  "use strict";
+  // A working formula too wide for its line scrolls inside its own box: it is marked
+  // (sc-clip: a shadow and a dotted edge on the right; sc-clipl: a shadow on the left once it
+  // is scrolled) only while some of it is out of sight.
+  var mark = function (m) {
+    var more = m.scrollWidth > m.clientWidth + 1;
+    m.classList.toggle("sc-clip", more && m.scrollLeft + m.clientWidth < m.scrollWidth - 1);
+    m.classList.toggle("sc-clipl", more && m.scrollLeft > 1);
+  };
+  var all = [];
+  var watch = window.ResizeObserver && new ResizeObserver(function (es) { es.forEach(function (e) { mark(e.target); }); });
+  document.querySelectorAll(".scanconv").forEach(function (root) {
+    if (root.getAttribute("data-clipcue")) { return; }
+    root.setAttribute("data-clipcue", "1");
+    root.querySelectorAll(".sc-working math, .sc-given math").forEach(function (m) {
+      all.push(m);
+      mark(m);
+      m.addEventListener("scroll", function () { mark(m); }, { passive: true });
+      if (watch) { watch.observe(m); }
+    });
+  });
+  var again = function () { all.forEach(mark); };
+  window.addEventListener("load", again);
+  if (document.fonts && document.fonts.ready) { document.fonts.ready.then(again); }
+})();
+"""
+"""Marks the working formulas that are cut at the edge of their box (see the script)."""
+
 # The "Test yourself" mode (issue 31): its own module, appended to every page's style and script.
 from .selftest_assets import SELFTEST_CSS, SELFTEST_JS  # noqa: E402
 
 CSS += SELFTEST_CSS
-JS += SELFTEST_JS
+JS += CLIP_JS + SELFTEST_JS

@@ -32,6 +32,7 @@ border-radius:4px}
 .scanconv .sc-tfeed p{margin:.15em 0}
 .scanconv .sc-tfeed .sc-ok{color:#1d6b2a}
 .scanconv .sc-tfeed .sc-no{color:#a01818}
+.scanconv .sc-tfeed .sc-twhy,.scanconv .sc-tfeed .sc-texp{color:var(--sc-muted)}
 .scanconv .sc-tscore{font-weight:bold;margin:.4em 0}
 .scanconv .sc-tbar{display:flex;flex-wrap:wrap;gap:.4em;margin-top:.4em}
 .scanconv.sc-testing .sc-controls,.scanconv.sc-testing .sc-caption,.scanconv.sc-testing .sc-hover,\
@@ -41,6 +42,10 @@ border-radius:4px}
 .scanconv.sc-testing td.sc-hidcell{color:transparent}
 .scanconv.sc-testing td.sc-hidcell *{visibility:hidden}
 .scanconv.sc-testing svg.sc-stepgrid{cursor:crosshair}
+.scanconv .sc-selftest button,.scanconv .sc-testpanel button,.scanconv .sc-testpanel select,\
+.scanconv .sc-tform input{min-height:28px;min-width:28px}
+.scanconv .sc-gridbox{overflow-x:auto;max-width:100%}
+.scanconv.sc-testing svg.sc-stepgrid{max-height:none}
 @media (max-width:600px){.scanconv .sc-tform input{width:6.5em}\
 .scanconv.sc-testing .sc-stepper{position:static}}
 @media print{.scanconv .sc-selftest{display:none}}
@@ -106,6 +111,27 @@ SELFTEST_JS = r"""
       return e;
     };
     var CMP = { neg: " < 0", zero: "", pos: " > 0" };
+    // A page shown by the site (in its frame) asks the site to judge each step with the
+    // library's own marking (check's follow-through across steps), once the site has said it
+    // can (scanconvHost: the page itself never writes to a host first, whatever embeds it).
+    // Elsewhere the script judges each step itself.
+    var pending = {}, asks = 0;
+    T.host = null;
+    if (window.parent !== window) {
+      window.addEventListener("message", function (e) {
+        var m = e.source === window.parent && e.data;
+        if (!m) { return; }
+        if (m.scanconvHost === "judge") { T.host = window.parent; }
+        var j = m.scanconvJudged;
+        if (j && pending[j.id]) { var f = pending[j.id]; delete pending[j.id]; f(j.result || {}); }
+      });
+    }
+    T.judged = function (steps, done) {
+      var id = "st" + (++asks);
+      pending[id] = done;
+      T.host.postMessage({ scanconvJudge: { id: id, steps: steps } }, "*");
+    };
+    T.minus = function (text) { return String(text).replace(/-(?=[\d(])/g, "\u2212"); };
 
     T.init = function (root) {
       if (root.getAttribute("data-st-ready")) { return; }
@@ -118,7 +144,7 @@ SELFTEST_JS = r"""
       var data = JSON.parse(holder.textContent), rows = data.rows, dda = data.kind === "dda";
       var trs = root.querySelectorAll("tr[data-pos]");
       var svg = root.querySelector("svg.sc-stepgrid");
-      var i = 0, got = 0, asked = 0, testing = false, waiting = false;
+      var i = 0, got = 0, asked = 0, testing = false, waiting = false, typed = [], byHost = false;
       var stepped = [];
       trs.forEach(function (tr) { stepped.push(tr.closest(".sc-tablebox, .sc-scroll")); });
       root.querySelectorAll(".sc-tablebox, .sc-scroll").forEach(function (box) {
@@ -151,7 +177,7 @@ SELFTEST_JS = r"""
       pLab.append(pName, pIn);
       dLab.append(el("span", "", "decision"), dIn);
       xyLab.append(el("span", "", dda ? "pixel" : "next pixel"), xyIn);
-      check.type = "submit";
+      check.type = "button";  // no form submission: a sandboxed frame (the site's) blocks it
       form.append(pLab, dLab, xyLab, check);
       var next = el("button", "", "Next step"), stop = el("button", "", "Stop");
       next.type = "button"; stop.type = "button";
@@ -159,12 +185,24 @@ SELFTEST_JS = r"""
       bar.append(next, stop);
       panel.append(q, form, feed, score, bar);
 
+      // a grid wider than its box (its cells kept large): the step's pixel scrolled into sight
+      function inSight(at) {
+        var box = gridBox, c = data.centre || [0, 0];
+        if (!box || box.scrollWidth <= box.clientWidth) { return; }
+        var px = root.querySelector('svg.sc-stepgrid rect.sc-px[data-x="' + (at[0] + c[0]) + '"][data-y="' + (at[1] + c[1]) + '"]');
+        if (!px) { return; }
+        var b = px.getBoundingClientRect(), o = box.getBoundingClientRect();
+        box.scrollLeft += b.left + b.width / 2 - (o.left + o.width / 2);
+      }
       function ask() {
         var r = rows[i];
         waiting = true;
         hideFrom(r.row);
         goTo(r.lit);
-        q.textContent = "Step " + (i + 1) + " of " + rows.length + ": from " + (dda ? "(" + r.xyt.join(", ") + ")" : pt(r.at)) +
+        inSight(r.at);
+        var last = typed.length && T.pixel(typed[typed.length - 1].pixel);
+        var own = last && (last[0] !== r.at[0] || last[1] !== r.at[1]) ? " (or from your own " + pt(last) + ")" : "";
+        q.textContent = "Step " + (i + 1) + " of " + rows.length + ": from " + (dda ? "(" + r.xyt.join(", ") + ")" : pt(r.at)) + (T.host ? own : "") +
           (dda ? "" : r.p === null ? ", the pixel only" : ", what are " + r.name + ", the decision and the next pixel?");
         if (dda) { q.textContent += ", what are " + r.name + " and the pixel?"; }
         pName.textContent = r.name + " =";
@@ -224,6 +262,12 @@ SELFTEST_JS = r"""
         var to = [r.at[0] + moves[move][0], r.at[1] + moves[move][1]];
         var px = T.pixel(xyIn.value), okX = !!px && px[0] === to[0] && px[1] === to[1];
         var from = move === r.d ? "" : " (follow-through from your decision)";
+        var ruled = [r.at[0] + moves[dWant][0], r.at[1] + moves[dWant][1]];
+        if (!okX && px && px[0] === ruled[0] && px[1] === ruled[1]) {
+          // the pixel the rule's own step reaches: the decision word was the one slip (as check
+          // judges it: a right cell is never called wrong)
+          okX = true; to = ruled; from = " (the rule's step: the decision was the slip)";
+        }
         line(okX, okX ? "next pixel " + pt(to) + from : "next pixel: " + move + " from " + pt(r.at) + " goes to " + pt(to) + (px ? ", not " + pt(px) : ""));
         marks += okX ? 1 : 0;
         var tail = want === null ? "the next pixel is " + r.d + ": " + pt(r.to) :
@@ -232,32 +276,92 @@ SELFTEST_JS = r"""
         return marks;
       }
       function parts(r) { return dda ? 2 : r.p === null ? 1 : 3; }
-      form.addEventListener("submit", function (e) {
-        e.preventDefault();
-        if (!waiting) { return; }
-        waiting = false;
-        var r = rows[i];
-        feed.textContent = "";
-        got += dda ? judgeDda(r) : judge(r);
-        asked += parts(r);
+      // the library's verdict (the site's): each answer right or wrong against the value
+      // check judges it by, the reason in check's words, the expected step as check writes it
+      var NAMES = { decision: "decision", pixel: dda ? "pixel" : "next pixel" };
+      function ownValue(part, r) {
+        if (part.field === "p") { return r.p !== null && T.same(T.num(part.want), T.num(r.p)); }
+        if (part.field === "decision") { return part.want === r.d; }
+        if (part.field === "pixel") { var w = T.pixel(part.want); return !!w && w[0] === r.to[0] && w[1] === r.to[1]; }
+        return part.want === "x = " + r.nxy[0] + ", y = " + r.nxy[1];
+      }
+      function showJudged(r, res) {
+        res.parts.forEach(function (part) {
+          var name = NAMES[part.field] || r.name, eq = NAMES[part.field] ? " " : " = ";
+          if (part.field === "exact") { eq = ": "; }
+          var follows = part.ok && !ownValue(part, r) ? " (follow-through: it follows from your own answers)" : "";
+          line(part.ok, T.minus(part.ok ? name + eq + part.got + follows : name + eq + part.want + ", not " + part.got));
+        });
+        if (res.why) { feed.append(el("p", "sc-twhy", T.minus("Why: " + res.why))); }
+        feed.append(el("p", "sc-texp", T.minus("Expected (as check marks it): " + res.expected)));
+        var tail = dda ? r.name + " = (" + r.nxyt.join(", ") + "), so the pixel is " + pt(r.to) :
+          r.p === null ? "the next pixel is " + r.d + ": " + pt(r.to) :
+          r.name + " = " + T.minus(r.pt) + CMP[T.sign(T.num(r.p))] + ", so the next pixel is " + r.d + ": " + pt(r.to);
+        feed.append(el("p", "", "The answer's own step: " + tail + "."));
+      }
+      function judged(r, marks, steps) {
+        got = marks; asked = steps;
         hideFrom(r.row + 1);
         goTo(r.lit + 1);
-        form.hidden = true;
-        score.textContent = "Score so far: " + got + " / " + asked;
+        var unit = byHost ? " steps right" : "";
+        score.textContent = "Score so far: " + got + " / " + asked + unit;
         i += 1;
         if (i >= rows.length) {
-          score.textContent = "Score: " + got + " / " + asked + " (" + Math.round(100 * got / Math.max(asked, 1)) + " %)";
+          score.textContent = "Score: " + got + " / " + asked + unit + " (" + Math.round(100 * got / Math.max(asked, 1)) + " %)";
           next.textContent = "Again";
         } else { next.textContent = "Next step"; }
         next.hidden = false;
         next.focus();
-      });
+      }
+      form.addEventListener("submit", function (e) { e.preventDefault(); });
+      root.addEventListener("keydown", function (e) {  // on the root: the stepper's keys stop there
+        if (e.key === "Enter" && !e.isComposing && form.contains(e.target)) { e.preventDefault(); checkStep(); }
+      }, true);
+      check.addEventListener("click", checkStep);
+      function checkStep() {
+        if (!waiting) { return; }
+        waiting = false;
+        var r = rows[i];
+        feed.textContent = "";
+        form.hidden = true;
+        typed.push(dda ? { exact: pIn.value, pixel: xyIn.value } : { p: pLab.hidden ? "" : pIn.value, decision: dIn.value, pixel: xyIn.value });
+        if (T.host) {
+          byHost = true;
+          feed.textContent = "Checking\u2026";
+          T.judged(typed.slice(), function (res) {
+            feed.textContent = "";
+            if (res.error || !res.parts) {  // the site cannot mark this answer: judged here, from now on
+              T.host = null; byHost = false;
+              judged(r, got + (dda ? judgeDda(r) : judge(r)), asked + parts(r));
+              return;
+            }
+            showJudged(r, res);
+            judged(r, res.score[0], res.score[1]);
+          });
+          return;
+        }
+        judged(r, got + (dda ? judgeDda(r) : judge(r)), asked + parts(r));
+      }
       next.addEventListener("click", function () {
-        if (i >= rows.length) { i = 0; got = 0; asked = 0; score.textContent = ""; }
+        if (i >= rows.length) { i = 0; got = 0; asked = 0; typed = []; score.textContent = ""; }
         ask();
       });
+      // a grid cell is a target to tap: at least 26 CSS px while testing (WCAG 2.2's 24 px
+      // minimum), the grid scrolling sideways in its box if the screen is narrower
+      var cell = root.querySelector("svg.sc-stepgrid rect.sc-px"), gridBox = null;
+      function targets(on) {
+        if (!svg || !cell || !svg.viewBox || !svg.viewBox.baseVal) { return; }
+        if (!gridBox) {  // the grid alone scrolls sideways, in a box of its own
+          gridBox = el("div", "sc-gridbox");
+          svg.parentNode.insertBefore(gridBox, svg);
+          gridBox.appendChild(svg);
+        }
+        var units = svg.viewBox.baseVal.width, size = +cell.getAttribute("width");
+        svg.style.minWidth = on && size > 0 ? Math.ceil(units * 26 / size) + "px" : "";
+      }
       function start() {
-        testing = true; i = 0; got = 0; asked = 0;
+        targets(true);
+        testing = true; i = 0; got = 0; asked = 0; typed = [];
         root.classList.add("sc-testing");
         panel.hidden = false;
         btn.setAttribute("aria-expanded", "true");
@@ -266,6 +370,7 @@ SELFTEST_JS = r"""
         ask();
       }
       function end() {
+        targets(false);
         testing = false; waiting = false;
         root.classList.remove("sc-testing");
         hideFrom(Infinity);

@@ -99,11 +99,10 @@ KINDS = ("key", "worksheet")
 
 
 CONTENTS_ALONE = {
-    "markdown": "scanconv.render.text:MARKDOWN",
-    "plain": "scanconv.render.text:PLAIN",
-    "latex": "scanconv.render.latex:LATEX",
+    name: f"scanconv.render.{spec.mapping}" for name, spec in FORMATS.items() if spec.mapping
 }
-"""The formats that write a sheet's contents alone (and json), each by its mapping."""
+"""The formats that write a sheet's contents alone (and json), each by its mapping (read from
+:data:`scanconv.render.FORMATS`, its ``mapping``)."""
 
 
 def contents_document(sheet: Sheet, fmt: str) -> str:

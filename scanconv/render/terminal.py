@@ -87,22 +87,17 @@ def column_parts(widths: Sequence[int], width: int) -> list[list[int]]:
     return parts
 
 
-def wrap_text(text: str, width: int, indent: str = "", first: str = "") -> list[str]:
-    """``first`` + ``text`` wrapped to ``width`` at spaces outside brackets, so a pair
-    ``(2, 5)`` or an interval ``[0, 1]`` is never split; later lines start with ``indent``.
-
-    >>> wrap_text("Start at (2, 2), plotted before (3, 3).", 20, "  ")
-    ['Start at (2, 2),', '  plotted before', '  (3, 3).']
-    """
-    text = text.replace("' '", "'\0'")  # a quoted space (a shade's character) is one word
-    words: list[tuple[str, str]] = []  # (the spaces before it, the word)
+def _words(text: str, level: int = 0) -> list[tuple[str, str]]:
+    """The words of ``text`` as (the spaces before it, the word): split at the spaces inside
+    at most ``level`` brackets (0: outside every bracket)."""
+    words: list[tuple[str, str]] = []
     depth, start, space = 0, 0, ""
     for i, ch in enumerate(text):
         if ch in "([{":
             depth += 1
         elif ch in ")]}":
             depth = max(0, depth - 1)
-        elif ch == " " and depth == 0:
+        elif ch == " " and depth <= level:
             if i > start:
                 words.append((space, text[start:i]))
                 space = ""
@@ -110,6 +105,37 @@ def wrap_text(text: str, width: int, indent: str = "", first: str = "") -> list[
             start = i + 1
     if start < len(text):
         words.append((space, text[start:]))
+    return words
+
+
+def _fitted(words: list[tuple[str, str]], room: int) -> list[tuple[str, str]]:
+    """The words, each bracket group wider than ``room`` split at the spaces one bracket
+    further in (and so on), so that a wrapped line keeps its indent: rich would otherwise
+    break it at the screen's edge and start the rest at column 0 (issue 39, item 8)."""
+    out: list[tuple[str, str]] = []
+    for space, word in words:
+        level, parts = 0, [(space, word)]
+        while any(cell_len(w) > room for _, w in parts) and " " in word and level < len(word):
+            level += 1
+            parts = _words(word, level)
+            parts[0] = (space, parts[0][1])
+        out += parts
+    return out
+
+
+def wrap_text(text: str, width: int, indent: str = "", first: str = "") -> list[str]:
+    """``first`` + ``text`` wrapped to ``width`` at spaces outside brackets, so a pair
+    ``(2, 5)`` or an interval ``[0, 1]`` is never split; later lines start with ``indent``.
+    A bracket group wider than the line is split at the spaces inside it, so that no line is
+    wider than ``width`` unless one word is.
+
+    >>> wrap_text("Start at (2, 2), plotted before (3, 3).", 20, "  ")
+    ['Start at (2, 2),', '  plotted before', '  (3, 3).']
+    >>> wrap_text("tie = step (a decision of 0 steps (if p < 0 keep it)).", 24, "    ")
+    ['tie = step (a decision', '    of 0 steps', '    (if p < 0 keep it)).']
+    """
+    text = text.replace("' '", "'\0'")  # a quoted space (a shade's character) is one word
+    words = _fitted(_words(text), max(1, width - max(cell_len(indent), cell_len(first))))
     lines: list[str] = []
     line = first
     fresh = True

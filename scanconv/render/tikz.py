@@ -67,11 +67,31 @@ def tikz_grid(
     return _boxed(fig, EMPTY if empty else None, caption)
 
 
+def grid_height(solution: Solution | Document, origin: str = "bottom-left") -> float | None:
+    """About how tall :func:`tikz_grid`'s picture is set, in points (its ``% height``), or
+    ``None`` when it draws none: what a table above it leaves room for to keep it.
+
+    >>> from scanconv.answers.primitives.line import line_solution
+    >>> round(grid_height(line_solution("bresenham", 2, 2, 10, 6)))
+    172
+    """
+    try:
+        fig = build(solution, origin)
+    except ValueError:
+        return None
+    return _tall(fig, any(s.cls == "legend" for s in fig.shapes), False)
+
+
+def _tall(fig: Figure, caption: bool, title: bool) -> float:
+    """The height of a boxed picture with its caption and title lines, in points."""
+    return fig.height * scale(fig) + 14 * (caption + title) + 10
+
+
 def _boxed(fig: Figure, keep: Container[str] | None, caption: str, title: str = "") -> str:
     """The picture of ``fig`` and its caption (and a title above) in a minipage: never
     split by a page break. A ``% height`` comment says about how tall it is, in points (the
     sheet's page estimate reads it)."""
-    tall = fig.height * scale(fig) + 14 * (bool(caption) + bool(title)) + 10
+    tall = _tall(fig, bool(caption), bool(title))
     out = [
         f"\n% height {tall:.0f}pt\n\\par\\noindent\\begin{{minipage}}{{\\linewidth}}\\centering\n"
     ]

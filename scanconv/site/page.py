@@ -17,15 +17,22 @@ import json
 from typing import TYPE_CHECKING, Any
 
 from ..core import lazy
+from ..core.checks import InputError
 from ..render import Format, Notice, render
 
 if TYPE_CHECKING:
     from .. import questions
+    from ..marking import mark as marking
     from ..questions import limits, parser
+    from ..questions import marking as questions_marking
+    from ..render import selftest_marks
 else:
     questions = lazy.module("scanconv.questions")
     limits = lazy.module("scanconv.questions.limits")
     parser = lazy.module("scanconv.questions.parser")
+    marking = lazy.module("scanconv.marking.mark")
+    questions_marking = lazy.module("scanconv.questions.marking")
+    selftest_marks = lazy.module("scanconv.render.selftest_marks")
 
 EXAMPLES = (
     "line 2 2 10 6 --algo bresenham",
@@ -133,6 +140,40 @@ def warm() -> None:
     >>> warm()
     """
     solve_page(EXAMPLES[0])
+
+
+MAX_STEPS = 1000
+"""Most steps of "Test yourself" :func:`judge` marks (the page asks at most
+:data:`~scanconv.render.stepper.MAX_TABLE_ROWS`, 1,000; the site's script forwards as many)."""
+
+
+def judge(question: str, steps: str) -> str:
+    """The verdict on the last of the steps a student has typed into "Test yourself" on the
+    answer to ``question`` (``steps``: a JSON list of ``{"p", "decision", "pixel"}``, the
+    DDA's ``{"exact", "pixel"}``), judged by the library's marking, the follow-through of
+    ``check`` (:func:`scanconv.marking.mark.mark_steps`), as JSON
+    (:func:`scanconv.render.selftest_marks.feedback`), or ``{"error"}``.
+
+    >>> steps = [{"p": "0", "decision": "NE", "pixel": "3, 3"},
+    ...          {"p": "8", "decision": "NE", "pixel": "4, 4"}]
+    >>> r = json.loads(judge("line 2 2 10 6", json.dumps(steps)))
+    >>> r["mark"], r["expected"], r["score"]
+    ('wrong', 'p = -8, NE, (4, 4)', [1, 2])
+    >>> json.loads(judge("line 2 2 10 6", "[1]"))
+    {'error': 'the steps are not a list of answers'}
+    """
+    try:
+        limits.check_question_size(question)
+        typed = json.loads(steps)
+        if not isinstance(typed, list) or not all(
+            isinstance(s, dict) and all(isinstance(v, str) for v in s.values()) for s in typed
+        ):
+            raise InputError("the steps are not a list of answers")
+        solution = questions_marking.marking_question(_words(question))
+        result = selftest_marks.feedback(marking.mark_steps(solution, typed[:MAX_STEPS]))
+    except (ValueError, RecursionError) as err:  # InputError and JSON's errors are ValueErrors
+        return json.dumps({"error": " ".join(str(err).split()) or "the steps are unreadable"})
+    return json.dumps(result)
 
 
 def answer(question: str) -> str:

@@ -14,7 +14,7 @@ from typing import Any
 
 from ...algorithms import dither as d
 from ...core.checks import InputError
-from ...core.numeric import Number, fmt_short, normalize
+from ...core.numeric import Number, fmt, fmt_short, normalize
 from ...core.records import (
     Column,
     Quantity,
@@ -247,7 +247,9 @@ def ordered_solution(
 
 
 def _carries_text(carries: Sequence[d.Carry]) -> str:
-    return ", ".join(f"({c.pixel[1]}, {c.pixel[0]}) += {fmt_short(c.amount)}" for c in carries)
+    """Each share in the form of the table's other values (3 decimals, a whole number as it is),
+    never a decimal in one row and a fraction in the next (issue 39, item 8)."""
+    return ", ".join(f"({c.pixel[1]}, {c.pixel[0]}) += {fmt(c.amount)}" for c in carries)
 
 
 def diffusion_solution(

@@ -12,6 +12,8 @@ let worker = null;
 let ready = false;
 let asked = null; // { id, question, at }
 let nextId = 1;
+let shownQuestion = null; // the question whose answer the frame shows (test yourself asks on it)
+const judging = new Map(); // a judge request's id -> [the frame's window, the frame's own id]
 
 function setStatus(text, state) {
   status.textContent = text;
@@ -48,6 +50,10 @@ function received(m) {
     }
   } else if (m.type === "failed") {
     setStatus("Python could not start: " + m.error, "failed");
+  } else if (m.type === "judged" && judging.has(m.id)) {
+    const [target, id] = judging.get(m.id);
+    judging.delete(m.id);
+    if (target === $("answer").contentWindow) target.postMessage({ scanconvJudged: { id, result: m.result } }, "*");
   } else if (m.type === "answer" && asked && m.id === asked.id) {
     const ms = performance.now() - asked.at;
     timings.answers.push({ question: asked.question, ms, sinceLoad: performance.now() - started });
@@ -69,9 +75,22 @@ function show(m, ms) {
   }
   $("notes").textContent = m.notes.join("; ");
   $("notes").hidden = !m.notes.length;
+  shownQuestion = m.question;
+  scrollPending = true;
   showPage(m.html);
   $("json").textContent = m.json;
   setStatus(`${m.title} (answered in ${Math.round(ms)} ms)`, "answered");
+  intoView();
+}
+
+// On a small screen the answer starts below the question box, the examples and the forms
+// (on a 390 x 844 phone, below the fold): once shown, an answer whose top is not in the upper
+// quarter of the screen is scrolled up to the top of it; again when its frame has reported
+// its height (until then the page may be too short to scroll that far).
+let scrollPending = false;
+function intoView() {
+  const top = $("answer").getBoundingClientRect().top;
+  if (top < 0 || top > window.innerHeight / 4) $("answer").scrollIntoView({ block: "start" });
 }
 
 // The answer's page runs in a sandboxed frame (sandbox="allow-scripts", no same origin: its
@@ -88,18 +107,42 @@ function showPage(html) {
   const old = $("answer");
   const frame = old.cloneNode(false);
   frame.removeAttribute("style");
+  frame.removeAttribute("data-host"); // a new page, told again that it may ask for judgements
   const end = html.lastIndexOf("</body>");
   frame.srcdoc =
     end < 0 ? html + HEIGHT_REPORT : html.slice(0, end) + HEIGHT_REPORT + html.slice(end);
   old.replaceWith(frame);
 }
 
+// The frame's "Test yourself" asks this page to judge each step with the library's marking
+// (check's follow-through): told that it may (scanconvHost, once its page has loaded and
+// reported its height), it sends the steps typed so far (a list of short texts); the worker
+// judges them on the question the frame shows.
+function judgeRequest(frame, ask) {
+  if (!ask || typeof ask.id !== "string" || !Array.isArray(ask.steps) || ask.steps.length > 1000) return;
+  const steps = ask.steps.map((s) =>
+    Object.fromEntries(Object.entries(Object(s)).map(([k, v]) => [String(k).slice(0, 20), String(v).slice(0, 200)])),
+  );
+  const id = "judge" + nextId++;
+  judging.set(id, [frame.contentWindow, ask.id.slice(0, 40)]);
+  worker.postMessage({ id, question: shownQuestion, steps });
+}
+
 window.addEventListener("message", (event) => {
   const frame = $("answer");
   if (event.source !== frame.contentWindow || !event.data) return;
+  if (event.data.scanconvHeight && !frame.dataset.host) {
+    frame.dataset.host = "1";
+    frame.contentWindow.postMessage({ scanconvHost: "judge" }, "*");
+  }
+  if (event.data.scanconvJudge && ready && shownQuestion !== null) judgeRequest(frame, event.data.scanconvJudge);
   const height = Number(event.data.scanconvHeight);
   if (Number.isFinite(height) && height > 0) {
     frame.style.height = Math.min(Math.ceil(height) + 4, 1e6) + "px"; // and its borders
+    if (scrollPending) {
+      scrollPending = false;
+      intoView();
+    }
   }
 });
 

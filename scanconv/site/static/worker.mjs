@@ -36,6 +36,7 @@ function lastLine(err) {
 }
 
 function answer(message) {
+  if (message.steps !== undefined) return judge(message);
   let result;
   try {
     result = JSON.parse(page.answer(message.question));
@@ -43,6 +44,18 @@ function answer(message) {
     result = { ok: false, error: "scanconv failed: " + lastLine(err) };
   }
   postMessage({ type: "answer", id: message.id, ...result });
+}
+
+// "Test yourself" in the answer's frame: the steps typed so far, judged by the library's
+// marking (check's follow-through), scanconv.site.page.judge
+function judge(message) {
+  let result;
+  try {
+    result = JSON.parse(page.judge(message.question, JSON.stringify(message.steps)));
+  } catch (err) {
+    result = { error: "scanconv failed: " + lastLine(err) };
+  }
+  postMessage({ type: "judged", id: message.id, result });
 }
 
 onmessage = (event) => (page ? answer(event.data) : waiting.push(event.data));

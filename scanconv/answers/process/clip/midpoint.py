@@ -11,7 +11,7 @@ from ....algorithms.clipping import Rect
 from ....algorithms.midpoint_clip import Piece, subdivide, visible
 from ....core.checks import InputError
 from ....core.numeric import Number, fmt_short, normalize
-from ....core.records import Solution, Table, heading, rule, worked
+from ....core.records import Quantity, Solution, Table, heading, rule, worked
 from .._shared import pt
 
 
@@ -49,6 +49,29 @@ def _table(pieces: list[Piece]) -> Table:
     )
 
 
+def _rules(midpoint: str, stop: str) -> tuple[Quantity, ...]:
+    """The rules the subdivision follows, with its midpoint and stop conventions."""
+    how = {
+        "rounded": r"\text{rounded half up}",
+        "floor": r"\text{floor: the hardware shift, } \lfloor (a + b)/2 \rfloor",
+        "exact": r"\text{exact}",
+    }[midpoint]
+    edge = rule(
+        "edge",
+        r"\text{a piece from a point on an edge to a point beyond that edge: "
+        r"the point is the clipped end}",
+    )
+    return (
+        rule(
+            "accept",
+            r"\text{both codes } 0000: \text{accept}; \ \text{AND} \ne 0000: \text{reject}",
+        ),
+        rule("split", f"\\text{{else split at }} P_m = ((x_1 + x_2)/2, (y_1 + y_2)/2), {how}"),
+        rule("stop", r"\text{a piece one unit long keeps its inside end}"),
+        *((edge,) if stop == "edge" else ()),
+    )
+
+
 def midpoint_clip_solution(
     x1: Number,
     y1: Number,
@@ -77,11 +100,6 @@ def midpoint_clip_solution(
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
     pieces = list(subdivide(p1, p2, w, midpoint, stop))
     parts = visible(pieces)
-    how = {
-        "rounded": r"\text{rounded half up}",
-        "floor": r"\text{floor: the hardware shift, } \lfloor (a + b)/2 \rfloor",
-        "exact": r"\text{exact}",
-    }[midpoint]
     shown = "; ".join(f"{pt(a)} to {pt(b)}" for a, b in parts) or "none"
     return Solution(
         primitive="clip",
@@ -98,23 +116,7 @@ def midpoint_clip_solution(
             ),
         ),
         derived=(
-            rule(
-                "accept",
-                r"\text{both codes } 0000: \text{accept}; \ \text{AND} \ne 0000: \text{reject}",
-            ),
-            rule("split", f"\\text{{else split at }} P_m = ((x_1 + x_2)/2, (y_1 + y_2)/2), {how}"),
-            rule("stop", r"\text{a piece one unit long keeps its inside end}"),
-            *(
-                (
-                    rule(
-                        "edge",
-                        r"\text{a piece from a point on an edge to a point beyond that edge: "
-                        r"the point is the clipped end}",
-                    ),
-                )
-                if stop == "edge"
-                else ()
-            ),
+            *_rules(midpoint, stop),
             worked(
                 "visible", [[list(a), list(b)] for a, b in parts], f"\\text{{visible: {shown}}}"
             ),

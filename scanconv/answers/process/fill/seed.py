@@ -35,6 +35,7 @@ from ....core.records import (
     Table,
     heading,
 )
+from ....core.working import tex_text
 
 GRID_CHARS = {"#": BOUNDARY, ".": EMPTY, "*": FILLED}
 """How a grid given as text is read: ``#`` boundary, ``.`` empty, ``*`` already the fill
@@ -140,8 +141,9 @@ def _fill_order(trace: list[Any], span: bool, before: Grid) -> tuple[list[Pixel]
 
 
 def _said(key: str, value: Any, text: str) -> Quantity:
-    """A quantity stated in words (the same words in TeX's text mode)."""
-    return Quantity(key, value, text, f"\\text{{{text}}}")
+    """A quantity stated in words (the same words in TeX's text mode, escaped: ``x_left``
+    would stop pdflatex)."""
+    return Quantity(key, value, text, f"\\text{{{tex_text(text)}}}")
 
 
 def _neighbours(connectivity: int, span: bool) -> str:
