@@ -524,3 +524,25 @@ def test_cohen_sutherland_clips_the_one_end_outside(p1, p2, segment, ends):
 )
 def test_is_convex_by_the_turn_at_every_vertex(vertices, convex):
     assert is_convex(vertices) is convex
+
+
+@pytest.mark.parametrize("method", ["cyrus-beck", "nicholl-lee-nicholl"])
+def test_the_pipeline_takes_the_clipped_segment_as_a_value_not_from_json_data(
+    method: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """An answer's ``data`` is output only: with NLL's and Cyrus-Beck's answers emptied of
+    their JSON fields, the pipeline still clips -5,0 - 15,10 to (0, 2.5) - (10, 7.5) (by hand:
+    y = 2.5 + x/2 on the window 0..10)."""
+    from scanconv.answers.process.clip import cyrus_beck, nll
+
+    for module, name in ((cyrus_beck, "cyrus_beck_solution"), (nll, "nll_solution")):
+        real = getattr(module, name)
+
+        def emptied(*args: object, _real: object = real, **kwargs: object) -> object:
+            sol = _real(*args, **kwargs)  # type: ignore[operator]
+            sol.data = {}
+            return sol
+
+        monkeypatch.setattr(module, name, emptied)
+    sol = pipeline_line_solution(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10), clip=method)
+    assert sol.data["clipped"] == [[0, Fraction(5, 2)], [10, Fraction(15, 2)]]

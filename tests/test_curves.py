@@ -31,6 +31,7 @@ from scanconv.answers.curves.bezier import bezier_solution
 from scanconv.answers.curves.bspline import bspline_solution
 from scanconv.answers.primitives.parametric import parametric_solution
 from scanconv.core.checks import InputError
+from scanconv.core.ideal import ControlPolygon, Polyline
 from scanconv.render import formats
 
 from .helpers import assert_refused, connected, run
@@ -378,15 +379,17 @@ def test_bezier_solution_marks_control_points_and_box_contains_everything():
     assert sol.marks == tuple(pts)
     x0, y0, x1, y1 = sol.bbox
     assert all(x0 <= x <= x1 and y0 <= y <= y1 for x, y in sol.pixels())
-    assert sol.geometry["control"] == [(0.0, 0.0), (1.0, 2.0), (3.0, 3.0), (4.0, 0.0)]
-    poly = sol.geometry["polyline"]
+    curve, control = sol.plot.ideal
+    assert isinstance(curve, Polyline) and isinstance(control, ControlPolygon)
+    assert control.points == [(0.0, 0.0), (1.0, 2.0), (3.0, 3.0), (4.0, 0.0)]
+    poly = curve.points
     assert poly[0] == (0.0, 0.0) and poly[-1] == (4.0, 0.0) and len(poly) > 9
 
 
 def test_bspline_polyline_matches_the_exact_samples():
     pts = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)]
     sol = bspline_solution(pts, 2, "open", 6)
-    poly = sol.geometry["polyline"]
+    (poly,) = [s.points for s in sol.plot.ideal if isinstance(s, Polyline)]
     assert poly[-1] == pytest.approx((5.0, 2.0)) and poly[0] == (0.0, 0.0)
 
 

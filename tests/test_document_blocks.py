@@ -14,7 +14,7 @@ from scanconv.answers.compare import compare_lines
 from scanconv.answers.curves.bezier import bezier_at_solution
 from scanconv.answers.primitives.ellipse import ellipse_solution
 from scanconv.answers.primitives.line import line_solution
-from scanconv.core.records import Column, Move, PixelFigure, Step, heading, worked
+from scanconv.core.records import Column, Move, PixelFigure, Solution, Step, heading, worked
 from scanconv.document import (
     Document,
     Drawing,
@@ -121,6 +121,40 @@ def test_a_comparison_steps_through_its_declared_table() -> None:
     assert stepping(doc._replace(blocks=flags)) is None  # no flag, no stepper: nothing guessed
 
 
+def _renamed(sol: Solution) -> Solution:
+    """``sol`` under another algorithm name, every further table under another title."""
+    tables = tuple(t._replace(title=f"Table {i}") for i, t in enumerate(sol.tables))
+    return Solution(**{**sol.fields(), "algorithm": "x", "walk": sol.walk._replace(tables=tables)})
+
+
+def test_the_structure_is_read_from_declared_fields_not_from_titles_or_names() -> None:
+    """The old builder found regions by a regex over table titles and the stepped table and
+    the construction points by algorithm name: renaming them changed the stepper."""
+    for sol in (
+        ellipse_solution(8, 6),
+        compare_lines(0, 0, 6, 2),
+        bezier_at_solution([(0, 0), (4, 8), (8, 0)], Fraction(1, 2)),
+        line_solution("bresenham", 2, 2, 10, 6, derive=True),
+    ):
+        doc, other = document(sol), document(_renamed(sol))
+        step, renamed = doc.get(StepTable), other.get(StepTable)
+        assert (step is None) == (renamed is None)
+        if step is not None:
+            assert renamed[:-1] == step[:-1]  # all but the marking model's closure
+        assert [(t.stepped, t.points) for t in other.every(Table)] == [
+            (t.stepped, t.points) for t in doc.every(Table)
+        ]
+        assert other.get(Working) == doc.get(Working)
+        if doc.get(Pixels) is not None:
+            assert other.get(Pixels).construction == doc.get(Pixels).construction
+    ellipse = document(_renamed(ellipse_solution(8, 6))).get(StepTable)
+    assert ellipse.regions == "column" and ellipse.region_p == ("p1_k", "p2_k")
+    line = document(line_solution("bresenham", 2, 2, 10, 6, derive=True)).get(Working)
+    assert line.derivation[0].key == "derivation" and "derivation" not in {
+        q.key for q in line.quantities
+    }
+
+
 def test_construction_points_are_a_table_flag() -> None:
     doc = document(bezier_at_solution([(0, 0), (4, 8), (8, 0)], Fraction(1, 2)))
     assert doc.get(Pixels).construction == "de Casteljau points"
@@ -158,8 +192,7 @@ def _hand_made() -> Document:
                 (0, 0, 3, 1),
                 (),
                 "marked point",
-                {},
-                "curve",
+                (),
                 (),
                 "outline",
                 None,

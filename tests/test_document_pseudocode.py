@@ -86,7 +86,7 @@ def test_every_method_with_pseudocode_gives_the_block(key: str) -> None:
 
 def _bare(sol: Solution) -> Solution:
     """The same answer without its pseudocode."""
-    return Solution(**{**sol.fields(), "code": ()})
+    return Solution(**{**sol.fields(), "theory": sol.theory._replace(code=())})
 
 
 def _rich(doc: Document, width: int) -> str:

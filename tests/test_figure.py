@@ -21,7 +21,8 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.lines import bresenham, dda
 from scanconv.answers.primitives.line import line_solution
-from scanconv.core.records import Column, Solution, Step
+from scanconv.core.ideal import IdealCircle
+from scanconv.core.records import Column, Plot, Solution, Step, Walk
 from scanconv.render import figure
 
 from .helpers import run
@@ -168,10 +169,13 @@ def test_symmetric_steps_number_every_mirror_image():
         "t",
         (),
         (),
-        columns=(Column("k", "k", "k"), Column("pixel", "(x_k, y_k)", "(x_k, y_k)")),
-        steps=lambda: iter(steps),
-        pixels=pixels,
-        geometry={"circle": (*center, 5), "symmetry": 8, "center": center},
+        walk=Walk(
+            columns=(Column("k", "k", "k"), Column("pixel", "(x_k, y_k)", "(x_k, y_k)")),
+            steps=lambda: iter(steps),
+            symmetry=8,
+            center=center,
+        ),
+        plot=Plot(pixels=pixels, ideal=(IdealCircle(*center, 5),)),
     )
     labels = figure.step_labels(solution)
     assert set(labels) == set(pixels())

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from scanconv.core.records import Column, Quantity, Solution, Step, Table
+from scanconv.core.records import Column, Plot, Quantity, Solution, Step, Table, Walk
 from scanconv.render import Format, Options, render, stepper
 from scanconv.render import html as htmlmod
 from scanconv.render.page_assets import CSS, JS
@@ -291,14 +291,19 @@ def hostile_solution() -> Solution:
         HOSTILE,
         given=(Quantity("a", 1, HOSTILE, r"a = \text{" + HOSTILE + "}"),),
         derived=(Quantity("b", 2, HOSTILE, r"\text{" + HOSTILE + r"} < 2 \& 3"),),
-        columns=cols,
-        steps=lambda: iter([Step(0, None, None, (0, 0)), Step(1, None, None, (1, 1))]),
-        pixels=lambda: iter([(0, 0), (1, 1)]),
-        bbox=(0, 0, 1, 1),
         notes=(HOSTILE, f"${HOSTILE}$ and $x$"),
-        tables=(Table(HOSTILE, (Column("w", HOSTILE, HOSTILE),), lambda: iter([(HOSTILE,)])),),
-        marks_label=HOSTILE,
-        geometry={"outline": [(0, 1)], "outline_name": HOSTILE},
+        walk=Walk(
+            columns=cols,
+            steps=lambda: iter([Step(0, None, None, (0, 0)), Step(1, None, None, (1, 1))]),
+            tables=(Table(HOSTILE, (Column("w", HOSTILE, HOSTILE),), lambda: iter([(HOSTILE,)])),),
+        ),
+        plot=Plot(
+            pixels=lambda: iter([(0, 0), (1, 1)]),
+            bbox=(0, 0, 1, 1),
+            marks_label=HOSTILE,
+            outline=((0, 1),),
+            outline_name=HOSTILE,
+        ),
     )
 
 

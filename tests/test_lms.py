@@ -28,7 +28,7 @@ from hypothesis import strategies as st
 
 from scanconv.cli.sheet import answer_questions, read_questions
 from scanconv.render.lms import MAX_GAPS, TOLERANCE, decimal_text, number_gap
-from scanconv.render.sheet import LABELS, sheet_document
+from scanconv.render.sheet import sheet_document
 
 SCANCONV = (sys.executable, "-m", "scanconv")
 """The CLI of the Python running the tests (not whatever ``scanconv`` is first on PATH)."""
@@ -259,6 +259,11 @@ SHOWN = {
 
 def _asked(title: str, column: str) -> bool:
     return not any(title.startswith(t) and column == c for t, c in WORKING | SHOWN)
+
+
+LABELS = frozenset({"k", "r", "i", "decimal", "unit", "method"})
+"""Keys of a first column that numbers or names the rows (the step ``k``, de Casteljau's level
+``r``, an image's row ``i``, a quantization level's number, a storage unit): shown, not asked."""
 
 
 def key_cells(answer: dict[str, Any], *, split_steps: bool = False) -> list[Any]:

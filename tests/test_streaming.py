@@ -38,8 +38,9 @@ def counted(solution: Solution) -> tuple[Solution, list[int]]:
             pulled[0] += 1
             yield p
 
-    fields = {**solution.fields(), "steps": counting_steps, "pixels": counting_pixels}
-    return Solution(**fields), pulled
+    walk = solution.walk._replace(steps=counting_steps)
+    plot = solution.plot._replace(pixels=counting_pixels)
+    return Solution(**{**solution.fields(), "walk": walk, "plot": plot}), pulled
 
 
 @pytest.mark.parametrize("fmt", [Format.csv, Format.json])

@@ -19,8 +19,9 @@ from typing import TYPE_CHECKING, Any
 
 from ..core import lazy
 from ..core.checks import InputError, check_integer
+from ..core.ideal import IdealCircle, IdealLine
 from ..core.numeric import Number, fmt, fmt_short, normalize
-from ..core.records import Pixel, PixelFigure, Solution, Table, heading, rule
+from ..core.records import Pixel, PixelFigure, Plot, Solution, Table, Walk, heading, rule
 from .methods import METHODS, compared
 
 if TYPE_CHECKING:
@@ -202,13 +203,13 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool =
         *(heading(m, f"\\text{{{NAMES[m]}}}") for m in methods),
         heading("reason", r"\text{differ}"),
     )
-    tables = [Table(f"Pixels side by side ({mnr} for each {maj})", columns, rows)]
+    tables = [Table(f"Pixels side by side ({mnr} for each {maj})", columns, rows, stepped=True)]
     if integer:
         tables.append(
             Table(
                 "Arithmetic per pixel",
                 (
-                    heading("method", r"\text{method}"),
+                    heading("method", r"\text{method}", role="label"),
                     heading("work", r"\text{per pixel}"),
                     heading("arithmetic", r"\text{arithmetic}"),
                 ),
@@ -224,9 +225,8 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool =
         given=sols["dda"].given,
         derived=derived,
         notes=tuple(notes),
-        tables=(*tables, *_theory("line", theory)),
-        figures=_disagreement_figure(all_pixels),
-        geometry={"line": (x1, y1, x2, y2)},
+        walk=Walk(tables=(*tables, *_theory("line", theory))),
+        plot=Plot(figures=_disagreement_figure(all_pixels), ideal=(IdealLine(x1, y1, x2, y2),)),
         data={"methods": list(methods), "columns_differing": len(differing)},
     )
 
@@ -415,12 +415,16 @@ def compare_circles(r: Number, theory: bool = False) -> Solution:
         given=sols["midpoint"].given[:1],
         derived=derived,
         notes=tuple(notes),
-        tables=(
-            Table("First octant side by side (y for each x)", columns, rows),
-            *_theory("circle", theory),
+        walk=Walk(
+            tables=(
+                Table("First octant side by side (y for each x)", columns, rows, stepped=True),
+                *_theory("circle", theory),
+            )
         ),
-        figures=_disagreement_figure({m: _plotted(sols[m]) for m in methods}),
-        geometry={"circle": (0, 0, ir)},
+        plot=Plot(
+            figures=_disagreement_figure({m: _plotted(sols[m]) for m in methods}),
+            ideal=(IdealCircle(0, 0, ir),),
+        ),
         data={"methods": list(methods), "columns_differing": len(differing)},
     )
 
@@ -543,9 +547,11 @@ def compare_curves() -> Solution:
             "A clamped B-spline does pass through its first and last control points "
             "(erratum E4); the notes' 'does not pass' holds for unclamped knots.",
         ),
-        tables=(
-            th.theory_table(
-                "Theory: Bezier vs B-spline", ("point", "Bezier", "B-spline"), th.CURVE_THEORY
-            ),
+        walk=Walk(
+            tables=(
+                th.theory_table(
+                    "Theory: Bezier vs B-spline", ("point", "Bezier", "B-spline"), th.CURVE_THEORY
+                )._replace(stepped=True),
+            )
         ),
     )

@@ -14,6 +14,7 @@ from collections.abc import Callable, Iterable, Iterator
 from enum import Enum
 from typing import Any, Literal, NamedTuple
 
+from .ideal import Ideal
 from .numeric import Number
 from .working import tex_to_unicode
 
@@ -171,6 +172,11 @@ class Table(NamedTuple):
     """Column headings; cells are taken by position from each row."""
     rows: Callable[[], Iterable[tuple[Any, ...]]]
     """A fresh iterable of rows each time it is called."""
+    stepped: bool = False
+    """The stepper goes through this table one row a step (a comparison: the methods side by
+    side, nothing plotted)."""
+    points: bool = False
+    """Its rows hold construction points to draw over the grid (de Casteljau's levels)."""
 
 
 class Code(NamedTuple):
@@ -224,6 +230,96 @@ def _no_steps() -> Iterator[Step]:
     return iter(())
 
 
+Regions = Literal["column", "restart", "none"]
+"""How a step table's rows fall into regions (the ellipse's region 2 is coloured apart):
+``"column"``: the ``region`` value of each row; ``"restart"``: a new region wherever ``k``
+starts again; ``"none"``: one region."""
+
+
+class Walk(NamedTuple):
+    """An answer's tables: the step table of its walk, as the answer declares it, and the
+    further tables."""
+
+    columns: tuple[Column, ...] = ()
+    """The step table's columns, in the notes' order; empty: the answer has no step table."""
+    extra_keys: tuple[str, ...] = ()
+    """Names of the values in :attr:`Step.extra`, in order."""
+    steps: Callable[[], Iterator[Step]] = _no_steps
+    """A fresh generator of the step records."""
+    shown: bool = True
+    """``False``: the text formats leave the step table out because :attr:`tables` show the
+    same steps split up (the ellipse's two regions); csv and json still carry every step."""
+    tables: tuple[Table, ...] = ()
+    """Secondary tables shown after the step table."""
+    regions: Regions = "restart"
+    """How the step table's rows fall into regions (:data:`Regions`)."""
+    region_p: tuple[str, ...] = ()
+    """The TeX name of the decision parameter in each region (``p1_k``, ``p2_k``), region 1
+    first; empty: the ``p`` column's own heading."""
+    symmetry: int = 1
+    """1, 4 or 8: how each step's point is mirrored into plotted pixels (with 4 or 8,
+    ``Step.pixel`` is the point relative to :attr:`center`, as the circle tables print it)."""
+    center: tuple[Any, Any] = (0, 0)
+    """The centre the points are mirrored about (with symmetry 4 or 8)."""
+
+
+Numbering = Literal["row", "continued", "order", "none"]
+"""How the grid numbers the plotted pixels (:func:`scanconv.document.numbering.numbering`)."""
+
+
+class Plot(NamedTuple):
+    """What an answer draws: its plotted pixels with the grid's marks, outline, shades and
+    ideal primitive, and the figures under the grid."""
+
+    pixels: Callable[[], Iterator[Pixel]] | None = None
+    """A fresh generator of every plotted pixel, once each, in plotting order; ``None``: the
+    answer plots nothing (no pixel list, no grid)."""
+    bbox: tuple[int, int, int, int] = (0, 0, 0, 0)
+    """``(xmin, ymin, xmax, ymax)`` of the plotted pixels, known without running the steps."""
+    marks: tuple[Pixel, ...] = ()
+    """Points drawn differently in the grid (control points, the centre)."""
+    marks_label: str | None = None
+    """What :attr:`marks` are, for the grid's legend (``"centre"``, ``"control point"``);
+    ``None``: worked out from :attr:`ideal` (``"marked point"`` if it cannot be)."""
+    figures: tuple[Figure, ...] = ()
+    """Extra figures drawn under the pixel grid (a shaded picture of an image matrix, the grids
+    of a comparison): data only, drawn by :mod:`scanconv.render`."""
+    ideal: tuple[Ideal, ...] = ()
+    """The ideal primitive drawn over the pixels, shape by shape in drawing order."""
+    outline: tuple[Pixel, ...] = ()
+    """Pixels drawn as an outline under the plotted ones (a fill's boundary)."""
+    outline_name: str = "outline"
+    """What the outline is called in a legend."""
+    shades: dict[Pixel, int] | None = None
+    """Grey level of each shaded pixel (anti-aliasing); ``None``: the pixels are not shaded."""
+    levels: int = 2
+    """The number of grey levels of :attr:`shades`."""
+    numbering: Numbering | None = None
+    """How the pixels are numbered; ``None``: worked out from the walk."""
+    order_name: str = "plotting order"
+    """What the numbers mean when they are the plotting order, for a legend."""
+    construction: str | None = None
+    """A legend's name for the construction points of :attr:`Table.points` tables."""
+
+
+class Theory(NamedTuple):
+    """What ``--derive`` and ``--algorithm`` add to an answer."""
+
+    derivation: tuple[Quantity, ...] = ()
+    """The method's derivation with this input's numbers, its heading first; written after
+    the working (:attr:`Solution.derived`)."""
+    code: tuple[Code, ...] = ()
+    """Pseudocode listings, shown after the further tables."""
+
+
+NO_WALK = Walk()
+"""No step table and no further table."""
+NO_PLOT = Plot()
+"""Nothing plotted, nothing drawn."""
+NO_THEORY = Theory()
+"""No derivation and no listing."""
+
+
 class Solution:
     """A worked solution: everything a renderer needs, computed lazily and exactly.
 
@@ -234,7 +330,8 @@ class Solution:
     A plain class with slots rather than a dataclass: building a dataclass (and importing
     :mod:`dataclasses`) costs about 2 ms of every run's start-up. Its fields are
     :data:`FIELDS`, in the order of the constructor's parameters; two solutions are equal
-    when all their fields are.
+    when all their fields are. The parts of :attr:`walk`, :attr:`plot` and :attr:`theory`
+    read as attributes of their own (``solution.columns``, ``solution.pixels``).
     """
 
     FIELDS = (
@@ -243,20 +340,11 @@ class Solution:
         "title",
         "given",
         "derived",
-        "columns",
-        "extra_keys",
-        "steps",
-        "pixels",
-        "bbox",
         "notes",
-        "tables",
-        "show_steps",
-        "marks",
-        "marks_label",
-        "figures",
-        "geometry",
+        "walk",
+        "plot",
+        "theory",
         "data",
-        "code",
     )
     __slots__ = FIELDS
 
@@ -269,45 +357,19 @@ class Solution:
     given: tuple[Quantity, ...]
     """The problem's input, as the answer states it."""
     derived: tuple[Quantity, ...]
-    """Derived values with their working, in the order an answer writes them."""
-    columns: tuple[Column, ...]
-    """The step table's columns, in the notes' order; empty: the answer has no step table."""
-    extra_keys: tuple[str, ...]
-    """Names of the values in :attr:`Step.extra`, in order."""
-    steps: Callable[[], Iterator[Step]]
-    """A fresh generator of the step records."""
-    pixels: Callable[[], Iterator[Pixel]] | None
-    """A fresh generator of every plotted pixel, once each, in plotting order; ``None``: the
-    answer plots nothing (no pixel list, no grid)."""
-    bbox: tuple[int, int, int, int]
-    """``(xmin, ymin, xmax, ymax)`` of the plotted pixels, known without running the steps."""
+    """Derived values with their working, in the order an answer writes them (the derivation
+    apart, in :attr:`theory`)."""
     notes: tuple[str, ...]
     """Remarks shown under the derivation (swapped end points, tie rules, ...)."""
-    tables: tuple[Table, ...]
-    """Secondary tables shown after the step table."""
-    show_steps: bool
-    """``False``: the text formats leave the step table out because :attr:`tables` show the
-    same steps split up (the ellipse's two regions); csv and json still carry every step."""
-    marks: tuple[Pixel, ...]
-    """Points drawn differently in the grid (control points, the centre)."""
-    marks_label: str | None
-    """What :attr:`marks` are, for the grid's legend (``"centre"``, ``"control point"``);
-    ``None``: the renderer works it out from :attr:`geometry` (``"marked point"`` if it
-    cannot)."""
-    figures: tuple[Figure, ...]
-    """Extra figures drawn under the pixel grid (a shaded picture of an image matrix, the grids
-    of a comparison): data only, drawn by :mod:`scanconv.render`."""
-    geometry: dict[str, Any]
-    """The ideal primitive, for figures drawn over the pixels. Keys (all optional):
-    ``line``: ``(x1, y1, x2, y2)``; ``circle``: ``(xc, yc, r)``; ``ellipse``:
-    ``(xc, yc, rx, ry)``; ``polyline``: the sampled ideal curve as ``[(x, y), ...]`` floats;
-    ``control``: control points ``[(x, y), ...]``; ``symmetry``: 1, 4 or 8 with ``center``:
-    ``(xc, yc)``, saying how each step's point is mirrored into plotted pixels (with 4 or 8,
-    ``Step.pixel`` is the point relative to the centre, as the circle tables print it)."""
+    walk: Walk
+    """The step table and the further tables."""
+    plot: Plot
+    """The pixels, the ideal primitive and the figures."""
+    theory: Theory
+    """The derivation and the pseudocode listings."""
     data: dict[str, Any]
-    """Extra JSON fields (exact values for tools), merged into the top-level object."""
-    code: tuple[Code, ...]
-    """Pseudocode listings (``--algorithm``), shown after :attr:`tables`."""
+    """Extra JSON fields (exact values for tools), merged into the top-level object: output
+    only, never read by another answer."""
 
     def __init__(
         self,
@@ -316,40 +378,22 @@ class Solution:
         title: str,
         given: tuple[Quantity, ...],
         derived: tuple[Quantity, ...],
-        columns: tuple[Column, ...] = (),
-        extra_keys: tuple[str, ...] = (),
-        steps: Callable[[], Iterator[Step]] = _no_steps,
-        pixels: Callable[[], Iterator[Pixel]] | None = None,
-        bbox: tuple[int, int, int, int] = (0, 0, 0, 0),
         notes: tuple[str, ...] = (),
-        tables: tuple[Table, ...] = (),
-        show_steps: bool = True,
-        marks: tuple[Pixel, ...] = (),
-        marks_label: str | None = None,
-        figures: tuple[Figure, ...] = (),
-        geometry: dict[str, Any] | None = None,
+        walk: Walk = NO_WALK,
+        plot: Plot = NO_PLOT,
+        theory: Theory = NO_THEORY,
         data: dict[str, Any] | None = None,
-        code: tuple[Code, ...] = (),
     ) -> None:
         self.primitive = primitive
         self.algorithm = algorithm
         self.title = title
         self.given = given
         self.derived = derived
-        self.columns = columns
-        self.extra_keys = extra_keys
-        self.steps = steps
-        self.pixels = pixels
-        self.bbox = bbox
         self.notes = notes
-        self.tables = tables
-        self.show_steps = show_steps
-        self.marks = marks
-        self.marks_label = marks_label
-        self.figures = figures
-        self.geometry = {} if geometry is None else geometry
+        self.walk = walk
+        self.plot = plot
+        self.theory = theory
         self.data = {} if data is None else data
-        self.code = code
 
     def fields(self) -> dict[str, Any]:
         """Every field by name (what a subclass copies to wrap a solution)."""
@@ -365,6 +409,66 @@ class Solution:
     def __repr__(self) -> str:
         inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in Solution.FIELDS)
         return f"{type(self).__name__}({inner})"
+
+    @property
+    def columns(self) -> tuple[Column, ...]:
+        """The step table's columns (:attr:`Walk.columns`)."""
+        return self.walk.columns
+
+    @property
+    def extra_keys(self) -> tuple[str, ...]:
+        """Names of the values in :attr:`Step.extra` (:attr:`Walk.extra_keys`)."""
+        return self.walk.extra_keys
+
+    @property
+    def steps(self) -> Callable[[], Iterator[Step]]:
+        """A fresh generator of the step records (:attr:`Walk.steps`)."""
+        return self.walk.steps
+
+    @property
+    def show_steps(self) -> bool:
+        """Whether the text formats show the step table (:attr:`Walk.shown`)."""
+        return self.walk.shown
+
+    @property
+    def tables(self) -> tuple[Table, ...]:
+        """The further tables (:attr:`Walk.tables`)."""
+        return self.walk.tables
+
+    @property
+    def pixels(self) -> Callable[[], Iterator[Pixel]] | None:
+        """A fresh generator of the plotted pixels, or ``None`` (:attr:`Plot.pixels`)."""
+        return self.plot.pixels
+
+    @property
+    def bbox(self) -> tuple[int, int, int, int]:
+        """The plotted pixels' box (:attr:`Plot.bbox`)."""
+        return self.plot.bbox
+
+    @property
+    def marks(self) -> tuple[Pixel, ...]:
+        """Points drawn apart in the grid (:attr:`Plot.marks`)."""
+        return self.plot.marks
+
+    @property
+    def marks_label(self) -> str | None:
+        """What :attr:`marks` are (:attr:`Plot.marks_label`)."""
+        return self.plot.marks_label
+
+    @property
+    def figures(self) -> tuple[Figure, ...]:
+        """The figures under the grid (:attr:`Plot.figures`)."""
+        return self.plot.figures
+
+    @property
+    def derivation(self) -> tuple[Quantity, ...]:
+        """The method's derivation (:attr:`Theory.derivation`)."""
+        return self.theory.derivation
+
+    @property
+    def code(self) -> tuple[Code, ...]:
+        """The pseudocode listings (:attr:`Theory.code`)."""
+        return self.theory.code
 
     @property
     def has_p(self) -> bool:

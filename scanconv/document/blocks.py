@@ -8,7 +8,8 @@ every call, so a format that streams a table of millions of rows does so in cons
 from collections.abc import Callable, Iterable, Iterator
 from typing import Any, NamedTuple
 
-from ..core.records import Column, Figure, Pixel, Quantity, Step
+from ..core.ideal import Ideal
+from ..core.records import Column, Figure, Pixel, Quantity, Regions, Step
 
 Segments = tuple[tuple[bool, str], ...]
 """Prose with math: ``(is_math, text)`` pairs, the math as TeX (``(True, "p_k < 0")``)."""
@@ -136,7 +137,7 @@ class StepTable(NamedTuple):
     """``False``: the document formats leave the table out because later :class:`Table`
     blocks show the same rows split up (the ellipse's two regions); csv, json and the
     stepper still read every row."""
-    regions: str = "restart"
+    regions: Regions = "restart"
     """How the rows fall into regions (the ellipse's region 2 is coloured apart):
     ``"column"``: the ``region`` value of each row; ``"restart"``: a new region wherever
     ``k`` starts again; ``"none"``: one region."""
@@ -210,11 +211,9 @@ class Pixels(NamedTuple):
     """Points drawn apart (control points, the centre)."""
     marks_label: str
     """What :attr:`marks` are (``"centre"``, ``"control point"``)."""
-    ideal: dict[str, Any]
-    """The ideal primitive drawn over the pixels (keys ``line``, ``circle``, ``ellipse``,
-    ``polyline``, ``control``, as :attr:`Solution.geometry` documents them)."""
-    ideal_name: str
-    """What the ideal curve is called in a legend (``"curve"``, ``"Bezier curve"``)."""
+    ideal: tuple[Ideal, ...]
+    """The ideal primitive drawn over the pixels, shape by shape in drawing order
+    (:mod:`scanconv.core.ideal`: a line, circle, ellipse, sampled curve, control polygon)."""
     outline: tuple[Pixel, ...]
     """Pixels drawn as an outline under the plotted ones (a fill's boundary)."""
     outline_name: str

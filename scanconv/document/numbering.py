@@ -6,11 +6,11 @@ grid's ``o`` mean. Facts about the answer's structure, read once by :mod:`scanco
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 from typing import Any
 
-from ..core.records import Pixel, Solution
+from ..core.ideal import ControlPolygon, IdealCircle, IdealEllipse, Polyline
+from ..core.records import Numbering, Pixel, Solution
 
 
 def mirror_images(pixel: Pixel, symmetry: int, center: tuple[Any, Any]) -> Iterator[Pixel]:
@@ -54,16 +54,18 @@ def label_offset(solution: Solution) -> int:
     return 0
 
 
-def numbering(solution: Solution) -> str:
+def numbering(solution: Solution) -> Numbering:
     """How :func:`step_labels` numbers the pixels: ``"row"`` (the table's k, or k + 1 when
     its pixel column is ``(x_{k+1}, y_{k+1})``), ``"continued"`` (the table's k, but later
     tables, the ellipse's region 2, carry on from the last number instead of starting again
     at 0) or ``"order"`` (a curve: the plotting order, since several samples may land on one
     pixel and the joining pixels have no sample).
     """
-    if "numbering" in solution.geometry:
-        return str(solution.geometry["numbering"])
-    if solution.geometry.get("polyline") and int(solution.geometry.get("symmetry", 1)) == 1:
+    declared = solution.plot.numbering
+    if declared is not None:
+        return declared
+    curve = any(isinstance(s, Polyline) and s.points for s in solution.plot.ideal)
+    if curve and solution.walk.symmetry == 1:
         return "order"
     previous = -1
     for step in solution.steps():
@@ -82,7 +84,7 @@ def numbering_legend(solution: Solution) -> str:
     """
     how = numbering(solution)
     if how == "order":
-        return f"number: {solution.geometry.get('order_name', 'plotting order')}"
+        return f"number: {solution.plot.order_name}"
     if label_offset(solution):
         return "number: k + 1 for row k; 0: start"
     if how == "continued":
@@ -111,8 +113,7 @@ def step_labels(solution: Solution) -> dict[Pixel, int]:
             labels.setdefault(p, i)
         return labels
     offset = label_offset(solution)
-    symmetry = int(solution.geometry.get("symmetry", 1))
-    center = solution.geometry.get("center", (0, 0))
+    symmetry, center = solution.walk.symmetry, solution.walk.center
     shift, previous, last = 0, -1, -1
     for step in solution.steps():
         if how == "continued" and step.k <= previous:
@@ -130,17 +131,18 @@ def step_labels(solution: Solution) -> dict[Pixel, int]:
 
 
 def marks_label(solution: Solution) -> str:
-    """What the grid's ``o`` stands for: :attr:`Solution.marks_label`, or worked out from the
-    answer's geometry (a curve's control points, a circle's or ellipse's centre)."""
+    """What the grid's ``o`` stands for: :attr:`Plot.marks_label`, or worked out from the
+    answer's ideal primitive (a curve's control points, a circle's or ellipse's centre).
+
+    >>> from scanconv.answers.primitives.circle import circle_solution
+    >>> marks_label(circle_solution("midpoint", 3))
+    'centre'
+    """
     if solution.marks_label:
         return solution.marks_label
-    geometry = solution.geometry
-    if geometry.get("control"):
+    ideal = solution.plot.ideal
+    if any(isinstance(s, ControlPolygon) and s.points for s in ideal):
         return "control point"
-    if any(k in geometry for k in ("circle", "ellipse", "center")):
+    if any(isinstance(s, IdealCircle | IdealEllipse) for s in ideal):
         return "centre"
-    for note in solution.notes:  # "The centre is marked o in the grid."
-        said = "is marked o" in note and re.search(r"\b[Tt]he (\w+) is marked o\b", note)
-        if said:
-            return said.group(1)
     return "marked point"

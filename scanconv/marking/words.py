@@ -8,7 +8,7 @@ from collections.abc import Sequence
 
 from ..core.decisions import UNREADABLE
 from ..core.numeric import Number, fmt_short
-from ..core.records import Quantity, Solution, Table, heading
+from ..core.records import Quantity, Solution, Table, Walk, heading
 from .models import State
 from .rows import Expected, Got, Marking, RowText, Verdict
 from .student_table import Cell
@@ -222,7 +222,7 @@ def marking_solution(marking: Marking, solution: Solution, name: str, question: 
             ),
         ),
         notes=tuple(n.replace("$", "") for n in notes),
-        tables=(Table("Marking, step by step", columns, lambda: iter(rows)),),
+        walk=Walk(tables=(Table("Marking, step by step", columns, lambda: iter(rows)),)),
         data={
             "question": question,
             "answer": name,
@@ -262,6 +262,6 @@ def batch_solution(
         given=(),
         derived=(),
         notes=tuple(notes),
-        tables=(Table("Scores", columns, lambda: iter(rows)),),
+        walk=Walk(tables=(Table("Scores", columns, lambda: iter(rows)),)),
         data={"question": question},
     )

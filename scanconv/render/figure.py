@@ -10,13 +10,13 @@ What the figure shows:
   ``(x, y)``; the cells span the plotted pixels, the ideal primitive and the control points,
   plus one empty cell of margin (as the text grid);
 * every plotted pixel filled (one ``<rect class="pixel">`` each);
-* the ideal primitive from :attr:`Solution.geometry` drawn over the pixels: ``line``,
-  ``circle``, ``ellipse``, ``polyline`` (a sampled curve) and, for Bezier and B-spline curves,
-  the ``control`` polygon with its points;
-* grey levels: with ``geometry["shades"]`` (pixel -> level, ``geometry["levels"]`` = L) each
+* the ideal primitive from :attr:`Plot.ideal` drawn over the pixels, a match over its shapes
+  by type (:mod:`scanconv.core.ideal`): a line, circle, ellipse, polyline (a sampled curve)
+  and, for Bezier and B-spline curves, the control polygon with its points;
+* grey levels: with :attr:`Plot.shades` (pixel -> level, :attr:`Plot.levels` = L) each
   of those pixels is filled in its grey, level L - 1 black (the shading of the text picture),
   for the anti-aliased answers;
-* the outline: ``geometry["outline"]`` (pixels, named by ``geometry["outline_name"]``) drawn
+* the outline: :attr:`Plot.outline` (pixels, named by :attr:`Plot.outline_name`) drawn
   dark, under the filled pixels' outlines: a polygon's Bresenham edges, a seed fill's boundary;
 * the marked points (:attr:`Solution.marks`: the centre, ...) as small crosses;
 * the axes: every column and row labelled with its x and y (every 2nd, 5th, ... when the
@@ -28,7 +28,7 @@ Step numbers: a pixel is numbered ``i`` when it is the table's ``(x_i, y_i)``. T
 pixel column is ``(x_{k+1}, y_{k+1})`` (Bresenham's line, the midpoint circle, ...) number the
 pixel of step ``k`` as ``k + 1`` and the start pixel, plotted before the first step, as 0;
 tables whose row ``k`` plots its own point (DDA, the basic method, curves) number it ``k``.
-With 4- or 8-way symmetry (``geometry["symmetry"]`` and ``geometry["center"]``) a step's point
+With 4- or 8-way symmetry (:attr:`Walk.symmetry` and :attr:`Walk.center`) a step's point
 is relative to the centre, and every mirror image of it carries that step's number (the
 ellipse's region 2 counts on from region 1, so no number is used twice). A curve's pixels are
 numbered in plotting order. A pixel reached by several steps keeps the first.
@@ -45,6 +45,16 @@ from fractions import Fraction
 from itertools import pairwise
 from typing import Any, NamedTuple
 
+from ..core.ideal import (
+    ControlPolygon,
+    Ideal,
+    IdealCircle,
+    IdealEllipse,
+    IdealLine,
+    Polyline,
+    control_points,
+    ideal_kinds,
+)
 from ..core.numeric import round_half_up
 from ..core.records import Pixel, Solution
 from ..core.working import UNSAFE
@@ -177,20 +187,21 @@ class Figure:
 # --- layout ------------------------------------------------------------------------------------
 
 
-def _points(geometry: dict[str, Any]) -> Iterator[tuple[float, float]]:
+def _points(ideal: Iterable[Ideal]) -> Iterator[tuple[float, float]]:
     """Every point the ideal primitive reaches (its bounding box's corners for conics)."""
-    if "line" in geometry:
-        x1, y1, x2, y2 = (float(v) for v in geometry["line"])
-        yield from ((x1, y1), (x2, y2))
-    if "circle" in geometry:
-        xc, yc, r = (float(v) for v in geometry["circle"])
-        yield from ((xc - r, yc - r), (xc + r, yc + r))
-    if "ellipse" in geometry:
-        xc, yc, rx, ry = (float(v) for v in geometry["ellipse"])
-        yield from ((xc - rx, yc - ry), (xc + rx, yc + ry))
-    for key in ("polyline", "control"):
-        for x, y in geometry.get(key, ()):
-            yield float(x), float(y)
+    for shape in ideal:
+        match shape:
+            case IdealLine(x1, y1, x2, y2):
+                yield from ((float(x1), float(y1)), (float(x2), float(y2)))
+            case IdealCircle(xc, yc, r):
+                xc, yc, r = float(xc), float(yc), float(r)
+                yield from ((xc - r, yc - r), (xc + r, yc + r))
+            case IdealEllipse(xc, yc, rx, ry):
+                xc, yc, rx, ry = float(xc), float(yc), float(rx), float(ry)
+                yield from ((xc - rx, yc - ry), (xc + rx, yc + ry))
+            case Polyline(points) | ControlPolygon(points):
+                for x, y in points:
+                    yield float(x), float(y)
 
 
 def extent(answer: Solution | Document, pixels: Iterable[Pixel]) -> tuple[int, int, int, int]:
@@ -203,17 +214,17 @@ def extent(answer: Solution | Document, pixels: Iterable[Pixel]) -> tuple[int, i
     """
     block: Pixels | None = as_document(answer).get(Pixels)
     if block is None:
-        return cells_extent(pixels, (), {})
+        return cells_extent(pixels, (), ())
     return cells_extent(pixels, (*block.marks, *block.outline), block.ideal)
 
 
 def cells_extent(
-    pixels: Iterable[Pixel], marks: Iterable[Pixel], ideal: dict[str, Any]
+    pixels: Iterable[Pixel], marks: Iterable[Pixel], ideal: Iterable[Ideal]
 ) -> tuple[int, int, int, int]:
     """``(xmin, ymin, xmax, ymax)`` of the cells that show ``pixels``, ``marks`` (the marked
     points, an outline) and the ideal primitive, margin included.
 
-    >>> cells_extent([(2, 2), (5, 3)], [], {"line": (2, 2, 5, 3)})
+    >>> cells_extent([(2, 2), (5, 3)], [], [IdealLine(2, 2, 5, 3)])
     (1, 1, 6, 4)
     """
     xs: list[int] = []
@@ -327,9 +338,9 @@ def build(answer: Solution | Document, origin: str = "bottom-left") -> Figure:
         text = str(k)
         size = min(13.0, (CELL - 6) / (0.62 * len(text)))
         add(Shape("text", "step", (f.px(x), f.py(y) + 0.36 * size), text, size, "middle"))
-    for x, y in block.ideal.get("control", ()):
+    for cx, cy in control_points(block.ideal):
         # A ring, over the step number it may share a pixel with.
-        add(Shape("circle", "control-point", (*f.pt(x, y), CELL * 0.3)))
+        add(Shape("circle", "control-point", (*f.pt(cx, cy), CELL * 0.3)))
     _axes(fig, f)
     _legend(fig, block, f.bottom, numbered=bool(labels))
     return fig
@@ -353,32 +364,26 @@ def _marks(block: Pixels) -> list[Pixel]:
     control points are drawn exactly, on their polygon)."""
     control = {
         (round_half_up(Fraction(x)), round_half_up(Fraction(y)))
-        for x, y in block.ideal.get("control", ())
+        for x, y in control_points(block.ideal)
     }
     return [p for p in block.marks if p not in control]
 
 
-def _primitive(fig: Figure, geometry: dict[str, Any], f: _Frame) -> None:
-    """The ideal primitive and the control polygon."""
+def _primitive(fig: Figure, ideal: Iterable[Ideal], f: _Frame) -> None:
+    """The ideal primitive and the control polygon, shape by shape."""
     add = fig.shapes.append
-    if "line" in geometry:
-        x1, y1, x2, y2 = geometry["line"]
-        add(Shape("line", "ideal", (*f.pt(x1, y1), *f.pt(x2, y2))))
-    if "circle" in geometry:
-        xc, yc, r = geometry["circle"]
-        add(Shape("circle", "ideal", (*f.pt(xc, yc), float(r) * CELL)))
-    if "ellipse" in geometry:
-        xc, yc, rx, ry = geometry["ellipse"]
-        add(Shape("ellipse", "ideal", (*f.pt(xc, yc), float(rx) * CELL, float(ry) * CELL)))
-    if geometry.get("polyline"):
-        add(
-            Shape(
-                "polyline", "ideal", tuple(c for x, y in geometry["polyline"] for c in f.pt(x, y))
-            )
-        )
-    control = [f.pt(x, y) for x, y in geometry.get("control", ())]
-    if control:
-        add(Shape("polyline", "control", tuple(c for p in control for c in p)))
+    for shape in ideal:
+        match shape:
+            case IdealLine(x1, y1, x2, y2):
+                add(Shape("line", "ideal", (*f.pt(x1, y1), *f.pt(x2, y2))))
+            case IdealCircle(xc, yc, r):
+                add(Shape("circle", "ideal", (*f.pt(xc, yc), float(r) * CELL)))
+            case IdealEllipse(xc, yc, rx, ry):
+                add(Shape("ellipse", "ideal", (*f.pt(xc, yc), float(rx) * CELL, float(ry) * CELL)))
+            case Polyline(points) if points:
+                add(Shape("polyline", "ideal", tuple(c for x, y in points for c in f.pt(x, y))))
+            case ControlPolygon(points) if points:
+                add(Shape("polyline", "control", tuple(c for x, y in points for c in f.pt(x, y))))
 
 
 def _axes(fig: Figure, f: _Frame) -> None:
@@ -398,7 +403,6 @@ def _axes(fig: Figure, f: _Frame) -> None:
 
 def _legend(fig: Figure, block: Pixels, bottom: float, numbered: bool) -> None:
     """What the colours and numbers mean, wrapped to the figure's width."""
-    geometry = block.ideal
     if block.shades is not None:
         levels = block.levels
         parts = [f"grey: intensity level 0..{levels - 1} (black = {levels - 1})"]
@@ -408,12 +412,10 @@ def _legend(fig: Figure, block: Pixels, bottom: float, numbered: bool) -> None:
         parts.append(f"orange: {block.outline_name}")
     if numbered:
         parts.append(block.numbering())
-    kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in geometry]
-    if geometry.get("polyline"):
-        kinds.append(block.ideal_name)
+    kinds = ideal_kinds(block.ideal)
     if kinds:
         parts.append(f"red: ideal {' and '.join(kinds)}")
-    if geometry.get("control"):
+    if control_points(block.ideal):
         parts.append("green: control polygon and points")
     if _marks(block):
         parts.append("cross: marked point")

@@ -10,10 +10,10 @@ docs/lms.md):
   as the ellipse's) and each secondary table (the symmetry table, a clipping's parameters, ...);
   a secondary table the step table is split into (headed by ``k`` when the text formats leave
   the step table out) is not asked twice;
-* in a table, the first column when it only numbers or names the rows (the step ``k``, a
-  level, a unit, an edge: :data:`scanconv.render.sheet.LABELS`, and the first column of any
-  secondary table) is shown, as a worksheet shows it, and so is a step number ``k`` wherever
-  it stands;
+* in a table, the columns that number or name the rows or that the question gives (their
+  role is ``label`` or ``given``: the step ``k``, a level, a unit, a point's name) are shown,
+  as a worksheet shows them, and so is the first column of any secondary table (it names
+  the row: an edge, a method);
 * a number is a numerical gap (:func:`number_gap`: exact when it has at most 3 decimals, else
   within :data:`TOLERANCE`); a pixel or point is a gap per coordinate; a decision (a move) is a
   short-answer gap taking its compass letters or words (:data:`MOVE_WORDS`); a text cell that
@@ -36,7 +36,7 @@ from typing import Any, NamedTuple
 from ..core.records import Column, Move, Solution, step_getter
 from ..document import Document, Given, StepTable, Table, Working, as_document
 from . import Format, Notice, render
-from .sheet import LABELS, Answered, Sheet, _Guard, wording
+from .sheet import Answered, Sheet, _Guard, wording
 
 TOLERANCE = "0.0005"
 """The tolerance of a number gap whose value has more than 3 decimals: any answer within it of
@@ -242,16 +242,13 @@ def _gap_table(
 ) -> GapTable:
     """A table with its answer cells as gaps, read from each column's role
     (:data:`scanconv.core.records.ROLES`): ``label`` and ``given`` columns shown (and the
-    first column when ``labelled``, and a step number ``k`` wherever it stands), ``working``
-    columns left out (shown beside a blank they would give it away: the feedback holds them),
-    ``answer`` columns as gaps, every number of a text answer a gap of its own
+    first column when ``labelled``), ``working`` columns left out (shown beside a blank they
+    would give it away: the feedback holds them), ``answer`` columns as gaps, every number of a text answer a gap of its own
     (:func:`answer_pieces`). ``room[0]`` is how many more gaps may be made (:class:`_TooMany`
     past it)."""
     kept = [j for j, c in enumerate(columns) if c.role != "working"]
     shown = {
-        j
-        for j, c in enumerate(columns)
-        if c.role in ("label", "given") or c.key == "k" or (j == 0 and labelled)
+        j for j, c in enumerate(columns) if c.role in ("label", "given") or (j == 0 and labelled)
     }
     out = []
     for row in rows:
@@ -326,9 +323,8 @@ def gap_tables(answer: Solution | Document, limit: int = MAX_GAPS) -> tuple[GapT
     try:
         if step is not None and step.columns:
             get = step_getter(step.columns, step.extra_keys)
-            labelled = step.columns[0].key in LABELS
             rows = (get(s) for s in step.steps())
-            tables.append(_gap_table("Step table", step.columns, rows, labelled, room))
+            tables.append(_gap_table("Step table", step.columns, rows, False, room))
         for table in doc.every(Table):
             split = step is not None and not step.shown
             if split and table.columns and table.columns[0].key == "k":

@@ -296,17 +296,12 @@ class Blank(NamedTuple):
     widths: tuple[int, ...]
     """The widest answer cell of each column, in characters (the space to leave)."""
     filled: tuple[tuple[str, ...], ...] = ()
-    """Each row's cells a worksheet fills in, the others ``""``: the first column when it only
-    numbers or names the rows (:data:`LABELS`), and every column whose role is ``label`` or
-    ``given`` (:data:`scanconv.core.records.ROLES`: a point's name and coordinates)."""
+    """Each row's cells a worksheet fills in, the others ``""``: every column whose role is
+    ``label`` or ``given`` (:data:`scanconv.core.records.ROLES`: the step ``k``, de Casteljau's
+    level ``r``, an image's row ``i``, a storage unit, a point's name and coordinates)."""
     sample: tuple[tuple[str, ...], ...] = ()
     """The first rows of the answer's table, to split a wide table as the key splits it
     (never shown)."""
-
-
-LABELS = frozenset({"k", "r", "i", "decimal", "unit", "method"})
-"""Keys of a first column that only numbers or names the rows (the step ``k``, de Casteljau's
-level ``r``, an image's row ``i``, a quantization level's number, a storage unit): a worksheet fills it in."""
 
 
 def _blank_tables(solution: Solution, count: bool = True) -> list[Blank]:
@@ -317,10 +312,7 @@ def _blank_tables(solution: Solution, count: bool = True) -> list[Blank]:
         widths = [len(c.text) for c in columns]
         filled: list[tuple[str, ...]] = []
         sample: list[tuple[str, ...]] = []
-        shown = [
-            (j == 0 and c.key in LABELS) or c.role in ("label", "given")
-            for j, c in enumerate(columns)
-        ]
+        shown = [c.role in ("label", "given") for c in columns]
         if count:
             for row in rows():
                 n += 1

@@ -6,10 +6,20 @@ scale that fits any size.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from fractions import Fraction
 from typing import Any
 
+from ..core.ideal import (
+    ControlPolygon,
+    Ideal,
+    IdealCircle,
+    IdealEllipse,
+    IdealLine,
+    Polyline,
+    control_points,
+    ideal_kinds,
+)
 from ..core.numeric import round_half_up
 from ..core.records import Pixel, PixelFigure, ShadedMatrix
 from ..document import Document, Pixels, Table
@@ -139,39 +149,37 @@ def _axes(f: _Frame) -> list[str]:
     return out
 
 
-def _primitive(geometry: dict[str, Any], f: _Frame) -> list[str]:
+def _primitive(ideal: Iterable[Ideal], f: _Frame) -> list[str]:
     out: list[str] = []
-    if "line" in geometry:
-        x1, y1, x2, y2 = geometry["line"]
-        out.append(
-            f'<line class="sc-ideal" x1="{_n(f.px(x1))}" y1="{_n(f.py(y1))}" '
-            f'x2="{_n(f.px(x2))}" y2="{_n(f.py(y2))}"/>'
-        )
-    if "circle" in geometry:
-        xc, yc, r = geometry["circle"]
-        out.append(
-            f'<circle class="sc-ideal" cx="{_n(f.px(xc))}" cy="{_n(f.py(yc))}" '
-            f'r="{_n(float(r) * f.s)}"/>'
-        )
-    if "ellipse" in geometry:
-        xc, yc, rx, ry = geometry["ellipse"]
-        out.append(
-            f'<ellipse class="sc-ideal" cx="{_n(f.px(xc))}" cy="{_n(f.py(yc))}" '
-            f'rx="{_n(float(rx) * f.s)}" ry="{_n(float(ry) * f.s)}"/>'
-        )
-    if geometry.get("polyline"):
-        pts = " ".join(f"{_n(f.px(x))},{_n(f.py(y))}" for x, y in geometry["polyline"])
-        out.append(f'<polyline class="sc-ideal" points="{pts}"/>')
-    control = geometry.get("control") or ()
-    if control:
-        pts = " ".join(f"{_n(f.px(x))},{_n(f.py(y))}" for x, y in control)
-        out.append(f'<polyline class="sc-control" points="{pts}"/>')
+    for shape in ideal:
+        match shape:
+            case IdealLine(x1, y1, x2, y2):
+                out.append(
+                    f'<line class="sc-ideal" x1="{_n(f.px(x1))}" y1="{_n(f.py(y1))}" '
+                    f'x2="{_n(f.px(x2))}" y2="{_n(f.py(y2))}"/>'
+                )
+            case IdealCircle(xc, yc, r):
+                out.append(
+                    f'<circle class="sc-ideal" cx="{_n(f.px(xc))}" cy="{_n(f.py(yc))}" '
+                    f'r="{_n(float(r) * f.s)}"/>'
+                )
+            case IdealEllipse(xc, yc, rx, ry):
+                out.append(
+                    f'<ellipse class="sc-ideal" cx="{_n(f.px(xc))}" cy="{_n(f.py(yc))}" '
+                    f'rx="{_n(float(rx) * f.s)}" ry="{_n(float(ry) * f.s)}"/>'
+                )
+            case Polyline(points) if points:
+                pts = " ".join(f"{_n(f.px(x))},{_n(f.py(y))}" for x, y in points)
+                out.append(f'<polyline class="sc-ideal" points="{pts}"/>')
+            case ControlPolygon(points) if points:
+                pts = " ".join(f"{_n(f.px(x))},{_n(f.py(y))}" for x, y in points)
+                out.append(f'<polyline class="sc-control" points="{pts}"/>')
     return out
 
 
 def _marks(block: Pixels, f: _Frame) -> list[str]:
     out: list[str] = []
-    control = block.ideal.get("control") or ()
+    control = control_points(block.ideal)
     on_control = {(round_half_up(Fraction(x)), round_half_up(Fraction(y))) for x, y in control}
     arm = max(f.s * 0.22, 2.0)
     for x, y in block.marks:
@@ -182,9 +190,9 @@ def _marks(block: Pixels, f: _Frame) -> list[str]:
             f'<path class="sc-mark" d="M{_n(cx - arm)} {_n(cy - arm)}L{_n(cx + arm)} '
             f'{_n(cy + arm)}M{_n(cx - arm)} {_n(cy + arm)}L{_n(cx + arm)} {_n(cy - arm)}"/>'
         )
-    for x, y in control:
+    for qx, qy in control:
         out.append(
-            f'<circle class="sc-cpoint" cx="{_n(f.px(x))}" cy="{_n(f.py(y))}" '
+            f'<circle class="sc-cpoint" cx="{_n(f.px(qx))}" cy="{_n(f.py(qy))}" '
             f'r="{_n(max(f.s * 0.3, 3.0))}"/>'
         )
     return out
@@ -295,7 +303,7 @@ def _labels(block: Pixels, st: Stepping, f: _Frame, at: int) -> list[str]:
 def legend(doc: Document, st: Stepping, numbered: bool) -> str:
     """The key under the stepper's grid: what each colour and mark stands for."""
     block: Pixels = doc.get(Pixels)
-    ideal = block.ideal
+    control = control_points(block.ideal)
     parts = ['<i style="background:var(--sc-px)"></i>plotted pixel']
     if any(st.kind):
         parts.append('<i style="background:var(--sc-mirror)"></i>mirror image')
@@ -306,16 +314,14 @@ def legend(doc: Document, st: Stepping, numbered: bool) -> str:
         parts.append(f'<i style="background:#f4b183"></i>{esc(block.outline_name)}')
     if block.shades is not None:
         parts.append(f"grey: intensity level (black = {block.levels - 1})")
-    kinds: list[str] = [k for k in ("line", "circle", "ellipse") if k in ideal]
-    if ideal.get("polyline"):
-        kinds.append(block.ideal_name)
+    kinds = ideal_kinds(block.ideal)
     if kinds:
         parts.append(f'<i style="background:#d62728"></i>ideal {esc(" and ".join(kinds))}')
-    if ideal.get("control"):
+    if control:
         parts.append('<i style="background:#2ca02c"></i>control polygon')
     if block.construction:
         parts.append(f'<i style="background:#7b3294"></i>{esc(block.construction)}')
-    if block.marks and not ideal.get("control"):
+    if block.marks and not control:
         parts.append(f"\u00d7 {esc(block.marks_label)}")
     if numbered:
         parts.append(esc(block.numbering()))

@@ -93,7 +93,7 @@ def control_marks(points: Iterable[Point]) -> tuple[Pixel, ...]:
     return tuple(curve_pixel(*p) for p in points)
 
 
-K_T_COLUMNS = (heading("k", "k"), heading("t", "t", 3))
+K_T_COLUMNS = (heading("k", "k", role="label"), heading("t", "t", 3))
 """The first two columns of the Bezier and B-spline tables."""
 
 

@@ -31,7 +31,8 @@ from ...algorithms.sampling import (
     dense_ts,
     float_points,
 )
-from ...core.records import Column, Quantity, Solution, Step, Table, heading, worked
+from ...core.ideal import ControlPolygon, Polyline
+from ...core.records import Column, Plot, Quantity, Solution, Step, Table, Walk, heading, worked
 from ...core.working import tex_to_unicode
 from ._shared import (
     JOIN_NOTE,
@@ -110,16 +111,6 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
         title=f"Bezier curve of degree {n}: {n + 1} control points, {samples} steps of t",
         given=tuple(given_points(pts)),
         derived=tuple(derived),
-        columns=(
-            *K_T_COLUMNS,
-            *(heading(f"B{i}", f"B_{{{i},{n}}}", 3) for i in range(n + 1)),
-            *xy_columns(),
-        ),
-        extra_keys=("t", *(f"B{i}" for i in range(n + 1)), "x_t", "y_t"),
-        steps=steps,
-        pixels=lambda: curve_pixels(s.pixel for s in steps()),
-        # The curve lies in the convex hull of its control points, so their box contains it.
-        bbox=bbox(marks),
         notes=(
             "Weights and points are exact fractions (3 decimals shown); the weights of each "
             "row sum to 1.",
@@ -128,8 +119,22 @@ def bezier_solution(points: Sequence[Point], samples: int = DEFAULT_SAMPLES) -> 
             "The curve starts at $P_0$, ends at $P_n$ and lies in the convex hull of the control "
             "points (marked o in the grid).",
         ),
-        marks=marks,
-        geometry={"polyline": dense, "control": float_points(pts)},
+        walk=Walk(
+            columns=(
+                *K_T_COLUMNS,
+                *(heading(f"B{i}", f"B_{{{i},{n}}}", 3) for i in range(n + 1)),
+                *xy_columns(),
+            ),
+            extra_keys=("t", *(f"B{i}" for i in range(n + 1)), "x_t", "y_t"),
+            steps=steps,
+        ),
+        plot=Plot(
+            pixels=lambda: curve_pixels(s.pixel for s in steps()),
+            # The curve lies in the convex hull of its control points, so their box contains it.
+            bbox=bbox(marks),
+            marks=marks,
+            ideal=(Polyline(dense), ControlPolygon(float_points(pts))),
+        ),
     )
 
 
@@ -195,23 +200,29 @@ def bezier_at_solution(points: Sequence[Point], t: Value) -> Solution:
             worked("t", t, f"t = {ts}"),
         ),
         derived=tuple(derived),
-        tables=(
-            Table(
-                f"De Casteljau levels at t = {ts} (row r holds P_i^(r))",
-                (heading("r", "r"), *_point_columns(n + 1, "P")),
-                rows,
-            ),
-        ),
-        pixels=lambda: iter((pixel,)),
-        bbox=bbox((*marks, pixel)),
         notes=(
             "Each level interpolates neighbouring points of the level above at t; the last "
             "level is the curve point, equal to the Bernstein form.",
             ROUND_NOTE,
         ),
-        marks=marks,
-        geometry={
-            "polyline": [(float(point[0]), float(point[1]))],
-            "control": float_points(pts),
-        },
+        walk=Walk(
+            tables=(
+                Table(
+                    f"De Casteljau levels at t = {ts} (row r holds P_i^(r))",
+                    (heading("r", "r", role="label"), *_point_columns(n + 1, "P")),
+                    rows,
+                    points=True,
+                ),
+            )
+        ),
+        plot=Plot(
+            pixels=lambda: iter((pixel,)),
+            bbox=bbox((*marks, pixel)),
+            marks=marks,
+            ideal=(
+                Polyline([(float(point[0]), float(point[1]))]),
+                ControlPolygon(float_points(pts)),
+            ),
+            construction="de Casteljau points",
+        ),
     )

@@ -38,8 +38,9 @@ from ...algorithms.sampling import (
     float_points,
 )
 from ...core.checks import InputError
+from ...core.ideal import ControlPolygon, Polyline
 from ...core.numeric import Number
-from ...core.records import Pixel, Quantity, Solution, Step, Table, heading, worked
+from ...core.records import Pixel, Plot, Quantity, Solution, Step, Table, Walk, heading, worked
 from ._shared import (
     JOIN_NOTE,
     K_T_COLUMNS,
@@ -179,29 +180,26 @@ def bspline_solution(
             title="Basis functions of a " + title,
             given=(worked("p", degree, f"p = {degree}"),),
             derived=tuple(q for q in derived if q.key != "C(t)"),
-            tables=(
-                Table(
-                    f"Basis functions N_(i,{degree})(t) (each row sums to 1)",
-                    (*K_T_COLUMNS, *basis_cols),
-                    rows,
-                ),
-            ),
             notes=_BSPLINE_NOTES,
+            walk=Walk(
+                tables=(
+                    Table(
+                        f"Basis functions N_(i,{degree})(t) (each row sums to 1)",
+                        (*K_T_COLUMNS, *basis_cols),
+                        rows,
+                    ),
+                )
+            ),
         )
     marks = control_marks(pts)
     dense = dense_curve(lambda t: basis_float(u, degree, n, t), pts, dense_ts(t0, t1, samples))
+    keys = ("t", *(f"N{i}" for i in range(n + 1)), "x_t", "y_t")
     return Solution(
         primitive="curve",
         algorithm="bspline",
         title=title,
         given=tuple(given_points(pts)),
         derived=tuple(derived),
-        columns=(*K_T_COLUMNS, *basis_cols, *xy_columns()),
-        extra_keys=("t", *(f"N{i}" for i in range(n + 1)), "x_t", "y_t"),
-        steps=steps,
-        pixels=lambda: curve_pixels(s.pixel for s in steps()),
-        # Basis values are >= 0 and sum to 1 on the domain: the curve lies in the convex hull.
-        bbox=bbox(marks),
         notes=(
             *_BSPLINE_NOTES,
             "Basis values and points are exact fractions (3 decimals shown).",
@@ -210,8 +208,14 @@ def bspline_solution(
             "Control points are marked o in the grid; a clamped (open) curve passes through the "
             "first and last of them, an unclamped one in general through none.",
         ),
-        marks=marks,
-        geometry={"polyline": dense, "control": float_points(pts)},
+        walk=Walk(columns=(*K_T_COLUMNS, *basis_cols, *xy_columns()), extra_keys=keys, steps=steps),
+        plot=Plot(
+            pixels=lambda: curve_pixels(s.pixel for s in steps()),
+            # Basis values are >= 0 and sum to 1 on the domain: the curve lies in the convex hull.
+            bbox=bbox(marks),
+            marks=marks,
+            ideal=(Polyline(dense), ControlPolygon(float_points(pts))),
+        ),
     )
 
 
@@ -315,7 +319,7 @@ def _weighted_table(a: _At) -> Table:
     return Table(
         "Weighted sum of the non-zero terms",
         (
-            heading("i", "i"),
+            heading("i", "i", role="label"),
             heading("N", f"N_{{i,{a.degree}}}(t)", 3),
             heading("point_P", "P_i"),
             heading("point_NP", f"N_{{i,{a.degree}}}(t) \\cdot P_i"),
@@ -343,15 +347,17 @@ def bspline_at_solution(
         title=f"B-spline of degree {degree} at t = {ts}: knots {knot_text(a.u)}",
         given=(*given_points(a.pts), worked("t", a.t, f"t = {ts}")),
         derived=_at_derived(a),
-        tables=(_triangle_table(a), _weighted_table(a)),
-        pixels=lambda: iter((a.pixel,)),
-        bbox=bbox((*marks, a.pixel)),
         notes=(*_BSPLINE_NOTES, ROUND_NOTE),
-        marks=marks,
-        geometry={
-            "polyline": [(float(a.point[0]), float(a.point[1]))],
-            "control": float_points(a.pts),
-        },
+        walk=Walk(tables=(_triangle_table(a), _weighted_table(a))),
+        plot=Plot(
+            pixels=lambda: iter((a.pixel,)),
+            bbox=bbox((*marks, a.pixel)),
+            marks=marks,
+            ideal=(
+                Polyline([(float(a.point[0]), float(a.point[1]))]),
+                ControlPolygon(float_points(a.pts)),
+            ),
+        ),
     )
 
 
@@ -433,16 +439,18 @@ def bspline_basis_knots_solution(
         title=f"B-spline basis functions of degree {degree} on the knots {knot_text(u)}",
         given=(worked("p", degree, f"p = {degree}"),),
         derived=derived[1:],
-        tables=(
-            Table(
-                f"Basis functions N_(i,{degree})(t) over the whole knot range",
-                (*K_T_COLUMNS, *basis_cols, heading("sum", r"\sum_i N_{i,p}", 3)),
-                rows,
-            ),
-        ),
         notes=(
             *_BSPLINE_NOTES,
             "No control points: the table is the basis alone, over [u_0, u_m]; outside the "
             "domain [u_p, u_(n+1)] fewer than p + 1 functions are non-zero and the sum is below 1.",
+        ),
+        walk=Walk(
+            tables=(
+                Table(
+                    f"Basis functions N_(i,{degree})(t) over the whole knot range",
+                    (*K_T_COLUMNS, *basis_cols, heading("sum", r"\sum_i N_{i,p}", 3)),
+                    rows,
+                ),
+            )
         ),
     )

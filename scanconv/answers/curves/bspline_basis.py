@@ -11,7 +11,7 @@ from ...algorithms.bspline import basis_levels, domain, span
 from ...algorithms.curve_limits import Value, check_exact, norm_value
 from ...core.checks import InputError
 from ...core.numeric import Number
-from ...core.records import Quantity, Solution, Table, heading, worked
+from ...core.records import Quantity, Solution, Table, Walk, heading, worked
 from ._shared import knot_text, value_text
 from .bspline import _BSPLINE_NOTES, check_knot_list
 
@@ -138,23 +138,25 @@ def bspline_basis_at_solution(degree: int, knots: Sequence[Number], t: Value) ->
         title=f"B-spline basis of degree {degree} at t = {ts}: knots {knot_text(u)}",
         given=(worked("p", degree, f"p = {degree}"), worked("t", t, f"t = {ts}")),
         derived=derived,
-        tables=(
-            Table(
-                f"Cox–de Boor at t = {ts}, degree by degree",
-                (
-                    heading("d", "d"),
-                    heading("i", "i"),
-                    heading("working", r"\text{working}"),
-                    heading("N", "N_{i,d}(t)", 3),
-                ),
-                rows,
-            ),
-        ),
         notes=(
             *_BSPLINE_NOTES,
             formula,
             "No control points: the basis alone, from the degree and the knots; t may lie "
             "anywhere in [u_0, u_m], and the values sum to 1 on the domain [u_p, u_(n+1)].",
+        ),
+        walk=Walk(
+            tables=(
+                Table(
+                    f"Cox–de Boor at t = {ts}, degree by degree",
+                    (
+                        heading("d", "d"),
+                        heading("i", "i"),
+                        heading("working", r"\text{working}"),
+                        heading("N", "N_{i,d}(t)", 3),
+                    ),
+                    rows,
+                ),
+            )
         ),
     )
     sol.data = {**sol.data, "basis": tuple(w)}

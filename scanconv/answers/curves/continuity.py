@@ -18,7 +18,8 @@ from ...algorithms.curve_limits import (
     check_weights,
 )
 from ...algorithms.sampling import bbox, curve_pixels, dense_curve, dense_ts, float_points
-from ...core.records import Pixel, Quantity, Solution, Table, heading, worked
+from ...core.ideal import ControlPolygon, Polyline
+from ...core.records import Pixel, Plot, Quantity, Solution, Table, Walk, heading, worked
 from ._shared import JOIN_NOTE, control_marks, given_points, point_text
 
 _ORDERS = ("C0", "C1", "C2")
@@ -154,15 +155,17 @@ def continuity_solution(
         title=f"Continuity of two Bezier segments (degrees {n} and {m}) at their join",
         given=(*given_points(a_pts), *given_points(b_pts, "Q")),
         derived=_join_derived(a_pts, b_pts, a, b, level),
-        tables=(Table("Continuity at the join", _COLUMNS, rows),),
-        pixels=pixels,
-        bbox=bbox(marks),
         notes=_join_notes(level, a[1], b[1]),
-        marks=marks,
-        geometry={
-            "polyline": _joined_polyline(a_pts, b_pts, samples),
-            "control": float_points((*a_pts, *b_pts)),
-        },
+        walk=Walk(tables=(Table("Continuity at the join", _COLUMNS, rows),)),
+        plot=Plot(
+            pixels=pixels,
+            bbox=bbox(marks),
+            marks=marks,
+            ideal=(
+                Polyline(_joined_polyline(a_pts, b_pts, samples)),
+                ControlPolygon(float_points((*a_pts, *b_pts))),
+            ),
+        ),
         data={"continuity": _ORDERS[level] if level >= 0 else None},
     )
 

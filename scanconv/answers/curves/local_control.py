@@ -21,7 +21,17 @@ from ...algorithms.curve_limits import (
 from ...algorithms.local_control import local_control
 from ...algorithms.sampling import bbox, curve_pixels
 from ...core.numeric import Number
-from ...core.records import Pixel, PixelFigure, Quantity, Solution, Step, heading, worked
+from ...core.records import (
+    Pixel,
+    PixelFigure,
+    Plot,
+    Quantity,
+    Solution,
+    Step,
+    Walk,
+    heading,
+    worked,
+)
 from ._shared import JOIN_NOTE, given_points, knot_text, point_text, value_text
 from .bspline import bspline_setup
 
@@ -43,7 +53,7 @@ def _changed(before: Iterable[Pixel], after: Iterable[Pixel]) -> tuple[int, int]
 
 
 _COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("t_bezier", r"t \ (\text{Bezier})", 3),
     heading("bezier_before", r"\text{Bezier before}"),
     heading("bezier_after", r"\text{Bezier after}"),
@@ -182,11 +192,13 @@ def local_control_solution(
         title=f"Local control: Bezier vs B-spline, P{index} moved from {old} to {point_text(new)}",
         given=tuple(given_points(pts)),
         derived=_local_derived(pts, index, new, degree, u, n, (z, s), samples + 1),
-        columns=_COLUMNS,
-        extra_keys=tuple(c.key for c in _COLUMNS[1:]),
-        steps=lambda: local_control(pts, index, new, degree, u, samples),
         notes=_NOTES,
-        figures=figures,
+        walk=Walk(
+            columns=_COLUMNS,
+            extra_keys=tuple(c.key for c in _COLUMNS[1:]),
+            steps=lambda: local_control(pts, index, new, degree, u, samples),
+        ),
+        plot=Plot(figures=figures),
         data={
             "bezier_samples_moved": z.moved,
             "bspline_samples_moved": s.moved,

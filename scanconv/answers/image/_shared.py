@@ -31,7 +31,7 @@ def matrix_columns(n: int) -> tuple[Column, ...]:
     >>> [c.key for c in matrix_columns(3)]
     ['i', '0', '1', '2']
     """
-    return (heading("i", "i"), *(heading(str(j), str(j)) for j in range(n)))
+    return (heading("i", "i", role="label"), *(heading(str(j), str(j)) for j in range(n)))
 
 
 def picture_note(m: int, n: int) -> str | None:

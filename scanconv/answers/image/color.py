@@ -20,7 +20,7 @@ from ...algorithms import color as c
 from ...algorithms.color import Value
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt, fmt_short, normalize, paren, round_half_up
-from ...core.records import Quantity, Solution, Table, heading, rule, worked
+from ...core.records import Quantity, Solution, Table, Walk, heading, rule, worked
 from ._shared import int_tex
 
 PLACES = 3
@@ -555,6 +555,6 @@ def color_solution(
         given=tuple(given),
         derived=tuple(w.items),
         notes=tuple(_color_notes(scale, unit, bits, (model, *want))),
-        tables=tuple(tables),
+        walk=Walk(tables=tuple(tables)),
         data=data,
     )

@@ -17,11 +17,13 @@ from ...core.checks import InputError
 from ...core.numeric import Number, fmt, fmt_short, normalize
 from ...core.records import (
     Column,
+    Plot,
     Quantity,
     ShadedMatrix,
     Solution,
     Step,
     Table,
+    Walk,
     heading,
     rule,
     worked,
@@ -91,7 +93,7 @@ def _rows_of(steps: Callable[[], Iterator[Step]], width: int) -> Callable[[], It
     return rows
 
 
-_CELL = (heading("k", "k"), heading("i", "i"), heading("j", "j"))
+_CELL = (heading("k", "k", role="label"), heading("i", "i"), heading("j", "j"))
 _DECIDED = (
     heading("value", "I(i, j)"),
     heading("threshold", "T"),
@@ -135,12 +137,14 @@ def _solution(
         title=title,
         given=tuple(_given_image(image, top)),
         derived=tuple(derived),
-        columns=(*_CELL, *columns),
-        extra_keys=("i", "j", *extra_keys),
-        steps=rows,
         notes=tuple(notes),
-        tables=(out_table,),
-        figures=(picture,),
+        walk=Walk(
+            columns=(*_CELL, *columns),
+            extra_keys=("i", "j", *extra_keys),
+            steps=rows,
+            tables=(out_table,),
+        ),
+        plot=Plot(figures=(picture,)),
         data={**data, "output": [list(r) for r in out]},
     )
 
@@ -386,7 +390,7 @@ def pattern_solution(n: int, level: int | None = None, bits: int = 1) -> Solutio
             "Each pattern contains the one before it (the cells turn on in the order of the "
             "Bayer matrix), so a region of slowly changing intensity shows no contour.",
         ),
-        tables=(table,),
-        figures=figures,
+        walk=Walk(tables=(table,)),
+        plot=Plot(figures=figures),
         data={"levels": count, "patterns": {lv: [list(r) for r in p] for lv, p in patterns}},
     )

@@ -12,7 +12,7 @@ from typing import Any
 from ...algorithms.storage import sizes
 from ...core.checks import InputError, check_positive
 from ...core.numeric import Number, fmt_short, normalize
-from ...core.records import Quantity, Solution, Table, heading, worked
+from ...core.records import Quantity, Solution, Table, Walk, heading, worked
 from ._shared import int_tex
 from .storage import size_text
 
@@ -56,7 +56,7 @@ def _size_table(bits: int) -> Table:
     rows = tuple((unit, size_text(v, cell=True)) for unit, v in sizes(bits).items())
     return Table(
         "Frame-buffer size",
-        (heading("unit", r"\text{unit}"), heading("size", r"\text{size}")),
+        (heading("unit", r"\text{unit}", role="label"), heading("size", r"\text{size}")),
         lambda: rows,
     )
 
@@ -196,6 +196,6 @@ def framebuffer_solution(
             "answers use either, so both are given.",
             "A bit plane holds one bit of every pixel: b bits per pixel take b planes.",
         ),
-        tables=(_size_table(total),),
+        walk=Walk(tables=(_size_table(total),)),
         data=data,
     )

@@ -12,7 +12,7 @@ from ...algorithms.image_limits import check_bits
 from ...algorithms.quantize import Quantizer
 from ...algorithms.storage import bits_per_pixel
 from ...core.numeric import Number, fmt_paren, fmt_short
-from ...core.records import Quantity, Solution, Table, heading, worked
+from ...core.records import Quantity, Solution, Table, Walk, heading, worked
 from ._shared import int_tex, int_text
 
 GRAY_NAMES: dict[int, tuple[str, ...]] = {
@@ -170,7 +170,7 @@ def quantize_solution(
             f"Gray k/{L - 1} here, with 0 Black and {L - 1} White."
         )
     columns = [
-        heading("decimal", r"\text{Decimal value}"),
+        heading("decimal", r"\text{Decimal value}", role="label"),
         heading("binary", f"\\text{{Binary ({B} bits)}}"),
         heading("gray_level", r"\text{Gray level}"),
     ]
@@ -197,13 +197,13 @@ def quantize_solution(
         given=(worked("B", B, f"B = {B} \\text{{ bits}}"),),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=(Table("Quantization table", tuple(columns), lambda: quantization_rows(B, q)),),
-        data=(
-            {}
-            if q is None
-            else {"range": [q.lo, q.hi], "input": "integer" if q.integer else "real"}
-            | {"reconstruction": q.recon}
+        walk=Walk(
+            tables=(Table("Quantization table", tuple(columns), lambda: quantization_rows(B, q)),)
         ),
+        data={}
+        if q is None
+        else {"range": [q.lo, q.hi], "input": "integer" if q.integer else "real"}
+        | {"reconstruction": q.recon},
     )
 
 

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from ...algorithms.ramp import ramp_size, ramp_values
 from ...algorithms.storage import bits_per_pixel
 from ...core.numeric import Number
-from ...core.records import ShadedMatrix, Solution, Table, worked
+from ...core.records import Plot, ShadedMatrix, Solution, Table, Walk, worked
 from ._shared import matrix_columns, picture_note
 from .storage import storage_quantity
 
@@ -60,6 +60,8 @@ def ramp_solution(m: Number, n: Number, levels: Number) -> Solution:
             "Row i from the top, column j from the left; 0 is black and L − 1 white.",
             *((note,) if note else ()),
         ),
-        tables=(Table("Gray levels f(i, j)", matrix_columns(N), rows),),
-        figures=() if note else (ShadedMatrix(tuple(tuple(r[1:]) for r in rows()), L, N),),
+        walk=Walk(tables=(Table("Gray levels f(i, j)", matrix_columns(N), rows),)),
+        plot=Plot(
+            figures=() if note else (ShadedMatrix(tuple(tuple(r[1:]) for r in rows()), L, N),)
+        ),
     )

@@ -9,7 +9,7 @@ from fractions import Fraction
 
 from ...algorithms.sample import Sampled
 from ...core.numeric import Number, fmt, fmt_short, normalize, paren
-from ...core.records import Quantity, ShadedMatrix, Solution, Table, worked
+from ...core.records import Plot, Quantity, ShadedMatrix, Solution, Table, Walk, worked
 from ...core.working import tex_text
 from ._shared import matrix_columns, picture_note
 from .storage import storage_quantity
@@ -187,10 +187,12 @@ def sample_solution(s: Sampled) -> Solution:
         given=_sample_given(s, shown),
         derived=derived,
         notes=_sample_notes(s, left_out),
-        tables=(Table("Quantized levels (row i, column j)", matrix_columns(N), rows),),
-        figures=()
-        if left_out
-        else (ShadedMatrix(tuple(tuple(r) for r in levels_m.tolist()), L, N),),
+        walk=Walk(tables=(Table("Quantized levels (row i, column j)", matrix_columns(N), rows),)),
+        plot=Plot(
+            figures=()
+            if left_out
+            else (ShadedMatrix(tuple(tuple(r) for r in levels_m.tolist()), L, N),)
+        ),
         data={"x": s.x.tolist(), "y": s.y.tolist()},
     )
 

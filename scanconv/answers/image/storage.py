@@ -13,7 +13,7 @@ from ...algorithms.image_limits import MAX_LEVELS, check_levels, check_storage_b
 from ...algorithms.storage import UNITS, bits_per_pixel, sizes, storage_bits
 from ...core.checks import InputError, check_positive
 from ...core.numeric import Number, fmt, fmt_short, normalize
-from ...core.records import Quantity, Solution, Table, heading, worked
+from ...core.records import Quantity, Solution, Table, Walk, heading, worked
 from ._shared import int_tex, int_text
 
 
@@ -219,7 +219,7 @@ def _depth_name(levels: Number | None, bits: Number | None, binary: bool, color:
 
 
 _SIZE_COLUMNS = (
-    heading("unit", r"\text{unit}"),
+    heading("unit", r"\text{unit}", role="label"),
     heading("bytes_per_unit", r"\text{bytes per unit}"),
     heading("size", r"\text{size}"),
 )
@@ -292,6 +292,6 @@ def storage_solution(
         given=_storage_given(M, N, levels, F),
         derived=(*depth, *_size_quantities(M, N, k, F, b)),
         notes=tuple(notes),
-        tables=(Table("Size in each unit", _SIZE_COLUMNS, lambda: _size_rows(b)),),
+        walk=Walk(tables=(Table("Size in each unit", _SIZE_COLUMNS, lambda: _size_rows(b)),)),
         data={"sizes": sizes(b)},
     )

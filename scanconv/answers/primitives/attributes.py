@@ -9,8 +9,20 @@ from collections.abc import Iterator
 from ...algorithms import attributes as at
 from ...algorithms.lines import orient
 from ...core.checks import check_integer
+from ...core.ideal import IdealLine
 from ...core.numeric import Number, fmt_pixel
-from ...core.records import Pixel, PixelFigure, Quantity, Solution, Step, heading, rule, worked
+from ...core.records import (
+    Pixel,
+    PixelFigure,
+    Plot,
+    Quantity,
+    Solution,
+    Step,
+    Walk,
+    heading,
+    rule,
+    worked,
+)
 
 _GIVEN_KEYS = ("x1", "y1", "x2", "y2")
 
@@ -111,26 +123,30 @@ def line_style_solution(
         title=f"Line style {written} (read {bits} first, x{m.repeat}): ({ends[0]}, {ends[1]}) to ({ends[2]}, {ends[3]})",
         given=(*_given(ends), *written_q),
         derived=tuple(derived),
-        columns=(
-            heading("k", "k"),
-            heading("pixel", "(x_k, y_k)"),
-            heading("bit_index", r"\text{bit}"),
-            heading("bit", r"\text{value}"),
-            heading("action", r"\text{action}"),
-        ),
-        extra_keys=("bit_index", "bit", "action"),
-        steps=rows,
-        pixels=lambda: iter(pixels),
-        bbox=box,
         notes=(
             f"Bits read {bits} first (msb: as written; lsb: OpenGL's glLineStipple, bit 0 "
             f"first), each bit for {m.repeat} pixel(s); the centre line is Bresenham's, from "
             "the end with the smaller major coordinate.",
             "bit: the bit's place in the order applied (0 first); value: that bit.",
         ),
-        marks=skipped,
-        marks_label="skipped pixel",
-        geometry={"line": ends},
+        walk=Walk(
+            columns=(
+                heading("k", "k", role="label"),
+                heading("pixel", "(x_k, y_k)"),
+                heading("bit_index", r"\text{bit}"),
+                heading("bit", r"\text{value}"),
+                heading("action", r"\text{action}"),
+            ),
+            extra_keys=("bit_index", "bit", "action"),
+            steps=rows,
+        ),
+        plot=Plot(
+            pixels=lambda: iter(pixels),
+            bbox=box,
+            marks=skipped,
+            marks_label="skipped pixel",
+            ideal=(IdealLine(*ends),),
+        ),
         data={"mask": list(m.bits), "repeat": m.repeat, "bits": bits},
     )
 
@@ -183,22 +199,21 @@ def thick_line_solution(
         f"({ends[0]}, {ends[1]}) to ({ends[2]}, {ends[3]})",
         given=(*_given(ends), worked("w", width, f"w = {width}")),
         derived=tuple(derived),
-        columns=(
-            heading("k", "k"),
-            heading("pixel", "(x_k, y_k)"),
-            heading("added", r"\text{pixels added}"),
-        ),
-        extra_keys=("added",),
-        steps=rows,
-        pixels=pixels,
-        bbox=bbox,
         notes=(
             "An even width puts its extra pixel above (or to the right of) the centre line; "
             "a pixel already drawn is not added again.",
             "Replication leaves a line of slope near 1 thinner than w (by a factor of "
             "cos 45 degrees); a square brush keeps it at least w wide.",
         ),
-        figures=figures,
-        geometry={"line": ends},
+        walk=Walk(
+            columns=(
+                heading("k", "k", role="label"),
+                heading("pixel", "(x_k, y_k)"),
+                heading("added", r"\text{pixels added}"),
+            ),
+            extra_keys=("added",),
+            steps=rows,
+        ),
+        plot=Plot(pixels=pixels, bbox=bbox, figures=figures, ideal=(IdealLine(*ends),)),
         data={"width": width, "brush": brush},
     )

@@ -11,7 +11,18 @@ from typing import Any
 from ...algorithms import characters as ch
 from ...core.checks import InputError, check_integer
 from ...core.numeric import fmt_pixel
-from ...core.records import Pixel, Quantity, Solution, Step, Table, heading, rule, worked
+from ...core.records import (
+    Pixel,
+    Plot,
+    Quantity,
+    Solution,
+    Step,
+    Table,
+    Walk,
+    heading,
+    rule,
+    worked,
+)
 from ...core.working import tex_text
 from ..image._shared import int_tex
 from ..image.storage import size_text
@@ -146,18 +157,20 @@ def font_storage_solution(
             f"character of code {first} + i (a glyph of {s.per_glyph} bits takes "
             f"{Fraction(s.per_glyph, 8)} bytes).",
         ),
-        tables=(
-            Table(
-                "Every packing",
-                (
-                    heading("packing", r"\text{packing}"),
-                    heading("glyph", r"\text{bits a glyph}"),
-                    heading("bits", r"\text{bits}"),
-                    heading("bytes", r"\text{bytes}"),
+        walk=Walk(
+            tables=(
+                Table(
+                    "Every packing",
+                    (
+                        heading("packing", r"\text{packing}"),
+                        heading("glyph", r"\text{bits a glyph}"),
+                        heading("bits", r"\text{bits}"),
+                        heading("bytes", r"\text{bytes}"),
+                    ),
+                    rows,
                 ),
-                rows,
-            ),
-            font_table(count, s.per_glyph, first, base, char),
+                font_table(count, s.per_glyph, first, base, char),
+            )
         ),
         data={"bits": s.total_bits, "per_glyph": s.per_glyph, "packing": packing},
     )
@@ -247,16 +260,6 @@ def bitmap_solution(
             ),
             worked("pixels", len(pixels), f"\\text{{pixels: }} {len(pixels)}"),
         ),
-        columns=(
-            heading("k", "k"),
-            heading("row", "i"),
-            heading("column", "j"),
-            heading("pixels", r"\text{pixels}"),
-        ),
-        extra_keys=("row", "column", "pixels"),
-        steps=table,
-        pixels=lambda: iter(pixels),
-        bbox=_bbox(pixels),
         notes=(
             "Rows are stored top first; the screen's y grows upward, so row i lands at "
             "y0 + (h - 1 - i) * s.",
@@ -269,7 +272,18 @@ def bitmap_solution(
                 else " (msb, the usual bitmap font, puts it in the most)."
             ),
         ),
-        tables=(glyph_bytes,),
+        walk=Walk(
+            columns=(
+                heading("k", "k", role="label"),
+                heading("row", "i"),
+                heading("column", "j"),
+                heading("pixels", r"\text{pixels}"),
+            ),
+            extra_keys=("row", "column", "pixels"),
+            steps=table,
+            tables=(glyph_bytes,),
+        ),
+        plot=Plot(pixels=lambda: iter(pixels), bbox=_bbox(pixels)),
         data={
             "rows": list(g),
             "scale": scale,
@@ -307,19 +321,20 @@ def stroke_solution(
             rule("place", f"(x, y) \\to ({x0} + {scale} x, {y0} + {scale} y)"),
             worked("pixels", len(pixels), f"\\text{{pixels: }} {len(pixels)}"),
         ),
-        columns=(
-            heading("k", "k"),
-            heading("pixel", r"\text{start}"),
-            heading("segment", r"\text{segment}"),
-            heading("pixels", r"\text{pixels (" + algo + ")}"),
-        ),
-        extra_keys=("segment", "pixels"),
-        steps=table,
-        pixels=lambda: iter(pixels),
-        bbox=_bbox(pixels),
         notes=(
             "A stroke font stores each character as line segments on a small grid; scaling "
             "multiplies the end points, so the strokes stay one pixel wide.",
         ),
+        walk=Walk(
+            columns=(
+                heading("k", "k", role="label"),
+                heading("pixel", r"\text{start}"),
+                heading("segment", r"\text{segment}"),
+                heading("pixels", r"\text{pixels (" + algo + ")}"),
+            ),
+            extra_keys=("segment", "pixels"),
+            steps=table,
+        ),
+        plot=Plot(pixels=lambda: iter(pixels), bbox=_bbox(pixels)),
         data={"segments": [list(s.extra[0]) for s in steps]},
     )

@@ -21,19 +21,23 @@ from ...algorithms.circles import (
 from ...algorithms.conventions import ROUNDING_TEXT, convention_note, resolve, rounder
 from ...core import lazy
 from ...core.checks import InputError, check_integer
+from ...core.ideal import IdealCircle
 from ...core.numeric import (
     Number,
     fmt_value,
     normalize,
 )
 from ...core.records import (
-    Code,
+    NO_THEORY,
     Move,
     Pixel,
+    Plot,
     Quantity,
     Solution,
     Step,
     Table,
+    Theory,
+    Walk,
     heading,
     rule,
     worked,
@@ -150,17 +154,15 @@ def _theory(
     method: str,
     ir: int,
     knobs: dict[str, str],
-    derived: tuple[Quantity, ...],
     derive: bool,
     pseudocode: bool,
-) -> tuple[tuple[Quantity, ...], tuple[Code, ...]]:
-    """The working with ``--derive``'s derivation added, and ``--algorithm``'s listing."""
+) -> Theory:
+    """``--derive``'s derivation and ``--algorithm``'s listing."""
     if not (derive or pseudocode):
-        return derived, ()
-    if derive:
-        derived = (*derived, theory.DERIVATION, *_derivation(method, ir, knobs))
+        return NO_THEORY
+    derivation = (theory.DERIVATION, *_derivation(method, ir, knobs)) if derive else ()
     code = theory.circle_code(method, knobs) if pseudocode else None
-    return derived, (code,) if code is not None else ()
+    return Theory(derivation, (code,) if code is not None else ())
 
 
 def circle_solution(
@@ -229,7 +231,7 @@ def circle_solution(
         "Each octant point is mirrored into 8 pixels about the centre; a pixel is listed "
         "once, the first time it is plotted.",
     )
-    derived, code = _theory(method, ir, knobs, derived, derive, pseudocode)
+    added = _theory(method, ir, knobs, derive, pseudocode)
     data: dict[str, Any] = {"rounding": rounding} if method in FLOAT_METHODS else {}
     if annotate:
         notes = (*notes, convention_note("circle", convention, knobs))
@@ -244,17 +246,23 @@ def circle_solution(
         title=f"{title}: r = {ir}, centre ({ixc}, {iyc})",
         given=_circle_given(ir, ixc, iyc),
         derived=derived,
-        columns=columns,
-        extra_keys=extra_keys,
-        steps=steps,
-        pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
-        bbox=(ixc - ir, iyc - ir, ixc + ir, iyc + ir),
         notes=notes,
-        tables=(symmetry_table(points, images, ixc, iyc),),
-        marks=((ixc, iyc),),
-        geometry={"circle": (ixc, iyc, ir), "symmetry": 8, "center": (ixc, iyc)},
+        walk=Walk(
+            columns=columns,
+            extra_keys=extra_keys,
+            steps=steps,
+            tables=(symmetry_table(points, images, ixc, iyc),),
+            symmetry=8,
+            center=(ixc, iyc),
+        ),
+        plot=Plot(
+            pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
+            bbox=(ixc - ir, iyc - ir, ixc + ir, iyc + ir),
+            marks=((ixc, iyc),),
+            ideal=(IdealCircle(ixc, iyc, ir),),
+        ),
+        theory=added,
         data=data,
-        code=code,
     )
 
 
@@ -352,7 +360,7 @@ def _midpoint_notes(
 
 
 _MIDPOINT_NOTES_COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("x_k", "x_k"),
     heading("y_k", "y_k"),
     heading("p", "p_k"),
@@ -360,7 +368,7 @@ _MIDPOINT_NOTES_COLUMNS = (
     heading("pixel", r"\text{plot } (x_k, y_k)"),
 )
 _MIDPOINT_COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("p", "p_k"),
     heading("pixel", "(x_{k+1}, y_{k+1})"),
     heading("two_x", "2x_{k+1}"),
@@ -453,7 +461,7 @@ def _general_parts(r: int, knobs: dict[str, str]) -> Parts:
         return general(r, tie, loop)
 
     columns = (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("x_k", "x"),
         heading("y_k", "y"),
         heading("p", "p"),
@@ -503,7 +511,7 @@ def _bresenham_parts(r: int, tie: str, xstep: str = "last") -> Parts:
         rule("loop", r"x_{k+1} = x_k + 1;\ \text{plot } (x_k, y_k) \text{ while } x \le y"),
     )
     columns = (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("p", "d_k"),
         heading("decision", r"\text{decision}"),
         heading("pixel", "(x_k, y_k)"),

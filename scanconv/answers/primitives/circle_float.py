@@ -58,7 +58,7 @@ def polynomial_parts(r: int, rounding: str) -> Parts:
         ),
     )
     columns = (
-        heading("k", "x"),
+        heading("k", "x", role="label"),
         heading("y_sqrt", r"y = \sqrt{r^2 - x^2}", 3),
         heading("round_y", rounded),
         heading("pixel", r"\text{point } (x, y)"),
@@ -110,7 +110,7 @@ def trig_parts(r: int, rounding: str) -> Parts:
             rule("equation", r"x = r \cos\theta_k,\ y = r \sin\theta_k"),
         )
     columns = (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("theta_deg", r"\theta_k\ (\text{deg})", 3),
         heading("theta_rad", r"\theta_k\ (\text{rad})", 3),
         heading("x_cos", r"x = r \cos\theta", 3),
@@ -165,7 +165,7 @@ def sdda_parts(r: int, rounding: str) -> Parts:
             ),
         )
     columns = (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("x_k", "x_k", 3),
         heading("y_k", "y_k", 3),
         heading("pixel", f"({name}, {yname})"),

@@ -19,15 +19,19 @@ from ...algorithms.ellipses import (
 )
 from ...core import lazy
 from ...core.checks import InputError, check_integer
+from ...core.ideal import IdealEllipse
 from ...core.numeric import Number, fmt_paren, fmt_short, round_c_cast
 from ...core.records import (
     Code,
     Column,
     Pixel,
+    Plot,
     Quantity,
     Solution,
     Step,
     Table,
+    Theory,
+    Walk,
     heading,
     step_getter,
     worked,
@@ -44,7 +48,7 @@ else:  # only --derive and --algorithm need it
 
 def _region_columns(p: str) -> tuple[Column, ...]:
     return (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("p", f"{p}_k"),
         heading("pixel", "(x_{k+1}, y_{k+1})"),
         heading("two_ry2_x", "2r_y^2 x_{k+1}"),
@@ -233,8 +237,7 @@ def ellipse_solution(
     notes = _notes(e)
     if annotate:
         notes.append(convention_note("ellipse", convention, knobs))
-    if derive:
-        derived = (*derived, theory.DERIVATION, *theory.ellipse_derivation(e.rx, e.ry))
+    derivation = (theory.DERIVATION, *theory.ellipse_derivation(e.rx, e.ry)) if derive else ()
 
     def steps() -> Iterator[Step]:
         return midpoint_ellipse(e.rx, e.ry, e.loop, e.tie, e.p0)
@@ -252,16 +255,24 @@ def ellipse_solution(
         title=f"Midpoint ellipse algorithm: rx = {e.rx}, ry = {e.ry}, centre ({e.xc}, {e.yc})",
         given=_given(e),
         derived=derived,
-        columns=(heading("region", r"\text{region}", role="label"), *_region_columns("p")),
-        extra_keys=_EXTRA,
-        steps=steps,
-        pixels=lambda: symmetric_pixels(points(), e.xc, e.yc),
-        bbox=(e.xc - e.rx, e.yc - e.ry, e.xc + e.rx, e.yc + e.ry),
         notes=tuple(notes),
-        tables=tables,
-        show_steps=False,
-        marks=((e.xc, e.yc),),
-        geometry={"ellipse": (e.xc, e.yc, e.rx, e.ry), "symmetry": 4, "center": (e.xc, e.yc)},
+        walk=Walk(
+            columns=(heading("region", r"\text{region}", role="label"), *_region_columns("p")),
+            extra_keys=_EXTRA,
+            steps=steps,
+            shown=False,
+            tables=tables,
+            regions="column",
+            region_p=("p1_k", "p2_k"),  # the p columns of the region tables
+            symmetry=4,
+            center=(e.xc, e.yc),
+        ),
+        plot=Plot(
+            pixels=lambda: symmetric_pixels(points(), e.xc, e.yc),
+            bbox=(e.xc - e.rx, e.yc - e.ry, e.xc + e.rx, e.yc + e.ry),
+            marks=((e.xc, e.yc),),
+            ideal=(IdealEllipse(e.xc, e.yc, e.rx, e.ry),),
+        ),
+        theory=Theory(derivation, code),
         data={"conventions": knobs} if annotate else {},
-        code=code,
     )

@@ -20,6 +20,7 @@ from ...algorithms.lines import (
 )
 from ...core import lazy
 from ...core.checks import InputError
+from ...core.ideal import IdealLine
 from ...core.numeric import (
     Number,
     fmt_exact,
@@ -29,7 +30,19 @@ from ...core.numeric import (
     normalize,
     round_half_up,
 )
-from ...core.records import Code, Pixel, Quantity, Solution, Step, heading, rule, worked
+from ...core.records import (
+    Code,
+    Pixel,
+    Plot,
+    Quantity,
+    Solution,
+    Step,
+    Theory,
+    Walk,
+    heading,
+    rule,
+    worked,
+)
 from ..methods import method
 from ..theory.errata import line_errata
 
@@ -214,12 +227,12 @@ def _theory(
     steep = abs_value(dy) > abs_value(dx)
     sign = -1 if (dx > 0 > dy or dy > 0 > dx) else 1
     listings: list[Code] = []
+    derivation: tuple[Quantity, ...] = ()
     if algo == "bresenham":
         sx, sy, _, _, steep, dmaj, dmin, sign, _, _ = orient(int(x1), int(y1), int(x2), int(y2))
         if derive:
             u0, v0 = (sy, sign * sx) if steep else (sx, sign * sy)
-            sol.derived = (
-                *sol.derived,
+            derivation = (
                 theory.DERIVATION,
                 *theory.bresenham_line_derivation(u0, v0, dmaj, dmin, steep, sign),
             )
@@ -231,8 +244,7 @@ def _theory(
             )
     elif algo == "dda":
         if derive:
-            sol.derived = (
-                *sol.derived,
+            derivation = (
                 theory.DERIVATION,
                 *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2)),
             )
@@ -241,8 +253,7 @@ def _theory(
             listings.append(theory.dda_code(steep, sign, knobs["rounding"], swapped))
     elif algo == "basic":
         if derive:
-            sol.derived = (
-                *sol.derived,
+            derivation = (
                 theory.DERIVATION,
                 *theory.dda_derivation(dx, dy, dda_steps(x1, y1, x2, y2))[:1],
             )
@@ -253,7 +264,7 @@ def _theory(
             method("line", algo).load("pseudocode")
     else:  # a method whose record names no derivation (wu) is refused before this
         method("line", algo).load("derivation" if derive else "pseudocode")
-    sol.code = (*sol.code, *listings)
+    sol.theory = Theory(derivation, (*sol.code, *listings))
 
 
 def _swap_rule(maj: str, x1: Number, y1: Number, x2: Number, y2: Number) -> Quantity:
@@ -399,19 +410,23 @@ def _bresenham_solution(
         title=_title("Bresenham's line algorithm", ix1, iy1, ix2, iy2),
         given=_given(ix1, iy1, ix2, iy2),
         derived=_bresenham_derived(w, tie),
-        columns=(
-            heading("k", "k"),
-            heading("p", "p_k"),
-            heading("decision", r"\text{decision}"),
-            heading("pixel", pixel_head),
-            heading("p_next", "p_{k+1}"),
-        ),
-        extra_keys=("p_next",),
-        steps=steps,
-        pixels=pixels,
-        bbox=_bbox((ix1, iy1), (ix2, iy2)),
-        geometry={"line": (ix1, iy1, ix2, iy2)},
         notes=_bresenham_line_notes(w, tie, layout),
+        walk=Walk(
+            columns=(
+                heading("k", "k", role="label"),
+                heading("p", "p_k"),
+                heading("decision", r"\text{decision}"),
+                heading("pixel", pixel_head),
+                heading("p_next", "p_{k+1}"),
+            ),
+            extra_keys=("p_next",),
+            steps=steps,
+        ),
+        plot=Plot(
+            pixels=pixels,
+            bbox=_bbox((ix1, iy1), (ix2, iy2)),
+            ideal=(IdealLine(ix1, iy1, ix2, iy2),),
+        ),
     )
 
 
@@ -451,7 +466,7 @@ def _dda_derived(
 
 
 _DDA_COLUMNS = (
-    heading("k", "k"),
+    heading("k", "k", role="label"),
     heading("x", "x_k", 3),
     heading("y", "y_k", 3),
     heading("round_x", r"\operatorname{round}(x_k)"),
@@ -488,13 +503,17 @@ def _dda_solution(
         title=_title("Simple DDA line algorithm", *asked),
         given=_given(*asked),
         derived=_dda_derived(x1, y1, x2, y2, swapped),
-        columns=_DDA_COLUMNS,
-        extra_keys=("x", "y", "round_x", "round_y"),
-        steps=lambda: dda(x1, y1, x2, y2, rounding),
-        pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2, rounding)),
-        bbox=_bbox((x1, y1), (x2, y2)),
-        geometry={"line": (x1, y1, x2, y2)},
         notes=notes,
+        walk=Walk(
+            columns=_DDA_COLUMNS,
+            extra_keys=("x", "y", "round_x", "round_y"),
+            steps=lambda: dda(x1, y1, x2, y2, rounding),
+        ),
+        plot=Plot(
+            pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2, rounding)),
+            bbox=_bbox((x1, y1), (x2, y2)),
+            ideal=(IdealLine(x1, y1, x2, y2),),
+        ),
     )
 
 
@@ -531,18 +550,22 @@ def _basic_solution(
         title=_title("Line by the basic (direct) method", x1, y1, x2, y2),
         given=_given(x1, y1, x2, y2),
         derived=tuple(derived),
-        columns=(
-            heading(maj, maj),
-            heading(mnr, f"{mnr} \\text{{ (calculated)}}", 3),
-            heading(f"round_{mnr}", f"{mnr} \\text{{ (rounded)}}"),
-            heading("pixel", r"\text{pixel } (x, y)"),
-        ),
-        extra_keys=(maj, mnr, f"round_{mnr}"),
-        steps=lambda: basic(x1, y1, x2, y2, rounding),
-        pixels=lambda: (s.pixel for s in basic(x1, y1, x2, y2, rounding)),
-        bbox=_bbox((x1, y1), (x2, y2)),
-        geometry={"line": (x1, y1, x2, y2)},
         notes=(f"Each {mnr} is computed exactly and {ROUNDING_TEXT[rounding]}.",),
+        walk=Walk(
+            columns=(
+                heading(maj, maj),
+                heading(mnr, f"{mnr} \\text{{ (calculated)}}", 3),
+                heading(f"round_{mnr}", f"{mnr} \\text{{ (rounded)}}"),
+                heading("pixel", r"\text{pixel } (x, y)"),
+            ),
+            extra_keys=(maj, mnr, f"round_{mnr}"),
+            steps=lambda: basic(x1, y1, x2, y2, rounding),
+        ),
+        plot=Plot(
+            pixels=lambda: (s.pixel for s in basic(x1, y1, x2, y2, rounding)),
+            bbox=_bbox((x1, y1), (x2, y2)),
+            ideal=(IdealLine(x1, y1, x2, y2),),
+        ),
     )
 
 

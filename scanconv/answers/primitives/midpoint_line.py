@@ -123,14 +123,15 @@ def midpoint_answer(
         f"coordinate), scale = {scale} "
         + ("(d = F(M), in halves)." if scale == "half" else "(d = 2F(M), integers only)."),
     )
-    fields = base.fields()
-    fields.update(
+    return Solution(
+        primitive=base.primitive,
         algorithm="midpoint",
         title=f"Midpoint line algorithm: ({ix1}, {iy1}) to ({ix2}, {iy2})",
+        given=base.given,
         derived=derived,
-        columns=tuple(_renamed(c) for c in base.columns),
-        steps=steps,
         notes=notes,
+        walk=base.walk._replace(columns=tuple(_renamed(c) for c in base.columns), steps=steps),
+        plot=base.plot,
+        theory=base.theory,
         data={**base.data, "conventions": dict(knobs), "layout": layout},
     )
-    return Solution(**fields)

@@ -18,8 +18,9 @@ from ...algorithms.parametric import check_float_path, exact_values, float_reaso
 from ...algorithms.sampling import curve_pixel, curve_pixels, dense_ts, path_bbox, polyline
 from ...core.checks import InputError
 from ...core.expr import Expr, compile_expr, parse_exact
+from ...core.ideal import Polyline
 from ...core.numeric import Number, fmt_short, normalize
-from ...core.records import Pixel, Quantity, Solution, Step, heading, worked
+from ...core.records import Pixel, Plot, Quantity, Solution, Step, Walk, heading, worked
 from ...core.working import tex_text, tex_to_unicode
 from ..curves._shared import (
     FLOAT_ROUND_NOTE,
@@ -347,17 +348,22 @@ def _parametric_solution(kind: str, spec: _Spec, lo: _Range, hi: _Range, samples
         title=spec.title,
         given=spec.given,
         derived=tuple(derived),
-        columns=(
-            heading("k", "k"),
-            heading("t", "t_k", 3),
-            *xy_columns(),
-        ),
-        extra_keys=("t", "x_t", "y_t"),
-        steps=steps,
-        pixels=pixels,
-        bbox=bbox,
         notes=tuple(notes),
-        marks=marks,
-        geometry={"polyline": dense},
+        walk=Walk(
+            columns=(
+                heading("k", "k", role="label"),
+                heading("t", "t_k", 3),
+                *xy_columns(),
+            ),
+            extra_keys=("t", "x_t", "y_t"),
+            steps=steps,
+        ),
+        plot=Plot(
+            pixels=pixels,
+            bbox=bbox,
+            marks=marks,
+            marks_label="centre" if marks else None,
+            ideal=(Polyline(dense),),
+        ),
         data={"x_formula": fx.text, "y_formula": fy.text},
     )

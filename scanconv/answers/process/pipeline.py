@@ -11,14 +11,24 @@ the question gives.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ...algorithms.lines import ALGORITHMS
 from ...algorithms.transform import Rect, rect_outline, viewport_scale
 from ...core import lazy
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt_short, normalize, round_half_up
-from ...core.records import Column, Pixel, Quantity, Solution, Table, step_getter
+from ...core.records import (
+    NO_PLOT,
+    Column,
+    Pixel,
+    Plot,
+    Quantity,
+    Solution,
+    Table,
+    Walk,
+    step_getter,
+)
 from ..primitives.line import line_solution
 from ._shared import check_rect, fits, point_quantity, pt, pt_approx, rect_quantity, rect_text
 from .clip.rectangle import METHOD_NAMES, check_method, clip_line_parts
@@ -151,6 +161,19 @@ def _union_box(
     )
 
 
+class PipelineLine(NamedTuple):
+    """A line through the pipeline and each stage's end points, as values: what another answer
+    quotes (the solution's ``data`` is output only). ``None`` past a rejecting clip."""
+
+    solution: Solution
+    clipped: tuple[tuple[Number, Number], tuple[Number, Number]] | None
+    """The visible segment, world coordinates."""
+    device: tuple[tuple[Number, Number], ...] | None
+    """Its ends mapped to the viewport, exact."""
+    rounded: tuple[Pixel, ...] | None
+    """Those ends rounded half up: the pixels the line is drawn between."""
+
+
 def pipeline_line_solution(
     x1: Number,
     y1: Number,
@@ -170,6 +193,21 @@ def pipeline_line_solution(
     >>> list(sol.pixels())[:3]
     [(0, 3), (1, 3), (2, 4)]
     """
+    return pipeline_line(x1, y1, x2, y2, window, viewport, algo=algo, clip=clip).solution
+
+
+def pipeline_line(
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    window: Sequence[Number],
+    viewport: Sequence[Number],
+    *,
+    algo: str = "bresenham",
+    clip: str = "cohen-sutherland",
+) -> PipelineLine:
+    """:func:`pipeline_line_solution` with each stage's end points as values."""
     w = check_rect(window, "window", "window")
     v = check_rect(viewport, "viewport", "viewport")
     _check_line_method(algo, clip)
@@ -189,10 +227,17 @@ def pipeline_line_solution(
         notes.append(
             "The segment is outside the window: stages 2 to 4 have nothing to do and the frame buffer stays empty."
         )
-        return Solution(
-            primitive="pipeline", algorithm=algo, title=title, given=given, derived=tuple(derived),
-            notes=tuple(notes), tables=tuple(tables), data=data,
-        )  # fmt: skip
+        rejected = Solution(
+            primitive="pipeline",
+            algorithm=algo,
+            title=title,
+            given=given,
+            derived=tuple(derived),
+            notes=tuple(notes),
+            walk=Walk(tables=tuple(tables)),
+            data=data,
+        )
+        return PipelineLine(rejected, None, None, None)
     derived.append(_clipped_quantity(seg))
     dev = _to_device(seg, ("P1'", "P2'"), w, v, derived, tables)
     derived += _device_quantities(dev)
@@ -210,24 +255,18 @@ def pipeline_line_solution(
         device=[list(q) for q in dev],
         rounded=[list(r) for r in rounded],
     )
-    return Solution(
+    solution = Solution(
         primitive="pipeline",
         algorithm=algo,
         title=title,
         given=given,
         derived=tuple(derived),
-        columns=line.columns,
-        extra_keys=line.extra_keys,
-        steps=line.steps,
-        pixels=line.pixels,
-        bbox=box,
         notes=tuple(notes),
-        tables=tuple(tables),
-        show_steps=False,
-        marks=marks,
-        geometry=line.geometry,
+        walk=line.walk._replace(shown=False, tables=tuple(tables)),
+        plot=line.plot._replace(bbox=box, marks=marks, marks_label=None, figures=()),
         data=data,
     )
+    return PipelineLine(solution, seg, tuple(dev), tuple(rounded))
 
 
 # --- a polygon: clip (Sutherland-Hodgman), map, then outline or scan-line fill -----------------
@@ -336,7 +375,7 @@ def pipeline_polygon_solution(
     title = f"Scan-conversion pipeline: polygon ({len(vertices)} vertices) clipped, mapped and {what}, window {rect_text(w)}, viewport {rect_text(v)}"
     data: dict[str, Any] = {"clipped": [list(p) for p in final], "device": None}
 
-    def answer(**extra: Any) -> Solution:
+    def answer(plot: Plot = NO_PLOT) -> Solution:
         return Solution(
             primitive="pipeline",
             algorithm="scan-line fill" if fill else "outline",
@@ -344,9 +383,9 @@ def pipeline_polygon_solution(
             given=given,
             derived=tuple(derived),
             notes=tuple(notes),
-            tables=tuple(tables),
+            walk=Walk(tables=tuple(tables)),
+            plot=plot,
             data=data,
-            **extra,
         )
 
     if not final:
@@ -370,4 +409,4 @@ def pipeline_polygon_solution(
     marks: tuple[Pixel, ...] = tuple(rect_outline(frame)) if fits(box) else ()  # type: ignore[arg-type]
     if marks:
         notes.append("In the grid, o marks the viewport's edge and # the pixels (@ both).")
-    return answer(pixels=pixels, bbox=box, marks=marks)
+    return answer(Plot(pixels=pixels, bbox=box, marks=marks))

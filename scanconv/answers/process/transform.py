@@ -41,7 +41,7 @@ from ...algorithms.transform import (
 )
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt, fmt_short, parse_number, round_half_up
-from ...core.records import Column, Quantity, Solution, Table
+from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
 from ...core.working import ascii_text
 from ._shared import (
     approx_text,
@@ -452,6 +452,7 @@ def transform_solution(
             "Values with square roots are exact (sqrt(2)/2 = cos 45°); the grid rounds them half up."
         )
     labels = ", then ".join(s.label for s in stages)
+    matrices = Table("Matrices (column vectors, P' = M.P)", _MATRIX_COLUMNS, lambda: mat_rows)
     return Solution(
         primitive="transform",
         algorithm="homogeneous",
@@ -467,15 +468,14 @@ def transform_solution(
         ),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=(
-            Table("Matrices (column vectors, P' = M.P)", _MATRIX_COLUMNS, lambda: mat_rows),
-            _points_table(points, after, m, irrational),
-        ),
-        figures=shapes_figure(
-            points,
-            after,
-            "# = after (P'), o = before (P), @ = both",
-            "Before (o) and after (#), vertices rounded half up:",
+        walk=Walk(tables=(matrices, _points_table(points, after, m, irrational))),
+        plot=Plot(
+            figures=shapes_figure(
+                points,
+                after,
+                "# = after (P'), o = before (P), @ = both",
+                "Before (o) and after (#), vertices rounded half up:",
+            )
         ),
         data=data,
     )

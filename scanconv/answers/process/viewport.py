@@ -10,7 +10,7 @@ from fractions import Fraction
 from ...algorithms.clipping import Point, Rect
 from ...algorithms.transform import compose, scaling, translation, viewport_scale
 from ...core.numeric import Number, fmt_paren, fmt_short, normalize, round_half_up
-from ...core.records import Column, Quantity, Solution, Table
+from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
 from ._shared import (
     check_points,
     check_rect,
@@ -146,29 +146,35 @@ def viewport_solution(
             ),
         ),
         notes=tuple(notes),
-        tables=(
-            Table(
-                "The composite matrix",
-                (
-                    Column("matrix", "matrix", r"\text{matrix}"),
-                    Column("work", "mapping", r"\text{mapping}"),
-                    Column("c1", "col 1", r"\text{col } 1"),
-                    Column("c2", "col 2", r"\text{col } 2"),
-                    Column("c3", "col 3", r"\text{col } 3"),
+        walk=Walk(
+            tables=(
+                Table(
+                    "The composite matrix",
+                    (
+                        Column("matrix", "matrix", r"\text{matrix}"),
+                        Column("work", "mapping", r"\text{mapping}"),
+                        Column("c1", "col 1", r"\text{col } 1"),
+                        Column("c2", "col 2", r"\text{col } 2"),
+                        Column("c3", "col 3", r"\text{col } 3"),
+                    ),
+                    lambda: matrix_rows(
+                        "M",
+                        "T(xvmin, yvmin).S(sx, sy).T(-xwmin, -ywmin)",
+                        compose(
+                            [translation(-w[0], -w[1]), scaling(sx, sy), translation(v[0], v[1])]
+                        ),
+                    ),
                 ),
-                lambda: matrix_rows(
-                    "M",
-                    "T(xvmin, yvmin).S(sx, sy).T(-xwmin, -ywmin)",
-                    compose([translation(-w[0], -w[1]), scaling(sx, sy), translation(v[0], v[1])]),
-                ),
-            ),
-            mapping_table(named, w, v, "Points mapped to the viewport"),
+                mapping_table(named, w, v, "Points mapped to the viewport"),
+            )
         ),
-        figures=shapes_figure(
-            [(v[0], v[1]), (v[2], v[1]), (v[2], v[3]), (v[0], v[3])],
-            mapped,
-            "# = mapped points, o = viewport edge, @ = both",
-            "The viewport (o) and the mapped points (#), rounded half up:",
+        plot=Plot(
+            figures=shapes_figure(
+                [(v[0], v[1]), (v[2], v[1]), (v[2], v[3]), (v[0], v[3])],
+                mapped,
+                "# = mapped points, o = viewport edge, @ = both",
+                "The viewport (o) and the mapped points (#), rounded half up:",
+            )
         ),
         data={"mapped": [list(q) for q in mapped], "scale": [sx, sy], "translate": [tx, ty]},
     )

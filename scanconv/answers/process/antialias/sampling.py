@@ -14,12 +14,15 @@ from ....algorithms.image_limits import check_levels
 from ....algorithms.polygon import check_polygon, check_rule, vertices_from_coords
 from ....core import lazy
 from ....core.checks import InputError, check_integer
+from ....core.ideal import Ideal, IdealCircle, IdealLine, Polyline
 from ....core.numeric import Number, fmt_exact, fmt_short, normalize
 from ....core.records import (
     Pixel,
+    Plot,
     Quantity,
     Solution,
     Table,
+    Walk,
     heading,
     rule,
     worked,
@@ -46,7 +49,7 @@ class _Region(NamedTuple):
     exact_total: Number | None
     derived: list[Quantity]
     notes: list[str]
-    geometry: dict[str, Any]
+    ideal: tuple[Ideal, ...]
 
 
 def _line_params(params: Sequence[Number]) -> tuple[Number, Number, Number, Number]:
@@ -130,19 +133,16 @@ def _line_region(
         values, exact = {p: float(v) for p, v in values.items()}, None
     return _Region(
         title, values, exact, strip, [f"{named}: {note[0].lower()}{note[1:]}"],
-        {"line": (x1, y1, x2, y2)},
+        (IdealLine(x1, y1, x2, y2),),
     )  # fmt: skip
 
 
 def _polygon_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
     pts, _ = check_polygon(vertices_from_coords(params))
-    geometry = {
-        "polyline": [(float(x), float(y)) for x, y in (*pts, pts[0])],
-        "polyline_name": "polygon",
-    }
+    ideal = (Polyline([(float(x), float(y)) for x, y in (*pts, pts[0])], "polygon"),)
     values, exact = _coverage(pts, method, n, rule_name)
     title = f"polygon of {len(pts)} vertices ({rule_name} rule)"
-    return _Region(title, values, exact, [], [], geometry)
+    return _Region(title, values, exact, [], [], ideal)
 
 
 def _circle_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
@@ -169,7 +169,7 @@ def _circle_region(params: Sequence[Number], method: str, n: int, rule_name: str
     else:
         values = dict(cov.ring_supersample(r, n, xc, yc))
     title = f"circle r = {r}, centre ({xc}, {yc}), one pixel wide"
-    return _Region(title, values, None, [ring], notes, {"circle": (xc, yc, r)})
+    return _Region(title, values, None, [ring], notes, (IdealCircle(xc, yc, r),))
 
 
 _REGIONS = {"polygon": _polygon_region, "circle": _circle_region}
@@ -352,11 +352,16 @@ def antialias_solution(
         ),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=(_intensity_table(order, values, levels_of),),
-        pixels=lambda: iter(order),
-        bbox=_bbox(order),
-        figures=(picture,) if picture else (),
-        geometry={**region.geometry, "shades": levels_of, "levels": L, "numbering": "none"},
+        walk=Walk(tables=(_intensity_table(order, values, levels_of),)),
+        plot=Plot(
+            pixels=lambda: iter(order),
+            bbox=_bbox(order),
+            figures=(picture,) if picture else (),
+            ideal=region.ideal,
+            shades=levels_of,
+            levels=L,
+            numbering="none",
+        ),
     )
     if shape == "line":
         sol.data = {**sol.data, "conventions": {"across": across}, "width": width}

@@ -11,13 +11,16 @@ from ....algorithms import coverage as cov
 from ....algorithms.image_limits import check_levels
 from ....algorithms.subpixel import SUBGRIDS, counts, pixel_of, sub_line, walk
 from ....core.checks import InputError, check_integer
+from ....core.ideal import IdealLine
 from ....core.numeric import Number, fmt_exact, normalize
 from ....core.records import (
     Pixel,
+    Plot,
     Quantity,
     Solution,
     Step,
     Table,
+    Walk,
     heading,
     rule,
     worked,
@@ -162,22 +165,28 @@ def subpixel_solution(
             worked("L", L, f"L = {L} \\text{{ levels}}"),
         ),
         derived=tuple(_derived(line, n, subgrid, L, per)),
-        columns=(
-            heading("k", "k"),
-            heading("p", "p_k"),
-            heading("u", f"U_k \\text{{ (sub-{maj})}}"),
-            heading("v", f"V_k \\text{{ (sub-{mnr})}}"),
-            heading("pixel", r"\text{pixel}"),
-        ),
-        extra_keys=("u", "v"),
-        steps=steps,
-        tables=(_count_table(rows, per),),
-        pixels=lambda: iter(order),
-        bbox=pixel_box(order),
         notes=_notes(subgrid, divide, maj, n),
-        figures=(art,) if art else (),
-        geometry={"line": (ix1, iy1, ix2, iy2), "shades": levels_of, "levels": L,
-                  "numbering": "none"},
-    )  # fmt: skip
+        walk=Walk(
+            columns=(
+                heading("k", "k", role="label"),
+                heading("p", "p_k"),
+                heading("u", f"U_k \\text{{ (sub-{maj})}}"),
+                heading("v", f"V_k \\text{{ (sub-{mnr})}}"),
+                heading("pixel", r"\text{pixel}"),
+            ),
+            extra_keys=("u", "v"),
+            steps=steps,
+            tables=(_count_table(rows, per),),
+        ),
+        plot=Plot(
+            pixels=lambda: iter(order),
+            bbox=pixel_box(order),
+            figures=(art,) if art else (),
+            ideal=(IdealLine(ix1, iy1, ix2, iy2),),
+            shades=levels_of,
+            levels=L,
+            numbering="none",
+        ),
+    )
     sol.data = {**sol.data, "conventions": {"subgrid": subgrid, "divide": divide}}
     return sol

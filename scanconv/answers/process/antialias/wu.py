@@ -12,14 +12,17 @@ from ....algorithms import coverage as cov
 from ....algorithms.image_limits import check_levels
 from ....algorithms.wu import ENDS, end_gaps, wu_line
 from ....core.checks import InputError
+from ....core.ideal import IdealLine
 from ....core.numeric import Number, fmt_exact, fmt_short, normalize, round_half_up
 from ....core.records import (
     MAX_GRID_CELLS,
     Column,
     Pixel,
+    Plot,
     Quantity,
     Solution,
     Step,
+    Walk,
     heading,
     rule,
     worked,
@@ -170,7 +173,7 @@ def _wu_columns(w: _WuWalk) -> tuple[Column, ...]:
     lower, upper = w.lower, w.upper
     gap = (heading("gap", r"\text{gap}", 3),) if w.ends == "coverage" else ()
     return (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading(w.maj, f"{w.maj}_k"),
         heading(w.mnr, f"{w.mnr}_k \\text{{ (exact)}}", 3),
         *gap,
@@ -249,18 +252,22 @@ def wu_solution(
             worked("L", L, f"L = {L} \\text{{ levels}}"),
         ),
         derived=_wu_derived(w, L),
-        columns=_wu_columns(w),
-        extra_keys=(w.maj, w.mnr, "pixel_a", "pixel_b", "i_a", "i_b",
-                    *(("gap",) if coverage else ()), "levels"),
-        steps=steps,
-        pixels=pixels,
-        bbox=box,
         notes=_wu_notes(w),
-        figures=(picture,) if picture else (),
-        geometry={
-            "line": (fx1, fy1, fx2, fy2),
-            **({"shades": values, "levels": L, "numbering": "none"} if values else {}),
-        },
+        walk=Walk(
+            columns=_wu_columns(w),
+            extra_keys=(w.maj, w.mnr, "pixel_a", "pixel_b", "i_a", "i_b",
+                        *(("gap",) if coverage else ()), "levels"),
+            steps=steps,
+        ),
+        plot=Plot(
+            pixels=pixels,
+            bbox=box,
+            figures=(picture,) if picture else (),
+            ideal=(IdealLine(fx1, fy1, fx2, fy2),),
+            shades=values or None,
+            levels=L if values else 2,
+            numbering="none" if values else None,
+        ),
     )  # fmt: skip
     sol.data = {**sol.data, "conventions": {"ends": ends}}
     return sol

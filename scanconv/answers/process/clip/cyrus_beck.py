@@ -9,8 +9,9 @@ from typing import Any
 
 from ....algorithms.cyrus_beck import CBResult, cyrus_beck
 from ....core.checks import InputError
+from ....core.ideal import IdealLine, Polyline
 from ....core.numeric import Number, fmt_short, normalize
-from ....core.records import Quantity, Solution, Table, heading, rule, worked
+from ....core.records import Plot, Quantity, Solution, Table, Walk, heading, rule, worked
 from .._shared import pt
 
 
@@ -124,12 +125,13 @@ def cyrus_beck_solution(
         given=given,
         derived=tuple(derived),
         notes=notes,
-        tables=(_edge_table(result, len(win)),),
-        geometry={
-            "line": (*p0, *p1),
-            "polyline": [(float(x), float(y)) for x, y in (*win, win[0])],
-            "polyline_name": "window",
-        },
+        walk=Walk(tables=(_edge_table(result, len(win)),)),
+        plot=Plot(
+            ideal=(
+                IdealLine(*p0, *p1),
+                Polyline([(float(x), float(y)) for x, y in (*win, win[0])], "window"),
+            )
+        ),
         data={
             "accepted": result.accepted,
             "clipped": None if result.segment is None else [list(p) for p in result.segment],

@@ -10,8 +10,9 @@ from typing import Any
 from ....algorithms.clipping import Rect
 from ....algorithms.midpoint_clip import Piece, subdivide, visible
 from ....core.checks import InputError
+from ....core.ideal import IdealLine
 from ....core.numeric import Number, fmt_short, normalize
-from ....core.records import Quantity, Solution, Table, heading, rule, worked
+from ....core.records import Plot, Quantity, Solution, Table, Walk, heading, rule, worked
 from .._shared import pt
 
 
@@ -36,7 +37,7 @@ def _table(pieces: list[Piece]) -> Table:
     return Table(
         "Pieces (depth first, the half nearer P1 first; codes TBRL)",
         (
-            heading("k", "k"),
+            heading("k", "k", role="label"),
             heading("piece", r"\text{piece}"),
             heading("code_a", r"\text{code}_1"),
             heading("code_b", r"\text{code}_2"),
@@ -134,7 +135,7 @@ def midpoint_clip_solution(
             "Region codes are TBRL: top, bottom, right, left, 1 where the point is beyond that "
             "edge; the window's edges are inside.",
         ),
-        tables=(_table(pieces),),
-        geometry={"line": (*p1, *p2)},
+        walk=Walk(tables=(_table(pieces),)),
+        plot=Plot(ideal=(IdealLine(*p1, *p2),)),
         data={"visible": [[list(a), list(b)] for a, b in parts], "pieces": len(pieces)},
     )

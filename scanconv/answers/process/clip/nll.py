@@ -11,7 +11,7 @@ from typing import Any
 from ....algorithms.clipping import Edge, Point, Rect
 from ....algorithms.nll import EDGE_OF, REGION_NAMES, NLLResult, nicholl_lee_nicholl
 from ....core.numeric import Number, fmt_paren, fmt_short, normalize
-from ....core.records import Quantity, Solution, Table, heading, rule, worked
+from ....core.records import Plot, Quantity, Solution, Table, Walk, heading, rule, worked
 from .._shared import check_rect, clip_figure, factor, point_quantity, pt, rect_quantity
 from ._shared import clipped_quantity, code_reason
 
@@ -43,7 +43,7 @@ def _tests_table(result: NLLResult) -> Table:
     return Table(
         "Comparisons, in the order they are made",
         (
-            heading("k", "k"),
+            heading("k", "k", role="label"),
             heading("test", r"\text{test}", role="given"),
             heading("left", r"\text{compare}"),
             heading("left_value", r"\text{value}"),
@@ -173,8 +173,8 @@ def nll_solution(
         given=(point_quantity("P1", p1), point_quantity("P2", p2), rect_quantity("window", w)),
         derived=tuple(derived),
         notes=notes,
-        tables=(_tests_table(result),),
-        figures=clip_figure(list(seg) if seg else [], w, [p1, p2], "clipped segment"),
+        walk=Walk(tables=(_tests_table(result),)),
+        plot=Plot(figures=clip_figure(list(seg) if seg else [], w, [p1, p2], "clipped segment")),
         data={
             "region1": result.region1 or "inside",
             "region2": result.region2 or None,

@@ -26,7 +26,7 @@ from ....algorithms.process_choices import LineClipMethod
 from ....core import lazy
 from ....core.checks import InputError
 from ....core.numeric import Number, fmt_paren, fmt_short, normalize
-from ....core.records import Column, Quantity, Solution, Table
+from ....core.records import Column, Plot, Quantity, Solution, Table, Walk
 from .._shared import (
     check_rect,
     clip_figure,
@@ -40,10 +40,14 @@ from .._shared import (
 from ._shared import clipped_quantity, code_reason
 
 if TYPE_CHECKING:
+    from ....algorithms import cyrus_beck as cb_algorithm
+    from ....algorithms import nll as nll_algorithm
     from . import cyrus_beck, nll
 else:
     cyrus_beck = lazy.module("scanconv.answers.process.clip.cyrus_beck")
     nll = lazy.module("scanconv.answers.process.clip.nll")
+    cb_algorithm = lazy.module("scanconv.algorithms.cyrus_beck")
+    nll_algorithm = lazy.module("scanconv.algorithms.nll")
 
 LINE_METHODS = tuple(m.value for m in LineClipMethod)
 """The line clipping methods, by name."""
@@ -176,7 +180,7 @@ def cs_parts(p1: Point, p2: Point, w: Rect, r: CSResult) -> tuple[list[Quantity]
 
 
 _LB_COLUMNS = (
-    Column("k", "k", "k"),
+    Column("k", "k", "k", role="label"),
     Column("reason", "boundary", r"\text{boundary}"),
     Column("p", "p_k", "p_k"),
     Column("q", "q_k", "q_k"),
@@ -351,15 +355,18 @@ def clip_line_parts(
 def _solution_parts(
     p1: Point, p2: Point, w: Rect, method: str
 ) -> tuple[list[Quantity], list[Table], tuple[Point, Point] | None]:
-    """Cyrus-Beck's or NLL's working (without its last line, the clipped segment), tables and
-    segment, from its own answer (the rectangle as Cyrus-Beck's convex window)."""
+    """Cyrus-Beck's or NLL's working (without its last line, the clipped segment) and tables,
+    from its own answer (the rectangle as Cyrus-Beck's convex window), and the segment from
+    its algorithm (an answer's ``data`` is output only)."""
+    ends = (normalize(p1[0]), normalize(p1[1])), (normalize(p2[0]), normalize(p2[1]))
     if method == "cyrus-beck":
         corners = [w[0], w[1], w[2], w[1], w[2], w[3], w[0], w[3]]
         sol = cyrus_beck.cyrus_beck_solution(*p1, *p2, corners)
+        square = [(normalize(corners[i]), normalize(corners[i + 1])) for i in range(0, 8, 2)]
+        segment = cb_algorithm.cyrus_beck(*ends, square).segment
     else:
         sol = nll.nll_solution(*p1, *p2, w)
-    seg = sol.data["clipped"]
-    segment = None if seg is None else ((seg[0][0], seg[0][1]), (seg[1][0], seg[1][1]))
+        segment = nll_algorithm.nicholl_lee_nicholl(*ends, w).segment
     return list(sol.derived[:-1]), list(sol.tables), segment
 
 
@@ -400,7 +407,7 @@ def clip_line_solution(
         given=(point_quantity("P1", p1), point_quantity("P2", p2), rect_quantity("window", w)),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=tuple(tables),
-        figures=clip_figure(list(seg) if seg else [], w, [p1, p2], "clipped segment"),
+        walk=Walk(tables=tuple(tables)),
+        plot=Plot(figures=clip_figure(list(seg) if seg else [], w, [p1, p2], "clipped segment")),
         data={"clipped": None if seg is None else [list(seg[0]), list(seg[1])]},
     )

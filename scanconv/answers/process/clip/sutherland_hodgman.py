@@ -27,7 +27,7 @@ from ....algorithms.window_clip import (
 )
 from ....core.checks import InputError
 from ....core.numeric import Number, fmt_short, normalize
-from ....core.records import Column, Quantity, Solution, Table
+from ....core.records import Column, Plot, Quantity, Solution, Table, Walk
 from .._shared import (
     check_points,
     check_rect,
@@ -191,8 +191,8 @@ def clip_polygon_solution(coords: Sequence[Number], window: Sequence[Number]) ->
         ),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=tuple(tables),
-        figures=clip_figure(final, w, vertices, "clipped polygon"),
+        walk=Walk(tables=tuple(tables)),
+        plot=Plot(figures=clip_figure(final, w, vertices, "clipped polygon")),
         data={
             "clipped": [list(p) for p in final],
             "degenerate_edges": [[list(a), list(b)] for a, b in overlapping_edges(final, w)]
@@ -242,7 +242,7 @@ def clip_polygon_window_solution(
         ),
         derived=(convex_q, *derived, *_result(vertices, final)),
         notes=tuple(notes),
-        tables=tuple(tables),
-        figures=window_figure(final, window, vertices, "clipped polygon"),
+        walk=Walk(tables=tuple(tables)),
+        plot=Plot(figures=window_figure(final, window, vertices, "clipped polygon")),
         data={"clipped": [list(p) for p in final], "window": [list(c) for c in window]},
     )

@@ -9,8 +9,9 @@ from typing import Any
 
 from ....algorithms.weiler_atherton import Entry, weiler_atherton
 from ....core.checks import InputError
+from ....core.ideal import Polyline
 from ....core.numeric import Number, normalize
-from ....core.records import Solution, Table, heading, rule, worked
+from ....core.records import Plot, Solution, Table, Walk, heading, rule, worked
 from .._shared import pt
 
 
@@ -97,14 +98,13 @@ def weiler_atherton_solution(subject: Sequence[Number], clip: Sequence[Number]) 
         ),
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=(
-            _list_table("Subject list (crossings inserted)", "S", r.subject),
-            _list_table("Clip list (crossings inserted)", "C", r.clip),
-            result,
+        walk=Walk(
+            tables=(
+                _list_table("Subject list (crossings inserted)", "S", r.subject),
+                _list_table("Clip list (crossings inserted)", "C", r.clip),
+                result,
+            )
         ),
-        geometry={
-            "polyline": [(float(x), float(y)) for x, y in (*s, s[0])],
-            "polyline_name": "subject",
-        },
+        plot=Plot(ideal=(Polyline([(float(x), float(y)) for x, y in (*s, s[0])], "subject"),)),
         data={"polygons": [[list(p) for p in poly] for poly in r.polygons]},
     )

@@ -10,8 +10,9 @@ from typing import Any
 from ....algorithms import inside as io
 from ....algorithms.polygon import check_polygon, vertices_from_coords
 from ....core.checks import InputError
+from ....core.ideal import Polyline
 from ....core.numeric import Number, fmt_short, normalize
-from ....core.records import PixelFigure, Solution, Table, heading, rule, worked
+from ....core.records import PixelFigure, Plot, Solution, Table, Walk, heading, rule, worked
 from .._shared import pt
 
 RULES = ("both", "even-odd", "nonzero")
@@ -176,15 +177,16 @@ def inside_solution(
         given=given,
         derived=tuple(derived),
         notes=tuple(notes),
-        tables=(
-            *(_edge_table(pts, p, i) for i, p in enumerate(tested, 1)),
-            _verdicts_table(verdicts, rule_name, n, boundary),
+        walk=Walk(
+            tables=(
+                *(_edge_table(pts, p, i) for i, p in enumerate(tested, 1)),
+                _verdicts_table(verdicts, rule_name, n, boundary),
+            )
         ),
-        figures=figures,
-        geometry={
-            "polyline": [(float(x), float(y)) for x, y in (*pts, pts[0])],
-            "polyline_name": "polygon",
-        },
+        plot=Plot(
+            figures=figures,
+            ideal=(Polyline([(float(x), float(y)) for x, y in (*pts, pts[0])], "polygon"),),
+        ),
         data={
             "vertices": [list(p) for p in pts],
             "verdicts": [

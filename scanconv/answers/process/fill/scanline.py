@@ -19,14 +19,17 @@ from ....algorithms.polygon import (
     scanline_fill,
     vertices_from_coords,
 )
+from ....core.ideal import Polyline
 from ....core.numeric import Number, fmt_paren, fmt_short, normalize, round_half_up
 from ....core.records import (
     MAX_GRID_CELLS,
     Pixel,
     PixelFigure,
+    Plot,
     Quantity,
     Solution,
     Table,
+    Walk,
     heading,
     rule,
     worked,
@@ -350,20 +353,21 @@ def polygon_solution(coords: Sequence[Number], rule_name: str = "even-odd") -> S
         given=given,
         derived=_polygon_derived(pts, edges, edge_label, kind),
         notes=tuple(notes),
-        tables=(
-            _edge_table(pts, edges, horizontal, edge_label),
-            _scan_table(pts, rule_name, edges, edge_label),
+        walk=Walk(
+            tables=(
+                _edge_table(pts, edges, horizontal, edge_label),
+                _scan_table(pts, rule_name, edges, edge_label),
+            )
         ),
-        pixels=pixels,
-        bbox=bbox,
-        figures=figures,
-        geometry={
-            "polyline": [(float(x), float(y)) for x, y in (*pts, pts[0])],
-            "outline": tuple(outline_pixels(pts)) if figures else (),
-            "outline_name": "outline pixel (Bresenham edges)",
-            "polyline_name": "polygon",
-            "numbering": "none",
-        },
+        plot=Plot(
+            pixels=pixels,
+            bbox=bbox,
+            figures=figures,
+            ideal=(Polyline([(float(x), float(y)) for x, y in (*pts, pts[0])], "polygon"),),
+            outline=tuple(outline_pixels(pts)) if figures else (),
+            outline_name="outline pixel (Bresenham edges)",
+            numbering="none",
+        ),
         data={
             "vertices": [list(p) for p in pts],
             "edge_table": _edge_data(edges, edge_label),

@@ -30,9 +30,11 @@ from ....core.records import (
     Column,
     Pixel,
     PixelFigure,
+    Plot,
     Quantity,
     Solution,
     Table,
+    Walk,
     heading,
 )
 from ....core.working import tex_text
@@ -249,7 +251,7 @@ def _trace_rows(
 def _trace_columns(span: bool, order: str) -> tuple[Column, ...]:
     nxt = "top of the stack" if order == "stack" else "front of the queue"
     return (
-        heading("k", "k"),
+        heading("k", "k", role="label"),
         heading("pixel", r"\text{taken}"),
         heading("colour", r"\text{colour}"),
         heading("test", r"\text{test}"),
@@ -346,18 +348,20 @@ def seed_fill_solution(
         given=_fill_given(grid, source, (sx, sy), connectivity, order),
         derived=_fill_derived(test, connectivity, span, order, len(filled_order), len(trace)),
         notes=tuple(notes),
-        tables=(
-            Table("Trace", _trace_columns(span, order), _trace_rows(trace, names, span, order)),
+        walk=Walk(
+            tables=(
+                Table("Trace", _trace_columns(span, order), _trace_rows(trace, names, span, order)),
+            )
         ),
-        pixels=lambda: iter(filled_order),
-        bbox=bbox,
-        marks=(),
-        figures=figures,
-        geometry={
-            "outline": figures[0].marks if figures else (),
-            "outline_name": "boundary pixel (or another colour)",
-            "numbering": "order",
-            "order_name": "fill order (0: the seed)",
-        },
+        plot=Plot(
+            pixels=lambda: iter(filled_order),
+            bbox=bbox,
+            marks=(),
+            figures=figures,
+            outline=figures[0].marks if figures else (),
+            outline_name="boundary pixel (or another colour)",
+            numbering="order",
+            order_name="fill order (0: the seed)",
+        ),
         data={"boundary": [list(p) for p in sorted(boundary_px)]},
     )

@@ -19,8 +19,11 @@ from ....core.records import (
     Figure,
     Pixel,
     PixelFigure,
+    Plot,
     Solution,
     Table,
+    Theory,
+    Walk,
     heading,
     step_getter,
 )
@@ -61,7 +64,11 @@ def listing(title: str, items: Sequence[str], head: str = "point") -> Table:
     """
     width = max(len(item) for item in items)
     rows = tuple((i, item.ljust(width)) for i, item in enumerate(items, 1))
-    return Table(title, (heading("k", r"\#"), heading("point", rf"\text{{{head}}}")), lambda: rows)
+    return Table(
+        title,
+        (heading("k", r"\#", role="label"), heading("point", rf"\text{{{head}}}")),
+        lambda: rows,
+    )
 
 
 def text_table(title: str, heads: Sequence[str], rows: Iterable[Sequence[Any]]) -> Table:
@@ -99,7 +106,10 @@ def embed(
     if tables:
         if sol.columns and sol.show_steps:
             found.append(steps_table(f"{label}: step table", sol))
-        found.extend(t._replace(title=f"{label}: {t.title}") for t in sol.tables)
+        # read, not stepped through: no stepper over a comparison, no construction points
+        found.extend(
+            t._replace(title=f"{label}: {t.title}", stepped=False, points=False) for t in sol.tables
+        )
         code = tuple(c._replace(title=f"{label}: {c.title}") for c in sol.code)
     figures: tuple[Figure, ...] = sol.figures
     if not plot and sol.pixels is not None:
@@ -159,13 +169,10 @@ def answer(
         given=(),
         derived=(),
         notes=tuple(notes),
-        tables=tuple(found),
-        pixels=None if plot is None else plot.pixels,
-        bbox=(0, 0, 0, 0) if plot is None else plot.bbox,
-        marks=() if plot is None else plot.marks,
-        marks_label=None if plot is None else plot.marks_label,
-        geometry={} if plot is None else plot.geometry,
-        figures=(*drawn, *figures),
+        walk=Walk(tables=tuple(found)),
+        plot=Plot(figures=(*drawn, *figures))
+        if plot is None
+        else plot.plot._replace(figures=(*drawn, *figures), construction=None),
+        theory=Theory(code=tuple(code)),
         data={"topic": topic},
-        code=tuple(code),
     )

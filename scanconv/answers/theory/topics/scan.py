@@ -3,6 +3,7 @@ two kinds of technique and the raster display."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 from ....core import lazy
@@ -107,13 +108,14 @@ _STAGES = (
 )
 
 
-def _pair(p: list[Any]) -> str:
+def _pair(p: Sequence[Any]) -> str:
     return "(" + ", ".join(fmt_short(v) for v in p) + ")"
 
 
 def process() -> Solution:
-    sol = pipeline.pipeline_line_solution(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10))
-    clipped, device, rounded = sol.data["clipped"], sol.data["device"], sol.data["rounded"]
+    line = pipeline.pipeline_line(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10))
+    sol, clipped, device, rounded = line
+    assert clipped is not None and device is not None and rounded is not None  # accepted
     count = sum(1 for _ in sol.pixels()) if sol.pixels else 0
     here = (
         "line (-5, 0) to (15, 10), world coordinates",

@@ -96,7 +96,7 @@ def font_storage() -> Solution:
         examples=(
             embed(
                 "the 5 x 7 'L' as bytes (scanconv char bitmap L)",
-                Solution(**{**characters.bitmap_solution("L").fields(), "show_steps": False}),
+                _steps_hidden(characters.bitmap_solution("L")),
                 plot=False,
             ),
             embed(
@@ -125,3 +125,8 @@ TOPICS = (
     ),
 )
 """Clipping against a convex window, and a font's bytes."""
+
+
+def _steps_hidden(sol: Solution) -> Solution:
+    """``sol`` with its step table left out of the text formats (its tables show the rows)."""
+    return Solution(**{**sol.fields(), "walk": sol.walk._replace(shown=False)})
