@@ -29,7 +29,7 @@ import inspect
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, ParamSpec
 
-from .core import lazy
+from .core import declare, lazy
 from .core.checks import InputError
 from .core.records import Solution, step_getter
 from .render import Format, Notice, Options, render
@@ -162,8 +162,12 @@ def answers(fn: Callable[P, Solution]) -> Callable[P, Answer]:
         return Answer.of(solution, recipe)
 
     # help() reads the signature through __wrapped__: the wrapped function (reached only
-    # through this one) is annotated as the API returns (no signature built at import time)
-    fn.__annotations__ = ask.__annotations__ = {**fn.__annotations__, "return": "Answer"}
+    # through this one) is annotated as the API returns, its declarations left out
+    # (scanconv.core.declare: kept for the command line and the questions; no signature is
+    # built at import time)
+    setattr(fn, declare.DECLARATION, fn.__annotations__)
+    shown = {name: declare.plain(a) for name, a in fn.__annotations__.items()}
+    fn.__annotations__ = ask.__annotations__ = {**shown, "return": "Answer"}
     return ask
 
 

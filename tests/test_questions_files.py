@@ -11,10 +11,14 @@ import stat
 import subprocess
 import sys
 from pathlib import Path
+from typing import Annotated
 
 import pytest
 
+from scanconv.algorithms.circle_choices import Loop
+from scanconv.core.declare import Opt
 from scanconv.questions.files import QuestionError, read_questions, split_lines
+from scanconv.questions.grammar import Param
 
 from .helpers import assert_refused, run
 
@@ -331,20 +335,58 @@ def test_the_grammar_is_the_command_lines_declarations() -> None:
     from scanconv.questions.grammar_table import NOT_QUESTIONS, SHARED, SPECS
 
     specs, others = declared()
-    assert SPECS == specs, (
-        "run: python -m scanconv.cli.grammar > scanconv/questions/grammar_table.py"
-    )
+    assert SPECS == specs, "the command line and the question grammar differ"
     assert NOT_QUESTIONS == others and SHARED == CLI_SHARED
     assert len(SPECS) >= 33
 
 
+def test_the_grammar_is_generated_from_the_librarys_declarations() -> None:
+    from scanconv.questions import grammar
+    from scanconv.questions.declared import COMMANDS, NOT_QUESTIONS, OUTPUTS
+    from scanconv.questions.grammar_table import NOT_QUESTIONS as TABLE_OTHERS
+    from scanconv.questions.grammar_table import SHARED, SPECS
+
+    assert grammar.specs() == SPECS, (
+        "run: python -m scanconv.questions.grammar > scanconv/questions/grammar_table.py"
+    )
+    assert (TABLE_OTHERS, SHARED) == (NOT_QUESTIONS, OUTPUTS)
+    assert COMMANDS.keys() <= SPECS.keys()
+
+
+def test_a_declaration_is_the_grammar_the_command_line_and_the_answer() -> None:
+    """A default, a flag's spelling and a choice changed on the library function change the
+    question grammar and the typer command read from it (not a copy of either)."""
+    from scanconv.cli.declared import typer_parameter
+    from scanconv.core.declare import declared
+    from scanconv.questions.grammar import param_of
+
+    def spin(
+        turns: Annotated[int, Opt("--turns", "-t", help="How many.")] = 3,
+        loop: Annotated[Loop | None, Opt("--loop", help="The loop.")] = None,
+        fast: bool = False,
+    ) -> None:
+        """Not a command: a declaration to read."""
+
+    turns, loop = declared(spin)  # fast has no declaration: the library's alone
+    assert param_of(turns) == Param(
+        "turns", ("--turns", "-t"), "integer", default=3, help="How many."
+    )
+    assert param_of(loop).choices == ("strict", "inclusive") and param_of(loop).default is None
+    option = typer_parameter(turns)
+    assert option.default == 3 and option.annotation.__metadata__[0].param_decls == ("-t",)
+
+
 def test_every_command_of_the_grammar_has_an_answer() -> None:
     from scanconv.questions.commands import BODIES
+    from scanconv.questions.declared import BY_FUNCTION
     from scanconv.questions.grammar_table import SPECS
 
-    assert {spec.function for spec in SPECS.values()} == set(BODIES)
+    assert {spec.function for spec in SPECS.values()} == set(BODIES) | set(BY_FUNCTION)
+    assert not set(BODIES) & set(BY_FUNCTION)  # a declared command's body is its function
     for spec in SPECS.values():
-        inspect.signature(BODIES[spec.function]).bind(**dict.fromkeys(spec.own))  # takes them all
+        declared = BY_FUNCTION.get(spec.function)
+        body = declared.answerer() if declared is not None else BODIES[spec.function]
+        inspect.signature(body).bind(**dict.fromkeys(spec.own))  # takes them all
 
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop

@@ -3,10 +3,14 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Annotated
 
+from ..algorithms.choices import WuEnds
+from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid
 from ..core import lazy
+from ..core.declare import Arg, Opt
 from ..display import answers
+from .params import CENTER, VERTICES, WU_ENDS
 from .values import (
     NumberLike,
     PointLike,
@@ -21,8 +25,6 @@ from .values import (
 )
 
 if TYPE_CHECKING:
-    from ..algorithms.choices import WuEnds
-    from ..algorithms.process_choices import AAMethod, Across, Divide, FillRule, Order, Subgrid
     from ..answers.process.antialias import sampling as answers_antialias
     from ..answers.process.fill import scanline as answers_polygon
     from ..answers.process.fill import seed as answers_fill
@@ -43,8 +45,26 @@ else:  # each command's answer module, loaded by its first call
     answers_polygon = lazy.module("scanconv.answers.process.fill.scanline")
 
 
+RULE = Opt("--rule", help="Fill rule: even-odd (alternate) or nonzero winding.")
+LEVELS = Opt(
+    "--levels", "-L", help="Intensity levels L (level = round(I (L - 1))).", kind="integer"
+)
+AA_SAMPLES = Opt(
+    "--samples", "-n", help="Supersampling: N x N samples per pixel (1-16).", kind="integer"
+)
+AA_METHOD = Opt(
+    "--method",
+    "-m",
+    help="area: exact covered area; supersample: N x N samples; wu: Wu's line; subpixel: "
+    "Hearn & Baker's Bresenham on sub-pixels (wu and subpixel: lines only).",
+)
+
+
 @answers
-def polygon(vertices: PointsLike, rule: FillRule | FillRuleName = "even-odd") -> Solution:
+def polygon(
+    vertices: Annotated[PointsLike, VERTICES],
+    rule: Annotated[FillRule | FillRuleName, RULE] = "even-odd",
+) -> Solution:
     """The scan-line fill of a polygon (``scanconv polygon``): the edge table, the active edge table
     per scan line, the spans and the pixels.
 
@@ -92,13 +112,38 @@ def polygon(vertices: PointsLike, rule: FillRule | FillRuleName = "even-odd") ->
 @answers
 def fill(
     method: FillMethodName,
-    seed: PointLike,
+    seed: Annotated[
+        PointLike, Opt("--seed", "-s", metavar="X Y", help="The seed pixel.", kind="integer")
+    ],
     *,
-    vertices: PointsLike | None = None,
-    rows: str | Sequence[str] | None = None,
-    connectivity: NumberLike = 4,
-    order: Order | OrderName = "stack",
-    span: bool = False,
+    vertices: Annotated[
+        PointsLike | None,
+        Arg(
+            "A polygon whose Bresenham outline is the boundary (or give --rows).",
+            "[X1 Y1 X2 Y2 X3 Y3 ...]",
+        ),
+    ] = None,
+    rows: Annotated[
+        str | Sequence[str] | None,
+        Opt(
+            "--rows",
+            "-r",
+            metavar="ROWS",
+            help="The grid as text rows, top row first, separated by '/': '#' boundary, '.' "
+            "empty, '*' fill colour, other letters other colours; the bottom row is y = 0.",
+            show_default=False,
+        ),
+    ] = None,
+    connectivity: Annotated[
+        NumberLike, Opt("--connectivity", "-k", help="Neighbours: 4 or 8.", kind="integer")
+    ] = 4,
+    order: Annotated[
+        Order | OrderName,
+        Opt("--order", help="stack: last in first out; queue: first in first out."),
+    ] = "stack",
+    span: Annotated[
+        bool, Opt("--span", help="The span (scan-line seed) fill: a whole run per seed.")
+    ] = False,
 ) -> Solution:
     """A seed fill, step by step (``scanconv fill boundary``, ``scanconv fill flood``).
 
@@ -149,18 +194,58 @@ def fill(
 
 @answers
 def antialias_line(
-    x1: NumberLike,
-    y1: NumberLike,
-    x2: NumberLike,
-    y2: NumberLike,
-    method: AAMethod | AAMethodName = "area",
-    samples: NumberLike | None = None,
-    levels: NumberLike = 8,
-    ends: WuEnds | WuEndsName | None = None,
-    width: NumberLike = 1,
-    across: Across | AcrossName = "minor",
-    subgrid: Subgrid | SubgridName | None = None,
-    divide: Divide | DivideName | None = None,
+    x1: Annotated[NumberLike, Arg()],
+    y1: Annotated[NumberLike, Arg()],
+    x2: Annotated[NumberLike, Arg()],
+    y2: Annotated[NumberLike, Arg()],
+    method: Annotated[AAMethod | AAMethodName, AA_METHOD] = "area",
+    samples: Annotated[
+        NumberLike | None,
+        Opt(
+            "--samples",
+            "-n",
+            help="N x N samples (supersample, 1-16, default 4) or sub-pixels (subpixel, "
+            "default 3) per pixel.",
+            kind="integer",
+            show_default=False,
+        ),
+    ] = None,
+    levels: Annotated[NumberLike, LEVELS] = 8,
+    ends: Annotated[WuEnds | WuEndsName | None, WU_ENDS] = None,
+    width: Annotated[
+        NumberLike,
+        Opt(
+            "--width",
+            "-w",
+            help="area, supersample: the line's width w (default 1 pixel).",
+            metavar="W",
+        ),
+    ] = 1,
+    across: Annotated[
+        Across | AcrossName,
+        Opt(
+            "--across",
+            help="area, supersample: w measured along the minor axis (minor, the default: a "
+            "parallelogram) or perpendicular to the line (a rectangle).",
+        ),
+    ] = "minor",
+    subgrid: Annotated[
+        Subgrid | SubgridName | None,
+        Opt(
+            "--subgrid",
+            help="subpixel: the sub-pixel line from P1's first sub-pixel over every sub-column "
+            "of the end pixels (span, the default) or between the end pixels' centre "
+            "sub-pixels (centre).",
+        ),
+    ] = None,
+    divide: Annotated[
+        Divide | DivideName | None,
+        Opt(
+            "--divide",
+            help="subpixel: intensity c / n (n, the default: n levels above zero) or c / n^2 "
+            "(n2: the fraction of the pixel's sub-pixels).",
+        ),
+    ] = None,
 ) -> Solution:
     """An anti-aliased line (``scanconv antialias line``).
 
@@ -225,11 +310,11 @@ def antialias_line(
 
 @answers
 def antialias_circle(
-    r: NumberLike,
-    center: PointLike = (0, 0),
-    method: AAMethod | AAMethodName = "area",
-    samples: NumberLike = 4,
-    levels: NumberLike = 8,
+    r: Annotated[NumberLike, Arg()],
+    center: Annotated[PointLike, CENTER] = (0, 0),
+    method: Annotated[AAMethod | AAMethodName, AA_METHOD] = "area",
+    samples: Annotated[NumberLike, AA_SAMPLES] = 4,
+    levels: Annotated[NumberLike, LEVELS] = 8,
 ) -> Solution:
     """An anti-aliased circle one pixel wide (``scanconv antialias circle``).
 
@@ -272,11 +357,11 @@ def antialias_circle(
 
 @answers
 def antialias_polygon(
-    vertices: PointsLike,
-    method: AAMethod | AAMethodName = "area",
-    samples: NumberLike = 4,
-    levels: NumberLike = 8,
-    rule: FillRule | FillRuleName = "even-odd",
+    vertices: Annotated[PointsLike, VERTICES],
+    method: Annotated[AAMethod | AAMethodName, AA_METHOD] = "area",
+    samples: Annotated[NumberLike, AA_SAMPLES] = 4,
+    levels: Annotated[NumberLike, LEVELS] = 8,
+    rule: Annotated[FillRule | FillRuleName, RULE] = "even-odd",
 ) -> Solution:
     """An anti-aliased polygon (``scanconv antialias polygon``): exact covered areas, or the
     fraction of samples inside.

@@ -5,10 +5,11 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Annotated, Literal
 
 from ..core import lazy
 from ..core.checks import InputError
+from ..core.declare import Opt
 from ..display import answers
 from .values import NumberLike, PointsLike, _choice, _flat, _number, _optional, _whole
 
@@ -39,6 +40,21 @@ MatrixLike = str | Sequence[Sequence[NumberLike]]
 """An image or a dither matrix: rows of numbers, or text with the rows separated by ``;`` or
 ``/`` and the values by spaces or commas (``"10 200; 60 90"``); with ``;`` a value may be a
 fraction (``"1/2 0; 1 1"``)."""
+
+IMAGE = Opt(
+    "--image",
+    "-i",
+    metavar="ROWS",
+    help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: "
+    "'10 200; 60 90'.",
+    kind="text",
+)
+TOP = Opt("--top", help="The top of the scale: values run 0..TOP, an on pixel is TOP.")
+COMPARE = Opt(
+    "--compare",
+    help="A pixel is on when its value is > or >= the threshold.",
+    choices=(">", ">="),
+)
 
 
 def _matrix(value: MatrixLike, param: str) -> list[list[Number]]:
@@ -71,11 +87,13 @@ def _matrix(value: MatrixLike, param: str) -> list[list[Number]]:
 
 @answers
 def dither_threshold(
-    image: MatrixLike,
-    top: NumberLike = 255,
+    image: Annotated[MatrixLike, IMAGE],
+    top: Annotated[NumberLike, TOP] = 255,
     *,
-    at: NumberLike | None = None,
-    compare: CompareName = ">=",
+    at: Annotated[
+        NumberLike | None, Opt("--at", "-t", help="The threshold T (default TOP / 2).")
+    ] = None,
+    compare: Annotated[CompareName, COMPARE] = ">=",
 ) -> Solution:
     """Thresholding (``scanconv dither threshold``): each pixel on when its value passes one
     threshold.
@@ -248,14 +266,54 @@ def dither_lookup(
 
 @answers
 def dither_diffusion(
-    image: MatrixLike,
-    top: NumberLike = 255,
+    image: Annotated[MatrixLike, IMAGE],
+    top: Annotated[NumberLike, TOP] = 255,
     *,
-    kernel: KernelName = "floyd-steinberg",
-    order: ScanOrderName = "raster",
-    arithmetic: ArithmeticName = "exact",
-    carry: CarryName = "kept",
-    compare: CompareName = ">=",
+    kernel: Annotated[
+        KernelName,
+        Opt(
+            "--kernel",
+            help="floyd-steinberg (7, 3, 5, 1)/16, simple (3, 3, 2)/8, jarvis-judice-ninke /48, "
+            "stucki /42, burkes /32, sierra /32, two-row-sierra /16, sierra-lite /4, or "
+            "one-dimensional (all to the next pixel).",
+            choices=(
+                "floyd-steinberg",
+                "simple",
+                "jarvis-judice-ninke",
+                "stucki",
+                "burkes",
+                "sierra",
+                "two-row-sierra",
+                "sierra-lite",
+                "one-dimensional",
+            ),
+        ),
+    ] = "floyd-steinberg",
+    order: Annotated[
+        ScanOrderName,
+        Opt(
+            "--order",
+            help="raster: every row left to right; serpentine: alternate rows.",
+            choices=("raster", "serpentine"),
+        ),
+    ] = "raster",
+    arithmetic: Annotated[
+        ArithmeticName,
+        Opt(
+            "--arithmetic",
+            help="Error shares kept exact or truncated to integers.",
+            choices=("exact", "integer"),
+        ),
+    ] = "exact",
+    carry: Annotated[
+        CarryName,
+        Opt(
+            "--carry",
+            help="Negative carried values kept, or clamped at 0.",
+            choices=("kept", "clamped"),
+        ),
+    ] = "kept",
+    compare: Annotated[CompareName, COMPARE] = ">=",
 ) -> Solution:
     """Error diffusion to two levels, 0 and ``top`` (``scanconv dither floyd-steinberg``).
 

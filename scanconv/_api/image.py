@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Annotated
 
 from ..core import lazy
+from ..core.declare import Arg, Opt
 from ..display import answers
+from .params import BITS, SIZE
 from .values import (
     FormulaLike,
     NumberLike,
@@ -43,14 +45,24 @@ else:  # each command's answer module, loaded by its first call
 
 @answers
 def storage(
-    m: NumberLike,
-    n: NumberLike,
+    m: Annotated[
+        NumberLike, Arg("M, the first size (1024 in 1024 x 768; 1024x768 works too).", "M")
+    ],
+    n: Annotated[NumberLike, Arg("N, the second size (768 in 1024 x 768).", "N")],
     *,
-    levels: NumberLike | None = None,
-    bits: NumberLike | None = None,
-    binary: bool = False,
-    color: ColorDepthName | None = None,
-    frames: NumberLike = 1,
+    levels: Annotated[
+        NumberLike | None, Opt("--levels", "-L", help="Gray levels L (k = ceil(log2 L)).")
+    ] = None,
+    bits: Annotated[NumberLike | None, BITS] = None,
+    binary: Annotated[bool, Opt("--binary", help="Binary image: 1 bit per pixel.")] = False,
+    color: Annotated[
+        ColorDepthName | None,
+        Opt("--color", help="Colour image: rgb24 = 24 bits.", choices=("rgb24",)),
+    ] = None,
+    frames: Annotated[
+        NumberLike,
+        Opt("--frames", help="Number of frames F (default 1).", show_default=False),
+    ] = 1,
 ) -> Solution:
     """The storage an M x N image (or F frames of it) needs: ``M x N x k x F`` bits
     (``scanconv storage``).
@@ -144,13 +156,36 @@ def quantize(
 
 @answers
 def sample(
-    expr: str,
-    size: str | int | tuple[int, int],
-    levels: NumberLike,
+    expr: Annotated[str, Arg("f(x, y), e.g. 'x + y' or 'sin(x)*cos(y)'.", "EXPR")],
+    size: Annotated[str | int | tuple[int, int], SIZE],
+    levels: Annotated[NumberLike, Opt("--levels", "-L", help="Gray levels L.")],
     *,
-    domain: tuple[FormulaLike, FormulaLike, FormulaLike, FormulaLike] | None = None,
-    value_range: tuple[FormulaLike, FormulaLike] | None = None,
-    origin: OriginName = "bottom-left",
+    domain: Annotated[
+        tuple[FormulaLike, FormulaLike, FormulaLike, FormulaLike] | None,
+        Opt(
+            "--domain",
+            metavar="X0 X1 Y0 Y1",
+            help="Sample x from X0 to X1 and y from Y0 to Y1 (default: 0..N-1, 0..M-1).",
+            kind="text",
+        ),
+    ] = None,
+    value_range: Annotated[
+        tuple[FormulaLike, FormulaLike] | None,
+        Opt(
+            "--range",
+            metavar="LO HI",
+            help="Range of f quantized onto the levels (default: the samples' min and max).",
+            kind="text",
+        ),
+    ] = None,
+    origin: Annotated[
+        OriginName,
+        Opt(
+            "--origin",
+            help="Row 0 is the top: bottom-left: y up (row 0 is y1); top-left: y down.",
+            choices=("bottom-left", "top-left"),
+        ),
+    ] = "bottom-left",
 ) -> Solution:
     """Sample ``f(x, y) = expr`` on an M x N grid and quantize the samples to L levels
     (``scanconv sample``).
@@ -203,7 +238,12 @@ def sample(
 
 
 @answers
-def ramp(size: str | int | tuple[int, int] = "8", levels: NumberLike = 8) -> Solution:
+def ramp(
+    size: Annotated[str | int | tuple[int, int], SIZE] = "8",
+    levels: Annotated[
+        NumberLike, Opt("--levels", "-L", help="Gray levels L (default 8).", show_default=False)
+    ] = 8,
+) -> Solution:
     """The notes' grayscale ramp: ``f(i, j) = i + j`` folded back at L - 1
     (``scanconv image ramp``).
 

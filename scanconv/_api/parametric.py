@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 from ..core import lazy
+from ..core.declare import Arg, Opt
 from ..display import answers
+from .params import SAMPLES, T_RANGE
 from .values import NumberLike, PointLike, TRangeLike, _bounds, _number, _numbers, _pair, _whole
 
 if TYPE_CHECKING:
@@ -13,6 +15,9 @@ if TYPE_CHECKING:
     from ..core.records import Solution
 else:  # the command's answer module, loaded by its first call
     answers_parametric = lazy.module("scanconv.answers.primitives.parametric")
+
+
+CURVE_CENTER = Opt("--center", metavar="X Y", help="Centre (xc, yc).")
 
 
 @answers
@@ -64,12 +69,12 @@ def parametric_circle(
 
 @answers
 def parametric_ellipse(
-    center: PointLike = (0, 0),
-    a: NumberLike = 2,
-    b: NumberLike = 1,
+    center: Annotated[PointLike, CURVE_CENTER] = (0, 0),
+    a: Annotated[NumberLike, Opt("--a", help="Semi-axis a (along x).")] = 2,
+    b: Annotated[NumberLike, Opt("--b", help="Semi-axis b (along y).")] = 1,
     *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
+    t_range: Annotated[TRangeLike | None, T_RANGE] = None,
+    samples: Annotated[NumberLike | None, SAMPLES] = None,
 ) -> Solution:
     """The parametric ellipse ``x = xc + a cos t``, ``y = yc + b sin t``, sampled at even steps of t
     (``scanconv parametric ellipse``).
@@ -105,11 +110,11 @@ def parametric_ellipse(
 
 @answers
 def parametric_parabola(
-    vertex: PointLike = (0, 0),
-    a: NumberLike = 1,
+    vertex: Annotated[PointLike, Opt("--vertex", metavar="H K", help="Vertex (h, k).")] = (0, 0),
+    a: Annotated[NumberLike, Opt("--a", help="Coefficient a in y = k + a t^2.")] = 1,
     *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
+    t_range: Annotated[TRangeLike | None, T_RANGE] = None,
+    samples: Annotated[NumberLike | None, SAMPLES] = None,
 ) -> Solution:
     """The parametric parabola ``x = h + t``, ``y = k + a t²``, sampled at even steps of t
     (``scanconv parametric parabola``).
@@ -146,13 +151,13 @@ def parametric_parabola(
 
 @answers
 def parametric_line(
-    x0: NumberLike,
-    y0: NumberLike,
-    x1: NumberLike,
-    y1: NumberLike,
+    x0: Annotated[NumberLike, Arg("x of the start point P0.", "X0")],
+    y0: Annotated[NumberLike, Arg("y of the start point P0.", "Y0")],
+    x1: Annotated[NumberLike, Arg("x of the end point P1.", "X1")],
+    y1: Annotated[NumberLike, Arg("y of the end point P1.", "Y1")],
     *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
+    t_range: Annotated[TRangeLike | None, T_RANGE] = None,
+    samples: Annotated[NumberLike | None, SAMPLES] = None,
 ) -> Solution:
     """The parametric line ``x = x0 + t (x1 - x0)``, ``y = y0 + t (y1 - y0)``, 0 <= t <= 1
     (``scanconv parametric line``).
@@ -187,11 +192,11 @@ def parametric_line(
 
 @answers
 def parametric_custom(
-    x: str,
-    y: str,
+    x: Annotated[str, Opt("--x", help="x(t), e.g. '3*cos(t)'.", show_default=False)],
+    y: Annotated[str, Opt("--y", help="y(t), e.g. '2*sin(t)'.", show_default=False)],
     *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
+    t_range: Annotated[TRangeLike | None, T_RANGE] = None,
+    samples: Annotated[NumberLike | None, SAMPLES] = None,
 ) -> Solution:
     """Your own curve ``x = x(t)``, ``y = y(t)`` (``scanconv parametric custom``).
 

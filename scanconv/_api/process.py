@@ -3,16 +3,18 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Annotated
 
 from ..algorithms.choices import LineAlgorithm
+from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
 from ..core import lazy
 from ..core.checks import InputError
+from ..core.declare import Arg, Opt
 from ..display import answers
+from .params import ENDS, NORMALS, VERTICES, VIEWPORT, WINDOW
 from .values import NumberLike, PointsLike, _choice, _flat, _numbers, _rect
 
 if TYPE_CHECKING:
-    from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
     from ..answers.process import pipeline as answers_pipeline
     from ..answers.process import transform as answers_transform
     from ..answers.process import viewport as answers_viewport
@@ -91,7 +93,12 @@ def transform(
 
 @answers
 def viewport(
-    window: Sequence[NumberLike], viewport: Sequence[NumberLike], points: PointsLike = ()
+    window: Annotated[Sequence[NumberLike], WINDOW],
+    viewport: Annotated[Sequence[NumberLike], VIEWPORT],
+    points: Annotated[
+        PointsLike,
+        Arg("World points to map (default: the window's four corners).", "[X1 Y1 ...]"),
+    ] = (),
 ) -> Solution:
     """The window-to-viewport mapping of points (``scanconv viewport``).
 
@@ -123,17 +130,34 @@ def viewport(
 
 @answers
 def clip_line(
-    x1: NumberLike,
-    y1: NumberLike,
-    x2: NumberLike,
-    y2: NumberLike,
-    window: Sequence[NumberLike],
-    method: LineClipMethod | LineClipMethodName = "cohen-sutherland",
+    x1: Annotated[NumberLike, Arg()],
+    y1: Annotated[NumberLike, Arg()],
+    x2: Annotated[NumberLike, Arg()],
+    y2: Annotated[NumberLike, Arg()],
+    window: Annotated[Sequence[NumberLike], WINDOW],
+    method: Annotated[
+        LineClipMethod | LineClipMethodName, Opt("--method", "-m", help="Line clipping method.")
+    ] = "cohen-sutherland",
     *,
-    normals: NormalsName | None = None,
-    ends: ClipEndsName | None = None,
-    midpoint: MidpointName | None = None,
-    stop: MidpointStopName | None = None,
+    normals: Annotated[NormalsName | None, NORMALS] = None,
+    ends: Annotated[ClipEndsName | None, ENDS] = None,
+    midpoint: Annotated[
+        MidpointName | None,
+        Opt(
+            "--midpoint",
+            help="midpoint-subdivision: each midpoint rounded (default), floored or exact.",
+            choices=("rounded", "floor", "exact"),
+        ),
+    ] = None,
+    stop: Annotated[
+        MidpointStopName | None,
+        Opt(
+            "--stop",
+            help="midpoint-subdivision: split until one unit long (length, default), or also "
+            "stop where a midpoint lands on the window's edge (edge).",
+            choices=("length", "edge"),
+        ),
+    ] = None,
 ) -> Solution:
     """A segment clipped against a rectangular window (``scanconv clip line``).
 
@@ -333,14 +357,18 @@ def clip_polygon(
 
 @answers
 def pipeline_line(
-    x1: NumberLike,
-    y1: NumberLike,
-    x2: NumberLike,
-    y2: NumberLike,
-    window: Sequence[NumberLike],
-    viewport: Sequence[NumberLike],
-    algo: LineAlgorithm | LineAlgorithmName = LineAlgorithm.bresenham,
-    clip: LineClipMethod | LineClipMethodName = "cohen-sutherland",
+    x1: Annotated[NumberLike, Arg()],
+    y1: Annotated[NumberLike, Arg()],
+    x2: Annotated[NumberLike, Arg()],
+    y2: Annotated[NumberLike, Arg()],
+    window: Annotated[Sequence[NumberLike], WINDOW],
+    viewport: Annotated[Sequence[NumberLike], VIEWPORT],
+    algo: Annotated[
+        LineAlgorithm | LineAlgorithmName, Opt("--algo", "-a", help="Line algorithm.")
+    ] = LineAlgorithm.bresenham,
+    clip: Annotated[
+        LineClipMethod | LineClipMethodName, Opt("--clip", help="Line clipping method.")
+    ] = "cohen-sutherland",
 ) -> Solution:
     """A world-coordinate line through the process: clipped, mapped to the viewport, rounded and
     scan converted (``scanconv pipeline line``).
@@ -388,11 +416,15 @@ def pipeline_line(
 
 @answers
 def pipeline_polygon(
-    vertices: PointsLike,
-    window: Sequence[NumberLike],
-    viewport: Sequence[NumberLike],
-    fill: bool = False,
-    rule: FillRule | FillRuleName = "even-odd",
+    vertices: Annotated[PointsLike, VERTICES],
+    window: Annotated[Sequence[NumberLike], WINDOW],
+    viewport: Annotated[Sequence[NumberLike], VIEWPORT],
+    fill: Annotated[
+        bool, Opt("--fill/--outline", help="Scan-line fill the polygon, or draw its edges.")
+    ] = False,
+    rule: Annotated[FillRule | FillRuleName, Opt("--rule", help="Fill rule (with --fill).")] = (
+        "even-odd"
+    ),
 ) -> Solution:
     """A world-coordinate polygon through the process: clipped by Sutherland-Hodgman, mapped to the
     viewport, then outlined (Bresenham) or scan-line filled (``scanconv pipeline polygon``).

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Annotated
 
 from ..algorithms.choices import (
     Convention,
@@ -15,11 +15,29 @@ from ..algorithms.choices import (
     WuEnds,
 )
 from ..core import lazy
+from ..core.declare import Arg, Opt
 from ..display import answers
+from .params import (
+    CENTER,
+    CONVENTION,
+    DERIVE,
+    LAYOUT,
+    LOOP,
+    PSEUDOCODE,
+    ROUNDING,
+    START,
+    THEORY,
+    TIE,
+    WU_ENDS,
+    X1,
+    X2,
+    Y1,
+    Y2,
+)
 from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _pair
 
 if TYPE_CHECKING:
-    from ..algorithms.circle_choices import P0, CircleMethod, EllipseP0, Loop, Update, XStep
+    from ..algorithms import circle_choices
     from ..answers import compare as answers_compare
     from ..answers.primitives import circle as answers_circle
     from ..answers.primitives import ellipse as answers_ellipse
@@ -41,7 +59,9 @@ if TYPE_CHECKING:
         XStepName,
     )
     from ..core.records import Solution
-else:  # each command's answer module, loaded by its first call
+else:  # each command's answer module, loaded by its first call; the circle's choices when
+    # its declaration is read (a line's run needs none of them)
+    circle_choices = lazy.module("scanconv.algorithms.circle_choices")
     answers_circle = lazy.module("scanconv.answers.primitives.circle")
     answers_compare = lazy.module("scanconv.answers.compare")
     answers_ellipse = lazy.module("scanconv.answers.primitives.ellipse")
@@ -50,21 +70,29 @@ else:  # each command's answer module, loaded by its first call
 
 @answers
 def line(
-    x1: NumberLike,
-    y1: NumberLike,
-    x2: NumberLike,
-    y2: NumberLike,
-    algo: LineAlgorithm | LineAlgorithmName = "bresenham",
+    x1: Annotated[NumberLike, X1],
+    y1: Annotated[NumberLike, Y1],
+    x2: Annotated[NumberLike, X2],
+    y2: Annotated[NumberLike, Y2],
+    algo: Annotated[
+        LineAlgorithm | LineAlgorithmName, Opt("--algo", "-a", help="Line algorithm.")
+    ] = "bresenham",
     *,
-    rounding: Rounding | RoundingName | None = None,
-    tie: Tie | TieName | None = None,
-    start: Start | StartName | None = None,
-    scale: LineScale | LineScaleName | None = None,
-    ends: WuEnds | WuEndsName | None = None,
-    convention: Convention | ConventionName | None = None,
-    layout: Layout | LayoutName = "notes",
-    derive: bool = False,
-    pseudocode: bool = False,
+    rounding: Annotated[Rounding | RoundingName | None, ROUNDING] = None,
+    tie: Annotated[Tie | TieName | None, TIE] = None,
+    start: Annotated[Start | StartName | None, START] = None,
+    scale: Annotated[
+        LineScale | LineScaleName | None,
+        Opt(
+            "--scale",
+            help="midpoint: d = 2F(M), integers (integer, the default) or d = F(M), halves (half).",
+        ),
+    ] = None,
+    ends: Annotated[WuEnds | WuEndsName | None, WU_ENDS] = None,
+    convention: Annotated[Convention | ConventionName | None, CONVENTION] = None,
+    layout: Annotated[Layout | LayoutName, LAYOUT] = "notes",
+    derive: Annotated[bool, DERIVE] = False,
+    pseudocode: Annotated[bool, PSEUDOCODE] = False,
 ) -> Solution:
     """The line from ``(x1, y1)`` to ``(x2, y2)`` by ``algo``, worked as in the notes
     (``scanconv line``).
@@ -160,20 +188,42 @@ def line(
 
 @answers
 def circle(
-    r: NumberLike,
-    center: PointLike = (0, 0),
-    method: CircleMethod | CircleMethodName = "midpoint",
-    rounding: Rounding | RoundingName | None = None,
+    r: Annotated[NumberLike, Arg("The radius r (a whole number).", "R")],
+    center: Annotated[PointLike, CENTER] = (0, 0),
+    method: Annotated[
+        circle_choices.CircleMethod | CircleMethodName,
+        Opt(
+            "--method",
+            "-m",
+            help="Circle method: midpoint (the notes' Topic 9 'Bresenham', p0 = 1 - r), "
+            "bresenham (d0 = 3 - 2r), general (the notes' p0 = 0 at the point), polynomial "
+            "(square root), trig, symmetric-dda.",
+        ),
+    ] = "midpoint",
+    rounding: Annotated[Rounding | RoundingName | None, ROUNDING] = None,
     *,
-    tie: Tie | TieName | None = None,
-    p0: P0 | P0Name | None = None,
-    loop: Loop | LoopName | None = None,
-    update: Update | UpdateName | None = None,
-    xstep: XStep | XStepName | None = None,
-    convention: Convention | ConventionName | None = None,
-    layout: Layout | LayoutName = "notes",
-    derive: bool = False,
-    pseudocode: bool = False,
+    tie: Annotated[Tie | TieName | None, TIE] = None,
+    p0: Annotated[
+        circle_choices.P0 | P0Name | None,
+        Opt("--p0", help="midpoint: p0 printed as 1-r (integers) or 5/4-r."),
+    ] = None,
+    loop: Annotated[circle_choices.Loop | LoopName | None, LOOP] = None,
+    update: Annotated[
+        circle_choices.Update | UpdateName | None,
+        Opt("--update", help="midpoint: increments written with the new x or the old x."),
+    ] = None,
+    xstep: Annotated[
+        circle_choices.XStep | XStepName | None,
+        Opt(
+            "--xstep",
+            help="bresenham: d updated before x += 1 (last, Bresenham's own) or after it "
+            "(first, as widely copied code does).",
+        ),
+    ] = None,
+    convention: Annotated[Convention | ConventionName | None, CONVENTION] = None,
+    layout: Annotated[Layout | LayoutName, LAYOUT] = "notes",
+    derive: Annotated[bool, DERIVE] = False,
+    pseudocode: Annotated[bool, PSEUDOCODE] = False,
 ) -> Solution:
     """The circle of radius ``r`` about ``center`` by ``method``, worked as in the notes
     (``scanconv circle``).
@@ -276,16 +326,23 @@ def circle(
 
 @answers
 def ellipse(
-    rx: NumberLike,
-    ry: NumberLike,
-    center: PointLike = (0, 0),
+    rx: Annotated[NumberLike, Arg("The semi-axis rx along x (a whole number).", "RX")],
+    ry: Annotated[NumberLike, Arg("The semi-axis ry along y (a whole number).", "RY")],
+    center: Annotated[PointLike, CENTER] = (0, 0),
     *,
-    loop: Loop | LoopName | None = None,
-    tie: Tie | TieName | None = None,
-    p0: EllipseP0 | EllipseP0Name | None = None,
-    convention: Convention | ConventionName | None = None,
-    derive: bool = False,
-    pseudocode: bool = False,
+    loop: Annotated[circle_choices.Loop | LoopName | None, LOOP] = None,
+    tie: Annotated[Tie | TieName | None, TIE] = None,
+    p0: Annotated[
+        circle_choices.EllipseP0 | EllipseP0Name | None,
+        Opt(
+            "--p0",
+            help="Each region's first p: exact (quarters) or rounded as Hearn & Baker's code does, "
+            "int(p + 0.5).",
+        ),
+    ] = None,
+    convention: Annotated[Convention | ConventionName | None, CONVENTION] = None,
+    derive: Annotated[bool, DERIVE] = False,
+    pseudocode: Annotated[bool, PSEUDOCODE] = False,
 ) -> Solution:
     """The midpoint ellipse with semi-axes ``rx``, ``ry`` about ``center``, worked in its two
     regions (``scanconv ellipse``).
@@ -362,7 +419,11 @@ def ellipse(
 
 @answers
 def compare_lines(
-    x1: NumberLike, y1: NumberLike, x2: NumberLike, y2: NumberLike, theory: bool = False
+    x1: Annotated[NumberLike, Arg()],
+    y1: Annotated[NumberLike, Arg()],
+    x2: Annotated[NumberLike, Arg()],
+    y2: Annotated[NumberLike, Arg()],
+    theory: Annotated[bool, THEORY] = False,
 ) -> Solution:
     """The basic method, the DDA and Bresenham side by side over one line, column by column
     (``scanconv compare line``).
@@ -401,7 +462,9 @@ def compare_lines(
 
 
 @answers
-def compare_circles(r: NumberLike, theory: bool = False) -> Solution:
+def compare_circles(
+    r: Annotated[NumberLike, Arg()], theory: Annotated[bool, THEORY] = False
+) -> Solution:
     """Every circle method over the first octant of one circle, column by column
     (``scanconv compare circle``).
 

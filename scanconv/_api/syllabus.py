@@ -6,11 +6,13 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Annotated, Literal
 
 from ..core import lazy
 from ..core.checks import InputError
+from ..core.declare import Arg, Opt
 from ..display import answers
+from .params import X1, X2, Y1, Y2
 from .values import (
     NumberLike,
     PointLike,
@@ -44,6 +46,15 @@ else:  # each command's answer module, loaded by its first call
     answers_characters = lazy.module("scanconv.answers.primitives.characters")
     answers_framebuffer = lazy.module("scanconv.answers.image.framebuffer")
     answers_inside = lazy.module("scanconv.answers.process.fill.inside")
+
+CHAR = Arg("The character (A-Z, 0-9).", "CHAR")
+AT = Opt(
+    "--at",
+    metavar="X Y",
+    help="The character's bottom-left corner (default 0 0).",
+    show_default=False,
+)
+SCALE = Opt("--scale", help="Scale factor, 1..16 (default 1).", show_default=False)
 
 MAX_GLYPH = 64
 """The largest glyph drawn from rows given (64 x 64 bits; scaled at most 16 times)."""
@@ -99,24 +110,71 @@ def inside(
 
 @answers
 def framebuffer(
-    width: NumberLike,
-    height: NumberLike,
-    bits: NumberLike,
+    width: Annotated[NumberLike, Arg("W, pixels across.", "W")],
+    height: Annotated[NumberLike, Arg("H, pixels down.", "H")],
+    bits: Annotated[NumberLike, Arg("B, bits per pixel (bit planes).", "BITS")],
     *,
-    lut: NumberLike | None = None,
-    rate: NumberLike | None = None,
-    refresh: NumberLike | None = None,
-    interlaced: bool = False,
-    dpi: NumberLike | None = None,
-    pixel: PointLike | None = None,
-    address: NumberLike | None = None,
-    base: NumberLike = 0,
-    major: MajorName = "row",
-    row0: RowZeroName = "top",
-    count: DitherCountName | Literal[0, 1] = "0",
-    hretrace: NumberLike | None = None,
-    vretrace: NumberLike | None = None,
-    pixel_time: NumberLike | None = None,
+    lut: Annotated[
+        NumberLike | None,
+        Opt("--lut", help="Bits of a colour look-up-table entry: the table's size."),
+    ] = None,
+    rate: Annotated[
+        NumberLike | None,
+        Opt("--rate", help="Transfer rate in bits per second: the time to load a frame."),
+    ] = None,
+    refresh: Annotated[
+        NumberLike | None,
+        Opt("--refresh", help="Refresh rate in Hz: the time to access a pixel."),
+    ] = None,
+    interlaced: Annotated[
+        bool, Opt("--interlaced", help="Interlaced: --refresh counts fields.")
+    ] = False,
+    dpi: Annotated[
+        NumberLike | None,
+        Opt("--dpi", help="Dots per inch: W and H are the screen's size in inches."),
+    ] = None,
+    pixel: Annotated[
+        PointLike | None,
+        Opt("--pixel", metavar="X Y", help="The pixel whose frame-buffer address is wanted."),
+    ] = None,
+    address: Annotated[
+        NumberLike | None, Opt("--address", help="A byte address: the pixel stored there.")
+    ] = None,
+    base: Annotated[
+        NumberLike,
+        Opt("--base", help="The frame buffer's first byte (default 0).", show_default=False),
+    ] = 0,
+    major: Annotated[
+        MajorName,
+        Opt(
+            "--major",
+            help="The buffer holds rows (row-major) or columns.",
+            choices=("row", "column"),
+        ),
+    ] = "row",
+    row0: Annotated[
+        RowZeroName,
+        Opt(
+            "--row0",
+            help="y = 0 is the top scan line or the bottom one.",
+            choices=("top", "bottom"),
+        ),
+    ] = "top",
+    count: Annotated[
+        DitherCountName | Literal[0, 1],
+        Opt("--count", help="x and y counted from 0 or from 1.", choices=("0", "1")),
+    ] = "0",
+    hretrace: Annotated[
+        NumberLike | None,
+        Opt("--hretrace", help="Horizontal retrace time, seconds (with --refresh)."),
+    ] = None,
+    vretrace: Annotated[
+        NumberLike | None, Opt("--vretrace", help="Vertical retrace time, seconds.")
+    ] = None,
+    pixel_time: Annotated[
+        NumberLike | None,
+        Opt("--pixel-time", help="Seconds a pixel gets: the frame rate follows."),
+    ] = None,
 ) -> Solution:
     """Frame-buffer arithmetic (``scanconv framebuffer``).
 
@@ -207,14 +265,24 @@ def _whole_pair(point: PointLike, param: str) -> tuple[int, int]:
 
 @answers
 def line_style(
-    x1: NumberLike,
-    y1: NumberLike,
-    x2: NumberLike,
-    y2: NumberLike,
-    mask: str,
+    x1: Annotated[NumberLike, X1],
+    y1: Annotated[NumberLike, Y1],
+    x2: Annotated[NumberLike, X2],
+    y2: Annotated[NumberLike, Y2],
+    mask: Annotated[str, Opt("--mask", metavar="BITS", help="The pixel mask, e.g. 1110 (dashes).")],
     *,
-    bits: BitOrderName = "msb",
-    repeat: NumberLike = 1,
+    bits: Annotated[
+        BitOrderName,
+        Opt(
+            "--bits",
+            help="Read the mask from its most (msb) or least (lsb) significant bit.",
+            choices=("msb", "lsb"),
+        ),
+    ] = "msb",
+    repeat: Annotated[
+        NumberLike,
+        Opt("--repeat", help="Use each bit for N pixels (default 1).", show_default=False),
+    ] = 1,
 ) -> Solution:
     """A dashed or dotted line (``scanconv linestyle``): Bresenham's pixels, each drawn when its bit
     of the mask is 1.
@@ -267,13 +335,15 @@ def line_style(
 
 @answers
 def thick_line(
-    x1: NumberLike,
-    y1: NumberLike,
-    x2: NumberLike,
-    y2: NumberLike,
-    width: NumberLike,
+    x1: Annotated[NumberLike, X1],
+    y1: Annotated[NumberLike, Y1],
+    x2: Annotated[NumberLike, X2],
+    y2: Annotated[NumberLike, Y2],
+    width: Annotated[NumberLike, Opt("--width", "-W", help="The line's width in pixels.")],
     *,
-    brush: bool = False,
+    brush: Annotated[
+        bool, Opt("--brush", help="A square brush instead of pixel replication.")
+    ] = False,
 ) -> Solution:
     """A thick line (``scanconv thickline``): at each pixel of Bresenham's line, a span of pixels
     across the minor axis, or a square brush.
@@ -329,12 +399,29 @@ def _char(char: str) -> str:
 
 @answers
 def char_bitmap(
-    char: str,
+    char: Annotated[str, CHAR],
     *,
-    rows: str | Sequence[str] | None = None,
-    at: PointLike = (0, 0),
-    scale: NumberLike = 1,
-    bit_order: BitOrderName = "msb",
+    rows: Annotated[
+        str | Sequence[str] | None,
+        Opt(
+            "--rows",
+            "-r",
+            metavar="ROWS",
+            help="The glyph's rows, top first, separated by '/': 01110/10001/... (default: "
+            "the 5 x 7 font's).",
+        ),
+    ] = None,
+    at: Annotated[PointLike, AT] = (0, 0),
+    scale: Annotated[NumberLike, SCALE] = 1,
+    bit_order: Annotated[
+        BitOrderName,
+        Opt(
+            "--bit-order",
+            help="The glyph's bytes: a row's leftmost pixel the most significant bit (msb, "
+            "the usual font: a row reads as written) or the least (lsb).",
+            choices=("msb", "lsb"),
+        ),
+    ] = "msb",
 ) -> Solution:
     """A character drawn from its bitmap, and the glyph packed into bytes
     (``scanconv char bitmap``).
@@ -401,11 +488,19 @@ def char_bitmap(
 
 @answers
 def char_stroke(
-    char: str,
+    char: Annotated[str, CHAR],
     *,
-    at: PointLike = (0, 0),
-    scale: NumberLike = 1,
-    algo: StrokeAlgorithmName = "bresenham",
+    at: Annotated[PointLike, AT] = (0, 0),
+    scale: Annotated[NumberLike, SCALE] = 1,
+    algo: Annotated[
+        StrokeAlgorithmName,
+        Opt(
+            "--algo",
+            "-a",
+            help="The line algorithm each stroke is drawn with.",
+            choices=("bresenham", "dda"),
+        ),
+    ] = "bresenham",
 ) -> Solution:
     """A stroke (vector) character (``scanconv char stroke``): each segment scaled, placed and
     drawn by a line algorithm.

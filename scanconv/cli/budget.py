@@ -14,14 +14,24 @@ costs are :mod:`scanconv.render.work`'s).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from ..core import lazy
 from ..questions.budget import LIBRARY_NAMES, library_call
 from ..render.budget import BudgetError, check_work
 from ..render.budget import check_question as check_in_document
 from ..render.work import ESTIMATES, Work
 from ..render.work import estimate as library_estimate
 from .output import Output, format_for_file, resolve
+
+if TYPE_CHECKING:
+    from ..core.records import Solution
+    from ..questions import answering, declared, grammar
+    from ..render import Format
+else:  # the question pipeline, loaded by the first declared command that answers
+    answering = lazy.module("scanconv.questions.answering")
+    declared = lazy.module("scanconv.questions.declared")
+    grammar = lazy.module("scanconv.questions.grammar")
 
 __all__ = ["DOCUMENT_COMMANDS", "ESTIMATES", "LIBRARY_NAMES", "check", "check_question"]
 __all__ += ["DocumentTooLarge", "estimate", "library_call"]
@@ -34,7 +44,7 @@ DOCUMENT_COMMANDS = {
     "each question the page answers goes through scanconv.questions, which checks the budget",
     "check": "the question (check_question); --batch: render.budget.check_batch",
     "mcp": "a server: each tool call's question goes through scanconv.questions.check_budget "
-    "in every format the answer is written in (scanconv.mcp_server.budget), a practice call "
+    "in every format the answer is written in (scanconv.questions.answered), a practice call "
     "holds at most mcp_server.answers.MAX_PRACTICE questions",
 }
 """The commands that run other commands as questions, and how their work is bounded."""
@@ -49,6 +59,23 @@ def estimate(name: str, arguments: Mapping[str, Any]) -> Work | None:
     return library_estimate(*library_call(name, arguments))
 
 
+def answered(path: tuple[str, ...], arguments: Mapping[str, Any], out: Output) -> Solution:
+    """The answer of the declared command ``path`` for the values the command line read,
+    through the library's one question pipeline (:func:`scanconv.questions.answered`) in
+    the format ``out`` writes; a refusal by the budget worded as :func:`check` words it."""
+    command = declared.COMMANDS[path]  # the table the questions read is not needed here
+    spec = grammar.Spec(path, command.function, (), tuple(arguments))
+    line = grammar.CommandLine(spec, dict(arguments), {}, ())
+    try:
+        return answering.answered(line, [_format(out)])[1]
+    except BudgetError as err:
+        raise ValueError(_worded(err, library_call(line.function, line.arguments)[0])) from None
+
+
+def _format(out: Output) -> Format:
+    return resolve(format_for_file(out.fmt, out.output), out.output is not None)
+
+
 def check(name: str, arguments: Mapping[str, Any], out: Output) -> None:
     """Refuse (``ValueError``, one line) a request beyond its output format's budget.
 
@@ -59,10 +86,9 @@ def check(name: str, arguments: Mapping[str, Any], out: Output) -> None:
     ValueError: a 4096 x 4096 matrix is 16,777,216 cells; the rich, latex and markdown formats print at most 65,536: use --format csv or json
     >>> check("sample", {"size": "4096"}, Output(fmt=Format.csv))
     """
-    fmt = resolve(format_for_file(out.fmt, out.output), out.output is not None)
     function, args = library_call(name, arguments)
     try:
-        check_work(function, args, fmt)
+        check_work(function, args, _format(out))
     except BudgetError as err:
         raise ValueError(_worded(err, function)) from None
 

@@ -20,7 +20,6 @@ from ..questions.marking import marking_answer, marking_line
 from ..render import Format
 from ..render.budget import check_batch
 from .application import app
-from .budget import check_question
 from .options import BriefOpt, ExactOpt, FormatOpt, OutputOpt
 from .output import Output, check_paths, emit, fail, format_for_file, write_atomic
 
@@ -44,14 +43,8 @@ def solve(question: list[str]) -> Solution:
     >>> solve(["line", "2", "2", "10", "6"]).title
     "Bresenham's line algorithm: (2, 2) to (10, 6)"
     """
-    line = marking_line(question)
-    # The one place a question's work is weighed before it is done (the per-question
-    # budget): line.function names the command, line.arguments holds its values.
-    try:
-        check_question(line.function, line.arguments)
-    except ValueError as err:
-        raise ValueError(f"question: {err}") from None
-    return marking_answer(line)
+    # the library's one pipeline, with the document's budget before any work
+    return marking_answer(marking_line(question), document=True)
 
 
 def _split_own(tail: list[str], own: dict[str, Any]) -> list[str]:

@@ -130,19 +130,28 @@ class Command:
     def __annotations__(self) -> dict[str, Any]:  # type: ignore[override]  # get_type_hints
         return {p.name: p.annotation for p in self.parameters}
 
+    @property
+    def own(self) -> Iterable[str]:
+        """The names of the parameters the function takes."""
+        return inspect.signature(self.__wrapped__).parameters
+
     def __call__(self, **kwargs: Any) -> None:
-        own = inspect.signature(self.__wrapped__).parameters
+        own = set(self.own)
         values = {name: kwargs[name] for name in SHARED if name in kwargs}
-        for name in values.keys() - own.keys():
+        for name in values.keys() - own:
             del kwargs[name]
         out = Output(**values)
         # two outputs naming one file (-o f.svg --svg f.svg): one would be lost (N9)
         check_paths([], [("--output", out.output), ("--svg", out.svg), ("--png", out.png)])
         try:
-            check_budget(self.__name__, kwargs, out)  # before any work
-            emit(self.__wrapped__(**kwargs), Output(**values))
+            emit(self.answer(kwargs, out), Output(**values))
         except ValueError as err:  # InputError included
             fail(error_message(err, self.parameters))
+
+    def answer(self, kwargs: dict[str, Any], out: Output) -> Solution:
+        """The answer, its work weighed against the budget of ``out``'s format first."""
+        check_budget(self.__name__, kwargs, out)  # before any work
+        return self.__wrapped__(**kwargs)
 
 
 def error_message(err: ValueError, params: Iterable[inspect.Parameter]) -> str:
@@ -158,10 +167,11 @@ def flag_for(param: str | None, params: Iterable[inspect.Parameter]) -> str | No
     """The command's option for the library parameter ``param``, or ``None`` (no parameter,
     or a positional argument, which the message already names by its value).
 
-    >>> import inspect
-    >>> from scanconv.cli.options import Center
-    >>> center = inspect.Parameter("center", inspect.Parameter.KEYWORD_ONLY, annotation=Center)
-    >>> flag_for("xc", [center]), flag_for("radius", [center])
+    >>> from scanconv._api.shapes import circle
+    >>> from scanconv.cli.declared import typer_parameter
+    >>> from scanconv.core.declare import declared
+    >>> params = [typer_parameter(d) for d in declared(circle)]
+    >>> flag_for("xc", params), flag_for("r", params)
     ('--center', None)
     """
     if param is None:

@@ -13,6 +13,7 @@ from ..core.records import Solution
 from ..questions import commands
 from .application import app, parametric_app
 from .command import answers
+from .declared import command
 from .options import (
     NUMERIC_ARGS,
     ORIGIN,
@@ -23,8 +24,6 @@ from .options import (
     Samples,
     Segments,
     TRange,
-    Vertex,
-    num_arg,
     num_option,
     number,
 )
@@ -60,67 +59,44 @@ def parametric_circle(
     return api.parametric_circle(center, chosen, t_range=t_range, samples=samples)
 
 
-@parametric_app.command("ellipse", context_settings=NUMERIC_ARGS)
-@answers(figures=True)
-def parametric_ellipse(
-    center: CurveCenter = ORIGIN,
-    a: Annotated[Fraction, num_option("--a", help="Semi-axis a (along x).")] = Fraction(2),
-    b: Annotated[Fraction, num_option("--b", help="Semi-axis b (along y).")] = Fraction(1),
-    t_range: TRange = None,
-    samples: Samples = None,
-) -> Solution:
-    """x = xc + a cos t, y = yc + b sin t, 0 <= t <= 2 pi.
+command(
+    parametric_app,
+    ("parametric", "ellipse"),
+    help="""x = xc + a cos t, y = yc + b sin t, 0 <= t <= 2 pi.
 
     Example: scanconv parametric ellipse --center 0 0 --a 8 --b 4
-    """
-    return api.parametric_ellipse(center, a, b, t_range=t_range, samples=samples)
+    """,
+)
 
 
-@parametric_app.command("parabola", context_settings=NUMERIC_ARGS)
-@answers(figures=True)
-def parametric_parabola(
-    vertex: Vertex = ORIGIN,
-    a: Annotated[Fraction, num_option("--a", help="Coefficient a in y = k + a t^2.")] = Fraction(1),
-    t_range: TRange = None,
-    samples: Samples = None,
-) -> Solution:
-    """x = h + t, y = k + a t^2 (the notes' x = t, y = t^2 by default), -3 <= t <= 3.
+command(
+    parametric_app,
+    ("parametric", "parabola"),
+    help="""x = h + t, y = k + a t^2 (the notes' x = t, y = t^2 by default), -3 <= t <= 3.
 
     Example: scanconv parametric parabola --t-range -3 3
-    """
-    return api.parametric_parabola(vertex, a, t_range=t_range, samples=samples)
+    """,
+)
 
 
-@parametric_app.command("line", context_settings=NUMERIC_ARGS)
-@answers(figures=True)
-def parametric_line(
-    x0: Annotated[Fraction, num_arg("x of the start point P0.", "X0")],
-    y0: Annotated[Fraction, num_arg("y of the start point P0.", "Y0")],
-    x1: Annotated[Fraction, num_arg("x of the end point P1.", "X1")],
-    y1: Annotated[Fraction, num_arg("y of the end point P1.", "Y1")],
-    t_range: TRange = None,
-    samples: Samples = None,
-) -> Solution:
-    """x = x0 + t (x1 - x0), y = y0 + t (y1 - y0), 0 <= t <= 1.
+command(
+    parametric_app,
+    ("parametric", "line"),
+    help="""x = x0 + t (x1 - x0), y = y0 + t (y1 - y0), 0 <= t <= 1.
 
     Example: scanconv parametric line 0 0 10 4
-    """
-    return api.parametric_line(x0, y0, x1, y1, t_range=t_range, samples=samples)
+    """,
+)
 
 
-@parametric_app.command("custom", context_settings=NUMERIC_ARGS)
-@answers(figures=True)
-def parametric_custom(
-    x: Annotated[str, typer.Option("--x", help="x(t), e.g. '3*cos(t)'.", show_default=False)],
-    y: Annotated[str, typer.Option("--y", help="y(t), e.g. '2*sin(t)'.", show_default=False)],
-    t_range: TRange = None,
-    samples: Samples = None,
-) -> Solution:
-    """Your own x(t) and y(t): numbers, t, + - * / **, pi, e, sin cos tan sqrt exp log abs.
+command(
+    parametric_app,
+    ("parametric", "custom"),
+    help="""Your own x(t) and y(t): numbers, t, + - * / **, pi, e, sin cos tan sqrt exp log abs.
 
     Example: scanconv parametric custom --x "3*cos(t)" --y "2*sin(t)" --t-range 0 2*pi
-    """
-    return api.parametric_custom(x, y, t_range=t_range, samples=samples)
+    """,
+)
 
 
 # --- Bezier and B-spline curves ---------------------------------------------------------------

@@ -1,9 +1,10 @@
 """The command line's vocabulary: the parsers, the choices and the option declarations.
 
-Every value a command takes is declared here once, as an ``Annotated`` alias that carries its
-typer declaration: a command's signature then reads ``r: Num, center: Center = None``.
-Numbers are parsed by click through :func:`number` and :func:`integer`, so a bad one is
-refused before the command runs, naming its option. Formulas (``--at``, ``--t-range``,
+A command's own parameters are declared on its library function (:mod:`scanconv.core.declare`,
+turned into typer's declarations by :mod:`scanconv.cli.declared`); the few commands not yet
+declared there take the ``Annotated`` aliases below (``points: Points``). Numbers are parsed
+by click through :func:`number` and :func:`integer`, so a bad one is refused before the
+command runs, naming its option. Formulas (``--at``, ``--t-range``,
 ``--domain``), sizes (``--size``) and knot vectors (``--knots``) are text the library parses
 itself; the API (:mod:`scanconv._api`) takes the same text.
 
@@ -24,6 +25,7 @@ from typer._click.exceptions import NoSuchOption  # typer vendors click
 from typer._types import TyperChoice
 
 from ..core.numeric import parse_number
+from ..questions.declared import PICTURE
 from ..questions.words import looks_like_option
 from ..render import Format, formats
 
@@ -33,14 +35,14 @@ NUMERIC_ARGS: dict[str, Any] = {"ignore_unknown_options": True}
 # --- parsers ----------------------------------------------------------------------------------
 
 
-def number(text: str | Fraction) -> Fraction:
+def number(text: str | Fraction | int) -> Fraction:
     """typer parser for an exact number (integer, decimal or a/b); defaults pass through.
 
     A value that looks like an option (``--bogus`` where a number belongs, which
     ``ignore_unknown_options`` hands over as a value) is click's "No such option".
     """
-    if isinstance(text, Fraction):  # a default value
-        return text
+    if isinstance(text, Fraction | int):  # a default value
+        return Fraction(text)
     try:
         return parse_number(text)
     except ValueError as err:
@@ -87,12 +89,9 @@ class Origin(str, Enum):
 
 # --- values -----------------------------------------------------------------------------------
 
-Num = Annotated[Fraction, typer.Argument(parser=number, show_default=False)]
-"""A positional exact number (integer, decimal or a/b); negative values are accepted."""
-
 
 def num_arg(help: str, metavar: str | None = None) -> Any:
-    """A positional exact number with its help (``scanconv storage --help`` lists it)."""
+    """A positional exact number with its help (``scanconv char storage --help`` lists it)."""
     return typer.Argument(parser=number, show_default=False, help=help, metavar=metavar)
 
 
@@ -113,22 +112,11 @@ Segments = Annotated[
 """Two point lists separated by ``:`` (split by :func:`segments`)."""
 
 
-Center = Annotated[
-    tuple[Fraction, Fraction] | None,
-    num_option(
-        "--center", "-c", metavar="XC YC", help="Centre (xc, yc), integers; default (0, 0)."
-    ),
-]
-"""The centre of a circle or ellipse (``None``: the origin)."""
-
 ORIGIN = (Fraction(0), Fraction(0))
 """The default centre or vertex of a parametric curve."""
 
 CurveCenter = Annotated[
     tuple[Fraction, Fraction], num_option("--center", metavar="X Y", help="Centre (xc, yc).")
-]
-Vertex = Annotated[
-    tuple[Fraction, Fraction], num_option("--vertex", metavar="H K", help="Vertex (h, k).")
 ]
 
 
@@ -165,9 +153,6 @@ Knots = Annotated[
         help="open (clamped uniform), uniform, or an explicit comma list of n + p + 2 values.",
     ),
 ]
-Size = Annotated[
-    str, typer.Option("--size", help="M x N: M rows, N columns (8x8, or 8 for square).")
-]
 
 # --- the output options, shared by every command (added by ``answers``) ------------------------
 
@@ -187,7 +172,7 @@ DocumentFormatOpt = Annotated[
 """``--format`` of every document command (sheet, exam, practice), declared once: ``auto`` and
 the formats :data:`scanconv.render.FORMATS` gives a document writer."""
 GridOpt = Annotated[bool, typer.Option("--grid/--no-grid", help="Draw the text pixel grid.")]
-PictureOpt = Annotated[bool, typer.Option("--grid/--no-grid", help="Draw the shaded text picture.")]
+PictureOpt = Annotated[bool, typer.Option("--grid/--no-grid", help=PICTURE)]
 OriginOpt = Annotated[
     Origin,
     choice(
@@ -245,14 +230,3 @@ PngOpt = Annotated[
         dir_okay=False,
     ),
 ]
-
-Vertices = Annotated[
-    list[Fraction],
-    typer.Argument(
-        parser=number,
-        metavar="X1 Y1 X2 Y2 X3 Y3 ...",
-        help="The polygon's vertices, in order.",
-        show_default=False,
-    ),
-]
-"""The vertices of a polygon, as numbers X1 Y1 X2 Y2 ... (``2,2`` and ``(2, 2)`` too)."""

@@ -169,7 +169,8 @@ def emit(solution: Solution, out: Output) -> None:
     cannot be drawn (a ``ValueError``, exit 2 by the caller) or written (exit 1) leaves stdout
     empty.
     """
-    out = out._replace(fmt=format_for_file(out.fmt, out.output))
+    # a command that declares its own --origin (sample) has it as the library's text
+    out = out._replace(fmt=format_for_file(out.fmt, out.output), origin=Origin(out.origin))
     if out.svg is not None or out.png is not None:
         write_figures(solution, out.origin, out.svg, out.png)
     fmt = resolve(out.fmt, out.output is not None)

@@ -9,38 +9,16 @@ from typing import Annotated
 
 import typer
 
-from .. import _api as api
-from ..algorithms.choices import LineAlgorithm
-from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
+from ..algorithms.process_choices import PolygonClipMethod
 from ..core.records import Solution
 from ..questions import commands
 from .application import app, clip_app, pipeline_app
 from .command import answers
-from .options import NUMERIC_ARGS, Num, Vertices, number
+from .declared import command
+from .options import NUMERIC_ARGS, number
 
 Rect = tuple[Fraction, Fraction, Fraction, Fraction]
 
-Window = Annotated[
-    Rect,
-    typer.Option(
-        "--window",
-        "-w",
-        parser=number,
-        metavar="XMIN YMIN XMAX YMAX",
-        show_default=False,
-        help="The clipping window in world coordinates (closed: its edges are inside).",
-    ),
-]
-Viewport = Annotated[
-    Rect,
-    typer.Option(
-        "--viewport",
-        parser=number,
-        metavar="XMIN YMIN XMAX YMAX",
-        show_default=False,
-        help="The viewport in device coordinates.",
-    ),
-]
 
 TRANSFORM_HELP = """Compose 2D transformations (homogeneous coordinates, column vectors) and
 apply them to the points X1 Y1 X2 Y2 ..., in the order given.
@@ -75,13 +53,6 @@ class Midpoint(str, Enum):
     rounded = "rounded"
     floor = "floor"
     exact = "exact"
-
-
-class MidpointStop(str, Enum):
-    """Midpoint subdivision's stop rule: one unit long, or a midpoint on the window's edge."""
-
-    length = "length"
-    edge = "edge"
 
 
 NormalsOpt = Annotated[
@@ -121,69 +92,28 @@ def transform(
     return commands.transform(words, inverse)
 
 
-@app.command(context_settings=NUMERIC_ARGS)
-@answers()
-def viewport(
-    window: Window,
-    viewport: Viewport,
-    points: Annotated[
-        list[Fraction] | None,
-        typer.Argument(
-            parser=number,
-            metavar="[X1 Y1 ...]",
-            help="World points to map (default: the window's four corners).",
-            show_default=False,
-        ),
-    ] = None,
-) -> Solution:
-    """Window-to-viewport mapping: sx, sy, tx, ty with the numbers substituted, the composite
+command(
+    app,
+    ("viewport",),
+    help="""Window-to-viewport mapping: sx, sy, tx, ty with the numbers substituted, the composite
     matrix, each point mapped, and the distortion when sx != sy.
 
     Example: scanconv viewport 0 0 2 1 --window 0 0 4 4 --viewport 10 10 20 16
-    """
-    return api.viewport(window, viewport, points or [])
+    """,
+)
 
 
-@clip_app.command("line", context_settings=NUMERIC_ARGS)
-@answers()
-def clip_line(
-    x1: Num,
-    y1: Num,
-    x2: Num,
-    y2: Num,
-    window: Window,
-    method: Annotated[
-        LineClipMethod,
-        typer.Option("--method", "-m", case_sensitive=False, help="Line clipping method."),
-    ] = LineClipMethod.cohen_sutherland,
-    normals: NormalsOpt = None,
-    ends: EndsOpt = None,
-    midpoint: Annotated[
-        Midpoint | None,
-        typer.Option(
-            "--midpoint",
-            case_sensitive=False,
-            help="midpoint-subdivision: each midpoint rounded (default), floored or exact.",
-        ),
-    ] = None,
-    stop: Annotated[
-        MidpointStop | None,
-        typer.Option(
-            "--stop",
-            case_sensitive=False,
-            help="midpoint-subdivision: split until one unit long (length, default), or also "
-            "stop where a midpoint lands on the window's edge (edge).",
-        ),
-    ] = None,
-) -> Solution:
-    """Clip the segment (X1, Y1)-(X2, Y2) against the window: region codes (T B R L) and one
+command(
+    clip_app,
+    ("clip", "line"),
+    help="""Clip the segment (X1, Y1)-(X2, Y2) against the window: region codes (T B R L) and one
     row per iteration (Cohen-Sutherland), the p_k, q_k table and u1, u2 (Liang-Barsky), t per
     edge (Cyrus-Beck), each midpoint and its outcode (midpoint subdivision) or P1's region, the
     slope tests against the rays to the corners and P2's region (Nicholl-Lee-Nicholl).
 
     Example: scanconv clip line 7 9 11 4 --window 4 4 10 8 --method cohen-sutherland
-    """
-    return commands.clip_line(x1, y1, x2, y2, window, method, normals, ends, midpoint, stop)
+    """,
+)
 
 
 @clip_app.command("convex", context_settings=NUMERIC_ARGS)
@@ -249,49 +179,23 @@ def clip_polygon(
     return commands.clip_polygon(words, window, method)
 
 
-@pipeline_app.command("line", context_settings=NUMERIC_ARGS)
-@answers()
-def pipeline_line(
-    x1: Num,
-    y1: Num,
-    x2: Num,
-    y2: Num,
-    window: Window,
-    viewport: Viewport,
-    algo: Annotated[
-        LineAlgorithm,
-        typer.Option("--algo", "-a", case_sensitive=False, help="Line algorithm."),
-    ] = LineAlgorithm.bresenham,
-    clip: Annotated[
-        LineClipMethod,
-        typer.Option("--clip", case_sensitive=False, help="Line clipping method."),
-    ] = LineClipMethod.cohen_sutherland,
-) -> Solution:
-    """A world-coordinate line through the whole process: clip against the window, map to the
+command(
+    pipeline_app,
+    ("pipeline", "line"),
+    help="""A world-coordinate line through the whole process: clip against the window, map to the
     viewport, round the end points, scan convert, and show the frame buffer.
 
     Example: scanconv pipeline line -5 0 15 10 --window 0 0 10 10 --viewport 0 0 20 10
-    """
-    return api.pipeline_line(x1, y1, x2, y2, window, viewport, algo=algo, clip=clip)
+    """,
+)
 
 
-@pipeline_app.command("polygon", context_settings=NUMERIC_ARGS)
-@answers()
-def pipeline_polygon(
-    vertices: Vertices,
-    window: Window,
-    viewport: Viewport,
-    fill: Annotated[
-        bool,
-        typer.Option("--fill/--outline", help="Scan-line fill the polygon, or draw its edges."),
-    ] = False,
-    rule: Annotated[
-        FillRule, typer.Option("--rule", case_sensitive=False, help="Fill rule (with --fill).")
-    ] = FillRule.even_odd,
-) -> Solution:
-    """A world-coordinate polygon through the process: Sutherland-Hodgman against the window,
+command(
+    pipeline_app,
+    ("pipeline", "polygon"),
+    help="""A world-coordinate polygon through the process: Sutherland-Hodgman against the window,
     the vertices mapped to the viewport, then its edges (Bresenham) or its scan-line fill.
 
     Example: scanconv pipeline polygon -2 0 6 0 2 6 --window 0 0 4 4 --viewport 0 0 8 8 --fill
-    """
-    return api.pipeline_polygon(vertices, window, viewport, fill=fill, rule=rule)
+    """,
+)

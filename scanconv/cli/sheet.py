@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from ..questions import parse, shown_with, solve
+from ..questions import answered, parse, shown_with
 from ..questions.files import (
     MAX_FILE_BYTES,
     MAX_QUESTIONS,
@@ -72,10 +72,11 @@ def answer(argv: Iterable[str]) -> tuple[Solution, Options]:
     """
     line = parse(list(argv))
     options = shown_with(line)
-    # The one place a question's work is weighed before it is done (the per-question
-    # budget): line.function names the command, line.arguments holds its values.
-    check_question(line.function, line.arguments)  # alone and with the questions before it
-    return solve(line), options
+    # the document's budget (alone and with the questions before it) before any work: beyond
+    # it, the questions after this one are not read on (DocumentTooLarge); then the library's
+    # one pipeline (each format's budget, the answer)
+    check_question(line.function, line.arguments)
+    return answered(line)[1], options
 
 
 def answer_questions(

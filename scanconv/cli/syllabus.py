@@ -13,6 +13,7 @@ from ..core.records import Solution
 from ..questions import commands
 from .application import app, char_app, dither_app
 from .command import answers
+from .declared import command
 from .options import NUMERIC_ARGS, choice, num_arg, num_option
 
 
@@ -38,55 +39,6 @@ class Base(str, Enum):
     one = "1"
 
 
-class Kernel(str, Enum):
-    """The error-diffusion kernels."""
-
-    floyd_steinberg = "floyd-steinberg"
-    simple = "simple"
-    jarvis_judice_ninke = "jarvis-judice-ninke"
-    stucki = "stucki"
-    burkes = "burkes"
-    sierra = "sierra"
-    two_row_sierra = "two-row-sierra"
-    sierra_lite = "sierra-lite"
-    one_dimensional = "one-dimensional"
-
-
-class ScanOrder(str, Enum):
-    """The order error diffusion visits the pixels in."""
-
-    raster = "raster"
-    serpentine = "serpentine"
-
-
-class Arithmetic(str, Enum):
-    """Error shares kept exact or truncated to integers."""
-
-    exact = "exact"
-    integer = "integer"
-
-
-class Carry(str, Enum):
-    """What a neighbour does with a negative carried value."""
-
-    kept = "kept"
-    clamped = "clamped"
-
-
-class Major(str, Enum):
-    """A frame buffer stores rows or columns one after another."""
-
-    row = "row"
-    column = "column"
-
-
-class RowZero(str, Enum):
-    """A frame buffer's y = 0: the top scan line or the bottom one."""
-
-    top = "top"
-    bottom = "bottom"
-
-
 class InsideRule(str, Enum):
     """The inside-outside rules."""
 
@@ -101,21 +53,6 @@ class Boundary(str, Enum):
     inside = "inside"
     outside = "outside"
     left_bottom = "left-bottom"
-
-
-class BitOrder(str, Enum):
-    """Which end of a line mask is applied first; which bit of a byte a glyph row's leftmost
-    pixel is."""
-
-    msb = "msb"
-    lsb = "lsb"
-
-
-class StrokeAlgo(str, Enum):
-    """The line algorithms a stroke character is drawn with."""
-
-    bresenham = "bresenham"
-    dda = "dda"
 
 
 class Packing(str, Enum):
@@ -146,21 +83,14 @@ CompareOpt = Annotated[
 TOP = Fraction(255)
 
 
-@dither_app.command("threshold", context_settings=NUMERIC_ARGS)
-@answers(picture=True, origin=False)
-def dither_threshold(
-    image: Image,
-    top: Top = TOP,
-    at: Annotated[
-        Fraction | None, num_option("--at", "-t", help="The threshold T (default TOP / 2).")
-    ] = None,
-    compare: CompareOpt = Compare.ge,
-) -> Solution:
-    """Thresholding: each pixel on (TOP) when its value passes one threshold, else 0.
+command(
+    dither_app,
+    ("dither", "threshold"),
+    help="""Thresholding: each pixel on (TOP) when its value passes one threshold, else 0.
 
     Example: scanconv dither threshold --image "10 200; 60 90" --at 128
-    """
-    return commands.dither_threshold(image, top, at, compare)
+    """,
+)
 
 
 MatrixOpt = Annotated[
@@ -238,40 +168,6 @@ def dither_lookup(
     )
 
 
-@dither_app.command("floyd-steinberg", context_settings=NUMERIC_ARGS)
-@answers(picture=True, origin=False)
-def dither_diffusion(
-    image: Image,
-    top: Top = TOP,
-    kernel: Annotated[
-        Kernel,
-        choice(
-            "--kernel",
-            help="floyd-steinberg (7, 3, 5, 1)/16, simple (3, 3, 2)/8, jarvis-judice-ninke /48, "
-            "stucki /42, burkes /32, sierra /32, two-row-sierra /16, sierra-lite /4, or "
-            "one-dimensional (all to the next pixel).",
-        ),
-    ] = Kernel.floyd_steinberg,
-    order: Annotated[
-        ScanOrder,
-        choice("--order", help="raster: every row left to right; serpentine: alternate rows."),
-    ] = ScanOrder.raster,
-    arithmetic: Annotated[
-        Arithmetic,
-        choice("--arithmetic", help="Error shares kept exact or truncated to integers."),
-    ] = Arithmetic.exact,
-    carry: Annotated[
-        Carry, choice("--carry", help="Negative carried values kept, or clamped at 0.")
-    ] = Carry.kept,
-    compare: CompareOpt = Compare.ge,
-) -> Solution:
-    """Error diffusion (Floyd-Steinberg): each pixel set to 0 or TOP, its error shared out.
-
-    Example: scanconv dither floyd-steinberg --image "100 100; 100 100"
-    """
-    return commands.dither_diffusion(image, top, kernel, order, arithmetic, carry, compare)
-
-
 @app.command(context_settings=NUMERIC_ARGS)
 @answers()
 def inside(
@@ -302,197 +198,58 @@ def inside(
     return commands.inside(words, rule, boundary)
 
 
-@app.command(context_settings=NUMERIC_ARGS)
-@answers(grid=False)
-def framebuffer(
-    width: Annotated[Fraction, num_arg("W, pixels across.", "W")],
-    height: Annotated[Fraction, num_arg("H, pixels down.", "H")],
-    bits: Annotated[Fraction, num_arg("B, bits per pixel (bit planes).", "BITS")],
-    lut: Annotated[
-        Fraction | None,
-        num_option("--lut", help="Bits of a colour look-up-table entry: the table's size."),
-    ] = None,
-    rate: Annotated[
-        Fraction | None,
-        num_option("--rate", help="Transfer rate in bits per second: the time to load a frame."),
-    ] = None,
-    refresh: Annotated[
-        Fraction | None,
-        num_option("--refresh", help="Refresh rate in Hz: the time to access a pixel."),
-    ] = None,
-    interlaced: Annotated[
-        bool, typer.Option("--interlaced", help="Interlaced: --refresh counts fields.")
-    ] = False,
-    dpi: Annotated[
-        Fraction | None,
-        num_option("--dpi", help="Dots per inch: W and H are the screen's size in inches."),
-    ] = None,
-    pixel: Annotated[
-        tuple[Fraction, Fraction] | None,
-        num_option(
-            "--pixel", metavar="X Y", help="The pixel whose frame-buffer address is wanted."
-        ),
-    ] = None,
-    address: Annotated[
-        Fraction | None,
-        num_option("--address", help="A byte address: the pixel stored there."),
-    ] = None,
-    base: Annotated[
-        Fraction | None, num_option("--base", help="The frame buffer's first byte (default 0).")
-    ] = None,
-    major: Annotated[
-        Major, choice("--major", help="The buffer holds rows (row-major) or columns.")
-    ] = Major.row,
-    row0: Annotated[
-        RowZero, choice("--row0", help="y = 0 is the top scan line or the bottom one.")
-    ] = RowZero.top,
-    count: Annotated[Base, choice("--count", help="x and y counted from 0 or from 1.")] = Base.zero,
-    hretrace: Annotated[
-        Fraction | None,
-        num_option("--hretrace", help="Horizontal retrace time, seconds (with --refresh)."),
-    ] = None,
-    vretrace: Annotated[
-        Fraction | None, num_option("--vretrace", help="Vertical retrace time, seconds.")
-    ] = None,
-    pixel_time: Annotated[
-        Fraction | None,
-        num_option("--pixel-time", help="Seconds a pixel gets: the frame rate follows."),
-    ] = None,
-) -> Solution:
-    """Frame-buffer arithmetic: pixels, size, bit planes, a look-up table, load and refresh
+# --- declared by their library functions (scanconv._api.dither, scanconv._api.syllabus) ----
+
+command(
+    dither_app,
+    ("dither", "floyd-steinberg"),
+    help="""Error diffusion (Floyd-Steinberg): each pixel set to 0 or TOP, its error shared out.
+
+    Example: scanconv dither floyd-steinberg --image "100 100; 100 100"
+    """,
+)
+command(
+    app,
+    ("framebuffer",),
+    help="""Frame-buffer arithmetic: pixels, size, bit planes, a look-up table, load and refresh
     times, retrace, and a pixel's address.
 
     Example: scanconv framebuffer 640 480 8 --pixel 340 150
-    """
-    return commands.framebuffer(
-        width,
-        height,
-        bits,
-        lut,
-        rate,
-        refresh,
-        interlaced,
-        dpi=dpi,
-        pixel=pixel,
-        address=address,
-        base=base,
-        major=major,
-        row0=row0,
-        count=count,
-        hretrace=hretrace,
-        vretrace=vretrace,
-        pixel_time=pixel_time,
-    )
-
-
-_X1 = num_arg("x of the first end point P1.", "X1")
-_Y1 = num_arg("y of the first end point P1.", "Y1")
-_X2 = num_arg("x of the second end point P2.", "X2")
-_Y2 = num_arg("y of the second end point P2.", "Y2")
-
-
-@app.command("linestyle", context_settings=NUMERIC_ARGS)
-@answers()
-def line_style(
-    x1: Annotated[Fraction, _X1],
-    y1: Annotated[Fraction, _Y1],
-    x2: Annotated[Fraction, _X2],
-    y2: Annotated[Fraction, _Y2],
-    mask: Annotated[
-        str, typer.Option("--mask", metavar="BITS", help="The pixel mask, e.g. 1110 (dashes).")
-    ],
-    bits: Annotated[
-        BitOrder,
-        choice("--bits", help="Read the mask from its most (msb) or least (lsb) significant bit."),
-    ] = BitOrder.msb,
-    repeat: Annotated[
-        Fraction | None, num_option("--repeat", help="Use each bit for N pixels (default 1).")
-    ] = None,
-) -> Solution:
-    """A dashed or dotted line: Bresenham's pixels, each drawn when its mask bit is 1.
+    """,
+)
+command(
+    app,
+    ("linestyle",),
+    help="""A dashed or dotted line: Bresenham's pixels, each drawn when its mask bit is 1.
 
     Example: scanconv linestyle 0 0 12 4 --mask 1110
-    """
-    return commands.line_style(x1, y1, x2, y2, mask, bits, repeat)
-
-
-@app.command("thickline", context_settings=NUMERIC_ARGS)
-@answers()
-def thick_line(
-    x1: Annotated[Fraction, _X1],
-    y1: Annotated[Fraction, _Y1],
-    x2: Annotated[Fraction, _X2],
-    y2: Annotated[Fraction, _Y2],
-    width: Annotated[Fraction, num_option("--width", "-W", help="The line's width in pixels.")],
-    brush: Annotated[
-        bool, typer.Option("--brush", help="A square brush instead of pixel replication.")
-    ] = False,
-) -> Solution:
-    """A thick line by pixel replication across the minor axis, or by a square brush.
+    """,
+)
+command(
+    app,
+    ("thickline",),
+    help="""A thick line by pixel replication across the minor axis, or by a square brush.
 
     Example: scanconv thickline 0 0 8 3 --width 3
-    """
-    return commands.thick_line(x1, y1, x2, y2, width, brush)
-
-
-Char = Annotated[
-    str, typer.Argument(metavar="CHAR", help="The character (A-Z, 0-9).", show_default=False)
-]
-At = Annotated[
-    tuple[Fraction, Fraction] | None,
-    num_option("--at", metavar="X Y", help="The character's bottom-left corner (default 0 0)."),
-]
-Scale = Annotated[Fraction | None, num_option("--scale", help="Scale factor, 1..16 (default 1).")]
-
-
-@char_app.command("bitmap", context_settings=NUMERIC_ARGS)
-@answers()
-def char_bitmap(
-    char: Char,
-    rows: Annotated[
-        str | None,
-        typer.Option(
-            "--rows",
-            "-r",
-            metavar="ROWS",
-            help="The glyph's rows, top first, separated by '/': 01110/10001/... (default: "
-            "the 5 x 7 font's).",
-        ),
-    ] = None,
-    at: At = None,
-    scale: Scale = None,
-    bit_order: Annotated[
-        BitOrder,
-        choice(
-            "--bit-order",
-            help="The glyph's bytes: a row's leftmost pixel the most significant bit (msb, "
-            "the usual font: a row reads as written) or the least (lsb).",
-        ),
-    ] = BitOrder.msb,
-) -> Solution:
-    """A character drawn from its bitmap: each row's pixels, placed and scaled, and the glyph
+    """,
+)
+command(
+    char_app,
+    ("char", "bitmap"),
+    help="""A character drawn from its bitmap: each row's pixels, placed and scaled, and the glyph
     packed into bytes row by row.
 
     Example: scanconv char bitmap A --at 2 1
-    """
-    return commands.char_bitmap(char, rows, at, scale, bit_order)
-
-
-@char_app.command("stroke", context_settings=NUMERIC_ARGS)
-@answers()
-def char_stroke(
-    char: Char,
-    at: At = None,
-    scale: Scale = None,
-    algo: Annotated[
-        StrokeAlgo, choice("--algo", "-a", help="The line algorithm each stroke is drawn with.")
-    ] = StrokeAlgo.bresenham,
-) -> Solution:
-    """A stroke character: each of its line segments drawn by a line algorithm.
+    """,
+)
+command(
+    char_app,
+    ("char", "stroke"),
+    help="""A stroke character: each of its line segments drawn by a line algorithm.
 
     Example: scanconv char stroke T --scale 2
-    """
-    return commands.char_stroke(char, at, scale, algo)
+    """,
+)
 
 
 @char_app.command("storage", context_settings=NUMERIC_ARGS)

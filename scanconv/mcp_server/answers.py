@@ -1,7 +1,8 @@
 """What each tool answers, computed by the library: no SDK here (:mod:`.server` wraps these).
 
-Every question goes through the question language (:func:`scanconv.questions.parse`, the
-command line's own words and messages) and :func:`.budget.check_budget` before any work.
+Every question goes through the library's one question pipeline
+(:func:`scanconv.questions.answered`: the command line's own words and messages, and the
+budget of every format the answer is written in, before any work).
 Bad input is a ``ValueError`` whose text is scanconv's one line; the server returns it as the
 tool's error. Nothing here reads or writes a file: a question that names one (``-o``,
 ``--svg``, ``--png``) or a format (``--format``) has those words dropped, as the site's page
@@ -22,7 +23,6 @@ from ..questions import limits
 from ..questions.parser import CommandLine
 from ..render import Format, Options, render
 from ..site.page import _words
-from .budget import check_budget
 
 if TYPE_CHECKING:
     from ..marking import mark as answers_marking
@@ -94,8 +94,7 @@ def solve(question: str) -> Reply:
     scanconv.questions.words.UsageError: Missing argument 'Y2'.
     """
     line, options = _question(question)
-    check_budget(line, SHOWN)
-    data, text = _shown(questions.solve(line), options)
+    data, text = _shown(questions.answered(line, SHOWN)[1], options)
     return Reply.of(data, text)
 
 
@@ -103,8 +102,7 @@ def page(question: str) -> str:
     """The step-through page (``--format html``, with its test-yourself mode) of
     ``question``: what the MCP App view shows."""
     line, options = _question(question)
-    check_budget(line, [Format.html])
-    return text_of(render(questions.solve(line), Format.html, options))
+    return text_of(render(questions.answered(line, [Format.html])[1], Format.html, options))
 
 
 def check(question: str, table: str) -> Reply:
@@ -117,11 +115,7 @@ def check(question: str, table: str) -> Reply:
     """
     limits.check_question_size(question)
     line = questions_marking.marking_line(_words(question))
-    try:
-        check_budget(line, SHOWN)
-    except ValueError as err:
-        raise ValueError(f"question: {err}") from None
-    solution = questions_marking.marking_answer(line)
+    solution = questions_marking.marking_answer(line, SHOWN)
     text = student_table.checked_text(table, TABLE_NAME)
     marked = answers_marking.mark_text(text, solution, TABLE_NAME)
     result = answers_marking.marking_solution(marked, solution, TABLE_NAME, shlex.join(line.words))
@@ -147,9 +141,7 @@ def practice(topic: str, count: int, seed: int, difficulty: str) -> Reply:
     keys = ["", "## Key", ""]
     for n, q in enumerate(chosen, 1):
         words = shlex.join(q.argv)
-        line = questions.parse(list(q.argv))
-        check_budget(line, SHOWN)
-        solution = questions.solve(line)
+        _, solution = questions.answered(list(q.argv), SHOWN)
         data, shown = _shown(solution, Options(brief=True))
         items.append(
             {

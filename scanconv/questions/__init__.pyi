@@ -1,6 +1,7 @@
 # The public names of scanconv.questions, for type checkers and at run time (the package
 # loads each on first use from this list: scanconv._attach_stub).
 from .answering import answer as answer
+from .answering import answered as answered
 from .answering import shown_with as shown_with
 from .answering import solve as solve
 from .budget import check_budget as check_budget
@@ -18,6 +19,7 @@ __all__ = [
     "QuestionError",
     "UsageError",
     "answer",
+    "answered",
     "check",
     "check_budget",
     "marking_question",

@@ -1,27 +1,94 @@
-"""Answering a parsed question: the command's answer (:func:`solve`), the options it is shown
-with (:func:`shown_with`), and both from the words in one call (:func:`answer`)."""
+"""Answering a question: the one pipeline every reader of questions goes through
+(:func:`answered`: parse, weigh the work against the budget, answer), the options an answer
+is shown with (:func:`shown_with`), and the answer from the words in one call
+(:func:`answer`).
+
+The command line's sheets and ``check``, the site's page, the MCP server and this package's
+:func:`answer` and :func:`~scanconv.questions.marking.marking_question` all answer through
+:func:`answered`; :func:`solve` is its last step and weighs the work itself (what no format
+prints is refused), so nothing answers a question without passing the budget.
+"""
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from typing import TYPE_CHECKING
 
+from ..core import lazy
 from ..core.checks import InputError
 from ..display import Answer
-from ..render import Options
-from .budget import estimated
-from .commands import BODIES
-from .grammar import error_message
-from .parser import CommandLine, parse
+from ..render import Format, Options
+from ..render.budget import check_question as check_in_document
+from .budget import estimated, library_call
+from .declared import BY_FUNCTION
+from .grammar import CommandLine, error_message
 from .words import UsageError
 
 if TYPE_CHECKING:
     from ..core.records import Solution
     from ..display import Answer
+    from . import commands, parser
+else:  # a declared command read by the command line needs neither
+    commands = lazy.module("scanconv.questions.commands")
+    parser = lazy.module("scanconv.questions.parser")
+
+
+def answered(
+    question: str | Sequence[str] | CommandLine,
+    formats: Iterable[Format | str] = (),
+    *,
+    document: bool = False,
+) -> tuple[CommandLine, Solution]:
+    """The one question pipeline: the question parsed, its work weighed against the budget
+    before any is done, then answered.
+
+    Parameters
+    ----------
+    question : str, sequence of str or CommandLine
+        The question as scanconv's own arguments, or already parsed (:func:`parse`).
+    formats : iterable of Format or str, default ()
+        The formats the answer will be written in: each has a budget of its own
+        (:func:`~scanconv.questions.budget.check_budget`). Whatever they are, what no format
+        prints is refused.
+    document : bool, default False
+        The question is one of a document's (a sheet, practice set, exam or ``check``): the
+        document's budget, for it alone and with the questions before it
+        (:func:`scanconv.render.budget.check_question`).
+
+    Returns
+    -------
+    (CommandLine, Solution)
+        The parsed question and its answer.
+
+    Raises
+    ------
+    UsageError
+        Bad words.
+    InputError
+        Bad values, or work beyond a budget (a :class:`~scanconv.render.budget.BudgetError`).
+
+    Examples
+    --------
+    >>> line, solution = answered("circle 5 --method bresenham", ["json"])
+    >>> line.function, solution.primitive
+    ('circle', 'circle')
+    >>> answered("circle 2800000", ["json"])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    scanconv.render.budget.BudgetError: the table has about 1,979,900 rows; circle/midpoint in json ...
+    """
+    line = question if isinstance(question, CommandLine) else parser.parse(question)
+    if document:
+        check_in_document(*library_call(line.function, line.arguments))
+    for fmt in (*formats,) or (None,):  # none given: what no format prints
+        estimated(line, None if fmt is None else Format(fmt))
+    return line, _solve(line)
 
 
 def solve(line: CommandLine) -> Solution:
-    """The answer of a parsed question, computed by the library.
+    """The answer of a parsed question, computed by the library: the last step of
+    :func:`answered`, which refuses first what no format prints (the budget of a format the
+    answer is written in is :func:`answered`'s).
 
     Parameters
     ----------
@@ -41,6 +108,7 @@ def solve(line: CommandLine) -> Solution:
 
     Examples
     --------
+    >>> from scanconv.questions import parse
     >>> solve(parse("circle 5 --method bresenham")).title
     "Bresenham's circle algorithm: r = 5, centre (0, 0)"
     >>> solve(parse("bspline 0 0 1 1 --degree 3"))
@@ -48,7 +116,14 @@ def solve(line: CommandLine) -> Solution:
     ...
     scanconv.core.checks.InputError: --degree: degree must satisfy 1 <= p <= n = 1 (n + 1 = 2 control points), got p = 3
     """
-    body = BODIES[line.function]
+    estimated(line, None)  # before any work
+    return _solve(line)
+
+
+def _solve(line: CommandLine) -> Solution:
+    """:func:`solve` once the work is weighed."""
+    declared = BY_FUNCTION.get(line.function)
+    body = declared.answerer() if declared is not None else commands.BODIES[line.function]
     try:
         return body(**line.arguments)
     except UsageError:
@@ -82,6 +157,7 @@ def shown_with(line: CommandLine, where: str = "the sheet") -> Options:
 
     Examples
     --------
+    >>> from scanconv.questions import parse
     >>> shown_with(parse("circle 5 --no-grid --exact"))
     Options(grid=False, origin='bottom-left', brief=False, exact=True, width=None)
     >>> shown_with(parse("circle 5 -o a.md"))
@@ -144,7 +220,5 @@ def answer(question: str | Sequence[str]) -> Answer:
     ...
     scanconv.render.budget.BudgetError: the table has about 1,000,000,001 rows; no format prints more than 2,000,000 (a minute of output)
     """
-    line = parse(question)
-    estimated(line, None)
-    solution = solve(line)
+    _, solution = answered(question)
     return solution if isinstance(solution, Answer) else Answer.of(solution)

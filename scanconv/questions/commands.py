@@ -43,38 +43,8 @@ def _text(value: Any) -> Any:
     return getattr(value, "value", value)
 
 
-def line(x1: Any, y1: Any, x2: Any, y2: Any, **conventions: Any) -> Solution:
-    return api.line(x1, y1, x2, y2, **conventions)
-
-
-def storage(
-    m: Any, n: Any, levels: Any, bits: Any, binary: bool, color: Any, frames: Any
-) -> Solution:
-    return api.storage(
-        m,
-        n,
-        levels=levels,
-        bits=bits,
-        binary=binary,
-        color=_text(color),
-        frames=1 if frames is None else frames,
-    )
-
-
 def quantize(bits: Any, value_range: Any, kind: Any, recon: Any) -> Solution:
     return api.quantize(bits, value_range, integer=_text(kind) == "integer", recon=_text(recon))
-
-
-def sample(
-    expr: str, size: str, levels: Any, domain: Any, value_range: Any, origin: Any
-) -> Solution:
-    return api.sample(
-        expr, size, levels, domain=domain, value_range=value_range, origin=_text(origin)
-    )
-
-
-def image_ramp(size: str, levels: Any) -> Solution:
-    return api.ramp(size, 8 if levels is None else levels)
 
 
 def parametric_circle(r: Any, center: Any, radius: Any, t_range: Any, samples: Any) -> Solution:
@@ -84,22 +54,6 @@ def parametric_circle(r: Any, center: Any, radius: Any, t_range: Any, samples: A
         )
     chosen = r if r is not None else radius if radius is not None else Fraction(1)
     return api.parametric_circle(center, chosen, t_range=t_range, samples=samples)
-
-
-def parametric_ellipse(center: Any, a: Any, b: Any, t_range: Any, samples: Any) -> Solution:
-    return api.parametric_ellipse(center, a, b, t_range=t_range, samples=samples)
-
-
-def parametric_parabola(vertex: Any, a: Any, t_range: Any, samples: Any) -> Solution:
-    return api.parametric_parabola(vertex, a, t_range=t_range, samples=samples)
-
-
-def parametric_line(x0: Any, y0: Any, x1: Any, y1: Any, t_range: Any, samples: Any) -> Solution:
-    return api.parametric_line(x0, y0, x1, y1, t_range=t_range, samples=samples)
-
-
-def parametric_custom(x: str, y: str, t_range: Any, samples: Any) -> Solution:
-    return api.parametric_custom(x, y, t_range=t_range, samples=samples)
 
 
 def bezier(points: Any, samples: Any, t: Any) -> Solution:
@@ -142,26 +96,6 @@ def continuity(values: list[Any], samples: Any) -> Solution:
 def local_control(points: Any, move: Any, degree: Any, knots: Any, samples: Any) -> Solution:
     index, x, y = move
     return api.local_control(points, index, (x, y), degree, knots, samples)
-
-
-def circle(r: Any, center: Any, **conventions: Any) -> Solution:
-    return api.circle(r, center or (0, 0), **conventions)
-
-
-def ellipse(rx: Any, ry: Any, center: Any, **conventions: Any) -> Solution:
-    return api.ellipse(rx, ry, center or (0, 0), **conventions)
-
-
-def compare_line(x1: Any, y1: Any, x2: Any, y2: Any, theory: bool) -> Solution:
-    return api.compare_lines(x1, y1, x2, y2, theory=theory)
-
-
-def compare_circle(r: Any, theory: bool) -> Solution:
-    return api.compare_circles(r, theory=theory)
-
-
-def compare_curves() -> Solution:
-    return api.compare_curves()
 
 
 def _is_number(word: str) -> bool:
@@ -212,36 +146,6 @@ def split_words(words: list[str]) -> tuple[list[Fraction], list[str]]:
 def transform(words: list[str], inverse: bool) -> Solution:
     points, ops = split_words(words)
     return api.transform(points, ops, inverse=inverse)
-
-
-def viewport(window: Any, viewport: Any, points: Any) -> Solution:
-    return api.viewport(window, viewport, points or [])
-
-
-def clip_line(
-    x1: Any,
-    y1: Any,
-    x2: Any,
-    y2: Any,
-    window: Any,
-    method: Any,
-    normals: Any = None,
-    ends: Any = None,
-    midpoint: Any = None,
-    stop: Any = None,
-) -> Solution:
-    return api.clip_line(
-        x1,
-        y1,
-        x2,
-        y2,
-        window,
-        method=method,
-        normals=_text(normals),
-        ends=_text(ends),
-        midpoint=_text(midpoint),
-        stop=_text(stop),
-    )
 
 
 def numbers_around(
@@ -301,61 +205,6 @@ def clip_polygon(words: list[str], window: Any, method: Any) -> Solution:
     return api.clip_polygon(vertices, corners or window, method=method)
 
 
-def pipeline_line(
-    x1: Any, y1: Any, x2: Any, y2: Any, window: Any, viewport: Any, algo: Any, clip: Any
-) -> Solution:
-    return api.pipeline_line(x1, y1, x2, y2, window, viewport, algo=algo, clip=clip)
-
-
-def pipeline_polygon(vertices: Any, window: Any, viewport: Any, fill: bool, rule: Any) -> Solution:
-    return api.pipeline_polygon(vertices, window, viewport, fill=fill, rule=_text(rule))
-
-
-def polygon(vertices: Any, rule: Any) -> Solution:
-    return api.polygon(vertices, rule=rule)
-
-
-def _seed_fill(kind: Any) -> Body:
-    def fill(
-        seed: Any, vertices: Any, rows: Any, connectivity: Any, order: Any, span: bool
-    ) -> Solution:
-        return api.fill(
-            kind,
-            seed,
-            vertices=vertices or None,
-            rows=rows,
-            connectivity=connectivity,
-            order=order,
-            span=span,
-        )
-
-    fill.__name__ = fill.__qualname__ = f"fill_{kind}"
-    return fill
-
-
-fill_boundary = _seed_fill("boundary")
-fill_flood = _seed_fill("flood")
-
-
-def antialias_line(
-    x1: Any, y1: Any, x2: Any, y2: Any, method: Any, samples: Any, levels: Any,
-    ends: Any = None, width: Any = 1, across: Any = "minor", subgrid: Any = None,
-    divide: Any = None,
-) -> Solution:  # fmt: skip
-    return api.antialias_line(
-        x1, y1, x2, y2, method=method, samples=samples, levels=levels, ends=ends, width=width,
-        across=across, subgrid=subgrid, divide=divide,
-    )  # fmt: skip
-
-
-def antialias_circle(r: Any, center: Any, method: Any, samples: Any, levels: Any) -> Solution:
-    return api.antialias_circle(r, center or (0, 0), method=method, samples=samples, levels=levels)
-
-
-def antialias_polygon(vertices: Any, method: Any, samples: Any, levels: Any, rule: Any) -> Solution:
-    return api.antialias_polygon(vertices, method=method, samples=samples, levels=levels, rule=rule)
-
-
 def color(model: Any, values: list[str], to: Any, unit: bool, bits: Any) -> Solution:
     targets = list(to or [])
     numbers: list[str] = []
@@ -370,10 +219,6 @@ def color(model: Any, values: list[str], to: Any, unit: bool, bits: Any) -> Solu
                 "after --to)"
             )
     return color_api(model, *numbers, to=targets, unit=unit, bits=8 if bits is None else bits)
-
-
-def dither_threshold(image: str, top: Any, at: Any, compare: Any) -> Solution:
-    return api.dither_threshold(image, 255 if top is None else top, at=at, compare=_text(compare))
 
 
 def dither_ordered(
@@ -420,26 +265,6 @@ def dither_lookup(
     )
 
 
-def dither_diffusion(
-    image: str,
-    top: Any,
-    kernel: Any,
-    order: Any,
-    arithmetic: Any,
-    carry: Any,
-    compare: Any,
-) -> Solution:
-    return api.dither_diffusion(
-        image,
-        255 if top is None else top,
-        kernel=_text(kernel),
-        order=_text(order),
-        arithmetic=_text(arithmetic),
-        carry=_text(carry),
-        compare=_text(compare),
-    )
-
-
 def halftone(n: Any, level: Any, bits: Any, order: Any = None, matrix: Any = None) -> Solution:
     return api.halftone(
         n,
@@ -464,51 +289,6 @@ def printer(dpi: Any, lpi: Any, cell: Any, levels: Any, count: Any, dots: Any) -
 def inside(words: list[str], rule: Any, boundary: Any) -> Solution:
     vertices, points = numbers_around(words, "--points", "points")
     return api.inside(vertices, points, rule=_text(rule), boundary=_text(boundary))
-
-
-def framebuffer(
-    width: Any,
-    height: Any,
-    bits: Any,
-    lut: Any,
-    rate: Any,
-    refresh: Any,
-    interlaced: bool,
-    **more: Any,
-) -> Solution:
-    """``framebuffer``'s answer; ``more``: the address, retrace and dpi options, as given."""
-    given = {k: _text(v) for k, v in more.items() if v is not None}
-    if "pixel" in given:
-        given["pixel"] = tuple(given["pixel"])
-    return api.framebuffer(
-        width, height, bits, lut=lut, rate=rate, refresh=refresh, interlaced=interlaced, **given
-    )
-
-
-def line_style(x1: Any, y1: Any, x2: Any, y2: Any, mask: str, bits: Any, repeat: Any) -> Solution:
-    return api.line_style(
-        x1, y1, x2, y2, mask, bits=_text(bits), repeat=1 if repeat is None else repeat
-    )
-
-
-def thick_line(x1: Any, y1: Any, x2: Any, y2: Any, width: Any, brush: bool) -> Solution:
-    return api.thick_line(x1, y1, x2, y2, width, brush=brush)
-
-
-def char_bitmap(char: str, rows: Any, at: Any, scale: Any, bit_order: Any = None) -> Solution:
-    return api.char_bitmap(
-        char,
-        rows=rows,
-        at=at or (0, 0),
-        scale=1 if scale is None else scale,
-        bit_order=_text(bit_order) or "msb",
-    )
-
-
-def char_stroke(char: str, at: Any, scale: Any, algo: Any) -> Solution:
-    return api.char_stroke(
-        char, at=at or (0, 0), scale=1 if scale is None else scale, algo=_text(algo)
-    )
 
 
 def char_storage(
@@ -553,14 +333,10 @@ def theory(topic: str, list_: bool = False) -> Solution:
 BODIES: dict[str, Body] = {
     fn.__name__: fn
     for fn in (
-        line, storage, quantize, sample, image_ramp, parametric_circle, parametric_ellipse,
-        parametric_parabola, parametric_line, parametric_custom, bezier, bspline, continuity,
-        local_control, circle, ellipse, compare_line, compare_circle, compare_curves, transform,
-        viewport, clip_line, clip_polygon, pipeline_line, pipeline_polygon, polygon,
-        fill_boundary, fill_flood, antialias_line, antialias_circle, antialias_polygon, color,
-        theory, clip_convex, dither_threshold, dither_ordered, dither_lookup, dither_diffusion,
-        halftone, printer, inside,
-        framebuffer, line_style, thick_line, char_bitmap, char_stroke, char_storage,
+        quantize, parametric_circle, bezier, bspline, continuity, local_control, transform, color,
+        theory, clip_convex, clip_polygon, dither_ordered, dither_lookup, halftone, printer, inside,
+        char_storage,
     )
 }  # fmt: skip
-"""Each command's answer, by the command's function name (``parametric_circle``)."""
+"""Each command's answer, by the command's function name (``parametric_circle``), for the
+commands not yet declared by their library function (:mod:`.declared`)."""

@@ -1,8 +1,19 @@
 """The records of the question language: a command's parameters as the command line takes
 them (:class:`Param`) and a command (:class:`Spec`). The table of every command is
-:mod:`.grammar_table`, generated from the command line's declarations."""
+:mod:`.grammar_table`, generated from the library's declarations (:mod:`.declared`, the
+signatures of :mod:`scanconv._api`) by::
 
-from typing import Any, NamedTuple
+    python -m scanconv.questions.grammar > scanconv/questions/grammar_table.py
+"""
+
+from __future__ import annotations
+
+from enum import Enum
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+if TYPE_CHECKING:
+    from ..core.declare import Declared
+    from .declared import Command
 
 
 class Param(NamedTuple):
@@ -62,6 +73,30 @@ class Spec(NamedTuple):
     no_args_is_help: bool = False
 
 
+class CommandLine(NamedTuple):
+    """A parsed question: the command, its arguments and its display options."""
+
+    spec: Spec
+    arguments: dict[str, Any]
+    """The answer's parameters by the command's names, their values converted (a choice as
+    its text, a number as a Fraction, a list of points as a list)."""
+    display: dict[str, Any]
+    """The shared output options (grid, origin, brief, exact, format, output, svg, png), as
+    given or by default: how the answer is shown, not what it is."""
+    words: tuple[str, ...]
+    """The question's words, as given."""
+
+    @property
+    def path(self) -> tuple[str, ...]:
+        """The command's words: ``("parametric", "circle")``."""
+        return self.spec.path
+
+    @property
+    def function(self) -> str:
+        """The command's function name (``parametric_circle``), as the work budget knows it."""
+        return self.spec.function
+
+
 ALIASES = {
     "xc": "center",
     "yc": "center",
@@ -99,3 +134,133 @@ def error_message(err: ValueError, params: tuple[Param, ...]) -> str:
     if flag is not None and not message.startswith(flag):
         message = f"{flag}: {message}"
     return message
+
+
+# --- the table, generated from the declarations ----------------------------------------------
+
+
+def default_text(value: Any) -> Any:
+    """A default as the grammar holds it: a choice by its text, a list as a tuple."""
+    if isinstance(value, Enum):
+        return value.value
+    if isinstance(value, list | tuple):
+        return tuple(default_text(v) for v in value)
+    return value
+
+
+def _texts(choices: Any) -> tuple[str, ...]:
+    if choices is None:
+        return ()
+    return tuple(c.value if isinstance(c, Enum) else c for c in choices)
+
+
+def param_of(d: Declared) -> Param:
+    """The grammar's parameter for a declared one (:func:`scanconv.core.declare.declared`)."""
+    from ..core.declare import Opt
+
+    meta = d.meta
+    option = isinstance(meta, Opt)
+    return Param(
+        name=d.name,
+        opts=meta.flags if isinstance(meta, Opt) else (),
+        kind=d.kind,
+        nargs=d.nargs,
+        required=d.required,
+        default=None if d.required or d.default is None else default_text(d.default),
+        choices=_texts(d.choices),
+        secondary=meta.secondary if isinstance(meta, Opt) else (),
+        multiple=meta.multiple if isinstance(meta, Opt) else False,
+        metavar="" if option else meta.metavar or d.name,
+        help=" ".join(meta.help.split()),
+    )
+
+
+def spec_of(command: Command, shared: dict[str, Param]) -> Spec:
+    """The grammar of a declared command, its output options those of ``shared``."""
+    from ..core.declare import declared
+    from .declared import OUTPUTS, PICTURE
+
+    own = {d.name: param_of(d) for d in declared(command.declaration())}
+    params = [p for name, p in own.items() if name not in OUTPUTS]
+    if command.picture:  # the same flag, shown as the picture
+        shared = {**shared, "grid": shared["grid"]._replace(help=PICTURE)}
+    params += [own.get(name) or shared[name] for name in command.outputs]
+    return Spec(
+        path=command.path,
+        function=command.function,
+        params=tuple(params),
+        own=tuple(own),
+        ignore_unknown=command.ignore_unknown,
+    )
+
+
+def specs() -> dict[tuple[str, ...], Spec]:
+    """Every command's grammar: a declared one's read from its function (the others', not
+    yet declared, as the table holds them)."""
+    from . import grammar_table as table
+    from .declared import COMMANDS
+
+    return {
+        path: spec_of(COMMANDS[path], table.S) if path in COMMANDS else spec
+        for path, spec in table.SPECS.items()
+    }
+
+
+def _param_source(p: Param) -> str:
+    fields = [repr(p.name), repr(p.opts), repr(p.kind)]
+    for field in Param._fields[3:]:
+        value = getattr(p, field)
+        if value != Param._field_defaults[field]:
+            fields.append(f"{field}={value!r}")
+    return f"Param({', '.join(fields)})"
+
+
+def module_text() -> str:
+    """The source of :mod:`scanconv.questions.grammar_table`."""
+    from . import grammar_table as table
+    from .declared import NOT_QUESTIONS, OUTPUTS
+
+    lines = [
+        '"""The grammar of every question command: generated from the library\'s declarations',
+        'by ``python -m scanconv.questions.grammar`` (do not edit: a test compares)."""',
+        "",
+        "from fractions import Fraction",
+        "",
+        "from .grammar import Param, Spec",
+        "",
+        f"NOT_QUESTIONS = {NOT_QUESTIONS!r}",
+        '"""Commands that write documents or mark: never a question."""',
+        "",
+        f"SHARED = {OUTPUTS!r}",
+        '"""The output options every command shares, in the order they follow its own."""',
+        "",
+        "# fmt: off",
+        "S = {",
+        *(f"    {name!r}: {_param_source(p)}," for name, p in table.S.items()),
+        "}",
+        '"""The shared output options, as most commands take them."""',
+        "",
+        "SPECS: dict[tuple[str, ...], Spec] = {",
+    ]
+    for path, spec in specs().items():
+        params = [
+            f"S[{p.name!r}]" if table.S.get(p.name) == p else _param_source(p) for p in spec.params
+        ]
+        rows: list[list[str]] = []  # in the command's order, the shared ones run on one line
+        for s in params:
+            if rows and s.startswith("S[") and rows[-1][-1].startswith("S["):
+                rows[-1].append(s)
+            else:
+                rows.append([s])
+        flags = f", no_args_is_help={spec.no_args_is_help!r}" if spec.no_args_is_help else ""
+        lines += [
+            f"    {path!r}: Spec({path!r}, {spec.function!r}, (",
+            *(f"        {', '.join(row)}," for row in rows),
+            f"    ), own={spec.own!r}, ignore_unknown={spec.ignore_unknown!r}{flags}),",
+        ]
+    lines += ["}", "# fmt: on"]
+    return "\n".join(lines) + "\n"
+
+
+if __name__ == "__main__":
+    print(module_text(), end="")

@@ -1,5 +1,5 @@
-"""The grammar of every question command: generated from the command line's
-declarations by ``python -m scanconv.cli.grammar`` (do not edit: a test compares)."""
+"""The grammar of every question command: generated from the library's declarations
+by ``python -m scanconv.questions.grammar`` (do not edit: a test compares)."""
 
 from fractions import Fraction
 
@@ -50,7 +50,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('bits', ('--bits',), 'number', help='Bits per pixel B (1-24; storage also 32, 48, 64).'),
         Param('binary', ('--binary',), 'flag', default=False, help='Binary image: 1 bit per pixel.'),
         Param('color', ('--color',), 'choice', choices=('rgb24',), help='Colour image: rgb24 = 24 bits.'),
-        Param('frames', ('--frames',), 'number', help='Number of frames F (default 1).'),
+        Param('frames', ('--frames',), 'number', default=1, help='Number of frames F (default 1).'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('m', 'n', 'levels', 'bits', 'binary', 'color', 'frames'), ignore_unknown=True),
     ('quantize',): Spec(('quantize',), 'quantize', (
@@ -101,7 +101,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('points', 'move', 'degree', 'knots', 'samples'), ignore_unknown=True),
     ('circle',): Spec(('circle',), 'circle', (
         Param('r', (), 'number', required=True, metavar='R', help='The radius r (a whole number).'),
-        Param('center', ('--center', '-c'), 'number', nargs=2, help='Centre (xc, yc), integers; default (0, 0).'),
+        Param('center', ('--center', '-c'), 'number', nargs=2, default=(0, 0), help='Centre (xc, yc), integers; default (0, 0).'),
         Param('method', ('--method', '-m'), 'choice', default='midpoint', choices=('midpoint', 'bresenham', 'polynomial', 'general', 'trig', 'symmetric-dda'), help="Circle method: midpoint (the notes' Topic 9 'Bresenham', p0 = 1 - r), bresenham (d0 = 3 - 2r), general (the notes' p0 = 0 at the point), polynomial (square root), trig, symmetric-dda."),
         Param('rounding', ('--rounding',), 'choice', choices=('half-up', 'trunc', 'half-even', 'c-cast', 'half-away'), help='How computed coordinates become pixels: half-up floor(v + 1/2), trunc, half-even (Python round), c-cast (int)(v + 0.5), half-away (C round).'),
         Param('tie', ('--tie',), 'choice', choices=('step', 'keep'), help='A decision parameter of 0: step the minor coordinate (if p < 0 keep) or keep it (if p <= 0 keep).'),
@@ -118,7 +118,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('ellipse',): Spec(('ellipse',), 'ellipse', (
         Param('rx', (), 'number', required=True, metavar='RX', help='The semi-axis rx along x (a whole number).'),
         Param('ry', (), 'number', required=True, metavar='RY', help='The semi-axis ry along y (a whole number).'),
-        Param('center', ('--center', '-c'), 'number', nargs=2, help='Centre (xc, yc), integers; default (0, 0).'),
+        Param('center', ('--center', '-c'), 'number', nargs=2, default=(0, 0), help='Centre (xc, yc), integers; default (0, 0).'),
         Param('loop', ('--loop',), 'choice', choices=('strict', 'inclusive'), help='The octant (region-1) loop: strict (x < y) or inclusive (x <= y).'),
         Param('tie', ('--tie',), 'choice', choices=('step', 'keep'), help='A decision parameter of 0: step the minor coordinate (if p < 0 keep) or keep it (if p <= 0 keep).'),
         Param('p0', ('--p0',), 'choice', choices=('exact', 'rounded'), help="Each region's first p: exact (quarters) or rounded as Hearn & Baker's code does, int(p + 0.5)."),
@@ -135,7 +135,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('viewport',): Spec(('viewport',), 'viewport', (
         Param('window', ('--window', '-w'), 'number', nargs=4, required=True, help='The clipping window in world coordinates (closed: its edges are inside).'),
         Param('viewport', ('--viewport',), 'number', nargs=4, required=True, help='The viewport in device coordinates.'),
-        Param('points', (), 'number', nargs=-1, metavar='[X1 Y1 ...]', help="World points to map (default: the window's four corners)."),
+        Param('points', (), 'number', nargs=-1, default=(), metavar='[X1 Y1 ...]', help="World points to map (default: the window's four corners)."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('window', 'viewport', 'points'), ignore_unknown=True),
     ('polygon',): Spec(('polygon',), 'polygon', (
@@ -143,6 +143,14 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('rule', ('--rule',), 'choice', default='even-odd', choices=('even-odd', 'nonzero'), help='Fill rule: even-odd (alternate) or nonzero winding.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('vertices', 'rule'), ignore_unknown=True),
+    ('halftone',): Spec(('halftone',), 'halftone', (
+        Param('n', (), 'number', required=True, metavar='N', help="N, the halftone cell's width: 1 to 16."),
+        Param('level', ('--level', '-l'), 'number', help='Only the pattern of this level.'),
+        Param('bits', ('--bits',), 'number', help='Bits per pixel of the device (default 1).'),
+        Param('order', ('--order',), 'choice', default='bayer', choices=('bayer', 'clustered'), help="bayer: the cell fills in the Bayer matrix's order (dispersed); clustered: a dot grows from the centre."),
+        Param('matrix', ('--matrix', '-m'), 'text', help="The cell's order given: N x N rows holding 0..N^2-1 (or 1..N^2) once each."),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('n', 'level', 'bits', 'order', 'matrix'), ignore_unknown=True),
     ('inside',): Spec(('inside',), 'inside', (
         Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ... --points X Y ...', help="The polygon's vertices in order, then --points and the points to test."),
         Param('rule', ('--rule',), 'choice', default='both', choices=('both', 'even-odd', 'nonzero'), help='even-odd, nonzero winding, or both.'),
@@ -160,7 +168,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('dpi', ('--dpi',), 'number', help="Dots per inch: W and H are the screen's size in inches."),
         Param('pixel', ('--pixel',), 'number', nargs=2, help='The pixel whose frame-buffer address is wanted.'),
         Param('address', ('--address',), 'number', help='A byte address: the pixel stored there.'),
-        Param('base', ('--base',), 'number', help="The frame buffer's first byte (default 0)."),
+        Param('base', ('--base',), 'number', default=0, help="The frame buffer's first byte (default 0)."),
         Param('major', ('--major',), 'choice', default='row', choices=('row', 'column'), help='The buffer holds rows (row-major) or columns.'),
         Param('row0', ('--row0',), 'choice', default='top', choices=('top', 'bottom'), help='y = 0 is the top scan line or the bottom one.'),
         Param('count', ('--count',), 'choice', default='0', choices=('0', '1'), help='x and y counted from 0 or from 1.'),
@@ -176,7 +184,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('y2', (), 'number', required=True, metavar='Y2', help='y of the second end point P2.'),
         Param('mask', ('--mask',), 'text', required=True, help='The pixel mask, e.g. 1110 (dashes).'),
         Param('bits', ('--bits',), 'choice', default='msb', choices=('msb', 'lsb'), help='Read the mask from its most (msb) or least (lsb) significant bit.'),
-        Param('repeat', ('--repeat',), 'number', help='Use each bit for N pixels (default 1).'),
+        Param('repeat', ('--repeat',), 'number', default=1, help='Use each bit for N pixels (default 1).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('x1', 'y1', 'x2', 'y2', 'mask', 'bits', 'repeat'), ignore_unknown=True),
     ('thickline',): Spec(('thickline',), 'thick_line', (
@@ -188,23 +196,6 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('brush', ('--brush',), 'flag', default=False, help='A square brush instead of pixel replication.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('x1', 'y1', 'x2', 'y2', 'width', 'brush'), ignore_unknown=True),
-    ('halftone',): Spec(('halftone',), 'halftone', (
-        Param('n', (), 'number', required=True, metavar='N', help="N, the halftone cell's width: 1 to 16."),
-        Param('level', ('--level', '-l'), 'number', help='Only the pattern of this level.'),
-        Param('bits', ('--bits',), 'number', help='Bits per pixel of the device (default 1).'),
-        Param('order', ('--order',), 'choice', default='bayer', choices=('bayer', 'clustered'), help="bayer: the cell fills in the Bayer matrix's order (dispersed); clustered: a dot grows from the centre."),
-        Param('matrix', ('--matrix', '-m'), 'text', help="The cell's order given: N x N rows holding 0..N^2-1 (or 1..N^2) once each."),
-        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('n', 'level', 'bits', 'order', 'matrix'), ignore_unknown=True),
-    ('printer',): Spec(('printer',), 'printer', (
-        Param('dpi', ('--dpi',), 'number', help="The printer's dots per inch."),
-        Param('lpi', ('--lpi',), 'number', help="The halftone screen's lines (cells) per inch."),
-        Param('cell', ('--cell',), 'number', help="The halftone cell's side N, in dots."),
-        Param('levels', ('--levels',), 'number', help='The grey levels wanted: the smallest cell giving them.'),
-        Param('count', ('--count',), 'choice', default='n2+1', choices=('n2+1', 'n2'), help="An N x N cell's levels: n2+1 (0..N^2 dots on) or n2."),
-        Param('dots', ('--dots',), 'choice', default='whole', choices=('whole', 'exact'), help='The cell from dpi / lpi: whole dots (rounded down) or exact.'),
-        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('dpi', 'lpi', 'cell', 'levels', 'count', 'dots'), ignore_unknown=True),
     ('color',): Spec(('color',), 'color', (
         Param('model', (), 'text', required=True, metavar='MODEL', help='The model given: rgb, cmy, hsv, hsi, grey.'),
         Param('values', (), 'text', nargs=-1, required=True, metavar='VALUES...', help='Its components: R G B (0..255; 0..1 with --unit), C M Y (0..1), H S V or H S I (H in degrees, S, V, I in 0..1), or one grey level Y.'),
@@ -220,7 +211,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('topic', 'list_'), ignore_unknown=False, no_args_is_help=True),
     ('image', 'ramp'): Spec(('image', 'ramp'), 'image_ramp', (
         Param('size', ('--size',), 'text', default='8', help='M x N: M rows, N columns (8x8, or 8 for square).'),
-        Param('levels', ('--levels', '-L'), 'number', help='Gray levels L (default 8).'),
+        Param('levels', ('--levels', '-L'), 'number', default=8, help='Gray levels L (default 8).'),
         S['fmt'],
         Param('grid', ('--grid',), 'flag', default=True, secondary=('--no-grid',), help='Draw the shaded text picture.'),
         S['output'], S['brief'], S['exact'], S['explain'],
@@ -250,16 +241,16 @@ SPECS: dict[tuple[str, ...], Spec] = {
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('r', 'center', 'radius', 't_range', 'samples'), ignore_unknown=True),
     ('parametric', 'ellipse'): Spec(('parametric', 'ellipse'), 'parametric_ellipse', (
-        Param('center', ('--center',), 'number', nargs=2, default=(Fraction(0, 1), Fraction(0, 1)), help='Centre (xc, yc).'),
-        Param('a', ('--a',), 'number', default=Fraction(2, 1), help='Semi-axis a (along x).'),
-        Param('b', ('--b',), 'number', default=Fraction(1, 1), help='Semi-axis b (along y).'),
+        Param('center', ('--center',), 'number', nargs=2, default=(0, 0), help='Centre (xc, yc).'),
+        Param('a', ('--a',), 'number', default=2, help='Semi-axis a (along x).'),
+        Param('b', ('--b',), 'number', default=1, help='Semi-axis b (along y).'),
         Param('t_range', ('--t-range',), 'text', nargs=2, help="Parameter range; numbers or formulas such as 2*pi (default: the curve's own)."),
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('center', 'a', 'b', 't_range', 'samples'), ignore_unknown=True),
     ('parametric', 'parabola'): Spec(('parametric', 'parabola'), 'parametric_parabola', (
-        Param('vertex', ('--vertex',), 'number', nargs=2, default=(Fraction(0, 1), Fraction(0, 1)), help='Vertex (h, k).'),
-        Param('a', ('--a',), 'number', default=Fraction(1, 1), help='Coefficient a in y = k + a t^2.'),
+        Param('vertex', ('--vertex',), 'number', nargs=2, default=(0, 0), help='Vertex (h, k).'),
+        Param('a', ('--a',), 'number', default=1, help='Coefficient a in y = k + a t^2.'),
         Param('t_range', ('--t-range',), 'text', nargs=2, help="Parameter range; numbers or formulas such as 2*pi (default: the curve's own)."),
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
@@ -307,7 +298,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('words', 'window', 'method'), ignore_unknown=True),
     ('dither', 'threshold'): Spec(('dither', 'threshold'), 'dither_threshold', (
         Param('image', ('--image', '-i'), 'text', required=True, help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: '10 200; 60 90'."),
-        Param('top', ('--top',), 'number', default=Fraction(255, 1), help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
+        Param('top', ('--top',), 'number', default=255, help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
         Param('at', ('--at', '-t'), 'number', help='The threshold T (default TOP / 2).'),
         Param('compare', ('--compare',), 'choice', default='>=', choices=('>', '>='), help='A pixel is on when its value is > or >= the threshold.'),
         S['fmt'],
@@ -319,28 +310,16 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('top', ('--top',), 'number', default=Fraction(255, 1), help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
         Param('matrix', ('--matrix', '-m'), 'text', default='2', help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
         Param('compare', ('--compare',), 'choice', default='>', choices=('>', '>='), help='A pixel is on when its value is > or >= the threshold.'),
-        Param('scale', ('--scale',), 'choice', default='raw', choices=('raw', 'centered', 'given'), help="Thresholds: raw (D x TOP / n^2), centered ((D + 1/2) x TOP / n^2), or given (the matrix's entries are thresholds already, in the image's units)."),
+        Param('scale', ('--scale',), 'choice', default='raw', choices=('raw', 'centered'), help='Thresholds: raw (D x TOP / n^2) or centered ((D + 1/2) x TOP / n^2).'),
         Param('base', ('--base',), 'choice', default='0', choices=('0', '1'), help="The matrix's entries count from 0 or from 1."),
         Param('transpose', ('--transpose',), 'flag', default=False, help='Index the matrix by x first (its transpose).'),
         S['fmt'],
         Param('grid', ('--grid',), 'flag', default=True, secondary=('--no-grid',), help='Draw the shaded text picture.'),
         S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('image', 'top', 'matrix', 'compare', 'scale', 'base', 'transpose'), ignore_unknown=True),
-    ('dither', 'lookup'): Spec(('dither', 'lookup'), 'dither_lookup', (
-        Param('pixels', (), 'text', nargs=-1, required=True, metavar='X Y ...', help="The pixels' screen positions: x across, y down (row y), in pairs."),
-        Param('matrix', ('--matrix', '-m'), 'text', default='4', help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
-        Param('top', ('--top',), 'number', default=Fraction(255, 1), help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
-        Param('value', ('--value',), 'number', help="The pixels' intensity: each is on when it passes T."),
-        Param('count', ('--count',), 'choice', default='0', choices=('0', '1'), help='Screen positions count from 0 or from 1.'),
-        Param('compare', ('--compare',), 'choice', default='>', choices=('>', '>='), help='A pixel is on when its value is > or >= the threshold.'),
-        Param('scale', ('--scale',), 'choice', default='raw', choices=('raw', 'centered', 'given'), help="Thresholds: raw (D x TOP / n^2), centered ((D + 1/2) x TOP / n^2), or given (the matrix's entries are thresholds already, in the image's units)."),
-        Param('base', ('--base',), 'choice', default='0', choices=('0', '1'), help="The matrix's entries count from 0 or from 1."),
-        Param('transpose', ('--transpose',), 'flag', default=False, help='Index the matrix by x first (its transpose).'),
-        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('pixels', 'matrix', 'top', 'value', 'count', 'compare', 'scale', 'base', 'transpose'), ignore_unknown=True),
     ('dither', 'floyd-steinberg'): Spec(('dither', 'floyd-steinberg'), 'dither_diffusion', (
         Param('image', ('--image', '-i'), 'text', required=True, help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: '10 200; 60 90'."),
-        Param('top', ('--top',), 'number', default=Fraction(255, 1), help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
+        Param('top', ('--top',), 'number', default=255, help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
         Param('kernel', ('--kernel',), 'choice', default='floyd-steinberg', choices=('floyd-steinberg', 'simple', 'jarvis-judice-ninke', 'stucki', 'burkes', 'sierra', 'two-row-sierra', 'sierra-lite', 'one-dimensional'), help='floyd-steinberg (7, 3, 5, 1)/16, simple (3, 3, 2)/8, jarvis-judice-ninke /48, stucki /42, burkes /32, sierra /32, two-row-sierra /16, sierra-lite /4, or one-dimensional (all to the next pixel).'),
         Param('order', ('--order',), 'choice', default='raster', choices=('raster', 'serpentine'), help='raster: every row left to right; serpentine: alternate rows.'),
         Param('arithmetic', ('--arithmetic',), 'choice', default='exact', choices=('exact', 'integer'), help='Error shares kept exact or truncated to integers.'),
@@ -353,15 +332,15 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('char', 'bitmap'): Spec(('char', 'bitmap'), 'char_bitmap', (
         Param('char', (), 'text', required=True, metavar='CHAR', help='The character (A-Z, 0-9).'),
         Param('rows', ('--rows', '-r'), 'text', help="The glyph's rows, top first, separated by '/': 01110/10001/... (default: the 5 x 7 font's)."),
-        Param('at', ('--at',), 'number', nargs=2, help="The character's bottom-left corner (default 0 0)."),
-        Param('scale', ('--scale',), 'number', help='Scale factor, 1..16 (default 1).'),
+        Param('at', ('--at',), 'number', nargs=2, default=(0, 0), help="The character's bottom-left corner (default 0 0)."),
+        Param('scale', ('--scale',), 'number', default=1, help='Scale factor, 1..16 (default 1).'),
         Param('bit_order', ('--bit-order',), 'choice', default='msb', choices=('msb', 'lsb'), help="The glyph's bytes: a row's leftmost pixel the most significant bit (msb, the usual font: a row reads as written) or the least (lsb)."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('char', 'rows', 'at', 'scale', 'bit_order'), ignore_unknown=True),
     ('char', 'stroke'): Spec(('char', 'stroke'), 'char_stroke', (
         Param('char', (), 'text', required=True, metavar='CHAR', help='The character (A-Z, 0-9).'),
-        Param('at', ('--at',), 'number', nargs=2, help="The character's bottom-left corner (default 0 0)."),
-        Param('scale', ('--scale',), 'number', help='Scale factor, 1..16 (default 1).'),
+        Param('at', ('--at',), 'number', nargs=2, default=(0, 0), help="The character's bottom-left corner (default 0 0)."),
+        Param('scale', ('--scale',), 'number', default=1, help='Scale factor, 1..16 (default 1).'),
         Param('algo', ('--algo', '-a'), 'choice', default='bresenham', choices=('bresenham', 'dda'), help='The line algorithm each stroke is drawn with.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('char', 'at', 'scale', 'algo'), ignore_unknown=True),
@@ -421,7 +400,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('samples', ('--samples', '-n'), 'integer', help='N x N samples (supersample, 1-16, default 4) or sub-pixels (subpixel, default 3) per pixel.'),
         Param('levels', ('--levels', '-L'), 'integer', default=8, help='Intensity levels L (level = round(I (L - 1))).'),
         Param('ends', ('--ends',), 'choice', choices=('full', 'coverage'), help="wu: end points at full intensity (full, the default) or weighted by the part of the end column the line covers (coverage, as Wikipedia's pseudocode)."),
-        Param('width', ('--width', '-w'), 'number', default=Fraction(1, 1), help="area, supersample: the line's width w (default 1 pixel)."),
+        Param('width', ('--width', '-w'), 'number', default=1, help="area, supersample: the line's width w (default 1 pixel)."),
         Param('across', ('--across',), 'choice', default='minor', choices=('minor', 'perpendicular'), help='area, supersample: w measured along the minor axis (minor, the default: a parallelogram) or perpendicular to the line (a rectangle).'),
         Param('subgrid', ('--subgrid',), 'choice', choices=('span', 'centre'), help="subpixel: the sub-pixel line from P1's first sub-pixel over every sub-column of the end pixels (span, the default) or between the end pixels' centre sub-pixels (centre)."),
         Param('divide', ('--divide',), 'choice', choices=('n', 'n2'), help="subpixel: intensity c / n (n, the default: n levels above zero) or c / n^2 (n2: the fraction of the pixel's sub-pixels)."),
@@ -429,7 +408,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('x1', 'y1', 'x2', 'y2', 'method', 'samples', 'levels', 'ends', 'width', 'across', 'subgrid', 'divide'), ignore_unknown=True),
     ('antialias', 'circle'): Spec(('antialias', 'circle'), 'antialias_circle', (
         Param('r', (), 'number', required=True, metavar='r'),
-        Param('center', ('--center', '-c'), 'number', nargs=2, help='Centre (xc, yc), integers; default (0, 0).'),
+        Param('center', ('--center', '-c'), 'number', nargs=2, default=(0, 0), help='Centre (xc, yc), integers; default (0, 0).'),
         Param('method', ('--method', '-m'), 'choice', default='area', choices=('area', 'supersample', 'wu', 'subpixel'), help="area: exact covered area; supersample: N x N samples; wu: Wu's line; subpixel: Hearn & Baker's Bresenham on sub-pixels (wu and subpixel: lines only)."),
         Param('samples', ('--samples', '-n'), 'integer', default=4, help='Supersampling: N x N samples per pixel (1-16).'),
         Param('levels', ('--levels', '-L'), 'integer', default=8, help='Intensity levels L (level = round(I (L - 1))).'),
@@ -443,5 +422,26 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('rule', ('--rule',), 'choice', default='even-odd', choices=('even-odd', 'nonzero'), help='Fill rule: even-odd (alternate) or nonzero winding.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('vertices', 'method', 'samples', 'levels', 'rule'), ignore_unknown=True),
+    ('printer',): Spec(('printer',), 'printer', (
+        Param('dpi', ('--dpi',), 'number', help="The printer's dots per inch."),
+        Param('lpi', ('--lpi',), 'number', help="The halftone screen's lines (cells) per inch."),
+        Param('cell', ('--cell',), 'number', help="The halftone cell's side N, in dots."),
+        Param('levels', ('--levels',), 'number', help='The grey levels wanted: the smallest cell giving them.'),
+        Param('count', ('--count',), 'choice', default='n2+1', choices=('n2+1', 'n2'), help="An N x N cell's levels: n2+1 (0..N^2 dots on) or n2."),
+        Param('dots', ('--dots',), 'choice', default='whole', choices=('whole', 'exact'), help='The cell from dpi / lpi: whole dots (rounded down) or exact.'),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('dpi', 'lpi', 'cell', 'levels', 'count', 'dots'), ignore_unknown=True),
+    ('dither', 'lookup'): Spec(('dither', 'lookup'), 'dither_lookup', (
+        Param('pixels', (), 'text', nargs=-1, required=True, metavar='X Y ...', help="The pixels' screen positions: x across, y down (row y), in pairs."),
+        Param('matrix', ('--matrix', '-m'), 'text', default='4', help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
+        Param('top', ('--top',), 'number', default=Fraction(255, 1), help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
+        Param('value', ('--value',), 'number', help="The pixels' intensity: each is on when it passes T."),
+        Param('count', ('--count',), 'choice', default='0', choices=('0', '1'), help='Screen positions count from 0 or from 1.'),
+        Param('compare', ('--compare',), 'choice', default='>', choices=('>', '>='), help='A pixel is on when its value is > or >= the threshold.'),
+        Param('scale', ('--scale',), 'choice', default='raw', choices=('raw', 'centered', 'given'), help="Thresholds: raw (D x TOP / n^2), centered ((D + 1/2) x TOP / n^2), or given (the matrix's entries are thresholds already, in the image's units)."),
+        Param('base', ('--base',), 'choice', default='0', choices=('0', '1'), help="The matrix's entries count from 0 or from 1."),
+        Param('transpose', ('--transpose',), 'flag', default=False, help='Index the matrix by x first (its transpose).'),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('pixels', 'matrix', 'top', 'value', 'count', 'compare', 'scale', 'base', 'transpose'), ignore_unknown=True),
 }
 # fmt: on

@@ -13,7 +13,7 @@ from ..core import lazy
 from ..core.checks import InputError
 from ..core.records import Solution
 from ..display import Answer
-from .answering import solve
+from .answering import answered
 from .grammar_table import NOT_QUESTIONS, SPECS
 from .parser import HELP, CommandLine, parse, split
 from .words import students
@@ -85,11 +85,14 @@ def marking_line(question: str | Sequence[str]) -> CommandLine:
         raise InputError(f"question: {err}", getattr(err, "param", None)) from None
 
 
-def marking_answer(line: CommandLine) -> Solution:
-    """The answer of a parsed question to mark against; one without a step table is an
-    :class:`~scanconv.core.checks.InputError`."""
+def marking_answer(
+    line: CommandLine, formats: Sequence[str] = (), *, document: bool = False
+) -> Solution:
+    """The answer of a parsed question to mark against (:func:`answered`, its budget that of
+    ``formats`` and of a ``document``); one without a step table, or beyond the budget, is an
+    :class:`~scanconv.core.checks.InputError` worded ``question: ...``."""
     try:
-        solution = solve(line)
+        _, solution = answered(line, formats, document=document)
     except ValueError as err:
         raise InputError(f"question: {err}", getattr(err, "param", None)) from None
     if not solution.columns and marking_table.table_model_for(solution) is None:

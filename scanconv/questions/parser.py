@@ -7,40 +7,18 @@ from __future__ import annotations
 
 import shlex
 from collections.abc import Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
-from .grammar import Param, Spec
+from .grammar import CommandLine, Param, Spec
 from .grammar_table import NOT_QUESTIONS, SHARED, SPECS
 from .limits import check_question_size
 from .words import UsageError, coordinate, integer, no_such_option, number, usage_message
 from .words import words_of as _words_of
 
+__all__ = ["HELP", "CommandLine", "parse", "split"]
+
 HELP = ("--help", "-h", "--version")
 """Words that ask the command line for something other than an answer."""
-
-
-class CommandLine(NamedTuple):
-    """A parsed question: the command, its arguments and its display options."""
-
-    spec: Spec
-    arguments: dict[str, Any]
-    """The answer's parameters by the command's names, their values converted (a choice as
-    its text, a number as a Fraction, a list of points as a list)."""
-    display: dict[str, Any]
-    """The shared output options (grid, origin, brief, exact, format, output, svg, png), as
-    given or by default: how the answer is shown, not what it is."""
-    words: tuple[str, ...]
-    """The question's words, as given."""
-
-    @property
-    def path(self) -> tuple[str, ...]:
-        """The command's words: ``("parametric", "circle")``."""
-        return self.spec.path
-
-    @property
-    def function(self) -> str:
-        """The command's function name (``parametric_circle``), as the work budget knows it."""
-        return self.spec.function
 
 
 def split(question: str | Sequence[str]) -> list[str]:

@@ -110,15 +110,15 @@ def no_such_option(name: str, possibilities: list[str] | None = None) -> UsageEr
     return UsageError(message)
 
 
-def number(text: str | Fraction) -> Fraction:
+def number(text: str | Fraction | int) -> Fraction:
     """An exact number (integer, decimal or a/b); a default passes through. A word that
     looks like an option is "No such option"; any other bad word a ``ValueError``.
 
     >>> number("5/2"), number(Fraction(1))
     (Fraction(5, 2), Fraction(1, 1))
     """
-    if isinstance(text, Fraction):
-        return text
+    if isinstance(text, Fraction | int):
+        return Fraction(text)
     try:
         return parse_number(text)
     except ValueError:

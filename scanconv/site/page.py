@@ -92,9 +92,8 @@ def solve_page(question: str) -> dict[str, Any]:
         limits.check_question_size(question)  # before it is split into words
         line = questions.parse(_words(question))
         options = questions.shown_with(line, "the page")
-        for fmt in (Format.html, Format.json):  # the page's two formats, before any work
-            _check_budget(line, fmt)
-        solution = questions.solve(line)
+        # the library's one pipeline: the budget of the page's two formats before any work
+        solution = _answered(line, (Format.html, Format.json))
         chunks = list(render(solution, Format.html, options))
         html = "".join(c for c in chunks if isinstance(c, str))
         notes = [c.message for c in chunks if isinstance(c, Notice)]  # what the page leaves out
@@ -119,11 +118,12 @@ def solve_page(question: str) -> dict[str, Any]:
     }
 
 
-def _check_budget(line: parser.CommandLine, fmt: Format) -> None:
-    """:func:`scanconv.questions.check_budget`, its refusal ending with the formats of the
-    command line that would print the answer (the page shows html and json only)."""
+def _answered(line: parser.CommandLine, formats: tuple[Format, ...]) -> Any:
+    """:func:`scanconv.questions.answered` in ``formats``, a refusal by the budget ending
+    with the formats of the command line that would print the answer (the page shows html
+    and json only)."""
     try:
-        questions.check_budget(line, fmt)
+        return questions.answered(line, formats)[1]
     except ValueError as err:
         ways = [w for w in getattr(err, "ways", ()) if w not in ("html", "json", "raster")]
         if not ways:
