@@ -310,7 +310,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('top', ('--top',), 'number', default=Fraction(255, 1), help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
         Param('matrix', ('--matrix', '-m'), 'text', default='2', help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
         Param('compare', ('--compare',), 'choice', default='>', choices=('>', '>='), help='A pixel is on when its value is > or >= the threshold.'),
-        Param('scale', ('--scale',), 'choice', default='raw', choices=('raw', 'centered'), help='Thresholds: raw (D x TOP / n^2) or centered ((D + 1/2) x TOP / n^2).'),
+        Param('scale', ('--scale',), 'choice', default='raw', choices=('raw', 'centered', 'given'), help="Thresholds: raw (D x TOP / n^2), centered ((D + 1/2) x TOP / n^2), or given (the matrix's entries are thresholds already, in the image's units)."),
         Param('base', ('--base',), 'choice', default='0', choices=('0', '1'), help="The matrix's entries count from 0 or from 1."),
         Param('transpose', ('--transpose',), 'flag', default=False, help='Index the matrix by x first (its transpose).'),
         S['fmt'],
