@@ -617,7 +617,7 @@ def test_any_table_is_marked_or_refused_in_one_line(text, question):
 
 @pytest.mark.slow  # a real process
 def test_check_echoes_the_question_as_typed(tmp_path: Path) -> None:
-    """Issue 39, item 8: a dither question came back as ``--image 10 200_ 60 90``, its quotes
+    """A dither question came back as ``--image 10 200_ 60 90``, its quotes
     lost and its ``;`` made ``_``. The echo is the question a shell reads back to the same
     words (quoted where a word holds a space), in the text formats and in the JSON notes."""
     import shlex
@@ -637,7 +637,7 @@ def test_check_echoes_the_question_as_typed(tmp_path: Path) -> None:
 
 @pytest.mark.slow  # a real process
 def test_the_notes_topic_9_circle_marked_against_bresenham_is_named(tmp_path: Path) -> None:
-    """Issue 39, item 8: a student who works the notes' Topic 9 circle (p = 1 - r, worked here
+    """A student who works the notes' Topic 9 circle (p = 1 - r, worked here
     by hand for r = 5: p = -4, -1, 4, 3, 6) and is marked against Bresenham's d0 = 3 - 2r is
     told which form it is, by the notes' own name for it."""
     from tests.helpers import run_process

@@ -243,7 +243,7 @@ def _notes_general_circle(r: int) -> dict[int, int]:
 
 
 def test_compare_circle_sets_the_notes_general_method_beside_bresenham() -> None:
-    """Issue 39, item 8: question 30 of the notes ("Compare general method and Bresenham's
+    """Question 30 of the notes ("Compare general method and Bresenham's
     algorithm for circle drawing", docs/cheatsheet.md: ``compare circle 6 --theory``) asks
     for the general method, which the side-by-side table left out. Its column is the notes'
     box run by hand (r = 6: y = 6, 5, 5, 5, 4), and the rows where it differs from the

@@ -253,7 +253,7 @@ def test_a_one_row_image_and_a_one_value_matrix():
 
 
 def test_floyd_steinberg_carries_are_in_one_form() -> None:
-    """Issue 39, item 8: the carried column printed ``43.75`` in one row and ``49455/1024`` in
+    """The carried column printed ``43.75`` in one row and ``49455/1024`` in
     another. Every share is now in the form of the table's other values: 3 decimals (half up),
     a whole number as it is. The shares are worked by hand: e = 100 shares 7/16, 5/16, 1/16 as
     43.75, 31.25, 6.25; then e = 143.75 - 255 = -111.25; then 100 - 111.25 * 7/16."""

@@ -1,5 +1,5 @@
 """Steps typed one at a time (the site's "Test yourself") are marked as ``check`` marks the
-same steps written as a student's CSV (issue 39, item 3: one account of a slip).
+same steps written as a student's CSV (one account of a slip).
 
 :func:`scanconv.marking.mark.mark_steps` is what the site's page asks for each step. For
 every method with a marking model, every single slip (each field of each step made wrong in

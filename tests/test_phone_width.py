@@ -46,7 +46,7 @@ def test_the_page_fits_a_phone_and_long_working_lines_scroll(
             assert line["overflow"] == "auto" and line["right"] <= PHONE, line
         if argv == ANSWERS[0]:  # not vacuous: this page's working does not fit in 390 px
             assert [w["scroll"] > w["client"] for w in wide].count(True) >= 1
-        # a cue where a formula is cut at its box's edge, and only there (issue 39, item 7)
+        # a cue where a formula is cut at its box's edge, and only there
         cues = page.evaluate(CUES)
         assert cues and all(c["cue"] == (c["scroll"] > c["client"] + 1) for c in cues), cues
         assert [c["cue"] for c in cues].count(True) == len(wide)

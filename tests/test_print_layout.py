@@ -50,7 +50,7 @@ def _golden_latex() -> dict[str, str]:
 
 @pytest.mark.slow
 def test_every_golden_cases_latex_sets_without_an_overfull_box(tmp_path: Path) -> None:
-    """Issue 39, item 4: 35 golden cases' LaTeX had a line past the margin (up to 140 pt: a
+    """35 golden cases' LaTeX had a line past the margin (up to 140 pt: a
     working line of points, a formula's words, a long heading). Every case, in any format
     its golden file holds, is asked for as LaTeX and typeset from a page of its own; a case
     that fails is named by compiling it alone."""
@@ -78,7 +78,7 @@ _TABLE = re.compile(r"Step table|8-way symmetry about")
 
 @pytest.mark.slow
 def test_a_grid_is_on_the_page_of_its_table(tmp_path: Path) -> None:
-    """Issue 39, item 4: the key's first question had its step table on page 1 and its pixel
+    """The key's first question had its step table on page 1 and its pixel
     list and grid alone on page 2 (and the general circle's the same on pages 5 and 6). Every
     page that shows a grid shows, above it, the table it draws (the heading of the step
     table or of the symmetry table set right before the pixel list), and each grid's page
@@ -99,7 +99,7 @@ def test_a_grid_is_on_the_page_of_its_table(tmp_path: Path) -> None:
 
 
 def test_notes_are_a_bulleted_list(tmp_path: Path) -> None:
-    """Issue 39, item 8: the LaTeX notes ran together as paragraphs. Each note of the answer
+    """The LaTeX notes ran together as paragraphs. Each note of the answer
     (the Solution's own notes) starts its own bullet in the PDF."""
     from scanconv import _api
 

@@ -149,7 +149,7 @@ def test_a_wrong_bresenham_line_is_marked_with_follow_through(quiz):
 
 
 def test_the_rules_own_pixel_after_a_wrong_decision_word_is_right(quiz):
-    """The walkthrough's step (issue 39, item 3): p0 = 0, decision E, and the right pixel
+    """The walkthrough's step: p0 = 0, decision E, and the right pixel
     (3, 3). The pixel is the rule's own step, so the decision word is the one slip, as
     ``check`` judges it: the pixel is not called wrong (it was: 1 of 3 marks)."""
     q = quiz(*LINE)

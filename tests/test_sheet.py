@@ -209,7 +209,7 @@ def test_one_bad_line_in_200_writes_nothing(tmp_path: Path) -> None:
 
 
 def test_every_bad_line_of_a_file_is_reported_at_once(tmp_path: Path) -> None:
-    """Issue 39, item 8: ``sheet`` named only the first bad line, so a teacher fixed a file one
+    """``sheet`` named only the first bad line, so a teacher fixed a file one
     run at a time. Now each bad line, of the file's syntax or of its question, has its own
     line on stderr, in the file's order; exit 2, nothing on stdout, nothing written."""
     text = (

@@ -1,4 +1,4 @@
-"""The site on a phone, as a student uses it (issue 39, items 3 and 7), in Debian's headless
+"""The site on a phone, as a student uses it, in Debian's headless
 Chromium through Playwright: the site built and served as in ``tests/test_site_browser.py``
 (its fixtures), one page at 390 x 844 px for the module (one cold start of Pyodide).
 

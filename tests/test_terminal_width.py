@@ -107,7 +107,7 @@ def test_the_terminal_shows_the_working_unless_brief(monkeypatch: pytest.MonkeyP
 
 @pytest.mark.parametrize("columns", [60, 80, 120])
 def test_a_wrapped_note_keeps_its_indent(columns: int, monkeypatch: pytest.MonkeyPatch) -> None:
-    """Issue 39, item 8: the "Conventions" note holds a bracket group longer than the line;
+    """The "Conventions" note holds a bracket group longer than the line;
     it ran past the screen's edge and rich broke it at column 0. Each of the note's lines
     now fits the width and every line after its first keeps the note's indent; its words are
     the note's words, in order (none lost to the wrapping)."""
