@@ -491,7 +491,7 @@ def compare_circles(
     --------
     >>> sol = compare_circles(10)
     >>> [c.key for c in sol.tables[0].columns]
-    ['x', 'y_exact', 'midpoint', 'bresenham', 'polynomial', 'trig', 'symmetric-dda', 'reason']
+    ['x', 'y_exact', 'midpoint', 'bresenham', 'polynomial', 'general', 'trig', 'symmetric-dda', 'reason']
     >>> [row[2] for row in sol.tables[0].rows()]  # the midpoint method's y for x = 0 .. 7
     [10, 10, 10, 10, 9, 9, 8, 7]
     """

@@ -359,10 +359,10 @@ def compare_circles(r: Number, theory: bool = False) -> Solution:
     >>> sol = compare_circles(5)
     >>> for row in sol.tables[0].rows():
     ...     print(row[0], *row[2:])
-    0 5 5 5 5 5 None
-    1 5 5 5 5 5 None
-    2 5 5 5 5 5, 4 SDDA twice
-    3 4 4 4 4 4, 3 SDDA twice
+    0 5 5 5 5 5 5 None
+    1 5 5 5 4 5 5 general off
+    2 5 5 5 4 5 5, 4 general off, SDDA twice
+    3 4 4 4 3 4 4, 3 general off, SDDA twice
     """
     ir = check_integer(r, "radius", negative=False, param="r")
     if ir > MAX_RADIUS:

@@ -73,7 +73,7 @@ def grid_height(solution: Solution | Document, origin: str = "bottom-left") -> f
 
     >>> from scanconv.answers.primitives.line import line_solution
     >>> round(grid_height(line_solution("bresenham", 2, 2, 10, 6)))
-    172
+    177
     """
     try:
         fig = build(solution, origin)
