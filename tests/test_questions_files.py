@@ -341,13 +341,13 @@ def test_the_grammar_is_the_command_lines_declarations() -> None:
 
 
 def test_the_grammar_is_generated_from_the_librarys_declarations() -> None:
-    from scanconv.questions import grammar
+    from scanconv.questions import generate
     from scanconv.questions.declared import COMMANDS, NOT_QUESTIONS, OUTPUTS
     from scanconv.questions.grammar_table import NOT_QUESTIONS as TABLE_OTHERS
     from scanconv.questions.grammar_table import SHARED, SPECS
 
-    assert grammar.specs() == SPECS, (
-        "run: python -m scanconv.questions.grammar > scanconv/questions/grammar_table.py"
+    assert generate.specs() == SPECS, (
+        "run: python -m scanconv.questions.generate > scanconv/questions/grammar_table.py"
     )
     assert (TABLE_OTHERS, SHARED) == (NOT_QUESTIONS, OUTPUTS)
     assert COMMANDS.keys() <= SPECS.keys()

@@ -108,6 +108,27 @@ def inside(
     )
 
 
+# the frame buffer's address, retrace and screen-size options (declared once, here)
+_FB_DPI = Opt("--dpi", help="Dots per inch: W and H are the screen's size in inches.")
+_FB_PIXEL = Opt("--pixel", metavar="X Y", help="The pixel whose frame-buffer address is wanted.")
+_FB_ADDRESS = Opt("--address", help="A byte address: the pixel stored there.")
+_FB_BASE = Opt("--base", help="The frame buffer's first byte (default 0).", show_default=False)
+_FB_MAJOR = Opt(
+    "--major",
+    help="The buffer holds rows (row-major) or columns.",
+    choices=("row", "column"),
+)
+_FB_ROW0 = Opt(
+    "--row0",
+    help="y = 0 is the top scan line or the bottom one.",
+    choices=("top", "bottom"),
+)
+_FB_COUNT = Opt("--count", help="x and y counted from 0 or from 1.", choices=("0", "1"))
+_FB_HRETRACE = Opt("--hretrace", help="Horizontal retrace time, seconds (with --refresh).")
+_FB_VRETRACE = Opt("--vretrace", help="Vertical retrace time, seconds.")
+_FB_PIXEL_TIME = Opt("--pixel-time", help="Seconds a pixel gets: the frame rate follows.")
+
+
 @answers
 def framebuffer(
     width: Annotated[NumberLike, Arg("W, pixels across.", "W")],
@@ -129,52 +150,16 @@ def framebuffer(
     interlaced: Annotated[
         bool, Opt("--interlaced", help="Interlaced: --refresh counts fields.")
     ] = False,
-    dpi: Annotated[
-        NumberLike | None,
-        Opt("--dpi", help="Dots per inch: W and H are the screen's size in inches."),
-    ] = None,
-    pixel: Annotated[
-        PointLike | None,
-        Opt("--pixel", metavar="X Y", help="The pixel whose frame-buffer address is wanted."),
-    ] = None,
-    address: Annotated[
-        NumberLike | None, Opt("--address", help="A byte address: the pixel stored there.")
-    ] = None,
-    base: Annotated[
-        NumberLike,
-        Opt("--base", help="The frame buffer's first byte (default 0).", show_default=False),
-    ] = 0,
-    major: Annotated[
-        MajorName,
-        Opt(
-            "--major",
-            help="The buffer holds rows (row-major) or columns.",
-            choices=("row", "column"),
-        ),
-    ] = "row",
-    row0: Annotated[
-        RowZeroName,
-        Opt(
-            "--row0",
-            help="y = 0 is the top scan line or the bottom one.",
-            choices=("top", "bottom"),
-        ),
-    ] = "top",
-    count: Annotated[
-        DitherCountName | Literal[0, 1],
-        Opt("--count", help="x and y counted from 0 or from 1.", choices=("0", "1")),
-    ] = "0",
-    hretrace: Annotated[
-        NumberLike | None,
-        Opt("--hretrace", help="Horizontal retrace time, seconds (with --refresh)."),
-    ] = None,
-    vretrace: Annotated[
-        NumberLike | None, Opt("--vretrace", help="Vertical retrace time, seconds.")
-    ] = None,
-    pixel_time: Annotated[
-        NumberLike | None,
-        Opt("--pixel-time", help="Seconds a pixel gets: the frame rate follows."),
-    ] = None,
+    dpi: Annotated[NumberLike | None, _FB_DPI] = None,
+    pixel: Annotated[PointLike | None, _FB_PIXEL] = None,
+    address: Annotated[NumberLike | None, _FB_ADDRESS] = None,
+    base: Annotated[NumberLike, _FB_BASE] = 0,
+    major: Annotated[MajorName, _FB_MAJOR] = "row",
+    row0: Annotated[RowZeroName, _FB_ROW0] = "top",
+    count: Annotated[DitherCountName | Literal[0, 1], _FB_COUNT] = "0",
+    hretrace: Annotated[NumberLike | None, _FB_HRETRACE] = None,
+    vretrace: Annotated[NumberLike | None, _FB_VRETRACE] = None,
+    pixel_time: Annotated[NumberLike | None, _FB_PIXEL_TIME] = None,
 ) -> Solution:
     """Frame-buffer arithmetic (``scanconv framebuffer``).
 

@@ -3,7 +3,7 @@ parameters, read back from the click commands typer builds, in the form of
 :mod:`scanconv.questions.grammar`.
 
 The library parses questions without typer from its table (generated from the library's
-declarations: ``python -m scanconv.questions.grammar``); this module reads the same table out
+declarations: ``python -m scanconv.questions.generate``); this module reads the same table out
 of the command line as it is built, so a test (``tests/test_questions_files.py``) fails when
 the command line and the questions would read a word differently.
 """

@@ -4,7 +4,7 @@
 :data:`COMMANDS` names, for each command, that function and the output options it takes;
 everything else (its arguments, options, defaults, choices, help) is read from the function.
 The command line registers its commands from here (:mod:`scanconv.cli.declared`), the question
-grammar is generated from here (``python -m scanconv.questions.grammar``) and a question is
+grammar is generated from here (``python -m scanconv.questions.generate``) and a question is
 answered by calling the function (:func:`scanconv.questions.answering.solve`).
 """
 

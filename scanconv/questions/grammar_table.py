@@ -1,5 +1,5 @@
 """The grammar of every question command: generated from the library's declarations
-by ``python -m scanconv.questions.grammar`` (do not edit: a test compares)."""
+by ``python -m scanconv.questions.generate`` (do not edit: a test compares)."""
 
 from fractions import Fraction
 
