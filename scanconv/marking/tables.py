@@ -61,6 +61,17 @@ def table_models_for(solution: Solution) -> list[TableModel]:
                 )
             )
         return verdicts
+    if (solution.primitive, solution.algorithm) == ("clip", "sutherland-hodgman"):
+        return [
+            PlainRowsTable(
+                t.title.split(";")[0],
+                ("method", "point_out"),
+                "Each polygon edge's case and output stand alone: the stage's input vertices "
+                "are the table's own (the window edge it names); the stage the student wrote is "
+                "the one whose polygon edges the student's are.",
+            )
+            for t in solution.tables
+        ]
     one = table_model_for(solution)
     if one is not None and solution.primitive == "characters":
         return [one, *_glyph_tables(solution)]
@@ -246,7 +257,21 @@ def mark_table(
         keys = _match(headers, _answer_columns(solution, m))
         return sum(k in keys for k in m.marked)
 
-    model = max(models, key=matched)
+    def agreed(m: TableModel) -> int:
+        """How many of the student's unmarked cells (the inputs they copied: a stage's
+        polygon edges) are that table's own: which of several like tables they wrote."""
+        columns, answer = _answer(solution, m)
+        keys = _match(headers, columns)
+        return sum(
+            canon(m.read(k, v)) == row.get(k)
+            for (_, cells), row in zip(raw, answer, strict=False)
+            for k, v in zip(keys, cells, strict=False)
+            if k is not None and k not in m.marked
+        )
+
+    best = max(map(matched, models))
+    tied = [m for m in models if matched(m) == best]
+    model = tied[0] if len(tied) == 1 else max(tied, key=agreed)
     columns, answer = _answer(solution, model)
     keys = _match(headers, columns)
     marked = [k for k in model.marked if k in keys]

@@ -95,7 +95,7 @@ def marking_answer(
         _, solution = answered(line, formats, document=document)
     except ValueError as err:
         raise InputError(f"question: {err}", getattr(err, "param", None)) from None
-    if not solution.columns and marking_table.table_model_for(solution) is None:
+    if not solution.columns and not marking_table.table_models_for(solution):
         raise InputError(f"the question {' '.join(line.words[:3])!r} has no step table to mark")
     return solution
 
