@@ -282,6 +282,31 @@ class FrameBufferTable(TableModel):
         return exp
 
 
+class PixelAddressTable(TableModel):
+    """A pixel's frame-buffer address: its bit offset from the student's own k (k b), its byte
+    address from the student's own bit offset (base + offset / 8)."""
+
+    table = "The pixel's address"
+    marked = ("value",)
+    rules = (
+        "The bit offset follows from the row's k (k x b), the byte address and the bit in it "
+        "from the offset (base + floor(offset / 8), offset mod 8)."
+    )
+
+    def __init__(self, bits: int, base: int) -> None:
+        self.bits, self.base = bits, base
+
+    def expect(self, i: int, answer: Sequence[Row], own: Sequence[Row]) -> Row:
+        exp = dict(answer[i])
+        above = own[i - 1].get("value") if i else None
+        if i == 1 and isinstance(above, Fraction):
+            exp["value"] = above * self.bits
+        elif i >= 2 and isinstance(offset := own[1].get("value"), Fraction):
+            byte, bit = divmod(int(offset), 8)  # from the student's own bit offset
+            exp["value"] = Fraction(self.base + byte if i == 2 else bit)
+        return exp
+
+
 class InsideVerdictsTable(TableModel):
     """The inside-outside verdicts: the even-odd verdict from the row's own crossing count,
     the nonzero verdict from its own winding number (a point on the boundary: the answer's)."""

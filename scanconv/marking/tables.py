@@ -35,6 +35,7 @@ from .table_models import (
     LineStyleTable,
     MidpointClipTable,
     NLLTable,
+    PixelAddressTable,
     PlainRowsTable,
     Row,
     TableModel,
@@ -73,6 +74,8 @@ def table_models_for(solution: Solution) -> list[TableModel]:
             for t in solution.tables
         ]
     one = table_model_for(solution)
+    if one is not None and solution.primitive == "framebuffer" and "base" in solution.data:
+        return [one, PixelAddressTable(int(solution.data["b"]), int(solution.data["base"]))]
     if one is not None and solution.primitive == "characters":
         return [one, *_glyph_tables(solution)]
     return [] if one is None else [one]

@@ -244,6 +244,25 @@ def _address(
     return out
 
 
+def _address_table(k: int, b: int, base: int) -> Table:
+    """The pixel's address as a table a student writes and ``check`` marks: its index k, its
+    bit offset k b from the buffer's start, its byte address base + floor(k b / 8) and, when a
+    pixel is less than a byte, the bit inside that byte (k b mod 8)."""
+    byte, bit = divmod(k * b, 8)
+    rows: tuple[tuple[str, int], ...] = (
+        ("k", k),
+        ("bit offset", k * b),
+        ("byte address", base + byte),
+    )
+    if b % 8:
+        rows += (("bit in byte", bit),)
+    return Table(
+        "The pixel's address",
+        (heading("quantity", r"\text{quantity}", role="label"), heading("value", r"\text{value}")),
+        lambda: rows,
+    )
+
+
 def _retrace(
     w: int, h: int, refresh: Number, hr: Number | None, vr: Number | None
 ) -> list[Quantity]:
@@ -444,6 +463,10 @@ def framebuffer_solution(
             if t is not None:
                 yield worked(key, t, f"{name} = {fmt_short(t)} \\text{{ s}}")
 
+    tables: tuple[Table, ...] = (_size_table(total),)
+    if pixel is not None:
+        tables += (_address_table(data["index"], b, base),)
+        data |= {"b": b, "base": base}
     return Solution(
         primitive="framebuffer",
         algorithm="arithmetic",
@@ -451,6 +474,6 @@ def framebuffer_solution(
         given=tuple(given()),
         derived=tuple(derived),
         notes=_notes(named if pixel is not None or address is not None else None),
-        walk=Walk(tables=(_size_table(total),)),
+        walk=Walk(tables=tables),
         data=data,
     )

@@ -1,6 +1,8 @@
-"""``check`` marks a Sutherland-Hodgman stage table, written by hand as a student writes it:
-the stage is the one whose polygon edges the student copied (a triangle window's C3C1 edge, a
-rectangle's left edge), and each row's case and output stand alone."""
+"""``check`` marks the tables of issue 41's clipping and frame-buffer questions, written by
+hand as a student writes them: a Sutherland-Hodgman stage (the one whose polygon edges the
+student copied: a triangle window's C3C1 edge, a rectangle's left edge; each row's case and
+output stand alone) and a pixel's frame-buffer address (with follow-through from the
+student's own k)."""
 
 from __future__ import annotations
 
@@ -71,3 +73,34 @@ def test_a_rectangles_left_edge_as_a_student_writes_it(tmp_path: Path) -> None:
     question = ("clip", "polygon", "0", "0", "4", "0", "0", "4", "--window", "1", "1", "3", "3")
     r = run_process("check", str(path), "--", *question)
     assert r.code == 0 and "2/3" in r.out.replace(" ", ""), (r.out, r.err)
+
+
+FRAMEBUFFER = ("framebuffer", "640", "480", "8", "--pixel", "340", "150")
+
+
+def test_a_pixels_address_follows_through(tmp_path: Path) -> None:
+    """HyperGraph's question: 640 x 480 at 8 bits, pixel (340, 150), row-major from the top,
+    from 0: k = 150 x 640 + 340 = 96,340, the bit offset 96,340 x 8 = 770,720, the byte
+    address 0 + 770,720 / 8 = 96,340. A student who slips in k (96,430) and carries it on
+    loses that row only."""
+    right = "quantity,value\nk,96340\nbit offset,770720\nbyte address,96340\n"
+    data = _check(tmp_path, right, FRAMEBUFFER)
+    assert (data["score"], data["out_of"]) == (3, 3)
+    carried = "quantity,value\nk,96430\nbit offset,771440\nbyte address,96430\n"
+    data = _check(tmp_path, carried, FRAMEBUFFER)
+    assert (data["score"], data["out_of"]) == (2, 3)
+    assert data["first_error"].startswith("Row 1")
+    wrong_byte = right.replace("byte address,96340", "byte address,770720")
+    assert _check(tmp_path, wrong_byte, FRAMEBUFFER)["score"] == 2
+
+
+def test_a_bit_inside_its_byte(tmp_path: Path) -> None:
+    """16 x 2 at 1 bit a pixel, pixel (3, 1): k = 1 x 16 + 3 = 19, the bit offset 19, so the
+    byte 19 div 8 = 2 and the bit 19 mod 8 = 3 in it; a byte written as 19 / 8 is wrong."""
+    question = ("framebuffer", "16", "2", "1", "--pixel", "3", "1")
+    right = "quantity,value\nk,19\nbit offset,19\nbyte address,2\nbit in byte,3\n"
+    assert (_check(tmp_path, right, question)["score"]) == 4
+    assert (
+        _check(tmp_path, right.replace("byte address,2", "byte address,2.375"), question)["score"]
+        == 3
+    )
