@@ -49,6 +49,10 @@ TABLE_RULES = (
 )
 
 
+_STAGE_COLUMNS = ("point_edge", "method", "point_out")
+"""A clipping stage's columns: each polygon edge, its case and its output."""
+
+
 def table_models_for(solution: Solution) -> list[TableModel]:
     """The tables of ``solution`` a student's table may be (the inside-outside test: the
     verdicts, or one point's edge tests); the one whose columns the student's headings
@@ -62,7 +66,8 @@ def table_models_for(solution: Solution) -> list[TableModel]:
                 )
             )
         return verdicts
-    if (solution.primitive, solution.algorithm) == ("clip", "sutherland-hodgman"):
+    stages = [t for t in solution.tables if tuple(c.key for c in t.columns) == _STAGE_COLUMNS]
+    if stages and not solution.columns:  # a polygon clipped stage by stage (Sutherland-Hodgman)
         return [
             PlainRowsTable(
                 t.title.split(";")[0],
@@ -71,7 +76,7 @@ def table_models_for(solution: Solution) -> list[TableModel]:
                 "are the table's own (the window edge it names); the stage the student wrote is "
                 "the one whose polygon edges the student's are.",
             )
-            for t in solution.tables
+            for t in stages
         ]
     one = table_model_for(solution)
     if one is not None and solution.primitive == "framebuffer" and "base" in solution.data:
