@@ -110,7 +110,7 @@ def test_test_yourself_on_the_site_marks_one_slip_as_check_does(
         frame.locator("input[name=pixel]").fill(px)
         frame.get_by_role("button", name="Check").click()
         said = frame.locator(".sc-tfeed .sc-texp")
-        said.wait_for()
+        said.wait_for(timeout=120_000)
         text = frame.locator(".sc-tfeed").inner_text()
         feedback.append(text)
         shown.append(said.inner_text().replace("\u2212", "-").split(": ", 1)[1])
@@ -226,6 +226,9 @@ def test_every_marked_method_on_the_site_scores_a_slip_as_check(
     frame.locator("[data-selftest]").click()
     shown = []
     for i, step in enumerate(steps):
+        # the step's form, shown once the page has the step (a hang guard: the site's Python
+        # can take a while to judge the first step on a loaded machine)
+        frame.locator("input[name=pixel]").wait_for(state="visible", timeout=120_000)
         if frame.locator("input[name=p]").is_visible():
             frame.locator("input[name=p]").fill(step["exact"] if dda else step["p"])
         if frame.locator("select[name=decision]").is_visible():
