@@ -7,9 +7,10 @@ code is 0000), so a segment along an edge or touching a corner is kept.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from enum import Enum
 from fractions import Fraction
+from functools import partial
 from typing import NamedTuple
 
 from ..core.numeric import Number, normalize
@@ -287,28 +288,46 @@ def sutherland_hodgman(vertices: Sequence[Point], window: Rect) -> tuple[SHStage
     current = tuple(vertices)
     for edge in EDGES:
         value = boundary(edge, window)
-        rows = []
-        out: list[Point] = []
-        n = len(current)
-        for i in range(n):
-            v1, v2 = current[i], current[(i + 1) % n]
-            in1, in2 = inside(v1, edge, window), inside(v2, edge, window)
-            emit: tuple[Point, ...]
-            if in1 and in2:
-                case, emit = Case.IN_IN, (v2,)
-            elif in1:
-                cut = crossing(v1, v2, edge, value)
-                case, emit = Case.IN_OUT, (() if cut == v1 else (cut,))
-            elif in2:
-                cut = crossing(v1, v2, edge, value)
-                case, emit = Case.OUT_IN, ((v2,) if cut == v2 else (cut, v2))
-            else:
-                case, emit = Case.OUT_OUT, ()
-            rows.append(SHRow(v1, v2, case, emit))
-            out.extend(emit)
-        stages.append(SHStage(edge, current, tuple(rows), tuple(out)))
-        current = tuple(out)
+        rows, out = stage_rows(
+            current,
+            partial(inside, edge=edge, window=window),
+            partial(crossing, edge=edge, value=value),
+        )
+        stages.append(SHStage(edge, current, rows, out))
+        current = out
     return tuple(stages)
+
+
+def stage_rows(
+    current: Sequence[Point],
+    is_inside: Callable[[Point], bool],
+    cut: Callable[[Point, Point], Point],
+) -> tuple[tuple[SHRow, ...], tuple[Point, ...]]:
+    """One Sutherland–Hodgman stage, against one edge of any window: each polygon edge
+    V1 -> V2's case and output (in -> in: V2; in -> out: the crossing; out -> in: the crossing
+    and V2; out -> out: nothing; a crossing that *is* the vertex is output once), and the
+    output vertices. ``is_inside`` tests a point against the edge, ``cut`` is where a polygon
+    edge crosses it."""
+    rows = []
+    out: list[Point] = []
+    n = len(current)
+    for i in range(n):
+        v1, v2 = current[i], current[(i + 1) % n]
+        in1, in2 = is_inside(v1), is_inside(v2)
+        emit: tuple[Point, ...]
+        if in1 and in2:
+            case, emit = Case.IN_IN, (v2,)
+        elif in1:
+            at = cut(v1, v2)
+            case, emit = Case.IN_OUT, (() if at == v1 else (at,))
+        elif in2:
+            at = cut(v1, v2)
+            case, emit = Case.OUT_IN, ((v2,) if at == v2 else (at, v2))
+        else:
+            case, emit = Case.OUT_OUT, ()
+        rows.append(SHRow(v1, v2, case, emit))
+        out.extend(emit)
+    return tuple(rows), tuple(out)
 
 
 def polygon_area(vertices: Sequence[Point]) -> Fraction:

@@ -16,7 +16,7 @@ from typing import NamedTuple
 
 from ..core.checks import InputError
 from ..core.numeric import Number, normalize
-from .clipping import Case, Point, SHRow, polygon_area
+from .clipping import Point, SHRow, polygon_area, stage_rows
 
 MAX_WINDOW_VERTICES = 64
 """Most vertices of a clipping window (one stage, a table, per window edge)."""
@@ -87,7 +87,7 @@ def convex_window(vertices: Sequence[Point]) -> tuple[tuple[Point, ...], bool]:
         if a == b or side(c, WindowEdge("", a, b)) < 0:
             raise InputError(
                 "the window is not convex (Sutherland-Hodgman clips against a convex window; "
-                "use --method weiler-atherton for any polygon)",
+                "Weiler-Atherton clips against any polygon)",
                 "window",
             )
     return ccw, area < 0
@@ -102,26 +102,8 @@ def window_edges(window: Sequence[Point]) -> tuple[WindowEdge, ...]:
 
 
 def _stage(current: tuple[Point, ...], edge: WindowEdge) -> WindowStage:
-    rows: list[SHRow] = []
-    out: list[Point] = []
-    n = len(current)
-    for i in range(n):
-        v1, v2 = current[i], current[(i + 1) % n]
-        in1, in2 = side(v1, edge) >= 0, side(v2, edge) >= 0
-        emit: tuple[Point, ...]
-        if in1 and in2:
-            case, emit = Case.IN_IN, (v2,)
-        elif in1:
-            cut = crossing(v1, v2, edge)
-            case, emit = Case.IN_OUT, (() if cut == v1 else (cut,))
-        elif in2:
-            cut = crossing(v1, v2, edge)
-            case, emit = Case.OUT_IN, ((v2,) if cut == v2 else (cut, v2))
-        else:
-            case, emit = Case.OUT_OUT, ()
-        rows.append(SHRow(v1, v2, case, emit))
-        out.extend(emit)
-    return WindowStage(edge, current, tuple(rows), tuple(out))
+    rows, out = stage_rows(current, lambda p: side(p, edge) >= 0, lambda a, b: crossing(a, b, edge))
+    return WindowStage(edge, current, rows, out)
 
 
 def sutherland_hodgman_window(
