@@ -14,7 +14,7 @@ from typing import Any, NamedTuple
 from ...algorithms.clipping import Point as NumPoint
 from ...algorithms.clipping import Rect
 from ...algorithms.radical import ROOTS, Radical, Scalar, approx, round_half_up_exact, simplify
-from ...algorithms.transform import Matrix, Point, outline, rect_outline
+from ...algorithms.transform import Matrix, Point, outline
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt, fmt_short, normalize, round_half_up
 from ...core.records import PixelFigure, Quantity, Table
@@ -230,33 +230,17 @@ def point_quantity(key: str, p: NumPoint) -> Quantity:
 def clip_figure(
     kept: Sequence[NumPoint], window: Rect, others: Sequence[NumPoint], what: str
 ) -> tuple[PixelFigure, ...]:
-    """The window's border as ``o`` and a clipped shape's outline as ``#`` (rounded half up)."""
-    win = (
-        round_half_up(window[0]),
-        round_half_up(window[1]),
-        round_half_up(window[2]),
-        round_half_up(window[3]),
-    )
-    shape = [(round_half_up(x), round_half_up(y)) for x, y in kept]
-    box = grid_bbox(
-        [(win[0], win[1]), (win[2], win[3])],
-        shape,
-        [(round_half_up(x), round_half_up(y)) for x, y in others],
-    )
-    legend = f"# = {what}, o = window edge, @ = both"
-    title = f"The window (o) and the {what} (#), rounded half up:"
-    if not kept:
-        title = f"The window (o); the {what} is empty:"
-    if not fits(box):
-        return ()
-    return (PixelFigure(tuple(outline(shape)), tuple(rect_outline(win)), box, legend, title),)
+    """The window's border as ``o`` and a clipped shape's outline as ``#`` (rounded half up):
+    :func:`window_figure` of the rectangle's corners."""
+    x0, y0, x1, y1 = window
+    return window_figure(kept, [(x0, y0), (x1, y0), (x1, y1), (x0, y1)], others, what)
 
 
 def window_figure(
     kept: Sequence[NumPoint], window: Sequence[NumPoint], others: Sequence[NumPoint], what: str
 ) -> tuple[PixelFigure, ...]:
     """A polygon window's border as ``o`` and a clipped shape's outline as ``#`` (rounded half
-    up): :func:`clip_figure` for a window of any shape."""
+    up), for a window of any shape (a rectangle's: :func:`clip_figure`)."""
     win = [(round_half_up(x), round_half_up(y)) for x, y in window]
     shape = [(round_half_up(x), round_half_up(y)) for x, y in kept]
     box = grid_bbox(win, shape, [(round_half_up(x), round_half_up(y)) for x, y in others])
