@@ -78,7 +78,7 @@ TARGETS: dict[str, Target] = {
     "scanconv/marking/table_models.py": Target(MARK_TESTS, "check"),
     "scanconv/marking/tables.py": Target(MARK_TESTS, "check"),
     "scanconv/marking/student_table.py": Target(MARK_TESTS, "check"),
-    "scanconv/render/text.py": Target(
+    "scanconv/render/mappings/text.py": Target(
         ("tests/test_streaming.py", *ESCAPE_TESTS),
         "md",
         only=("table_lines", "md_cell", "_md_heading", "md_text", "note_md", "prose_md", "md_code"),
@@ -87,17 +87,17 @@ TARGETS: dict[str, Target] = {
     "scanconv/core/tex_escape.py": Target(
         ("tests/test_tex_escape.py", *ESCAPE_TESTS), "tex", escaper=True
     ),
-    "scanconv/render/gift.py": Target(
+    "scanconv/render/documents/gift.py": Target(
         ("tests/test_lms_escaping.py", "tests/test_lms.py", *ESCAPE_TESTS),
         only=("_SPECIAL", "gift_plain", "gift_text"),
         escaper=True,
     ),
-    "scanconv/render/moodle.py": Target(
+    "scanconv/render/documents/moodle.py": Target(
         ("tests/test_lms_escaping.py", "tests/test_lms.py", *ESCAPE_TESTS),
         only=("_XML_ILLEGAL", "moodle_text", "cdata", "_CLOZE_SPECIAL", "_cloze_answer"),
         escaper=True,
     ),
-    "scanconv/render/html.py": Target(
+    "scanconv/render/mappings/html.py": Target(
         ("tests/test_html.py", *ESCAPE_TESTS), kinds=("call",), escaper=True
     ),
 }
@@ -133,7 +133,7 @@ EQUIVALENT: dict[tuple[str, str, str], str] = {
         "nothing; with fewer, vertices[:1] = vertices[:2]."
     ),
     (
-        "scanconv/render/html.py",
+        "scanconv/render/mappings/html.py",
         'listed = ⟦esc(", ".join(fmt_pixel(p)',
         '(", ".join(fmt_pixel(p) for p in st.pixels[:MAX_PIXEL_LIST]))',
     ): (
@@ -141,14 +141,14 @@ EQUIVALENT: dict[tuple[str, str, str], str] = {
         "list holds no character HTML escapes: esc() is the identity on it."
     ),
     (
-        "scanconv/render/html.py",
+        "scanconv/render/mappings/html.py",
         'more = ⟦esc(f", ',
         '(f", \\u2026 ({count - MAX_PIXEL_LIST:,} more)" if count > MAX_PIXEL_LIST else "")',
     ): (
         "_pixels(): ', … (N more)' with N an integer written with commas holds no character "
         "HTML escapes."
     ),
-    ("scanconv/render/html.py", "⟦esc(block.heading)⟧", "(block.heading)"): (
+    ("scanconv/render/mappings/html.py", "⟦esc(block.heading)⟧", "(block.heading)"): (
         "question_html(): Question.heading is 'Question N' or 'Question N (M marks)' of two "
         "integers: nothing HTML escapes."
     ),
@@ -210,13 +210,13 @@ REPORT: tuple[tuple[str, str, str, str], ...] = (
     ),
     (
         "R1",
-        "scanconv/render/text.py",
+        "scanconv/render/mappings/text.py",
         '" | ".join(escape(c) for c in cells)',
         '" | ".join(c for c in cells)',
     ),
     (
         "R6",
-        "scanconv/render/moodle.py",
+        "scanconv/render/documents/moodle.py",
         """_CLOZE_SPECIAL = re.compile(r\"\"\"[&<>"'{}~#\\\\]\"\"\")""",
         """_CLOZE_SPECIAL = re.compile(r\"\"\"[&<>{}~#\\\\]\"\"\")""",
     ),

@@ -36,11 +36,11 @@ from .render import Format, Notice, Options, render
 from .render.budget import check_rows_in_memory, check_work
 
 if TYPE_CHECKING:
-    from .render import grid as text_grid
-    from .render import html
+    from .render.figures import grid as text_grid
+    from .render.mappings import html
 else:  # the text grid and the notebook's page: only when asked for
-    text_grid = lazy.module("scanconv.render.grid")
-    html = lazy.module("scanconv.render.html")
+    text_grid = lazy.module("scanconv.render.figures.grid")
+    html = lazy.module("scanconv.render.mappings.html")
 
 P = ParamSpec("P")
 
@@ -138,7 +138,7 @@ class Answer(Solution):
 
     def _repr_html_(self) -> str:
         """The interactive step-through page as a notebook fragment: its own unique id, its
-        style scoped to it, its keys bound to it (see :func:`scanconv.render.html.notebook_html`)."""
+        style scoped to it, its keys bound to it (see :func:`scanconv.render.mappings.html.notebook_html`)."""
         self.check_budget(Format.html)
         return html.notebook_html(self)
 

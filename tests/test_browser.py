@@ -409,7 +409,7 @@ def test_a_comparison_steps_its_methods_together(opened):
 def test_a_page_of_several_answers_steps_the_one_last_clicked(browser, tmp_path):
     """What ``scanconv sheet --format html`` builds on: several answers, one page, one keyboard."""
     from scanconv.answers.primitives.line import line_solution
-    from scanconv.render.html import html_document
+    from scanconv.render.mappings.html import html_document
 
     target = tmp_path / "key.html"
     answers = [

@@ -41,7 +41,7 @@ from scanconv.marking.models import (
 )
 from scanconv.marking.student_table import Cell, field_of, parse_text, read_table
 from scanconv.render import formats
-from scanconv.render.marking import neutral
+from scanconv.render.documents.scores import neutral
 
 from .helpers import assert_refused, run
 

@@ -30,11 +30,11 @@ from scanconv.document import (
 )
 from scanconv.document.blocks import Block
 from scanconv.render import Format, Notice, Options, render
-from scanconv.render.html import HTML
-from scanconv.render.latex import LATEX
-from scanconv.render.stepper import stepping
-from scanconv.render.terminal import RICH
-from scanconv.render.text import MARKDOWN, PLAIN
+from scanconv.render.html.stepper import stepping
+from scanconv.render.mappings.html import HTML
+from scanconv.render.mappings.latex import LATEX
+from scanconv.render.mappings.terminal import RICH
+from scanconv.render.mappings.text import MARKDOWN, PLAIN
 
 BLOCKS = Block.__args__  # type: ignore[attr-defined]
 

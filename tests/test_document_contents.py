@@ -14,8 +14,8 @@ from rich.cells import cell_len
 
 from scanconv.document import Contents, Entry
 from scanconv.render import Options
-from scanconv.render.sheet import Question, Sheet, contents_block, contents_document
-from scanconv.render.terminal import RICH
+from scanconv.render.documents.sheet import Question, Sheet, contents_block, contents_document
+from scanconv.render.mappings.terminal import RICH
 
 from .external import pandoc, pdftotext, typeset
 from .helpers import run

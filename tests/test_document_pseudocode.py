@@ -21,9 +21,9 @@ from scanconv.answers.primitives.line import line_solution
 from scanconv.core.records import Code, Solution
 from scanconv.document import Document, Pixels, Pseudocode, Table, Title, document
 from scanconv.render import Format, Notice, Options, render
-from scanconv.render.latex import tt_text
-from scanconv.render.lms import gap_tables
-from scanconv.render.stepper import stepping
+from scanconv.render.documents.lms import gap_tables
+from scanconv.render.html.stepper import stepping
+from scanconv.render.mappings.latex import tt_text
 
 from .external import batch, pandoc, pdftotext, typeset
 from .helpers import run

@@ -28,7 +28,7 @@ import typer
 from scanconv.cli import app
 from scanconv.core.records import Solution
 from scanconv.render import formats
-from scanconv.render import grid as gridmod
+from scanconv.render.figures import grid as gridmod
 
 from .cli_vocabulary import DOCUMENTS, NOT_WALKED
 from .external import Typeset, batch, overfull, pandoc_with_warnings, typeset, typeset_each
@@ -169,7 +169,7 @@ def test_markdown_survives_exactly(tmp_path: Path, name: str) -> None:
     formulas = len(solution.given) + len(solution.derived) + sum(len(c) for c in tables)
     formulas += sum(math for n in solution.notes for math, _ in note_segments(n))  # $...$
     from scanconv.render.cells import prose_math
-    from scanconv.render.text import all_tables
+    from scanconv.render.mappings.text import all_tables
 
     cells = (c for _, _, rows in all_tables(solution) for row in rows() for c in row)
     formulas += sum(math for c in cells for math, _ in prose_math(c))  # x_inc in a cell
@@ -184,7 +184,7 @@ def test_markdown_survives_exactly(tmp_path: Path, name: str) -> None:
         expected = gridmod.render_grid(solution.pixels(), solution.bbox, marks=solution.marks)
         assert html.pre[0].rstrip("\n").splitlines() == expected
     elif solution.figures:
-        from scanconv.render.text import figure_text
+        from scanconv.render.mappings.text import figure_text
 
         drawn = figure_text(solution.figures[0], "bottom-left")
         assert html.pre[0].rstrip("\n").splitlines()[: len(drawn)] == drawn

@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from scanconv.render import formats
-from scanconv.render.latex import _cell
+from scanconv.render.mappings.latex import _cell
 from tests.external import pandoc, typeset
 from tests.helpers import run
 from tests.test_print import Visible

@@ -23,7 +23,7 @@ from scanconv.algorithms.lines import bresenham, dda
 from scanconv.answers.primitives.line import line_solution
 from scanconv.core.ideal import IdealCircle
 from scanconv.core.records import Column, Plot, Solution, Step, Walk
-from scanconv.render import figure
+from scanconv.render.figures import figure
 
 from .helpers import run
 

@@ -12,7 +12,7 @@ import pytest
 
 from scanconv.cli.sheet import answer_questions, read_questions
 from scanconv.render import EXTENSIONS, FORMATS, Format, formats, load
-from scanconv.render.sheet import Answered, sheet_document
+from scanconv.render.documents.sheet import Answered, sheet_document
 
 from .helpers import assert_refused, run
 
@@ -150,7 +150,7 @@ def test_a_key_document_renders_its_question_then_its_answer(fmt: Format) -> Non
 
     from scanconv.document import Question, Title
     from scanconv.render import Options, render
-    from scanconv.render.sheet import key_document
+    from scanconv.render.documents.sheet import key_document
 
     (a,) = _answered()
     doc = key_document(a, 3)
@@ -173,7 +173,7 @@ def test_the_sheet_key_is_the_question_blocks_through_the_mappings() -> None:
     """A markdown key is, question by question, the key document rendered by the markdown
     format: the same bytes, so a format's sheet adds only its sections and title."""
     from scanconv.render import Options, render
-    from scanconv.render.sheet import key_document
+    from scanconv.render.documents.sheet import key_document
 
     answered = _answered("[2] line 0 0 3 1\ncircle 2\n")
     sheet = read_questions("[2] line 0 0 3 1\ncircle 2\n", "q.txt")
@@ -190,9 +190,9 @@ def test_the_sheet_key_is_the_question_blocks_through_the_mappings() -> None:
 
 def test_the_question_heading_is_escaped_by_each_format() -> None:
     from scanconv.document import Question
-    from scanconv.render.html import question_html
-    from scanconv.render.latex import LATEX
-    from scanconv.render.text import MARKDOWN, PLAIN
+    from scanconv.render.mappings.html import question_html
+    from scanconv.render.mappings.latex import LATEX
+    from scanconv.render.mappings.text import MARKDOWN, PLAIN
 
     block = Question(2, 1, "a <b> & $c$ _d_ \u202e", "scanconv line 0 0 3 1 --algo dda", 2)
     html = question_html(block)

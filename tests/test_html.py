@@ -15,9 +15,10 @@ from pathlib import Path
 import pytest
 
 from scanconv.core.records import Column, Plot, Quantity, Solution, Step, Table, Walk
-from scanconv.render import Format, Options, render, stepper
-from scanconv.render import html as htmlmod
-from scanconv.render.page_assets import CSS, JS
+from scanconv.render import Format, Options, render
+from scanconv.render.html import stepper
+from scanconv.render.html.page_assets import CSS, JS
+from scanconv.render.mappings import html as htmlmod
 
 from .cli_vocabulary import VOCABULARY, annotation, commands, options
 from .helpers import assert_refused, run
@@ -462,7 +463,7 @@ def test_options_reach_the_page():
 )
 def test_anti_aliased_pages_draw_each_pixel_in_its_grey(args):
     """The page shows intensities as grey levels, the level the JSON answer gives."""
-    from scanconv.render.figure import grey_of
+    from scanconv.render.figures.figure import grey_of
 
     data = json.loads(run(*args, "--format", "json").out)
     levels: dict[tuple[int, int], int] = {}
@@ -537,7 +538,7 @@ def test_a_page_over_a_huge_extent_stays_a_page(argv):
 
 def test_a_questions_wording_and_command_are_escaped():
     from scanconv.document.blocks import Question
-    from scanconv.render.html import question_html
+    from scanconv.render.mappings.html import question_html
 
     q = Question(2, 3, wording="Is p < 0 & x > y?", command="scanconv sheet '<q>.txt'")
     assert question_html(q) == (
@@ -550,7 +551,7 @@ def test_a_questions_wording_and_command_are_escaped():
 @pytest.mark.parametrize("linked", [True, False])
 def test_the_contents_escape_sections_and_wordings(linked):
     from scanconv.document.blocks import Contents, Entry
-    from scanconv.render.html import contents_html
+    from scanconv.render.mappings.html import contents_html
 
     block = Contents((Entry(1, "p < 0?", "Lines & <b>circles</b>"),), linked=linked)
     html = contents_html(block)
@@ -562,7 +563,7 @@ def test_the_contents_escape_sections_and_wordings(linked):
 
 def test_an_answer_sections_id_and_keys_are_attribute_escaped():
     from scanconv.answers.primitives.line import line_solution
-    from scanconv.render.html import answer_section
+    from scanconv.render.mappings.html import answer_section
 
     html = answer_section(line_solution("dda", 2, 2, 4, 3), 'a"b<c', keys='p"q')
     assert html.startswith('<section class="scanconv" id="a&quot;b&lt;c" data-keys="p&quot;q"')

@@ -25,7 +25,7 @@ import pytest
 from scanconv.algorithms.quantize import Quantizer
 from scanconv.answers.image.quantize import quantization_rows
 from scanconv.core.records import Move
-from scanconv.render.data import _plain_csv, batch_rows
+from scanconv.render.mappings.data import _plain_csv, batch_rows
 
 from .helpers import run
 

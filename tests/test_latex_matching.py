@@ -1,7 +1,7 @@
 """N1: the LaTeX renderer's math-cell test, and the student-table patterns, in one pass.
 
-``render/latex.py`` sets a table cell in math mode when it is one of scanconv's numbers or
-points (:func:`~scanconv.render.latex.math_cell`). Its pattern was
+``render/mappings/latex.py`` sets a table cell in math mode when it is one of scanconv's numbers or
+points (:func:`~scanconv.render.mappings.latex.math_cell`). Its pattern was
 ``(?=[-(0-9])(?:[-+*/(), ]|[0-9]+(?:\\.[0-9]+)?|sqrt|[a-z]{1,2}(?![a-z.]))+``: the ``[0-9]+``
 inside the outer ``+`` could split a run of *n* digits in 2^(n-1) ways, so a transform with
 six-digit coordinates, a sheet holding it, and a student file named with 32 digits never
@@ -33,7 +33,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scanconv.marking import student_table
-from scanconv.render import latex
+from scanconv.render.mappings import latex
 from tests.helpers import run_limited
 
 if sys.version_info >= (3, 11):
@@ -203,7 +203,7 @@ def test_math_cell_pattern_takes_every_run_whole() -> None:
 @settings(max_examples=800, deadline=None)
 @given(CELLS)
 def test_at_most_one_piece_matches_at_any_place(text: str) -> None:
-    """At every place of a cell at most one piece (:data:`~scanconv.render.latex.MATH_TOKENS`)
+    """At every place of a cell at most one piece (:data:`~scanconv.render.mappings.latex.MATH_TOKENS`)
     matches: with each piece matching in one way, the backtracking matcher has one choice at
     each place, so it tries each place of the cell once (its work grows with the length)."""
     tokens = [re.compile(t) for t in latex.MATH_TOKENS]
@@ -374,9 +374,9 @@ def _old_keep_spaces(m: re.Match[str]) -> str:
 
 @pytest.mark.slow
 def test_text_edges_unchanged() -> None:
-    """``render/mathml.py``'s ``\\text{...}`` edges (``( *)([^{}]*?)( *)`` was cubic in a run
+    """``render/html/mathml.py``'s ``\\text{...}`` edges (``( *)([^{}]*?)( *)`` was cubic in a run
     of spaces): the same TeX as the old substitution on every string of up to six pieces."""
-    from scanconv.render import mathml
+    from scanconv.render.html import mathml
 
     for n in range(7):
         for pieces in itertools.product([" ", "a", "{", "}", "\\text{"], repeat=n):
@@ -388,7 +388,7 @@ def test_text_edges_unchanged() -> None:
 def test_text_edges_long_run_of_spaces() -> None:
     """A ``\\text{`` with 100,000 spaces and no closing brace is left as it is (the old
     pattern tried every split of the spaces)."""
-    from scanconv.render import mathml
+    from scanconv.render.html import mathml
 
     tex = "\\text{" + " " * 100_000 + "x"
     assert mathml._TEXT_EDGES.sub(mathml._keep_spaces, tex) == tex

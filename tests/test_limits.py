@@ -44,15 +44,15 @@ DOCUMENTED = {f"{m}.{n}": value for value, m, n in ROW.findall(DOC)}
 #: part, and docs/html.md lists them).
 NOT_INPUT_LIMITS = {
     "algorithms.raster._INT64_MAX",
-    "render.html.MAX_PIXEL_LIST",
-    "render.html.MAX_TABLE_CELLS",
-    "render.html.MAX_TABLE_COLUMNS",
-    "render.stepgrid.MAX_FIGURE_CELLS",
-    "render.stepper.MAX_PIXELS",
-    "render.stepper.MAX_STEPS",
-    "render.stepper.MAX_TABLE_ROWS",
-    "render.selftest.MAX_QUESTIONS",  # the test-yourself mode asks the rows the page writes
-    "render.lms.MAX_GAPS",  # a quiz question of more blanks is an essay (docs/lms.md)
+    "render.mappings.html.MAX_PIXEL_LIST",
+    "render.mappings.html.MAX_TABLE_CELLS",
+    "render.mappings.html.MAX_TABLE_COLUMNS",
+    "render.html.stepgrid.MAX_FIGURE_CELLS",
+    "render.html.stepper.MAX_PIXELS",
+    "render.html.stepper.MAX_STEPS",
+    "render.html.stepper.MAX_TABLE_ROWS",
+    "render.html.selftest.MAX_QUESTIONS",  # the test-yourself mode asks the rows the page writes
+    "render.documents.lms.MAX_GAPS",  # a quiz question of more blanks is an essay (docs/lms.md)
 }
 
 SHEETS = ROOT / "tests" / "data" / "sheet"  # question files beyond the sheet's limits
@@ -218,7 +218,9 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "algorithms.circles.SDDA_MAX_RADIUS": [
         (["circle", "16384", "--method", "symmetric-dda"], "16383")
     ],
-    "render.figure.MAX_CELLS": [(["line", "0", "0", "198", "0", "--svg", "FIGURE"], "201 x 3")],
+    "render.figures.figure.MAX_CELLS": [
+        (["line", "0", "0", "198", "0", "--svg", "FIGURE"], "201 x 3")
+    ],
     "algorithms.polygon.MAX_VERTICES": [
         (["polygon", *("0", "0") * 1001], "at most 1000 polygon vertices"),
         (["antialias", "polygon", *("0", "0") * 1001], "at most 1000 polygon vertices"),
@@ -291,7 +293,10 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
 NOTED = {
     "core.records.MAX_GRID_CELLS": (["line", "0", "0", "98", "0", "-f", "plain"], "101 x 3 cells"),
     # a grid beyond the drawn figure's limit is listed, not drawn (tests/test_print.py)
-    "render.tikz.MAX_FIGURE_CELLS": (["line", "0", "0", "98", "0", "-f", "latex"], "101 x 3"),
+    "render.figures.tikz.MAX_FIGURE_CELLS": (
+        ["line", "0", "0", "98", "0", "-f", "latex"],
+        "101 x 3",
+    ),
 }
 
 #: A limit of the MCP server's tools, not of a command line: where its refusal is tested.
@@ -410,7 +415,7 @@ def test_exactly_at_each_limit_is_accepted():
     from scanconv.answers.primitives.circle import circle_solution
     from scanconv.answers.primitives.line import line_solution
     from scanconv.core import expr, numeric
-    from scanconv.render import figure
+    from scanconv.render.figures import figure
 
     assert numeric.parse_number(str(numeric.COORD_LIMIT)) == 10**9
     assert numeric.parse_number("-" + str(numeric.COORD_LIMIT)) == -(10**9)

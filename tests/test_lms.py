@@ -27,8 +27,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from scanconv.cli.sheet import answer_questions, read_questions
-from scanconv.render.lms import MAX_GAPS, TOLERANCE, decimal_text, number_gap
-from scanconv.render.sheet import sheet_document
+from scanconv.render.documents.lms import MAX_GAPS, TOLERANCE, decimal_text, number_gap
+from scanconv.render.documents.sheet import sheet_document
 
 SCANCONV = (sys.executable, "-m", "scanconv")
 """The CLI of the Python running the tests (not whatever ``scanconv`` is first on PATH)."""
@@ -570,7 +570,7 @@ def test_the_tolerance_rule(value: Fraction) -> None:
 def test_docs_state_the_rules_the_code_uses() -> None:
     """docs/lms.md states the tolerance, the most blanks of a question and the spellings of
     a decision as the code has them."""
-    from scanconv.render.lms import MOVE_WORDS
+    from scanconv.render.documents.lms import MOVE_WORDS
 
     doc = (Path(__file__).resolve().parent.parent / "docs" / "lms.md").read_text(encoding="utf-8")
     assert f"tolerance {TOLERANCE}" in doc and f"more than {MAX_GAPS} blanks" in doc

@@ -15,9 +15,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from scanconv.core.working import visible
-from scanconv.render.gift import gift
-from scanconv.render.lms import Gap, GapTable, QuizQuestion
-from scanconv.render.moodle import cdata, cloze, moodle_text, moodle_xml
+from scanconv.render.documents.gift import gift
+from scanconv.render.documents.lms import Gap, GapTable, QuizQuestion
+from scanconv.render.documents.moodle import cdata, cloze, moodle_text, moodle_xml
 from tests.test_lms import GiftReader, cloze_blanks, documents, gift_reader, read_moodle
 
 __all__ = ["gift_reader"]  # the session fixture, used here
@@ -147,7 +147,7 @@ def test_the_escaping_corpus_in_both_quiz_formats(gift_reader: GiftReader, text:
 def test_a_cloze_answer_writes_quotes_as_references() -> None:
     # every character that could end, escape or quote the answer, or start an entity, is a
     # character reference: " is &#34;, ' is &#39;, & is &#38;, < and > are &#60; and &#62;
-    from scanconv.render.moodle import _cloze_answer
+    from scanconv.render.documents.moodle import _cloze_answer
 
     assert _cloze_answer("say \"E\" or 'NE' <b>&") == (
         "say &#34;E&#34; or &#39;NE&#39; &#60;b&#62;&#38;"
@@ -164,7 +164,7 @@ def test_a_cloze_answer_writes_quotes_as_references() -> None:
     ],
 )
 def test_gift_text_by_hand(text: str, gift: str) -> None:
-    from scanconv.render.gift import gift_text
+    from scanconv.render.documents.gift import gift_text
 
     assert gift_text(text) == gift
 
@@ -182,7 +182,7 @@ def test_moodle_text_by_hand(text: str, html: str) -> None:
 
 
 def test_a_cloze_answer_shows_unsafe_characters_as_replacement() -> None:
-    from scanconv.render.moodle import _cloze_answer
+    from scanconv.render.documents.moodle import _cloze_answer
 
     # a control character and a bidirectional override are U+FFFD, never written as they are
     assert _cloze_answer("a\x01b\u202ec") == "a\ufffdb\ufffdc"

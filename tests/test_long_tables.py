@@ -1,8 +1,8 @@
 """Long step tables, every row in every format, against a Bresenham written here.
 
-A LaTeX table over :data:`~scanconv.render.latex.KEEP_ROWS` rows is a ``longtable``; dropping
+A LaTeX table over :data:`~scanconv.render.mappings.latex.KEEP_ROWS` rows is a ``longtable``; dropping
 every row after its 16th passed the whole suite (mutation R10), as did a streamed (over
-:data:`~scanconv.render.text.BUFFER_ROWS` rows) Markdown table written without escaping its
+:data:`~scanconv.render.mappings.text.BUFFER_ROWS` rows) Markdown table written without escaping its
 cells (R1: numeric cells have nothing to escape). Here ``line 0 0 50 10`` (51 rows) and
 ``line 0 0 1500 7`` (1,501 rows, streamed) are read back from each answer format (plain, rich
 at a width, markdown, latex, html, csv, json) and each sheet format, and compared row by row
@@ -22,8 +22,9 @@ from typing import Any
 
 import pytest
 
-from scanconv.render import formats, stepper
-from scanconv.render import text as text_render
+from scanconv.render import formats
+from scanconv.render.html import stepper
+from scanconv.render.mappings import text as text_render
 from tests.helpers import run
 
 Row = tuple[str, str, str, str, str, str]
@@ -201,7 +202,7 @@ def test_every_row_in_every_format(size: str, fmt: str, monkeypatch: pytest.Monk
 
 def check_rows(fmt: str, out: str, want: list[Row]) -> None:
     """The rows of ``out`` are ``want``; an HTML page shows the first
-    :data:`~scanconv.render.stepper.MAX_TABLE_ROWS` of a longer table, says so, and lists
+    :data:`~scanconv.render.html.stepper.MAX_TABLE_ROWS` of a longer table, says so, and lists
     every pixel."""
     rows = ANSWER_FORMATS[fmt](out) if fmt in ANSWER_FORMATS else SHEET_FORMATS[fmt](out)
     if fmt == "html" and len(want) > stepper.MAX_TABLE_ROWS:

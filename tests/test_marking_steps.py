@@ -22,7 +22,7 @@ from scanconv.marking.mark import mark_steps, mark_text
 from scanconv.marking.models import DDALine, chain
 from scanconv.marking.words import expected_text
 from scanconv.questions.marking import marking_question
-from scanconv.render.selftest_marks import feedback
+from scanconv.render.html.selftest_marks import feedback
 
 QUESTIONS = (
     "line 2 2 10 6",

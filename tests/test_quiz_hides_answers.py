@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 
 from scanconv.algorithms.process_choices import LineClipMethod
 from scanconv.cli.sheet import answer_questions, read_questions
-from scanconv.render.sheet import sheet_document
+from scanconv.render.documents.sheet import sheet_document
 
 pytestmark = pytest.mark.slow
 

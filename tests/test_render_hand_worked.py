@@ -1,10 +1,10 @@
 """The renderer and escaper mutations that only a doctest killed, or that nothing killed
 (``../shared/reference/mutation-report.md``), as tests against hand-worked values:
 
-* R3, ``render/latex.py`` ``split_columns``: a table too wide for the page is set in parts,
+* R3, ``render/mappings/latex.py`` ``split_columns``: a table too wide for the page is set in parts,
   each repeating the first column; every other column is in exactly one part (``every[2:]``
   lost the second column);
-* R6, ``render/moodle.py`` ``_CLOZE_SPECIAL``: a Cloze blank's answer holding ``"`` or ``'``
+* R6, ``render/documents/moodle.py`` ``_CLOZE_SPECIAL``: a Cloze blank's answer holding ``"`` or ``'``
   writes them as character references, and Moodle's reading gives the answer back;
 * ST1, ``marking/student_table.py``: a student's number written to *n* decimals has *n* places
   (the marking's tolerance is one unit in the last place);
@@ -24,8 +24,9 @@ import pytest
 from scanconv.core.numeric import fmt_value
 from scanconv.core.records import Column
 from scanconv.marking import student_table
-from scanconv.render import latex, moodle
-from scanconv.render.lms import Gap
+from scanconv.render.documents import moodle
+from scanconv.render.documents.lms import Gap
+from scanconv.render.mappings import latex
 from tests.helpers import run
 from tests.references import midpoint_circle_ref
 
@@ -68,7 +69,7 @@ def test_wide_symmetry_table_parts_hold_every_column() -> None:
 
 
 def test_split_columns_covers_each_column_once() -> None:
-    """Straight from :func:`~scanconv.render.latex.split_columns`: with 2 to 12 wide columns
+    """Straight from :func:`~scanconv.render.mappings.latex.split_columns`: with 2 to 12 wide columns
     after the first, each part starts with the first column, and the rest, in order, are
     each in exactly one part."""
     for n in range(2, 13):

@@ -1,6 +1,6 @@
 """The "Test yourself" data of the HTML page, without a browser.
 
-The script interprets a descriptor (rules and rows, :mod:`scanconv.render.selftest`); here the
+The script interprets a descriptor (rules and rows, :mod:`scanconv.render.html.selftest`); here the
 descriptor is applied by a small interpreter written in the test, apart from the program, and
 must give back the step table the page prints: the parameter, the decision and the next pixel
 of every row, in every layout, octant and convention these methods have. Pages whose method
@@ -21,9 +21,9 @@ from scanconv.answers.primitives import circle, ellipse, line
 from scanconv.core.records import Solution
 from scanconv.document import StepTable, document
 from scanconv.render import Options
-from scanconv.render.html import answer_section, html_document, notebook_html
-from scanconv.render.selftest import selftest_data
-from scanconv.render.stepper import stepping
+from scanconv.render.html.selftest import selftest_data
+from scanconv.render.html.stepper import stepping
+from scanconv.render.mappings.html import answer_section, html_document, notebook_html
 
 from .helpers import run
 

@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 
 from scanconv.cli.sheet import QuestionError, answer_questions, read_questions
-from scanconv.render.sheet import md_text, sheet_document
+from scanconv.render.documents.sheet import md_text, sheet_document
 
 from .external import pandoc, typeset
 from .helpers import assert_refused, run
@@ -408,7 +408,7 @@ def test_the_html_worksheet_escapes_user_text_and_has_the_keys_row_counts(tmp_pa
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_html_key_holds_each_answers_section_and_escapes_user_text(tmp_path: Path) -> None:
-    from scanconv.render.html import answer_section
+    from scanconv.render.mappings.html import answer_section
 
     path = _file(tmp_path, f"title: {HOSTILE}\n> {HOSTILE}\n[2] line 2 2 10 6\ncircle 5\n")
     r = run("sheet", str(path), "-f", "html")

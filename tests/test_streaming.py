@@ -17,7 +17,7 @@ from scanconv.answers.primitives.line import line_solution
 from scanconv.cli import output as cli
 from scanconv.core.records import Solution, Step
 from scanconv.render import Format, Options, render
-from scanconv.render.text import BUFFER_ROWS
+from scanconv.render.mappings.text import BUFFER_ROWS
 
 LENGTH = 1_000_000
 
@@ -112,7 +112,7 @@ def test_a_wide_matrix_streams_a_few_rows_at_a_time(fmt):
 def test_a_long_markdown_table_escapes_its_text_cells(count):
     # the padded table (at most BUFFER_ROWS rows) and the streamed one (one more) escape the
     # same: "E|NE *" is "E\|NE \*" in a Markdown cell, and "<b>" is "\<b\>"
-    from scanconv.render.text import table_lines
+    from scanconv.render.mappings.text import table_lines
 
     rows = [[str(k), "E|NE *", "<b>"] for k in range(count)]
     lines = list(table_lines(["k", "move", "tag"], [True, False, False], rows, markdown=True))
@@ -126,7 +126,7 @@ def test_a_streamed_markdown_table_line_by_line():
     # over BUFFER_ROWS rows the table is streamed: cells unpadded between "| " and " |", the
     # rule sized by the widest cell of the buffered rows (k: "1000", 4; d: 1, at least 3):
     # "-----:" right-aligned, ":---:" centred
-    from scanconv.render.text import table_lines
+    from scanconv.render.mappings.text import table_lines
 
     rows = [[str(k), "E"] for k in range(BUFFER_ROWS + 1)]
     lines = list(table_lines(["k", "d"], [True, False], rows, markdown=True))
@@ -136,14 +136,14 @@ def test_a_streamed_markdown_table_line_by_line():
 
 def test_a_markdown_heading_keeps_its_math_and_escapes_its_bar():
     # a heading is math scanconv wrote: kept as it is but for "|", which would end the cell
-    from scanconv.render.text import _md_heading
+    from scanconv.render.mappings.text import _md_heading
 
     assert _md_heading("$|p_k|$") == "$\\|p_k\\|$"
     assert _md_heading("$x_k$") == "$x_k$"
 
 
 def test_a_code_span_shows_control_characters_as_replacement():
-    from scanconv.render.text import md_code
+    from scanconv.render.mappings.text import md_code
 
     assert md_code("a\x07b") == "`a\ufffdb`"
     assert md_code("``x") == "``` ``x ```"

@@ -13,8 +13,8 @@ from scanconv.algorithms.circles import images
 from scanconv.answers.theory.topics import theory_solution, topic, topics
 from scanconv.answers.theory.topics._build import LONGEST_CELL
 from scanconv.render import Format, render
-from scanconv.render.latex import split_columns
-from scanconv.render.text import table_rows
+from scanconv.render.mappings.latex import split_columns
+from scanconv.render.mappings.text import table_rows
 
 from .external import typeset
 from .helpers import assert_refused, run
@@ -144,7 +144,9 @@ def test_the_cli_lists_and_refuses() -> None:
 @pytest.mark.external
 @pytest.mark.slow
 def test_every_answer_compiles_with_pdflatex_without_overfull_boxes(tmp_path: Path) -> None:
-    from scanconv.render.sheet_latex import PREAMBLE  # the exam book's: \emergencystretch=3em
+    from scanconv.render.documents.sheet_latex import (
+        PREAMBLE,  # the exam book's: \emergencystretch=3em
+    )
 
     body = "\n".join(_text(theory_solution(n), Format.latex) for n in NAMES)
     doc = PREAMBLE + body + "\n\\end{document}\n"

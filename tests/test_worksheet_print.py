@@ -10,7 +10,7 @@ import subprocess
 import pytest
 
 from scanconv.cli.sheet import answer_questions, read_questions
-from scanconv.render.sheet import sheet_document
+from scanconv.render.documents.sheet import sheet_document
 
 from .external import tool, typeset
 

@@ -25,10 +25,10 @@ from .output import Output, check_paths, emit, fail, format_for_file, write_atom
 
 if TYPE_CHECKING:
     from ..marking import mark as marking
-    from ..render import marking as marking_formats
+    from ..render.documents import scores as marking_formats
 else:  # what marking a file needs: only the runs that mark one
     marking = lazy.module("scanconv.marking.mark")
-    marking_formats = lazy.module("scanconv.render.marking")
+    marking_formats = lazy.module("scanconv.render.documents.scores")
 
 #: Output options written after the question still belong to ``check`` (the question's own
 #: answer is never written): ``check a.csv -- line 2 2 10 6 -f md`` is markdown.

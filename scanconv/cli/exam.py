@@ -14,7 +14,7 @@ from typing import Annotated
 
 import typer
 
-from ..render.sheet import CONTENTS_ALONE, contents_document, sheet_document
+from ..render.documents.sheet import CONTENTS_ALONE, contents_document, sheet_document
 from .application import app
 from .options import DocumentFormatOpt, OutputOpt
 from .output import document_format, fail

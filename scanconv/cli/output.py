@@ -26,11 +26,11 @@ if TYPE_CHECKING:
 
     from rich import console as rich_console
 
-    from ..render import figure
+    from ..render.figures import figure
 else:  # each only on the path that uses it (start-up time)
     tempfile = lazy.module("tempfile")  # a file output
     rich_console = lazy.module("rich.console")  # the terminal format
-    figure = lazy.module("scanconv.render.figure")  # --svg, --png
+    figure = lazy.module("scanconv.render.figures.figure")  # --svg, --png
 
 PROG = "scanconv"
 

@@ -21,7 +21,7 @@ import typer
 
 from ..core import lazy
 from ..render import EXTENSIONS, FORMATS, formats
-from ..render.sheet import sheet_document
+from ..render.documents.sheet import sheet_document
 from .application import app
 from .options import DocumentFormatOpt, OutputOpt, integer
 from .output import check_paths, document_format, fail, note, write_all

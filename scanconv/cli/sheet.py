@@ -12,7 +12,7 @@ The API (what other commands, the exam book and the tests build on)::
         Solution, render Options) triples. The first bad question raises QuestionError with
         its line and the error scanconv would give for that command line.
     sheet_document(sheet, answered, kind, fmt, standalone=False) -> str
-        (:mod:`scanconv.render.sheet`) the whole key or worksheet, rendered in memory, so a bad
+        (:mod:`scanconv.render.documents.sheet`) the whole key or worksheet, rendered in memory, so a bad
         question never leaves a partial file.
 
 The question file (one question per line, written as scanconv's own arguments) is read by
@@ -41,7 +41,7 @@ from ..questions.files import (
 )
 from ..render import Options
 from ..render.budget import document
-from ..render.sheet import Answered, Question, Sheet, sheet_document
+from ..render.documents.sheet import Answered, Question, Sheet, sheet_document
 from .application import app
 from .budget import DocumentTooLarge, check_question
 from .options import DocumentFormatOpt, OutputOpt

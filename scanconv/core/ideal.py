@@ -2,7 +2,7 @@
 the pixel grid (a red line, circle, ellipse or sampled curve, a green control polygon).
 
 An answer lists its shapes in :attr:`~scanconv.core.records.Plot.ideal`, in drawing order; a
-figure matches each by its type (:mod:`scanconv.render.figure`, :mod:`scanconv.render.stepgrid`).
+figure matches each by its type (:mod:`scanconv.render.figures.figure`, :mod:`scanconv.render.html.stepgrid`).
 Coordinates are the answer's own numbers (ints, fractions or floats), y up.
 """
 

@@ -1,7 +1,7 @@
 """What an answer's pixels are numbered and marked with: the plotted images of a step's point
 under 4- or 8-way symmetry, the step number of every plotted pixel, what the numbers and the
 grid's ``o`` mean. Facts about the answer's structure, read once by :mod:`scanconv.document`
-(and by the figures of :mod:`scanconv.render.figure`), never guessed again by a format.
+(and by the figures of :mod:`scanconv.render.figures.figure`), never guessed again by a format.
 """
 
 from __future__ import annotations

@@ -243,7 +243,7 @@ def batch_solution(
 ) -> Solution:
     """The score sheet of a folder as a Solution for the text formats: a table of names and
     scores, each file's first error and diagnosis as a note (CSV and JSON have their own
-    writers in :mod:`scanconv.render.marking`)."""
+    writers in :mod:`scanconv.render.documents.scores`)."""
     columns = (
         heading("name", r"\text{name}"),
         heading("score", r"\text{score}"),

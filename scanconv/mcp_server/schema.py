@@ -2,7 +2,7 @@
 schema (the SDK reads these types into JSON Schema, and checks each result against it).
 
 :class:`Answer` is scanconv's stable JSON (``--format json``; docs/formats.md's "JSON output",
-:mod:`scanconv.render.data`): every answer has its head (``primitive`` .. ``columns``) and
+:mod:`scanconv.render.mappings.data`): every answer has its head (``primitive`` .. ``columns``) and
 ``steps``; ``pixels``, ``tables``, ``pseudocode`` and a command's own fields (``conventions``,
 ``layout``, a marking's ``score``) only where the answer has them. A step has ``k`` and its
 ``pixel`` always, ``p`` and ``decision`` where the method has them, and the method's own

@@ -23,7 +23,7 @@ import re
 import stat
 from collections.abc import Sequence
 
-from ..render.sheet import Question, Sheet
+from ..render.documents.sheet import Question, Sheet
 from .limits import MAX_FILE_BYTES, MAX_LINE_CHARS, check_text_size
 
 __all__ = ["MAX_FILE_BYTES", "MAX_LINE_CHARS", "MAX_QUESTIONS", "QuestionError"]

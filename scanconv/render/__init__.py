@@ -3,7 +3,7 @@
 
 :data:`FORMATS` declares every format once, single answers and documents (sheets, the exam
 book, practice sets, quiz files) alike. :func:`render` is the one dispatch point for a single
-answer's ``--format`` (:func:`scanconv.render.sheet.sheet_document` for a document's), and each
+answer's ``--format`` (:func:`scanconv.render.documents.sheet.sheet_document` for a document's), and each
 format is one mapping from the document's block types to output (``text.PLAIN``,
 ``text.MARKDOWN``, ``latex.LATEX``, ``terminal.RICH``, ``html.HTML``; csv and json in
 :mod:`.data`). Every renderer is a generator that
@@ -62,7 +62,7 @@ class Spec(NamedTuple):
     sheet: str = ""
     """``module:function`` in :mod:`scanconv.render` writing a whole document (a sheet, the
     exam book, a practice set), called ``(sheet, answered, kind, standalone)`` and yielding
-    text and :class:`Notice` chunks (:func:`scanconv.render.sheet.sheet_document`); each
+    text and :class:`Notice` chunks (:func:`scanconv.render.documents.sheet.sheet_document`); each
     answer in it goes through a single-answer mapping. ``""``: no documents in it."""
     streams: bool = False
     """It streams at a few microseconds a cell: a budget refusal points to it."""
@@ -94,57 +94,61 @@ class Spec(NamedTuple):
 
 
 FORMATS: dict[str, Spec] = {
-    "rich": Spec("terminal:render_rich", (), False, 3000.0, 256 * 256, 10_000, row_factor=400),
+    "rich": Spec(
+        "mappings.terminal:render_rich", (), False, 3000.0, 256 * 256, 10_000, row_factor=400
+    ),
     "latex": Spec(
-        "latex:render_latex",
+        "mappings.latex:render_latex",
         (".tex",),
         True,
         100.0,
         256 * 256,
-        sheet="sheet_latex:latex_sheet",
+        sheet="documents.sheet_latex:latex_sheet",
         row_factor=15,
-        mapping="latex:LATEX",
+        mapping="mappings.latex:LATEX",
     ),
     "markdown": Spec(
-        "text:render_markdown",
+        "mappings.text:render_markdown",
         (".md", ".markdown"),
         False,
         90.0,
         256 * 256,
-        sheet="sheet:markdown_sheet",
+        sheet="documents.sheet:markdown_sheet",
         row_factor=14,
-        mapping="text:MARKDOWN",
+        mapping="mappings.text:MARKDOWN",
     ),
     "plain": Spec(
-        "text:render_plain",
+        "mappings.text:render_plain",
         (".txt",),
         False,
         60.0,
         1024 * 1024,
-        sheet="sheet:plain_sheet",
+        sheet="documents.sheet:plain_sheet",
         row_factor=9,
-        mapping="text:PLAIN",
+        mapping="mappings.text:PLAIN",
     ),
-    "csv": Spec("data:render_csv", (".csv",), True, 20.0, streams=True, row_factor=1),
+    "csv": Spec("mappings.data:render_csv", (".csv",), True, 20.0, streams=True, row_factor=1),
     "json": Spec(
-        "data:render_json",
+        "mappings.data:render_json",
         (".json",),
         True,
         60.0,
-        sheet="sheet:json_sheet",
+        sheet="documents.sheet:json_sheet",
         streams=True,
         row_factor=8,
     ),
     "html": Spec(
-        "html:render_html",
+        "mappings.html:render_html",
         (".html", ".htm"),
         True,
         150.0,
-        sheet="sheet_html:html_sheet",
+        sheet="documents.sheet_html:html_sheet",
         row_factor=16,
     ),
-    "moodle": Spec(extensions=(".xml",), binding=True, sheet="moodle:moodle_sheet"),
-    "gift": Spec(extensions=(".gift",), binding=True, sheet="gift:gift_sheet", sheet_rows=10_000),
+    "moodle": Spec(extensions=(".xml",), binding=True, sheet="documents.moodle:moodle_sheet"),
+    "gift": Spec(
+        extensions=(".gift",), binding=True, sheet="documents.gift:gift_sheet", sheet_rows=10_000
+    ),
 }
 """Every format, declared once by its name (``auto`` aside): what it writes (its single-answer
 renderer, a mapping from the document's blocks, and its document writer), its file
@@ -171,7 +175,7 @@ def formats(serving: str) -> tuple[str, ...]:
 
 
 def load(entry: str) -> Any:
-    """The function an entry of :data:`FORMATS` names (``"text:render_plain"``), imported on
+    """The function an entry of :data:`FORMATS` names (``"mappings.text:render_plain"``), imported on
     first use (:func:`scanconv.core.lazy.load`: start-up time)."""
     return lazy.load(f"{__name__}.{entry}")
 
@@ -181,7 +185,7 @@ class Options(NamedTuple):
     dataclass, and start-up time counts)."""
 
     grid: bool = True
-    """Draw the text pixel grid (if it fits, see :mod:`scanconv.render.grid`)."""
+    """Draw the text pixel grid (if it fits, see :mod:`scanconv.render.figures.grid`)."""
     origin: str = "bottom-left"
     """``bottom-left`` (y up, as in the notes) or ``top-left`` (screen addressing, y down)."""
     brief: bool = False

@@ -41,12 +41,12 @@ if TYPE_CHECKING:
     from ..core.records import Solution
     from ..marking import mark as answers_marking
     from ..marking import student_table as core_student_table
-    from . import stepper
+    from .html import stepper
 else:  # the limits of the checks that only some answers reach, loaded by their first use
     algorithms_image_limits = lazy.module("scanconv.algorithms.image_limits")
     answers_marking = lazy.module("scanconv.marking.mark")
     core_student_table = lazy.module("scanconv.marking.student_table")
-    stepper = lazy.module("scanconv.render.stepper")
+    stepper = lazy.module("scanconv.render.html.stepper")
 
 MATRIX_CELLS: dict[Format, int] = {
     Format(f): spec.matrix_cells
@@ -233,7 +233,7 @@ def _memory_limit(work: Work, fmt: Format) -> int:
 
 def _held_rows(fmt: Format) -> int:
     """How many rows ``fmt`` holds at most (the html page steps through at most
-    :data:`~scanconv.render.stepper.MAX_STEPS`)."""
+    :data:`~scanconv.render.html.stepper.MAX_STEPS`)."""
     return stepper.MAX_STEPS if fmt is Format.html else ALL_ROWS
 
 

@@ -381,7 +381,7 @@ BYTES: dict[str, dict[str, float]] = {
     "circle/symmetric-dda": {"html": 20_000.0},
 }
 """Bytes held in memory per row of weight 1, where a format holds its rows (the html page,
-up to :data:`~scanconv.render.stepper.MAX_STEPS` of them): measured as the peak resident
+up to :data:`~scanconv.render.html.stepper.MAX_STEPS` of them): measured as the peak resident
 size over the rows (``benchmarks/bench_budget.py`` prints the peaks). Other rows: about
 3 KB in html (a line's 20,000 rows: 63 MB), and nothing held in the streamed formats."""
 

@@ -25,14 +25,14 @@ if TYPE_CHECKING:
     from ..marking import mark as marking
     from ..questions import limits, parser
     from ..questions import marking as questions_marking
-    from ..render import selftest_marks
+    from ..render.html import selftest_marks
 else:
     questions = lazy.module("scanconv.questions")
     limits = lazy.module("scanconv.questions.limits")
     parser = lazy.module("scanconv.questions.parser")
     marking = lazy.module("scanconv.marking.mark")
     questions_marking = lazy.module("scanconv.questions.marking")
-    selftest_marks = lazy.module("scanconv.render.selftest_marks")
+    selftest_marks = lazy.module("scanconv.render.html.selftest_marks")
 
 EXAMPLES = (
     "line 2 2 10 6 --algo bresenham",
@@ -144,7 +144,7 @@ def warm() -> None:
 
 MAX_STEPS = 1000
 """Most steps of "Test yourself" :func:`judge` marks (the page asks at most
-:data:`~scanconv.render.stepper.MAX_TABLE_ROWS`, 1,000; the site's script forwards as many)."""
+:data:`~scanconv.render.html.stepper.MAX_TABLE_ROWS`, 1,000; the site's script forwards as many)."""
 
 
 def judge(question: str, steps: str) -> str:
@@ -152,7 +152,7 @@ def judge(question: str, steps: str) -> str:
     answer to ``question`` (``steps``: a JSON list of ``{"p", "decision", "pixel"}``, the
     DDA's ``{"exact", "pixel"}``), judged by the library's marking, the follow-through of
     ``check`` (:func:`scanconv.marking.mark.mark_steps`), as JSON
-    (:func:`scanconv.render.selftest_marks.feedback`), or ``{"error"}``.
+    (:func:`scanconv.render.html.selftest_marks.feedback`), or ``{"error"}``.
 
     >>> steps = [{"p": "0", "decision": "NE", "pixel": "3, 3"},
     ...          {"p": "8", "decision": "NE", "pixel": "4, 4"}]

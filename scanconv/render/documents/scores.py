@@ -14,7 +14,7 @@ import io
 import json
 from collections.abc import Iterable, Iterator
 
-from ..core.working import json_visible, visible
+from ...core.working import json_visible, visible
 
 HEADER = ("name", "score", "out_of", "first_error", "diagnosis")
 

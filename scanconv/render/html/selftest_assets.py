@@ -1,7 +1,7 @@
-"""The style and the script of the page's "Test yourself" mode (:mod:`scanconv.render.selftest`).
+"""The style and the script of the page's "Test yourself" mode (:mod:`scanconv.render.html.selftest`).
 
-Appended to :data:`~scanconv.render.page_assets.CSS` and
-:data:`~scanconv.render.page_assets.JS`, so every page, answer key and notebook answer that has
+Appended to :data:`~scanconv.render.html.page_assets.CSS` and
+:data:`~scanconv.render.html.page_assets.JS`, so every page, answer key and notebook answer that has
 the stepper has the mode too. The script knows no method: it reads each answer's
 ``script.sc-testdata`` (rows and rules, exact values as fraction strings) and compares with
 exact rationals (``BigInt``). It finds the answers through the stepper

@@ -23,12 +23,12 @@ import re
 from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING
 
-from ..core.working import visible
+from ...core.working import visible
+from ..html.mathml import esc
 from .lms import Gap, GapTable, Piece, QuizQuestion, quiz
-from .mathml import esc
 
 if TYPE_CHECKING:
-    from . import Notice
+    from .. import Notice
     from .sheet import Answered, Sheet
 
 HINTS = {

@@ -28,9 +28,9 @@ from collections.abc import Iterator
 from itertools import chain, islice
 from typing import Any
 
-from ..core.records import Solution
-from ..core.working import json_visible
-from ..document import (
+from ...core.records import Solution
+from ...core.working import json_visible
+from ...document import (
     Document,
     Given,
     Notes,
@@ -41,8 +41,8 @@ from ..document import (
     Working,
     as_document,
 )
-from . import Options
-from .cells import json_value, segments_unicode
+from .. import Options
+from ..cells import json_value, segments_unicode
 
 
 def render_csv(answer: Solution | Document, options: Options | None = None) -> Iterator[str]:

@@ -1,6 +1,6 @@
-"""Drawn figures for LaTeX: the pixel grid of :mod:`scanconv.render.figure` as a TikZ picture.
+"""Drawn figures for LaTeX: the pixel grid of :mod:`scanconv.render.figures.figure` as a TikZ picture.
 
-The SVG figure is the model: :func:`~scanconv.render.figure.build` lays out the shapes (the
+The SVG figure is the model: :func:`~scanconv.render.figures.figure.build` lays out the shapes (the
 cells, the filled pixels, grey levels and outlines, the ideal primitive, control polygons,
 marked points, step numbers and the numbered axes) and this module writes the same shapes as
 TikZ commands, scaled to fit the page. The figure's title is the answer's heading already, so
@@ -19,10 +19,10 @@ from __future__ import annotations
 from collections.abc import Container, Iterator
 from fractions import Fraction
 
-from ..core.numeric import round_half_up
-from ..core.records import PixelFigure, ShadedMatrix, Solution
-from ..core.working import tex_text
-from ..document import Document
+from ...core.numeric import round_half_up
+from ...core.records import PixelFigure, ShadedMatrix, Solution
+from ...core.working import tex_text
+from ...document import Document
 from .figure import CELL, PAINT, Figure, Shape, build
 
 SCALE = 0.45
@@ -246,7 +246,7 @@ def _font(size: float, s: float) -> str:
 
 
 def _style(cls: str, s: float, size: float | None) -> str:
-    """The TikZ style of a CSS class of :data:`~scanconv.render.figure.PAINT`."""
+    """The TikZ style of a CSS class of :data:`~scanconv.render.figures.figure.PAINT`."""
     paint = PAINT[cls]
     if size is not None:
         return f"inner sep=0pt,{_font(size, s)},text={_color(paint.fill or '#000000')}"

@@ -15,11 +15,11 @@ from functools import partial
 from itertools import islice
 from typing import Any
 
-from ..core.numeric import fmt_pixel
-from ..core.records import Column, Figure, ShadedMatrix, Solution, step_getter
-from ..core.records import Table as CoreTable
-from ..core.working import ascii_text, visible
-from ..document import (
+from ...core.numeric import fmt_pixel
+from ...core.records import Column, Figure, ShadedMatrix, Solution, step_getter
+from ...core.records import Table as CoreTable
+from ...core.working import ascii_text, visible
+from ...document import (
     Contents,
     Document,
     Drawing,
@@ -35,9 +35,8 @@ from ..document import (
     Working,
     as_document,
 )
-from . import Notice, Options
-from . import grid as gridmod
-from .cells import (
+from .. import Notice, Options
+from ..cells import (
     cell,
     note_segments,
     numeric_column,
@@ -45,7 +44,8 @@ from .cells import (
     segments_unicode,
     wrap_items,
 )
-from .shade import matrix_lines
+from ..figures import grid as gridmod
+from ..figures.shade import matrix_lines
 
 BUFFER_ROWS = 1000
 """Tables with more rows than this are streamed instead of padded."""

@@ -20,19 +20,19 @@ through its pixels in plotting order; an answer with neither has no stepper.
 
 **Nothing from the network.** The math is MathML written by :mod:`latex2mathml` from the
 working's TeX (imported only here, start-up time), which browsers typeset natively; the style
-and the script are inline (:mod:`scanconv.render.page_assets`). Every text from the answer is
+and the script are inline (:mod:`scanconv.render.html.page_assets`). Every text from the answer is
 escaped; the step data sits in a ``<script type="application/json">`` with ``<``, ``>`` and
 ``&`` written as ``\\u003c`` escapes, so no text can close the script.
 
 **Large answers.** The page steps through at most
-:data:`~scanconv.render.stepper.MAX_STEPS` steps, draws at most
-:data:`~scanconv.render.stepper.MAX_PIXELS` pixels, writes at most
-:data:`~scanconv.render.stepper.MAX_TABLE_ROWS` rows of a table (fewer for wide tables) and
+:data:`~scanconv.render.html.stepper.MAX_STEPS` steps, draws at most
+:data:`~scanconv.render.html.stepper.MAX_PIXELS` pixels, writes at most
+:data:`~scanconv.render.html.stepper.MAX_TABLE_ROWS` rows of a table (fewer for wide tables) and
 says on the page what it left out.
 
-**Modules.** This one writes the page; :mod:`scanconv.render.stepper` works out the positions
-and captions, :mod:`scanconv.render.stepgrid` draws the SVG, :mod:`scanconv.render.mathml`
-turns TeX into MathML and escapes text, :mod:`scanconv.render.page_assets` holds the style
+**Modules.** This one writes the page; :mod:`scanconv.render.html.stepper` works out the positions
+and captions, :mod:`scanconv.render.html.stepgrid` draws the SVG, :mod:`scanconv.render.html.mathml`
+turns TeX into MathML and escapes text, :mod:`scanconv.render.html.page_assets` holds the style
 sheet and the script.
 
 **For other documents** (the answer key of ``scanconv sheet``, a notebook):
@@ -40,7 +40,7 @@ sheet and the script.
 * :func:`html_document` ``(answers, title)`` is a whole page of several answers, each a
   ``(heading, solution)`` pair, each with its own stepper;
 * :func:`answer_section` is one answer's ``<section>`` (it needs the page's
-  :func:`page_head` style and :data:`~scanconv.render.page_assets.JS` script, which
+  :func:`page_head` style and :data:`~scanconv.render.html.page_assets.JS` script, which
   :func:`page` adds around any body);
 * :func:`notebook_html` is one answer as a self-contained fragment for Jupyter, with a unique
   id and its keyboard bound to the answer itself, so two answers never interfere.
@@ -52,10 +52,10 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import islice
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from ..core import lazy
-from ..core.numeric import fmt_pixel
-from ..core.records import Column, Solution, step_getter
-from ..document import (
+from ...core import lazy
+from ...core.numeric import fmt_pixel
+from ...core.records import Column, Solution, step_getter
+from ...document import (
     Contents,
     Document,
     Drawing,
@@ -70,17 +70,18 @@ from ..document import (
     Working,
     as_document,
 )
-from . import Notice, Options, stepper
-from .cells import cell, numeric_column
-from .mathml import esc, json_script, note_html, prose_html, prose_segments_html, tex_math
-from .selftest import selftest_html
-from .stepgrid import figure_svg, legend, step_grid
-from .stepper import column_label, stepping
+from .. import Notice, Options
+from ..cells import cell, numeric_column
+from ..html import stepper
+from ..html.mathml import esc, json_script, note_html, prose_html, prose_segments_html, tex_math
+from ..html.selftest import selftest_html
+from ..html.stepgrid import figure_svg, legend, step_grid
+from ..html.stepper import column_label, stepping
 
 if TYPE_CHECKING:
-    from . import page_assets
+    from ..html import page_assets
 else:
-    page_assets = lazy.module("scanconv.render.page_assets")
+    page_assets = lazy.module("scanconv.render.html.page_assets")
 
 __all__ = [
     "answer_section",

@@ -1,6 +1,6 @@
 """The HTML page's SVG: the stepper's pixel grid (every pixel a ``<rect>`` the script lights)
 and the answer's extra figures (a comparison's grid, a shaded matrix), drawn as the figures of
-:mod:`scanconv.render.figure` draw them (the same cells, axes, primitive and colours), with a
+:mod:`scanconv.render.figures.figure` draw them (the same cells, axes, primitive and colours), with a
 scale that fits any size.
 """
 
@@ -10,7 +10,7 @@ from collections.abc import Iterable, Iterator
 from fractions import Fraction
 from typing import Any
 
-from ..core.ideal import (
+from ...core.ideal import (
     ControlPolygon,
     Ideal,
     IdealCircle,
@@ -20,11 +20,11 @@ from ..core.ideal import (
     control_points,
     ideal_kinds,
 )
-from ..core.numeric import round_half_up
-from ..core.records import Pixel, PixelFigure, ShadedMatrix
-from ..document import Document, Pixels, Table
-from . import Options
-from .figure import CELL, cells_extent, grey_of
+from ...core.numeric import round_half_up
+from ...core.records import Pixel, PixelFigure, ShadedMatrix
+from ...document import Document, Pixels, Table
+from .. import Options
+from ..figures.figure import CELL, cells_extent, grey_of
 from .mathml import esc
 from .stepper import Stepping
 

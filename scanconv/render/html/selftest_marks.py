@@ -12,8 +12,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..marking.rows import Marking
-from ..marking.words import expected_text, explain, got_text
+from ...marking.rows import Marking
+from ...marking.words import expected_text, explain, got_text
 
 
 def _value(text: str) -> str:

@@ -6,7 +6,7 @@ step by step, for the decision parameter p_k, the decision and the pixel it reac
 DDA: the exact x_{k+1}, y_{k+1} and the pixel), judges each with follow-through as ``check``
 does (:mod:`scanconv.marking.mark`), explains a wrong answer with the numbers, reveals the
 right row and goes on, and gives the score at the end. The script
-(:mod:`scanconv.render.selftest_assets`) knows no method: it interprets the small descriptor
+(:mod:`scanconv.render.html.selftest_assets`) knows no method: it interprets the small descriptor
 written here, which is read off the method's marking model (never a second copy of its
 arithmetic):
 
@@ -27,7 +27,7 @@ given no button, like a page without a model.
 
 >>> from scanconv.answers.primitives.line import line_solution
 >>> from scanconv.document import StepTable, document
->>> from scanconv.render.stepper import stepping
+>>> from scanconv.render.html.stepper import stepping
 >>> s = line_solution("bresenham", 2, 2, 10, 6)
 >>> d = selftest_data(document(s).get(StepTable), stepping(s))
 >>> d["rules"][0]["neg"], d["rules"][0]["pos"], d["rules"][0]["moves"]
@@ -42,12 +42,12 @@ from fractions import Fraction
 from itertools import islice
 from typing import Any
 
-from ..algorithms.conventions import ROUNDINGS
-from ..core.records import Step
-from ..document import StepTable
-from ..marking.models import DDALine, Model, State, chain
-from . import Options
-from .cells import cell
+from ...algorithms.conventions import ROUNDINGS
+from ...core.records import Step
+from ...document import StepTable
+from ...marking.models import DDALine, Model, State, chain
+from .. import Options
+from ..cells import cell
 from .mathml import esc, json_script
 from .stepper import MAX_TABLE_ROWS, Stepping, column_label
 

@@ -3,9 +3,9 @@
 :func:`sheet_document` renders a whole sheet in memory (so nothing is written when a question
 turns out bad) in any format whose :data:`scanconv.render.FORMATS` entry names a document
 writer (its ``sheet``): ``markdown`` and ``plain`` and ``json`` here, ``latex`` (a fragment,
-or a complete document with ``standalone``) in :mod:`scanconv.render.sheet_latex`, ``html`` in
-:mod:`scanconv.render.sheet_html`, and the quiz files for an LMS, ``moodle`` (Moodle XML) and
-``gift`` (:mod:`scanconv.render.lms`). A sheet is a list of documents: a key is, for each
+or a complete document with ``standalone``) in :mod:`scanconv.render.documents.sheet_latex`, ``html`` in
+:mod:`scanconv.render.documents.sheet_html`, and the quiz files for an LMS, ``moodle`` (Moodle XML) and
+``gift`` (:mod:`scanconv.render.documents.lms`). A sheet is a list of documents: a key is, for each
 question, its answer's document headed by a :class:`~scanconv.document.Question` block (its
 number, marks, wording and command line: :func:`key_document`), rendered by the format's own
 mapping, as a single answer is. A worksheet is the question in words, the given values and,
@@ -25,19 +25,19 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import chain
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from ..core import lazy
-from ..core.records import Column, Quantity, Solution
-from ..core.working import ascii_text, json_visible
-from ..document import Contents, Document, Entry, Given, Title, as_document
-from ..document import Question as QuestionBlock
-from . import FORMATS, Format, Notice, Options, formats, load, render
-from .cells import numeric_column
-from .text import MARKDOWN, PLAIN, all_tables, md_text, table_lines
+from ...core import lazy
+from ...core.records import Column, Quantity, Solution
+from ...core.working import ascii_text, json_visible
+from ...document import Contents, Document, Entry, Given, Title, as_document
+from ...document import Question as QuestionBlock
+from .. import FORMATS, Format, Notice, Options, formats, load, render
+from ..cells import numeric_column
+from ..mappings.text import MARKDOWN, PLAIN, all_tables, md_text, table_lines
 
 if TYPE_CHECKING:
-    from . import data
+    from ..mappings import data
 else:
-    data = lazy.module("scanconv.render.data")  # the json sheet only
+    data = lazy.module("scanconv.render.mappings.data")  # the json sheet only
 
 
 class Question(NamedTuple):
@@ -353,7 +353,7 @@ def _levels(sheet: Sheet) -> tuple[int, int]:
 
 def _parts(blank: Blank) -> list[tuple[list[int], str]]:
     """The columns and the label of a Markdown worksheet table: whole, as the key's table is
-    (:func:`scanconv.render.text._parts`) and as the PDF sets it."""
+    (:func:`scanconv.render.mappings.text._parts`) and as the PDF sets it."""
     return [(list(range(len(blank.columns))), blank.title)]
 
 
@@ -450,7 +450,7 @@ def _plain_worksheet(a: Answered) -> Iterator[str]:
         yield "Answer:\n" + "\n" * 6
 
 
-# --- latex: scanconv.render.sheet_latex ---------------------------------------------------
+# --- latex: scanconv.render.documents.sheet_latex ---------------------------------------------------
 
 
 def _room(chars: int) -> int:

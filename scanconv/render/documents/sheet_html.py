@@ -1,4 +1,4 @@
-"""The HTML writer of a sheet (:func:`scanconv.render.sheet.sheet_document` with ``html``).
+"""The HTML writer of a sheet (:func:`scanconv.render.documents.sheet.sheet_document` with ``html``).
 
 One self-contained page: the sheet's title, its questions (a page break before each when
 printed) and, for a key, each answer as the ``html`` format writes it, with its own stepper;
@@ -10,11 +10,11 @@ from __future__ import annotations
 from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING
 
-from ..core import lazy
-from ..document import Question as QuestionBlock
-from . import Notice
-from .html import answer_section, contents_html, page_head, question_html
-from .mathml import esc as escape
+from ...core import lazy
+from ...document import Question as QuestionBlock
+from .. import Notice
+from ..html.mathml import esc as escape
+from ..mappings.html import answer_section, contents_html, page_head, question_html
 from .sheet import (
     Answered,
     Sheet,
@@ -31,9 +31,9 @@ from .sheet import (
 )
 
 if TYPE_CHECKING:
-    from . import page_assets
+    from ..html import page_assets
 else:
-    page_assets = lazy.module("scanconv.render.page_assets")
+    page_assets = lazy.module("scanconv.render.html.page_assets")
 
 _SHEET_CSS = """\
 .sc-sheet{font-family:"DejaVu Sans",system-ui,sans-serif;color:#1b1b1b;line-height:1.45}
@@ -55,7 +55,7 @@ def html_sheet(
 ) -> Iterator[str | Notice]:
     """The sheet as one self-contained HTML page: every text from the question file and every
     value escaped; a page break before each question when printed. The key's answers are the
-    stepping answers of :mod:`scanconv.render.html` (each with its own stepper): the ``html``
+    stepping answers of :mod:`scanconv.render.mappings.html` (each with its own stepper): the ``html``
     format's mapping."""
     title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
     style = f"<style>\n{_SHEET_CSS}</style>\n"

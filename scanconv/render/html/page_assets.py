@@ -1,4 +1,4 @@
-"""The style sheet and the script of the HTML page (:mod:`scanconv.render.html`), as strings.
+"""The style sheet and the script of the HTML page (:mod:`scanconv.render.mappings.html`), as strings.
 
 Kept as Python strings, not package data files, so the page is built from the installed
 package alone (nothing to find on disk) and stays one self-contained file.

@@ -16,9 +16,9 @@ import re
 from collections.abc import Iterable
 from typing import Any
 
-from ..core.working import UNSAFE as _CONTROLS
-from ..core.working import tex_to_unicode
-from .cells import note_segments, prose_math
+from ...core.working import UNSAFE as _CONTROLS
+from ...core.working import tex_to_unicode
+from ..cells import note_segments, prose_math
 
 
 def esc(text: str) -> str:

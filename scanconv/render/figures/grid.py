@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from ..core.records import MAX_GRID_CELLS as MAX_CELLS
-from ..core.records import Pixel, PixelFigure
+from ...core.records import MAX_GRID_CELLS as MAX_CELLS
+from ...core.records import Pixel, PixelFigure
 
 MARGIN = 1
 """Empty cells around the bounding box."""

@@ -1,4 +1,4 @@
-r"""The LaTeX writer of a sheet (:func:`scanconv.render.sheet.sheet_document` with ``latex``).
+r"""The LaTeX writer of a sheet (:func:`scanconv.render.documents.sheet.sheet_document` with ``latex``).
 
 A key is each question's number, marks, wording and command line (typewriter type, every
 hyphen kept: an option is never an en dash), then its worked answer as the ``latex`` format
@@ -10,7 +10,7 @@ answer's extent with its axes numbered.
 Pages: a question starts on a new page when what is estimated of its height does not fit in
 what is left of the page (``\scneed``, the ``needspace`` idea), or, for a long question, when
 less than :data:`NEED_SHARE` of a page is left. A grid is never split from its caption, and a table too wide for the
-page is set whole when it can be (:func:`scanconv.render.latex._tables`).
+page is set whole when it can be (:func:`scanconv.render.mappings.latex._tables`).
 """
 
 from __future__ import annotations
@@ -18,12 +18,13 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator, Sequence
 
-from ..core.records import Column
-from ..core.working import tex_text
-from ..document import Pixels, as_document
-from ..document import Question as QuestionBlock
-from . import Notice
-from .latex import KEEP_ROWS, LATEX, NEED, math_cell
+from ...core.records import Column
+from ...core.working import tex_text
+from ...document import Pixels, as_document
+from ...document import Question as QuestionBlock
+from .. import Notice
+from ..figures.tikz import tikz_grid
+from ..mappings.latex import KEEP_ROWS, LATEX, NEED, math_cell
 from .sheet import (
     Answered,
     Blank,
@@ -40,7 +41,6 @@ from .sheet import (
     question_block,
     wording,
 )
-from .tikz import tikz_grid
 
 PREAMBLE = (
     r"""\RequirePackage{fix-cm}

@@ -12,7 +12,7 @@ escaper of the format: HTML-escaped, ``{`` and ``}`` as character references (so
 text is read as a blank), characters XML forbids shown as U+FFFD. HTML goes into the XML as
 CDATA, a ``]]>`` in it split (:func:`cdata`).
 
->>> from scanconv.render.lms import Gap
+>>> from scanconv.render.documents.lms import Gap
 >>> cloze(Gap("number", ("-8",), "0"))
 '{1:NUMERICAL:=-8:0}'
 """
@@ -23,10 +23,10 @@ import re
 from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING
 
-from ..core.working import UNSAFE
-from . import Notice
+from ...core.working import UNSAFE
+from .. import Notice
+from ..html.mathml import esc
 from .lms import INSTRUCTIONS, Gap, GapTable, Piece, QuizQuestion, gaps, quiz
-from .mathml import esc
 
 if TYPE_CHECKING:
     from .sheet import Answered, Sheet
@@ -115,7 +115,7 @@ def _blanks(q: QuizQuestion) -> int:
 def marks_notice(q: QuizQuestion) -> str | None:
     """What a teacher sets by hand: a question of fewer marks than blanks.
 
-    >>> from scanconv.render.lms import GapTable
+    >>> from scanconv.render.documents.lms import GapTable
     >>> t = GapTable("t", ("a",), (((Gap("number", ("1",)),), (Gap("number", ("2",)),)),))
     >>> marks_notice(QuizQuestion("Q1 line", "w", (), (t,), "", 1))
     'Q1 (line) to 1 (it has 2 blanks)'

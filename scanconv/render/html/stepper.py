@@ -1,7 +1,7 @@
 """What the HTML page steps through: positions, the pixels each lights, the captions.
 
 :func:`stepping` reads an answer's :class:`~scanconv.document.Document` into a :class:`Stepping`
-(see :mod:`scanconv.render.html` for what a position is): the step records with their pixels
+(see :mod:`scanconv.render.mappings.html` for what a position is): the step records with their pixels
 (and mirror images), the pixels alone in plotting order for an answer without a step table,
 or the rows of a comparison's side-by-side table. The captions give each decision with its
 numbers, in Unicode. It reads the blocks' declared structure (the step table's regions,
@@ -14,13 +14,13 @@ import re
 from itertools import islice
 from typing import Any, NamedTuple
 
-from ..core.numeric import fmt_pixel
-from ..core.records import Pixel, Solution, Step, step_getter
-from ..core.working import tex_to_unicode
-from ..document import Document, Pixels, StepTable, Table, as_document
-from ..document.numbering import mirror_images
-from . import Options
-from .cells import cell, unicode_heading
+from ...core.numeric import fmt_pixel
+from ...core.records import Pixel, Solution, Step, step_getter
+from ...core.working import tex_to_unicode
+from ...document import Document, Pixels, StepTable, Table, as_document
+from ...document.numbering import mirror_images
+from .. import Options
+from ..cells import cell, unicode_heading
 
 MAX_STEPS = 20_000
 """Steps the stepper goes through; a longer answer's later steps light at the last step."""

@@ -27,10 +27,10 @@ from rich.cells import cell_len
 from rich.table import Table as RichTable
 from rich.text import Text
 
-from ..core.numeric import fmt_pixel
-from ..core.records import Column, Solution
-from ..core.working import visible
-from ..document import (
+from ...core.numeric import fmt_pixel
+from ...core.records import Column, Solution
+from ...core.working import visible
+from ...document import (
     Contents,
     Document,
     Drawing,
@@ -45,9 +45,9 @@ from ..document import (
     Working,
     as_document,
 )
-from . import Notice, Options
-from . import grid as gridmod
-from .cells import numeric_column, segments_unicode, unicode_heading, wrap_items
+from .. import Notice, Options
+from ..cells import numeric_column, segments_unicode, unicode_heading, wrap_items
+from ..figures import grid as gridmod
 from .text import figure_text, grid_block, pixel_count, step_rows, table_rows
 
 CHUNK_ROWS = 1000

@@ -13,12 +13,12 @@ from __future__ import annotations
 
 import re
 
-from ..core.numeric import fmt_pixel
-from ..document import Document, Pixels, StepTable, Table
-from . import Options
-from .cells import wrap_items
-from .grid import too_large
-from .tikz import grid_height
+from ...core.numeric import fmt_pixel
+from ...document import Document, Pixels, StepTable, Table
+from .. import Options
+from ..cells import wrap_items
+from ..figures.grid import too_large
+from ..figures.tikz import grid_height
 
 __all__ = ["breakable_math", "kept_with_grid"]
 

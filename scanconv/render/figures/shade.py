@@ -8,8 +8,8 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from fractions import Fraction
 
-from ..core.numeric import round_half_up
-from ..core.records import ShadedMatrix
+from ...core.numeric import round_half_up
+from ...core.records import ShadedMatrix
 
 SHADES = "@%#*+=-:. "
 """Picture characters from darkest (black) to lightest (white), for up to 10 levels."""

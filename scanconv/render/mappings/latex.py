@@ -15,7 +15,7 @@ its long text columns wrapped (a comparison's sentences) or, when short, is scal
 width; only a long table too wide even in ``\\scriptsize`` is set in parts of its columns,
 each repeating the first column. Each plotted pixel is its own ``$...$``, so the pixel list
 breaks between pixels, ragged-right. The pixel grid and the answer's figures are drawn with
-TikZ (:mod:`scanconv.render.tikz`); a figure too large to draw stays a typewriter picture.
+TikZ (:mod:`scanconv.render.figures.tikz`); a figure too large to draw stays a typewriter picture.
 """
 
 from __future__ import annotations
@@ -25,10 +25,10 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from functools import partial
 from itertools import chain, islice
 
-from ..core.numeric import fmt_pixel
-from ..core.records import Column, Solution
-from ..core.working import ascii_text, tex_text
-from ..document import (
+from ...core.numeric import fmt_pixel
+from ...core.records import Column, Solution
+from ...core.working import ascii_text, tex_text
+from ...document import (
     Contents,
     Document,
     Drawing,
@@ -43,12 +43,12 @@ from ..document import (
     Working,
     as_document,
 )
-from . import Notice, Options
-from .cells import note_segments, numeric_column, prose_math, wrap_items
-from .grid import too_large
+from .. import Notice, Options
+from ..cells import note_segments, numeric_column, prose_math, wrap_items
+from ..figures.grid import too_large
+from ..figures.tikz import tikz_figure, tikz_grid
 from .latex_breaks import breakable_math, kept_with_grid
 from .text import Rows, figure_text, grid_block, pixel_count, step_rows, table_rows
-from .tikz import tikz_figure, tikz_grid
 
 MATH_TOKENS = (
     r"[-+*/(), ]",  # an operator, a bracket, a comma, a space
@@ -520,7 +520,7 @@ def tt_text(line: str) -> str:
 
 
 def _pixels(block: Pixels, options: Options, doc: Document) -> Iterator[str | Notice]:
-    """The pixel list, then the grid drawn with TikZ (:mod:`scanconv.render.tikz`); a grid
+    """The pixel list, then the grid drawn with TikZ (:mod:`scanconv.render.figures.tikz`); a grid
     too large to draw stays a typewriter picture, or is left out with a notice saying why."""
     yield f"\\paragraph{{Pixels plotted ({pixel_count(block)})}}\n"
     yield "{\\raggedright\n"

@@ -45,7 +45,7 @@ from fractions import Fraction
 from itertools import pairwise
 from typing import Any, NamedTuple
 
-from ..core.ideal import (
+from ...core.ideal import (
     ControlPolygon,
     Ideal,
     IdealCircle,
@@ -55,12 +55,12 @@ from ..core.ideal import (
     control_points,
     ideal_kinds,
 )
-from ..core.numeric import round_half_up
-from ..core.records import Pixel, Solution
-from ..core.working import UNSAFE
-from ..document import Document, Pixels, as_document
-from ..document.numbering import label_offset as label_offset  # re-exported: their old home
-from ..document.numbering import step_labels as step_labels
+from ...core.numeric import round_half_up
+from ...core.records import Pixel, Solution
+from ...core.working import UNSAFE
+from ...document import Document, Pixels, as_document
+from ...document.numbering import label_offset as label_offset  # re-exported: their old home
+from ...document.numbering import step_labels as step_labels
 
 CELL = 32
 """Side of one pixel cell, in SVG user units (px)."""

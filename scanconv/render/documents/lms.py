@@ -33,9 +33,9 @@ from decimal import Decimal
 from fractions import Fraction
 from typing import Any, NamedTuple
 
-from ..core.records import Column, Move, Solution, step_getter
-from ..document import Document, Given, StepTable, Table, Working, as_document
-from . import Format, Notice, render
+from ...core.records import Column, Move, Solution, step_getter
+from ...document import Document, Given, StepTable, Table, Working, as_document
+from .. import Format, Notice, render
 from .sheet import Answered, Sheet, _Guard, wording
 
 TOLERANCE = "0.0005"
@@ -351,8 +351,8 @@ def gaps(tables: Iterable[GapTable]) -> Iterator[Gap]:
 def quiz(
     sheet: Sheet, answered: Sequence[Answered], write: Callable[[Sequence[QuizQuestion]], str]
 ) -> Iterator[str | Notice]:
-    """The sheet as a quiz file written by ``write`` (:func:`scanconv.render.moodle.moodle_xml`
-    or :func:`scanconv.render.gift.gift`), then the notices: what the ``moodle`` and ``gift``
+    """The sheet as a quiz file written by ``write`` (:func:`scanconv.render.documents.moodle.moodle_xml`
+    or :func:`scanconv.render.documents.gift.gift`), then the notices: what the ``moodle`` and ``gift``
     document writers share (a key and a worksheet are the same quiz: the LMS holds the
     answers and shows them after the attempt)."""
     notices: list[str] = []
