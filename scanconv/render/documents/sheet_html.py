@@ -35,20 +35,6 @@ if TYPE_CHECKING:
 else:
     page_assets = lazy.module("scanconv.render.html.page_assets")
 
-_SHEET_CSS = """\
-.sc-sheet{font-family:"DejaVu Sans",system-ui,sans-serif;color:#1b1b1b;line-height:1.45}
-.sc-sheet h1{font-size:1.6em;margin:.2em 0 .3em 0}
-.sc-sheet h2.sc-section{font-size:1.35em;margin:1.2em 0 .4em 0}
-.sc-sheet h2.sc-q,.sc-sheet h3.sc-q{font-size:1.2em;margin:1.2em 0 .3em 0}
-.sc-sheet .sc-wording{font-style:italic}
-.sc-sheet code{font-family:"DejaVu Sans Mono",monospace;background:#f4f4f4;padding:0 .25em}
-.sc-sheet table.sc-blank{border-collapse:collapse;margin:.4em 0 1em 0}
-.sc-sheet table.sc-blank th,.sc-sheet table.sc-blank td{border:1px solid #555;\
-padding:.2em .5em;height:1.9em;text-align:center}
-.sc-sheet .sc-answer-space{height:12em;border:1px dashed #999;margin:.4em 0 1em 0}
-@media print{.sc-sheet>.sc-question~.sc-question{break-before:page}}
-"""
-
 
 def html_sheet(
     sheet: Sheet, answered: Sequence[Answered], kind: str, standalone: bool
@@ -58,7 +44,7 @@ def html_sheet(
     stepping answers of :mod:`scanconv.render.mappings.html` (each with its own stepper): the ``html``
     format's mapping."""
     title = " ".join(sheet.title.split()) or ("Answer key" if kind == "key" else "Worksheet")
-    style = f"<style>\n{_SHEET_CSS}</style>\n"
+    style = f"<style>\n{page_assets.SHEET_CSS}</style>\n"
     if kind == "key":
         head = page_head(title).replace("</head>", style + "</head>", 1)
     else:

@@ -6,7 +6,7 @@ step by step, for the decision parameter p_k, the decision and the pixel it reac
 DDA: the exact x_{k+1}, y_{k+1} and the pixel), judges each with follow-through as ``check``
 does (:mod:`scanconv.marking.mark`), explains a wrong answer with the numbers, reveals the
 right row and goes on, and gives the score at the end. The script
-(:mod:`scanconv.render.html.selftest_assets`) knows no method: it interprets the small descriptor
+(``scanconv/render/html/static/selftest.js``, :mod:`scanconv.render.html.page_assets`) knows no method: it interprets the small descriptor
 written here, which is read off the method's marking model (never a second copy of its
 arithmetic):
 

@@ -1,58 +1,3 @@
-"""The style and the script of the page's "Test yourself" mode (:mod:`scanconv.render.html.selftest`).
-
-Appended to :data:`~scanconv.render.html.page_assets.CSS` and
-:data:`~scanconv.render.html.page_assets.JS`, so every page, answer key and notebook answer that has
-the stepper has the mode too. The script knows no method: it reads each answer's
-``script.sc-testdata`` (rows and rules, exact values as fraction strings) and compares with
-exact rationals (``BigInt``). It finds the answers through the stepper
-(``window.scanconvStepper.roots``) and its elements inside each answer's root; it drives the
-grid through the stepper's own slider (an ``input`` event), so the stepper needs no change.
-"""
-
-from __future__ import annotations
-
-SELFTEST_CSS = """\
-.scanconv .sc-selftest{margin:.5em 0 .2em 0}
-.scanconv .sc-selftest button,.scanconv .sc-testpanel select{font:inherit;font-size:.95em;\
-padding:.25em .7em;border:1px solid #777;border-radius:4px;background:#f3f6fa;cursor:pointer}
-.scanconv .sc-selftest button:focus-visible,.scanconv .sc-testpanel input:focus-visible,\
-.scanconv .sc-testpanel select:focus-visible{outline:2px solid var(--sc-px-edge);outline-offset:1px}
-.scanconv .sc-testbtn{font-weight:bold}
-.scanconv:not(.sc-js) .sc-selftest{display:none}
-.scanconv .sc-testnote{color:var(--sc-muted);font-size:.85em}
-.scanconv .sc-testpanel{margin:.4em 0;padding:.5em .6em;border:1px solid var(--sc-rule);\
-border-radius:6px;background:#fbfbf7}
-.scanconv .sc-testpanel[hidden],.scanconv .sc-testpanel [hidden]{display:none}
-.scanconv .sc-tq{margin:0 0 .4em 0;font-weight:bold}
-.scanconv .sc-tform{display:flex;flex-wrap:wrap;gap:.45em .8em;align-items:center}
-.scanconv .sc-tform label{display:inline-flex;gap:.35em;align-items:center;white-space:nowrap}
-.scanconv .sc-tform input{font:inherit;width:7.5em;padding:.2em .35em;border:1px solid #888;\
-border-radius:4px}
-.scanconv .sc-tfeed{margin:.5em 0 .2em 0;min-height:1.3em}
-.scanconv .sc-tfeed p{margin:.15em 0}
-.scanconv .sc-tfeed .sc-ok{color:#1d6b2a}
-.scanconv .sc-tfeed .sc-no{color:#a01818}
-.scanconv .sc-tfeed .sc-twhy,.scanconv .sc-tfeed .sc-texp{color:var(--sc-muted)}
-.scanconv .sc-tscore{font-weight:bold;margin:.4em 0}
-.scanconv .sc-tbar{display:flex;flex-wrap:wrap;gap:.4em;margin-top:.4em}
-.scanconv.sc-testing .sc-controls,.scanconv.sc-testing .sc-caption,.scanconv.sc-testing .sc-hover,\
-.scanconv.sc-testing .sc-keys,.scanconv.sc-testing .sc-pixels,.scanconv.sc-testing .sc-figures,\
-.scanconv.sc-testing .sc-testhide,.scanconv.sc-testing .sc-testnote{display:none}
-.scanconv.sc-testing tr.sc-hid{display:none}
-.scanconv.sc-testing td.sc-hidcell{color:transparent}
-.scanconv.sc-testing td.sc-hidcell *{visibility:hidden}
-.scanconv.sc-testing svg.sc-stepgrid{cursor:crosshair}
-.scanconv .sc-selftest button,.scanconv .sc-testpanel button,.scanconv .sc-testpanel select,\
-.scanconv .sc-tform input{min-height:28px;min-width:28px}
-.scanconv .sc-gridbox{overflow-x:auto;max-width:100%}
-.scanconv.sc-testing svg.sc-stepgrid{max-height:none}
-@media (max-width:600px){.scanconv .sc-tform input{width:6.5em}\
-.scanconv.sc-testing .sc-stepper{position:static}}
-@media print{.scanconv .sc-selftest{display:none}}
-"""
-"""The mode's style (every rule under ``.scanconv``; nothing of it prints)."""
-
-SELFTEST_JS = r"""
 (function () {
   "use strict";
   var S = window.scanconvStepper;
@@ -405,5 +350,3 @@ SELFTEST_JS = r"""
   }
   S.roots.forEach(function (r) { T.init(r); });
 })();
-"""
-"""The mode's script (see the module)."""
