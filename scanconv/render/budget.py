@@ -205,13 +205,25 @@ def row_cost(work: Work, fmt: Format) -> float:
     >>> row_cost(wu, Format.csv) > 5 * row_cost(bresenham, Format.csv)
     True
     """
-    costs = COSTS.get(work.key) or COSTS.get(work.key.split("/")[0]) or {}
-    us = costs.get(fmt.value)
+    return unit_cost(work.key, fmt.value) * work.weight
+
+
+def unit_cost(key: str, fmt: str) -> float:
+    """Microseconds of one row (or matrix cell) of costs key ``key`` (or of its command, the
+    part before ``/``) in format ``fmt``: its measured cost, else its base (csv) cost times the
+    format's :attr:`~scanconv.render.Spec.row_factor`, else the format's
+    :attr:`~scanconv.render.Spec.row_cost`; at least :data:`MIN_COST`.
+
+    >>> unit_cost("matrix", "json"), unit_cost("no-such-key", "json")
+    (0.3, 60.0)
+    """
+    if key not in COSTS and key not in BASE_COSTS:
+        key = key.split("/")[0]
+    us = COSTS.get(key, {}).get(fmt)
     if us is None:
-        base = BASE_COSTS.get(work.key)
-        factor = FORMATS[fmt.value].row_factor
-        us = base * factor if base and factor else DEFAULT_COSTS.get(fmt.value, 100.0)
-    return max(us, MIN_COST) * work.weight
+        base, factor = BASE_COSTS.get(key), FORMATS[fmt].row_factor
+        us = base * factor if base and factor else DEFAULT_COSTS.get(fmt, 100.0)
+    return max(us, MIN_COST)
 
 
 def row_limit(work: Work, fmt: Format) -> int:
@@ -362,8 +374,7 @@ def document(outputs: Sequence[str] = ()) -> Iterator[None]:
 def document_cost(work: Work) -> tuple[int, float]:
     """Rows (cells of a matrix) and CPU seconds of ``work`` in the costliest document format."""
     if work.kind == "matrix":
-        costs = COSTS.get("matrix", {})
-        us = max(costs.get(f.value, DEFAULT_COSTS[f.value]) for f in DOCUMENT)
+        us = max(unit_cost("matrix", f.value) for f in DOCUMENT)
     else:
         us = max(row_cost(work, f) for f in DOCUMENT)
     return work.size, work.size * us / 1e6
