@@ -570,7 +570,7 @@ def _resolves(name: str) -> bool:
 #: ``scanconv/`` or to ``tests/``, or a bare name that some file of the project has.
 FILE = re.compile(r"(?<![\w./-])([\w./-]+\.pyi?)\b")
 #: Files a page names that are not meant to be there: architecture.md's sketch of a new format.
-SKETCHED = {"render/typst.py", "render/sheet_typst.py"}
+SKETCHED = {"render/mappings/typst.py", "render/documents/sheet_typst.py"}
 PROJECT_FILES = {
     p.name for d in ("scanconv", "tests", "benchmarks") for p in (ROOT / d).rglob("*.py*")
 }
