@@ -33,6 +33,7 @@ import pytest
 __all__ = [
     "Typeset",
     "batch",
+    "npm_install",
     "overfull",
     "pandoc",
     "pandoc_with_warnings",
@@ -41,6 +42,22 @@ __all__ = [
     "typeset",
     "typeset_each",
 ]
+
+
+def npm_install(where: Path, package: str) -> Path:
+    """``package`` (``name@range``) installed with npm into the folder ``where`` (a test's
+    temporary one), and its folder under ``node_modules``. Needs node, npm and the registry
+    (CI has them): a skip without node or npm, a failure if npm fails."""
+    if shutil.which("npm") is None or shutil.which("node") is None:
+        pytest.skip(f"npm and node are needed to install and run {package}")
+    done = subprocess.run(
+        ["npm", "install", "--prefix", str(where), "--no-audit", "--no-fund", package],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert done.returncode == 0, f"npm install {package} failed: {done.stderr[-2000:]}"
+    return where / "node_modules" / package.rpartition("@")[0]
 
 
 def tool(name: str) -> str:

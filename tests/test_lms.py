@@ -13,7 +13,6 @@ from __future__ import annotations
 import html
 import json
 import re
-import shutil
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -29,6 +28,8 @@ from hypothesis import strategies as st
 from scanconv.cli.sheet import answer_questions, read_questions
 from scanconv.render.documents.lms import MAX_GAPS, TOLERANCE, decimal_text, number_gap
 from scanconv.render.documents.sheet import sheet_document
+
+from .external import npm_install
 
 SCANCONV = (sys.executable, "-m", "scanconv")
 """The CLI of the Python running the tests (not whatever ``scanconv`` is first on PATH)."""
@@ -172,19 +173,11 @@ class GiftReader:
 def gift_reader(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GiftReader]:
     """gift-pegjs 1.x installed with npm into a temporary directory (needs node, npm and the
     registry: CI has them)."""
-    if shutil.which("npm") is None or shutil.which("node") is None:
-        pytest.skip("npm and node are needed to install and run the GIFT parser gift-pegjs")
     where = tmp_path_factory.mktemp("gift-pegjs")
-    done = subprocess.run(
-        ["npm", "install", "--prefix", str(where), "--no-audit", "--no-fund", "gift-pegjs@1"],
-        capture_output=True,
-        text=True,
-        timeout=600,
-    )
-    assert done.returncode == 0, f"npm install gift-pegjs@1 failed: {done.stderr[-2000:]}"
+    module = npm_install(where, "gift-pegjs@1")
     script = where / "reader.js"
     script.write_text(_READER, encoding="utf-8")
-    reader = GiftReader(where / "node_modules" / "gift-pegjs", script)
+    reader = GiftReader(module, script)
     yield reader
     reader.close()
 

@@ -1,8 +1,8 @@
 """The HTML page's style sheets and scripts are real files (``scanconv/render/html/static/``):
 each is listed, shipped in the wheel and in the site's wheel, put on the page, and parses: the
 scripts by node (``node --check``), the style sheets by a structural reader written here and by
-css-tree, the CSS parser and property grammar of the W3C's CSS validator's npm successor
-(installed into a temporary directory, as tests/test_lms.py installs its GIFT parser)."""
+css-tree, a CSS parser with the property grammar of MDN's data (the one csstree-validator uses),
+installed into a temporary directory as tests/test_lms.py installs its GIFT parser."""
 
 from __future__ import annotations
 
@@ -19,6 +19,8 @@ from pathlib import Path
 import pytest
 
 from scanconv.render.html import page_assets
+
+from .external import npm_install
 
 ROOT = Path(__file__).resolve().parent.parent
 STATIC = ROOT / "scanconv" / "render" / "html" / "static"
@@ -185,23 +187,12 @@ def css_tree(tmp_path_factory: pytest.TempPathFactory) -> tuple[str, Path, Path]
     """css-tree 3.x installed with npm into a temporary directory (needs node, npm and the
     registry: CI has them), and the script that reads style sheets with it."""
     node = _node()
-    if shutil.which("npm") is None:
-        if os.environ.get("CI"):
-            pytest.fail("npm missing in CI: the style sheets are checked with css-tree")
-        pytest.skip("npm is needed to install css-tree")
-    where = tmp_path_factory.mktemp("css-tree")
-    done = subprocess.run(
-        ["npm", "install", "--prefix", str(where), "--no-audit", "--no-fund", "css-tree@3"],
-        capture_output=True,
-        text=True,
-        timeout=600,
-    )
-    if done.returncode != 0 and not os.environ.get("CI"):
-        pytest.skip(f"npm install css-tree@3 failed (no registry?): {done.stderr[-300:]}")
-    assert done.returncode == 0, f"npm install css-tree@3 failed: {done.stderr[-2000:]}"
-    script = where / "lint.js"
+    if shutil.which("npm") is None and os.environ.get("CI"):
+        pytest.fail("npm missing in CI: the style sheets are checked with css-tree")
+    module = npm_install(tmp_path_factory.mktemp("css-tree"), "css-tree@3")
+    script = module.parent.parent / "lint.js"
     script.write_text(_LINT, encoding="utf-8")
-    return node, script, where / "node_modules" / "css-tree"
+    return node, script, module
 
 
 def _css_tree(css_tree: tuple[str, Path, Path], paths: list[Path]) -> dict[str, list[str]]:
