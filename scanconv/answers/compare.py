@@ -247,7 +247,27 @@ def _line_reasons(cells: dict[str, list[int]]) -> list[str]:
         # The DDA's major coordinate moves by at most 1 a step, from P1 to P2 rounded half up,
         # so it covers the basic method's columns exactly; it differs within a column only.
         out.append(DDA_MANY if len(dda) > 1 else DDA_OFF)
+    for name, cell in cells.items():  # the other methods, by their records' reason tags
+        tag = METHODS[f"line/{name}"].fact("tag")
+        if tag and cell != ref:
+            out.append(f"{tag} {'repeats' if len(cell) > 1 else 'off'}")
     return out
+
+
+def _other_note(
+    tag: str, row: tuple[Any, ...], methods: list[str], mnr: str, at: str, e: Number
+) -> str:
+    """The note of a method's own reason tag (``SDDA off``): what it plots in the row's
+    column, and what the basic method plots there."""
+    short, kind = tag.rsplit(" ", 1)
+    m = next(n for n in methods if METHODS[f"line/{n}"].fact("tag") == short)
+    cell, ref = row[2 + methods.index(m)], row[2 + methods.index("basic")]
+    what = f"{mnr} = {cell}" + (" (more than one point of its walk)" if kind == "repeats" else "")
+    return (
+        f"{tag[:1].upper()}{tag[1:]} (rows marked '{tag}'): the {METHODS[f'line/{m}'].title} "
+        f"plots {what} at {at}, where the basic method plots {ref}, the pixel centre nearest "
+        f"the line ({mnr} = {fmt_short(e)} at {at})."
+    )
 
 
 def _line_notes(
@@ -278,7 +298,9 @@ def _line_notes(
         a = row[0]
         e = exact(a)
         at = f"{maj} = {a}"
-        if tag == TIE:
+        if tag not in (TIE, DDA_OFF, DDA_MANY):
+            notes.append(_other_note(tag, row, list(sols), mnr, at, e))
+        elif tag == TIE:
             lo, hi = Fraction(e) - Fraction(1, 2), Fraction(e) + Fraction(1, 2)
             k, p = bres_p.get(a, (None, None))
             lower = row[-2] == normalize(lo)
