@@ -204,7 +204,7 @@ def annotated(sol: Solution, q: LineQuestion) -> Solution:
     if not q.annotate:
         return sol
     knobs = knob_values(q.knobs)
-    extra = [convention_note("line", q.convention, knobs)]
+    extra = [note for note in (convention_note("line", q.convention, knobs),) if note]
     erratum = method("line", q.algo).load("errata")(q)
     if erratum:
         extra.append(erratum)
