@@ -303,14 +303,15 @@ def _line_notes(
         elif tag == TIE:
             lo, hi = Fraction(e) - Fraction(1, 2), Fraction(e) + Fraction(1, 2)
             k, p = bres_p.get(a, (None, None))
-            lower = row[-2] == normalize(lo)
+            cell = row[2 + list(sols).index("bresenham")]  # its column, wherever it is
+            lower = cell == normalize(lo)
             way = ("left" if lower else "right") if steep else ("down" if lower else "up")
             notes.append(
                 f"Tie (rows marked 'tie'): at {at} the line is at {mnr} = {fmt_short(e)}, "
                 f"half-way between {fmt_short(lo)} and {fmt_short(hi)}. Rounding half up "
                 f"(basic, DDA) takes "
                 f"{fmt_short(hi)}; Bresenham's p_{k} = {p} steps {mnr} toward the end point, "
-                f"{way} to {row[-2]}."
+                f"{way} to {cell}."
             )
         else:
             pts = dda_pts.get(a, [])
