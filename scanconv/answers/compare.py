@@ -158,11 +158,11 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool =
     Examples
     --------
     >>> sol = compare_lines(2, 8, 10, 4)
-    >>> for row in list(sol.tables[0].rows())[:3]:
-    ...     print(row)
-    (2, 8, 8, 8, 8, None)
-    (3, Fraction(15, 2), 8, 8, 7, 'tie')
-    (4, 7, 7, 7, 7, None)
+    >>> for row in list(sol.tables[0].rows())[:3]:  # x, y on the line, basic, DDA, Bresenham
+    ...     print(row[:5], row[-1])
+    (2, 8, 8, 8, 8) None
+    (3, Fraction(15, 2), 8, 8, 7) tie
+    (4, 7, 7, 7, 7) None
     """
     length = max(abs(Fraction(x2 - x1)), abs(Fraction(y2 - y1)))
     if length > MAX_LENGTH:
