@@ -290,7 +290,16 @@ def _line_notes(
             "integers only and can differ from them only at an exact tie."
         )
     else:
-        notes.append("Bresenham's algorithm needs integer end points; it is left out.")
+        others = [NAMES[m] for m in LINE_METHODS[3:] if m not in sols]  # after the notes' three
+        notes.append(
+            "Bresenham's algorithm needs integer end points; it is left out"
+            + (
+                f", and so {'is' if len(others) == 1 else 'are'} {', '.join(others)} "
+                "(compared on integer end points only)."
+                if others
+                else "."
+            )
+        )
     bres = sols.get("bresenham")
     bres_p = _bresenham_p(bres, steep) if bres is not None else {}
     dda_pts = _dda_points(sols["dda"], steep)
