@@ -19,6 +19,7 @@ import pytest
 
 import scanconv
 from scanconv import _api
+from scanconv.algorithms.choices import LineAlgorithmName
 from scanconv.core.checks import InputError, check_integer
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -65,9 +66,27 @@ def test_mypy_sees_the_names_and_refuses_a_misspelt_keyword_or_choice(tmp_path: 
         'note: Revealed type is "scanconv.display.Answer"',
         # a misspelt choice is a type error (core.choices), the right spelling is not
         'error: Argument "algo" to "line" has incompatible type "Literal[\'bresenhm\']"; '
-        "expected \"LineAlgorithm | Literal['bresenham', 'dda', 'basic', 'wu', "
-        "'midpoint']\"  [arg-type]",
+        f'expected "LineAlgorithm | Literal[{_listed(LineAlgorithmName)}]"  [arg-type]',
     ], done.stdout + done.stderr
+
+
+def _listed(alias: object) -> str:
+    """A ``Literal``'s values as mypy writes them: ``'bresenham', 'dda'``."""
+    from typing import get_args
+
+    return ", ".join(repr(v) for v in get_args(alias))
+
+
+def test_the_line_methods_literal_is_their_enum() -> None:
+    """The one choice named beside its enum (a new line method is named in one file): the
+    same names in the same order, and each has its method record."""
+    from typing import get_args
+
+    from scanconv.algorithms.choices import LineAlgorithm
+    from scanconv.answers.methods import methods_of
+
+    assert get_args(LineAlgorithmName) == tuple(a.value for a in LineAlgorithm)
+    assert set(get_args(LineAlgorithmName)) == set(methods_of("line"))
 
 
 def test_the_package_says_it_is_typed_and_its_stub_lists_every_public_name() -> None:
@@ -209,7 +228,7 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
     from scanconv.answers.process.fill import inside as answers_inside
 
     enums = {
-        "LineAlgorithmName": choices.LineAlgorithm, "RoundingName": choices.Rounding,
+        "RoundingName": choices.Rounding,
         "TieName": choices.Tie, "StartName": choices.Start, "LineScaleName": choices.LineScale,
         "WuEndsName": choices.WuEnds, "LayoutName": choices.Layout,
         "ConventionName": choices.Convention, "CircleMethodName": circle_choices.CircleMethod,

@@ -164,6 +164,7 @@ COMMANDS = {
     "attributes": {"linestyle", "thickline"},
     "characters": {"char"},
     "midpoint-line": {"line"},
+    "line-methods": {"line"},
     "dither": {"dither", "halftone", "printer"},
 }
 

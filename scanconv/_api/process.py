@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Annotated
 
-from ..algorithms.choices import LineAlgorithm
+from ..algorithms.choices import LineAlgorithm, LineAlgorithmName
 from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
 from ..core import lazy
 from ..core.checks import InputError
@@ -27,7 +27,6 @@ if TYPE_CHECKING:
     from ..core.choices import (
         ClipEndsName,
         FillRuleName,
-        LineAlgorithmName,
         LineClipMethodName,
         MidpointName,
         MidpointStopName,

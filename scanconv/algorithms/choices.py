@@ -9,10 +9,19 @@ the same class as ``scanconv.algorithms.choices.LineAlgorithm``.
 from __future__ import annotations
 
 from enum import Enum
+from typing import Literal
+
+LineAlgorithmName = Literal["bresenham", "dda", "basic", "wu", "midpoint"]
+"""``algo`` of :func:`scanconv.line`, the API's ``Literal`` (what mypy checks a name against):
+one line method's name here and in :class:`LineAlgorithm` just below, the two side by side
+(``tests/test_api_typing.py`` checks they agree, ``tests/test_methods.py`` that each has its
+record). It lives beside the enum, not in :mod:`scanconv.core.choices`, so that a new line
+method is named in one file."""
 
 
 class LineAlgorithm(str, Enum):
-    """The line algorithms, by the names the API and the CLI (``--algo``) take."""
+    """The line algorithms, by the names the API and the CLI (``--algo``) take
+    (:data:`LineAlgorithmName`, in the same order)."""
 
     bresenham = "bresenham"
     dda = "dda"

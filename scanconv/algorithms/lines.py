@@ -293,7 +293,16 @@ def dda_increments(x1: Number, y1: Number, x2: Number, y2: Number) -> tuple[Numb
     >>> dda_increments(2, 2, 5, 10)
     (Fraction(3, 8), 1)
     """
-    steps = dda_steps(x1, y1, x2, y2)
+    return increments(x1, y1, x2, y2, dda_steps(x1, y1, x2, y2))
+
+
+def increments(x1: Number, y1: Number, x2: Number, y2: Number, steps: int) -> tuple[Number, Number]:
+    """``(Δx / steps, Δy / steps)``, the increments of any DDA-family walk; ``(0, 0)`` for a
+    single point.
+
+    >>> increments(2, 2, 10, 6, 16)
+    (Fraction(1, 2), Fraction(1, 4))
+    """
     if steps == 0:
         return 0, 0
     return normalize(Fraction(x2 - x1) / steps), normalize(Fraction(y2 - y1) / steps)

@@ -158,11 +158,11 @@ def compare_lines(x1: Number, y1: Number, x2: Number, y2: Number, theory: bool =
     Examples
     --------
     >>> sol = compare_lines(2, 8, 10, 4)
-    >>> for row in list(sol.tables[0].rows())[:3]:
-    ...     print(row)
-    (2, 8, 8, 8, 8, None)
-    (3, Fraction(15, 2), 8, 8, 7, 'tie')
-    (4, 7, 7, 7, 7, None)
+    >>> for row in list(sol.tables[0].rows())[:3]:  # x, y on the line, basic, DDA, Bresenham
+    ...     print(row[:5], row[-1])
+    (2, 8, 8, 8, 8) None
+    (3, Fraction(15, 2), 8, 8, 7) tie
+    (4, 7, 7, 7, 7) None
     """
     length = max(abs(Fraction(x2 - x1)), abs(Fraction(y2 - y1)))
     if length > MAX_LENGTH:
@@ -247,7 +247,27 @@ def _line_reasons(cells: dict[str, list[int]]) -> list[str]:
         # The DDA's major coordinate moves by at most 1 a step, from P1 to P2 rounded half up,
         # so it covers the basic method's columns exactly; it differs within a column only.
         out.append(DDA_MANY if len(dda) > 1 else DDA_OFF)
+    for name, cell in cells.items():  # the other methods, by their records' reason tags
+        tag = METHODS[f"line/{name}"].fact("tag")
+        if tag and cell != ref:
+            out.append(f"{tag} {'repeats' if len(cell) > 1 else 'off'}")
     return out
+
+
+def _other_note(
+    tag: str, row: tuple[Any, ...], methods: list[str], mnr: str, at: str, e: Number
+) -> str:
+    """The note of a method's own reason tag (``SDDA off``): what it plots in the row's
+    column, and what the basic method plots there."""
+    short, kind = tag.rsplit(" ", 1)
+    m = next(n for n in methods if METHODS[f"line/{n}"].fact("tag") == short)
+    cell, ref = row[2 + methods.index(m)], row[2 + methods.index("basic")]
+    what = f"{mnr} = {cell}" + (" (more than one point of its walk)" if kind == "repeats" else "")
+    return (
+        f"{tag[:1].upper()}{tag[1:]} (rows marked '{tag}'): the {METHODS[f'line/{m}'].title} "
+        f"plots {what} at {at}, where the basic method plots {ref}, the pixel centre nearest "
+        f"the line ({mnr} = {fmt_short(e)} at {at})."
+    )
 
 
 def _line_notes(
@@ -270,7 +290,16 @@ def _line_notes(
             "integers only and can differ from them only at an exact tie."
         )
     else:
-        notes.append("Bresenham's algorithm needs integer end points; it is left out.")
+        others = [NAMES[m] for m in LINE_METHODS[3:] if m not in sols]  # after the notes' three
+        notes.append(
+            "Bresenham's algorithm needs integer end points; it is left out"
+            + (
+                f", and so {'is' if len(others) == 1 else 'are'} {', '.join(others)} "
+                "(compared on integer end points only)."
+                if others
+                else "."
+            )
+        )
     bres = sols.get("bresenham")
     bres_p = _bresenham_p(bres, steep) if bres is not None else {}
     dda_pts = _dda_points(sols["dda"], steep)
@@ -278,17 +307,20 @@ def _line_notes(
         a = row[0]
         e = exact(a)
         at = f"{maj} = {a}"
-        if tag == TIE:
+        if tag not in (TIE, DDA_OFF, DDA_MANY):
+            notes.append(_other_note(tag, row, list(sols), mnr, at, e))
+        elif tag == TIE:
             lo, hi = Fraction(e) - Fraction(1, 2), Fraction(e) + Fraction(1, 2)
             k, p = bres_p.get(a, (None, None))
-            lower = row[-2] == normalize(lo)
+            cell = row[2 + list(sols).index("bresenham")]  # its column, wherever it is
+            lower = cell == normalize(lo)
             way = ("left" if lower else "right") if steep else ("down" if lower else "up")
             notes.append(
                 f"Tie (rows marked 'tie'): at {at} the line is at {mnr} = {fmt_short(e)}, "
                 f"half-way between {fmt_short(lo)} and {fmt_short(hi)}. Rounding half up "
                 f"(basic, DDA) takes "
                 f"{fmt_short(hi)}; Bresenham's p_{k} = {p} steps {mnr} toward the end point, "
-                f"{way} to {row[-2]}."
+                f"{way} to {cell}."
             )
         else:
             pts = dda_pts.get(a, [])

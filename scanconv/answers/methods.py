@@ -199,7 +199,10 @@ _LINE = (
         derivation=_LP + "dda_derivation", pseudocode=_LP + "dda_pseudocode",
         model=_MODELS + "dda_line", raster=_G + "raster:line", errata=_ERRATA + "dda_line",
         practice=_LP + "dda_practice", rows=_L + "rows", cost=20.7, short="DDA",
-        facts=(("work", "x += x_inc, y += y_inc"), ("arithmetic", "fractions, rounding")),
+        facts=(
+            ("work", "x += x_inc, y += y_inc"), ("arithmetic", "fractions, rounding"),
+            ("heading", "Simple DDA line algorithm"),
+        ),
     ),
     Method(
         command="line", name="bresenham", title="Bresenham's line algorithm",

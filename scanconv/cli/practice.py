@@ -51,6 +51,7 @@ class Topic(str, Enum):
     characters = "characters"
     midpoint_line = "midpoint-line"
     antialias = "antialias"
+    line_methods = "line-methods"
     all = "all"
 
 

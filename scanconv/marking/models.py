@@ -27,7 +27,8 @@ from typing import TYPE_CHECKING, NamedTuple
 from ..algorithms.circles import bresenham_increment, midpoint_increment
 from ..algorithms.conventions import rounder
 from ..algorithms.ellipses import increment4, p1_4, p2_4
-from ..algorithms.lines import bresenham_terms, dda_increments, dda_steps
+from ..algorithms.lines import bresenham_terms, dda_steps, increments
+from ..answers import methods
 from ..core.numeric import Number, normalize, round_c_cast
 from ..core.records import Move, Pixel
 
@@ -241,7 +242,8 @@ class UnswappedLine(BresenhamLine):
 
 class DDALine(Model):
     """The simple DDA with exact increments, ``rounding`` and ``start`` as in
-    :func:`scanconv.answers.primitives.line.line_solution`."""
+    :func:`scanconv.answers.primitives.line.line_solution`; ``steps`` another DDA-family
+    method's number of steps (the symmetric DDA's 2^n), the increments Δ/steps."""
 
     def __init__(
         self,
@@ -251,14 +253,15 @@ class DDALine(Model):
         y2: Number,
         rounding: str = "half-up",
         start: str = "given",
+        steps: int | None = None,
     ) -> None:
         dx, dy = x2 - x1, y2 - y1
         steep = abs(Fraction(dy)) > abs(Fraction(dx))
         if start == "swap" and (dy if steep else dx) < 0:
             x1, y1, x2, y2 = x2, y2, x1, y1
         self.first = (normalize(x1), normalize(y1))
-        self.n = dda_steps(x1, y1, x2, y2)
-        self.inc = dda_increments(x1, y1, x2, y2)
+        self.n = dda_steps(x1, y1, x2, y2) if steps is None else steps
+        self.inc = increments(x1, y1, x2, y2, self.n)
         self.rnd = rounder(rounding)
 
     def state(self, exact: tuple[Number, Number], k: int) -> State:
@@ -489,8 +492,11 @@ def midpoint_line(q: LineQuestion) -> Model | None:
 
 
 def dda_line(q: LineQuestion) -> Model:
-    """The DDA with the question's rounding and start."""
-    return DDALine(*q.ends, str(q.knobs.rounding), str(q.knobs.start))
+    """A DDA-family line (the record's answer is ``dda_answer``) with the question's rounding
+    and start, and its record's number of steps (its row estimate less the start row, as the
+    answer counts them)."""
+    steps = methods.METHODS[q.key].load("rows")(q) - 1
+    return DDALine(*q.ends, q.knobs.rounding or "half-up", q.knobs.start or "given", steps)
 
 
 def midpoint_circle(q: CircleQuestion) -> Model:

@@ -12,7 +12,7 @@ from __future__ import annotations
 import random
 from typing import Any
 
-from ..answers.methods import method
+from ..answers.methods import method, methods_of
 from . import windows
 from .records import PracticeQuestion, line_question
 
@@ -419,6 +419,17 @@ def midpoint_line(rng: random.Random, difficulty: str, kind: str) -> PracticeQue
     )
 
 
+def line_methods(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    """``kind``: a line method whose record words a practice question (:data:`LINE_METHODS`),
+    in an octant drawn at random."""
+    q = line_question(rng, difficulty, (rng.randrange(1, 9), False), algo=kind)
+    return q._replace(topic="line-methods")
+
+
+LINE_METHODS = [n for n in methods_of("line") if method("line", n).practice]
+"""The line methods the ``line-methods`` topic draws: every line record with a practice
+wording (a new method's record that names one is drawn with no change here)."""
+
 KINDS: dict[str, list[Any]] = {
     "dither": [
         "ordered",
@@ -446,6 +457,7 @@ KINDS: dict[str, list[Any]] = {
     "attributes": ["dashed", "replication", "dotted", "brush", "mask lsb"],
     "characters": ["bitmap", "stroke", "storage", "font table", "glyph bytes"],
     "antialias": ["wu", "area", "subpixel", "wu-coverage"],
+    "line-methods": LINE_METHODS,
     "midpoint-line": [
         f"octant {o}{', tie' if tie else ''}"
         for o, tie in (
@@ -471,4 +483,5 @@ MAKERS = {
     "characters": characters,
     "midpoint-line": midpoint_line,
     "antialias": antialias,
+    "line-methods": line_methods,
 }

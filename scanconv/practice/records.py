@@ -98,9 +98,12 @@ def line_features(dx: int, dy: int, tie: bool) -> frozenset[str]:
     return frozenset(found)
 
 
-def line_question(rng: random.Random, difficulty: str, kind: tuple[int, bool]) -> PracticeQuestion:
+def line_question(
+    rng: random.Random, difficulty: str, kind: tuple[int, bool], algo: str | None = None
+) -> PracticeQuestion:
     """A line question of ``difficulty`` in the octant ``kind[0]``, with a tie (slope 1/2 with
-    an odd minor length) when ``kind[1]``, by the DDA or Bresenham's algorithm."""
+    an odd minor length) when ``kind[1]``, by ``algo`` (a line method with a practice wording),
+    else by the DDA or Bresenham's algorithm (the notes' two)."""
     which, tie = kind
     r = LINE[difficulty]
     lo, hi = r.steps
@@ -114,7 +117,8 @@ def line_question(rng: random.Random, difficulty: str, kind: tuple[int, bool]) -
     x1 = rng.randrange(max(r.low, r.low - dx), min(r.high, r.high - dx) + 1)
     y1 = rng.randrange(max(r.low, r.low - dy), min(r.high, r.high - dy) + 1)
     x2, y2 = x1 + dx, y1 + dy
-    algo = rng.choice(("dda", "bresenham"))
+    if algo is None:
+        algo = rng.choice(("dda", "bresenham"))
     return PracticeQuestion(
         "line",
         ("line", str(x1), str(y1), str(x2), str(y2), "--algo", algo),

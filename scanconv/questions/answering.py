@@ -211,10 +211,10 @@ def answer(question: str | Sequence[str]) -> Answer:
     'dda'
     >>> [s.pixel for s in answer(["circle", "5"]).steps()][:2]
     [(0, 5), (1, 5)]
-    >>> answer("line 2 2 10 6 --algo zzz")
+    >>> answer("line 2 2 10 6 --tie zzz")
     Traceback (most recent call last):
     ...
-    scanconv.questions.words.UsageError: Invalid value for '--algo' / '-a': 'zzz' is not one of 'bresenham', 'dda', 'basic', 'wu', 'midpoint'.
+    scanconv.questions.words.UsageError: Invalid value for '--tie': 'zzz' is not one of 'step', 'keep'.
     >>> answer("line 0 0 1000000000 1")
     Traceback (most recent call last):
     ...

@@ -8,7 +8,7 @@ one direction only)."""
 
 from __future__ import annotations
 
-from .grammar import Param, Spec, spec_of
+from .grammar import Param, Spec, spec_of, values
 
 
 def specs() -> dict[tuple[str, ...], Spec]:
@@ -23,11 +23,30 @@ def specs() -> dict[tuple[str, ...], Spec]:
     }
 
 
-def _param_source(p: Param) -> str:
+def _enums(path: tuple[str, ...]) -> dict[str, str]:
+    """A declared command's parameters that the library types by an enum: ``name`` to the
+    enum as ``"module:Class"`` (the table reads their choices from it, :func:`values`)."""
+    from enum import Enum
+
+    from ..core.declare import declared
+    from .declared import COMMANDS
+
+    if path not in COMMANDS:
+        return {}
+    return {
+        d.name: f"{d.choices.__module__}:{d.choices.__qualname__}"
+        for d in declared(COMMANDS[path].declaration())
+        if isinstance(d.choices, type) and issubclass(d.choices, Enum)
+    }
+
+
+def _param_source(p: Param, enum: str | None = None) -> str:
     fields = [repr(p.name), repr(p.opts), repr(p.kind)]
     for field in Param._fields[3:]:
         value = getattr(p, field)
-        if value != Param._field_defaults[field]:
+        if field == "choices" and enum is not None and value == values(enum):
+            fields.append(f"choices=values({enum!r})")
+        elif value != Param._field_defaults[field]:
             fields.append(f"{field}={value!r}")
     return f"Param({', '.join(fields)})"
 
@@ -43,7 +62,7 @@ def module_text() -> str:
         "",
         "from fractions import Fraction",
         "",
-        "from .grammar import Param, Spec",
+        "from .grammar import Param, Spec, values",
         "",
         f"NOT_QUESTIONS = {NOT_QUESTIONS!r}",
         '"""Commands that write documents or mark: never a question."""',
@@ -60,8 +79,10 @@ def module_text() -> str:
         "SPECS: dict[tuple[str, ...], Spec] = {",
     ]
     for path, spec in specs().items():
+        enums = _enums(path)
         params = [
-            f"S[{p.name!r}]" if table.S.get(p.name) == p else _param_source(p) for p in spec.params
+            f"S[{p.name!r}]" if table.S.get(p.name) == p else _param_source(p, enums.get(p.name))
+            for p in spec.params
         ]
         rows: list[list[str]] = []  # in the command's order, the shared ones run on one line
         for s in params:

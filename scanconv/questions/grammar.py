@@ -148,6 +148,19 @@ def default_text(value: Any) -> Any:
     return value
 
 
+def values(enum: str) -> tuple[str, ...]:
+    """The values of the enum ``"module:Class"``: the generated table's choices of a
+    parameter the library types by an enum, read from it when the table is imported, so that
+    a new member (a new line method) needs no regenerated table.
+
+    >>> values("scanconv.algorithms.choices:Tie")
+    ('step', 'keep')
+    """
+    from ..core import lazy
+
+    return tuple(m.value for m in lazy.load(enum))
+
+
 def _texts(choices: Any) -> tuple[str, ...]:
     if choices is None:
         return ()

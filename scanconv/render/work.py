@@ -209,10 +209,12 @@ def _aa_polygon(a: Args) -> Work:
 
 
 def _pipeline_line(a: Args) -> Work:
-    # the line is clipped and mapped into the viewport: at most its longer side, plus one
+    # the line is clipped and mapped into the viewport: at most the viewport's diagonal, as
+    # the line method's record counts its rows (the longer side's, plus one), plus one
     vx0, vy0, vx1, vy1 = _coords(a, "viewport")[:4]
-    rows = math.ceil(max(abs(vx1 - vx0), abs(vy1 - vy0))) + 2
-    return Work("rows", rows, None, "pipeline_line/" + _choice(a, "algo", "bresenham"), "viewport")
+    algo = _choice(a, "algo", "bresenham")
+    rows = _rows("line", algo, asked.LineQuestion(algo, vx0, vy0, vx1, vy1)) + 1
+    return Work("rows", rows, None, "pipeline_line/" + algo, "viewport")
 
 
 def _pipeline_polygon(a: Args) -> Work:

@@ -13,9 +13,7 @@ from ...algorithms.lines import (
     bresenham,
     bresenham_notes,
     bresenham_terms,
-    dda,
-    dda_increments,
-    dda_steps,
+    increments,
     orient,
     orient_from_p1,
 )
@@ -44,7 +42,7 @@ from ...core.records import (
     worked,
 )
 from ..asked import LineQuestion, knob_values, line_question
-from ..methods import method
+from ..methods import Method, method
 
 if TYPE_CHECKING:
     from ..theory import derivations as theory
@@ -206,7 +204,7 @@ def annotated(sol: Solution, q: LineQuestion) -> Solution:
     if not q.annotate:
         return sol
     knobs = knob_values(q.knobs)
-    extra = [convention_note("line", q.convention, knobs)]
+    extra = [note for note in (convention_note("line", q.convention, knobs),) if note]
     erratum = method("line", q.algo).load("errata")(q)
     if erratum:
         extra.append(erratum)
@@ -391,15 +389,37 @@ def _bresenham_solution(
     )
 
 
+def _steps_rule(rec: Method, dx: Number, dy: Number, steps_n: int) -> Quantity:
+    """The number of steps as the method's record writes it (its ``steps`` fact, a TeX
+    template of ``{adx}``, ``{ady}``, ``{longest}``, ``{n}`` and ``{steps}``), else the simple
+    DDA's ``max(|Δx|, |Δy|)``, rounded up for fractional end points."""
+    adx, ady = abs_value(dx), abs_value(dy)
+    longest = max(adx, ady)
+    template = rec.fact("steps")
+    if template:
+        text = template.format(
+            adx=fmt_short(adx),
+            ady=fmt_short(ady),
+            longest=fmt_short(longest),
+            n=max(steps_n.bit_length() - 1, 0),
+            steps=steps_n,
+        )
+        return worked("steps", steps_n, text)
+    ceil_note = "" if longest == steps_n else f"{fmt_short(longest)},\\ \\text{{rounded up to }} "
+    return worked(
+        "steps",
+        steps_n,
+        f"\\text{{steps}} = \\max(|\\Delta x|, |\\Delta y|) = \\max({fmt_short(adx)}, "
+        f"{fmt_short(ady)}) = {ceil_note}{steps_n}",
+    )
+
+
 def _dda_derived(
-    x1: Number, y1: Number, x2: Number, y2: Number, swapped: bool
+    rec: Method, x1: Number, y1: Number, x2: Number, y2: Number, swapped: bool, steps_n: int
 ) -> tuple[Quantity, ...]:
     """Δx, Δy, the slope, the number of steps and the increments (from the walk's start)."""
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
-    steps_n = dda_steps(x1, y1, x2, y2)
-    xi, yi = dda_increments(x1, y1, x2, y2)
-    longest = max(abs_value(dx), abs_value(dy))
-    ceil_note = "" if longest == steps_n else f"{fmt_short(longest)},\\ \\text{{rounded up to }} "
+    xi, yi = increments(x1, y1, x2, y2, steps_n)
     incs = (
         worked(
             f"{name}_inc",
@@ -416,12 +436,7 @@ def _dda_derived(
         _diff("y", y1, y2, "dy"),
         _slope(dx, dy),
         _major(dx, dy),
-        worked(
-            "steps",
-            steps_n,
-            f"\\text{{steps}} = \\max(|\\Delta x|, |\\Delta y|) = \\max({fmt_short(abs_value(dx))}, "
-            f"{fmt_short(abs_value(dy))}) = {ceil_note}{steps_n}",
-        ),
+        _steps_rule(rec, dx, dy, steps_n),
         *(incs if steps_n else ()),
     )
 
@@ -436,20 +451,20 @@ _DDA_COLUMNS = (
 )
 
 
-def _dda_solution(
-    x1: Number,
-    y1: Number,
-    x2: Number,
-    y2: Number,
-    rounding: str = "half-up",
-    start: str = "given",
-) -> Solution:
-    asked = (x1, y1, x2, y2)
+def _dda_solution(q: LineQuestion) -> Solution:
+    """A DDA-family line: its record's generator steps both coordinates by Δ/steps from the
+    walk's start, ``steps`` being the record's row estimate less the start row (exact for
+    this family: the simple DDA's ``max(|Δx|, |Δy|)``, the symmetric DDA's ``2^n``)."""
+    rec = method("line", q.algo)
+    generator = rec.load("generator")
+    rounding, start = q.knobs.rounding or "half-up", q.knobs.start or "given"
+    x1, y1, x2, y2 = asked = q.points
     dx, dy = normalize(x2 - x1), normalize(y2 - y1)
     steep = abs_value(dy) > abs_value(dx)
     swapped = start == "swap" and (dy if steep else dx) < 0
     if swapped:  # walk from the end with the smaller major coordinate
         x1, y1, x2, y2 = x2, y2, x1, y1
+    steps_n = rec.load("rows")(q) - 1
     notes = (
         "$x_{k+1} = x_k + x_{inc}$ and $y_{k+1} = y_k + y_{inc}$, computed exactly;"
         + (
@@ -458,20 +473,21 @@ def _dda_solution(
             else f" pixels are {ROUNDING_TEXT[rounding]}."
         ),
     )
+    title = rec.fact("heading") or rec.title[:1].upper() + rec.title[1:]
     return Solution(
         primitive="line",
-        algorithm="dda",
-        title=_title("Simple DDA line algorithm", *asked),
+        algorithm=q.algo,
+        title=_title(title, *asked),
         given=_given(*asked),
-        derived=_dda_derived(x1, y1, x2, y2, swapped),
+        derived=_dda_derived(rec, x1, y1, x2, y2, swapped, steps_n),
         notes=notes,
         walk=Walk(
             columns=_DDA_COLUMNS,
             extra_keys=("x", "y", "round_x", "round_y"),
-            steps=lambda: dda(x1, y1, x2, y2, rounding),
+            steps=lambda: generator(x1, y1, x2, y2, rounding),
         ),
         plot=Plot(
-            pixels=lambda: _once(s.pixel for s in dda(x1, y1, x2, y2, rounding)),
+            pixels=lambda: _once(s.pixel for s in generator(x1, y1, x2, y2, rounding)),
             bbox=_bbox((x1, y1), (x2, y2)),
             ideal=(IdealLine(x1, y1, x2, y2),),
         ),
@@ -541,8 +557,9 @@ def bresenham_answer(q: LineQuestion) -> Solution:
 
 
 def dda_answer(q: LineQuestion) -> Solution:
-    """The DDA (record ``line/dda``); it has one layout."""
-    return annotated(_dda_solution(*q.points, str(q.knobs.rounding), str(q.knobs.start)), q)
+    """A DDA-family line (record ``line/dda``, and any line record naming this answer with
+    its own generator, row estimate and ``steps`` fact); it has one layout."""
+    return annotated(_dda_solution(q), q)
 
 
 def basic_answer(q: LineQuestion) -> Solution:

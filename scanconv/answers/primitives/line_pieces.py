@@ -11,6 +11,7 @@ from ...core import lazy
 from ...core.numeric import Number, fmt_short, normalize
 from ...core.records import Code, Quantity
 from ..asked import LineQuestion
+from ..methods import method
 
 if TYPE_CHECKING:
     from ..theory import derivations as theory
@@ -85,3 +86,9 @@ def dda_practice(q: LineQuestion) -> str:
 def bresenham_practice(q: LineQuestion) -> str:
     """A practice question's wording for Bresenham's line."""
     return _practice("Bresenham's line algorithm", q)
+
+
+def practice(q: LineQuestion) -> str:
+    """A practice question's wording for any line method, named by its record's title (the
+    ``line-methods`` practice topic draws every line record that has a wording)."""
+    return _practice(f"the {method('line', q.algo).title}", q)
