@@ -13,7 +13,7 @@ from typing import Any, NamedTuple
 
 from ...algorithms.clipping import Point as NumPoint
 from ...algorithms.clipping import Rect
-from ...algorithms.radical import ROOTS, Radical, Scalar, approx, round_half_up_exact, simplify
+from ...algorithms.radical import Radical, Scalar, approx, round_half_up_exact, simplify
 from ...algorithms.transform import Matrix, Point, outline
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt, fmt_short, normalize, round_half_up
@@ -26,7 +26,7 @@ MAX_POINTS = 100
 
 def _terms(v: Radical, tex: bool) -> list[tuple[bool, str]]:
     out = []
-    for c, root in zip(v.coef, ROOTS, strict=True):
+    for root, c in v.terms:
         if not c:
             continue
         n, d = abs(c.numerator), c.denominator
