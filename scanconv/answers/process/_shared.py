@@ -105,11 +105,11 @@ def check_points(coords: Sequence[Number], param: str = "points") -> tuple[NumPo
     return tuple((coords[2 * i], coords[2 * i + 1]) for i in range(n))
 
 
-def matrix_rows(name: str, what: str, m: Matrix) -> list[tuple[str, str, str, str, str]]:
-    """Three table rows showing a matrix, named on its first row."""
+def matrix_rows(name: str, what: str, m: Sequence[Sequence[Scalar]]) -> list[tuple[str, ...]]:
+    """A matrix's rows as table rows (three for 2D, four for 3D), named on its first row."""
     return [
-        (name if i == 0 else "", ascii_text(what) if i == 0 else "", *(text(v) for v in m[i]))  # type: ignore[misc]
-        for i in range(3)
+        (name if i == 0 else "", ascii_text(what) if i == 0 else "", *(text(v) for v in m[i]))
+        for i in range(len(m))
     ]
 
 

@@ -1,0 +1,285 @@
+"""The worked answer of a 3D projection: the projection matrix with its numbers, the projected
+vertex table (``M·P = (X, Y, Z, W)``, then the point ``(X/W, Y/W)``), the vanishing points of a
+perspective, the foreshortening of an axonometric projection, and a drawn figure of the
+projected solid from its edges.
+
+Transformations given before the projection (``--translate 0 0 2``, as ``3d transform`` takes
+them) are applied first. The conventions (:mod:`scanconv.algorithms.space_conventions`)
+decide how the matrices are written, what the oblique angle means and where the centre of
+projection is.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from fractions import Fraction
+from typing import Any
+
+from ...algorithms import projection as pj
+from ...algorithms import space
+from ...algorithms.radical import Radical, Scalar, approx, round_half_up_exact, simplify
+from ...algorithms.space import Matrix4, Point3
+from ...algorithms.transform import cos_sin, outline
+from ...core.checks import InputError
+from ...core.ideal import Polyline
+from ...core.numeric import fmt_short
+from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
+from ..process._shared import json_scalar, matrix_json, matrix_rows, matrix_tex, matrix_text, text
+from ..process.transform import parse_angle
+from .transform import (
+    MATRIX_COLUMNS,
+    Factor,
+    Stage,
+    approx_point,
+    conventions,
+    irrational,
+    notes_of,
+    parse,
+    point_text,
+    solid_of,
+    stage_matrices,
+    vertices_given,
+)
+
+FIGURE_CELLS = 24
+"""The drawn figure's longer side, in grid cells: the projected solid is scaled to it."""
+
+
+def _trig(deg: Fraction, what: str) -> tuple[Scalar, Scalar]:
+    c, s, exact = cos_sin(deg)
+    if not exact:
+        raise InputError(f"{what} must be a multiple of 15 degrees to stay exact, got {fmt_short(deg)}", what)
+    return c, s
+
+
+def _degrees(word: str | None, default: int, what: str) -> Fraction:
+    if word is None:
+        return Fraction(default)
+    deg = parse_angle(word)[0]
+    if deg is None:
+        raise InputError(f"{what} must be in degrees or a multiple of pi, got {word!r}", what)
+    return deg
+
+
+def _rot(axis: str, c: Scalar, s: Scalar, name: str, sense: int) -> Factor:
+    return Factor(f"R{axis}({name})", f"R_{axis}({name})", space.rotation(axis, c, sense * s))
+
+
+def _parallel(kind: str, view: str, a: dict[str, Any], used: dict[str, str], sense: int) -> tuple[list[Factor], list[Quantity], str]:
+    """The factors of a parallel projection, its working, and its description."""
+    if kind == "orthographic":
+        p = pj.orthographic(view)
+        zero = {"xy": "z", "yz": "x", "zx": "y"}[view]
+        return [Factor(f"P_{view}", f"P_{{{view}}}", p)], [], f"orthographic projection onto the {view} plane ({zero} = 0)"
+    if kind in ("oblique", "cavalier", "cabinet"):
+        return _oblique(kind, a, used)
+    if kind == "isometric":
+        (cp, sp), (ct, st) = pj.ISOMETRIC
+        work = [Quantity("angles", None, "φ = 45° about y; θ about x with sin θ = 1/sqrt(3) = sqrt(3)/3, cos θ = sqrt(6)/3 (θ ≈ 35.26°)",
+                         "\\phi = 45^\\circ,\\ \\sin\\theta = \\tfrac{1}{\\sqrt{3}},\\ \\cos\\theta = \\tfrac{\\sqrt{6}}{3}")]  # fmt: skip
+        names = ("45°", "θ")
+    elif kind == "dimetric":
+        f = a.get("ratio") or Fraction(1, 2)
+        if not 0 < f <= 1:
+            raise InputError(f"dimetric: the z axis's foreshortening --ratio must be in (0, 1], got {fmt_short(f)}", "ratio")
+        (cp, sp), (ct, st) = pj.dimetric(f)
+        work = [Quantity("angles", None, f"f_z = {fmt_short(f)}: sin θ = f_z/sqrt(2) = {text(st)}, cos θ = {text(ct)}; "
+                         f"sin φ = f_z/sqrt(2 - f_z²) = {text(sp)}, cos φ = {text(cp)}",
+                         f"f_z = {fmt_short(f)}:\\ \\sin\\theta = {text(st, True)},\\ \\sin\\phi = {text(sp, True)}")]  # fmt: skip
+        names = ("φ", "θ")
+    else:
+        phi, theta = (_degrees(w, d, "angles") for w, d in zip(a.get("angles") or (None, None), (30, 45), strict=True))
+        cp, sp = _trig(phi, "angles")
+        ct, st = _trig(theta, "angles")
+        work = []
+        names = (f"{fmt_short(phi)}°", f"{fmt_short(theta)}°")
+    factors = [_rot("y", cp, sp, names[0], sense), _rot("x", ct, st, names[1], sense),
+               Factor("P_z", "P_z", pj.onto_z0())]  # fmt: skip
+    return factors, work, f"{kind} projection: about y by {names[0]}, about x by {names[1]}, onto z = 0"
+
+
+def _oblique(kind: str, a: dict[str, Any], used: dict[str, str]) -> tuple[list[Factor], list[Quantity], str]:
+    fixed = {"cavalier": Fraction(1), "cabinet": Fraction(1, 2)}
+    if used["oblique"] == "projector" and kind == "oblique":
+        alpha = _degrees(a.get("angle"), 45, "angle")
+        ca, sa = _trig(alpha, "angle")
+        if sa == 0:
+            raise InputError("the projectors cannot be parallel to the view plane (α = 0)", "angle")
+        ratio = simplify(Radical.of(ca) / sa)
+        phi = _degrees(a.get("receding"), 45, "receding")
+        how = f"L1 = cot α = cot {fmt_short(alpha)}° = {text(ratio)}"
+    else:
+        phi = _degrees(a.get("angle"), 45, "angle")
+        ratio = fixed.get(kind) or a.get("ratio") or Fraction(1, 2)
+        how = {"cavalier": "L1 = 1 (cavalier: α = 45°)", "cabinet": "L1 = 1/2 (cabinet: tan α = 2, α ≈ 63.43°)"}.get(
+            kind, f"L1 = {text(ratio)}"
+        )
+    c, s = _trig(phi, "angle")
+    work = [Quantity("oblique", (json_scalar(ratio), json_scalar(c), json_scalar(s)),
+                     f"{how}; φ = {fmt_short(phi)}°: cos φ = {text(c)}, sin φ = {text(s)}; x' = x + L1·z·cos φ, y' = y + L1·z·sin φ",
+                     f"L_1 = {text(ratio, True)},\\ \\phi = {fmt_short(phi)}^\\circ:\\ x' = x + L_1 z \\cos\\phi,\\ y' = y + L_1 z \\sin\\phi")]  # fmt: skip
+    m = pj.oblique(ratio, c, s)
+    return [Factor("P_obl", "P_{obl}", m)], work, f"{kind} projection onto z = 0 (L1 = {text(ratio)}, φ = {fmt_short(phi)}°)"
+
+
+def _perspective(kind: str, a: dict[str, Any], used: dict[str, str], sense: int) -> tuple[list[Factor], list[Quantity], str]:
+    d = Fraction(a.get("d") or 1)
+    if d <= 0:
+        raise InputError(f"the distance d must be positive, got {fmt_short(d)}", "d")
+    factors: list[Factor] = []
+    angles = a.get("angles") or ()
+    if kind in ("two-point", "three-point"):
+        phi = _degrees(angles[0] if angles else a.get("angle"), 30, "angle")
+        c, s = _trig(phi, "angle")
+        if c == 0 or s == 0:
+            raise InputError("the turn about y must not be a multiple of 90° (two axes must meet the view plane)", "angle")
+        factors.append(_rot("y", c, s, f"{fmt_short(phi)}°", sense))
+    if kind == "three-point":
+        theta = _degrees(angles[1] if len(angles) > 1 else None, 30, "angles")
+        c, s = _trig(theta, "angles")
+        if c == 0 or s == 0:
+            raise InputError("the turn about x must not be a multiple of 90° (three axes must meet the view plane)", "angles")
+        factors.append(_rot("x", c, s, f"{fmt_short(theta)}°", sense))
+    cop = used["cop"]
+    per = pj.perspective(cop, d)
+    factors.append(Factor("P_per", "P_{per}", per))
+    centre = {"minus-d": f"(0, 0, -{fmt_short(d)}), view plane z = 0", "plus-d": f"(0, 0, {fmt_short(d)}), view plane z = 0",
+              "origin": f"the origin, view plane z = {fmt_short(d)}"}[cop]  # fmt: skip
+    formula = {"minus-d": "x' = x·d/(z + d), y' = y·d/(z + d)", "plus-d": "x' = x·d/(d - z), y' = y·d/(d - z)",
+               "origin": "x' = x·d/z, y' = y·d/z"}[cop]  # fmt: skip
+    work = [Quantity("centre", json_scalar(d), f"d = {fmt_short(d)}: centre of projection {centre}; {formula}",
+                     f"d = {fmt_short(d)}:\\ {formula.replace('·', ' ')}")]  # fmt: skip
+    return factors, work, f"{kind} perspective projection, centre {centre}"
+
+
+def _figure(s: space.Solid, uv: Sequence[tuple[Scalar, Scalar]], title: str) -> Plot:
+    """The projected solid's edges, scaled to :data:`FIGURE_CELLS` cells."""
+    us = [approx(u) for u, _ in uv]
+    vs = [approx(v) for _, v in uv]
+    extent = max(max(us) - min(us), max(vs) - min(vs))
+    scale = max(1, int(FIGURE_CELLS / extent)) if extent else 1
+    pts = [(simplify(u * scale), simplify(v * scale)) for u, v in uv]
+    cells = [(round_half_up_exact(u), round_half_up_exact(v)) for u, v in pts]
+    pixels = tuple(dict.fromkeys(p for i, j in s.edges for p in outline([cells[i], cells[j]], closed=False)))
+    xs, ys = [p[0] for p in pixels] or [0], [p[1] for p in pixels] or [0]
+    ideal = tuple(Polyline([(float(pts[i][0]), float(pts[i][1])), (float(pts[j][0]), float(pts[j][1]))], "edge")
+                  for i, j in s.edges)  # fmt: skip
+    return Plot(
+        pixels=lambda: iter(pixels),
+        bbox=(min(xs), min(ys), max(xs), max(ys)),
+        marks=tuple(dict.fromkeys(cells)),
+        marks_label=f"vertices ({title}, scaled by {scale})",
+        ideal=ideal,
+    )
+
+
+def _vp_table(m: Matrix4) -> tuple[Table, list[Any]]:
+    vps = pj.vanishing_points(m)
+    rows = [
+        (f"{axis} axis", "(" + ", ".join(text(v) for v in h) + ")",
+         "none: parallel to the view plane" if vp is None else point_text(vp[:2]))
+        for axis, h, vp in vps
+    ]  # fmt: skip
+    cols = (
+        Column("axis", "direction", r"\text{direction}", role="label"),
+        Column("image", "M·[d, 0] = (X, Y, Z, W)", r"M [d, 0]^T", role="working"),
+        Column("vp", "vanishing point (X/W, Y/W)", r"\text{vanishing point}"),
+    )
+    data = [None if vp is None else [json_scalar(v) for v in vp[:2]] for _, _, vp in vps]
+    return Table("Vanishing points of the principal axes", cols, lambda: rows), data
+
+
+def project_solution(words: Sequence[str], solid: str | None = None, parallel: str | None = None,
+                     perspective: str | None = None, view: str | None = None, angle: str | None = None,
+                     receding: str | None = None, angles: Sequence[str] | None = None, ratio: Fraction | None = None,
+                     d: Fraction | None = None, convention: str | None = None, **given: str | None) -> Solution:  # fmt: skip
+    """The worked answer of the projection of the vertices (or ``solid``), after any
+    transformations in ``words``.
+
+    >>> sol = project_solution([], "unit-cube", parallel="cavalier")
+    >>> sol.data["projected"][4]
+    ['sqrt(2)/2', 'sqrt(2)/2']
+    """
+    used, sense, written = conventions(convention, given)
+    points, stages = parse(words, sense)
+    s = solid_of(points, solid)
+    if (parallel is None) == (perspective is None):
+        raise InputError("choose one projection: --parallel KIND or --perspective KIND", "parallel")
+    if view is not None and parallel != "orthographic":
+        raise InputError("--view applies to --parallel orthographic", "view")
+    a = {"angle": angle, "receding": receding, "angles": angles, "ratio": ratio, "d": d}
+    if perspective is None:
+        factors, work, label = _parallel(str(parallel), view or "xy", a, used, sense)
+    else:
+        factors, work, label = _perspective(perspective, a, used, sense)
+    all_stages = [*stages, Stage(label, tuple(factors), tuple(work), True)]
+    derived, mat_rows, mats = stage_matrices(all_stages, written)
+    m = space.compose(mats)
+    order = written.product([f"M{i}" for i in range(1, len(mats) + 1)])
+    shown = written.shown(m)
+    if len(mats) > 1:
+        derived.append(Quantity("M", matrix_json(shown), f"M = {order} = {matrix_text(shown)}",
+                                f"M = {order.replace('·', ' ')} = {matrix_tex(shown)}"))  # fmt: skip
+        mat_rows += matrix_rows("M", f"composite {order}", shown)
+    projected = []
+    for lab, p in zip(s.labels, s.vertices, strict=True):
+        try:
+            projected.append(pj.project(m, p))
+        except ZeroDivisionError:
+            raise InputError(f"vertex {lab} {point_text(p)} is in the plane of the centre of projection (W = 0)", "d") from None
+        if projected[-1].homogeneous[3] == 0 or approx(projected[-1].homogeneous[3]) < 0:
+            raise InputError(f"vertex {lab} {point_text(p)} is behind the centre of projection (W < 0)", "d")
+    uv_index = pj.VIEWS[view or "xy"] if parallel == "orthographic" else (0, 1)
+    uv = pj.drawn([q.point for q in projected], uv_index)
+    names = "xyz"
+    u_name, v_name = names[uv_index[0]], names[uv_index[1]]
+    rough = irrational(uv)
+    cols = [
+        Column("vertex", "vertex", r"\text{vertex}", role="label"),
+        Column("before", "P = (x, y, z)", "P = (x, y, z)", role="given"),
+        Column("h", "M·P = (X, Y, Z, W)", r"M P = (X, Y, Z, W)", role="working"),
+        Column("after", f"P' = ({u_name}', {v_name}')", f"P' = ({u_name}', {v_name}')"),
+    ]
+    if rough:
+        cols.append(Column("approx", "P' (approx.)", r"P' \text{ (approx.)}"))
+
+    def rows() -> list[tuple[str, ...]]:
+        return [
+            (lab, point_text(p), "(" + ", ".join(text(v) for v in q.homogeneous) + ")", point_text(w),
+             *((approx_point(w),) if rough else ()))
+            for lab, p, q, w in zip(s.labels, s.vertices, projected, uv, strict=True)
+        ]  # fmt: skip
+
+    tables = [Table(f"Matrices ({written.law})", MATRIX_COLUMNS, lambda: mat_rows),
+              Table("Projected vertices", tuple(cols), rows)]  # fmt: skip
+    data: dict[str, Any] = {
+        "conventions": used,
+        "matrix": matrix_json(shown),
+        "projected": [[json_scalar(v) for v in p] for p in uv],
+        "edges": [list(e) for e in s.edges],
+    }
+    if perspective is not None:
+        vp_table, data["vanishing_points"] = _vp_table(m)
+        tables.append(vp_table)
+    if parallel in ("isometric", "dimetric", "trimetric"):
+        f2 = pj.foreshortening(m)
+        derived.append(Quantity("foreshortening", [json_scalar(v) for v in f2],
+                                "foreshortening f² of the unit x, y, z vectors: " + ", ".join(text(v) for v in f2),
+                                "f_x^2, f_y^2, f_z^2 = " + ", ".join(text(v, True) for v in f2)))  # fmt: skip
+    knobs = ("vectors", "axes", "sense", *(("cop",) if perspective else ()),
+             *(("oblique",) if parallel in ("oblique", "cavalier", "cabinet") else ()))  # fmt: skip
+    notes = notes_of(convention, used, knobs, all(st.exact for st in stages))
+    notes.append(f"{written.law} with P = [x, y, z, 1]; the projected point is (X/W, Y/W); M = {order}.")
+    if rough:
+        notes.append("Values with square roots are exact; the figure rounds them half up.")
+    return Solution(
+        primitive="3d-project",
+        algorithm=perspective or str(parallel),
+        title=f"3D projection of {s.title}: {label}",
+        given=vertices_given(s),
+        derived=tuple(derived),
+        notes=tuple(notes),
+        walk=Walk(tables=tuple(tables)),
+        plot=_figure(s, uv, label),
+        data=data,
+    )
