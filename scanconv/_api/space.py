@@ -252,7 +252,7 @@ def project3d(
         ratio=None if ratio is None else _number(ratio, "ratio"),
         d=None if d is None else _number(d, "d"),
         convention=convention,
-        oblique=oblique,
         cop=cop,
+        **{"oblique-angle": oblique},
         **_given(vectors, axes, sense),
     )

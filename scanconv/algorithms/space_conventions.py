@@ -18,7 +18,7 @@ Published answers differ on each, and each changes what is printed:
   z_prp = d, z_vp = 0), or at the origin and the view plane z = d (``x' = x·d/z``, Foley).
 
 >>> resolve(None, {})["cop"], resolve("rogers", {"cop": "origin"})
-('plus-d', {'vectors': 'row', 'axes': 'right', 'sense': 'standard', 'oblique': 'receding', 'cop': 'origin'})
+('plus-d', {'vectors': 'row', 'axes': 'right', 'sense': 'standard', 'oblique-angle': 'receding', 'cop': 'origin'})
 """
 
 from __future__ import annotations
@@ -44,7 +44,7 @@ SPACE_KNOBS: dict[str, dict[str, str]] = {
         "reversed": "a positive angle turns z toward y about x, x toward z about y, y toward x "
         "about z (the matrices with -θ)",
     },
-    "oblique": {
+    "oblique-angle": {
         "receding": "the oblique angle is the receding angle φ of the z axis on the view plane, "
         "from the x axis",
         "projector": "the oblique angle is the angle α between the projectors and the view "
@@ -64,21 +64,21 @@ SPACE_PRESETS: dict[str, dict[str, str]] = {
         "vectors": "column",
         "axes": "right",
         "sense": "standard",
-        "oblique": "receding",
+        "oblique-angle": "receding",
         "cop": "plus-d",
     },
     "foley": {
         "vectors": "column",
         "axes": "right",
         "sense": "standard",
-        "oblique": "receding",
+        "oblique-angle": "receding",
         "cop": "origin",
     },
     "rogers": {
         "vectors": "row",
         "axes": "right",
         "sense": "standard",
-        "oblique": "receding",
+        "oblique-angle": "receding",
         "cop": "minus-d",
     },
 }

@@ -13,7 +13,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from fractions import Fraction
-from typing import Any
+from collections.abc import Callable
+from typing import Any, NamedTuple
 
 from ...algorithms import projection as pj
 from ...algorithms import space
@@ -24,6 +25,7 @@ from ...core.checks import InputError
 from ...core.ideal import Polyline
 from ...core.numeric import fmt_short
 from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
+from ..methods import method
 from ..process._shared import json_scalar, matrix_json, matrix_rows, matrix_tex, matrix_text, text
 from ..process.transform import parse_angle
 from .transform import (
@@ -65,42 +67,65 @@ def _rot(axis: str, c: Scalar, s: Scalar, name: str, sense: int) -> Factor:
     return Factor(f"R{axis}({name})", f"R_{axis}({name})", space.rotation(axis, c, sense * s))
 
 
-def _parallel(kind: str, view: str, a: dict[str, Any], used: dict[str, str], sense: int) -> tuple[list[Factor], list[Quantity], str]:
-    """The factors of a parallel projection, its working, and its description."""
-    if kind == "orthographic":
-        p = pj.orthographic(view)
-        zero = {"xy": "z", "yz": "x", "zx": "y"}[view]
-        return [Factor(f"P_{view}", f"P_{{{view}}}", p)], [], f"orthographic projection onto the {view} plane ({zero} = 0)"
-    if kind in ("oblique", "cavalier", "cabinet"):
-        return _oblique(kind, a, used)
-    if kind == "isometric":
-        (cp, sp), (ct, st) = pj.ISOMETRIC
-        work = [Quantity("angles", None, "φ = 45° about y; θ about x with sin θ = 1/sqrt(3) = sqrt(3)/3, cos θ = sqrt(6)/3 (θ ≈ 35.26°)",
-                         "\\phi = 45^\\circ,\\ \\sin\\theta = \\tfrac{1}{\\sqrt{3}},\\ \\cos\\theta = \\tfrac{\\sqrt{6}}{3}")]  # fmt: skip
-        names = ("45°", "θ")
-    elif kind == "dimetric":
-        f = a.get("ratio") or Fraction(1, 2)
-        if not 0 < f <= 1:
-            raise InputError(f"dimetric: the z axis's foreshortening --ratio must be in (0, 1], got {fmt_short(f)}", "ratio")
-        (cp, sp), (ct, st) = pj.dimetric(f)
-        work = [Quantity("angles", None, f"f_z = {fmt_short(f)}: sin θ = f_z/sqrt(2) = {text(st)}, cos θ = {text(ct)}; "
-                         f"sin φ = f_z/sqrt(2 - f_z²) = {text(sp)}, cos φ = {text(cp)}",
-                         f"f_z = {fmt_short(f)}:\\ \\sin\\theta = {text(st, True)},\\ \\sin\\phi = {text(sp, True)}")]  # fmt: skip
-        names = ("φ", "θ")
-    else:
-        phi, theta = (_degrees(w, d, "angles") for w, d in zip(a.get("angles") or (None, None), (30, 45), strict=True))
-        cp, sp = _trig(phi, "angles")
-        ct, st = _trig(theta, "angles")
-        work = []
-        names = (f"{fmt_short(phi)}°", f"{fmt_short(theta)}°")
+class Built(NamedTuple):
+    """A projection as one kind builds it: its factors (applied in order), its working, its
+    description, the coordinates drawn, the options it reads, and what else it shows."""
+
+    factors: list[Factor]
+    work: list[Quantity]
+    label: str
+    uv: tuple[int, int] = (0, 1)
+    reads: tuple[str, ...] = ()
+    vanishing: bool = False
+    foreshortening: bool = False
+    knobs: tuple[str, ...] = ()
+
+
+Builder = Callable[[dict[str, Any], dict[str, str], int], Built]
+
+
+def orthographic(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    view = a.get("view") or "xy"
+    zero = "xyz"[3 - sum(pj.VIEWS[view])]
+    p = pj.orthographic(view)
+    label = f"orthographic projection onto the {view} plane ({zero} = 0)"
+    return Built([Factor(f"P_{view}", f"P_{{{view}}}", p)], [], label, pj.VIEWS[view], ("view",))
+
+
+def _axonometric(kind: str, cs: Any, work: list[Quantity], names: tuple[str, str], sense: int, reads: tuple[str, ...]) -> Built:
+    (cp, sp), (ct, st) = cs
     factors = [_rot("y", cp, sp, names[0], sense), _rot("x", ct, st, names[1], sense),
                Factor("P_z", "P_z", pj.onto_z0())]  # fmt: skip
-    return factors, work, f"{kind} projection: about y by {names[0]}, about x by {names[1]}, onto z = 0"
+    label = f"{kind} projection: about y by {names[0]}, about x by {names[1]}, onto z = 0"
+    return Built(factors, work, label, reads=reads, foreshortening=True)
 
 
-def _oblique(kind: str, a: dict[str, Any], used: dict[str, str]) -> tuple[list[Factor], list[Quantity], str]:
-    fixed = {"cavalier": Fraction(1), "cabinet": Fraction(1, 2)}
-    if used["oblique"] == "projector" and kind == "oblique":
+def isometric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    work = [Quantity("angles", None, "φ = 45° about y; θ about x with sin θ = 1/sqrt(3) = sqrt(3)/3, cos θ = sqrt(6)/3 (θ ≈ 35.26°)",
+                     "\\phi = 45^\\circ,\\ \\sin\\theta = \\tfrac{1}{\\sqrt{3}},\\ \\cos\\theta = \\tfrac{\\sqrt{6}}{3}")]  # fmt: skip
+    return _axonometric("isometric", pj.ISOMETRIC, work, ("45°", "θ"), sense, ())
+
+
+def dimetric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    f = a.get("ratio") or Fraction(1, 2)
+    if not 0 < f <= 1:
+        raise InputError(f"dimetric: the z axis's foreshortening --ratio must be in (0, 1], got {fmt_short(f)}", "ratio")
+    (cp, sp), (ct, st) = cs = pj.dimetric(f)
+    work = [Quantity("angles", None, f"f_z = {fmt_short(f)}: sin θ = f_z/sqrt(2) = {text(st)}, cos θ = {text(ct)}; "
+                     f"sin φ = f_z/sqrt(2 - f_z²) = {text(sp)}, cos φ = {text(cp)}",
+                     f"f_z = {fmt_short(f)}:\\ \\sin\\theta = {text(st, True)},\\ \\sin\\phi = {text(sp, True)}")]  # fmt: skip
+    return _axonometric("dimetric", cs, work, ("φ", "θ"), sense, ("ratio",))
+
+
+def trimetric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    phi, theta = (_degrees(w, d, "angles") for w, d in zip(a.get("angles") or (None, None), (30, 45), strict=True))
+    cs = (_trig(phi, "angles"), _trig(theta, "angles"))
+    return _axonometric("trimetric", cs, [], (f"{fmt_short(phi)}°", f"{fmt_short(theta)}°"), sense, ("angles",))
+
+
+def _oblique(kind: str, ratio: Scalar | None, how: str, a: dict[str, Any], used: dict[str, str]) -> Built:
+    reads: tuple[str, ...] = ("angle",)
+    if used["oblique-angle"] == "projector" and ratio is None:
         alpha = _degrees(a.get("angle"), 45, "angle")
         ca, sa = _trig(alpha, "angle")
         if sa == 0:
@@ -108,48 +133,69 @@ def _oblique(kind: str, a: dict[str, Any], used: dict[str, str]) -> tuple[list[F
         ratio = simplify(Radical.of(ca) / sa)
         phi = _degrees(a.get("receding"), 45, "receding")
         how = f"L1 = cot α = cot {fmt_short(alpha)}° = {text(ratio)}"
+        reads += ("receding",)
     else:
         phi = _degrees(a.get("angle"), 45, "angle")
-        ratio = fixed.get(kind) or a.get("ratio") or Fraction(1, 2)
-        how = {"cavalier": "L1 = 1 (cavalier: α = 45°)", "cabinet": "L1 = 1/2 (cabinet: tan α = 2, α ≈ 63.43°)"}.get(
-            kind, f"L1 = {text(ratio)}"
-        )
+        if ratio is None:
+            ratio = a.get("ratio") or Fraction(1, 2)
+            how = f"L1 = {text(ratio)}"
+            reads += ("ratio",)
     c, s = _trig(phi, "angle")
     work = [Quantity("oblique", (json_scalar(ratio), json_scalar(c), json_scalar(s)),
                      f"{how}; φ = {fmt_short(phi)}°: cos φ = {text(c)}, sin φ = {text(s)}; x' = x + L1·z·cos φ, y' = y + L1·z·sin φ",
                      f"L_1 = {text(ratio, True)},\\ \\phi = {fmt_short(phi)}^\\circ:\\ x' = x + L_1 z \\cos\\phi,\\ y' = y + L_1 z \\sin\\phi")]  # fmt: skip
-    m = pj.oblique(ratio, c, s)
-    return [Factor("P_obl", "P_{obl}", m)], work, f"{kind} projection onto z = 0 (L1 = {text(ratio)}, φ = {fmt_short(phi)}°)"
+    label = f"{kind} projection onto z = 0 (L1 = {text(ratio)}, φ = {fmt_short(phi)}°)"
+    return Built([Factor("P_obl", "P_{obl}", pj.oblique(ratio, c, s))], work, label, reads=reads, knobs=("oblique-angle",))
 
 
-def _perspective(kind: str, a: dict[str, Any], used: dict[str, str], sense: int) -> tuple[list[Factor], list[Quantity], str]:
+def oblique(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _oblique("oblique", None, "", a, used)
+
+
+def cavalier(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _oblique("cavalier", 1, "L1 = 1 (cavalier: α = 45°)", a, used)
+
+
+def cabinet(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _oblique("cabinet", Fraction(1, 2), "L1 = 1/2 (cabinet: tan α = 2, α ≈ 63.43°)", a, used)
+
+
+def _turn(axis: str, word: str | None, default: int, what: str, sense: int) -> Factor:
+    deg = _degrees(word, default, what)
+    c, s = _trig(deg, what)
+    if c == 0 or s == 0:
+        raise InputError(f"the turn about {axis} must not be a multiple of 90° (its axes must meet the view plane)", what)
+    return _rot(axis, c, s, f"{fmt_short(deg)}°", sense)
+
+
+def _perspective(kind: str, turns: list[Factor], a: dict[str, Any], used: dict[str, str], reads: tuple[str, ...]) -> Built:
     d = Fraction(a.get("d") or 1)
     if d <= 0:
         raise InputError(f"the distance d must be positive, got {fmt_short(d)}", "d")
-    factors: list[Factor] = []
-    angles = a.get("angles") or ()
-    if kind in ("two-point", "three-point"):
-        phi = _degrees(angles[0] if angles else a.get("angle"), 30, "angle")
-        c, s = _trig(phi, "angle")
-        if c == 0 or s == 0:
-            raise InputError("the turn about y must not be a multiple of 90° (two axes must meet the view plane)", "angle")
-        factors.append(_rot("y", c, s, f"{fmt_short(phi)}°", sense))
-    if kind == "three-point":
-        theta = _degrees(angles[1] if len(angles) > 1 else None, 30, "angles")
-        c, s = _trig(theta, "angles")
-        if c == 0 or s == 0:
-            raise InputError("the turn about x must not be a multiple of 90° (three axes must meet the view plane)", "angles")
-        factors.append(_rot("x", c, s, f"{fmt_short(theta)}°", sense))
     cop = used["cop"]
-    per = pj.perspective(cop, d)
-    factors.append(Factor("P_per", "P_{per}", per))
     centre = {"minus-d": f"(0, 0, -{fmt_short(d)}), view plane z = 0", "plus-d": f"(0, 0, {fmt_short(d)}), view plane z = 0",
               "origin": f"the origin, view plane z = {fmt_short(d)}"}[cop]  # fmt: skip
     formula = {"minus-d": "x' = x·d/(z + d), y' = y·d/(z + d)", "plus-d": "x' = x·d/(d - z), y' = y·d/(d - z)",
                "origin": "x' = x·d/z, y' = y·d/z"}[cop]  # fmt: skip
     work = [Quantity("centre", json_scalar(d), f"d = {fmt_short(d)}: centre of projection {centre}; {formula}",
                      f"d = {fmt_short(d)}:\\ {formula.replace('·', ' ')}")]  # fmt: skip
-    return factors, work, f"{kind} perspective projection, centre {centre}"
+    factors = [*turns, Factor("P_per", "P_{per}", pj.perspective(cop, d))]
+    label = f"{kind} perspective projection, centre {centre}"
+    return Built(factors, work, label, reads=("d", *reads), vanishing=True, knobs=("cop",))
+
+
+def one_point(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _perspective("one-point", [], a, used, ())
+
+
+def two_point(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _perspective("two-point", [_turn("y", a.get("angle"), 30, "angle", sense)], a, used, ("angle",))
+
+
+def three_point(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    phi, theta = a.get("angles") or (None, None)
+    turns = [_turn("y", phi, 30, "angles", sense), _turn("x", theta, 30, "angles", sense)]
+    return _perspective("three-point", turns, a, used, ("angles",))
 
 
 def _figure(s: space.Solid, uv: Sequence[tuple[Scalar, Scalar]], title: str) -> Plot:
@@ -205,14 +251,14 @@ def project_solution(words: Sequence[str], solid: str | None = None, parallel: s
     s = solid_of(points, solid)
     if (parallel is None) == (perspective is None):
         raise InputError("choose one projection: --parallel KIND or --perspective KIND", "parallel")
-    if view is not None and parallel != "orthographic":
-        raise InputError("--view applies to --parallel orthographic", "view")
-    a = {"angle": angle, "receding": receding, "angles": angles, "ratio": ratio, "d": d}
-    if perspective is None:
-        factors, work, label = _parallel(str(parallel), view or "xy", a, used, sense)
-    else:
-        factors, work, label = _perspective(perspective, a, used, sense)
-    all_stages = [*stages, Stage(label, tuple(factors), tuple(work), True)]
+    kind = str(parallel or perspective)
+    a = {"view": view, "angle": angle, "receding": receding, "angles": angles, "ratio": ratio, "d": d}
+    built: Built = method("3d", kind).load("generator")(a, used, sense)
+    for name, value in a.items():
+        if value is not None and name not in built.reads:
+            raise InputError(f"--{name} does not apply to the {kind} projection", name)
+    label = built.label
+    all_stages = [*stages, Stage(label, tuple(built.factors), tuple(built.work), True)]
     derived, mat_rows, mats = stage_matrices(all_stages, written)
     m = space.compose(mats)
     order = written.product([f"M{i}" for i in range(1, len(mats) + 1)])
@@ -229,7 +275,7 @@ def project_solution(words: Sequence[str], solid: str | None = None, parallel: s
             raise InputError(f"vertex {lab} {point_text(p)} is in the plane of the centre of projection (W = 0)", "d") from None
         if projected[-1].homogeneous[3] == 0 or approx(projected[-1].homogeneous[3]) < 0:
             raise InputError(f"vertex {lab} {point_text(p)} is behind the centre of projection (W < 0)", "d")
-    uv_index = pj.VIEWS[view or "xy"] if parallel == "orthographic" else (0, 1)
+    uv_index = built.uv
     uv = pj.drawn([q.point for q in projected], uv_index)
     names = "xyz"
     u_name, v_name = names[uv_index[0]], names[uv_index[1]]
@@ -258,23 +304,22 @@ def project_solution(words: Sequence[str], solid: str | None = None, parallel: s
         "projected": [[json_scalar(v) for v in p] for p in uv],
         "edges": [list(e) for e in s.edges],
     }
-    if perspective is not None:
+    if built.vanishing:
         vp_table, data["vanishing_points"] = _vp_table(m)
         tables.append(vp_table)
-    if parallel in ("isometric", "dimetric", "trimetric"):
+    if built.foreshortening:
         f2 = pj.foreshortening(m)
         derived.append(Quantity("foreshortening", [json_scalar(v) for v in f2],
                                 "foreshortening f² of the unit x, y, z vectors: " + ", ".join(text(v) for v in f2),
                                 "f_x^2, f_y^2, f_z^2 = " + ", ".join(text(v, True) for v in f2)))  # fmt: skip
-    knobs = ("vectors", "axes", "sense", *(("cop",) if perspective else ()),
-             *(("oblique",) if parallel in ("oblique", "cavalier", "cabinet") else ()))  # fmt: skip
+    knobs = ("vectors", "axes", "sense", *built.knobs)
     notes = notes_of(convention, used, knobs, all(st.exact for st in stages))
     notes.append(f"{written.law} with P = [x, y, z, 1]; the projected point is (X/W, Y/W); M = {order}.")
     if rough:
         notes.append("Values with square roots are exact; the figure rounds them half up.")
     return Solution(
         primitive="3d-project",
-        algorithm=perspective or str(parallel),
+        algorithm=kind,
         title=f"3D projection of {s.title}: {label}",
         given=vertices_given(s),
         derived=tuple(derived),
