@@ -28,7 +28,7 @@ from ...algorithms.space import Matrix4, Point3, Solid
 from ...algorithms.space_conventions import convention_notes, resolve
 from ...algorithms.transform import cos_sin
 from ...core.checks import InputError
-from ...core.numeric import fmt, fmt_short
+from ...core.numeric import fmt, fmt_short, parse_number
 from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
 from ..process._shared import MAX_POINTS, approx_text, json_scalar, matrix_json, matrix_rows
 from ..process._shared import matrix_tex, matrix_text, text
@@ -217,7 +217,22 @@ def _stage(w: _Words, name: str, sense: int) -> Stage:
         return _shear(w)
     if name == "about":
         raise InputError("--about X Y Z must follow a scale, rotate or shear", "transforms")
-    raise InputError(f"unknown transformation {name!r} (choose from {', '.join(NAMES)})", "transforms")
+    shown = name if name.startswith("-") else f"--{name}"
+    raise InputError(f"unknown transformation {shown!r} (choose from {', '.join(NAMES)})", "transforms")
+
+
+def _not_a_number(word: str, counted: bool) -> None:
+    """Refuse a word after the vertices that reads as a number but is not one (``nan``,
+    ``inf``, past the limit), or any word that is not a transformation where a vertex is
+    short of its z (``counted``: the vertices are whole, so the word is a transformation's
+    name, checked as such)."""
+    if word.lower().lstrip("-") in NAMES:
+        return
+    try:
+        parse_number(word)
+    except ValueError as err:
+        if "is not a number" not in str(err) or not counted:
+            raise InputError(f"vertices: {err}", "vertices") from None
 
 
 def parse(words: Sequence[str], sense: int = 1) -> tuple[list[Point3], list[Stage]]:
@@ -227,10 +242,14 @@ def parse(words: Sequence[str], sense: int = 1) -> tuple[list[Point3], list[Stag
     >>> pts, [s.label for s in stages]
     ([(0, 0, 0), (1, 1, 1)], ['rotate by 90° about the z axis', 'translate by (1, 0, 0)'])
     """
+    if any(not word.strip() for word in words):
+        raise InputError("empty value '' where a number or a transformation is expected", "transforms")
     w = _Words(words)
     coords: list[Fraction] = []
     while w.is_number():
         coords.append(w.numbers(1, "vertices")[0])
+    if w.more():
+        _not_a_number(w.words[w.i], len(coords) % 3 == 0)
     if len(coords) % 3:
         raise InputError(f"vertices are x y z triples: got {len(coords)} coordinates", "vertices")
     if len(coords) > 3 * MAX_POINTS:
@@ -238,7 +257,8 @@ def parse(words: Sequence[str], sense: int = 1) -> tuple[list[Point3], list[Stag
     points = [tuple(simplify(v) for v in coords[i : i + 3]) for i in range(0, len(coords), 3)]
     stages: list[Stage] = []
     while w.more():
-        stages.append(_stage(w, w.take().lower().lstrip("-"), sense))
+        word = w.take()
+        stages.append(_stage(w, word.lower() if word.startswith("-") else word.lower().lstrip("-"), sense))
         if len(stages) > MAX_TRANSFORMS:
             raise InputError(f"at most {MAX_TRANSFORMS} transformations can be composed", "transforms")
     return points, stages  # type: ignore[return-value]
