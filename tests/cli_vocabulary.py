@@ -964,9 +964,23 @@ VOCABULARY[("3d", "transform")] = Vocab(
         "--sense": ("standard", "reversed"),
     },
     positional=(
-        "0", "1", "-3", "1/2", "--rotate-x", "90", "--rotate-z", "30", "--translate", "--scale",
-        "2", "--about", "--reflect", "xy", "--shear", "z",
-    ),  # fmt: skip
+        "0",
+        "1",
+        "-3",
+        "1/2",
+        "--rotate-x",
+        "90",
+        "--rotate-z",
+        "30",
+        "--translate",
+        "--scale",
+        "2",
+        "--about",
+        "--reflect",
+        "xy",
+        "--shear",
+        "z",
+    ),
 )
 VOCABULARY[("3d", "project")] = Vocab(
     valid=(

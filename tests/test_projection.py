@@ -45,8 +45,16 @@ def test_cabinet_unit_cube_at_30_degrees_expertsmind() -> None:
     sol = scanconv.project3d(EXPERTSMIND_CABINET_CUBE, parallel="cabinet", angle="30")
     got = [[exact(v) for v in p] for p in sol.data["projected"]]
     q = Fraction(1, 4)
-    want = [[0, 0], [1, 0], [1, 1], [0, 1], [R3 / 4, 1 + q], [R3 / 4, q], [1 + R3 / 4, q],
-            [1 + R3 / 4, 1 + q]]  # fmt: skip
+    want = [
+        [0, 0],
+        [1, 0],
+        [1, 1],
+        [0, 1],
+        [R3 / 4, 1 + q],
+        [R3 / 4, q],
+        [1 + R3 / 4, q],
+        [1 + R3 / 4, 1 + q],
+    ]
     assert got == want
 
 
@@ -58,7 +66,9 @@ def test_cavalier_unit_cube_at_45_degrees() -> None:
     cab = scanconv.project3d(solid="unit-cube", parallel="cabinet")
     assert [exact(v) for v in cab.data["projected"][4]] == [R2 / 4, R2 / 4]
     # the projector's angle alpha = 45 degrees is the cavalier projection again
-    alpha = scanconv.project3d(solid="unit-cube", parallel="oblique", angle="45", oblique="projector")
+    alpha = scanconv.project3d(
+        solid="unit-cube", parallel="oblique", angle="45", oblique="projector"
+    )
     assert alpha.data["projected"] == sol.data["projected"]
 
 
@@ -110,10 +120,17 @@ def test_perspective_is_the_pinhole_formula(cop: str, x: int, y: int, z: int, d:
 
 
 @settings(deadline=None, max_examples=30)
-@given(st.sampled_from(sorted(PINHOLE)), st.sampled_from([15, 30, 45, 60, 75, -30]), st.integers(2, 9))
+@given(
+    st.sampled_from(sorted(PINHOLE)), st.sampled_from([15, 30, 45, 60, 75, -30]), st.integers(2, 9)
+)
 def test_vanishing_points_are_limits_of_receding_lines(cop: str, phi: int, d: int) -> None:
     sol = scanconv.project3d(
-        "0 0 1" if cop == "origin" else "0 0 0", perspective="two-point", angle=str(phi), d=d, cop=cop, convention="hearn-baker"
+        "0 0 1" if cop == "origin" else "0 0 0",
+        perspective="two-point",
+        angle=str(phi),
+        d=d,
+        cop=cop,
+        convention="hearn-baker",
     )
     t = math.radians(phi)
     # Ry(phi) turns the x axis to (cos, 0, -sin) and the z axis to (sin, 0, cos)
@@ -164,9 +181,7 @@ def test_dimetric_foreshortens_z_to_f_and_x_y_alike(f: Fraction) -> None:
     from scanconv.algorithms import space
 
     (cp, sp), (ct, st_) = pj.dimetric(f)
-    m = space.compose(
-        [space.rotation("y", cp, sp), space.rotation("x", ct, st_), pj.onto_z0()]
-    )
+    m = space.compose([space.rotation("y", cp, sp), space.rotation("x", ct, st_), pj.onto_z0()])
     fx, fy, fz = pj.foreshortening(m)
     assert fx == fy and fz == f * f
 

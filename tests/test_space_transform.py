@@ -77,7 +77,9 @@ def test_arbitrary_axis_rotation_is_rodrigues(p1: tuple, p2: tuple, deg: int) ->
         return
     words = " ".join(map(str, (*p1, *p2, deg)))
     m = space.compose([f.matrix for f in _stage(f"--rotate-axis {words}").factors])
-    assert np.allclose(floats(m), rodrigues(np.array(p1, float), np.array(p2, float), deg), atol=1e-9)
+    assert np.allclose(
+        floats(m), rodrigues(np.array(p1, float), np.array(p2, float), deg), atol=1e-9
+    )
     # the answer applies that composite: each vertex where Rodrigues' formula puts it
     sol = scanconv.transform3d(f"1 2 3 --rotate-axis {words}")
     want = rodrigues(np.array(p1, float), np.array(p2, float), deg) @ np.array([1, 2, 3, 1.0])
@@ -138,7 +140,10 @@ def test_shear_and_reversed_sense() -> None:
         (("3d", "transform", "1", "2", "--translate", "1", "1", "1"), "x y z triples"),
         (("3d", "transform", "1", "2", "3", "--translate", "1", "1"), "needs 3 numbers"),
         (("3d", "transform", "1", "2", "3", "--rotate-x", "north"), "not an angle"),
-        (("3d", "transform", "1", "2", "3", "--rotate-axis", "1", "1", "1", "1", "1", "1", "30"), "two different points"),
+        (
+            ("3d", "transform", "1", "2", "3", "--rotate-axis", "1", "1", "1", "1", "1", "1", "30"),
+            "two different points",
+        ),
         (("3d", "transform", "1", "2", "3", "--reflect", "plane", "0", "0", "0", "1"), "normal"),
         (("3d", "transform", "1", "2", "3"), "no transformation"),
         (("3d", "transform", "1", "2", "3", "--spin", "3"), "unknown transformation"),

@@ -121,9 +121,14 @@ def project3d(
             help="A parallel projection: orthographic (onto --view), oblique, cavalier, "
             "cabinet, isometric, dimetric or trimetric.",
             choices=(
-                "orthographic", "oblique", "cavalier", "cabinet", "isometric", "dimetric",
+                "orthographic",
+                "oblique",
+                "cavalier",
+                "cabinet",
+                "isometric",
+                "dimetric",
                 "trimetric",
-            ),  # fmt: skip
+            ),
         ),
     ] = None,
     perspective: Annotated[
@@ -137,7 +142,11 @@ def project3d(
     ] = None,
     view: Annotated[
         str | None,
-        Opt("--view", help="orthographic: the plane, xy (default), yz or zx.", choices=("xy", "yz", "zx")),
+        Opt(
+            "--view",
+            help="orthographic: the plane, xy (default), yz or zx.",
+            choices=("xy", "yz", "zx"),
+        ),
     ] = None,
     angle: Annotated[
         str | None,
@@ -150,15 +159,26 @@ def project3d(
     ] = None,
     receding: Annotated[
         str | None,
-        Opt("--receding", help="oblique with --oblique-angle projector: phi (default 45).", metavar="PHI"),
+        Opt(
+            "--receding",
+            help="oblique with --oblique-angle projector: phi (default 45).",
+            metavar="PHI",
+        ),
     ] = None,
     angles: Annotated[
         tuple[str, str] | None,
-        Opt("--angles", help="trimetric, three-point: the turns about y and x (default 30 45; 30 30).", metavar="PHI THETA"),
+        Opt(
+            "--angles",
+            help="trimetric, three-point: the turns about y and x (default 30 45; 30 30).",
+            metavar="PHI THETA",
+        ),
     ] = None,
     ratio: Annotated[
         NumberLike | None,
-        Opt("--ratio", help="oblique: L1 (default 1/2); dimetric: the z axis's foreshortening (default 1/2)."),
+        Opt(
+            "--ratio",
+            help="oblique: L1 (default 1/2); dimetric: the z axis's foreshortening (default 1/2).",
+        ),
     ] = None,
     d: Annotated[
         NumberLike | None,

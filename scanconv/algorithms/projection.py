@@ -52,9 +52,7 @@ def oblique(ratio: Scalar, cos: Scalar, sin: Scalar) -> Matrix4:
     >>> oblique(Fraction(1, 2), 0, 1)[:3]
     ((1, 0, 0, 0), (0, 1, Fraction(1, 2), 0), (0, 0, 0, 0))
     """
-    return matrix(
-        ((1, 0, ratio * cos, 0), (0, 1, ratio * sin, 0), (0, 0, 0, 0), (0, 0, 0, 1))
-    )
+    return matrix(((1, 0, ratio * cos, 0), (0, 1, ratio * sin, 0), (0, 0, 0, 0), (0, 0, 0, 1)))
 
 
 def onto_z0() -> Matrix4:
@@ -132,7 +130,9 @@ def vanishing_points(m: Matrix4) -> list[tuple[str, tuple[Scalar, ...], Point3 |
             out.append((name, h, None))
         else:
             inv = 1 / Radical.of(h[3])
-            out.append((name, h, (simplify(h[0] * inv), simplify(h[1] * inv), simplify(h[2] * inv))))
+            out.append(
+                (name, h, (simplify(h[0] * inv), simplify(h[1] * inv), simplify(h[2] * inv)))
+            )
     return out
 
 

@@ -20,7 +20,6 @@ ROOTS = (1, 2, 3, 6)
 """The basis: a :class:`Radical` is ``sum(coef[i] * sqrt(ROOTS[i]))``."""
 
 
-
 def squarefree(n: int) -> tuple[int, int]:
     """``(k, s)`` with ``n = k²·s`` and ``s`` square-free (``n >= 0``; trial division, so a
     caller bounds ``n``: :data:`MAX_ROOT`).
@@ -115,7 +114,12 @@ class Radical:
     def coef(self) -> tuple[Fraction, Fraction, Fraction, Fraction]:
         """The coefficients of 1, √2, √3 and √6 (other roots left out: :attr:`terms`)."""
         t = dict(self.terms)
-        return (t.get(1, Fraction(0)), t.get(2, Fraction(0)), t.get(3, Fraction(0)), t.get(6, Fraction(0)))
+        return (
+            t.get(1, Fraction(0)),
+            t.get(2, Fraction(0)),
+            t.get(3, Fraction(0)),
+            t.get(6, Fraction(0)),
+        )
 
     def __repr__(self) -> str:
         if all(r in ROOTS for r, _ in self.terms):

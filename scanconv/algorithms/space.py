@@ -76,15 +76,10 @@ def reflection_plane(normal: Sequence[Fraction]) -> Matrix4:
     True
     """
     nn = sum((Fraction(v) * v for v in normal), start=Fraction(0))
-    return matrix(
-        [
-            *(
-                [*((int(i == j) - 2 * normal[i] * normal[j] / nn) for j in range(3)), 0]
-                for i in range(3)
-            ),
-            (0, 0, 0, 1),
-        ]
-    )
+    rows: list[tuple[Scalar, ...]] = []
+    for i in range(3):
+        rows.append((*(int(i == j) - 2 * normal[i] * normal[j] / nn for j in range(3)), 0))
+    return matrix([*rows, (0, 0, 0, 1)])
 
 
 #: The shears, by the axis whose coordinate moves the other two: ``z``: x' = x + a·z,
@@ -182,7 +177,11 @@ class AxisRotation(NamedTuple):
     factors: tuple[tuple[str, Matrix4], ...]
 
 
-def axis_rotation(p1: Point3, p2: Point3, cos: Scalar, sin: Scalar) -> AxisRotation:
+RationalPoint = tuple[Fraction, Fraction, Fraction]
+"""A point with rational coordinates (an axis's end points)."""
+
+
+def axis_rotation(p1: RationalPoint, p2: RationalPoint, cos: Scalar, sin: Scalar) -> AxisRotation:
     """The factors of the rotation by θ about the axis from ``p1`` to ``p2``: the axis is
     moved to the origin, turned into the xz plane about x (``cos α = c/d``, ``sin α = b/d``),
     onto the z axis about y (``cos β = d``, ``sin β = -a``), turned by θ about z, then back.
@@ -191,14 +190,14 @@ def axis_rotation(p1: Point3, p2: Point3, cos: Scalar, sin: Scalar) -> AxisRotat
     >>> r.u, r.d, [name for name, _ in r.factors], compose([m for _, m in r.factors])[0]
     ((0, 0, 1), 1, ['Rz(θ)'], (0, -1, 0, 0))
     """
-    v = (p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2])
-    nn = sum((Fraction(x) * x for x in v), start=Fraction(0))
+    v = (Fraction(p2[0] - p1[0]), Fraction(p2[1] - p1[1]), Fraction(p2[2] - p1[2]))
+    nn = v[0] ** 2 + v[1] ** 2 + v[2] ** 2
     if nn == 0:
         raise ValueError("the axis needs two different points")
     length = Radical.sqrt(nn)
     inv = 1 / Radical.of(length)
     a, b, c = (simplify(x * inv) for x in v)
-    d = Radical.sqrt(Fraction(v[1]) ** 2 / nn + Fraction(v[2]) ** 2 / nn)
+    d = Radical.sqrt((v[1] ** 2 + v[2] ** 2) / nn)
     factors: list[tuple[str, Matrix4]] = []
     if any(p1):
         factors.append(("T(-P1)", translation(-p1[0], -p1[1], -p1[2])))
@@ -216,7 +215,7 @@ def axis_rotation(p1: Point3, p2: Point3, cos: Scalar, sin: Scalar) -> AxisRotat
         factors.append(("Rx(-α)", rotation("x", ca, -sa)))
     if any(p1):
         factors.append(("T(P1)", translation(*p1)))
-    return AxisRotation(v, length, (a, b, c), d, tuple(factors))  # type: ignore[arg-type]
+    return AxisRotation(v, length, (a, b, c), d, tuple(factors))
 
 
 # --- the named solids -------------------------------------------------------------------------
@@ -292,5 +291,10 @@ def given_solid(vertices: Sequence[Point3]) -> Solid:
     n = len(vertices)
     edges = tuple((i, (i + 1) % n) for i in range(n if n > 2 else n - 1))
     return Solid(
-        "points", "the points given", tuple(f"P{i}" for i in range(1, n + 1)), tuple(vertices), edges, ()
+        "points",
+        "the points given",
+        tuple(f"P{i}" for i in range(1, n + 1)),
+        tuple(vertices),
+        edges,
+        (),
     )

@@ -116,7 +116,9 @@ def resolve(convention: str | None, given: Mapping[str, str | None]) -> dict[str
     return out
 
 
-def convention_notes(convention: str | None, used: Mapping[str, str], knobs: tuple[str, ...]) -> str:
+def convention_notes(
+    convention: str | None, used: Mapping[str, str], knobs: tuple[str, ...]
+) -> str:
     """The note that names the conventions an answer used (``knobs``: the ones it states).
 
     >>> print(convention_notes(None, resolve(None, {}), ("vectors",)))

@@ -14,7 +14,7 @@ from typing import Any, NamedTuple
 from ...algorithms.clipping import Point as NumPoint
 from ...algorithms.clipping import Rect
 from ...algorithms.radical import Radical, Scalar, approx, round_half_up_exact, simplify
-from ...algorithms.transform import Matrix, Point, outline
+from ...algorithms.transform import Point, outline
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt, fmt_short, normalize, round_half_up
 from ...core.records import PixelFigure, Quantity, Table
@@ -87,7 +87,7 @@ def matrix_tex(m: Sequence[Sequence[Scalar]]) -> str:
     return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
 
 
-def matrix_json(m: Matrix) -> list[list[Any]]:
+def matrix_json(m: Sequence[Sequence[Scalar]]) -> list[list[Any]]:
     return [[json_scalar(v) for v in row] for row in m]
 
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from fractions import Fraction
-from typing import Any, NamedTuple
+from typing import NamedTuple
 
 from ...algorithms import space
 from ...algorithms.radical import Radical, Scalar, approx, simplify
@@ -30,13 +30,28 @@ from ...algorithms.transform import cos_sin
 from ...core.checks import InputError
 from ...core.numeric import fmt, fmt_short, parse_number
 from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
-from ..process._shared import MAX_POINTS, approx_text, json_scalar, matrix_json, matrix_rows
-from ..process._shared import matrix_tex, matrix_text, text
+from ..process._shared import (
+    MAX_POINTS,
+    approx_text,
+    json_scalar,
+    matrix_json,
+    matrix_rows,
+    matrix_tex,
+    matrix_text,
+    text,
+)
 from ..process.transform import MAX_TRANSFORMS, _rounded, _tex_deg, _Words, parse_angle
 
 NAMES = (
-    "translate", "scale", "rotate-x", "rotate-y", "rotate-z", "rotate-axis", "reflect", "shear",
-)  # fmt: skip
+    "translate",
+    "scale",
+    "rotate-x",
+    "rotate-y",
+    "rotate-z",
+    "rotate-axis",
+    "reflect",
+    "shear",
+)
 """The transformations, by name."""
 
 
@@ -101,7 +116,9 @@ def _angle(words: _Words, what: str) -> tuple[Scalar, Scalar, bool, str, Quantit
 
 def _rotate(words: _Words, axis: str, sense: int) -> Stage:
     c, s, exact, name, trig = _angle(words, f"rotate-{axis}")
-    core = Factor(f"R{axis}({name})", f"R_{axis}({_tex_deg(name)})", space.rotation(axis, c, sense * s))
+    core = Factor(
+        f"R{axis}({name})", f"R_{axis}({_tex_deg(name)})", space.rotation(axis, c, sense * s)
+    )
     factors, about = _about(words, f"rotate-{axis}", core)
     through = about.replace(" about", " through", 1)
     return Stage(f"rotate by {name} about the {axis} axis{through}", factors, (trig,), exact)
@@ -162,14 +179,20 @@ def _reflect(words: _Words) -> Stage:
     plane = words.take().lower() if words.more() else ""
     if plane in space.REFLECTIONS:
         n = f"Ref({plane})"
-        return Stage(f"reflect about the {plane} plane", (Factor(n, n, space.REFLECTIONS[plane]),), (), True)
+        return Stage(
+            f"reflect about the {plane} plane", (Factor(n, n, space.REFLECTIONS[plane]),), (), True
+        )
     if plane != "plane":
         choices = ", ".join([*space.REFLECTIONS, "plane A B C D"])
-        raise InputError(f"cannot reflect about {plane or 'nothing'!r} (choose from {choices})", "transforms")
+        raise InputError(
+            f"cannot reflect about {plane or 'nothing'!r} (choose from {choices})", "transforms"
+        )
     a, b, c, d = words.numbers(4, "reflect plane")
     nn = a * a + b * b + c * c
     if nn == 0:
-        raise InputError("reflect plane A B C D needs a normal (A, B, C) that is not 0", "transforms")
+        raise InputError(
+            "reflect plane A B C D needs a normal (A, B, C) that is not 0", "transforms"
+        )
     p0 = (-d * a / nn, -d * b / nn, -d * c / nn)
     core = Factor("Ref(n)", "\\mathrm{Ref}(n)", space.reflection_plane((a, b, c)))
     work = Quantity(
@@ -218,7 +241,9 @@ def _stage(w: _Words, name: str, sense: int) -> Stage:
     if name == "about":
         raise InputError("--about X Y Z must follow a scale, rotate or shear", "transforms")
     shown = name if name.startswith("-") else f"--{name}"
-    raise InputError(f"unknown transformation {shown!r} (choose from {', '.join(NAMES)})", "transforms")
+    raise InputError(
+        f"unknown transformation {shown!r} (choose from {', '.join(NAMES)})", "transforms"
+    )
 
 
 def _not_a_number(word: str, counted: bool) -> None:
@@ -243,7 +268,9 @@ def parse(words: Sequence[str], sense: int = 1) -> tuple[list[Point3], list[Stag
     ([(0, 0, 0), (1, 1, 1)], ['rotate by 90° about the z axis', 'translate by (1, 0, 0)'])
     """
     if any(not word.strip() for word in words):
-        raise InputError("empty value '' where a number or a transformation is expected", "transforms")
+        raise InputError(
+            "empty value '' where a number or a transformation is expected", "transforms"
+        )
     w = _Words(words)
     coords: list[Fraction] = []
     while w.is_number():
@@ -258,9 +285,13 @@ def parse(words: Sequence[str], sense: int = 1) -> tuple[list[Point3], list[Stag
     stages: list[Stage] = []
     while w.more():
         word = w.take()
-        stages.append(_stage(w, word.lower() if word.startswith("-") else word.lower().lstrip("-"), sense))
+        stages.append(
+            _stage(w, word.lower() if word.startswith("-") else word.lower().lstrip("-"), sense)
+        )
         if len(stages) > MAX_TRANSFORMS:
-            raise InputError(f"at most {MAX_TRANSFORMS} transformations can be composed", "transforms")
+            raise InputError(
+                f"at most {MAX_TRANSFORMS} transformations can be composed", "transforms"
+            )
     return points, stages  # type: ignore[return-value]
 
 
@@ -270,7 +301,9 @@ def solid_of(points: Sequence[Point3], solid: str | None) -> Solid:
         if points:
             raise InputError("give the vertices or --solid, not both", "solid")
         if solid not in space.SOLIDS:
-            raise InputError(f"unknown solid {solid!r} (choose from {', '.join(space.SOLIDS)})", "solid")
+            raise InputError(
+                f"unknown solid {solid!r} (choose from {', '.join(space.SOLIDS)})", "solid"
+            )
         return space.SOLIDS[solid]
     if not points:
         raise InputError("no vertices given (X1 Y1 Z1 ... or --solid NAME)", "vertices")
@@ -353,14 +386,20 @@ def approx_point(p: Sequence[Scalar]) -> str:
     return "(" + ", ".join(fmt(approx(v)) for v in p) + ")"
 
 
-def notes_of(convention: str | None, used: dict[str, str], knobs: tuple[str, ...], exact: bool) -> list[str]:
+def notes_of(
+    convention: str | None, used: dict[str, str], knobs: tuple[str, ...], exact: bool
+) -> list[str]:
     notes = [convention_notes(convention, used, knobs)]
     if not exact:
-        notes.append("sin and cos of this angle are rounded half up to 6 decimals; everything after that is exact.")
+        notes.append(
+            "sin and cos of this angle are rounded half up to 6 decimals; everything after that is exact."
+        )
     return notes
 
 
-def conventions(convention: str | None, given: dict[str, str | None]) -> tuple[dict[str, str], int, Written]:
+def conventions(
+    convention: str | None, given: dict[str, str | None]
+) -> tuple[dict[str, str], int, Written]:
     used = resolve(convention, given)
     return used, (1 if used["sense"] == "standard" else -1), Written(used["vectors"] == "row")
 
@@ -369,7 +408,10 @@ def conventions(convention: str | None, given: dict[str, str | None]) -> tuple[d
 
 
 def transform_solution(
-    words: Sequence[str], solid: str | None = None, convention: str | None = None, **given: str | None
+    words: Sequence[str],
+    solid: str | None = None,
+    convention: str | None = None,
+    **given: str | None,
 ) -> Solution:
     """The worked answer of the composite of the transformations in ``words`` applied to the
     vertices the words start with (or to ``solid``).
@@ -388,13 +430,19 @@ def transform_solution(
     order = written.product([f"M{i}" for i in range(1, len(mats) + 1)])
     shown = written.shown(m)
     derived.append(
-        Quantity("M", matrix_json(shown), f"M = {order} = {matrix_text(shown)}",
-                 f"M = {order.replace('·', ' ')} = {matrix_tex(shown)}")  # fmt: skip
+        Quantity(
+            "M",
+            matrix_json(shown),
+            f"M = {order} = {matrix_text(shown)}",
+            f"M = {order.replace('·', ' ')} = {matrix_tex(shown)}",
+        )
     )
     mat_rows += matrix_rows("M", f"composite {order}", shown)
     after = [space.apply(m, p) for p in s.vertices]
     det = space.determinant(m)
-    derived.append(Quantity("det", json_scalar(det), f"det M = {text(det)}", f"\\det M = {text(det, True)}"))
+    derived.append(
+        Quantity("det", json_scalar(det), f"det M = {text(det)}", f"\\det M = {text(det, True)}")
+    )
     rough = irrational(after)
     cols = [
         Column("vertex", "vertex", r"\text{vertex}", role="label"),
