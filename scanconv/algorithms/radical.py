@@ -51,6 +51,18 @@ def _primes(n: int) -> list[int]:
     return [*out, n] if n > 1 else out
 
 
+def root_primes(value: Scalar) -> set[int]:
+    """The primes under the square roots of ``value``: ``k`` of them make products of such
+    values sums of up to ``2**k`` roots.
+
+    >>> sorted(root_primes(Radical(1, 1, 0, 1))), root_primes(Fraction(1, 2))
+    ([2, 3], set())
+    """
+    if not isinstance(value, Radical):
+        return set()
+    return {p for r, _ in value.terms for p in _primes(r)}
+
+
 MAX_ROOT = 10**12
 """The largest number whose square root is taken exactly (:meth:`Radical.sqrt`): its
 square-free part is found by trial division."""

@@ -11,6 +11,7 @@ projection is.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from fractions import Fraction
 from typing import Any, NamedTuple
@@ -266,7 +267,11 @@ def _figure(s: space.Solid, uv: Sequence[tuple[Scalar, Scalar]], title: str) -> 
     us = [approx(u) for u, _ in uv]
     vs = [approx(v) for _, v in uv]
     extent = max(max(us) - min(us), max(vs) - min(vs))
-    scale = max(1, int(FIGURE_CELLS / extent)) if extent else 1
+    # an integer scale up, or 1/n down, so that the figure is about FIGURE_CELLS wide
+    if extent >= FIGURE_CELLS:
+        scale: Fraction | int = Fraction(1, math.ceil(extent / FIGURE_CELLS))
+    else:
+        scale = max(1, int(FIGURE_CELLS / extent)) if extent else 1
     pts = [(simplify(u * scale), simplify(v * scale)) for u, v in uv]
     cells = [(round_half_up_exact(u), round_half_up_exact(v)) for u, v in pts]
     pixels = tuple(
@@ -274,18 +279,49 @@ def _figure(s: space.Solid, uv: Sequence[tuple[Scalar, Scalar]], title: str) -> 
     )
     xs, ys = [p[0] for p in pixels] or [0], [p[1] for p in pixels] or [0]
     ideal = tuple(
-        Polyline(
-            [(float(pts[i][0]), float(pts[i][1])), (float(pts[j][0]), float(pts[j][1]))], "edge"
-        )
-        for i, j in s.edges
+        Polyline([(float(pts[i][0]), float(pts[i][1])) for i in path], "edges")
+        for path in edge_walks(len(pts), s.edges)
     )
     return Plot(
         pixels=lambda: iter(pixels),
         bbox=(min(xs), min(ys), max(xs), max(ys)),
         marks=tuple(dict.fromkeys(cells)),
-        marks_label=f"vertices ({title}, scaled by {scale})",
+        marks_label=f"vertices ({title}, scaled by {fmt_short(scale)})",
         ideal=ideal,
     )
+
+
+def edge_walks(n: int, edges: Sequence[tuple[int, int]]) -> list[list[int]]:
+    """Paths along the edges that draw each edge (going back along an edge where a path must
+    turn back), one per connected part: a figure's polyline traces only edges.
+
+    >>> edge_walks(3, [(0, 1), (1, 2)])
+    [[0, 1, 2, 1, 0]]
+    """
+    nbrs: dict[int, list[int]] = {i: [] for i in range(n)}
+    for i, j in edges:
+        nbrs[i].append(j)
+        nbrs[j].append(i)
+    used: set[tuple[int, int]] = set()
+    walks = []
+    for start in range(n):
+        if not any((min(start, w), max(start, w)) not in used for w in nbrs[start]):
+            continue
+        path = [start]
+        stack = [(start, iter(nbrs[start]))]
+        while stack:
+            v, it = stack[-1]
+            w = next((w for w in it if (min(v, w), max(v, w)) not in used), None)
+            if w is None:
+                stack.pop()
+                if stack:
+                    path.append(stack[-1][0])
+                continue
+            used.add((min(v, w), max(v, w)))
+            path.append(w)
+            stack.append((w, iter(nbrs[w])))
+        walks.append(path)
+    return walks
 
 
 def _vp_table(m: Matrix4) -> tuple[Table, list[Any]]:

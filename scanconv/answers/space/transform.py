@@ -23,7 +23,7 @@ from fractions import Fraction
 from typing import NamedTuple
 
 from ...algorithms import space
-from ...algorithms.radical import Radical, Scalar, approx, simplify
+from ...algorithms.radical import Radical, Scalar, approx, root_primes, simplify
 from ...algorithms.space import Matrix4, Point3, Solid
 from ...algorithms.space_conventions import convention_notes, resolve
 from ...algorithms.transform import cos_sin
@@ -53,6 +53,10 @@ NAMES = (
     "shear",
 )
 """The transformations, by name."""
+
+MAX_ROOT_PRIMES = 6
+"""Most different primes under the square roots of one answer's matrices (2, 3 and the axes'
+own): each doubles the terms an exact product can have."""
 
 
 class Factor(NamedTuple):
@@ -334,6 +338,15 @@ def stage_matrices(
     stages: Sequence[Stage], written: Written, prefix: str = "M"
 ) -> tuple[list[Quantity], list[tuple[str, ...]], list[Matrix4]]:
     """Each stage's working and its matrix (column form), and the matrices' table rows."""
+    primes = {
+        p for st in stages for f in st.factors for r in f.matrix for v in r for p in root_primes(v)
+    }
+    if len(primes) > MAX_ROOT_PRIMES:
+        raise InputError(
+            f"the matrices' square roots have {len(primes)} different primes (at most "
+            f"{MAX_ROOT_PRIMES}: the exact products would grow as 2^{len(primes)} terms)",
+            "transforms",
+        )
     derived: list[Quantity] = []
     rows: list[tuple[str, ...]] = []
     mats: list[Matrix4] = []
