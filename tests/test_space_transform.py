@@ -134,6 +134,12 @@ def test_shear_and_reversed_sense() -> None:
     assert (ccw.data["after"], cw.data["after"]) == ([[0, 1, 0]], [[0, -1, 0]])
 
 
+PRIMES = (
+    "3d transform 1 2 3 --rotate-axis 0 0 0 1 2 0 30 --rotate-axis 0 0 0 1 2 3 15 "
+    "--rotate-axis 0 0 0 1 1 3 15 --rotate-axis 0 0 0 1 1 4 15"
+)
+
+
 @pytest.mark.parametrize(
     ("args", "message"),
     [
@@ -151,47 +157,9 @@ def test_shear_and_reversed_sense() -> None:
         (("3d", "transform", *["1"] * 303, "--rotate-x", "3"), "at most 100 vertices"),
         (("3d", "transform", "0", "0", "0", *["--translate", "1", "1", "1"] * 21), "at most 20"),
         (
-            # axes whose direction cosines need sqrt(5), sqrt(7), sqrt(11), sqrt(13), ...:
+            # axes whose direction cosines need sqrt(5), sqrt(7), sqrt(11), sqrt(13), sqrt(17):
             # refused before the exact products grow
-            (
-                "3d",
-                "transform",
-                "1",
-                "2",
-                "3",
-                "--rotate-axis",
-                "0",
-                "0",
-                "0",
-                "1",
-                "2",
-                "0",
-                "30",
-                "--rotate-axis",
-                "0",
-                "0",
-                "0",
-                "1",
-                "2",
-                "3",
-                "15",
-                "--rotate-axis",
-                "0",
-                "0",
-                "0",
-                "1",
-                "1",
-                "3",
-                "15",
-                "--rotate-axis",
-                "0",
-                "0",
-                "0",
-                "1",
-                "4",
-                "4",
-                "15",
-            ),
+            tuple(PRIMES.split()),
             "different primes",
         ),
     ],
