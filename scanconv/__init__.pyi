@@ -43,12 +43,14 @@ from ._api import pipeline_line as pipeline_line
 from ._api import pipeline_polygon as pipeline_polygon
 from ._api import polygon as polygon
 from ._api import printer as printer
+from ._api import project3d as project3d
 from ._api import quantize as quantize
 from ._api import ramp as ramp
 from ._api import sample as sample
 from ._api import storage as storage
 from ._api import thick_line as thick_line
 from ._api import transform as transform
+from ._api import transform3d as transform3d
 from ._api import viewport as viewport
 from ._api.color_theory import color as color
 from ._api.color_theory import theory as theory
@@ -147,6 +149,7 @@ __all__ = [
     "pipeline_polygon",
     "polygon",
     "printer",
+    "project3d",
     "quantize",
     "questions",
     "ramp",
@@ -157,5 +160,6 @@ __all__ = [
     "theory",
     "thick_line",
     "transform",
+    "transform3d",
     "viewport",
 ]

@@ -941,3 +941,67 @@ VOCABULARY[("clip", "convex")] = Vocab(
 #: layout of their own (``--format rich``) and no ``--brief``/``--explain`` (which shape one
 #: answer); their documents are tested by their own tests (pdflatex, pandoc, Chromium).
 DOCUMENTS = {("sheet",), ("practice",), ("exam",)}
+
+# The 3D chapter: 3d transform, 3d project.
+TOO_MANY_VERTICES_3D = tuple(str(i % 7) for i in range(303))  # 101 vertices, one beyond 100
+VOCABULARY[("3d", "transform")] = Vocab(
+    valid=(
+        ("1", "2", "3", "--rotate-x", "90", "--about", "0", "1", "1", "--translate", "1", "1", "1"),
+        ("--solid", "unit-cube", "--rotate-axis", "0", "0", "0", "1", "1", "1", "120"),
+    ),
+    numbers=((0, 1, 2, 4, 6, 7, 8, 10, 11, 12), (3, 4, 5, 6, 7, 8, 9)),
+    out_of_range=(
+        (("0", "0", "0", "--translate", "1e10", "1", "1"), "out of range"),
+        (("0", "0", "0", *["--translate", "1", "1", "1"] * 21), "at most 20 transformations"),
+    ),
+    too_few=(("0", "0", "--translate", "1", "1", "1"), "triples"),
+    too_many=((*TOO_MANY_VERTICES_3D, "--translate", "1", "1", "1"), "at most 100 vertices"),
+    wrong_type=(("0", "0", "0", "--shear", "w", "1", "1"), "axis x, y or z"),
+    small={
+        "--solid": ("unit-cube", "cube", "pyramid", "tetrahedron"),
+        "--convention": ("hearn-baker", "foley", "rogers"),
+        "--vectors": ("column", "row"),
+        "--sense": ("standard", "reversed"),
+    },
+    positional=(
+        "0",
+        "1",
+        "-3",
+        "1/2",
+        "--rotate-x",
+        "90",
+        "--rotate-z",
+        "30",
+        "--translate",
+        "--scale",
+        "2",
+        "--about",
+        "--reflect",
+        "xy",
+        "--shear",
+        "z",
+    ),
+)
+VOCABULARY[("3d", "project")] = Vocab(
+    valid=(
+        ("--solid", "unit-cube", "--perspective", "one-point", "--d", "2"),
+        ("0", "0", "0", "1", "1", "1", "--parallel", "cabinet", "--angle", "30"),
+    ),
+    numbers=((5,), (0, 1, 2, 3, 4, 5, 9)),
+    out_of_range=(
+        (("--solid", "cube", "--perspective", "one-point", "--d", "1e10"), "out of range"),
+        (("--solid", "cube", "--parallel", "dimetric", "--ratio", "2"), "(0, 1]"),
+    ),
+    too_few=(("0", "0", "--parallel", "cabinet"), "triples"),
+    too_many=((*TOO_MANY_VERTICES_3D, "--parallel", "cabinet"), "at most 100 vertices"),
+    wrong_type=(("--solid", "cube", "--parallel", "cabinet", "--angle", "20"), "multiple of 15"),
+    small={
+        "--solid": ("unit-cube", "cube", "pyramid"),
+        "--parallel": ("cavalier", "cabinet", "isometric", "orthographic"),
+        "--perspective": ("one-point", "two-point"),
+        "--d": ("2", "4", "10"),
+        "--angle": ("30", "45"),
+        "--cop": ("minus-d", "plus-d", "origin"),
+    },
+    positional=("0", "1", "2", "-3", "1/2", "--translate", "--rotate-y", "30"),
+)

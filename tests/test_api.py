@@ -407,6 +407,41 @@ CASES += [
 ]
 
 
+# The 3D chapter: the words of the command line are the API's words.
+CASES += [
+    (
+        ("3d", "transform"),
+        (
+            "1",
+            "2",
+            "3",
+            "--rotate-axis",
+            "0",
+            "0",
+            "0",
+            "1",
+            "1",
+            "1",
+            "120",
+            "--translate",
+            "1",
+            "0",
+            "0",
+        ),
+        "transform3d",
+        ("1 2 3 --rotate-axis 0 0 0 1 1 1 120 --translate 1 0 0",),
+        {},
+    ),
+    (
+        ("3d", "project"),
+        ("--solid", "unit-cube", "--perspective", "two-point", "--d", "4", "--cop", "minus-d"),
+        "project3d",
+        (),
+        {"solid": "unit-cube", "perspective": "two-point", "d": 4, "cop": "minus-d"},
+    ),
+]
+
+
 def _json(solution: Any) -> str:
     chunks = render(solution, Format.json, Options())
     return "".join(c for c in chunks if isinstance(c, str))

@@ -54,6 +54,8 @@ from .shapes import compare_curves as compare_curves
 from .shapes import compare_lines as compare_lines
 from .shapes import ellipse as ellipse
 from .shapes import line as line
+from .space import project3d as project3d
+from .space import transform3d as transform3d
 from .syllabus import char_bitmap as char_bitmap
 from .syllabus import char_storage as char_storage
 from .syllabus import char_stroke as char_stroke
@@ -114,6 +116,7 @@ __all__ = [
     "pipeline_polygon",
     "polygon",
     "printer",
+    "project3d",
     "quantize",
     "ramp",
     "sample",
@@ -121,5 +124,6 @@ __all__ = [
     "theory",
     "thick_line",
     "transform",
+    "transform3d",
     "viewport",
 ]

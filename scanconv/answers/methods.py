@@ -506,6 +506,17 @@ _CHARACTERS = (
            no_generator="arithmetic, worked in one pass", model="PlainRowsTable"),
 )  # fmt: skip
 
+_SPACE = (
+    _plain("3d", "transform", "composite 3D transformation (4 x 4 homogeneous)",
+           "scanconv.answers.space.transform:transform_solution", _G + "space:compose"),
+    *(
+        _plain("3d", kind, f"{kind} projection", "scanconv.answers.space.project:project_solution",
+               "scanconv.answers.space.project:" + kind.replace("-", "_"))
+        for kind in ("orthographic", "oblique", "cavalier", "cabinet", "isometric", "dimetric", "trimetric",
+                     "one-point", "two-point", "three-point")
+    ),
+)  # fmt: skip
+
 # fmt: off
 _COSTS: dict[str, dict[str, float]] = {
     "line/basic": {"csv": 16.2, "json": 37.4, "plain": 53.5, "markdown": 41.7, "latex": 61.6, "html": 107.3, "rich": 695.7},
@@ -542,7 +553,7 @@ METHODS: dict[str, Method] = {
     m.key: _with_costs(m)
     for m in (
         *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_PRINTER, *_INSIDE,
-        *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS,
+        *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS, *_SPACE,
     )
 }  # fmt: skip
 """Every method record, by ``"command/method"``."""

@@ -51,6 +51,7 @@ PANELS = (
         ),
     ),
     ("Theory and exam", ("color", "theory", "exam", "site")),
+    ("3D: transformations and projections", ("3d",)),
 )
 
 EXAMPLES = """\b
@@ -134,6 +135,9 @@ char_app = _subapp(
 pipeline_app = _subapp(
     "pipeline", "The scan-conversion process end to end: clip, map to the viewport, scan convert."
 )
+space_app = _subapp(
+    "3d", "The 3D chapter: transformations in homogeneous coordinates (4 x 4) and projections."
+)
 
 
 def _version(value: bool) -> None:
@@ -172,6 +176,7 @@ TOPIC_MODULES: tuple[str, ...] = (
     "check",
     "site",
     "serve",
+    "space",
 )
 
 #: Which module defines each top-level command or group.
@@ -212,6 +217,7 @@ TOPIC_OF = {
     "exam": "exam",
     "site": "site",
     "mcp": "serve",
+    "3d": "space",
 }
 
 

@@ -108,6 +108,9 @@ _ALL = (
     Command(("char", "bitmap"), "syllabus.char_bitmap"),
     Command(("char", "stroke"), "syllabus.char_stroke"),
     Command(("image", "ramp"), "image.ramp", picture=True, origin=False, ignore_unknown=False),
+    # the 3D chapter (answers/space)
+    Command(("3d", "transform"), "space.transform3d", grid=False, name="transform3d"),
+    Command(("3d", "project"), "space.project3d", figures=True, name="project3d"),
 )
 
 COMMANDS: dict[tuple[str, ...], Command] = {c.path: c for c in _ALL}

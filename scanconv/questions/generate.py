@@ -17,10 +17,12 @@ def specs() -> dict[tuple[str, ...], Spec]:
     from . import grammar_table as table
     from .declared import COMMANDS
 
-    return {
+    out = {
         path: spec_of(COMMANDS[path], table.S) if path in COMMANDS else spec
         for path, spec in table.SPECS.items()
     }
+    # a command declared since the table was last written joins it at the end
+    return out | {path: spec_of(c, table.S) for path, c in COMMANDS.items() if path not in out}
 
 
 def _enums(path: tuple[str, ...]) -> dict[str, str]:

@@ -366,6 +366,8 @@ BOUNDED: dict[str, str] = {
     "char_stroke": "at most 4 strokes on a 5 x 7 grid, scaled at most 16 times",
     "char_storage": "closed-form arithmetic on exact integers",
     "clip_convex": "one line against at most algorithms.cyrus_beck.MAX_EDGES = 64 edges",
+    "transform3d": "at most answers.process._shared.MAX_POINTS vertices and answers.process.transform.MAX_TRANSFORMS",
+    "project3d": "at most answers.process._shared.MAX_POINTS vertices, MAX_TRANSFORMS and one projection",
 }
 """The library functions whose answer is small whatever their arguments, and why."""
 

@@ -13,8 +13,8 @@ from typing import Any, NamedTuple
 
 from ...algorithms.clipping import Point as NumPoint
 from ...algorithms.clipping import Rect
-from ...algorithms.radical import ROOTS, Radical, Scalar, approx, round_half_up_exact, simplify
-from ...algorithms.transform import Matrix, Point, outline
+from ...algorithms.radical import Radical, Scalar, approx, round_half_up_exact, simplify
+from ...algorithms.transform import Point, outline
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt, fmt_short, normalize, round_half_up
 from ...core.records import PixelFigure, Quantity, Table
@@ -26,7 +26,7 @@ MAX_POINTS = 100
 
 def _terms(v: Radical, tex: bool) -> list[tuple[bool, str]]:
     out = []
-    for c, root in zip(v.coef, ROOTS, strict=True):
+    for root, c in v.terms:
         if not c:
             continue
         n, d = abs(c.numerator), c.denominator
@@ -87,7 +87,7 @@ def matrix_tex(m: Sequence[Sequence[Scalar]]) -> str:
     return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
 
 
-def matrix_json(m: Matrix) -> list[list[Any]]:
+def matrix_json(m: Sequence[Sequence[Scalar]]) -> list[list[Any]]:
     return [[json_scalar(v) for v in row] for row in m]
 
 
@@ -105,11 +105,11 @@ def check_points(coords: Sequence[Number], param: str = "points") -> tuple[NumPo
     return tuple((coords[2 * i], coords[2 * i + 1]) for i in range(n))
 
 
-def matrix_rows(name: str, what: str, m: Matrix) -> list[tuple[str, str, str, str, str]]:
-    """Three table rows showing a matrix, named on its first row."""
+def matrix_rows(name: str, what: str, m: Sequence[Sequence[Scalar]]) -> list[tuple[str, ...]]:
+    """A matrix's rows as table rows (three for 2D, four for 3D), named on its first row."""
     return [
-        (name if i == 0 else "", ascii_text(what) if i == 0 else "", *(text(v) for v in m[i]))  # type: ignore[misc]
-        for i in range(3)
+        (name if i == 0 else "", ascii_text(what) if i == 0 else "", *(text(v) for v in m[i]))
+        for i in range(len(m))
     ]
 
 

@@ -18,8 +18,8 @@ from ....core.checks import InputError
 from ....core.records import Solution
 from ._build import Topic
 
-SECTIONS = ("scan", "image", "lines", "circles", "curves", "syllabus", "windows")
-"""The modules, in the notes' order; ``syllabus`` and ``windows`` (the topics the papers ask
+SECTIONS = ("scan", "image", "lines", "circles", "curves", "syllabus", "windows", "space")
+"""The modules, in the notes' order; ``syllabus``, ``windows`` and ``space`` (the topics the papers ask
 beyond the notes) last."""
 
 

@@ -1,0 +1,480 @@
+"""The worked answer of a 3D projection: the projection matrix with its numbers, the projected
+vertex table (``M·P = (X, Y, Z, W)``, then the point ``(X/W, Y/W)``), the vanishing points of a
+perspective, the foreshortening of an axonometric projection, and a drawn figure of the
+projected solid from its edges.
+
+Transformations given before the projection (``--translate 0 0 2``, as ``3d transform`` takes
+them) are applied first. The conventions (:mod:`scanconv.algorithms.space_conventions`)
+decide how the matrices are written, what the oblique angle means and where the centre of
+projection is.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from fractions import Fraction
+from typing import Any, NamedTuple
+
+from ...algorithms import projection as pj
+from ...algorithms import space
+from ...algorithms.radical import Radical, Scalar, approx, round_half_up_exact, simplify
+from ...algorithms.space import Matrix4
+from ...algorithms.transform import cos_sin, outline
+from ...core.checks import InputError
+from ...core.ideal import Polyline
+from ...core.numeric import Number, fmt_short
+from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
+from ..methods import method
+from ..process._shared import json_scalar, matrix_json, matrix_rows, matrix_tex, matrix_text, text
+from ..process.transform import parse_angle
+from .transform import (
+    MATRIX_COLUMNS,
+    Factor,
+    Stage,
+    approx_point,
+    conventions,
+    irrational,
+    notes_of,
+    parse,
+    point_text,
+    solid_of,
+    stage_matrices,
+    vertices_given,
+)
+
+FIGURE_CELLS = 24
+"""The drawn figure's longer side, in grid cells: the projected solid is scaled to it."""
+
+
+def _trig(deg: Fraction, what: str) -> tuple[Scalar, Scalar]:
+    c, s, exact = cos_sin(deg)
+    if not exact:
+        raise InputError(
+            f"{what} must be a multiple of 15 degrees to stay exact, got {fmt_short(deg)}", what
+        )
+    return c, s
+
+
+def _degrees(word: str | None, default: int, what: str) -> Fraction:
+    if word is None:
+        return Fraction(default)
+    deg = parse_angle(word)[0]
+    if deg is None:
+        raise InputError(f"{what} must be in degrees or a multiple of pi, got {word!r}", what)
+    return deg
+
+
+def _rot(axis: str, c: Scalar, s: Scalar, name: str, sense: int) -> Factor:
+    return Factor(f"R{axis}({name})", f"R_{axis}({name})", space.rotation(axis, c, sense * s))
+
+
+class Built(NamedTuple):
+    """A projection as one kind builds it: its factors (applied in order), its working, its
+    description, the coordinates drawn, the options it reads, and what else it shows."""
+
+    factors: list[Factor]
+    work: list[Quantity]
+    label: str
+    uv: tuple[int, int] = (0, 1)
+    reads: tuple[str, ...] = ()
+    vanishing: bool = False
+    foreshortening: bool = False
+    knobs: tuple[str, ...] = ()
+
+
+Builder = Callable[[dict[str, Any], dict[str, str], int], Built]
+
+
+def orthographic(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    view = a.get("view") or "xy"
+    zero = "xyz"[3 - sum(pj.VIEWS[view])]
+    p = pj.orthographic(view)
+    label = f"orthographic projection onto the {view} plane ({zero} = 0)"
+    return Built([Factor(f"P_{view}", f"P_{{{view}}}", p)], [], label, pj.VIEWS[view], ("view",))
+
+
+def _axonometric(
+    kind: str,
+    cs: Any,
+    work: list[Quantity],
+    names: tuple[str, str],
+    sense: int,
+    reads: tuple[str, ...],
+) -> Built:
+    (cp, sp), (ct, st) = cs
+    factors = [
+        _rot("y", cp, sp, names[0], sense),
+        _rot("x", ct, st, names[1], sense),
+        Factor("P_z", "P_z", pj.onto_z0()),
+    ]
+    label = f"{kind} projection: about y by {names[0]}, about x by {names[1]}, onto z = 0"
+    return Built(factors, work, label, reads=reads, foreshortening=True)
+
+
+def isometric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    work = [
+        Quantity(
+            "angles",
+            None,
+            "φ = 45° about y; θ about x with sin θ = 1/sqrt(3) = sqrt(3)/3, cos θ = sqrt(6)/3 (θ ≈ 35.26°)",
+            "\\phi = 45^\\circ,\\ \\sin\\theta = \\tfrac{1}{\\sqrt{3}},\\ \\cos\\theta = \\tfrac{\\sqrt{6}}{3}",
+        )
+    ]
+    return _axonometric("isometric", pj.ISOMETRIC, work, ("45°", "θ"), sense, ())
+
+
+def dimetric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    f = a.get("ratio") or Fraction(1, 2)
+    if not 0 < f <= 1:
+        raise InputError(
+            f"dimetric: the z axis's foreshortening --ratio must be in (0, 1], got {fmt_short(f)}",
+            "ratio",
+        )
+    (cp, sp), (ct, st) = cs = pj.dimetric(f)
+    work = [
+        Quantity(
+            "angles",
+            None,
+            f"f_z = {fmt_short(f)}: sin θ = f_z/sqrt(2) = {text(st)}, cos θ = {text(ct)}; "
+            f"sin φ = f_z/sqrt(2 - f_z²) = {text(sp)}, cos φ = {text(cp)}",
+            f"f_z = {fmt_short(f)}:\\ \\sin\\theta = {text(st, True)},\\ \\sin\\phi = {text(sp, True)}",
+        )
+    ]
+    return _axonometric("dimetric", cs, work, ("φ", "θ"), sense, ("ratio",))
+
+
+def trimetric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    phi, theta = (
+        _degrees(w, d, "angles")
+        for w, d in zip(a.get("angles") or (None, None), (30, 45), strict=True)
+    )
+    cs = (_trig(phi, "angles"), _trig(theta, "angles"))
+    return _axonometric(
+        "trimetric", cs, [], (f"{fmt_short(phi)}°", f"{fmt_short(theta)}°"), sense, ("angles",)
+    )
+
+
+def _oblique(
+    kind: str, ratio: Scalar | None, how: str, a: dict[str, Any], used: dict[str, str]
+) -> Built:
+    reads: tuple[str, ...] = ("angle",)
+    if used["oblique-angle"] == "projector" and ratio is None:
+        alpha = _degrees(a.get("angle"), 45, "angle")
+        ca, sa = _trig(alpha, "angle")
+        if sa == 0:
+            raise InputError("the projectors cannot be parallel to the view plane (α = 0)", "angle")
+        ratio = simplify(Radical.of(ca) / sa)
+        phi = _degrees(a.get("receding"), 45, "receding")
+        how = f"L1 = cot α = cot {fmt_short(alpha)}° = {text(ratio)}"
+        reads += ("receding",)
+    else:
+        phi = _degrees(a.get("angle"), 45, "angle")
+        if ratio is None:
+            ratio = a.get("ratio") or Fraction(1, 2)
+            how = f"L1 = {text(ratio)}"
+            reads += ("ratio",)
+    c, s = _trig(phi, "angle")
+    work = [
+        Quantity(
+            "oblique",
+            (json_scalar(ratio), json_scalar(c), json_scalar(s)),
+            f"{how}; φ = {fmt_short(phi)}°: cos φ = {text(c)}, sin φ = {text(s)}; x' = x + L1·z·cos φ, y' = y + L1·z·sin φ",
+            f"L_1 = {text(ratio, True)},\\ \\phi = {fmt_short(phi)}^\\circ:\\ x' = x + L_1 z \\cos\\phi,\\ y' = y + L_1 z \\sin\\phi",
+        )
+    ]
+    label = f"{kind} projection onto z = 0 (L1 = {text(ratio)}, φ = {fmt_short(phi)}°)"
+    return Built(
+        [Factor("P_obl", "P_{obl}", pj.oblique(ratio, c, s))],
+        work,
+        label,
+        reads=reads,
+        knobs=("oblique-angle",),
+    )
+
+
+def oblique(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _oblique("oblique", None, "", a, used)
+
+
+def cavalier(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _oblique("cavalier", 1, "L1 = 1 (cavalier: α = 45°)", a, used)
+
+
+def cabinet(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _oblique("cabinet", Fraction(1, 2), "L1 = 1/2 (cabinet: tan α = 2, α ≈ 63.43°)", a, used)
+
+
+def _turn(axis: str, word: str | None, default: int, what: str, sense: int) -> Factor:
+    deg = _degrees(word, default, what)
+    c, s = _trig(deg, what)
+    if c == 0 or s == 0:
+        raise InputError(
+            f"the turn about {axis} must not be a multiple of 90° (its axes must meet the view plane)",
+            what,
+        )
+    return _rot(axis, c, s, f"{fmt_short(deg)}°", sense)
+
+
+def _perspective(
+    kind: str, turns: list[Factor], a: dict[str, Any], used: dict[str, str], reads: tuple[str, ...]
+) -> Built:
+    d = Fraction(a.get("d") or 1)
+    if d <= 0:
+        raise InputError(f"the distance d must be positive, got {fmt_short(d)}", "d")
+    cop = used["cop"]
+    centre = {
+        "minus-d": f"(0, 0, -{fmt_short(d)}), view plane z = 0",
+        "plus-d": f"(0, 0, {fmt_short(d)}), view plane z = 0",
+        "origin": f"the origin, view plane z = {fmt_short(d)}",
+    }[cop]
+    formula = {
+        "minus-d": "x' = x·d/(z + d), y' = y·d/(z + d)",
+        "plus-d": "x' = x·d/(d - z), y' = y·d/(d - z)",
+        "origin": "x' = x·d/z, y' = y·d/z",
+    }[cop]
+    work = [
+        Quantity(
+            "centre",
+            json_scalar(d),
+            f"d = {fmt_short(d)}: centre of projection {centre}; {formula}",
+            f"d = {fmt_short(d)}:\\ {formula.replace('·', ' ')}",
+        )
+    ]
+    factors = [*turns, Factor("P_per", "P_{per}", pj.perspective(cop, d))]
+    label = f"{kind} perspective projection, centre {centre}"
+    return Built(factors, work, label, reads=("d", *reads), vanishing=True, knobs=("cop",))
+
+
+def one_point(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _perspective("one-point", [], a, used, ())
+
+
+def two_point(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    return _perspective(
+        "two-point", [_turn("y", a.get("angle"), 30, "angle", sense)], a, used, ("angle",)
+    )
+
+
+def three_point(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+    phi, theta = a.get("angles") or (None, None)
+    turns = [_turn("y", phi, 30, "angles", sense), _turn("x", theta, 30, "angles", sense)]
+    return _perspective("three-point", turns, a, used, ("angles",))
+
+
+def _figure(s: space.Solid, uv: Sequence[tuple[Scalar, Scalar]], title: str) -> Plot:
+    """The projected solid's edges, scaled to :data:`FIGURE_CELLS` cells."""
+    us = [approx(u) for u, _ in uv]
+    vs = [approx(v) for _, v in uv]
+    extent = max(max(us) - min(us), max(vs) - min(vs))
+    # an integer scale up, or 1/n down, so that the figure is about FIGURE_CELLS wide
+    if extent >= FIGURE_CELLS:
+        scale: Fraction | int = Fraction(1, math.ceil(extent / FIGURE_CELLS))
+    else:
+        scale = max(1, int(FIGURE_CELLS / extent)) if extent else 1
+    pts = [(simplify(u * scale), simplify(v * scale)) for u, v in uv]
+    cells = [(round_half_up_exact(u), round_half_up_exact(v)) for u, v in pts]
+    pixels = tuple(
+        dict.fromkeys(p for i, j in s.edges for p in outline([cells[i], cells[j]], closed=False))
+    )
+    xs, ys = [p[0] for p in pixels] or [0], [p[1] for p in pixels] or [0]
+    ideal = tuple(
+        Polyline([(float(pts[i][0]), float(pts[i][1])) for i in path], "edges")
+        for path in edge_walks(len(pts), s.edges)
+    )
+    return Plot(
+        pixels=lambda: iter(pixels),
+        bbox=(min(xs), min(ys), max(xs), max(ys)),
+        marks=tuple(dict.fromkeys(cells)),
+        marks_label=f"vertices ({title}, scaled by {fmt_short(scale)})",
+        ideal=ideal,
+    )
+
+
+def edge_walks(n: int, edges: Sequence[tuple[int, int]]) -> list[list[int]]:
+    """Paths along the edges that draw each edge (going back along an edge where a path must
+    turn back), one per connected part: a figure's polyline traces only edges.
+
+    >>> edge_walks(3, [(0, 1), (1, 2)])
+    [[0, 1, 2, 1, 0]]
+    """
+    nbrs: dict[int, list[int]] = {i: [] for i in range(n)}
+    for i, j in edges:
+        nbrs[i].append(j)
+        nbrs[j].append(i)
+    used: set[tuple[int, int]] = set()
+    walks = []
+    for start in range(n):
+        if not any((min(start, w), max(start, w)) not in used for w in nbrs[start]):
+            continue
+        path = [start]
+        stack = [(start, iter(nbrs[start]))]
+        while stack:
+            v, it = stack[-1]
+            w = next((w for w in it if (min(v, w), max(v, w)) not in used), None)
+            if w is None:
+                stack.pop()
+                if stack:
+                    path.append(stack[-1][0])
+                continue
+            used.add((min(v, w), max(v, w)))
+            path.append(w)
+            stack.append((w, iter(nbrs[w])))
+        walks.append(path)
+    return walks
+
+
+def _vp_table(m: Matrix4) -> tuple[Table, list[Any]]:
+    vps = pj.vanishing_points(m)
+    rows = [
+        (
+            f"{axis} axis",
+            "(" + ", ".join(text(v) for v in h) + ")",
+            "none: parallel to the view plane" if vp is None else point_text(vp[:2]),
+        )
+        for axis, h, vp in vps
+    ]
+    cols = (
+        Column("axis", "direction", r"\text{direction}", role="label"),
+        Column("image", "M·[d, 0] = (X, Y, Z, W)", r"M [d, 0]^T", role="working"),
+        Column("vp", "vanishing point (X/W, Y/W)", r"\text{vanishing point}"),
+    )
+    data = [None if vp is None else [json_scalar(v) for v in vp[:2]] for _, _, vp in vps]
+    return Table("Vanishing points of the principal axes", cols, lambda: rows), data
+
+
+def project_solution(
+    words: Sequence[str],
+    solid: str | None = None,
+    parallel: str | None = None,
+    perspective: str | None = None,
+    view: str | None = None,
+    angle: str | None = None,
+    receding: str | None = None,
+    angles: Sequence[str] | None = None,
+    ratio: Number | None = None,
+    d: Number | None = None,
+    convention: str | None = None,
+    **given: str | None,
+) -> Solution:
+    """The worked answer of the projection of the vertices (or ``solid``), after any
+    transformations in ``words``.
+
+    >>> sol = project_solution([], "unit-cube", parallel="cavalier")
+    >>> sol.data["projected"][4]
+    ['sqrt(2)/2', 'sqrt(2)/2']
+    """
+    used, sense, written = conventions(convention, given)
+    points, stages = parse(words, sense)
+    s = solid_of(points, solid)
+    if (parallel is None) == (perspective is None):
+        raise InputError("choose one projection: --parallel KIND or --perspective KIND", "parallel")
+    kind = str(parallel or perspective)
+    a = {
+        "view": view,
+        "angle": angle,
+        "receding": receding,
+        "angles": angles,
+        "ratio": ratio,
+        "d": d,
+    }
+    built: Built = method("3d", kind).load("generator")(a, used, sense)
+    for name, value in a.items():
+        if value is not None and name not in built.reads:
+            raise InputError(f"--{name} does not apply to the {kind} projection", name)
+    label = built.label
+    all_stages = [*stages, Stage(label, tuple(built.factors), tuple(built.work), True)]
+    derived, mat_rows, mats = stage_matrices(all_stages, written)
+    m = space.compose(mats)
+    order = written.product([f"M{i}" for i in range(1, len(mats) + 1)])
+    shown = written.shown(m)
+    if len(mats) > 1:
+        derived.append(
+            Quantity(
+                "M",
+                matrix_json(shown),
+                f"M = {order} = {matrix_text(shown)}",
+                f"M = {order.replace('·', ' ')} = {matrix_tex(shown)}",
+            )
+        )
+        mat_rows += matrix_rows("M", f"composite {order}", shown)
+    projected = []
+    for lab, p in zip(s.labels, s.vertices, strict=True):
+        try:
+            projected.append(pj.project(m, p))
+        except ZeroDivisionError:
+            raise InputError(
+                f"vertex {lab} {point_text(p)} is in the plane of the centre of projection (W = 0)",
+                "d",
+            ) from None
+        if projected[-1].homogeneous[3] == 0 or approx(projected[-1].homogeneous[3]) < 0:
+            raise InputError(
+                f"vertex {lab} {point_text(p)} is behind the centre of projection (W < 0)", "d"
+            )
+    uv_index = built.uv
+    uv = pj.drawn([q.point for q in projected], uv_index)
+    names = "xyz"
+    u_name, v_name = names[uv_index[0]], names[uv_index[1]]
+    rough = irrational(uv)
+    cols = [
+        Column("vertex", "vertex", r"\text{vertex}", role="label"),
+        Column("before", "P = (x, y, z)", "P = (x, y, z)", role="given"),
+        Column("h", "M·P = (X, Y, Z, W)", r"M P = (X, Y, Z, W)", role="working"),
+        Column("after", f"P' = ({u_name}', {v_name}')", f"P' = ({u_name}', {v_name}')"),
+    ]
+    if rough:
+        cols.append(Column("approx", "P' (approx.)", r"P' \text{ (approx.)}"))
+
+    def rows() -> list[tuple[str, ...]]:
+        return [
+            (
+                lab,
+                point_text(p),
+                "(" + ", ".join(text(v) for v in q.homogeneous) + ")",
+                point_text(w),
+                *((approx_point(w),) if rough else ()),
+            )
+            for lab, p, q, w in zip(s.labels, s.vertices, projected, uv, strict=True)
+        ]
+
+    tables = [
+        Table(f"Matrices ({written.law})", MATRIX_COLUMNS, lambda: mat_rows),
+        Table("Projected vertices", tuple(cols), rows),
+    ]
+    data: dict[str, Any] = {
+        "conventions": used,
+        "matrix": matrix_json(shown),
+        "projected": [[json_scalar(v) for v in p] for p in uv],
+        "edges": [list(e) for e in s.edges],
+    }
+    if built.vanishing:
+        vp_table, data["vanishing_points"] = _vp_table(m)
+        tables.append(vp_table)
+    if built.foreshortening:
+        f2 = pj.foreshortening(m)
+        derived.append(
+            Quantity(
+                "foreshortening",
+                [json_scalar(v) for v in f2],
+                "foreshortening f² of the unit x, y, z vectors: " + ", ".join(text(v) for v in f2),
+                "f_x^2, f_y^2, f_z^2 = " + ", ".join(text(v, True) for v in f2),
+            )
+        )
+    knobs = ("vectors", "axes", "sense", *built.knobs)
+    notes = notes_of(convention, used, knobs, all(st.exact for st in stages))
+    notes.append(
+        f"{written.law} with P = [x, y, z, 1]; the projected point is (X/W, Y/W); M = {order}."
+    )
+    if rough:
+        notes.append("Values with square roots are exact; the figure rounds them half up.")
+    return Solution(
+        primitive="3d-project",
+        algorithm=kind,
+        title=f"3D projection of {s.title}: {label}",
+        given=vertices_given(s),
+        derived=tuple(derived),
+        notes=tuple(notes),
+        walk=Walk(tables=tuple(tables)),
+        plot=_figure(s, uv, label),
+        data=data,
+    )
