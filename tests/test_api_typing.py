@@ -229,6 +229,7 @@ def _choice_sources() -> dict[str, tuple[str, ...]]:
         "MidpointStopName": midpoint_clip.STOPS,
         "FillMethodName": seedfill.METHODS, "InsideRuleName": answers_inside.RULES,
         "BoundaryName": inside.BOUNDARY, "ReconName": quantize.RECON,
+        "InputKindName": quantize.INPUTS,
         "OriginName": sample.ORIGINS, "PackingName": characters.PACKINGS,
         "ColorModelName": color.MODELS, "CompareName": knobs["compare"],
         "DitherScaleName": knobs["scale"], "DitherBaseName": knobs["base"],

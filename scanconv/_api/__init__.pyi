@@ -32,6 +32,7 @@ from .dither import dither_ordered as dither_ordered
 from .dither import dither_threshold as dither_threshold
 from .dither import halftone as halftone
 from .dither import printer as printer
+from .font import char_storage as char_storage
 from .image import quantize as quantize
 from .image import ramp as ramp
 from .image import sample as sample
@@ -55,7 +56,6 @@ from .shapes import compare_lines as compare_lines
 from .shapes import ellipse as ellipse
 from .shapes import line as line
 from .syllabus import char_bitmap as char_bitmap
-from .syllabus import char_storage as char_storage
 from .syllabus import char_stroke as char_stroke
 from .syllabus import framebuffer as framebuffer
 from .syllabus import inside as inside

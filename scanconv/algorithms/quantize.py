@@ -19,6 +19,9 @@ if TYPE_CHECKING:  # numpy is imported where arrays are made: storage and quanti
 RECON = ("midpoint", "lower")
 """Reconstruction conventions of :class:`Quantizer`."""
 
+INPUTS = ("integer", "real")
+"""What an input range holds: the integers ``lo .. hi``, or any real value in ``[lo, hi]``."""
+
 
 def level_dtype(levels: int) -> type[np.unsignedinteger]:
     """The smallest unsigned integer type that holds ``0 .. levels - 1``.

@@ -41,6 +41,7 @@ __all__ = [
     "EllipseP0Name",
     "FillMethodName",
     "FillRuleName",
+    "InputKindName",
     "InsideRuleName",
     "KernelName",
     "LayoutName",
@@ -151,6 +152,8 @@ ColorDepthName = Literal["rgb24"]
 """``color`` of :func:`scanconv.storage`: 24-bit RGB."""
 ReconName = Literal["midpoint", "lower"]
 """The quantizer's reconstruction level (:data:`scanconv.algorithms.quantize.RECON`)."""
+InputKindName = Literal["integer", "real"]
+"""What a quantizer's input range holds (:data:`scanconv.algorithms.quantize.INPUTS`)."""
 OriginName = Literal["bottom-left", "top-left"]
 """Where a sampled image's row 0 is (:data:`scanconv.algorithms.sample.ORIGINS`)."""
 CompareName = Literal[">", ">="]
