@@ -358,7 +358,7 @@ def dither_diffusion(
         ``"jarvis-judice-ninke"`` (/48), ``"stucki"`` (/42), ``"burkes"`` (/32), ``"sierra"``
         (/32), ``"two-row-sierra"`` (/16), ``"sierra-lite"`` (/4) or ``"one-dimensional"``
         (all of the error to the next pixel); each source is named in the answer's notes
-        (:data:`scanconv.algorithms.dither.KERNEL_SOURCES`).
+        (:data:`scanconv.algorithms.dither.KERNELS`).
     order : {"raster", "serpentine"}, default "raster"
         Every row left to right, or alternate rows right to left.
     arithmetic : {"exact", "integer"}, default "exact"
