@@ -81,7 +81,8 @@ LineAlgorithmName = Literal["bresenham", "dda", "basic", "wu", "midpoint"]
 RasterLineName = Literal["bresenham", "dda", "basic"]
 """``algo`` of :func:`scanconv.raster.line` (:data:`scanconv.algorithms.raster.LINE_ALGORITHMS`)."""
 StrokeAlgorithmName = Literal["bresenham", "dda"]
-"""``algo`` of :func:`scanconv.char_stroke`: the line drawing each stroke."""
+"""``algo`` of :func:`scanconv.char_stroke`: the line drawing each stroke
+(:data:`scanconv.algorithms.characters.STROKE_ALGORITHMS`)."""
 RoundingName = Literal["half-up", "trunc", "half-even", "c-cast", "half-away"]
 """How a computed coordinate becomes a pixel (:class:`~scanconv.algorithms.choices.Rounding`)."""
 TieName = Literal["step", "keep"]
