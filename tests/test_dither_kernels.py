@@ -46,17 +46,17 @@ def _published(name: str) -> dict[tuple[int, int], Fraction]:
 
 def test_every_kernel_is_tabled_here() -> None:
     assert set(d.DITHER_KNOBS["kernel"]) == set(PUBLISHED) == set(d.KERNELS)
-    assert set(d.KERNEL_SOURCES) == set(d.KERNELS) == set(d.KERNEL_DIVISORS)
+    assert all(k.name == name and k.source for name, k in d.KERNELS.items())
 
 
 @pytest.mark.parametrize("name", sorted(PUBLISHED))
 def test_kernel_weights_are_the_published_table(name: str) -> None:
-    got = {(s.di, s.dj): s.weight for s in d.KERNELS[name]}
+    got = {(s.di, s.dj): s.weight for s in d.KERNELS[name].shares}
     assert got == _published(name)
     assert all(isinstance(w, Fraction) for w in got.values())
     assert sum(got.values()) == 1  # the error is moved, not lost
     assert all(di > 0 or dj > 0 for di, dj in got)  # only pixels not yet visited
-    assert d.KERNEL_DIVISORS[name] == PUBLISHED[name][0]
+    assert d.KERNELS[name].divisor == PUBLISHED[name][0]
 
 
 def _oracle(image: list[list[int]], top: int, name: str, serpentine: bool) -> list[list[Fraction]]:

@@ -32,6 +32,7 @@ from .dither import dither_ordered as dither_ordered
 from .dither import dither_threshold as dither_threshold
 from .dither import halftone as halftone
 from .dither import printer as printer
+from .font import char_storage as char_storage
 from .image import quantize as quantize
 from .image import ramp as ramp
 from .image import sample as sample
@@ -57,7 +58,6 @@ from .shapes import line as line
 from .space import project3d as project3d
 from .space import transform3d as transform3d
 from .syllabus import char_bitmap as char_bitmap
-from .syllabus import char_storage as char_storage
 from .syllabus import char_stroke as char_stroke
 from .syllabus import framebuffer as framebuffer
 from .syllabus import inside as inside

@@ -5,10 +5,11 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Annotated
 
 from ..core import lazy
-from ..core.checks import check_whole
+from ..core.checks import InputError, check_whole
+from ..core.declare import Arg, Opt
 from ..display import answers
 from .values import NumberLike, _number
 
@@ -23,14 +24,43 @@ else:  # each command's answer module, loaded by its first call
     answers_color = lazy.module("scanconv.answers.image.color")
     answers_topics = lazy.module("scanconv.answers.theory.topics")
 
+_MODELS = "rgb, cmy, hsv, hsi, grey"
+
 
 @answers
 def color(
-    model: ColorModelName,
-    *values: NumberLike,
-    to: str | Sequence[str] = (),
-    unit: bool = False,
-    bits: NumberLike = 8,
+    model: Annotated[ColorModelName, Arg(f"The model given: {_MODELS}.", "MODEL")],
+    *values: Annotated[
+        NumberLike,
+        Arg(
+            "Its components: R G B (0..255; 0..1 with --unit), C M Y (0..1), H S V or "
+            "H S I (H in degrees, S, V, I in 0..1), or one grey level Y.",
+            "VALUES...",
+            kind="text",
+        ),
+    ],
+    to: Annotated[
+        str | Sequence[str],
+        Opt(
+            "--to",
+            metavar="MODEL...",
+            help=f"The models to convert to ({_MODELS}; several: --to cmy hsv hsi). "
+            "Default: every other one.",
+            multiple=True,
+            show_default=False,
+        ),
+    ] = (),
+    unit: Annotated[
+        bool, Opt("--unit", help="RGB and grey are in 0..1 (default: 0..2^bits - 1).")
+    ] = False,
+    bits: Annotated[
+        NumberLike,
+        Opt(
+            "--bits",
+            help="Bits per RGB channel (default 8: 0..255, 24-bit colour).",
+            show_default=False,
+        ),
+    ] = 8,
 ) -> Solution:
     """Convert a colour between models (``scanconv color``).
 
@@ -40,7 +70,8 @@ def color(
         The model the values are in.
     *values : number
         The components: RGB and grey integers ``0 .. 2**bits - 1`` (or ``0 .. 1`` with
-        ``unit``); C, M, Y, S, V and I in [0, 1]; hue in degrees.
+        ``unit``); C, M, Y, S, V and I in [0, 1]; hue in degrees. With ``to`` given, a
+        model's name among them is one more target (``color rgb 1 2 3 --to cmy hsv``).
     to : str or sequence of str, default ()
         The models to convert to (names, or one string ``"cmy hsv"`` / ``"cmy,hsv"``); default
         every other model.
@@ -71,10 +102,22 @@ def color(
     ([Fraction(3, 10), Fraction(9, 20), Fraction(3, 5)], '#4D7399')
     """
     targets = [to] if isinstance(to, str) else list(to)
+    numbers = []
+    for v in values:
+        if not (isinstance(v, str) and v.isalpha()):
+            numbers.append(v)
+        elif targets:
+            targets.append(v)
+        else:
+            raise InputError(
+                f"a colour component must be a number, got {v!r} (name the target models "
+                "after --to)",
+                "values",
+            )
     b = _number(bits, "bits")
     return answers_color.color_solution(
         model,
-        [_number(v, "values") for v in values],
+        [_number(v, "values") for v in numbers],
         [t for spec in targets for t in spec.replace(",", " ").split()],
         unit=unit,
         bits=check_whole(b, "bits", param="bits"),

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Annotated, Literal
 
 from ..core import lazy
 from ..core.checks import InputError
-from ..core.declare import Opt
+from ..core.declare import Arg, Opt
 from ..display import answers
 from .values import NumberLike, PointsLike, _choice, _flat, _number, _optional, _whole
 
@@ -55,6 +55,21 @@ COMPARE = Opt(
     help="A pixel is on when its value is > or >= the threshold.",
     choices=(">", ">="),
 )
+MATRIX = Opt(
+    "--matrix",
+    "-m",
+    metavar="N|ROWS",
+    help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's.",
+    kind="text",
+)
+SCALE = Opt(
+    "--scale",
+    help="Thresholds: raw (D x TOP / n^2), centered ((D + 1/2) x TOP / n^2), or given "
+    "(the matrix's entries are thresholds already, in the image's units).",
+    choices=("raw", "centered", "given"),
+)
+BASE = Opt("--base", help="The matrix's entries count from 0 or from 1.", choices=("0", "1"))
+TRANSPOSE = Opt("--transpose", help="Index the matrix by x first (its transpose).")
 
 
 def _matrix(value: MatrixLike, param: str) -> list[list[Number]]:
@@ -139,14 +154,14 @@ def _dither_matrix(matrix: int | MatrixLike) -> int | list[list[Number]]:
 
 @answers
 def dither_ordered(
-    image: MatrixLike,
-    matrix: int | MatrixLike = 2,
-    top: NumberLike = 255,
+    image: Annotated[MatrixLike, IMAGE],
+    matrix: Annotated[int | MatrixLike, MATRIX] = 2,
+    top: Annotated[NumberLike, TOP] = 255,
     *,
-    compare: CompareName = ">",
-    scale: DitherScaleName = "raw",
-    base: DitherBaseName | Literal[0, 1] = "0",
-    transpose: bool = False,
+    compare: Annotated[CompareName, COMPARE] = ">",
+    scale: Annotated[DitherScaleName, SCALE] = "raw",
+    base: Annotated[DitherBaseName | Literal[0, 1], BASE] = "0",
+    transpose: Annotated[bool, TRANSPOSE] = False,
 ) -> Solution:
     """Ordered dither (``scanconv dither ordered``) with a Bayer matrix or a matrix given.
 
@@ -205,16 +220,29 @@ def dither_ordered(
 
 @answers
 def dither_lookup(
-    pixels: PointsLike,
-    matrix: int | MatrixLike = 4,
-    top: NumberLike = 255,
+    pixels: Annotated[
+        PointsLike,
+        Arg(
+            "The pixels' screen positions: x across, y down (row y), in pairs.",
+            "X Y ...",
+            kind="text",
+        ),
+    ],
+    matrix: Annotated[int | MatrixLike, MATRIX] = 4,
+    top: Annotated[NumberLike, TOP] = 255,
     *,
-    value: NumberLike | None = None,
-    count: DitherCountName | Literal[0, 1] = "0",
-    compare: CompareName = ">",
-    scale: DitherScaleName = "raw",
-    base: DitherBaseName | Literal[0, 1] = "0",
-    transpose: bool = False,
+    value: Annotated[
+        NumberLike | None,
+        Opt("--value", help="The pixels' intensity: each is on when it passes T."),
+    ] = None,
+    count: Annotated[
+        DitherCountName | Literal[0, 1],
+        Opt("--count", help="Screen positions count from 0 or from 1.", choices=("0", "1")),
+    ] = "0",
+    compare: Annotated[CompareName, COMPARE] = ">",
+    scale: Annotated[DitherScaleName, SCALE] = "raw",
+    base: Annotated[DitherBaseName | Literal[0, 1], BASE] = "0",
+    transpose: Annotated[bool, TRANSPOSE] = False,
 ) -> Solution:
     """Each pixel's dither threshold from its screen position (``scanconv dither lookup``):
     ``T[(y - c) mod n][(x - c) mod n]``, and whether a pixel of intensity ``value`` is on there.
@@ -330,7 +358,7 @@ def dither_diffusion(
         ``"jarvis-judice-ninke"`` (/48), ``"stucki"`` (/42), ``"burkes"`` (/32), ``"sierra"``
         (/32), ``"two-row-sierra"`` (/16), ``"sierra-lite"`` (/4) or ``"one-dimensional"``
         (all of the error to the next pixel); each source is named in the answer's notes
-        (:data:`scanconv.algorithms.dither.KERNEL_SOURCES`).
+        (:data:`scanconv.algorithms.dither.KERNELS`).
     order : {"raster", "serpentine"}, default "raster"
         Every row left to right, or alternate rows right to left.
     arithmetic : {"exact", "integer"}, default "exact"
@@ -371,12 +399,33 @@ def dither_diffusion(
 
 @answers
 def halftone(
-    n: NumberLike,
+    n: Annotated[NumberLike, Arg("N, the halftone cell's width: 1 to 16.", "N")],
     *,
-    level: NumberLike | None = None,
-    bits: NumberLike = 1,
-    order: CellOrderName = "bayer",
-    matrix: MatrixLike | None = None,
+    level: Annotated[
+        NumberLike | None, Opt("--level", "-l", help="Only the pattern of this level.")
+    ] = None,
+    bits: Annotated[
+        NumberLike,
+        Opt("--bits", help="Bits per pixel of the device (default 1).", show_default=False),
+    ] = 1,
+    order: Annotated[
+        CellOrderName,
+        Opt(
+            "--order",
+            help="bayer: the cell fills in the Bayer matrix's order (dispersed); clustered: a "
+            "dot grows from the centre.",
+            choices=("bayer", "clustered"),
+        ),
+    ] = "bayer",
+    matrix: Annotated[
+        MatrixLike | None,
+        Opt(
+            "--matrix",
+            "-m",
+            metavar="ROWS",
+            help="The cell's order given: N x N rows holding 0..N^2-1 (or 1..N^2) once each.",
+        ),
+    ] = None,
 ) -> Solution:
     """The n x n halftone patterns (``scanconv halftone``): the levels they give and the pattern of
     each level, or of one.
@@ -423,13 +472,35 @@ def halftone(
 
 @answers
 def printer(
-    dpi: NumberLike | None = None,
-    lpi: NumberLike | None = None,
+    dpi: Annotated[NumberLike | None, Opt("--dpi", help="The printer's dots per inch.")] = None,
+    lpi: Annotated[
+        NumberLike | None,
+        Opt("--lpi", help="The halftone screen's lines (cells) per inch."),
+    ] = None,
     *,
-    cell: NumberLike | None = None,
-    levels: NumberLike | None = None,
-    count: LevelCountName = "n2+1",
-    dots: PrinterDotsName = "whole",
+    cell: Annotated[
+        NumberLike | None, Opt("--cell", help="The halftone cell's side N, in dots.")
+    ] = None,
+    levels: Annotated[
+        NumberLike | None,
+        Opt("--levels", help="The grey levels wanted: the smallest cell giving them."),
+    ] = None,
+    count: Annotated[
+        LevelCountName,
+        Opt(
+            "--count",
+            help="An N x N cell's levels: n2+1 (0..N^2 dots on) or n2.",
+            choices=("n2+1", "n2"),
+        ),
+    ] = "n2+1",
+    dots: Annotated[
+        PrinterDotsName,
+        Opt(
+            "--dots",
+            help="The cell from dpi / lpi: whole dots (rounded down) or exact.",
+            choices=("whole", "exact"),
+        ),
+    ] = "whole",
 ) -> Solution:
     """A printer's halftone arithmetic (``scanconv printer``): from any two of the printer's dots
     per inch, the screen's lines per inch and the cell (or the levels wanted), the rest.

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Annotated
 
 from ..core import lazy
+from ..core.checks import InputError
 from ..core.declare import Arg, Opt
 from ..display import answers
 from .params import BITS, SIZE
@@ -21,13 +22,16 @@ from .values import (
 )
 
 if TYPE_CHECKING:
+    from ..algorithms import quantize as algorithms_quantize
     from ..algorithms import sample as algorithms_sample
     from ..core.choices import (
         ColorDepthName,
+        InputKindName,
         OriginName,
         ReconName,
     )
 else:
+    algorithms_quantize = lazy.module("scanconv.algorithms.quantize")
     algorithms_sample = lazy.module("scanconv.algorithms.sample")
 
 if TYPE_CHECKING:
@@ -109,11 +113,34 @@ def storage(
 
 @answers
 def quantize(
-    bits: NumberLike,
-    value_range: tuple[NumberLike, NumberLike] | None = None,
+    bits: Annotated[NumberLike, BITS],
+    value_range: Annotated[
+        tuple[NumberLike, NumberLike] | None,
+        Opt(
+            "--range",
+            metavar="LO HI",
+            help="Input range: add each level's inputs and reconstruction value.",
+        ),
+    ] = None,
     *,
-    integer: bool = True,
-    recon: ReconName = "midpoint",
+    kind: Annotated[
+        InputKindName,
+        Opt(
+            "--input",
+            help="integer: the inputs are the integers LO..HI (8-bit: --range 0 255); "
+            "real: any value in [LO, HI].",
+            choices=("integer", "real"),
+        ),
+    ] = "integer",
+    recon: Annotated[
+        ReconName,
+        Opt(
+            "--recon",
+            help="Reconstruction value: the midpoint of each level's cell or its lower end.",
+            choices=("midpoint", "lower"),
+        ),
+    ] = "midpoint",
+    integer: bool | None = None,
 ) -> Solution:
     """The quantization table for ``bits`` bits over a range of values (``scanconv quantize``).
 
@@ -122,12 +149,15 @@ def quantize(
     bits : int
         B bits: ``2**B`` levels.
     value_range : (lo, hi), optional
-        The input range: integers ``lo .. hi``, or with ``integer=False`` real values in
+        The input range: integers ``lo .. hi``, or with ``kind="real"`` real values in
         ``[lo, hi]``; without one the table lists the levels and their codes only.
-    integer : bool, default True
+    kind : {"integer", "real"}, default "integer"
         Integer inputs (each level a range of whole numbers) or real ones (half-open intervals).
     recon : {"midpoint", "lower"}, default "midpoint"
         Each level's reconstruction value: the middle of its interval, or its lower end.
+    integer : bool, optional
+        The earlier spelling of ``kind`` (``integer=False`` is ``kind="real"``); given, it
+        decides.
 
     Returns
     -------
@@ -143,15 +173,24 @@ def quantize(
     1 01 Dark Gray 64 127 96
     2 10 Light Gray 128 191 160
     3 11 White 192 255 224
-    >>> [row[-1] for row in quantize(2, (0, 1), integer=False, recon="lower").tables[0].rows()]
+    >>> [row[-1] for row in quantize(2, (0, 1), kind="real", recon="lower").tables[0].rows()]
     [0, Fraction(1, 4), Fraction(1, 2), Fraction(3, 4)]
     """
     return answers_quantize.quantize_solution(
         _number(bits, "bits"),
         None if value_range is None else _pair(value_range, "value_range"),
-        integer=integer,
+        integer=_input_kind(kind) == "integer" if integer is None else bool(integer),
         recon=_choice(recon, "recon"),
     )
+
+
+def _input_kind(kind: str) -> str:
+    """What a quantizer's inputs are, checked: ``"integer"`` or ``"real"``."""
+    text = _choice(kind, "kind")
+    if text not in algorithms_quantize.INPUTS:
+        choices = ", ".join(algorithms_quantize.INPUTS)
+        raise InputError(f"unknown input kind {text!r} (choose from {choices})", "kind")
+    return text
 
 
 @answers

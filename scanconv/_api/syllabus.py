@@ -36,7 +36,6 @@ if TYPE_CHECKING:
         DitherCountName,
         InsideRuleName,
         MajorName,
-        PackingName,
         RowZeroName,
         StrokeAlgorithmName,
     )
@@ -517,60 +516,4 @@ def char_stroke(
     x0, y0 = _at(at)
     return answers_characters.stroke_solution(
         _char(char), x0=x0, y0=y0, scale=_whole(scale, "scale"), algo=_choice(algo, "algo")
-    )
-
-
-@answers
-def char_storage(
-    count: NumberLike,
-    width: NumberLike,
-    height: NumberLike,
-    *,
-    packing: PackingName = "rows",
-    char: str | None = None,
-    first: NumberLike = 0,
-    base: NumberLike = 0,
-) -> Solution:
-    """The storage of a bitmap font and its font table (``scanconv char storage``).
-
-    Parameters
-    ----------
-    count : int
-        The number of glyphs.
-    width, height : int
-        Each glyph's size in pixels.
-    packing : {"rows", "columns", "bits"}, default "rows"
-        Each row padded to whole bytes, each column padded to whole bytes, or the bits packed
-        with no padding.
-    char : str, optional
-        A character whose glyph's address is asked: its glyph number (its code less
-        ``first``) and start address.
-    first : int, default 0
-        The character code of the font's first glyph (32 for a font that starts at the space).
-    base : int, default 0
-        The byte address of the first glyph; each glyph follows the one before.
-
-    Returns
-    -------
-    Answer
-        The working and the font table (each glyph's start address); ``.data`` holds
-        ``per_glyph`` and the total ``bits``.
-
-    Examples
-    --------
-    >>> char_storage(128, 5, 7).data
-    {'bits': 7168, 'per_glyph': 56, 'packing': 'rows'}
-    >>> char_storage(128, 5, 7, packing="bits").data["bits"]
-    4480
-    >>> char_storage(128, 8, 8, char="A", base=0x1000).derived[-1].value  # 4096 + 65 x 8
-    4616
-    """
-    return answers_characters.font_storage_solution(
-        _whole(count, "count"),
-        _whole(width, "width"),
-        _whole(height, "height"),
-        packing=_choice(packing, "packing"),
-        char=None if char is None else _char(char),
-        first=_whole(first, "first"),
-        base=_whole(base, "base"),
     )

@@ -84,6 +84,8 @@ STROKES: dict[str, tuple[tuple[int, int, int, int], ...]] = {
 ``(x1, y1, x2, y2)``; the letters made of straight strokes."""
 
 PACKINGS = ("rows", "columns", "bits")
+STROKE_ALGORITHMS = ("bresenham", "dda")
+"""The line methods a stroke is drawn with."""
 MAX_SCALE = 16
 MAX_CHARACTERS = 1 << 20
 
@@ -218,7 +220,7 @@ def draw_strokes(
         )
     if not 1 <= scale <= MAX_SCALE:
         raise InputError(f"the scale is 1..{MAX_SCALE}, got {scale}", "scale")
-    if algo not in ("bresenham", "dda"):
+    if algo not in STROKE_ALGORITHMS:
         raise InputError(f"strokes are drawn by bresenham or dda, got {algo!r}", "algo")
     for k, (a, b, c, d) in enumerate(STROKES[char]):
         seg = (x0 + a * scale, y0 + b * scale, x0 + c * scale, y0 + d * scale)

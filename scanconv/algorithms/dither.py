@@ -20,8 +20,7 @@ The conventions that change the printed numbers are named and settable (:data:`D
   ``D[j mod n][i mod n]`` (Hearn & Baker index D by x first);
 - error diffusion: the ``kernel`` (Floyd–Steinberg's 7/16, 3/16, 5/16, 1/16, the simple
   3/8, 3/8, 2/8 taught under the same name, Jarvis–Judice–Ninke, Stucki, Burkes, the Sierra
-  family or the one-dimensional kernel: :data:`KERNELS`, each source in
-  :data:`KERNEL_SOURCES`), the ``order`` (``raster`` or ``serpentine``),
+  family or the one-dimensional kernel: :data:`KERNELS`, each with its source), the ``order`` (``raster`` or ``serpentine``),
   ``arithmetic`` (``exact`` fractions, or ``integer``: each share truncated toward zero as C's
   integer division does) and ``carry`` (negative errors ``kept`` or ``clamped`` at 0).
 
@@ -81,68 +80,108 @@ class Share(NamedTuple):
     weight: Fraction
 
 
-def _kernel(divisor: int, *rows: tuple[int, tuple[int, ...]]) -> tuple[Share, ...]:
-    """The shares of a kernel written as published: each row ``(di, weights)`` with the weights
-    of columns ``j - 2 .. j + 2`` (the current row's from ``j + 1``), over ``divisor``."""
+class Kernel(NamedTuple):
+    """One error-diffusion kernel: its name, the common denominator it is published with (its
+    weights are written over it), each share's offset from the pixel and its weight (they sum
+    to 1, so the error is moved, not lost), and where it is published (its answer names it in
+    a note)."""
+
+    name: str
+    divisor: int
+    shares: tuple[Share, ...]
+    source: str
+
+
+def _kernel(name: str, divisor: int, source: str, *rows: tuple[int, tuple[int, ...]]) -> Kernel:
+    """A kernel written as published: each row ``(di, weights)`` with the weights of columns
+    ``j - 2 .. j + 2`` (the current row's from ``j + 1``), over ``divisor``."""
     shares = []
     for di, weights in rows:
         first = 1 if di == 0 else -(len(weights) // 2)
         shares += [Share(di, first + k, Fraction(w, divisor)) for k, w in enumerate(weights) if w]
-    return tuple(shares)
+    return Kernel(name, divisor, tuple(shares), source)
 
 
-KERNELS: dict[str, tuple[Share, ...]] = {
-    "floyd-steinberg": _kernel(16, (0, (7,)), (1, (3, 5, 1))),
-    "simple": (
-        Share(0, 1, Fraction(3, 8)),
-        Share(1, 0, Fraction(3, 8)),
-        Share(1, 1, Fraction(2, 8)),
-    ),
-    "jarvis-judice-ninke": _kernel(48, (0, (7, 5)), (1, (3, 5, 7, 5, 3)), (2, (1, 3, 5, 3, 1))),
-    "stucki": _kernel(42, (0, (8, 4)), (1, (2, 4, 8, 4, 2)), (2, (1, 2, 4, 2, 1))),
-    "burkes": _kernel(32, (0, (8, 4)), (1, (2, 4, 8, 4, 2))),
-    "sierra": _kernel(32, (0, (5, 3)), (1, (2, 4, 5, 4, 2)), (2, (0, 2, 3, 2, 0))),
-    "two-row-sierra": _kernel(16, (0, (4, 3)), (1, (1, 2, 3, 2, 1))),
-    "sierra-lite": _kernel(4, (0, (2,)), (1, (1, 1, 0))),
-    "one-dimensional": _kernel(1, (0, (1,))),
+_HELLAND = 'T. Helland, "Image dithering: eleven algorithms" (2012)'
+_CROCKER = "as tabled in L. Crocker's DHALF.TXT"
+
+KERNELS: dict[str, Kernel] = {
+    k.name: k
+    for k in (
+        _kernel(
+            "floyd-steinberg",
+            16,
+            'R. W. Floyd and L. Steinberg, "An adaptive algorithm for spatial greyscale", '
+            "Proc. SID 17 (1976)",
+            (0, (7,)),
+            (1, (3, 5, 1)),
+        ),
+        Kernel(  # no paper; taught under Floyd and Steinberg's name
+            "simple",
+            8,
+            (Share(0, 1, Fraction(3, 8)), Share(1, 0, Fraction(3, 8)), Share(1, 1, Fraction(2, 8))),
+            "the three-share simplification taught under Floyd and Steinberg's name "
+            "(3/8 right, 3/8 below, 2/8 below right)",
+        ),
+        _kernel(
+            "jarvis-judice-ninke",
+            48,
+            'J. F. Jarvis, C. N. Judice and W. H. Ninke, "A survey of techniques for the display '
+            'of continuous tone pictures on bilevel displays", Computer Graphics and Image '
+            "Processing 5 (1976)",
+            (0, (7, 5)),
+            (1, (3, 5, 7, 5, 3)),
+            (2, (1, 3, 5, 3, 1)),
+        ),
+        _kernel(
+            "stucki",
+            42,
+            'P. Stucki, "MECCA - a multiple-error correction computation algorithm for bi-level '
+            'image hardcopy reproduction", IBM Research RZ1060 (1981)',
+            (0, (8, 4)),
+            (1, (2, 4, 8, 4, 2)),
+            (2, (1, 2, 4, 2, 1)),
+        ),
+        _kernel(
+            "burkes",
+            32,
+            f"D. Burkes, the Burkes error filter (1988), {_CROCKER} (1989) and {_HELLAND}",
+            (0, (8, 4)),
+            (1, (2, 4, 8, 4, 2)),
+        ),
+        _kernel(
+            "sierra",
+            32,
+            f"F. Sierra (1989), {_CROCKER} and T. Helland (2012)",
+            (0, (5, 3)),
+            (1, (2, 4, 5, 4, 2)),
+            (2, (0, 2, 3, 2, 0)),
+        ),
+        _kernel(
+            "two-row-sierra",
+            16,
+            f"F. Sierra (1990), {_CROCKER} and T. Helland (2012)",
+            (0, (4, 3)),
+            (1, (1, 2, 3, 2, 1)),
+        ),
+        _kernel(
+            "sierra-lite",
+            4,
+            'F. Sierra\'s "Filter Lite" (1990), as tabled in T. Helland (2012)',
+            (0, (2,)),
+            (1, (1, 1, 0)),
+        ),
+        _kernel(
+            "one-dimensional",
+            1,
+            "one-dimensional error diffusion, all of the error to the next pixel of the row "
+            '(S. Hocevar, "Libcaca study", part 3, "Error diffusion" (2007); Wikipedia, '
+            '"Error diffusion")',
+            (0, (1,)),
+        ),
+    )
 }
-"""The error-diffusion kernels, by name: each share's offset from the pixel and its weight (the
-weights of every kernel sum to 1, so the error is moved, not lost)."""
-
-KERNEL_DIVISORS: dict[str, int] = {
-    "floyd-steinberg": 16,
-    "simple": 8,
-    "jarvis-judice-ninke": 48,
-    "stucki": 42,
-    "burkes": 32,
-    "sierra": 32,
-    "two-row-sierra": 16,
-    "sierra-lite": 4,
-    "one-dimensional": 1,
-}
-"""The common denominator each kernel is published with (its weights are written over it)."""
-
-KERNEL_SOURCES: dict[str, str] = {
-    "floyd-steinberg": 'R. W. Floyd and L. Steinberg, "An adaptive algorithm for spatial '
-    'greyscale", Proc. SID 17 (1976)',
-    "simple": "the three-share simplification taught under Floyd and Steinberg's name "
-    "(3/8 right, 3/8 below, 2/8 below right)",
-    "jarvis-judice-ninke": 'J. F. Jarvis, C. N. Judice and W. H. Ninke, "A survey of '
-    'techniques for the display of continuous tone pictures on bilevel displays", Computer '
-    "Graphics and Image Processing 5 (1976)",
-    "stucki": 'P. Stucki, "MECCA - a multiple-error correction computation algorithm for '
-    'bi-level image hardcopy reproduction", IBM Research RZ1060 (1981)',
-    "burkes": "D. Burkes, the Burkes error filter (1988), as tabled in L. Crocker's DHALF.TXT "
-    '(1989) and T. Helland, "Image dithering: eleven algorithms" (2012)',
-    "sierra": "F. Sierra (1989), as tabled in L. Crocker's DHALF.TXT and T. Helland (2012)",
-    "two-row-sierra": "F. Sierra (1990), as tabled in L. Crocker's DHALF.TXT and T. Helland (2012)",
-    "sierra-lite": 'F. Sierra\'s "Filter Lite" (1990), as tabled in T. Helland (2012)',
-    "one-dimensional": "one-dimensional error diffusion, all of the error to the next pixel of "
-    'the row (S. Hocevar, "Libcaca study", part 3, "Error diffusion" (2007); Wikipedia, '
-    '"Error diffusion")',
-    # the simple kernel: no paper; taught under Floyd and Steinberg's name
-}
-"""Where each kernel is published (its answer names it in a note)."""
+"""The error-diffusion kernels, by name."""
 
 
 def choice_of(values: Sequence[str], value: str, knob: str) -> str:
@@ -324,7 +363,7 @@ def error_diffusion(
     (0, 1) 7065/64 0 7065/64
     (1, 1) 122655/1024 0 122655/1024
     """
-    shares = KERNELS[choice("kernel", kernel)]
+    shares = KERNELS[choice("kernel", kernel)].shares
     for knob, given in (("order", order), ("arithmetic", arithmetic), ("carry", carry)):
         choice(knob, given)
     choice("compare", compare)
@@ -429,7 +468,7 @@ def lost_weight(kernel: str, rows: int, cols: int, order: str = "raster") -> Fra
     for i in range(rows):
         sign = -1 if order == "serpentine" and i % 2 else 1
         for j in range(cols):
-            for s in KERNELS[kernel]:
+            for s in KERNELS[kernel].shares:
                 if not (0 <= i + s.di < rows and 0 <= j + sign * s.dj < cols):
                     total += s.weight
     return total

@@ -16,8 +16,15 @@ from .image_limits import check_levels
 if TYPE_CHECKING:  # numpy is imported where arrays are made: storage and quantize start faster
     import numpy as np
 
-RECON = ("midpoint", "lower")
+RECON_OFFSETS = (("midpoint", Fraction(1, 2)), ("lower", Fraction(0)))
+"""Each reconstruction convention of :class:`Quantizer` and where in its level's cell it
+reconstructs: ``lo + (k + offset) Δ``."""
+
+RECON = tuple(name for name, _ in RECON_OFFSETS)
 """Reconstruction conventions of :class:`Quantizer`."""
+
+INPUTS = ("integer", "real")
+"""What an input range holds: the integers ``lo .. hi``, or any real value in ``[lo, hi]``."""
 
 
 def level_dtype(levels: int) -> type[np.unsignedinteger]:
@@ -57,6 +64,15 @@ class Quantizer:
     levels: int
     integer: bool = True
     recon: str = "midpoint"
+
+    @property
+    def offset(self) -> Fraction:
+        """Where in its cell a level reconstructs: 1/2 (the midpoint) or 0 (the lower end).
+
+        >>> Quantizer.make(0, 255, 4).offset, Quantizer.make(0, 255, 4, recon="lower").offset
+        (Fraction(1, 2), Fraction(0, 1))
+        """
+        return next(offset for name, offset in RECON_OFFSETS if name == self.recon)
 
     @classmethod
     def make(
@@ -176,7 +192,7 @@ class Quantizer:
         D = 2 * L * lo.denominator * width.denominator
         P = lo.numerator * (D // lo.denominator)
         S = width.numerator * (D // width.denominator) // (2 * L)
-        half = 1 if self.recon == "midpoint" else 0
+        half = int(2 * self.offset)
 
         def exact(n: int) -> Number:
             q, r = divmod(n, D)
@@ -201,5 +217,4 @@ class Quantizer:
         >>> Quantizer.make(0, 255, 4, recon="lower").reconstruction(1)
         64
         """
-        offset = Fraction(1, 2) if self.recon == "midpoint" else 0
-        return normalize(self.lo + (k + offset) * Fraction(self.step))
+        return normalize(self.lo + (k + self.offset) * Fraction(self.step))

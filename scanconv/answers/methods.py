@@ -114,6 +114,11 @@ class Method(NamedTuple):
     ``work`` and ``arithmetic`` (a line method's row of the "Arithmetic per pixel" table,
     ``{maj}``, ``{mnr}`` and ``{d}`` standing for the axes and the minor difference)."""
 
+    spec: str | None = None
+    """A command's own record of the method (``module:attribute``), where its answer reads
+    more of it than one function: a colour model's name, components and conversions
+    (:class:`scanconv.answers.image.color.ColorModel`)."""
+
     def fact(self, name: str) -> str:
         """One of :attr:`facts` (``""`` if the record states none)."""
         return dict(self.facts).get(name, "")
@@ -444,7 +449,8 @@ _IMAGE = (
            _G + "storage:storage_bits"),
     *(
         _plain("color", model, f"{model.upper()} colour model", "scanconv.answers.image.color:color_solution",
-               None, no_generator="a conversion, worked in one table")
+               None, no_generator="a conversion, worked in one table")._replace(
+                   spec=f"scanconv.answers.image.color_models:{model.upper()}")
         for model in ("rgb", "cmy", "hsv", "hsi", "grey")
     ),
 )  # fmt: skip

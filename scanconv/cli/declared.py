@@ -17,7 +17,7 @@ from typing import Annotated, Any
 import typer
 from typer._types import TyperChoice
 
-from ..core.declare import Arg, Declared, declared
+from ..core.declare import Arg, Declared
 from ..questions.declared import COMMANDS
 from .budget import answered
 from .command import SHARED, Command, _shared
@@ -34,7 +34,7 @@ def typer_parameter(d: Declared) -> inspect.Parameter:
     the library's default."""
     texts = d.choices if isinstance(d.choices, tuple) else None
     base: Any = d.choices if d.kind == "choice" and not texts else _TYPES.get(d.kind, str)
-    if d.nargs == -1:
+    if d.nargs == -1 or getattr(d.meta, "multiple", False):
         base = list[base]
     elif d.nargs > 1:
         base = tuple[(base,) * d.nargs]  # type: ignore[misc]
@@ -80,7 +80,7 @@ class DeclaredCommand(Command):
 
     @functools.cached_property
     def declared(self) -> tuple[Declared, ...]:
-        return declared(self.spec.declaration())
+        return self.spec.parameters()
 
     @property
     def own(self) -> list[str]:

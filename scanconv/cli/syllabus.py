@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 from enum import Enum
-from fractions import Fraction
 from typing import Annotated
 
 import typer
@@ -14,29 +13,7 @@ from ..questions import commands
 from .application import app, char_app, dither_app
 from .command import answers
 from .declared import command
-from .options import NUMERIC_ARGS, choice, num_arg, num_option
-
-
-class Compare(str, Enum):
-    """When a dithered pixel is on: its value above the threshold, or at least it."""
-
-    gt = ">"
-    ge = ">="
-
-
-class DitherScale(str, Enum):
-    """How a dither matrix's entries become thresholds."""
-
-    raw = "raw"
-    centered = "centered"
-    given = "given"
-
-
-class Base(str, Enum):
-    """Whether a dither matrix's entries count from 0 or from 1."""
-
-    zero = "0"
-    one = "1"
+from .options import NUMERIC_ARGS, choice
 
 
 class InsideRule(str, Enum):
@@ -55,34 +32,6 @@ class Boundary(str, Enum):
     left_bottom = "left-bottom"
 
 
-class Packing(str, Enum):
-    """How a glyph's bits are packed into bytes."""
-
-    rows = "rows"
-    columns = "columns"
-    bits = "bits"
-
-
-Image = Annotated[
-    str,
-    typer.Option(
-        "--image",
-        "-i",
-        metavar="ROWS",
-        help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: "
-        "'10 200; 60 90'.",
-    ),
-]
-Top = Annotated[
-    Fraction,
-    num_option("--top", help="The top of the scale: values run 0..TOP, an on pixel is TOP."),
-]
-CompareOpt = Annotated[
-    Compare, choice("--compare", help="A pixel is on when its value is > or >= the threshold.")
-]
-TOP = Fraction(255)
-
-
 command(
     dither_app,
     ("dither", "threshold"),
@@ -93,79 +42,22 @@ command(
 )
 
 
-MatrixOpt = Annotated[
-    str,
-    typer.Option(
-        "--matrix",
-        "-m",
-        metavar="N|ROWS",
-        help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's.",
-    ),
-]
-ScaleOpt = Annotated[
-    DitherScale,
-    choice(
-        "--scale",
-        help="Thresholds: raw (D x TOP / n^2), centered ((D + 1/2) x TOP / n^2), or given "
-        "(the matrix's entries are thresholds already, in the image's units).",
-    ),
-]
-BaseOpt = Annotated[Base, choice("--base", help="The matrix's entries count from 0 or from 1.")]
-TransposeOpt = Annotated[
-    bool, typer.Option("--transpose", help="Index the matrix by x first (its transpose).")
-]
-
-
-@dither_app.command("ordered", context_settings=NUMERIC_ARGS)
-@answers(picture=True, origin=False)
-def dither_ordered(
-    image: Image,
-    top: Top = TOP,
-    matrix: MatrixOpt = "2",
-    compare: CompareOpt = Compare.gt,
-    scale: ScaleOpt = DitherScale.raw,
-    base: BaseOpt = Base.zero,
-    transpose: TransposeOpt = False,
-) -> Solution:
-    """Ordered dither: the threshold matrix tiled over the image, one comparison per pixel.
+command(
+    dither_app,
+    ("dither", "ordered"),
+    help="""Ordered dither: the threshold matrix tiled over the image, one comparison per pixel.
 
     Example: scanconv dither ordered --image "10 200; 60 90" --matrix 2
-    """
-    return commands.dither_ordered(image, top, matrix, compare, scale, base, transpose)
-
-
-@dither_app.command("lookup", context_settings=NUMERIC_ARGS)
-@answers(grid=False)
-def dither_lookup(
-    pixels: Annotated[
-        list[str],
-        typer.Argument(
-            metavar="X Y ...",
-            help="The pixels' screen positions: x across, y down (row y), in pairs.",
-            show_default=False,
-        ),
-    ],
-    matrix: MatrixOpt = "4",
-    top: Top = TOP,
-    value: Annotated[
-        Fraction | None,
-        num_option("--value", help="The pixels' intensity: each is on when it passes T."),
-    ] = None,
-    count: Annotated[
-        Base, choice("--count", help="Screen positions count from 0 or from 1.")
-    ] = Base.zero,
-    compare: CompareOpt = Compare.gt,
-    scale: ScaleOpt = DitherScale.raw,
-    base: BaseOpt = Base.zero,
-    transpose: TransposeOpt = False,
-) -> Solution:
-    """A pixel's dither threshold from its screen position: T[y mod n][x mod n].
+    """,
+)
+command(
+    dither_app,
+    ("dither", "lookup"),
+    help="""A pixel's dither threshold from its screen position: T[y mod n][x mod n].
 
     Example: scanconv dither lookup 5 2 --matrix 4 --value 100
-    """
-    return commands.dither_lookup(
-        pixels, matrix, top, value, count, compare, scale, base, transpose
-    )
+    """,
+)
 
 
 @app.command(context_settings=NUMERIC_ARGS)
@@ -252,42 +144,12 @@ command(
 )
 
 
-@char_app.command("storage", context_settings=NUMERIC_ARGS)
-@answers(grid=False)
-def char_storage(
-    count: Annotated[Fraction, num_arg("How many characters the font holds.", "COUNT")],
-    width: Annotated[Fraction, num_arg("A glyph's width in pixels.", "WIDTH")],
-    height: Annotated[Fraction, num_arg("A glyph's height in pixels.", "HEIGHT")],
-    packing: Annotated[
-        Packing,
-        choice("--packing", help="A glyph in whole bytes per row, per column, or packed bits."),
-    ] = Packing.rows,
-    char: Annotated[
-        str | None,
-        typer.Option(
-            "--char",
-            metavar="C",
-            help="A character whose glyph's number and address the font table gives.",
-        ),
-    ] = None,
-    first: Annotated[
-        Fraction | None,
-        num_option(
-            "--first", metavar="CODE", help="The code of the font's first glyph (default 0)."
-        ),
-    ] = None,
-    base: Annotated[
-        str | None,
-        typer.Option(
-            "--base",
-            metavar="ADDRESS",
-            help="The first glyph's byte address, decimal or 0x hexadecimal (default 0).",
-        ),
-    ] = None,
-) -> Solution:
-    """A bitmap font's storage: the bytes per glyph and for the whole font, and the font
+command(
+    char_app,
+    ("char", "storage"),
+    help="""A bitmap font's storage: the bytes per glyph and for the whole font, and the font
     table: each glyph's address, one after another.
 
     Example: scanconv char storage 128 5 7
-    """
-    return commands.char_storage(count, width, height, packing, char, first, base)
+    """,
+)

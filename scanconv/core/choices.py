@@ -44,6 +44,7 @@ __all__ = [
     "EllipseP0Name",
     "FillMethodName",
     "FillRuleName",
+    "InputKindName",
     "InsideRuleName",
     "KernelName",
     "LayoutName",
@@ -80,7 +81,8 @@ __all__ = [
 RasterLineName = Literal["bresenham", "dda", "basic"]
 """``algo`` of :func:`scanconv.raster.line` (:data:`scanconv.algorithms.raster.LINE_ALGORITHMS`)."""
 StrokeAlgorithmName = Literal["bresenham", "dda"]
-"""``algo`` of :func:`scanconv.char_stroke`: the line drawing each stroke."""
+"""``algo`` of :func:`scanconv.char_stroke`: the line drawing each stroke
+(:data:`scanconv.algorithms.characters.STROKE_ALGORITHMS`)."""
 RoundingName = Literal["half-up", "trunc", "half-even", "c-cast", "half-away"]
 """How a computed coordinate becomes a pixel (:class:`~scanconv.algorithms.choices.Rounding`)."""
 TieName = Literal["step", "keep"]
@@ -151,6 +153,8 @@ ColorDepthName = Literal["rgb24"]
 """``color`` of :func:`scanconv.storage`: 24-bit RGB."""
 ReconName = Literal["midpoint", "lower"]
 """The quantizer's reconstruction level (:data:`scanconv.algorithms.quantize.RECON`)."""
+InputKindName = Literal["integer", "real"]
+"""What a quantizer's input range holds (:data:`scanconv.algorithms.quantize.INPUTS`)."""
 OriginName = Literal["bottom-left", "top-left"]
 """Where a sampled image's row 0 is (:data:`scanconv.algorithms.sample.ORIGINS`)."""
 CompareName = Literal[">", ">="]

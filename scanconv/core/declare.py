@@ -100,7 +100,8 @@ class Declared:
     ``meta`` (:class:`Arg` or :class:`Opt`), its ``kind`` (one of :data:`KINDS`), ``nargs``
     (the words it takes; -1: all that are left), ``choices`` (a choice's enum, or its texts),
     ``optional`` (whether ``None`` is a value: the library's default for it) and ``default``
-    (the function's; ``inspect.Parameter.empty``: required). A plain class: reading a
+    (the function's; ``inspect.Parameter.empty``: required; a ``*values`` parameter takes
+    every word left and is required). A plain class: reading a
     declaration at start-up builds no named-tuple class."""
 
     __slots__ = ("choices", "default", "kind", "meta", "name", "nargs", "optional")
@@ -125,12 +126,13 @@ class Declared:
 
 class _Lenient(dict[str, Any]):
     """Names an annotation may use that are only imported for type checkers: the ``Literal``
-    aliases of :mod:`scanconv.core.choices` (``LineAlgorithmName``), which never decide a
-    kind (the enum beside them does), so their module is not imported to read a signature."""
+    aliases of :mod:`scanconv.core.choices` (``LineAlgorithmName``), read as ``str`` (text;
+    an enum beside one decides the kind, an ``Opt``'s ``choices`` its values), so their
+    module is not imported to read a signature."""
 
     def __missing__(self, key: str) -> Any:
         if key.endswith("Name"):
-            return type(key, (), {})
+            return str
         raise KeyError(key)
 
 
@@ -215,8 +217,15 @@ def declared(fn: Callable[..., Any]) -> tuple[Declared, ...]:
         if isinstance(meta, Opt) and meta.choices:
             kind, nargs, choices = "choice", 1, meta.choices
         else:
-            kind, nargs, choices = _kind_of(base)
+            try:
+                kind, nargs, choices = _kind_of(base)
+            except TypeError:  # a type that says no kind: the declaration's own, one word
+                if meta.kind is None:
+                    raise
+                kind, nargs, choices = meta.kind, 1, None
             nargs = getattr(meta, "nargs", None) or nargs
+        if p.kind is p.VAR_POSITIONAL:  # ``*values``: every word left
+            nargs = -1
         optional = type(None) in _members(base)
         out.append(Declared(name, meta, meta.kind or kind, nargs, choices, optional, p.default))
     return tuple(out)

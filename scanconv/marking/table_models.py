@@ -211,7 +211,7 @@ class DiffusionTable(TableModel):
             return
         ai, aj = int(answer["i"]), int(answer["j"])
         direction = -1 if self.data.get("order") == "serpentine" and ai % 2 else 1
-        for s in dither.KERNELS[self.data.get("kernel", "floyd-steinberg")]:
+        for s in dither.KERNELS[self.data.get("kernel", "floyd-steinberg")].shares:
             to = (ai + s.di, aj + s.dj * direction)
             amount = dither._share(err, s.weight, self.data.get("arithmetic", "exact"))
             self._got[to] = self._got.get(to, Fraction(0)) + amount

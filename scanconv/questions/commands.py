@@ -13,7 +13,6 @@ from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from .. import _api as api
-from .._api.color_theory import color as color_api
 from .._api.color_theory import theory as theory_api
 from ..core import lazy
 from ..core.checks import InputError
@@ -41,10 +40,6 @@ TRANSFORM_WORDS |= {"--points"}
 def _text(value: Any) -> Any:
     """A choice as its text (an enum member's value); ``None`` stays."""
     return getattr(value, "value", value)
-
-
-def quantize(bits: Any, value_range: Any, kind: Any, recon: Any) -> Solution:
-    return api.quantize(bits, value_range, integer=_text(kind) == "integer", recon=_text(recon))
 
 
 def parametric_circle(r: Any, center: Any, radius: Any, t_range: Any, samples: Any) -> Solution:
@@ -205,125 +200,9 @@ def clip_polygon(words: list[str], window: Any, method: Any) -> Solution:
     return api.clip_polygon(vertices, corners or window, method=method)
 
 
-def color(model: Any, values: list[str], to: Any, unit: bool, bits: Any) -> Solution:
-    targets = list(to or [])
-    numbers: list[str] = []
-    for token in values:
-        if not token.isalpha():
-            numbers.append(token)
-        elif to is not None:
-            targets.append(token)
-        else:
-            raise ValueError(
-                f"a colour component must be a number, got {token!r} (name the target models "
-                "after --to)"
-            )
-    return color_api(model, *numbers, to=targets, unit=unit, bits=8 if bits is None else bits)
-
-
-def dither_ordered(
-    image: str,
-    top: Any,
-    matrix: Any,
-    compare: Any,
-    scale: Any,
-    base: Any,
-    transpose: bool,
-) -> Solution:
-    return api.dither_ordered(
-        image,
-        "2" if matrix is None else matrix,
-        255 if top is None else top,
-        compare=_text(compare),
-        scale=_text(scale),
-        base=_text(base),
-        transpose=transpose,
-    )
-
-
-def dither_lookup(
-    pixels: list[Any],
-    matrix: Any,
-    top: Any,
-    value: Any,
-    count: Any,
-    compare: Any,
-    scale: Any,
-    base: Any,
-    transpose: bool,
-) -> Solution:
-    return api.dither_lookup(
-        pixels,
-        "4" if matrix is None else matrix,
-        255 if top is None else top,
-        value=value,
-        count=_text(count),
-        compare=_text(compare),
-        scale=_text(scale),
-        base=_text(base),
-        transpose=transpose,
-    )
-
-
-def halftone(n: Any, level: Any, bits: Any, order: Any = None, matrix: Any = None) -> Solution:
-    return api.halftone(
-        n,
-        level=level,
-        bits=1 if bits is None else bits,
-        order=_text(order) or "bayer",
-        matrix=matrix,
-    )
-
-
-def printer(dpi: Any, lpi: Any, cell: Any, levels: Any, count: Any, dots: Any) -> Solution:
-    return api.printer(
-        dpi,
-        lpi,
-        cell=cell,
-        levels=levels,
-        count=_text(count) or "n2+1",
-        dots=_text(dots) or "whole",
-    )
-
-
 def inside(words: list[str], rule: Any, boundary: Any) -> Solution:
     vertices, points = numbers_around(words, "--points", "points")
     return api.inside(vertices, points, rule=_text(rule), boundary=_text(boundary))
-
-
-def char_storage(
-    count: Any,
-    width: Any,
-    height: Any,
-    packing: Any,
-    char: Any = None,
-    first: Any = None,
-    base: Any = None,
-) -> Solution:
-    return api.char_storage(
-        count,
-        width,
-        height,
-        packing=_text(packing),
-        char=char,
-        first=0 if first is None else first,
-        base=0 if base is None else _address(base),
-    )
-
-
-def _address(text: Any) -> int:
-    """A memory address as a user writes it: decimal (``4096``) or hexadecimal (``0x1000``).
-
-    >>> _address("0x1000"), _address("4096")
-    (4096, 4096)
-    """
-    s = str(text).strip().lower()
-    try:
-        return int(s[2:], 16) if s.startswith("0x") else int(s)
-    except ValueError:
-        raise InputError(
-            f"an address is a whole number or 0x hexadecimal, got {text!r}", "base"
-        ) from None
 
 
 def theory(topic: str, list_: bool = False) -> Solution:
@@ -333,9 +212,8 @@ def theory(topic: str, list_: bool = False) -> Solution:
 BODIES: dict[str, Body] = {
     fn.__name__: fn
     for fn in (
-        quantize, parametric_circle, bezier, bspline, continuity, local_control, transform, color,
-        theory, clip_convex, clip_polygon, dither_ordered, dither_lookup, halftone, printer, inside,
-        char_storage,
+        parametric_circle, bezier, bspline, continuity, local_control, transform, theory,
+        clip_convex, clip_polygon, inside,
     )
 }  # fmt: skip
 """Each command's answer, by the command's function name (``parametric_circle``), for the

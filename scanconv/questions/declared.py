@@ -13,7 +13,10 @@ from __future__ import annotations
 import functools
 import importlib
 from collections.abc import Callable
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+if TYPE_CHECKING:
+    from ..core.declare import Declared
 
 NOT_QUESTIONS = ("check", "exam", "mcp", "practice", "sheet", "site")
 """Commands that write documents or mark: never a question."""
@@ -45,6 +48,12 @@ class Command(NamedTuple):
     """What the work budget knows it by, where that is not its words joined."""
     given: tuple[tuple[str, Any], ...] = ()
     """Arguments the command gives the function itself (``fill boundary``: ``method``)."""
+    spread: tuple[str, ...] = ()
+    """The function's positional parameters up to its ``*values``, which the command passes
+    by position (``color``: ``model``, then the values)."""
+    first: tuple[str, ...] = ()
+    """Parameters its ``--help`` and grammar list first, where the function's positional
+    order differs (``dither ordered``: ``--top`` before ``--matrix``)."""
 
     @property
     def function(self) -> str:
@@ -64,11 +73,32 @@ class Command(NamedTuple):
         module, _, name = self.api.rpartition(".")
         return getattr(importlib.import_module(f"scanconv._api.{module}"), name)  # type: ignore[no-any-return]
 
+    def parameters(self) -> tuple[Declared, ...]:
+        """The declared parameters of its function (:func:`scanconv.core.declare.declared`),
+        :attr:`first` moved ahead of the others after the first."""
+        from ..core.declare import declared
+
+        found = declared(self.declaration())
+        if not self.first:
+            return found
+        moved = [d for d in found if d.name in self.first]
+        rest = [d for d in found[1:] if d.name not in self.first]
+        return (found[0], *moved, *rest)
+
     def answerer(self) -> Callable[..., Any]:
         """The function that answers: the public one, ``scanconv._api.NAME`` (the same
         function, looked up by its public name each time)."""
         fn = getattr(importlib.import_module("scanconv._api"), self.api.rpartition(".")[2])
-        return functools.partial(fn, **dict(self.given)) if self.given else fn
+        fn = functools.partial(fn, **dict(self.given)) if self.given else fn
+        if not self.spread:
+            return fn
+        *before, star = self.spread
+
+        def spread(**arguments: Any) -> Any:  # ``color MODEL VALUES...``: ``*values``
+            head = [arguments.pop(name) for name in before]
+            return fn(*head, *arguments.pop(star), **arguments)
+
+        return spread
 
 
 _ALL = (
@@ -108,6 +138,15 @@ _ALL = (
     Command(("char", "bitmap"), "syllabus.char_bitmap"),
     Command(("char", "stroke"), "syllabus.char_stroke"),
     Command(("image", "ramp"), "image.ramp", picture=True, origin=False, ignore_unknown=False),
+    Command(("quantize",), "image.quantize", grid=False),
+    Command(("color",), "color_theory.color", grid=False, spread=("model", "values")),
+    Command(
+        ("dither", "ordered"), "dither.dither_ordered", picture=True, origin=False, first=("top",)
+    ),
+    Command(("dither", "lookup"), "dither.dither_lookup", grid=False),
+    Command(("halftone",), "dither.halftone", grid=False),
+    Command(("printer",), "dither.printer", grid=False),
+    Command(("char", "storage"), "font.char_storage", grid=False),
     # the 3D chapter (answers/space)
     Command(("3d", "transform"), "space.transform3d", grid=False, name="transform3d"),
     Command(("3d", "project"), "space.project3d", figures=True, name="project3d"),

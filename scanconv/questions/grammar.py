@@ -190,10 +190,9 @@ def param_of(d: Declared) -> Param:
 
 def spec_of(command: Command, shared: dict[str, Param]) -> Spec:
     """The grammar of a declared command, its output options those of ``shared``."""
-    from ..core.declare import declared
     from .declared import OUTPUTS, PICTURE
 
-    own = {d.name: param_of(d) for d in declared(command.declaration())}
+    own = {d.name: param_of(d) for d in command.parameters()}
     params = [p for name, p in own.items() if name not in OUTPUTS]
     if command.picture:  # the same flag, shown as the picture
         shared = {**shared, "grid": shared["grid"]._replace(help=PICTURE)}

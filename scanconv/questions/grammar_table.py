@@ -146,7 +146,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('halftone',): Spec(('halftone',), 'halftone', (
         Param('n', (), 'number', required=True, metavar='N', help="N, the halftone cell's width: 1 to 16."),
         Param('level', ('--level', '-l'), 'number', help='Only the pattern of this level.'),
-        Param('bits', ('--bits',), 'number', help='Bits per pixel of the device (default 1).'),
+        Param('bits', ('--bits',), 'number', default=1, help='Bits per pixel of the device (default 1).'),
         Param('order', ('--order',), 'choice', default='bayer', choices=('bayer', 'clustered'), help="bayer: the cell fills in the Bayer matrix's order (dispersed); clustered: a dot grows from the centre."),
         Param('matrix', ('--matrix', '-m'), 'text', help="The cell's order given: N x N rows holding 0..N^2-1 (or 1..N^2) once each."),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
@@ -199,9 +199,9 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ('color',): Spec(('color',), 'color', (
         Param('model', (), 'text', required=True, metavar='MODEL', help='The model given: rgb, cmy, hsv, hsi, grey.'),
         Param('values', (), 'text', nargs=-1, required=True, metavar='VALUES...', help='Its components: R G B (0..255; 0..1 with --unit), C M Y (0..1), H S V or H S I (H in degrees, S, V, I in 0..1), or one grey level Y.'),
-        Param('to', ('--to',), 'text', multiple=True, help='The models to convert to (rgb, cmy, hsv, hsi, grey; several: --to cmy hsv hsi). Default: every other one.'),
+        Param('to', ('--to',), 'text', default=(), multiple=True, help='The models to convert to (rgb, cmy, hsv, hsi, grey; several: --to cmy hsv hsi). Default: every other one.'),
         Param('unit', ('--unit',), 'flag', default=False, help='RGB and grey are in 0..1 (default: 0..2^bits - 1).'),
-        Param('bits', ('--bits',), 'number', help='Bits per RGB channel (default 8: 0..255, 24-bit colour).'),
+        Param('bits', ('--bits',), 'number', default=8, help='Bits per RGB channel (default 8: 0..255, 24-bit colour).'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('model', 'values', 'to', 'unit', 'bits'), ignore_unknown=True),
     ('theory',): Spec(('theory',), 'theory', (
@@ -307,8 +307,8 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('image', 'top', 'at', 'compare'), ignore_unknown=True),
     ('dither', 'ordered'): Spec(('dither', 'ordered'), 'dither_ordered', (
         Param('image', ('--image', '-i'), 'text', required=True, help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: '10 200; 60 90'."),
-        Param('top', ('--top',), 'number', default=Fraction(255, 1), help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
-        Param('matrix', ('--matrix', '-m'), 'text', default='2', help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
+        Param('top', ('--top',), 'number', default=255, help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
+        Param('matrix', ('--matrix', '-m'), 'text', default=2, help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
         Param('compare', ('--compare',), 'choice', default='>', choices=('>', '>='), help='A pixel is on when its value is > or >= the threshold.'),
         Param('scale', ('--scale',), 'choice', default='raw', choices=('raw', 'centered', 'given'), help="Thresholds: raw (D x TOP / n^2), centered ((D + 1/2) x TOP / n^2), or given (the matrix's entries are thresholds already, in the image's units)."),
         Param('base', ('--base',), 'choice', default='0', choices=('0', '1'), help="The matrix's entries count from 0 or from 1."),
@@ -350,8 +350,8 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('height', (), 'number', required=True, metavar='HEIGHT', help="A glyph's height in pixels."),
         Param('packing', ('--packing',), 'choice', default='rows', choices=('rows', 'columns', 'bits'), help='A glyph in whole bytes per row, per column, or packed bits.'),
         Param('char', ('--char',), 'text', help="A character whose glyph's number and address the font table gives."),
-        Param('first', ('--first',), 'number', help="The code of the font's first glyph (default 0)."),
-        Param('base', ('--base',), 'text', help="The first glyph's byte address, decimal or 0x hexadecimal (default 0)."),
+        Param('first', ('--first',), 'number', default=0, help="The code of the font's first glyph (default 0)."),
+        Param('base', ('--base',), 'text', default=0, help="The first glyph's byte address, decimal or 0x hexadecimal (default 0)."),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('count', 'width', 'height', 'packing', 'char', 'first', 'base'), ignore_unknown=True),
     ('pipeline', 'line'): Spec(('pipeline', 'line'), 'pipeline_line', (
@@ -433,8 +433,8 @@ SPECS: dict[tuple[str, ...], Spec] = {
     ), own=('dpi', 'lpi', 'cell', 'levels', 'count', 'dots'), ignore_unknown=True),
     ('dither', 'lookup'): Spec(('dither', 'lookup'), 'dither_lookup', (
         Param('pixels', (), 'text', nargs=-1, required=True, metavar='X Y ...', help="The pixels' screen positions: x across, y down (row y), in pairs."),
-        Param('matrix', ('--matrix', '-m'), 'text', default='4', help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
-        Param('top', ('--top',), 'number', default=Fraction(255, 1), help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
+        Param('matrix', ('--matrix', '-m'), 'text', default=4, help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
+        Param('top', ('--top',), 'number', default=255, help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
         Param('value', ('--value',), 'number', help="The pixels' intensity: each is on when it passes T."),
         Param('count', ('--count',), 'choice', default='0', choices=('0', '1'), help='Screen positions count from 0 or from 1.'),
         Param('compare', ('--compare',), 'choice', default='>', choices=('>', '>='), help='A pixel is on when its value is > or >= the threshold.'),

@@ -7,7 +7,7 @@ channel, 8 by default: ``0 .. 255``) or, with ``unit``, as numbers in ``[0, 1]``
 normalises to ``r, g, b`` in ``[0, 1]``. CMY, saturation, value and intensity are in ``[0,
 1]``, hue in degrees ``[0, 360)``. A grey level is on the RGB input scale. Values are exact
 fractions where the model is rational; HSI's hue needs an arc cosine and is given to
-:data:`PLACES` decimals of a degree (exact where the angle is 0, 30, 60, 90, ... degrees).
+:data:`.color_models.PLACES` decimals of a degree (exact where the angle is 0, 30, 60, 90, ... degrees).
 """
 
 from __future__ import annotations
@@ -19,18 +19,15 @@ from typing import cast
 from ...algorithms import color as c
 from ...algorithms.color import Value
 from ...core.checks import InputError
-from ...core.numeric import Number, fmt, fmt_short, normalize, paren, round_half_up
-from ...core.records import Quantity, Solution, Table, Walk, heading, rule, worked
+from ...core.numeric import Number, fmt_short, round_half_up
+from ...core.records import Solution, Table, Walk, heading
+from ..methods import method
 from ._shared import int_tex
-
-PLACES = 3
-"""Decimals shown for an irrational value (HSI's hue and what follows from it)."""
+from .color_models import RGB, ColorModel, Rgb, _triple, _Work
 
 MAX_BITS = 16
 """Largest ``--bits`` per channel (48-bit colour)."""
 
-NAMES = {"rgb": "RGB", "cmy": "CMY", "hsv": "HSV", "hsi": "HSI", "grey": "grey"}
-COMPONENTS = {"rgb": 3, "cmy": 3, "hsv": 3, "hsi": 3, "grey": 1}
 ALIASES = {"gray": "grey", "greyscale": "grey", "grayscale": "grey"}
 
 
@@ -41,311 +38,11 @@ def model_name(name: str, param: str = "model") -> str:
     ('hsi', 'grey')
     """
     key = ALIASES.get(name.lower(), name.lower())
-    if key not in NAMES:
+    if key not in c.MODELS:
         raise InputError(
             f"unknown colour model {name!r} (choose from {', '.join(c.MODELS)})", param
         )
     return key
-
-
-# --- numbers as the working writes them --------------------------------------------------------
-
-
-def num(v: Value) -> str:
-    """A value substituted into a formula: a short decimal, else a fraction, else ``PLACES``
-    decimals; negative ones bracketed.
-
-    >>> num(Fraction(1, 5)), num(Fraction(-1, 5)), num(Fraction(2, 3)), num(61.5484)
-    ('0.2', '(-0.2)', '2/3', '61.548')
-    """
-    if isinstance(v, float):
-        return paren(fmt(v, PLACES))
-    return paren(fmt_short(v))
-
-
-def result(v: Value) -> str:
-    """``= value`` at the end of a line: exact, with the decimal where it is a fraction, or
-    ``≈`` and ``PLACES`` decimals for a float.
-
-    >>> result(Fraction(2, 3)), result(Fraction(1, 2)), result(61.5484)
-    ('= 2/3 \\\\approx 0.667', '= 0.5', '\\\\approx 61.548')
-    """
-    if isinstance(v, float):
-        return rf"\approx {fmt(v, PLACES)}"
-    s = fmt_short(v)
-    if "/" in s:
-        return rf"= {s} \approx {fmt(v, PLACES)}"
-    return f"= {s}"
-
-
-def cell(v: Value) -> str:
-    """A table cell: a short decimal, or ``PLACES`` decimals (``~`` for a float)."""
-    if isinstance(v, float):
-        return "~" + fmt(v, PLACES)
-    s = fmt_short(v)
-    return fmt(v, PLACES) if "/" in s else s
-
-
-def exact_cell(v: Value) -> str:
-    """A table cell, exactly (``2/3``), or ``~`` and decimals for a float."""
-    if isinstance(v, float):
-        return "~" + fmt(v, PLACES)
-    return str(normalize(v))
-
-
-def _triple(vs: Sequence[Value], exact: bool = False) -> str:
-    return "(" + ", ".join(exact_cell(v) if exact else cell(v) for v in vs) + ")"
-
-
-def _deg(v: Value) -> str:
-    return num(v) + r"^\circ"
-
-
-def _deg_result(v: Value) -> str:
-    """``= 210°``, ``= 10200/31 ≈ 329.032°`` or ``≈ 61.575°``."""
-    return result(v) + r"^\circ"
-
-
-# --- checks ---------------------------------------------------------------------------------------
-
-
-def _unit(v: Number, what: str) -> Fraction:
-    f = Fraction(v)
-    if not 0 <= f <= 1:
-        raise InputError(f"{what} = {fmt_short(f)} is out of range (0 <= {what} <= 1)", "values")
-    return f
-
-
-def _hue(v: Number) -> Fraction:
-    f = Fraction(v)
-    if not 0 <= f < 360:
-        raise InputError(f"H = {fmt_short(f)} is out of range (0 <= H < 360 degrees)", "values")
-    return f
-
-
-def _level(v: Number, what: str, top: int, unit: bool) -> Fraction:
-    f = Fraction(v)
-    if unit:
-        return _unit(f, what)
-    if f.denominator != 1:
-        raise InputError(
-            f"{what} = {fmt_short(f)} must be an integer 0..{top} (give --unit for values in 0..1)",
-            "values",
-        )
-    if not 0 <= f <= top:
-        raise InputError(
-            f"{what} = {fmt_short(f)} is out of range (0 <= {what} <= {top})", "values"
-        )
-    return f
-
-
-# --- the working, model by model ------------------------------------------------------------------
-
-
-class _Work:
-    """The quantities of one answer, with unique keys."""
-
-    def __init__(self) -> None:
-        self.items: list[Quantity] = []
-
-    def add(self, key: str, value: object, tex: str) -> None:
-        self.items.append(worked(key, value, tex))
-
-    def say(self, key: str, tex: str) -> None:
-        self.items.append(rule(key, tex))
-
-
-def _to_cmy(w: _Work, rgb: tuple[Fraction, Fraction, Fraction]) -> tuple[Fraction, ...]:
-    w.say("cmy", r"\text{RGB} \to \text{CMY (subtractive, the complement of RGB):}")
-    out = c.rgb_to_cmy(*rgb)
-    for name, low, v, o in zip("CMY", "rgb", rgb, out, strict=True):
-        w.add(f"cmy_{name}", o, f"{name} = 1 - {low} = 1 - {num(v)} {result(o)}")
-    return out
-
-
-def _to_hsv(w: _Work, rgb: tuple[Fraction, Fraction, Fraction]) -> tuple[Value, ...]:
-    r, g, b = rgb
-    out = c.rgb_to_hsv(r, g, b)
-    hi, lo = max(rgb), min(rgb)
-    delta = hi - lo
-    w.say("hsv", r"\text{RGB} \to \text{HSV (hexcone, Smith 1978):}")
-    trip = f"{num(r)}, {num(g)}, {num(b)}"
-    w.add("hsv_max", hi, rf"\text{{max}} = \max(r, g, b) = \max({trip}) {result(hi)}")
-    w.add("hsv_min", lo, rf"\text{{min}} = \min(r, g, b) = \min({trip}) {result(lo)}")
-    w.add(
-        "hsv_delta",
-        delta,
-        rf"\Delta = \text{{max}} - \text{{min}} = {num(hi)} - {num(lo)} {result(delta)}",
-    )
-    w.add("hsv_V", out.v, rf"V = \text{{max}} {result(out.v)}")
-    if hi == 0:
-        w.add("hsv_S", out.s, r"S = 0 \quad (\text{max} = 0\text{: black})")
-    else:
-        w.add(
-            "hsv_S",
-            out.s,
-            rf"S = \frac{{\Delta}}{{\text{{max}}}} = \frac{{{num(delta)}}}{{{num(hi)}}} {result(out.s)}",
-        )
-    if not out.largest:
-        w.add(
-            "hsv_H",
-            out.h,
-            r"H = 0^\circ \quad (\Delta = 0\text{: a grey, the hue is undefined; taken as } 0)",
-        )
-        return out.h, out.s, out.v
-    formula, a, b_ = {
-        "R": (r"60 \cdot \frac{g - b}{\Delta}", g, b),
-        "G": (r"120 + 60 \cdot \frac{b - r}{\Delta}", b, r),
-        "B": (r"240 + 60 \cdot \frac{r - g}{\Delta}", r, g),
-    }[out.largest]
-    base = {"R": 0, "G": 120, "B": 240}[out.largest]
-    raw = base + 60 * (a - b_) / delta
-    subst = (
-        f"{base} + " if base else ""
-    ) + rf"60 \cdot \frac{{{num(a)} - {num(b_)}}}{{{num(delta)}}}"
-    wrap = rf" = {num(raw)} + 360" if raw < 0 else ""
-    name = {"R": "r", "G": "g", "B": "b"}[out.largest]
-    w.add(
-        "hsv_H",
-        out.h,
-        rf"H = {formula} = {subst}{wrap} {_deg_result(out.h)} \quad (\text{{{name} is the largest}})",
-    )
-    return out.h, out.s, out.v
-
-
-def _to_hsi(w: _Work, rgb: tuple[Fraction, Fraction, Fraction]) -> tuple[Value, ...]:
-    r, g, b = rgb
-    out = c.rgb_to_hsi(r, g, b)
-    total = r + g + b
-    w.say("hsi", r"\text{RGB} \to \text{HSI (Gonzalez and Woods):}")
-    w.add(
-        "hsi_I",
-        out.i,
-        rf"I = \frac{{r + g + b}}{{3}} = \frac{{{num(r)} + {num(g)} + {num(b)}}}{{3}} {result(out.i)}",
-    )
-    if total == 0:
-        w.add("hsi_S", out.s, r"S = 0 \quad (r + g + b = 0\text{: black})")
-    else:
-        lo = min(rgb)
-        w.add(
-            "hsi_S",
-            out.s,
-            rf"S = 1 - \frac{{3 \min(r, g, b)}}{{r + g + b}} = 1 - \frac{{3 \cdot {num(lo)}}}{{{num(total)}}} {result(out.s)}",
-        )
-    w.add(
-        "hsi_num",
-        out.numerator,
-        rf"\tfrac{{1}}{{2}}[(r - g) + (r - b)] = \tfrac{{1}}{{2}}[({num(r)} - {num(g)}) + ({num(r)} - {num(b)})] {result(out.numerator)}",
-    )
-    w.add(
-        "hsi_den_sq",
-        out.radicand,
-        rf"(r - g)^2 + (r - b)(g - b) = {num(r - g)}^2 + {num(r - b)} \cdot {num(g - b)} {result(out.radicand)}",
-    )
-    if out.theta is None:
-        w.add(
-            "hsi_H",
-            out.h,
-            r"H = 0^\circ \quad (r = g = b\text{: a grey, the hue is undefined; taken as } 0)",
-        )
-        return out.h, out.s, out.i
-    w.add(
-        "hsi_theta",
-        out.theta,
-        rf"\theta = \operatorname{{arccos}}\left(\frac{{{fmt_short(out.numerator)}}}{{\sqrt{{{num(out.radicand)}}}}}\right) "
-        + (
-            f"= {_deg(out.theta)}"
-            if isinstance(out.theta, Fraction)
-            else rf"\approx {_deg(out.theta)}"
-        ),
-    )
-    if b <= g:
-        w.add("hsi_H", out.h, rf"H = \theta = {_deg(out.h)} \quad (b \le g)")
-    else:
-        eq = "=" if isinstance(out.h, Fraction) else r"\approx"
-        w.add(
-            "hsi_H",
-            out.h,
-            rf"H = 360^\circ - \theta = 360 - {num(out.theta)} {eq} {_deg(out.h)} \quad (b > g)",
-        )
-    return out.h, out.s, out.i
-
-
-def _grey(w: _Work, rgb8: tuple[Fraction, ...], scale: str) -> tuple[Fraction, Fraction]:
-    R, G, B = rgb8
-    avg, luma = c.grey_average(R, G, B), c.grey_luma(R, G, B)
-    w.say("grey", rf"\text{{RGB}} \to \text{{grey, on the RGB scale ({scale}):}}")
-    w.add(
-        "grey_average",
-        avg,
-        rf"Y_{{avg}} = \frac{{R + G + B}}{{3}} = \frac{{{num(R)} + {num(G)} + {num(B)}}}{{3}} {result(avg)} \quad (\text{{plain average}})",
-    )
-    w.add(
-        "grey_luma601",
-        luma,
-        rf"Y_{{601}} = 0.299 R + 0.587 G + 0.114 B = 0.299 \cdot {num(R)} + 0.587 \cdot {num(G)} + 0.114 \cdot {num(B)} {result(luma)} \quad (\text{{ITU-R BT.601 luma}})",
-    )
-    return avg, luma
-
-
-def _from_cmy(w: _Work, cmy: tuple[Fraction, ...]) -> tuple[Fraction, Fraction, Fraction]:
-    w.say("to_rgb", r"\text{CMY} \to \text{RGB:}")
-    rgb = c.cmy_to_rgb(*cmy)
-    for low, name, v, o in zip("rgb", "CMY", cmy, rgb, strict=True):
-        w.add(f"rgb_{low}", o, f"{low} = 1 - {name} = 1 - {num(v)} {result(o)}")
-    return rgb
-
-
-def _from_hsv(w: _Work, hsv: tuple[Fraction, ...]) -> tuple[Fraction, Fraction, Fraction]:
-    h, s, v = hsv
-    w.say("to_rgb", r"\text{HSV} \to \text{RGB:}")
-    i = int(h // 60)
-    f = h / 60 - i
-    p, q, t = v * (1 - s), v * (1 - s * f), v * (1 - s * (1 - f))
-    w.add("hsv_i", i, rf"i = \lfloor H / 60 \rfloor = \lfloor {num(h)} / 60 \rfloor = {i}")
-    w.add("hsv_f", f, rf"f = H / 60 - i = {num(h)} / 60 - {i} {result(f)}")
-    w.add("hsv_p", p, rf"p = V(1 - S) = {num(v)}(1 - {num(s)}) {result(p)}")
-    w.add("hsv_q", q, rf"q = V(1 - S f) = {num(v)}(1 - {num(s)} \cdot {num(f)}) {result(q)}")
-    w.add("hsv_t", t, rf"t = V(1 - S(1 - f)) = {num(v)}(1 - {num(s)}(1 - {num(f)})) {result(t)}")
-    rgb = c.hsv_to_rgb(h, s, v)
-    names = ["(V, t, p)", "(q, V, p)", "(p, V, t)", "(p, q, V)", "(t, p, V)", "(V, p, q)"][i]
-    w.add("rgb", rgb, rf"(r, g, b) = {names} = {_triple(rgb)} \quad (\text{{sector }} i = {i})")
-    return rgb
-
-
-def _from_hsi(w: _Work, hsi: tuple[Fraction, ...]) -> tuple[Value, Value, Value]:
-    h, s, i = hsi
-    w.say("to_rgb", r"\text{HSI} \to \text{RGB:}")
-    sector, hh = c.hsi_sector(h)
-    name, first, nxt, low = [("RG", "r", "g", "b"), ("GB", "g", "b", "r"), ("BR", "b", "r", "g")][
-        sector
-    ]
-    shift = f"H' = H - {120 * sector} = {_deg(hh)}" if sector else f"H' = H = {_deg(hh)}"
-    w.say(
-        "hsi_sector",
-        rf"{120 * sector}^\circ \le H < {120 * sector + 120}^\circ\text{{: the {name} sector, }}{shift}",
-    )
-    out = c.hsi_to_rgb(h, s, i)
-    by = dict(zip("rgb", out, strict=True))
-    ratio = c.hsi_ratio(hh)
-    w.add(f"rgb_{low}", by[low], rf"{low} = I(1 - S) = {num(i)}(1 - {num(s)}) {result(by[low])}")
-    w.add(
-        f"rgb_{first}",
-        by[first],
-        rf"{first} = I\left[1 + \frac{{S \cos H'}}{{\cos(60^\circ - H')}}\right] = {num(i)}[1 + {num(s)} \cdot {num(ratio)}] {result(by[first])}",
-    )
-    w.add(
-        f"rgb_{nxt}",
-        by[nxt],
-        rf"{nxt} = 3I - ({low} + {first}) = 3 \cdot {num(i)} - ({num(by[low])} + {num(by[first])}) {result(by[nxt])}",
-    )
-    for v, what in zip(out, "rgb", strict=True):
-        if not -1e-9 <= v <= 1 + 1e-9:
-            raise InputError(
-                f"HSI ({num(h)}, {num(s)}, {num(i)}) lies outside the RGB cube: {what} = {num(v)}",
-                "values",
-            )
-    return out
 
 
 # --- the true-colour breakdown ---------------------------------------------------------------------
@@ -393,46 +90,6 @@ def _breakdown(w: _Work, levels: tuple[int, int, int], bits: int) -> tuple[Table
 
 
 # --- the answer ---------------------------------------------------------------------------------------
-
-
-def _given_rgb(
-    w: _Work, model: str, values: Sequence[Number], top: int, unit: bool
-) -> tuple[list[Quantity], tuple[Value, ...], tuple[int, int, int] | None]:
-    """The given values of ``model``, their RGB in [0, 1] and (from RGB) the channel levels."""
-    if model == "rgb":
-        rgb8 = tuple(_level(v, n, top, unit) for v, n in zip(values, "RGB", strict=True))
-        given = [
-            worked(n, normalize(v), f"{n} = {num(v)}") for n, v in zip("RGB", rgb8, strict=True)
-        ]
-        if unit:
-            return given, rgb8, None
-        rgb = tuple(v / top for v in rgb8)
-        for n, v8, v in zip("RGB", rgb8, rgb, strict=True):
-            w.add(
-                f"rgb_{n.lower()}", v, rf"{n.lower()} = {n} / {top} = {num(v8)} / {top} {result(v)}"
-            )
-        return given, rgb, (int(rgb8[0]), int(rgb8[1]), int(rgb8[2]))
-    if model == "grey":
-        y = _level(values[0], "Y", top, unit)
-        v = y if unit else y / top
-        w.say("to_rgb", r"\text{grey} \to \text{RGB: a grey has } r = g = b")
-        w.add(
-            "rgb",
-            (v, v, v),
-            (r"r = g = b = Y " if unit else rf"r = g = b = Y / {top} = {num(y)} / {top} ")
-            + result(v),
-        )
-        return [worked("Y", normalize(y), f"Y = {num(y)}")], (v, v, v), None
-    names = model.upper()
-    if model == "cmy":
-        parsed = tuple(_unit(Fraction(v), n) for v, n in zip(values, names, strict=True))
-    else:  # hsv, hsi: a hue in degrees, then two values in [0, 1]
-        parsed = (_hue(values[0]), _unit(values[1], names[1]), _unit(values[2], names[2]))
-    given = [worked(n, normalize(v), f"{n} = {num(v)}") for n, v in zip(names, parsed, strict=True)]
-    to_rgb = {"cmy": _from_cmy, "hsv": _from_hsv, "hsi": _from_hsi}[model]
-    return given, to_rgb(w, parsed), None
-
-
 def _rgb_levels(w: _Work, rgb: tuple[Value, ...], top: int) -> tuple[int, int, int]:
     """The channel levels of an RGB in [0, 1] (clamped floats; rounded half up), worked."""
     rgb = tuple(min(1, max(0, v)) if isinstance(v, float) else v for v in rgb)
@@ -450,24 +107,9 @@ def _rgb_levels(w: _Work, rgb: tuple[Value, ...], top: int) -> tuple[int, int, i
     return r8, g8, b8
 
 
-_LABELS = {
-    "cmy": "CMY",
-    "hsv": "HSV (H deg, S, V)",
-    "hsi": "HSI (H deg, S, I)",
-    "grey": "grey (average, BT.601)",
-}
-"""The results table's label of each target model."""
-
-
-def _convert(
-    w: _Work, target: str, rgb: tuple[Value, ...], unit: bool, top: int, scale: str
-) -> tuple[Value, ...]:
-    """``rgb`` in ``target``, worked."""
-    # exact from every model but HSI, whose RGB may be floats (the formulas take either)
-    frgb = cast(tuple[Fraction, Fraction, Fraction], rgb)
-    if target == "grey":
-        return _grey(w, tuple(v if unit else v * top for v in frgb), scale)
-    return {"cmy": _to_cmy, "hsv": _to_hsv, "hsi": _to_hsi}[target](w, frgb)
+def spec(name: str) -> ColorModel:
+    """The model ``name`` (canonical: :func:`model_name`), as its method record names it."""
+    return cast(ColorModel, method("color", name).load("spec"))
 
 
 def _results(rows: list[tuple[str, str, str]]) -> Table:
@@ -482,22 +124,18 @@ def _results(rows: list[tuple[str, str, str]]) -> Table:
     )
 
 
-def _color_notes(scale: str, unit: bool, bits: int, models: Sequence[str]) -> list[str]:
+def _color_notes(
+    scale: str, unit: bool, bits: int, given: ColorModel, targets: Sequence[ColorModel]
+) -> list[str]:
     notes = [
         f"RGB is on the {scale} scale ({'values given as fractions of 1' if unit else f'{bits} bits per channel'}); "
         "the working normalises it to r, g, b in [0, 1]. CMY, S, V and I are in [0, 1], hue in "
         "degrees [0, 360).",
     ]
-    if "hsi" in models:
-        notes.append(
-            f"HSI's hue is an arc cosine: it is given to {PLACES} decimals of a degree (~ in a "
-            "table), exactly where the angle is a multiple of 30 degrees."
-        )
-    if "grey" in models[1:]:
-        notes.append(
-            "Two grey levels: the plain average weighs R, G and B alike; BT.601 luma weighs "
-            "them by how bright they look (green most, blue least)."
-        )
+    for m in map(spec, c.MODELS):
+        noted = m in targets if m.noted == "target" else m in (given, *targets)
+        if m.note and noted and m.note not in notes:
+            notes.append(m.note)
     return notes
 
 
@@ -523,38 +161,39 @@ def color_solution(
     if not 1 <= bits <= MAX_BITS:
         raise InputError(f"bits per channel must be 1..{MAX_BITS}, got {bits}", "bits")
     top = (1 << bits) - 1
-    count = COMPONENTS[model]
+    source, targets_ = spec(model), [spec(t) for t in want]
+    count = source.components
     if len(values) != count:
         raise InputError(
-            f"{NAMES[model]} takes {count} value{'s' * (count > 1)}, got {len(values)}", "values"
+            f"{source.name} takes {count} value{'s' * (count > 1)}, got {len(values)}", "values"
         )
-    scale = "0..1" if unit else f"0..{top}"
-    w = _Work()
-    given, rgb, levels = _given_rgb(w, model, values, top, unit)
-    with_rgb = "rgb" in (model, *want)
+    w = _Work(top, unit)
+    scale = w.scale
+    given, rgb, levels = source.given(w, values)
+    with_rgb = RGB in (source, *targets_)
     if levels is None and with_rgb:
         rgb = tuple(min(1, max(0, v)) if isinstance(v, float) else v for v in rgb)
         levels = _rgb_levels(w, rgb, top)
-    rows: list[tuple[str, str, str]] = [("RGB (r, g, b)", _triple(rgb), _triple(rgb, True))]
+    rows: list[tuple[str, str, str]] = [(RGB.label, _triple(rgb), _triple(rgb, True))]
     data: dict[str, object] = {"model": model, "targets": want, "scale": scale, "rgb": list(rgb)}
-    for target in want:
-        if target not in ("rgb", model):
-            out = _convert(w, target, rgb, unit, top, scale)
-            data[target] = list(out)
-            rows.append((_LABELS[target], _triple(out), _triple(out, True)))
+    for target, name in zip(targets_, want, strict=True):
+        if target not in (RGB, source):
+            out = target.convert(w, cast(Rgb, rgb))
+            data[name] = list(out)
+            rows.append((target.label, _triple(out), _triple(out, True)))
     tables = [_results(rows)]
     if levels is not None and with_rgb:
         breakdown, data["hex"] = _breakdown(w, levels, bits)
         tables.append(breakdown)
-    shown = ", ".join(NAMES[m] for m in want if m != model)
+    shown = ", ".join(m.name for m in targets_ if m != source)
     values_text = ", ".join(fmt_short(Fraction(v)) for v in values)
     return Solution(
         primitive="color",
         algorithm=model,
-        title=f"Colour {NAMES[model]} ({values_text}) to {shown or NAMES[model]}",
+        title=f"Colour {source.name} ({values_text}) to {shown or source.name}",
         given=tuple(given),
         derived=tuple(w.items),
-        notes=tuple(_color_notes(scale, unit, bits, (model, *want))),
+        notes=tuple(_color_notes(scale, unit, bits, source, targets_)),
         walk=Walk(tables=tuple(tables)),
         data=data,
     )

@@ -386,8 +386,8 @@ def _diffusion_notes(
         f"carries {carry}, on when I' {compare} {fmt_short(half)}; outputs 0 and {fmt_short(top)}.",
         "I' is the pixel's value plus the error it received; shares that fall outside the "
         "image are lost.",
-        f"Kernel {kernel}: weights over {d.KERNEL_DIVISORS[kernel]}, summing to 1; "
-        f"{d.KERNEL_SOURCES[kernel]}.",
+        f"Kernel {kernel}: weights over {d.KERNELS[kernel].divisor}, summing to 1; "
+        f"{d.KERNELS[kernel].source}.",
     ]
     if order == "serpentine":
         notes.append("Odd rows are scanned right to left, the kernel mirrored (j - 1 is ahead).")
@@ -419,7 +419,7 @@ def diffusion_solution(
     [[0, 1], [0, 0]]
     """
     img = _checked(image, top)
-    shares = d.KERNELS[d.choice("kernel", kernel)]
+    shares = d.KERNELS[d.choice("kernel", kernel)].shares
     rel = _COMPARE_TEX[d.choice("compare", compare)]
     half = normalize(Fraction(top) / 2)
     derived = [
@@ -433,7 +433,7 @@ def diffusion_solution(
             "kernel",
             r"\text{shares: }"
             + ", ".join(
-                f"{_over(s.weight, d.KERNEL_DIVISORS[kernel])} \\text{{ to }} (i{s.di:+d}, j{s.dj:+d})"
+                f"{_over(s.weight, d.KERNELS[kernel].divisor)} \\text{{ to }} (i{s.di:+d}, j{s.dj:+d})"
                 for s in shares
             ),
         ),

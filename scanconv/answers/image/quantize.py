@@ -228,7 +228,8 @@ def _places(*values: Number) -> int | None:
 def _quantizer_working(q: Quantizer) -> list[Quantity]:
     lo, hi, step = fmt_short(q.lo), fmt_paren(q.hi), fmt_paren(q.step)
     plus1 = " + 1" if q.integer else ""
-    off = r"(k + \tfrac{1}{2})" if q.recon == "midpoint" else "k"
+    o = q.offset
+    off = rf"(k + \tfrac{{{o.numerator}}}{{{o.denominator}}})" if o else "k"
     return [
         worked(
             "step",
@@ -260,7 +261,7 @@ def _quantizer_note(q: Quantizer) -> str:
             f"Inputs are real values in [{fmt_short(q.lo)}, {fmt_short(q.hi)}]; level k takes "
             f"[from, to), the top level also takes {fmt_short(q.hi)}."
         )
-    if q.recon == "midpoint":
+    if q.offset:  # the midpoint
         rule = (
             "the midpoint of the level's cell [LO + kΔ, LO + (k + 1)Δ) (reconstructing at the "
             "lower end would give LO + kΔ)"
