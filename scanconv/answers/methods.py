@@ -399,9 +399,9 @@ _CLIP = "scanconv.answers.process.clip."
 _PROCESS = (
     _plain("polygon", "scan-line", "scan-line polygon fill", "scanconv.answers.process.fill.scanline:polygon_solution",
            _G + "polygon:scanline_fill", raster="scanconv.raster:polygon"),
-    _plain("fill", "boundary", "boundary fill", "scanconv.answers.process.fill.seed:seed_fill_solution",
+    _plain("fill", "boundary", "boundary fill", "scanconv.answers.process.fill.seed:boundary_answer",
            _G + "seedfill:seed_fill"),
-    _plain("fill", "flood", "flood fill", "scanconv.answers.process.fill.seed:seed_fill_solution", _G + "seedfill:seed_fill"),
+    _plain("fill", "flood", "flood fill", "scanconv.answers.process.fill.seed:flood_answer", _G + "seedfill:seed_fill"),
     _plain("antialias", "area", "area sampling", "scanconv.answers.process.antialias.sampling:area_answer",
            _G + "coverage:area_coverage"),
     _plain("antialias", "supersample", "supersampling", "scanconv.answers.process.antialias.sampling:supersample_answer",
