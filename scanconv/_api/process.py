@@ -2,28 +2,29 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from typing import TYPE_CHECKING, Annotated
 
 from ..algorithms.choices import LineAlgorithm, LineAlgorithmName
 from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
 from ..core import lazy
 from ..core.checks import InputError
-from ..core.declare import Arg, Opt
+from ..core.declare import Arg, Opt, words
 from ..display import answers
 from .params import ENDS, NORMALS, VERTICES, VIEWPORT, WINDOW
 from .values import NumberLike, PointsLike, _choice, _flat, _numbers, _rect
+from .words import clip_convex_words, clip_polygon_words, transform_words
+
+POLYGON_CLIP_METHODS = tuple(m.value for m in PolygonClipMethod)
+"""The polygon clipping methods, by name."""
 
 if TYPE_CHECKING:
+    from ..answers import methods
     from ..answers.process import pipeline as answers_pipeline
     from ..answers.process import transform as answers_transform
     from ..answers.process import viewport as answers_viewport
     from ..answers.process.clip import cyrus_beck as answers_cyrus_beck
-    from ..answers.process.clip import midpoint as answers_midpoint_clip
-    from ..answers.process.clip import nll as answers_nll
     from ..answers.process.clip import rectangle as answers_clip
-    from ..answers.process.clip import sutherland_hodgman as answers_clip_polygon
-    from ..answers.process.clip import weiler_atherton as answers_weiler_atherton
     from ..core.choices import (
         ClipEndsName,
         FillRuleName,
@@ -35,20 +36,26 @@ if TYPE_CHECKING:
     )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
+    methods = lazy.module("scanconv.answers.methods")
     answers_clip = lazy.module("scanconv.answers.process.clip.rectangle")
-    answers_clip_polygon = lazy.module("scanconv.answers.process.clip.sutherland_hodgman")
     answers_cyrus_beck = lazy.module("scanconv.answers.process.clip.cyrus_beck")
-    answers_midpoint_clip = lazy.module("scanconv.answers.process.clip.midpoint")
-    answers_nll = lazy.module("scanconv.answers.process.clip.nll")
     answers_pipeline = lazy.module("scanconv.answers.process.pipeline")
     answers_transform = lazy.module("scanconv.answers.process.transform")
     answers_viewport = lazy.module("scanconv.answers.process.viewport")
-    answers_weiler_atherton = lazy.module("scanconv.answers.process.clip.weiler_atherton")
 
 
 @answers
+@words(
+    "The points, then the transformations in the order they are applied.",
+    "X1 Y1 ... --TRANSFORMATION ARGS ...",
+    transform_words,
+)
 def transform(
-    points: PointsLike, transforms: str | Sequence[str], inverse: bool = False
+    points: PointsLike,
+    transforms: str | Sequence[str],
+    inverse: Annotated[
+        bool, Opt("--inverse", help="Also show the inverse of the composite matrix.")
+    ] = False,
 ) -> Solution:
     """The composite of 2D transformations applied to points, in homogeneous coordinates
     (``scanconv transform``).
@@ -213,31 +220,28 @@ def clip_line(
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     rect = _rect(window, "window")
     name = _choice(method, "method")
-    _only(name, {"normals": normals, "ends": ends}, "cyrus-beck")
-    _only(name, {"midpoint": midpoint, "stop": stop}, "midpoint-subdivision")
-    if name == "cyrus-beck":
-        x0, y0, x1_, y1_ = rect
-        corners = [x0, y0, x1_, y0, x1_, y1_, x0, y1_]
-        return answers_cyrus_beck.cyrus_beck_solution(
-            a, b, c, d, corners, normals=normals or "outward", ends=ends or "exact"
-        )
-    if name == "midpoint-subdivision":
-        return answers_midpoint_clip.midpoint_clip_solution(
-            a, b, c, d, list(rect), midpoint=midpoint or "rounded", stop=stop or "length"
-        )
-    if name == "nicholl-lee-nicholl":
-        return answers_nll.nll_solution(a, b, c, d, rect)
-    return answers_clip.clip_line_solution(a, b, c, d, rect, name)
+    given = dict(normals=normals, ends=ends, midpoint=midpoint, stop=stop)
+    conventions = {param: value for param, value in given.items() if value is not None}
+    _only(name, conventions)
+    record = methods.method("clip", answers_clip.check_method(name))
+    return record.load("answer")(a, b, c, d, rect, **conventions)  # type: ignore[no-any-return]
 
 
-def _only(method: str, given: dict[str, str | None], owner: str) -> None:
-    """Refuse a convention given to a method it does not apply to."""
-    for param, value in given.items():
-        if value is not None and method != owner:
-            raise InputError(f"{param} applies to {owner} only, not to {method}", param)
+def _only(name: str, conventions: Iterable[str]) -> None:
+    """Refuse a convention given to a method it does not apply to (its record's
+    ``options``)."""
+    for param in conventions:
+        owners = [m for m in methods.METHODS.values() if m.command == "clip" and param in m.options]
+        if not any(m.name == name for m in owners):
+            raise InputError(f"{param} applies to {owners[0].name} only, not to {name}", param)
 
 
 @answers
+@words(
+    "The segment's end points, then --window-vertices and the convex window's vertices in order.",
+    "X1 Y1 X2 Y2 --window-vertices X Y X Y X Y ...",
+    clip_convex_words,
+)
 def clip_convex(
     x1: NumberLike,
     y1: NumberLike,
@@ -245,8 +249,8 @@ def clip_convex(
     y2: NumberLike,
     window: PointsLike,
     *,
-    normals: NormalsName = "outward",
-    ends: ClipEndsName = "exact",
+    normals: Annotated[NormalsName | None, NORMALS] = None,
+    ends: Annotated[ClipEndsName | None, ENDS] = None,
 ) -> Solution:
     """Cyrus-Beck clipping of a segment against any convex window given by its vertices
     (``scanconv clip convex``).
@@ -257,10 +261,10 @@ def clip_convex(
         The segment's end points P1 and P2, exact numbers.
     window : sequence of (x, y), or flat numbers
         The convex window's vertices, in order.
-    normals : {"outward", "inward"}, default "outward"
-        The edge normals N (inward normals flip the sign of every ``N·D``).
-    ends : {"exact", "truncated"}, default "exact"
-        The clipped end points exact or truncated to integers.
+    normals : {"outward", "inward"}, optional
+        The edge normals N (default outward; inward normals flip the sign of every ``N·D``).
+    ends : {"exact", "truncated"}, optional
+        The clipped end points exact (default) or truncated to integers.
 
     Returns
     -------
@@ -280,15 +284,35 @@ def clip_convex(
     """
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     return answers_cyrus_beck.cyrus_beck_solution(
-        a, b, c, d, _flat(window, "window"), normals=normals, ends=ends
+        a, b, c, d, _flat(window, "window"), normals=normals or "outward", ends=ends or "exact"
     )
 
 
 @answers
+@words(
+    "The polygon's vertices in order; then, for a window of any shape, --window-vertices and "
+    "its vertices in order (convex for Sutherland-Hodgman).",
+    "X1 Y1 X2 Y2 X3 Y3 ... [--window-vertices X Y X Y X Y ...]",
+    clip_polygon_words,
+)
 def clip_polygon(
     vertices: PointsLike,
-    window: Sequence[NumberLike] | PointsLike,
-    method: PolygonClipMethod | PolygonClipMethodName = "sutherland-hodgman",
+    window: Annotated[
+        Sequence[NumberLike] | PointsLike | None,
+        Opt(
+            "--window",
+            "-w",
+            metavar="XMIN YMIN XMAX YMAX",
+            show_default=False,
+            help="A rectangular clipping window in world coordinates (closed: its edges are "
+            "inside); or give --window-vertices after the polygon.",
+            nargs=4,
+        ),
+    ] = None,
+    method: Annotated[
+        PolygonClipMethod | PolygonClipMethodName,
+        Opt("--method", "-m", help="Polygon clipping method."),
+    ] = "sutherland-hodgman",
 ) -> Solution:
     """A polygon clipped against a rectangular window, or a polygon window
     (``scanconv clip polygon``).
@@ -328,30 +352,19 @@ def clip_polygon(
     """
     name = _choice(method, "method")
     flat = _flat(vertices, "vertices")
-    if isinstance(window, str) or not (
+    if window is None:
+        raise InputError("give the window: four numbers, or a polygon's vertices", "window")
+    polygon = isinstance(window, str) or not (
         len(window) == 4 and not isinstance(window[0], tuple | list)
-    ):
-        shape = _flat(window, "window")
-        if name == "weiler-atherton":
-            return answers_weiler_atherton.weiler_atherton_solution(flat, shape)
-        if name != "sutherland-hodgman":
-            raise InputError(
-                f"unknown polygon clipping method {name!r} (sutherland-hodgman, weiler-atherton)",
-                "method",
-            )
-        return answers_clip_polygon.clip_polygon_window_solution(flat, shape)
-    rect = _rect(window, "window")  # type: ignore[arg-type]
-    if name == "weiler-atherton":
-        x0, y0, x1, y1 = rect
-        return answers_weiler_atherton.weiler_atherton_solution(
-            flat, [x0, y0, x1, y0, x1, y1, x0, y1]
-        )
-    if name != "sutherland-hodgman":
+    )
+    shape = _flat(window, "window") if polygon else _rect(window, "window")  # type: ignore[arg-type]
+    if name not in POLYGON_CLIP_METHODS:
         raise InputError(
-            f"unknown polygon clipping method {name!r} (sutherland-hodgman, weiler-atherton)",
+            f"unknown polygon clipping method {name!r} ({', '.join(POLYGON_CLIP_METHODS)})",
             "method",
         )
-    return answers_clip_polygon.clip_polygon_solution(flat, rect)
+    answer = methods.method("clip", name).load("answer")
+    return answer(flat, shape, polygon)  # type: ignore[no-any-return]
 
 
 @answers

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Annotated, Literal
 
 from ..core import lazy
 from ..core.checks import InputError
-from ..core.declare import Arg, Opt
+from ..core.declare import Arg, Opt, words
 from ..display import answers
 from .params import X1, X2, Y1, Y2
 from .values import (
@@ -24,6 +24,7 @@ from .values import (
     _pair,
     _whole,
 )
+from .words import inside_words
 
 if TYPE_CHECKING:
     from ..answers.image import framebuffer as answers_framebuffer
@@ -60,12 +61,32 @@ MAX_GLYPH = 64
 
 
 @answers
+@words(
+    "The polygon's vertices in order, then --points and the points to test.",
+    "X1 Y1 X2 Y2 X3 Y3 ... --points X Y ...",
+    inside_words,
+)
 def inside(
     vertices: PointsLike,
     points: PointsLike,
     *,
-    rule: InsideRuleName = "both",
-    boundary: BoundaryName = "inside",
+    rule: Annotated[
+        InsideRuleName,
+        Opt(
+            "--rule",
+            help="even-odd, nonzero winding, or both.",
+            choices=("both", "even-odd", "nonzero"),
+        ),
+    ] = "both",
+    boundary: Annotated[
+        BoundaryName,
+        Opt(
+            "--boundary",
+            help="A point on the boundary is inside, outside, or as the count says "
+            "(left-bottom: on a left or bottom edge inside, a right or top edge outside).",
+            choices=("inside", "outside", "left-bottom"),
+        ),
+    ] = "inside",
 ) -> Solution:
     """Whether points are inside a polygon (``scanconv inside``), by the even-odd rule, the nonzero
     winding rule or both.

@@ -36,7 +36,7 @@ from itertools import pairwise
 from ..core.checks import InputError, check_count
 from ..core.numeric import Number, normalize, round_half_up
 from ..core.records import Pixel
-from .polygon import Edge, Point, check_polygon, check_rule, edge_table, spans_at
+from .polygon import Edge, Point, check_polygon, check_rule, edge_table, fill_rule, spans_at
 
 MAX_SAMPLES = 16
 """Largest N of N x N supersampling (256 samples per pixel)."""
@@ -171,6 +171,7 @@ def _trapezoids(
 ) -> Iterator[tuple[Number, Number, tuple[Number, Number], tuple[Number, Number]]]:
     """``(y_a, y_b, left, right)`` trapezoids of the filled region: ``left`` and ``right`` are
     ``(x at y_a, x at y_b)``. With ``rows`` the bands also stop at every ``j + 1/2``."""
+    alternates = fill_rule(rule).alternates
     edges, _ = edge_table(vertices)
     ys: set[Number] = {e.y_min for e in edges} | {e.y_max for e in edges} | _crossing_ys(edges)
     if rows:
@@ -185,7 +186,7 @@ def _trapezoids(
         winding, inside_from = 0, None
         for n, e in enumerate(active):
             before = winding
-            winding = (n + 1) % 2 if rule == "even-odd" else winding + e.direction
+            winding = (n + 1) % 2 if alternates else winding + e.direction
             if before == 0 and winding != 0:
                 inside_from = e
             elif before != 0 and winding == 0 and inside_from is not None:

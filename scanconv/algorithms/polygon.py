@@ -51,6 +51,29 @@ Point = tuple[Number, Number]
 RULES = tuple(r.value for r in FillRule)
 """The fill rules: even-odd (alternate) and nonzero winding."""
 
+
+class Rule(NamedTuple):
+    """A fill rule: its name, and whether a scan line's crossings alternate between inside
+    and outside (even-odd: odd crossings are inside) or add up, +1 up and -1 down, to the
+    winding number that is inside where it is not 0 (nonzero)."""
+
+    name: str
+    alternates: bool
+
+
+_RULES = (Rule("even-odd", True), Rule("nonzero", False))
+
+
+def fill_rule(rule: str) -> Rule:
+    """The fill rule named ``rule`` (checked: :func:`check_rule`).
+
+    >>> fill_rule("nonzero").alternates
+    False
+    """
+    check_rule(rule)
+    return next(r for r in _RULES if r.name == rule)
+
+
 MAX_VERTICES = 1000
 """Most vertices of a polygon filled with tables (every row lists the active edges)."""
 
@@ -237,7 +260,7 @@ def _spans(
     active: Sequence[Active], edges: dict[int, Edge], rule: str
 ) -> list[tuple[Number, Number]]:
     """The filled spans of one scan line from its sorted active edges."""
-    if rule == "even-odd":
+    if fill_rule(rule).alternates:
         return [(active[i].x, active[i + 1].x) for i in range(0, len(active) - 1, 2)]
     spans: list[tuple[Number, Number]] = []
     winding = 0

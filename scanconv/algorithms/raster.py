@@ -42,7 +42,7 @@ import operator
 import threading
 from collections.abc import Callable
 from fractions import Fraction
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -244,38 +244,58 @@ def line(
     p = [_exact(v, n) for v, n in ((x1, "x1"), (y1, "y1"), (x2, "x2"), (y2, "y2"))]
     dx, dy = (abs(Fraction(p[i + 2]) - Fraction(p[i])) for i in (0, 1))
     check_pixels(math.ceil(max(dx, dy)) + 2, "x2" if dx >= dy else "y2")
-    if algo == "bresenham":
-        ix1, iy1, ix2, iy2 = (
-            as_int(v, n) for v, n in zip(p, ("x1", "y1", "x2", "y2"), strict=True)
+    variant = next((v for v in _LINES if v.algo == algo), None)
+    if variant is None:
+        raise ValueError(
+            f"unknown line algorithm {algo!r} (choose from {', '.join(LINE_ALGORITHMS)})"
         )
-        sx, sy, _, _, steep, dmaj, dmin, s, _, _ = orient(ix1, iy1, ix2, iy2)
-        smaj, smin = (sy, sx) if steep else (sx, sy)
-        major, minor = _pair(
-            parallel and dmaj + 1 >= PARALLEL_MIN,
-            lambda: _floor_affine(smaj, 1, dmaj + 1),
-            lambda: _floor_affine(
-                Fraction(1, 2), Fraction(dmin, dmaj or 1), dmaj + 1, offset=smin, sign=s
-            ),
-        )
-        return (minor, major) if steep else (major, minor)
-    if algo == "dda":
-        n = dda_steps(*p) + 1
-        xi, yi = dda_increments(*p)
-        half = Fraction(1, 2)
-        xs, ys = _pair(
-            parallel and n >= PARALLEL_MIN,
-            lambda: _floor_affine(p[0] + half, xi, n),
-            lambda: _floor_affine(p[1] + half, yi, n),
-        )
-        if all(isinstance(v, int) for v in p):  # the major coordinate moves 1 per row
-            return xs, ys
-        # fractional end points can round two rows to one pixel, listed once (lines._once)
-        keep = np.ones(n, dtype=bool)
-        keep[1:] = (xs[1:] != xs[:-1]) | (ys[1:] != ys[:-1])
-        return (xs, ys) if keep.all() else (xs[keep], ys[keep])
-    if algo == "basic":
-        return _basic(*p)
-    raise ValueError(f"unknown line algorithm {algo!r} (choose from {', '.join(LINE_ALGORITHMS)})")
+    return variant.pixels(p, parallel)
+
+
+def _bresenham(p: list[Number], parallel: bool) -> Coords:
+    ix1, iy1, ix2, iy2 = (as_int(v, n) for v, n in zip(p, ("x1", "y1", "x2", "y2"), strict=True))
+    sx, sy, _, _, steep, dmaj, dmin, s, _, _ = orient(ix1, iy1, ix2, iy2)
+    smaj, smin = (sy, sx) if steep else (sx, sy)
+    major, minor = _pair(
+        parallel and dmaj + 1 >= PARALLEL_MIN,
+        lambda: _floor_affine(smaj, 1, dmaj + 1),
+        lambda: _floor_affine(
+            Fraction(1, 2), Fraction(dmin, dmaj or 1), dmaj + 1, offset=smin, sign=s
+        ),
+    )
+    return (minor, major) if steep else (major, minor)
+
+
+def _dda(p: list[Number], parallel: bool) -> Coords:
+    n = dda_steps(*p) + 1
+    xi, yi = dda_increments(*p)
+    half = Fraction(1, 2)
+    xs, ys = _pair(
+        parallel and n >= PARALLEL_MIN,
+        lambda: _floor_affine(p[0] + half, xi, n),
+        lambda: _floor_affine(p[1] + half, yi, n),
+    )
+    if all(isinstance(v, int) for v in p):  # the major coordinate moves 1 per row
+        return xs, ys
+    # fractional end points can round two rows to one pixel, listed once (lines._once)
+    keep = np.ones(n, dtype=bool)
+    keep[1:] = (xs[1:] != xs[:-1]) | (ys[1:] != ys[:-1])
+    return (xs, ys) if keep.all() else (xs[keep], ys[keep])
+
+
+class _Line(NamedTuple):
+    """A line algorithm's closed form: its name and its pixels from the exact end points."""
+
+    algo: str
+    pixels: Callable[[list[Number], bool], Coords]
+
+
+_LINES = (
+    _Line("bresenham", _bresenham),
+    _Line("dda", _dda),
+    _Line("basic", lambda p, parallel: _basic(*p)),
+)
+"""The closed form of each of :data:`LINE_ALGORITHMS`."""
 
 
 def _pair(

@@ -39,7 +39,7 @@ import numpy.typing as npt
 
 from ..core.checks import InputError
 from ..core.numeric import COORD_LIMIT
-from .polygon import RULES
+from .polygon import RULES, fill_rule
 
 if TYPE_CHECKING:
     from ..core.choices import FillRuleName
@@ -153,7 +153,7 @@ def polygon(
     cx = -((-num) // dy[edge])  # ceil(x) of each crossing
     order = np.lexsort((cx, line))
     line, cx, d = line[order], cx[order], direction[edge][order]
-    if rule == "even-odd":
+    if fill_rule(rule).alternates:
         on = (np.arange(total) % 2) == 0  # every scan line has an even number of crossings
     else:
         on = np.cumsum(d) != 0

@@ -165,11 +165,25 @@ def _check(method: str, connectivity: int, order: str) -> None:
         raise InputError(f"order must be stack or queue, got {order!r}", "order")
 
 
+class _Test(NamedTuple):
+    """A fill's colour test: whether a cell of colour ``c`` is filled, the seed's colour
+    ``target`` known."""
+
+    method: str
+    fillable: Callable[[int, int], bool]
+
+
+_TESTS = (
+    _Test("boundary", lambda c, target: c not in (BOUNDARY, FILLED)),  # up to the boundary
+    _Test("flood", lambda c, target: c == target),  # the seed's colour replaced
+)
+"""Each of :data:`METHODS`' colour tests."""
+
+
 def _fillable(method: str, target: int) -> Callable[[int], bool]:
-    """The colour test: the seed's colour (flood), or neither boundary nor fill (boundary)."""
-    if method == "flood":
-        return lambda c: c == target
-    return lambda c: c not in (BOUNDARY, FILLED)
+    """The colour test of ``method`` (one of :data:`METHODS`), for the seed's colour."""
+    test = next(t.fillable for t in _TESTS if t.method == method)
+    return lambda c: test(c, target)
 
 
 def _upcoming(todo: deque[Pixel], order: str) -> tuple[Pixel, ...]:

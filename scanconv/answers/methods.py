@@ -118,6 +118,12 @@ class Method(NamedTuple):
     """A command's own record of the method (``module:attribute``), where its answer reads
     more of it than one function: a colour model's name, components and conversions
     (:class:`scanconv.answers.image.color.ColorModel`)."""
+    options: tuple[str, ...] = ()
+    """The command's options that apply to this method alone (``clip/cyrus-beck``: normals,
+    ends): given with another method of the command, they are refused."""
+    stage: str | None = None
+    """A line clipping method's working against a rectangle, ``(p1, p2, window) ->
+    Clipped``: the pipeline's first stage; ``None``: the pipeline does not clip by it."""
 
     def fact(self, name: str) -> str:
         """One of :attr:`facts` (``""`` if the record states none)."""
@@ -395,36 +401,42 @@ _CURVES = (
     ),
 )  # fmt: skip
 
+_CLIP = "scanconv.answers.process.clip."
+
 _PROCESS = (
     _plain("polygon", "scan-line", "scan-line polygon fill", "scanconv.answers.process.fill.scanline:polygon_solution",
            _G + "polygon:scanline_fill", raster="scanconv.raster:polygon"),
-    _plain("fill", "boundary", "boundary fill", "scanconv.answers.process.fill.seed:seed_fill_solution",
+    _plain("fill", "boundary", "boundary fill", "scanconv.answers.process.fill.seed:boundary_answer",
            _G + "seedfill:seed_fill"),
-    _plain("fill", "flood", "flood fill", "scanconv.answers.process.fill.seed:seed_fill_solution", _G + "seedfill:seed_fill"),
-    _plain("antialias", "area", "area sampling", "scanconv.answers.process.antialias.sampling:antialias_solution",
+    _plain("fill", "flood", "flood fill", "scanconv.answers.process.fill.seed:flood_answer", _G + "seedfill:seed_fill"),
+    _plain("antialias", "area", "area sampling", "scanconv.answers.process.antialias.sampling:area_answer",
            _G + "coverage:area_coverage"),
-    _plain("antialias", "supersample", "supersampling", "scanconv.answers.process.antialias.sampling:antialias_solution",
+    _plain("antialias", "supersample", "supersampling", "scanconv.answers.process.antialias.sampling:supersample_answer",
            _G + "coverage:supersample_coverage"),
-    _plain("antialias", "wu", "Xiaolin Wu's anti-aliased line", "scanconv.answers.process.antialias.sampling:antialias_solution",
+    _plain("antialias", "wu", "Xiaolin Wu's anti-aliased line", "scanconv.answers.process.antialias.sampling:wu_answer",
            _G + "wu:wu", raster="scanconv.raster:line_aa"),
     _plain("antialias", "subpixel", "supersampling on a sub-pixel grid (Hearn & Baker)",
-           "scanconv.answers.process.antialias.sampling:antialias_solution", _G + "subpixel:walk"),
+           "scanconv.answers.process.antialias.sampling:subpixel_answer", _G + "subpixel:walk"),
     _plain("clip", "cohen-sutherland", "Cohen-Sutherland line clipping",
-           "scanconv.answers.process.clip.rectangle:clip_line_solution", _G + "clipping:cohen_sutherland"),
-    _plain("clip", "liang-barsky", "Liang-Barsky line clipping", "scanconv.answers.process.clip.rectangle:clip_line_solution",
-           _G + "clipping:liang_barsky"),
+           _CLIP + "rectangle:cohen_sutherland_answer", _G + "clipping:cohen_sutherland")._replace(
+        short="Cohen-Sutherland", stage=_CLIP + "rectangle:cohen_sutherland_clipped"),
+    _plain("clip", "liang-barsky", "Liang-Barsky line clipping", _CLIP + "rectangle:liang_barsky_answer",
+           _G + "clipping:liang_barsky")._replace(
+        short="Liang-Barsky", stage=_CLIP + "rectangle:liang_barsky_clipped"),
     _plain("clip", "cyrus-beck", "Cyrus-Beck line clipping (any convex window)",
-           "scanconv.answers.process.clip.cyrus_beck:cyrus_beck_solution", _G + "cyrus_beck:cyrus_beck",
-           model="CyrusBeckTable"),
+           _CLIP + "cyrus_beck:rectangle_solution", _G + "cyrus_beck:cyrus_beck",
+           model="CyrusBeckTable")._replace(
+        short="Cyrus-Beck", options=("normals", "ends"), stage=_CLIP + "cyrus_beck:rectangle_clipped"),
     _plain("clip", "midpoint-subdivision", "midpoint subdivision line clipping",
-           "scanconv.answers.process.clip.midpoint:midpoint_clip_solution", _G + "midpoint_clip:subdivide",
-           model="MidpointClipTable"),
+           _CLIP + "midpoint:midpoint_clip_solution", _G + "midpoint_clip:subdivide",
+           model="MidpointClipTable")._replace(options=("midpoint", "stop")),
     _plain("clip", "nicholl-lee-nicholl", "Nicholl-Lee-Nicholl line clipping",
-           "scanconv.answers.process.clip.nll:nll_solution", _G + "nll:nicholl_lee_nicholl", model="NLLTable"),
+           _CLIP + "nll:nll_solution", _G + "nll:nicholl_lee_nicholl", model="NLLTable")._replace(
+        short="Nicholl-Lee-Nicholl", stage=_CLIP + "nll:nll_clipped"),
     _plain("clip", "weiler-atherton", "Weiler-Atherton polygon clipping (concave polygons)",
-           "scanconv.answers.process.clip.weiler_atherton:weiler_atherton_solution", _G + "weiler_atherton:weiler_atherton"),
+           _CLIP + "weiler_atherton:polygon_answer", _G + "weiler_atherton:weiler_atherton"),
     _plain("clip", "sutherland-hodgman", "Sutherland-Hodgman polygon clipping",
-           "scanconv.answers.process.clip.sutherland_hodgman:clip_polygon_solution", None,
+           _CLIP + "sutherland_hodgman:polygon_answer", None,
            no_generator="the answer builds its four passes directly"),
     _plain("transform", "composite", "composite 2D transformation",
            "scanconv.answers.process.transform:transform_solution", _G + "transform:compose"),

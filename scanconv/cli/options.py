@@ -24,9 +24,9 @@ import typer
 from typer._click.exceptions import NoSuchOption  # typer vendors click
 from typer._types import TyperChoice
 
+from ..core.checks import looks_like_option
 from ..core.numeric import parse_number
 from ..questions.declared import PICTURE
-from ..questions.words import looks_like_option
 from ..render import Format, formats
 
 #: Commands that take numbers as positional arguments accept negative ones (``-3``) too.

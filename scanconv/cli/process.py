@@ -3,24 +3,13 @@
 
 from __future__ import annotations
 
-from enum import Enum
-from fractions import Fraction
-from typing import Annotated
-
-import typer
-
-from ..algorithms.process_choices import PolygonClipMethod
-from ..core.records import Solution
-from ..questions import commands
 from .application import app, clip_app, pipeline_app
-from .command import answers
 from .declared import command
-from .options import NUMERIC_ARGS, number
 
-Rect = tuple[Fraction, Fraction, Fraction, Fraction]
-
-
-TRANSFORM_HELP = """Compose 2D transformations (homogeneous coordinates, column vectors) and
+command(
+    app,
+    ("transform",),
+    help="""Compose 2D transformations (homogeneous coordinates, column vectors) and
 apply them to the points X1 Y1 X2 Y2 ..., in the order given.
 
 Transformations, composed left to right:
@@ -30,66 +19,8 @@ ANGLE is in degrees (90, -30) or radians (pi/4, 3pi/2, 1.2rad); multiples of 15 
 exact (sqrt(2)/2), other angles are rounded to 6 decimals.
 
 Example: scanconv transform 0 0 4 0 4 3 --rotate 90 --about 2 1 --translate 3 0
-"""
-
-
-class Normals(str, Enum):
-    """Cyrus-Beck: the edges' normals point out of the window or into it."""
-
-    outward = "outward"
-    inward = "inward"
-
-
-class Ends(str, Enum):
-    """Cyrus-Beck: the clipped end points kept exact or truncated to integers."""
-
-    exact = "exact"
-    truncated = "truncated"
-
-
-class Midpoint(str, Enum):
-    """Midpoint subdivision: the midpoints rounded, floored or exact."""
-
-    rounded = "rounded"
-    floor = "floor"
-    exact = "exact"
-
-
-NormalsOpt = Annotated[
-    Normals | None,
-    typer.Option(
-        "--normals",
-        case_sensitive=False,
-        help="cyrus-beck: the edge normals point outward (default) or inward.",
-    ),
-]
-EndsOpt = Annotated[
-    Ends | None,
-    typer.Option(
-        "--ends",
-        case_sensitive=False,
-        help="cyrus-beck: the clipped end points exact (default) or truncated.",
-    ),
-]
-
-
-@app.command(context_settings=NUMERIC_ARGS, help=TRANSFORM_HELP)
-@answers()
-def transform(
-    words: Annotated[
-        list[str],
-        typer.Argument(
-            metavar="X1 Y1 ... --TRANSFORMATION ARGS ...",
-            help="The points, then the transformations in the order they are applied.",
-            show_default=False,
-        ),
-    ],
-    inverse: Annotated[
-        bool,
-        typer.Option("--inverse", help="Also show the inverse of the composite matrix."),
-    ] = False,
-) -> Solution:
-    return commands.transform(words, inverse)
+""",
+)
 
 
 command(
@@ -116,67 +47,29 @@ command(
 )
 
 
-@clip_app.command("convex", context_settings=NUMERIC_ARGS)
-@answers()
-def clip_convex(
-    words: Annotated[
-        list[str],
-        typer.Argument(
-            metavar="X1 Y1 X2 Y2 --window-vertices X Y X Y X Y ...",
-            help="The segment's end points, then --window-vertices and the convex window's "
-            "vertices in order.",
-            show_default=False,
-        ),
-    ],
-    normals: NormalsOpt = None,
-    ends: EndsOpt = None,
-) -> Solution:
-    """Cyrus-Beck: clip the segment against any convex window, with each edge's normal, t,
+command(
+    clip_app,
+    ("clip", "convex"),
+    help="""Cyrus-Beck: clip the segment against any convex window, with each edge's normal, t,
     entering or leaving, and tE, tL.
 
     Example: scanconv clip convex -1 2 9 2 --window-vertices 0 0 8 0 0 8
-    """
-    return commands.clip_convex(words, normals, ends)
+    """,
+)
 
 
-@clip_app.command("polygon", context_settings=NUMERIC_ARGS)
-@answers()
-def clip_polygon(
-    words: Annotated[
-        list[str],
-        typer.Argument(
-            metavar="X1 Y1 X2 Y2 X3 Y3 ... [--window-vertices X Y X Y X Y ...]",
-            help="The polygon's vertices in order; then, for a window of any shape, "
-            "--window-vertices and its vertices in order (convex for Sutherland-Hodgman).",
-            show_default=False,
-        ),
-    ],
-    window: Annotated[
-        Rect | None,
-        typer.Option(
-            "--window",
-            "-w",
-            parser=number,
-            metavar="XMIN YMIN XMAX YMAX",
-            show_default=False,
-            help="A rectangular clipping window in world coordinates (closed: its edges are "
-            "inside); or give --window-vertices after the polygon.",
-        ),
-    ] = None,
-    method: Annotated[
-        PolygonClipMethod,
-        typer.Option("--method", "-m", case_sensitive=False, help="Polygon clipping method."),
-    ] = PolygonClipMethod.sutherland_hodgman,
-) -> Solution:
-    """Clip a polygon against the window edge by edge (left, right, bottom, top; a polygon
+command(
+    clip_app,
+    ("clip", "polygon"),
+    help="""Clip a polygon against the window edge by edge (left, right, bottom, top; a polygon
     window's edges in order): one table per edge, the clipped polygon, and the degenerate
     edges a concave polygon leaves.
 
     Example: scanconv clip polygon 100 150 200 250 300 200 --window 150 150 200 200
 
     Against a triangle: scanconv clip polygon 0 0 4 0 4 4 0 4 --window-vertices 1 -1 6 4 1 4
-    """
-    return commands.clip_polygon(words, window, method)
+    """,
+)
 
 
 command(

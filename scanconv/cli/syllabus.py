@@ -3,34 +3,8 @@
 
 from __future__ import annotations
 
-from enum import Enum
-from typing import Annotated
-
-import typer
-
-from ..core.records import Solution
-from ..questions import commands
 from .application import app, char_app, dither_app
-from .command import answers
 from .declared import command
-from .options import NUMERIC_ARGS, choice
-
-
-class InsideRule(str, Enum):
-    """The inside-outside rules."""
-
-    both = "both"
-    even_odd = "even-odd"
-    nonzero = "nonzero"
-
-
-class Boundary(str, Enum):
-    """What a point on the polygon's boundary is."""
-
-    inside = "inside"
-    outside = "outside"
-    left_bottom = "left-bottom"
-
 
 command(
     dither_app,
@@ -60,34 +34,14 @@ command(
 )
 
 
-@app.command(context_settings=NUMERIC_ARGS)
-@answers()
-def inside(
-    words: Annotated[
-        list[str],
-        typer.Argument(
-            metavar="X1 Y1 X2 Y2 X3 Y3 ... --points X Y ...",
-            help="The polygon's vertices in order, then --points and the points to test.",
-            show_default=False,
-        ),
-    ],
-    rule: Annotated[
-        InsideRule, choice("--rule", help="even-odd, nonzero winding, or both.")
-    ] = InsideRule.both,
-    boundary: Annotated[
-        Boundary,
-        choice(
-            "--boundary",
-            help="A point on the boundary is inside, outside, or as the count says "
-            "(left-bottom: on a left or bottom edge inside, a right or top edge outside).",
-        ),
-    ] = Boundary.inside,
-) -> Solution:
-    """Inside-outside test: each point against each edge, the crossings and the winding number.
+command(
+    app,
+    ("inside",),
+    help="""Inside-outside test: each point against each edge, the crossings and the winding number.
 
     Example: scanconv inside 0 0 6 0 6 6 3 2 0 6 --points 3 1 3 4
-    """
-    return commands.inside(words, rule, boundary)
+    """,
+)
 
 
 # --- declared by their library functions (scanconv._api.dither, scanconv._api.syllabus) ----

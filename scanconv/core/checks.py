@@ -18,6 +18,18 @@ class InputError(ValueError):
         """The parameter's name in the library's signature (``None``: no single one)."""
 
 
+def looks_like_option(text: str) -> bool:
+    """``-x``, ``--bogus``: an option name where a number was expected (``-3``, ``-.5`` and
+    ``-inf`` are values, the last refused as not finite)."""
+    s = text.strip()
+    return (
+        s.startswith("-")
+        and not s[1:2].isdigit()
+        and s[1:2] != "."
+        and s.lstrip("-").lower() not in ("nan", "inf", "infinity")
+    )
+
+
 def check_integer(
     value: Number, what: str, *, negative: bool = True, param: str | None = None
 ) -> int:

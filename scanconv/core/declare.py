@@ -8,7 +8,9 @@ parser's declaration, the question language (:mod:`scanconv.questions.grammar`) 
 grammar, and the site into its forms; the default is the function's, stated once.
 
 :func:`declared` reads a function's declaration: each parameter's :class:`Declared` record,
-with its kind (how a word becomes its value) worked out from its type.
+with its kind (how a word becomes its value) worked out from its type. A command whose first
+argument is a free list of words (``transform``'s points, then its transformations) declares it
+with :func:`words`: the function's own reader turns the words into its arguments.
 
 >>> from scanconv._api.shapes import ellipse
 >>> [(d.name, d.kind, d.nargs) for d in declared(ellipse)][:3]
@@ -95,9 +97,52 @@ class Opt:
         return tuple(n.split("/")[1] for n in self.names if "/" in n)
 
 
+WORDS = "__words__"
+"""The attribute that holds a function's :class:`Words` (set by :func:`words`)."""
+
+
+class Words:
+    """A command's first argument, every word left (numbers, and flags only its reader
+    knows: ``--points``, ``--rotate``), that the library function reads itself: its help, its
+    name in messages, and ``read``, the function of the words and the command's other
+    arguments that gives the library function's arguments. The command names it ``words``."""
+
+    __slots__ = ("help", "metavar", "read")
+
+    def __init__(
+        self,
+        help: str,
+        metavar: str,
+        read: Callable[[Sequence[str], dict[str, Any]], dict[str, Any]],
+    ) -> None:
+        self.help, self.metavar, self.read = help, metavar, read
+
+
+def words(
+    help: str, metavar: str, read: Callable[[Sequence[str], dict[str, Any]], dict[str, Any]]
+) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """Declare that a library function's command takes a free list of words first, read by
+    ``read`` (:class:`Words`); the function's parameters it fills carry no declaration.
+
+    >>> @words("The numbers.", "X ...", lambda ws, given: {"xs": [int(w) for w in ws], **given})
+    ... def total(xs, twice: Annotated[bool, Opt("--twice", help="Twice.")] = False):
+    ...     return sum(xs) * (2 if twice else 1)
+    >>> [(d.name, d.kind, d.nargs, d.required) for d in declared(total)]
+    [('words', 'text', -1, True), ('twice', 'flag', 1, False)]
+    >>> total(**getattr(total, WORDS).read(["1", "2"], {"twice": True}))
+    6
+    """
+
+    def declare(fn: Callable[..., Any]) -> Callable[..., Any]:
+        setattr(fn, WORDS, Words(help, metavar, read))
+        return fn
+
+    return declare
+
+
 class Declared:
     """One parameter of a command, as its library function declares it: its ``name``, its
-    ``meta`` (:class:`Arg` or :class:`Opt`), its ``kind`` (one of :data:`KINDS`), ``nargs``
+    ``meta`` (:class:`Arg` or :class:`Opt`; a :class:`Words` list an :class:`Arg`), its ``kind`` (one of :data:`KINDS`), ``nargs``
     (the words it takes; -1: all that are left), ``choices`` (a choice's enum, or its texts),
     ``optional`` (whether ``None`` is a value: the library's default for it) and ``default``
     (the function's; ``inspect.Parameter.empty``: required; a ``*values`` parameter takes
@@ -205,6 +250,10 @@ def declared(fn: Callable[..., Any]) -> tuple[Declared, ...]:
     namespace = fn.__globals__
     written = getattr(fn, DECLARATION, fn.__annotations__)
     out = []
+    said = getattr(fn, WORDS, None)
+    if said is not None:  # the first argument: every word left, read by the function
+        listed = Arg(said.help, said.metavar)
+        out.append(Declared("words", listed, "text", -1, None, False, inspect.Parameter.empty))
     for name, p in inspect.signature(fn).parameters.items():
         hint = _evaluate(written.get(name, p.annotation), namespace)
         if get_origin(hint) is not Annotated:

@@ -12,11 +12,15 @@ from __future__ import annotations
 
 import functools
 import importlib
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 if TYPE_CHECKING:
     from ..core.declare import Declared
+
+from ..core.checks import InputError
+from ..core.declare import WORDS, Words
+from .words import UsageError
 
 NOT_QUESTIONS = ("check", "exam", "mcp", "practice", "sheet", "site")
 """Commands that write documents or mark: never a question."""
@@ -89,6 +93,8 @@ class Command(NamedTuple):
         """The function that answers: the public one, ``scanconv._api.NAME`` (the same
         function, looked up by its public name each time)."""
         fn = getattr(importlib.import_module("scanconv._api"), self.api.rpartition(".")[2])
+        reads = getattr(fn, WORDS, None)  # a free word list first (core.declare.words)
+        fn = fn if reads is None else _reading(fn, reads)
         fn = functools.partial(fn, **dict(self.given)) if self.given else fn
         if not self.spread:
             return fn
@@ -99,6 +105,20 @@ class Command(NamedTuple):
             return fn(*head, *arguments.pop(star), **arguments)
 
         return spread
+
+
+def _reading(fn: Callable[..., Any], reads: Words) -> Callable[..., Any]:
+    """``fn`` called with a command's arguments, its words read by the function's reader
+    first: words that do not fit are a :class:`~.words.UsageError`, as the parser's are."""
+
+    def call(words: Sequence[str], **given: Any) -> Any:
+        try:
+            arguments = reads.read(words, given)
+        except InputError as err:
+            raise UsageError(str(err), err.param) from None
+        return fn(**arguments)
+
+    return call
 
 
 _ALL = (
@@ -112,8 +132,11 @@ _ALL = (
     Command(("parametric", "parabola"), "parametric.parametric_parabola", figures=True),
     Command(("parametric", "line"), "parametric.parametric_line", figures=True),
     Command(("parametric", "custom"), "parametric.parametric_custom", figures=True),
+    Command(("transform",), "process.transform"),
     Command(("viewport",), "process.viewport"),
     Command(("clip", "line"), "process.clip_line"),
+    Command(("clip", "convex"), "process.clip_convex"),
+    Command(("clip", "polygon"), "process.clip_polygon"),
     Command(("pipeline", "line"), "process.pipeline_line"),
     Command(("pipeline", "polygon"), "process.pipeline_polygon"),
     Command(("polygon",), "areas.polygon", figures=True),
@@ -132,6 +155,7 @@ _ALL = (
         origin=False,
         name="dither_diffusion",
     ),
+    Command(("inside",), "syllabus.inside"),
     Command(("framebuffer",), "syllabus.framebuffer", grid=False),
     Command(("linestyle",), "syllabus.line_style", name="line_style"),
     Command(("thickline",), "syllabus.thick_line", name="thick_line"),

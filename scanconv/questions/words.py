@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from fractions import Fraction
 
-from ..core.checks import InputError
+from ..core.checks import InputError, looks_like_option
 from ..core.numeric import parse_number
 
 MINUS = "\u2212"
@@ -88,18 +88,6 @@ def usage_message(message: str) -> str:
         if close:
             message = message.rstrip(".") + f"; did you mean '{close[0]}'?"
     return message
-
-
-def looks_like_option(text: str) -> bool:
-    """``-x``, ``--bogus``: an option name where a number was expected (``-3``, ``-.5`` and
-    ``-inf`` are values, the last refused as not finite)."""
-    s = text.strip()
-    return (
-        s.startswith("-")
-        and not s[1:2].isdigit()
-        and s[1:2] != "."
-        and s.lstrip("-").lower() not in ("nan", "inf", "infinity")
-    )
 
 
 def no_such_option(name: str, possibilities: list[str] | None = None) -> UsageError:

@@ -147,7 +147,7 @@ def line_style_solution(
             marks_label="skipped pixel",
             ideal=(IdealLine(*ends),),
         ),
-        data={"mask": list(m.bits), "repeat": m.repeat, "bits": bits},
+        data=dict(mask=list(m.bits), repeat=m.repeat, bits=bits),
     )
 
 
@@ -215,5 +215,5 @@ def thick_line_solution(
             steps=rows,
         ),
         plot=Plot(pixels=pixels, bbox=bbox, figures=figures, ideal=(IdealLine(*ends),)),
-        data={"width": width, "brush": brush},
+        data=dict(width=width, brush=brush),
     )

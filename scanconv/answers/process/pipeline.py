@@ -29,9 +29,10 @@ from ...core.records import (
     Walk,
     step_getter,
 )
+from .. import methods
 from ..primitives.line import line_solution
 from ._shared import check_rect, fits, point_quantity, pt, pt_approx, rect_quantity, rect_text
-from .clip.rectangle import METHOD_NAMES, check_method, clip_line_parts
+from .clip.rectangle import check_method
 from .clip.sutherland_hodgman import check_vertices, polygon_parts
 from .viewport import mapping_table, scale_parts
 
@@ -116,9 +117,11 @@ def _scan_stage(
 ) -> Solution:
     """Stage 4: the line between the rounded end points (its working and step table added)."""
     (a, b), (c, d) = rounded
-    if algo == "wu":
-        raise InputError("the pipeline scan converts with bresenham, dda or basic, not wu", "algo")
     line = line_solution(algo, a, b, c, d)
+    if line.plot.shades is not None:  # grey levels: the frame buffer's pixels are on or off
+        raise InputError(
+            f"the pipeline scan converts with bresenham, dda or basic, not {algo}", "algo"
+        )
     derived.append(_stage(f"4. scan convert ({line.title})"))
     derived += [q._replace(key=f"line_{q.key}") for q in line.derived]
     if line.columns:
@@ -212,8 +215,9 @@ def pipeline_line(
     v = check_rect(viewport, "viewport", "viewport")
     _check_line_method(algo, clip)
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
-    derived = [_stage(f"1. clip in world coordinates ({METHOD_NAMES[clip]})")]
-    clip_work, clip_tables, seg = clip_line_parts(p1, p2, w, clip)
+    record = methods.method("clip", clip)
+    derived = [_stage(f"1. clip in world coordinates ({record.short})")]
+    clip_work, clip_tables, seg = record.load("stage")(p1, p2, w)
     derived += clip_work
     tables = [Table(f"Stage 1, clipping: {t.title}", t.columns, t.rows) for t in clip_tables]
     notes = list(_LINE_NOTES)

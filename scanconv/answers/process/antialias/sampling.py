@@ -5,7 +5,7 @@ intensity table and a shaded picture)."""
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, NamedTuple
 
@@ -34,11 +34,87 @@ from ._shared import pixel_box as _bbox
 from .wu import wu_solution
 
 if TYPE_CHECKING:
+    from ... import methods
     from . import subpixel
 else:
+    methods = lazy.module("scanconv.answers.methods")
     subpixel = lazy.module("scanconv.answers.process.antialias.subpixel")
 
-__all__ = ["antialias_solution", "wu_solution"]
+__all__ = ["Antialiased", "antialias_solution", "wu_solution"]
+
+
+class Antialiased(NamedTuple):
+    """An anti-aliasing question, as each method's answer (its record's ``answer``) takes it:
+    the shape and its numbers, the levels (checked), and the conventions, ``None`` where not
+    given."""
+
+    shape: str
+    params: Sequence[Number]
+    levels: int
+    samples: int | None = None
+    rule_name: str = "even-odd"
+    ends: str | None = None
+    width: Number = 1
+    across: str = "minor"
+    subgrid: str | None = None
+    divide: str | None = None
+
+
+class _Sampler(NamedTuple):
+    """How area sampling or supersampling finds a pixel's intensity: its name in the answer,
+    the samples a side (1: the area itself), whether the values are counts of samples (exact
+    whatever the shape) or areas, and the coverage of a polygon and of a circle's ring."""
+
+    method: str
+    name: str
+    n: int
+    counts: bool
+    coverage: Callable[
+        [Sequence[tuple[Number, Number]], str], tuple[dict[Pixel, Any], Number | None]
+    ]
+    ring: Callable[[int, int, int], dict[Pixel, Any]]
+    ring_notes: tuple[str, ...]
+    rules: tuple[Quantity, ...]
+
+
+def _area() -> _Sampler:
+    def coverage(
+        pts: Sequence[tuple[Number, Number]], rule_name: str
+    ) -> tuple[dict[Pixel, Any], Number | None]:
+        return dict(cov.area_coverage(pts, rule_name)), cov.region_area(pts, rule_name)
+
+    intensity = rule(
+        "intensity",
+        r"I(i, j) = \text{area of the shape inside } [i - 1/2, i + 1/2] \times [j - 1/2, j + 1/2]",
+    )
+    ring_note = (
+        "A circle's covered areas involve arcsin: they are computed in floating point "
+        "from the closed form (the ring's total is π((r + 1/2)² - (r - 1/2)²) = 2π·r)."
+    )
+    return _Sampler(
+        "area", "Unweighted area sampling", 1, False, coverage,
+        lambda r, xc, yc: dict(cov.ring_area(r, xc, yc)), (ring_note,), (intensity,),
+    )  # fmt: skip
+
+
+def _supersample(n: int) -> _Sampler:
+    def coverage(
+        pts: Sequence[tuple[Number, Number]], rule_name: str
+    ) -> tuple[dict[Pixel, Any], Number | None]:
+        return dict(cov.supersample_coverage(pts, n, rule_name)), None
+
+    rules = (
+        rule(
+            "samples",
+            f"{n} \\times {n} = {n * n} \\text{{ samples per pixel, at }} (i - 1/2 + (2a + 1)/{2 * n},\\ "
+            f"j - 1/2 + (2b + 1)/{2 * n}),\\ a, b = 0 \\ldots {n - 1}",
+        ),
+        rule("intensity", f"I = \\text{{samples inside}} / {n * n}"),
+    )
+    return _Sampler(
+        "supersample", f"Supersampling {n} x {n}", n, True, coverage,
+        lambda r, xc, yc: dict(cov.ring_supersample(r, n, xc, yc)), (), rules,
+    )  # fmt: skip
 
 
 class _Region(NamedTuple):
@@ -59,16 +135,8 @@ def _line_params(params: Sequence[Number]) -> tuple[Number, Number, Number, Numb
     return x1, y1, x2, y2
 
 
-def _coverage(
-    pts: Sequence[tuple[Number, Number]], method: str, n: int, rule_name: str
-) -> tuple[dict[Pixel, Any], Number | None]:
-    if method == "area":
-        return dict(cov.area_coverage(pts, rule_name)), cov.region_area(pts, rule_name)
-    return dict(cov.supersample_coverage(pts, n, rule_name)), None
-
-
 def _line_region(
-    params: Sequence[Number], method: str, n: int, rule_name: str, width: Number, across: str
+    params: Sequence[Number], sampler: _Sampler, rule_name: str, width: Number, across: str
 ) -> _Region:
     x1, y1, x2, y2 = _line_params(params)
     pts = cov.line_strip(x1, y1, x2, y2, width, across)
@@ -128,8 +196,8 @@ def _line_region(
     title = f"line ({fmt_short(x1)}, {fmt_short(y1)}) to ({fmt_short(x2)}, {fmt_short(y2)})"
     if width != 1:
         title += f", width {fmt_short(width)}"
-    values, exact = _coverage(pts, method, n, rule_name)
-    if not exact_length and method == "area":  # samples are counted exactly either way
+    values, exact = sampler.coverage(pts, rule_name)
+    if not exact_length and not sampler.counts:  # samples are counted exactly either way
         values, exact = {p: float(v) for p, v in values.items()}, None
     return _Region(
         title, values, exact, strip, [f"{named}: {note[0].lower()}{note[1:]}"],
@@ -137,15 +205,15 @@ def _line_region(
     )  # fmt: skip
 
 
-def _polygon_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
+def _polygon_region(params: Sequence[Number], sampler: _Sampler, rule_name: str) -> _Region:
     pts, _ = check_polygon(vertices_from_coords(params))
     ideal = (Polyline([(float(x), float(y)) for x, y in (*pts, pts[0])], "polygon"),)
-    values, exact = _coverage(pts, method, n, rule_name)
+    values, exact = sampler.coverage(pts, rule_name)
     title = f"polygon of {len(pts)} vertices ({rule_name} rule)"
     return _Region(title, values, exact, [], [], ideal)
 
 
-def _circle_region(params: Sequence[Number], method: str, n: int, rule_name: str) -> _Region:
+def _circle_region(params: Sequence[Number], sampler: _Sampler, rule_name: str) -> _Region:
     if len(params) not in (1, 3):
         raise InputError(f"a circle needs r [xc yc], got {len(params)} numbers", "circle")
     r = check_integer(params[0], "radius", negative=False)
@@ -158,39 +226,13 @@ def _circle_region(params: Sequence[Number], method: str, n: int, rule_name: str
         "ring",
         f"\\text{{ring: }} {r} - 1/2 \\le d \\le {r} + 1/2 \\text{{ around }} ({xc}, {yc})",
     )
-    notes = []
-    values: dict[Pixel, Any]
-    if method == "area":
-        values = dict(cov.ring_area(r, xc, yc))
-        notes.append(
-            "A circle's covered areas involve arcsin: they are computed in floating point "
-            "from the closed form (the ring's total is π((r + 1/2)² - (r - 1/2)²) = 2π·r)."
-        )
-    else:
-        values = dict(cov.ring_supersample(r, n, xc, yc))
+    values = sampler.ring(r, xc, yc)
+    notes = list(sampler.ring_notes)
     title = f"circle r = {r}, centre ({xc}, {yc}), one pixel wide"
     return _Region(title, values, None, [ring], notes, (IdealCircle(xc, yc, r),))
 
 
 _REGIONS = {"polygon": _polygon_region, "circle": _circle_region}
-
-
-def _sampling_rules(method: str, n: int) -> list[Quantity]:
-    if method == "area":
-        return [
-            rule(
-                "intensity",
-                r"I(i, j) = \text{area of the shape inside } [i - 1/2, i + 1/2] \times [j - 1/2, j + 1/2]",
-            )
-        ]
-    return [
-        rule(
-            "samples",
-            f"{n} \\times {n} = {n * n} \\text{{ samples per pixel, at }} (i - 1/2 + (2a + 1)/{2 * n},\\ "
-            f"j - 1/2 + (2b + 1)/{2 * n}),\\ a, b = 0 \\ldots {n - 1}",
-        ),
-        rule("intensity", f"I = \\text{{samples inside}} / {n * n}"),
-    ]
 
 
 def _total(values: dict[Pixel, Any], exact_total: Number | None) -> Quantity:
@@ -229,60 +271,74 @@ def _intensity_table(
     )
 
 
-def _line_method(
-    shape: str, params: Sequence[Number], method: str, samples: int | None, L: int,
-    ends: str | None, width: Number, across: str, subgrid: str | None, divide: str | None,
-) -> Solution | None:  # fmt: skip
-    """The answer of a line-only method (``subpixel``, ``wu``), else ``None``; a convention
-    given to a method it is not of is refused by name."""
-    if method == "subpixel":
-        if shape != "line":
-            raise InputError(f"subpixel supersamples lines only, not a {shape}", "method")
-        if ends is not None or (width, across) != (1, "minor"):
-            raise InputError(
-                "the sub-pixel line is Bresenham's: no ends, width or across", "method"
-            )
-        return subpixel.subpixel_solution(
-            *_line_params(params),
-            n=3 if samples is None else samples,
-            levels=L,
-            subgrid=subgrid or "span",
-            divide=divide or "n",
-        )
-    for name, value in (("divide", divide), ("subgrid", subgrid)):
+def _no_subpixel_conventions(q: Antialiased, method: str) -> None:
+    for name, value in (("divide", q.divide), ("subgrid", q.subgrid)):
         if value is not None:
             raise InputError(
                 f"the {name} convention is the subpixel method's, not {method}'s", name
             )
-    if method == "wu":
-        if shape != "line":
-            raise InputError(f"wu draws lines only, not a {shape}", "method")
-        if (width, across) != (1, "minor"):
-            raise InputError("Wu's line is one pixel wide: no width or across convention", "width")
-        return wu_solution(*_line_params(params), levels=L, ends=ends or "full")
-    if ends is not None:
+
+
+def subpixel_answer(q: Antialiased) -> Solution:
+    """Hearn & Baker's supersampling of a line: Bresenham on the sub-pixel grid."""
+    if q.shape != "line":
+        raise InputError(f"subpixel supersamples lines only, not a {q.shape}", "method")
+    if q.ends is not None or (q.width, q.across) != (1, "minor"):
+        raise InputError("the sub-pixel line is Bresenham's: no ends, width or across", "method")
+    return subpixel.subpixel_solution(
+        *_line_params(q.params),
+        n=3 if q.samples is None else q.samples,
+        levels=q.levels,
+        subgrid=q.subgrid or "span",
+        divide=q.divide or "n",
+    )
+
+
+def wu_answer(q: Antialiased) -> Solution:
+    """Xiaolin Wu's line (:func:`wu_solution`, with its ``ends`` convention)."""
+    _no_subpixel_conventions(q, "wu")
+    if q.shape != "line":
+        raise InputError(f"wu draws lines only, not a {q.shape}", "method")
+    if (q.width, q.across) != (1, "minor"):
+        raise InputError("Wu's line is one pixel wide: no width or across convention", "width")
+    return wu_solution(*_line_params(q.params), levels=q.levels, ends=q.ends or "full")
+
+
+def area_answer(q: Antialiased) -> Solution:
+    """Unweighted area sampling: each pixel's intensity the area of the shape in it."""
+    _sampling_conventions(q, "area")
+    return _sampled(q, _area())
+
+
+def supersample_answer(q: Antialiased) -> Solution:
+    """``samples x samples`` supersampling (4 by default): the samples inside, counted."""
+    _sampling_conventions(q, "supersample")
+    return _sampled(q, _supersample(cov.check_samples(4 if q.samples is None else q.samples)))
+
+
+def _sampling_conventions(q: Antialiased, method: str) -> None:
+    """Refuse the line-only methods' conventions and an unknown ``across``."""
+    _no_subpixel_conventions(q, method)
+    if q.ends is not None:
         raise InputError(f"the ends convention is Wu's line's, not {method}'s", "ends")
-    if across not in cov.ACROSS:
+    if q.across not in cov.ACROSS:
         raise InputError(
-            f"unknown across {across!r} (choose from {', '.join(cov.ACROSS)})", "across"
+            f"unknown across {q.across!r} (choose from {', '.join(cov.ACROSS)})", "across"
         )
-    return None  # fmt: skip
 
 
-def _region(
-    shape: str, params: Sequence[Number], method: str, n: int, rule_name: str, width: Number,
-    across: str,
-) -> _Region:  # fmt: skip
+def _region(q: Antialiased, sampler: _Sampler) -> _Region:
     """The shape to sample; a width and its convention only for a line."""
+    shape = q.shape
     if shape not in ("line", *_REGIONS):
         raise InputError(f"unknown shape {shape!r} (choose from line, circle, polygon)", "shape")
     if shape == "line":
-        return _line_region(params, method, n, rule_name, width, across)
-    if (width, across) != (1, "minor"):
+        return _line_region(q.params, sampler, q.rule_name, q.width, q.across)
+    if (q.width, q.across) != (1, "minor"):
         raise InputError(
             f"a width and its across convention are a line's, not a {shape}'s", "width"
         )
-    return _REGIONS[shape](params, method, n, rule_name)
+    return _REGIONS[shape](q.params, sampler, q.rule_name)
 
 
 def antialias_solution(
@@ -304,30 +360,29 @@ def antialias_solution(
     ``method="wu"``: Wu's line (:func:`wu_solution`, with its ``ends`` convention);
     ``method="subpixel"``: Hearn & Baker's supersampling of a line, Bresenham on the
     ``samples x samples`` sub-pixel grid (3 by default; ``subgrid`` convention). ``samples``
-    defaults to 4 for ``supersample``.
+    defaults to 4 for ``supersample``. Each method's answer is its record's.
 
     >>> sol = antialias_solution("polygon", [0, 0, 2, 0, 2, 1, 0, 1])
     >>> [q.text for q in sol.derived][-2]
     'sum of I = 2 = the exact area of the shape'
     """
     L = check_levels(levels)
-    line_only = _line_method(
-        shape, params, method, samples, L, ends, width, across, subgrid, divide
-    )
-    if line_only is not None:
-        return line_only
-    samples = 4 if samples is None else samples
-    if method not in ("area", "supersample"):
-        raise InputError(
-            f"unknown method {method!r} (choose from area, supersample, wu, subpixel)", "method"
-        )
-    n = cov.check_samples(samples) if method == "supersample" else 1
-    check_rule(rule_name)
-    region = _region(shape, params, method, n, rule_name, width, across)
+    names = methods.methods_of("antialias")
+    if method not in names:
+        raise InputError(f"unknown method {method!r} (choose from {', '.join(names)})", "method")
+    q = Antialiased(shape, params, L, samples, rule_name, ends, width, across, subgrid, divide)
+    return methods.method("antialias", method).load("answer")(q)  # type: ignore[no-any-return]
+
+
+def _sampled(q: Antialiased, sampler: _Sampler) -> Solution:
+    """The answer of area sampling or supersampling: the intensity table and the picture."""
+    shape, L, width = q.shape, q.levels, q.width
+    check_rule(q.rule_name)
+    region = _region(q, sampler)
     values, title = region.values, region.title
-    derived = [*region.derived, *_sampling_rules(method, n)]
+    derived = [*region.derived, *sampler.rules]
     notes = list(region.notes)
-    if method != "area" and shape != "circle":
+    if sampler.counts and shape != "circle":
         notes.append(
             "A sample is inside by the scan-line fill's rules (half-open spans and edges)."
         )
@@ -336,7 +391,7 @@ def antialias_solution(
     levels_of = {p: cov.quantize(v, L) for p, v in values.items()}
     order = list(values)
     picture = _picture({p: lv for p, lv in levels_of.items() if lv}, L)
-    name = "Unweighted area sampling" if method == "area" else f"Supersampling {n} x {n}"
+    name, method = sampler.name, sampler.method
     drawn = title.split(", width ")[0]  # the width is given on its own (a line of print)
     sol = Solution(
         primitive=shape,
@@ -364,5 +419,5 @@ def antialias_solution(
         ),
     )
     if shape == "line":
-        sol.data = {**sol.data, "conventions": {"across": across}, "width": width}
+        sol.data = {**sol.data, "conventions": {"across": q.across}, "width": width}
     return sol

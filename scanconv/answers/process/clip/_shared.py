@@ -5,12 +5,14 @@ or its rejection."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from ....algorithms.clipping import Point, Rect
-from ....core.numeric import fmt_short
+from ....core.numeric import Number, fmt_short
 from ....core.records import Quantity
 from .._shared import pt, pt_approx
 
-__all__ = ["clipped_quantity", "code_reason"]
+__all__ = ["clipped_quantity", "code_reason", "corners"]
 
 
 def code_reason(p: Point, w: Rect) -> str:
@@ -43,3 +45,14 @@ def clipped_quantity(seg: tuple[Point, Point] | None) -> Quantity:
         f"clipped segment: {pt_approx(seg[0])} to {pt_approx(seg[1])}",
         f"\\text{{clipped segment: }} {pt(seg[0])} \\text{{ to }} {pt(seg[1])}",
     )
+
+
+def corners(w: Sequence[Number]) -> list[Point]:
+    """The corners of the rectangle ``(xmin, ymin, xmax, ymax)``, counter-clockwise from
+    ``(xmin, ymin)``: the rectangle as a polygon window.
+
+    >>> corners((0, 1, 4, 3))
+    [(0, 1), (4, 1), (4, 3), (0, 3)]
+    """
+    x0, y0, x1, y1 = w
+    return [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]

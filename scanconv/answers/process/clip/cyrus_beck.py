@@ -13,6 +13,7 @@ from ....core.ideal import IdealLine, Polyline
 from ....core.numeric import Number, fmt_short, normalize
 from ....core.records import Plot, Quantity, Solution, Table, Walk, heading, rule, worked
 from .._shared import Clipped, pt
+from ._shared import corners
 
 
 def _vertices(coords: Sequence[Number], param: str) -> list[tuple[Number, Number]]:
@@ -157,3 +158,25 @@ def cyrus_beck_solution(
             "t_leave": last.t_leave,
         },
     )
+
+
+def rectangle_clipped(
+    p0: tuple[Number, Number], p1: tuple[Number, Number], w: Sequence[Number]
+) -> Clipped:
+    """Cyrus-Beck with the rectangle ``w`` as its convex window (the record's ``stage``)."""
+    return cyrus_beck_clipped(p0, p1, corners(w))
+
+
+def rectangle_solution(
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    window: Sequence[Number],
+    *,
+    normals: str = "outward",
+    ends: str = "exact",
+) -> Solution:
+    """:func:`cyrus_beck_solution` with the rectangle ``window`` as the convex window."""
+    flat = [c for p in corners(window) for c in p]
+    return cyrus_beck_solution(x1, y1, x2, y2, flat, normals=normals, ends=ends)

@@ -7,9 +7,9 @@ Every intersection is exact: table cells show ``39/5`` or ``7.8``, never a round
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import Any
 
 from ....algorithms.clipping import (
     EDGES,
@@ -23,10 +23,10 @@ from ....algorithms.clipping import (
     liang_barsky,
 )
 from ....algorithms.process_choices import LineClipMethod
-from ....core import lazy
 from ....core.checks import InputError
 from ....core.numeric import Number, fmt_paren, fmt_short, normalize
 from ....core.records import Column, Plot, Quantity, Solution, Table, Walk
+from ... import methods
 from .._shared import (
     Clipped,
     check_rect,
@@ -40,66 +40,29 @@ from .._shared import (
 )
 from ._shared import clipped_quantity, code_reason
 
-if TYPE_CHECKING:
-    from ....algorithms import cyrus_beck as cb_algorithm
-    from ....algorithms import nll as nll_algorithm
-    from . import cyrus_beck, nll
-else:
-    cyrus_beck = lazy.module("scanconv.answers.process.clip.cyrus_beck")
-    nll = lazy.module("scanconv.answers.process.clip.nll")
-    cb_algorithm = lazy.module("scanconv.algorithms.cyrus_beck")
-    nll_algorithm = lazy.module("scanconv.algorithms.nll")
-
 LINE_METHODS = tuple(m.value for m in LineClipMethod)
 """The line clipping methods, by name."""
 
 
-class _Way(NamedTuple):
-    """A method that clips a line against a rectangle: its name and its working."""
-
-    name: str
-    clip: Callable[[Point, Point, Rect], Clipped]
-    notes: tuple[str, ...]
-
-
-def _cs(p1: Point, p2: Point, w: Rect) -> Clipped:
+def cohen_sutherland_clipped(p1: Point, p2: Point, w: Rect) -> Clipped:
+    """Cohen-Sutherland's working against the rectangle ``w`` (the record's ``stage``)."""
     cs = cohen_sutherland(p1, p2, w)
     return Clipped(*cs_parts(p1, p2, w, cs), cs.segment)
 
 
-def _lb(p1: Point, p2: Point, w: Rect) -> Clipped:
+def liang_barsky_clipped(p1: Point, p2: Point, w: Rect) -> Clipped:
+    """Liang-Barsky's working against the rectangle ``w`` (the record's ``stage``)."""
     lb = liang_barsky(p1, p2, w)
     return Clipped(*lb_parts(p1, p2, w, lb), lb.segment)
 
 
-def _cb(p1: Point, p2: Point, w: Rect) -> Clipped:
-    """Cyrus-Beck with the rectangle as its convex window."""
-    corners = [(w[0], w[1]), (w[2], w[1]), (w[2], w[3]), (w[0], w[3])]
-    return cyrus_beck.cyrus_beck_clipped(p1, p2, corners)
-
-
-def _nll(p1: Point, p2: Point, w: Rect) -> Clipped:
-    return nll.nll_clipped(p1, p2, w)
-
-
+_CS_NOTES = (
+    "Region code bits, written T B R L (Hearn & Baker's bits 4 to 1): T = above (y > ymax), B = below (y < ymin), R = right (x > xmax), L = left (x < xmin).",
+    "Each iteration clips the end point that is outside (P1 first), at the first boundary of its code in the order left, right, bottom, top; the end points keep their names.",
+)  # fmt: skip
 _PARAMETRIC = (
     "x = x1 + u·Δx, y = y1 + u·Δy with 0 <= u <= 1; inside where u·p_k <= q_k for every k. p_k < 0 enters the window (raises u1), p_k > 0 leaves it (lowers u2).",
 )  # fmt: skip
-_WAYS = {
-    "cohen-sutherland": _Way("Cohen-Sutherland", _cs, (
-        "Region code bits, written T B R L (Hearn & Baker's bits 4 to 1): T = above (y > ymax), B = below (y < ymin), R = right (x > xmax), L = left (x < xmin).",
-        "Each iteration clips the end point that is outside (P1 first), at the first boundary of its code in the order left, right, bottom, top; the end points keep their names.",
-    )),
-    "liang-barsky": _Way("Liang-Barsky", _lb, _PARAMETRIC),
-    "cyrus-beck": _Way("Cyrus-Beck", _cb, _PARAMETRIC),
-    "nicholl-lee-nicholl": _Way("Nicholl-Lee-Nicholl", _nll, _PARAMETRIC),
-}  # fmt: skip
-"""The methods that clip a line against a rectangle: each its name, its working (typed, a
-:class:`~.._shared.Clipped`) and the notes the rectangle's answer adds."""
-
-METHOD_NAMES = {method: way.name for method, way in _WAYS.items()}
-"""The methods :func:`clip_line_parts` works (and ``pipeline line --clip`` takes); midpoint
-subdivision rounds its midpoints and may find several pieces, so the pipeline refuses it."""
 
 
 def code_text(code: int) -> str:
@@ -358,32 +321,21 @@ def lb_parts(p1: Point, p2: Point, w: Rect, r: LBResult) -> tuple[list[Quantity]
 
 
 def check_method(method: str, param: str = "method") -> str:
-    """``method`` if it is one of :data:`LINE_METHODS`, else InputError naming the choices."""
+    """``method`` if it is one of :data:`LINE_METHODS`, else InputError naming the choices;
+    for the pipeline (``param`` ``clip``), one whose record has a rectangle ``stage``."""
     if method not in LINE_METHODS:
         raise InputError(
             f"unknown line clipping method {method!r} (choose from {', '.join(LINE_METHODS)})",
             param,
         )
-    if param == "clip" and method not in METHOD_NAMES:
+    if param == "clip" and methods.method("clip", method).stage is None:
+        staged = [m.name for m in methods.METHODS.values() if m.command == "clip" and m.stage]
         raise InputError(
-            f"the pipeline clips by {', '.join(METHOD_NAMES)}, not {method} (its rounded "
+            f"the pipeline clips by {', '.join(staged)}, not {method} (its rounded "
             "midpoints may leave several pieces)",
             param,
         )
     return method
-
-
-def clip_line_parts(
-    p1: Point, p2: Point, w: Rect, method: str
-) -> tuple[list[Quantity], list[Table], tuple[Point, Point] | None]:
-    """Working, tables and clipped segment of one method (for :mod:`.pipeline` too)."""
-    way = _WAYS.get(method)
-    if way is None:
-        raise InputError(
-            f"unknown line clipping method {method!r} (choose from {', '.join(LINE_METHODS)})",
-            "method",
-        )
-    return way.clip(p1, p2, w)
 
 
 def clip_line_solution(
@@ -394,24 +346,54 @@ def clip_line_solution(
     window: Sequence[Number],
     method: str = "cohen-sutherland",
 ) -> Solution:
-    """The worked answer of clipping the segment P1 P2 against ``window``.
+    """The worked answer of clipping the segment P1 P2 against ``window`` by ``method``
+    (its record's answer).
 
     >>> sol = clip_line_solution(7, 9, 11, 4, (4, 4, 10, 8))
     >>> sol.derived[-1].text
     'clipped segment: (7.8, 8) to (10, 5.25)'
     """
     w = check_rect(window, "window", "window")
+    answer = methods.method("clip", check_method(method)).load("answer")
+    return answer(x1, y1, x2, y2, w)  # type: ignore[no-any-return]
+
+
+def cohen_sutherland_answer(
+    x1: Number, y1: Number, x2: Number, y2: Number, window: Sequence[Number]
+) -> Solution:
+    """Cohen-Sutherland clipping of the segment P1 P2 against ``window``."""
+    return _answer(x1, y1, x2, y2, window, "cohen-sutherland", _CS_NOTES)
+
+
+def liang_barsky_answer(
+    x1: Number, y1: Number, x2: Number, y2: Number, window: Sequence[Number]
+) -> Solution:
+    """Liang-Barsky clipping of the segment P1 P2 against ``window``."""
+    return _answer(x1, y1, x2, y2, window, "liang-barsky", _PARAMETRIC)
+
+
+def _answer(
+    x1: Number,
+    y1: Number,
+    x2: Number,
+    y2: Number,
+    window: Sequence[Number],
+    name: str,
+    method_notes: tuple[str, ...],
+) -> Solution:
+    w = check_rect(window, "window", "window")
+    record = methods.method("clip", name)
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
-    derived, tables, seg = clip_line_parts(p1, p2, w, method)
+    derived, tables, seg = record.load("stage")(p1, p2, w)
     derived.append(clipped_quantity(seg))
     notes = [
         "The window is closed: a point on an edge is inside (code 0000), so a segment along an edge or through a corner is kept.",
-        *_WAYS[method].notes,
+        *method_notes,
     ]  # fmt: skip
     return Solution(
         primitive="clip",
-        algorithm=method,
-        title=f"{METHOD_NAMES[method]} line clipping: {pt(p1)} to {pt(p2)}, window {rect_text(w)}",
+        algorithm=name,
+        title=f"{record.short} line clipping: {pt(p1)} to {pt(p2)}, window {rect_text(w)}",
         given=(point_quantity("P1", p1), point_quantity("P2", p2), rect_quantity("window", w)),
         derived=tuple(derived),
         notes=tuple(notes),

@@ -246,3 +246,12 @@ def clip_polygon_window_solution(
         plot=Plot(figures=window_figure(final, window, vertices, "clipped polygon")),
         data={"clipped": [list(p) for p in final], "window": [list(c) for c in window]},
     )
+
+
+def polygon_answer(vertices: Sequence[Number], window: Sequence[Number], polygon: bool) -> Solution:
+    """The polygon clipped against ``window``: a convex polygon's ``x y x y ...`` if
+    ``polygon`` (a pass per edge), else the rectangle ``(xmin, ymin, xmax, ymax)`` (four
+    passes)."""
+    if polygon:
+        return clip_polygon_window_solution(vertices, window)
+    return clip_polygon_solution(vertices, window)

@@ -13,6 +13,7 @@ from ....core.ideal import Polyline
 from ....core.numeric import Number, normalize
 from ....core.records import Plot, Solution, Table, Walk, heading, rule, worked
 from .._shared import pt
+from ._shared import corners
 
 
 def _points(coords: Sequence[Number], name: str) -> list[tuple[Number, Number]]:
@@ -108,3 +109,10 @@ def weiler_atherton_solution(subject: Sequence[Number], clip: Sequence[Number]) 
         plot=Plot(ideal=(Polyline([(float(x), float(y)) for x, y in (*s, s[0])], "subject"),)),
         data={"polygons": [[list(p) for p in poly] for poly in r.polygons]},
     )
+
+
+def polygon_answer(vertices: Sequence[Number], window: Sequence[Number], polygon: bool) -> Solution:
+    """The polygon clipped against ``window``: a polygon's ``x y x y ...`` if ``polygon``, else
+    the rectangle ``(xmin, ymin, xmax, ymax)``."""
+    shape = window if polygon else [c for p in corners(window) for c in p]
+    return weiler_atherton_solution(vertices, shape)

@@ -4,15 +4,25 @@ count and the winding number, from :mod:`scanconv.algorithms.inside`."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
-from typing import Any
+from collections.abc import Callable, Iterator, Sequence
+from typing import Any, NamedTuple
 
 from ....algorithms import inside as io
 from ....algorithms.polygon import check_polygon, vertices_from_coords
 from ....core.checks import InputError
 from ....core.ideal import Polyline
 from ....core.numeric import Number, fmt_short, normalize
-from ....core.records import PixelFigure, Plot, Solution, Table, Walk, heading, rule, worked
+from ....core.records import (
+    Column,
+    PixelFigure,
+    Plot,
+    Solution,
+    Table,
+    Walk,
+    heading,
+    rule,
+    worked,
+)
 from .._shared import pt
 
 RULES = ("both", "even-odd", "nonzero")
@@ -56,36 +66,62 @@ def _edge_table(vertices: Sequence[io.Point], point: io.Point, number: int) -> T
     )
 
 
+class _Rule(NamedTuple):
+    """A rule's verdict column: the rule, its heading, and its cell of a point's row (``why``:
+    the boundary, or the parity of the crossings)."""
+
+    name: str
+    column: Column
+    cell: Callable[[io.Verdict, str], str]
+
+
+def _word(inside: bool) -> str:
+    return "inside" if inside else "outside"
+
+
+_EVEN_ODD = _Rule(
+    "even-odd",
+    heading("even_odd", r"\text{even-odd}"),
+    lambda v, why: f"{_word(v.even_odd)} ({why})",
+)
+_NONZERO = _Rule("nonzero", heading("nonzero", r"\text{nonzero}"), lambda v, why: _word(v.nonzero))
+
+
+def _applied(rule_name: str) -> tuple[_Rule, ...]:
+    """The rules ``rule_name`` applies (``both``: each): the even-odd verdict goes before the
+    winding number, the nonzero verdict after it."""
+    return tuple(r for r in (_EVEN_ODD, _NONZERO) if rule_name in ("both", r.name))
+
+
 def _verdicts_table(
-    verdicts: Sequence[io.Verdict], rule_name: str, n: int, boundary: str = "inside"
+    verdicts: Sequence[io.Verdict], rules: Sequence[_Rule], n: int, boundary: str = "inside"
 ) -> Table:
-    def word(v: bool) -> str:
-        return "inside" if v else "outside"
+    before = [r for r in rules if r is _EVEN_ODD]
+    after = [r for r in rules if r is not _EVEN_ODD]
 
     def rows() -> Iterator[tuple[Any, ...]]:
         for i, v in enumerate(verdicts, 1):
             on = "-" if v.on_boundary is None else f"on {_edge_name(v.on_boundary, n)}"
-            row: list[Any] = [f"P{i} {pt(v.point)}", on, v.crossings]
             parity = "odd" if v.crossings % 2 else "even"
             why = "boundary" if v.on_boundary is not None and boundary != "left-bottom" else parity
-            if rule_name != "nonzero":
-                row.append(f"{word(v.even_odd)} ({why})")
-            row.append(v.winding)
-            if rule_name != "even-odd":
-                row.append(word(v.nonzero))
-            yield tuple(row)
+            yield (
+                f"P{i} {pt(v.point)}",
+                on,
+                v.crossings,
+                *(r.cell(v, why) for r in before),
+                v.winding,
+                *(r.cell(v, why) for r in after),
+            )
 
-    columns = [
+    columns = (
         heading("point", r"\text{point}"),
         heading("boundary", r"\text{boundary}"),
         heading("crossings", r"\text{crossings}"),
-    ]
-    if rule_name != "nonzero":
-        columns.append(heading("even_odd", r"\text{even-odd}"))
-    columns.append(heading("winding", r"\text{winding number}"))
-    if rule_name != "even-odd":
-        columns.append(heading("nonzero", r"\text{nonzero}"))
-    return Table("Verdicts", tuple(columns), rows)
+        *(r.column for r in before),
+        heading("winding", r"\text{winding number}"),
+        *(r.column for r in after),
+    )
+    return Table("Verdicts", columns, rows)
 
 
 def _points(coords: Sequence[Number]) -> tuple[io.Point, ...]:
@@ -180,7 +216,7 @@ def inside_solution(
         walk=Walk(
             tables=(
                 *(_edge_table(pts, p, i) for i, p in enumerate(tested, 1)),
-                _verdicts_table(verdicts, rule_name, n, boundary),
+                _verdicts_table(verdicts, _applied(rule_name), n, boundary),
             )
         ),
         plot=Plot(
@@ -190,14 +226,14 @@ def inside_solution(
         data={
             "vertices": [list(p) for p in pts],
             "verdicts": [
-                {
-                    "point": list(v.point),
-                    "crossings": v.crossings,
-                    "winding": v.winding,
-                    "even_odd": v.even_odd,
-                    "nonzero": v.nonzero,
-                    "on_edge": v.on_boundary,
-                }
+                dict(
+                    point=list(v.point),
+                    crossings=v.crossings,
+                    winding=v.winding,
+                    even_odd=v.even_odd,
+                    nonzero=v.nonzero,
+                    on_edge=v.on_boundary,
+                )
                 for v in verdicts
             ],
         },

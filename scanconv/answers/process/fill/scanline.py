@@ -15,6 +15,7 @@ from ....algorithms.polygon import (
     check_polygon,
     check_rule,
     edge_table,
+    fill_rule,
     outline_pixels,
     scanline_fill,
     vertices_from_coords,
@@ -48,12 +49,14 @@ VERTEX_RULE = (
     "along a horizontal top edge is left to the polygon above: with the left rule, polygons "
     "sharing an edge never overlap and leave no gap."
 )
-RULE_TEXT = {
-    "even-odd": "Even-odd rule: sort the intersections by x and fill from the 1st to the 2nd, "
-    "the 3rd to the 4th, ...",
-    "nonzero": "Nonzero rule: from left to right add +1 at an edge going up (from vertex i to "
-    "i + 1) and -1 at one going down; fill where the sum (the winding number) is not 0.",
-}
+EVEN_ODD_TEXT = (
+    "Even-odd rule: sort the intersections by x and fill from the 1st to the 2nd, the 3rd to "
+    "the 4th, ..."
+)
+NONZERO_TEXT = (
+    "Nonzero rule: from left to right add +1 at an edge going up (from vertex i to i + 1) and "
+    "-1 at one going down; fill where the sum (the winding number) is not 0."
+)
 
 
 def names(n: int) -> list[str]:
@@ -173,7 +176,8 @@ def _polygon_notes(
     pts: Sequence[Point], rule_name: str, kind: str, horizontal: list[str], dropped: int
 ) -> list[str]:
     """The notes: the pixel, vertex and fill rules, and what was dropped or crosses."""
-    notes = [PIXEL_RULE, VERTEX_RULE, RULE_TEXT[rule_name]]
+    rule_text = EVEN_ODD_TEXT if fill_rule(rule_name).alternates else NONZERO_TEXT
+    notes = [PIXEL_RULE, VERTEX_RULE, rule_text]
     if horizontal:
         notes.append(
             "Horizontal edges dropped (their neighbours bound the spans): "
@@ -264,10 +268,11 @@ def _scan_table(
 ) -> Table:
     """One row per scan line: the edges removed and added, the AET, the spans and pixels."""
     by_index = {e.idx: e for e in edges}
+    winding = not fill_rule(rule_name).alternates  # the winding number shown
 
     def rows() -> Iterator[tuple[Any, ...]]:
         for s in scanline_fill(pts, rule_name):
-            yield _scan_row(s, label, by_index, rule_name == "nonzero")
+            yield _scan_row(s, label, by_index, winding)
 
     return Table("Scan lines (AET entries: edge: x, 1/m, y_max)", _SCAN_COLUMNS, rows)
 

@@ -13,6 +13,7 @@ from ....algorithms.seedfill import (
     EMPTY,
     FILLED,
     FOUR,
+    METHODS,
     ORDERS,
     FillStep,
     Grid,
@@ -38,6 +39,7 @@ from ....core.records import (
     heading,
 )
 from ....core.working import tex_text
+from ... import methods
 
 GRID_CHARS = {"#": BOUNDARY, ".": EMPTY, "*": FILLED}
 """How a grid given as text is read: ``#`` boundary, ``.`` empty, ``*`` already the fill
@@ -307,12 +309,50 @@ def seed_fill_solution(
     span: bool = False,
 ) -> Solution:
     """Boundary or flood fill (``span``: the scan-line seed fill) over a polygon's Bresenham
-    outline (``vertices``: ``x1 y1 x2 y2 ...``) or over a grid given as text ``rows``.
+    outline (``vertices``: ``x1 y1 x2 y2 ...``) or over a grid given as text ``rows``: the
+    answer of ``method``'s record.
 
     >>> sol = seed_fill_solution("boundary", (1, 1), rows=["####", "#..#", "####"])
     >>> [r[1] for r in sol.tables[0].rows()]
     ['(1, 1)', '(2, 1)']
     """
+    if method not in METHODS:
+        raise InputError(f"unknown fill {method!r} (choose from {', '.join(METHODS)})", "method")
+    answer = methods.method("fill", method).load("answer")
+    return answer(  # type: ignore[no-any-return]
+        seed, vertices=vertices, rows=rows, connectivity=connectivity, order=order, span=span
+    )
+
+
+def boundary_answer(seed: Sequence[Number], **given: Any) -> Solution:
+    """Boundary fill: a cell is filled when its colour is neither the boundary's nor the
+    fill's."""
+    return _fill_solution("boundary", lambda seed_colour: _BOUNDARY_TEST, seed, **given)
+
+
+def flood_answer(seed: Sequence[Number], **given: Any) -> Solution:
+    """Flood fill: a cell is filled when it has the seed's colour."""
+    return _fill_solution(
+        "flood", lambda seed_colour: f"colour = {seed_colour} (the seed's colour)", seed, **given
+    )
+
+
+_BOUNDARY_TEST = "colour is neither boundary nor filled"
+
+
+def _fill_solution(
+    method: str,
+    test_of: Callable[[str], str],
+    seed: Sequence[Number],
+    *,
+    vertices: Sequence[Number] | None = None,
+    rows: Sequence[str] | None = None,
+    connectivity: int = 4,
+    order: str = "stack",
+    span: bool = False,
+) -> Solution:
+    """The fill's answer, ``test_of`` the wording of its colour test (given the seed's
+    colour's name)."""
     sx, sy = _check_fill(seed, vertices, rows, order)
     grid, source = _start_grid(vertices, rows)
     names = _colour_names(rows)
@@ -321,11 +361,7 @@ def seed_fill_solution(
         (span_fill if span else seed_fill)(grid, (sx, sy), method, connectivity, order)
     )
     filled_order, leak = _fill_order(trace, span, before)
-    test = (
-        f"colour = {names[before.colours[(sx, sy)]]} (the seed's colour)"
-        if method == "flood"
-        else "colour is neither boundary nor filled"
-    )
+    test = test_of(names[before.colours[(sx, sy)]])
     notes = [_SPAN_NOTE if span else _SEED_NOTE, *((LEAK,) if connectivity == 8 else ())]
     if leak is not None:
         notes.append(_leak_note(leak, grid, filled_order))
@@ -338,7 +374,8 @@ def seed_fill_solution(
     boundary_px = tuple(p for p, c in before.colours.items() if c == BOUNDARY)
     bbox = (grid.x0, grid.y0, grid.x0 + grid.width - 1, grid.y0 + grid.height - 1)
     figures = _fill_figures(grid, filled_order, (*boundary_px, *others), bbox)
-    title = {"boundary": "Boundary fill", "flood": "Flood fill"}[method]
+    named = methods.method("fill", method).title  # "boundary fill"
+    title = named[:1].upper() + named[1:]
     if span:
         title = f"Span (scan-line seed) fill, {method} test"
     return Solution(
@@ -363,5 +400,5 @@ def seed_fill_solution(
             numbering="order",
             order_name="fill order (0: the seed)",
         ),
-        data={"boundary": [list(p) for p in sorted(boundary_px)]},
+        data=dict(boundary=[list(p) for p in sorted(boundary_px)]),
     )
