@@ -193,8 +193,12 @@ def _pipeline_polygon(a: Args) -> Work:
     return Work("rows", math.ceil(abs(vy[1] - vy[0])) + 2, None, "polygon/scan-line", "viewport")
 
 
-def _samples(key: str, default: int = 16, points: str | None = None) -> Callable[[Args], Work]:
-    def rows(a: Args) -> Work:
+def _samples(
+    key: str, default: int = 16, points: str | None = None
+) -> Callable[[Args], Work | None]:
+    def rows(a: Args) -> Work | None:
+        if a.get("t") is not None:  # the curve at one t (``bezier --at``): as BOUNDED's *_at
+            return None
         n = a.get("samples")
         count = default if n is None else int(_num(a, "samples"))
         _within(count, algorithms_curve_limits.MAX_SAMPLES)
@@ -206,7 +210,7 @@ def _samples(key: str, default: int = 16, points: str | None = None) -> Callable
     return rows
 
 
-def _parametric_line(a: Args) -> Work:
+def _parametric_line(a: Args) -> Work | None:
     if a.get("samples") is None:
         rows, param = _line_rows(a, ("x0", "y0", "x1", "y1"))
         return Work("rows", rows, None, "parametric", param)
@@ -279,7 +283,7 @@ def _char_bitmap(a: Args) -> Work:
     return Work("rows", max(bits, 1), None, "char/bitmap", "scale", max(1.0, scale * scale / 8))
 
 
-ESTIMATES: dict[str, Callable[[Args], Work]] = {
+ESTIMATES: dict[str, Callable[[Args], Work | None]] = {
     "line_style": _line_style,
     "thick_line": _thick_line,
     "inside": _inside,
