@@ -142,7 +142,7 @@ def flag_for(param: str | None, params: Iterable[inspect.Parameter]) -> str | No
     or a positional argument, which the message already names by its value).
 
     >>> from scanconv._api.shapes import circle
-    >>> from scanconv.cli.declared import typer_parameter
+    >>> from scanconv.cli.options import typer_parameter
     >>> from scanconv.core.declare import declared
     >>> params = [typer_parameter(d) for d in declared(circle)]
     >>> flag_for("xc", params), flag_for("r", params)

@@ -3,8 +3,9 @@
 A command the question language lists (:data:`scanconv.questions.declared.COMMANDS`) is
 registered by :func:`command` with its help alone: its arguments and options are the
 ``Arg`` and ``Opt`` records of its :mod:`scanconv._api` function, turned into typer's
-declarations when typer first asks for its signature (only the command a run names is
-built), its defaults the function's; the body is the function.
+declarations (:func:`scanconv.cli.options.typer_parameter`) when typer first asks for its
+signature (only the command a run names is built), its defaults the function's; the body is
+the function.
 """
 
 from __future__ import annotations

@@ -3,9 +3,9 @@
 A function of :mod:`scanconv._api` is a command: each parameter the command takes carries,
 in its ``Annotated`` type, an :class:`Arg` (a positional argument: its help and the name
 messages call it) or an :class:`Opt` (an option: its flags and help). Nothing here knows a
-command-line parser: the command line (:mod:`scanconv.cli.declared`) turns each into its
-parser's declaration, the question language (:mod:`scanconv.questions.grammar`) into its
-grammar, and the site into its forms; the default is the function's, stated once.
+command-line parser: the command line (:func:`scanconv.cli.options.typer_parameter`) turns
+each into its parser's declaration, the question language (:mod:`scanconv.questions.grammar`)
+into its grammar, and the site into its forms; the default is the function's, stated once.
 
 :func:`declared` reads a function's declaration: each parameter's :class:`Declared` record,
 with its kind (how a word becomes its value) worked out from its type.
