@@ -83,8 +83,8 @@ CASES: list[tuple[tuple[str, ...], tuple[str, ...], str, tuple[Any, ...], dict[s
         ("parametric", "circle"),
         ("--center", "1", "2", "--radius", "5/2", "--t-range", "0", "pi", "--samples", "8"),
         "parametric_circle",
-        ((1, 2), "5/2"),
-        {"t_range": ("0", "pi"), "samples": 8},
+        (),
+        {"center": (1, 2), "radius": "5/2", "t_range": ("0", "pi"), "samples": 8},
     ),
     (
         ("parametric", "ellipse"),
@@ -136,7 +136,7 @@ CASES: list[tuple[tuple[str, ...], tuple[str, ...], str, tuple[Any, ...], dict[s
         ("local-control",),
         (*FLAT5, "7", "1", "--move", "5", "7", "5", "--degree", "2", "--samples", "8"),
         "local_control",
-        ([*P5, (7, 1)], 5, (7, 5), 2),
+        ([*P5, (7, 1)], (5, 7, 5), 2),
         {"samples": 8},
     ),
 ]
@@ -497,7 +497,7 @@ def test_points_are_pairs_or_flat():
         (lambda: _api.bspline(P5, knots="bogus"), "knots", "unknown knot vector"),
         (lambda: _api.bezier([0, 0, 1]), "points", "odd count"),
         (lambda: _api.bezier([(0, 0, 1), (1, 1)]), "points", "a point is a pair"),
-        (lambda: _api.local_control(P5, 1.5, (0, 0)), "index", "index must be an integer"),
+        (lambda: _api.local_control(P5, (1.5, 0, 0)), "index", "index must be an integer"),
         (lambda: _api.ramp("0x4"), "size", "must be a positive integer"),
         (lambda: _api.sample("x", 4, 4, domain=(0, 1, 0)), "domain", "takes 4 values"),
         (lambda: _api.parametric_circle(t_range=(0,)), "t_range", "takes 2 values"),

@@ -347,7 +347,7 @@ def test_typer_cli_runner_every_format(fmt):
         (("circle", "5"), "circle", "xc", "--center: "),  # one option, two parameters
         (("circle", "5"), "circle", "r", ""),  # a positional argument: no flag
         (("bezier", "0", "0", "1", "1"), "bezier", "samples", "--samples: "),
-        (("bezier", "0", "0", "1", "1", "--at", "1"), "bezier_at", "t", "--at: "),
+        (("bezier", "0", "0", "1", "1", "--at", "1"), "bezier", "t", "--at: "),
         (("sample", "x", "--size", "4", "--levels", "4"), "sample", "m", "--size: "),
         (("quantize", "--bits", "2"), "quantize", "integer", "--input: "),
         (("storage", "8", "8", "--bits", "2"), "storage", "m", ""),  # storage M N: positional

@@ -344,11 +344,14 @@ def test_the_grammar_is_generated_from_the_librarys_declarations() -> None:
     from scanconv.questions import generate
     from scanconv.questions.declared import COMMANDS, NOT_QUESTIONS, OUTPUTS
     from scanconv.questions.grammar_table import NOT_QUESTIONS as TABLE_OTHERS
-    from scanconv.questions.grammar_table import SHARED, SPECS
+    from scanconv.questions.grammar_table import SHARED, SPECS, S
+    from scanconv.render import Format
 
-    assert generate.specs() == SPECS, (
+    assert generate.specs() == SPECS and generate.shared() == S, (
         "run: python -m scanconv.questions.generate > scanconv/questions/grammar_table.py"
     )
+    # --format's choices are the formats' enum, read when the table is generated
+    assert S["fmt"].choices == tuple(f.value for f in Format)
     assert (TABLE_OTHERS, SHARED) == (NOT_QUESTIONS, OUTPUTS)
     assert COMMANDS.keys() <= SPECS.keys()
 
@@ -356,7 +359,7 @@ def test_the_grammar_is_generated_from_the_librarys_declarations() -> None:
 def test_a_declaration_is_the_grammar_the_command_line_and_the_answer() -> None:
     """A default, a flag's spelling and a choice changed on the library function change the
     question grammar and the typer command read from it (not a copy of either)."""
-    from scanconv.cli.declared import typer_parameter
+    from scanconv.cli.options import typer_parameter
     from scanconv.core.declare import declared
     from scanconv.questions.grammar import param_of
 
@@ -376,16 +379,13 @@ def test_a_declaration_is_the_grammar_the_command_line_and_the_answer() -> None:
     assert option.default == 3 and option.annotation.__metadata__[0].param_decls == ("-t",)
 
 
-def test_every_command_of_the_grammar_has_an_answer() -> None:
-    from scanconv.questions.commands import BODIES
+def test_every_command_of_the_grammar_is_declared_by_its_library_function() -> None:
     from scanconv.questions.declared import BY_FUNCTION
     from scanconv.questions.grammar_table import SPECS
 
-    assert {spec.function for spec in SPECS.values()} == set(BODIES) | set(BY_FUNCTION)
-    assert not set(BODIES) & set(BY_FUNCTION)  # a declared command's body is its function
+    assert {spec.function for spec in SPECS.values()} == set(BY_FUNCTION)
     for spec in SPECS.values():
-        declared = BY_FUNCTION.get(spec.function)
-        body = declared.answerer() if declared is not None else BODIES[spec.function]
+        body = BY_FUNCTION[spec.function].answerer()
         inspect.signature(body).bind(**dict.fromkeys(spec.own))  # takes them all
 
 

@@ -125,7 +125,25 @@ def color(
 
 
 @answers
-def theory(topic: str) -> Solution:
+def theory(
+    topic: Annotated[
+        str,
+        Arg(
+            "The question's topic: scan-conversion, raster-display, rgb-model, dda, "
+            "symmetry, bezier, ... (--list names them all).",
+            "TOPIC",
+        ),
+    ],
+    *,
+    list_: Annotated[
+        bool,
+        Opt(
+            "--list",
+            help="List the topics, one a line (name, then the question), and stop.",
+            lists="scanconv.answers.theory.topics:listed",
+        ),
+    ] = False,
+) -> Solution:
     """The model answer to a theory question (``scanconv theory``).
 
     Parameters
@@ -133,6 +151,10 @@ def theory(topic: str) -> Solution:
     topic : str
         The question's name, as ``scanconv theory --list`` lists them (``"symmetry"``,
         ``"scan-conversion"``, ``"raster-display"``, ...).
+    list_ : bool, default False
+        The command line's ``--list``, which lists the topics and stops before any answer
+        (each topic's name and question: :func:`scanconv.answers.theory.topics.listed`); the
+        answer is the topic's either way.
 
     Returns
     -------

@@ -3,15 +3,16 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Annotated, Any
 
 from ..core import lazy
 from ..core.checks import InputError
+from ..core.declare import Arg, Opt
 from ..display import answers
+from .params import DEGREE, KNOTS, POINTS, SAMPLES
 from .values import (
     FormulaLike,
     NumberLike,
-    PointLike,
     PointsLike,
     _formula,
     _knots,
@@ -42,7 +43,19 @@ else:  # each command's answer module, loaded by its first call
 
 
 @answers
-def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
+def bezier(
+    points: Annotated[PointsLike, POINTS],
+    samples: Annotated[NumberLike | None, SAMPLES] = None,
+    t: Annotated[
+        FormulaLike | None,
+        Opt(
+            "--at",
+            metavar="T",
+            help="De Casteljau's construction at this t in [0, 1].",
+            kind="text",
+        ),
+    ] = None,
+) -> Solution:
     """The Bezier curve of ``points``, tabulated at even steps of t by its Bernstein weights
     (``scanconv bezier``).
 
@@ -52,6 +65,9 @@ def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
         The control points P0 .. Pn, exact numbers.
     samples : int, optional
         The number of steps of t over [0, 1] (``samples + 1`` rows); default 16.
+    t : number or formula, optional
+        One t in [0, 1]: the answer is then De Casteljau's construction at it
+        (:func:`bezier_at`, ``scanconv bezier --at``), and ``samples`` is not used.
 
     Returns
     -------
@@ -72,7 +88,11 @@ def bezier(points: PointsLike, samples: NumberLike | None = None) -> Solution:
     [(0, 0), (0, 1), (1, 1), (1, 2)]
     >>> list(sol.pixels())
     [(0, 0), (0, 1), (1, 1), (1, 2), (2, 2), (3, 2), (4, 1), (4, 0)]
+    >>> bezier([0, 0, 1, 2, 3, 3, 4, 0], t="1/2").title == bezier_at([0, 0, 1, 2, 3, 3, 4, 0], "1/2").title
+    True
     """
+    if t is not None:
+        return bezier_at(points, t)
     pts = _points(points)
     return answers_bezier.bezier_solution(
         pts, _whole(curve_limits.DEFAULT_SAMPLES if samples is None else samples, "samples")
@@ -112,10 +132,29 @@ def bezier_at(points: PointsLike, t: FormulaLike) -> Solution:
 
 @answers
 def bspline(
-    points: PointsLike,
-    degree: NumberLike = 3,
-    knots: str | Sequence[NumberLike] = "open",
-    samples: NumberLike | None = None,
+    points: Annotated[
+        PointsLike | None,
+        Arg(
+            "Control points as x y pairs (none with --basis and an explicit --knots list).",
+            "[X0 Y0 X1 Y1 ...]",
+        ),
+    ] = None,
+    degree: Annotated[NumberLike, DEGREE] = 3,
+    knots: Annotated[str | Sequence[NumberLike], KNOTS] = "open",
+    *,
+    basis: Annotated[
+        bool, Opt("--basis", help="Print only the table of basis values N_i,p(t).")
+    ] = False,
+    t: Annotated[
+        FormulaLike | None,
+        Opt(
+            "--at",
+            metavar="T",
+            help="Evaluate one t: Cox-de Boor, the non-zero terms, C(t).",
+            kind="text",
+        ),
+    ] = None,
+    samples: Annotated[NumberLike | None, SAMPLES] = None,
 ) -> Solution:
     """The B-spline of ``degree`` over ``points``, tabulated over its knot range by the
     Cox-de Boor recursion (``scanconv bspline``).
@@ -123,13 +162,20 @@ def bspline(
     Parameters
     ----------
     points : sequence of (x, y), or flat x0, y0, x1, y1, ...
-        The control points P0 .. Pn, exact numbers.
+        The control points P0 .. Pn, exact numbers (none only with ``basis``: see
+        :func:`bspline_basis`).
     degree : int, default 3
         The degree p (order p + 1), at most n for n + 1 control points.
     knots : {"open", "uniform"}, str or sequence of numbers, default "open"
         ``"open"``: clamped uniform, p + 1 equal knots at each end and integer steps inside;
         ``"uniform"``: 0, 1, ..., m; or the n + p + 2 knot values themselves (a list, or
         text as ``"0,0,0,1,2,2,2"``).
+    basis : bool, default False
+        Only the table of the basis values (:func:`bspline_basis`, ``scanconv bspline
+        --basis``).
+    t : number or formula, optional
+        One t: the answer is then the curve (or, with ``basis``, the basis) at it
+        (:func:`bspline_at`, ``scanconv bspline --at``), and ``samples`` is not used.
     samples : int, optional
         The number of steps of t; default a few per knot span.
 
@@ -149,7 +195,21 @@ def bspline(
     >>> sol = bspline([(0, 0), (1, 2), (3, 3), (4, 0), (5, 2)], 2, samples=4)
     >>> [s.pixel for s in sol.steps()]  # an open B-spline starts at P0 and ends at Pn
     [(0, 0), (2, 2), (3, 3), (4, 1), (5, 2)]
+    >>> bspline(degree=2, knots=[0, 0.25, 0.5, 0.75, 1], basis=True).tables[0].title
+    'Basis functions N_(i,2)(t) over the whole knot range'
     """
+    if basis:
+        if t is not None:
+            return bspline_at(points or [], t, degree, knots)
+        return bspline_basis(points, degree, knots, samples)
+    if not points:
+        raise InputError(
+            "missing control points X0 Y0 X1 Y1 ... (only --basis takes a degree and a knot "
+            "list alone)",
+            "points",
+        )
+    if t is not None:
+        return bspline_at(points, t, degree, knots)
     return _bspline(points, degree, knots, samples, basis_only=False)
 
 
@@ -261,7 +321,16 @@ def bspline_at(
 
 @answers
 def continuity(
-    first: PointsLike, second: PointsLike, samples: NumberLike | None = None
+    first: Annotated[
+        PointsLike | Sequence[NumberLike | str],
+        Arg(
+            "The control points of the first segment, ':', those of the second.",
+            "X0 Y0 ... : X0 Y0 ...",
+            kind="coordinate",
+        ),
+    ],
+    second: PointsLike | None = None,
+    samples: Annotated[NumberLike | None, SAMPLES] = None,
 ) -> Solution:
     """The continuity at the join of two Bezier segments: the highest of C0, C1, C2 that holds
     (``scanconv continuity``).
@@ -270,6 +339,8 @@ def continuity(
     ----------
     first, second : sequence of (x, y), or flat numbers
         The control points of the two segments; ``second`` should start where ``first`` ends.
+        Without ``second``, ``first`` holds both as the command line writes them: flat
+        numbers, ``":"`` between the segments.
     samples : int, optional
         The steps of t per segment for the pixels; default 16.
 
@@ -287,7 +358,11 @@ def continuity(
     'C1'
     >>> sol.derived[-1].text
     'continuity at the join: C1 (C0 and C1 hold; C2 fails)'
+    >>> continuity([0, 0, 1, 1, 2, 0, ":", 2, 0, 3, -1, 4, 0]).data["continuity"]
+    'C1'
     """
+    if second is None:
+        first, second = _segments(first)
     a, b = _points(first, "first"), _points(second, "second")
     steps = _whole(curve_limits.DEFAULT_SAMPLES if samples is None else samples, "samples")
     return answers_continuity.continuity_solution(a, b, steps)
@@ -295,24 +370,29 @@ def continuity(
 
 @answers
 def local_control(
-    points: PointsLike,
-    index: NumberLike,
-    moved: PointLike,
-    degree: NumberLike = 3,
-    knots: str | Sequence[NumberLike] = "open",
-    samples: NumberLike | None = None,
+    points: Annotated[PointsLike, POINTS],
+    move: Annotated[
+        tuple[NumberLike, NumberLike, NumberLike],
+        Opt(
+            "--move",
+            metavar="I X Y",
+            help="Move control point P_I to (X, Y).",
+            show_default=False,
+        ),
+    ],
+    degree: Annotated[NumberLike, DEGREE] = 3,
+    knots: Annotated[str | Sequence[NumberLike], KNOTS] = "open",
+    samples: Annotated[NumberLike | None, SAMPLES] = None,
 ) -> Solution:
-    """Move control point ``index`` to ``moved``: what changes on the Bezier curve and what on the
-    B-spline (``scanconv local-control``).
+    """Move control point ``i`` to ``(x, y)``: what changes on the Bezier curve and what on
+    the B-spline (``scanconv local-control``).
 
     Parameters
     ----------
     points : sequence of (x, y), or flat x0, y0, x1, y1, ...
         The control points P0 .. Pn, exact numbers.
-    index : int
-        The control point moved, 0 .. n.
-    moved : (x, y)
-        Its new position.
+    move : (i, x, y)
+        The control point moved, ``i`` in 0 .. n, and its new position ``(x, y)``.
     degree : int, default 3
         The degree p (order p + 1), at most n for n + 1 control points.
     knots : {"open", "uniform"}, str or sequence of numbers, default "open"
@@ -333,20 +413,38 @@ def local_control(
     Examples
     --------
     >>> pts = [(0, 0), (1, 2), (3, 3), (4, 0), (5, 2), (7, 1)]
-    >>> sol = local_control(pts, 5, (7, 5), 2, samples=8)
+    >>> sol = local_control(pts, (5, 7, 5), 2, samples=8)
     >>> sol.data["bezier_samples_moved"], sol.data["bspline_samples_moved"]
     (8, 2)
     """
     pts = _points(points)
     spec = _knots(knots)
+    if isinstance(move, str) or len(move) != 3:
+        raise InputError(f"move takes 3 numbers (i, x, y), got {move!r}", "move")
+    index, x, y = move
     return answers_local_control.local_control_solution(
         pts,
         _whole(index, "index"),
-        _pair(moved, "moved"),
+        _pair((x, y), "moved"),
         _whole(degree, "degree"),
         spec,
         _whole(curve_limits.DEFAULT_SAMPLES if samples is None else samples, "samples"),
     )
+
+
+def _segments(values: Sequence[Any]) -> tuple[list[Any], list[Any]]:
+    """``X0 Y0 ... : X0 Y0 ...`` (numbers and one ``:``) as the two segments' values.
+
+    >>> _segments([0, 0, 1, 1, ":", 1, 1, 2, 0])
+    ([0, 0, 1, 1], [1, 1, 2, 0])
+    """
+    words = list(values)
+    if words.count(":") != 1:
+        raise InputError(
+            "give two Bezier segments separated by ':', e.g. 0 0 1 1 2 0 : 2 0 3 -1 4 0"
+        )
+    i = words.index(":")
+    return words[:i], words[i + 1 :]
 
 
 def _bspline(

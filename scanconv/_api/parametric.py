@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Annotated, Any
 
 from ..core import lazy
+from ..core.checks import InputError
 from ..core.declare import Arg, Opt
 from ..display import answers
 from .params import SAMPLES, T_RANGE
@@ -22,21 +23,26 @@ CURVE_CENTER = Opt("--center", metavar="X Y", help="Centre (xc, yc).")
 
 @answers
 def parametric_circle(
-    center: PointLike = (0, 0),
-    radius: NumberLike = 1,
+    r: Annotated[NumberLike | None, Arg("Radius r, as in circle (or --radius).")] = None,
+    center: Annotated[PointLike, CURVE_CENTER] = (0, 0),
+    radius: Annotated[
+        NumberLike | None, Opt("--radius", "-r", help="Radius r (default 1).")
+    ] = None,
     *,
-    t_range: TRangeLike | None = None,
-    samples: NumberLike | None = None,
+    t_range: Annotated[TRangeLike | None, T_RANGE] = None,
+    samples: Annotated[NumberLike | None, SAMPLES] = None,
 ) -> Solution:
     """The parametric circle ``x = xc + r cos t``, ``y = yc + r sin t``, sampled at even steps of t
     (``scanconv parametric circle``).
 
     Parameters
     ----------
+    r : number, optional
+        The radius r, > 0, as ``circle`` takes it; or give ``radius``.
     center : (x, y), default (0, 0)
         The centre (xc, yc).
-    radius : number, default 1
-        The radius r, > 0.
+    radius : number, optional
+        The radius, by its name (the same as ``r``: one or both, equal); default 1.
     t_range : (lo, hi) of numbers or formulas, optional
         The range of t, each end a number or a constant expression (``(0, "pi")``); default
         0 .. 2π.
@@ -57,13 +63,20 @@ def parametric_circle(
     [(5, 0), (0, 5), (-5, 0), (0, -5), (5, 0)]
     >>> list(sol.pixels())[:3]
     [(5, 0), (4, 1), (3, 2)]
+    >>> parametric_circle(5, radius=5).title
+    'Parametric circle: centre (0, 0), r = 5'
     """
+    if r is not None and radius is not None and _number(r, "r") != _number(radius, "radius"):
+        raise InputError(
+            f"unexpected extra argument {r}: the radius is already given by --radius {radius}"
+        )
+    chosen = r if r is not None else radius if radius is not None else 1
     return _parametric(
         "circle",
         t_range,
         samples,
         center=_pair(center, "center"),
-        radius=_number(radius, "radius"),
+        radius=_number(chosen, "radius"),
     )
 
 

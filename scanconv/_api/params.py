@@ -99,3 +99,13 @@ SIZE = Opt("--size", help="M x N: M rows, N columns (8x8, or 8 for square).")
 BITS = Opt("--bits", help="Bits per pixel B (1-24; storage also 32, 48, 64).")
 THEORY = Opt("--theory", help="Add the points the notes' comparison questions expect.")
 """``compare``'s comparison points."""
+
+POINTS = Arg("Control points as x y pairs.", "X0 Y0 X1 Y1 ...")
+"""A curve's control points, flat."""
+DEGREE = Opt("--degree", "-p", help="B-spline degree p (1 <= p <= n, at most 10).", kind="integer")
+KNOTS = Opt(
+    "--knots",
+    help="open (clamped uniform), uniform, or an explicit comma list of n + p + 2 values.",
+    kind="text",
+)
+"""A B-spline's degree and knot vector."""

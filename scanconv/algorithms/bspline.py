@@ -15,9 +15,9 @@ basis functions).
 from __future__ import annotations
 
 import bisect
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from fractions import Fraction
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..core.checks import InputError
 from ..core.numeric import Number, fmt_short, normalize, parse_number
@@ -33,8 +33,44 @@ from .curve_limits import (
 )
 from .sampling import combine, curve_pixel, sample_ts
 
-KNOTS = ("open", "uniform")
-"""Named knot vectors (an explicit list is the third choice)."""
+
+class NamedKnots(NamedTuple):
+    """A knot vector named by its kind, declared once: its name, its knots for ``n + 1``
+    points of degree ``p``, whether it is clamped (``p + 1`` equal knots at each end) and
+    what it is, in words."""
+
+    name: str
+    vector: Callable[[int, int], tuple[int, ...]]
+    clamped: bool
+    words: str
+
+
+def _open(n: int, p: int) -> tuple[int, ...]:
+    inner = n - p + 1
+    return (0,) * p + tuple(range(inner + 1)) + (inner,) * p
+
+
+def _uniform(n: int, p: int) -> tuple[int, ...]:
+    return tuple(range(n + p + 2))
+
+
+NAMED_KNOTS = (
+    NamedKnots("open", _open, True, "equal end knots, uniform inside"),
+    NamedKnots("uniform", _uniform, False, "equally spaced, not clamped"),
+)
+"""The named knot vectors (an explicit list is the third choice)."""
+
+KNOTS = tuple(k.name for k in NAMED_KNOTS)
+"""Their names."""
+
+
+def named_knots(kind: str) -> NamedKnots | None:
+    """The named knot vector ``kind`` (``None``: no such name, or ``"explicit"``).
+
+    >>> named_knots("open").clamped, named_knots("explicit")
+    (True, None)
+    """
+    return next((k for k in NAMED_KNOTS if k.name == kind), None)
 
 
 def knot_vector(kind: str | Sequence[Number], n: int, p: int) -> tuple[Number, ...]:
@@ -60,13 +96,13 @@ def knot_vector(kind: str | Sequence[Number], n: int, p: int) -> tuple[Number, .
     if p > MAX_DEGREE:
         raise InputError(f"degree p = {p} is too high (at most {MAX_DEGREE})", "degree")
     m = n + p + 1
-    if kind == "open":
-        inner = n - p + 1
-        return (0,) * p + tuple(range(inner + 1)) + (inner,) * p
-    if kind == "uniform":
-        return tuple(range(m + 1))
     if isinstance(kind, str):
-        raise InputError(f"unknown knot vector {kind!r} (open, uniform or a comma list)", "knots")
+        named = named_knots(kind)
+        if named is None:
+            raise InputError(
+                f"unknown knot vector {kind!r} (open, uniform or a comma list)", "knots"
+            )
+        return named.vector(n, p)
     knots = tuple(normalize(Fraction(u)) for u in kind)
     if len(knots) != m + 1:
         raise InputError(

@@ -20,21 +20,10 @@ from typer.models import OptionInfo, ParameterInfo
 
 from ..core import lazy
 from ..core.records import Solution
-from ..render import Format
+from ..questions.declared import OUTPUTS
+from ..questions.declared import Command as Declaration
 from .budget import check as check_budget
-from .options import (
-    BriefOpt,
-    ExactOpt,
-    ExplainOpt,
-    FormatOpt,
-    GridOpt,
-    Origin,
-    OriginOpt,
-    OutputOpt,
-    PictureOpt,
-    PngOpt,
-    SvgOpt,
-)
+from .options import shared
 from .output import Output, check_paths, emit, fail
 
 if TYPE_CHECKING:
@@ -42,7 +31,7 @@ if TYPE_CHECKING:
 else:
     grammar = lazy.module("scanconv.questions.grammar")  # its aliases: bad input only
 
-SHARED = ("fmt", "grid", "origin", "output", "brief", "exact", "explain", "svg", "png")
+SHARED = OUTPUTS
 """The shared output options, in the order they are listed after a command's own."""
 
 _KEYWORD = inspect.Parameter.KEYWORD_ONLY
@@ -51,24 +40,9 @@ _KEYWORD = inspect.Parameter.KEYWORD_ONLY
 def _shared(
     *, figures: bool, grid: bool, origin: bool, picture: bool
 ) -> dict[str, inspect.Parameter]:
-    annotations: dict[str, tuple[Any, Any]] = {
-        "fmt": (FormatOpt, Format.auto),
-        "output": (OutputOpt, None),
-        "brief": (BriefOpt, False),
-        "exact": (ExactOpt, False),
-        "explain": (ExplainOpt, False),
-    }
-    if grid:
-        annotations["grid"] = (PictureOpt if picture else GridOpt, True)
-        if origin:
-            annotations["origin"] = (OriginOpt, Origin.bottom_left)
-    if figures:
-        annotations["svg"] = (SvgOpt, None)
-        annotations["png"] = (PngOpt, None)
-    return {
-        name: inspect.Parameter(name, _KEYWORD, default=default, annotation=annotation)
-        for name, (annotation, default) in annotations.items()
-    }
+    """The output options a command takes, as typer takes them."""
+    taken = Declaration((), "", figures=figures, grid=grid, origin=origin).outputs
+    return {name: p for name, p in shared(picture).items() if name in taken}
 
 
 def answers(
@@ -168,7 +142,7 @@ def flag_for(param: str | None, params: Iterable[inspect.Parameter]) -> str | No
     or a positional argument, which the message already names by its value).
 
     >>> from scanconv._api.shapes import circle
-    >>> from scanconv.cli.declared import typer_parameter
+    >>> from scanconv.cli.options import typer_parameter
     >>> from scanconv.core.declare import declared
     >>> params = [typer_parameter(d) for d in declared(circle)]
     >>> flag_for("xc", params), flag_for("r", params)

@@ -3,62 +3,25 @@
 A command the question language lists (:data:`scanconv.questions.declared.COMMANDS`) is
 registered by :func:`command` with its help alone: its arguments and options are the
 ``Arg`` and ``Opt`` records of its :mod:`scanconv._api` function, turned into typer's
-declarations when typer first asks for its signature (only the command a run names is
-built), its defaults the function's; the body is the function.
+declarations (:func:`scanconv.cli.options.typer_parameter`) when typer first asks for its
+signature (only the command a run names is built), its defaults the function's; the body is
+the function.
 """
 
 from __future__ import annotations
 
 import functools
 import inspect
-from fractions import Fraction
-from typing import Annotated, Any
+from typing import Any
 
 import typer
-from typer._types import TyperChoice
 
-from ..core.declare import Arg, Declared
+from ..core.declare import Declared
 from ..questions.declared import COMMANDS
 from .budget import answered
 from .command import SHARED, Command, _shared
-from .options import NUMERIC_ARGS, coordinate, integer, number
+from .options import NUMERIC_ARGS, typer_parameter
 from .output import Output
-
-_PARSERS = {"number": number, "integer": integer, "coordinate": coordinate}
-_TYPES: dict[str, Any] = {"number": Fraction, "integer": int, "coordinate": Any}
-_TYPES |= {"flag": bool, "text": str}
-
-
-def typer_parameter(d: Declared) -> inspect.Parameter:
-    """The parameter typer reads for the declared one: its type, its typer declaration and
-    the library's default."""
-    texts = d.choices if isinstance(d.choices, tuple) else None
-    base: Any = d.choices if d.kind == "choice" and not texts else _TYPES.get(d.kind, str)
-    if d.nargs == -1 or getattr(d.meta, "multiple", False):
-        base = list[base]
-    elif d.nargs > 1:
-        base = tuple[(base,) * d.nargs]  # type: ignore[misc]
-    if d.optional:
-        base = base | None
-    options: dict[str, Any] = {"help": d.meta.help or None, "metavar": d.meta.metavar}
-    if d.kind in _PARSERS:
-        options["parser"] = _PARSERS[d.kind]
-    if isinstance(d.meta, Arg):
-        info = typer.Argument(show_default=False, **options)
-    else:
-        if texts:
-            options["click_type"] = TyperChoice(texts, case_sensitive=False)
-        elif d.kind == "choice":
-            options["case_sensitive"] = False
-        if d.meta.hidden:
-            options["hidden"] = True
-        info = typer.Option(*d.meta.names, show_default=d.meta.show_default, **options)
-    return inspect.Parameter(
-        d.name,
-        inspect.Parameter.KEYWORD_ONLY,
-        default=d.default,
-        annotation=Annotated[base, info],
-    )
 
 
 class DeclaredCommand(Command):
@@ -105,5 +68,8 @@ def command(group: typer.Typer, path: tuple[str, ...], help: str) -> None:
     """Register the declared command ``path`` on ``group`` (``help``: its text in
     ``--help``)."""
     callback = DeclaredCommand(path, help)
-    settings = NUMERIC_ARGS if callback.spec.ignore_unknown else {}
-    group.command(path[-1], context_settings=settings, help=help)(callback)
+    spec = callback.spec
+    settings = NUMERIC_ARGS if spec.ignore_unknown else {}
+    group.command(
+        path[-1], context_settings=settings, help=help, no_args_is_help=spec.no_args_is_help
+    )(callback)

@@ -1,32 +1,39 @@
 """The command line's vocabulary: the parsers, the choices and the option declarations.
 
-A command's own parameters are declared on its library function (:mod:`scanconv.core.declare`,
-turned into typer's declarations by :mod:`scanconv.cli.declared`); the few commands not yet
-declared there take the ``Annotated`` aliases below (``points: Points``). Numbers are parsed
+A command's own parameters are declared on its library function (:mod:`scanconv.core.declare`),
+each turned into typer's declaration by :func:`typer_parameter` (:mod:`scanconv.cli.declared`
+registers the command); the few commands not yet declared there write typer's declarations
+with the helpers below (:func:`num_option`, :func:`choice`). Numbers are parsed
 by click through :func:`number` and :func:`integer`, so a bad one is refused before the
 command runs, naming its option. Formulas (``--at``, ``--t-range``,
 ``--domain``), sizes (``--size``) and knot vectors (``--knots``) are text the library parses
 itself; the API (:mod:`scanconv._api`) takes the same text.
 
 The output options every command shares (``--format``, ``--grid``, ``--origin``, ``--output``,
-``--brief``, ``--svg``, ``--png``; ``--explain`` is kept, hidden, as a no-op) are declared at the end and added to each command by
-:func:`scanconv.cli.command.answers`.
+``--brief``, ``--exact``, ``--svg``, ``--png``; ``--explain`` is kept, hidden, as a no-op) are
+declared once in the library (:func:`scanconv.questions.outputs.outputs`), read by
+:func:`shared` and added to each command by :func:`scanconv.cli.command.answers`.
 """
 
 from __future__ import annotations
 
+import functools
+import inspect
+from collections.abc import Callable
 from enum import Enum
 from fractions import Fraction
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from typer._click.exceptions import NoSuchOption  # typer vendors click
 from typer._types import TyperChoice
 
+from ..core import lazy
 from ..core.checks import looks_like_option
+from ..core.declare import Arg, Declared, Opt, declared
 from ..core.numeric import parse_number
-from ..questions.declared import PICTURE
+from ..questions.outputs import PICTURE, outputs
 from ..render import Format, formats
 
 #: Commands that take numbers as positional arguments accept negative ones (``-3``) too.
@@ -87,79 +94,95 @@ class Origin(str, Enum):
     top_left = "top-left"
 
 
-# --- values -----------------------------------------------------------------------------------
-
-
 def num_arg(help: str, metavar: str | None = None) -> Any:
     """A positional exact number with its help (``scanconv char storage --help`` lists it)."""
     return typer.Argument(parser=number, show_default=False, help=help, metavar=metavar)
 
 
-Points = Annotated[
-    list[Fraction],
-    typer.Argument(parser=number, metavar="X0 Y0 X1 Y1 ...", help="Control points as x y pairs."),
-]
-"""Control points ``X0 Y0 X1 Y1 ...``, flat: the API pairs them up."""
+# --- a declared parameter as typer takes it ---------------------------------------------------
 
-Segments = Annotated[
-    list[Any],
-    typer.Argument(
-        parser=coordinate,
-        metavar="X0 Y0 ... : X0 Y0 ...",
-        help="The control points of the first segment, ':', those of the second.",
-    ),
-]
-"""Two point lists separated by ``:`` (split by :func:`segments`)."""
+_PARSERS = {"number": number, "integer": integer, "coordinate": coordinate}
+_TYPES: dict[str, Any] = {"number": Fraction, "integer": int, "coordinate": Any}
+_TYPES |= {"flag": bool, "text": str}
 
 
-ORIGIN = (Fraction(0), Fraction(0))
-"""The default centre or vertex of a parametric curve."""
+def _lister(entry: str) -> Callable[[bool], None]:
+    """The callback of a flag that lists rows and stops (``Opt(lists=...)``: ``theory
+    --list``): each ``(name, description)`` row of ``entry`` on a line, the names aligned."""
 
-CurveCenter = Annotated[
-    tuple[Fraction, Fraction], num_option("--center", metavar="X Y", help="Centre (xc, yc).")
-]
+    def callback(value: bool) -> None:
+        if value:
+            rows = lazy.load(entry)()
+            width = max(len(name) for name, _ in rows)
+            for name, text in rows:
+                typer.echo(f"{name.ljust(width)}  {text}")
+            raise typer.Exit()
+
+    return callback
 
 
-Samples = Annotated[
-    int | None,
-    typer.Option(
-        "--samples",
-        "-n",
-        parser=integer,
-        help="Steps of t: the curve is tabulated at N + 1 values of t, both ends included "
-        "(default 16; parametric line: max(|dx|, |dy|)).",
-        show_default=False,
-    ),
-]
-TRange = Annotated[
-    tuple[str, str] | None,
-    typer.Option(
-        "--t-range",
-        metavar="T0 T1",
-        help="Parameter range; numbers or formulas such as 2*pi (default: the curve's own).",
-        show_default=False,
-    ),
-]
-Degree = Annotated[
-    int,
-    typer.Option(
-        "--degree", "-p", parser=integer, help="B-spline degree p (1 <= p <= n, at most 10)."
-    ),
-]
-Knots = Annotated[
-    str,
-    typer.Option(
-        "--knots",
-        help="open (clamped uniform), uniform, or an explicit comma list of n + p + 2 values.",
-    ),
-]
+def typer_parameter(d: Declared) -> inspect.Parameter:
+    """The parameter typer reads for the declared one: its type, its typer declaration and
+    the library's default."""
+    texts = d.choices if isinstance(d.choices, tuple) else None
+    base: Any = d.choices if d.kind == "choice" and not texts else _TYPES.get(d.kind, str)
+    options: dict[str, Any] = {"help": d.meta.help or None, "metavar": d.meta.metavar}
+    if d.file:  # a file to write: click refuses a folder
+        base, options["dir_okay"] = Path, False
+    if d.nargs == -1 or getattr(d.meta, "multiple", False):
+        base = list[base]
+    elif d.nargs > 1:
+        base = tuple[(base,) * d.nargs]  # type: ignore[misc]
+    if d.optional:
+        base = base | None
+    if d.kind in _PARSERS:
+        options["parser"] = _PARSERS[d.kind]
+    if isinstance(d.meta, Arg):
+        info = typer.Argument(show_default=False, **options)
+    else:
+        if texts:
+            options["click_type"] = TyperChoice(texts, case_sensitive=False)
+        elif d.kind == "choice":
+            options["case_sensitive"] = False
+        if d.meta.hidden:
+            options["hidden"] = True
+        if d.meta.lists:
+            options |= {"callback": _lister(d.meta.lists), "is_eager": True}
+        info = typer.Option(*d.meta.names, show_default=d.meta.show_default, **options)
+    return inspect.Parameter(
+        d.name,
+        inspect.Parameter.KEYWORD_ONLY,
+        default=d.default,
+        annotation=Annotated[base, info],
+    )
+
 
 # --- the output options, shared by every command (added by ``answers``) ------------------------
 
-FormatOpt = Annotated[
-    Format,
-    choice("--format", "-f", help="Output format. auto: rich on a terminal, markdown otherwise."),
-]
+
+@functools.cache
+def shared(picture: bool = False) -> dict[str, inspect.Parameter]:
+    """The output options every command shares, as typer takes them, read from their one
+    declaration (:func:`scanconv.questions.outputs.outputs`); with ``picture``, the grid is
+    the shaded text picture."""
+    found = {}
+    for d in declared(outputs):
+        if picture and d.name == "grid" and isinstance(d.meta, Opt):
+            d.meta = Opt(*d.meta.names, help=PICTURE)  # a fresh record: declared() builds it
+        found[d.name] = typer_parameter(d)
+    return found
+
+
+if TYPE_CHECKING:  # what a hand-written command's parameter holds
+    FormatOpt = Format
+    OutputOpt = Path | None
+    BriefOpt = bool
+    ExactOpt = bool
+else:  # its typer declaration, the declared one
+    FormatOpt, OutputOpt, BriefOpt, ExactOpt = (
+        shared()[name].annotation for name in ("fmt", "output", "brief", "exact")
+    )
+
 DocumentFormatOpt = Annotated[
     str,
     typer.Option(
@@ -171,62 +194,3 @@ DocumentFormatOpt = Annotated[
 ]
 """``--format`` of every document command (sheet, exam, practice), declared once: ``auto`` and
 the formats :data:`scanconv.render.FORMATS` gives a document writer."""
-GridOpt = Annotated[bool, typer.Option("--grid/--no-grid", help="Draw the text pixel grid.")]
-PictureOpt = Annotated[bool, typer.Option("--grid/--no-grid", help=PICTURE)]
-OriginOpt = Annotated[
-    Origin,
-    choice(
-        "--origin",
-        help="Grid orientation: bottom-left (y up, as in the notes) or top-left (screen, y down).",
-    ),
-]
-OutputOpt = Annotated[
-    Path | None,
-    typer.Option(
-        "--output",
-        "-o",
-        help="Write to this file (atomically: complete or not at all) instead of stdout.",
-        dir_okay=False,
-    ),
-]
-ExactOpt = Annotated[
-    bool,
-    typer.Option(
-        "--exact",
-        help="Show the table's non-integer values as exact fractions (34/27) instead of "
-        "3 decimals.",
-    ),
-]
-BriefOpt = Annotated[
-    bool,
-    typer.Option(
-        "--brief",
-        help="Leave scanconv's notes (conventions, layout, errata) out, in every format; on a "
-        "terminal the working too: just the tables, the pixels and the grid.",
-    ),
-]
-ExplainOpt = Annotated[
-    bool,
-    typer.Option(
-        "--explain",
-        hidden=True,
-        help="Accepted for old scripts; the working is always shown (see --brief).",
-    ),
-]
-SvgOpt = Annotated[
-    Path | None,
-    typer.Option(
-        "--svg",
-        help="Also draw the figure (pixels, ideal primitive, step numbers, axes) as SVG into "
-        "this file, atomically.",
-        dir_okay=False,
-    ),
-]
-PngOpt = Annotated[
-    Path | None,
-    typer.Option(
-        "--png",
-        help="Also draw the figure as PNG into this file (needs Pillow: the png extra).",
-        dir_okay=False,
-    ),
-]

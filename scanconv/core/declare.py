@@ -3,9 +3,9 @@
 A function of :mod:`scanconv._api` is a command: each parameter the command takes carries,
 in its ``Annotated`` type, an :class:`Arg` (a positional argument: its help and the name
 messages call it) or an :class:`Opt` (an option: its flags and help). Nothing here knows a
-command-line parser: the command line (:mod:`scanconv.cli.declared`) turns each into its
-parser's declaration, the question language (:mod:`scanconv.questions.grammar`) into its
-grammar, and the site into its forms; the default is the function's, stated once.
+command-line parser: the command line (:func:`scanconv.cli.options.typer_parameter`) turns
+each into its parser's declaration, the question language (:mod:`scanconv.questions.grammar`)
+into its grammar, and the site into its forms; the default is the function's, stated once.
 
 :func:`declared` reads a function's declaration: each parameter's :class:`Declared` record,
 with its kind (how a word becomes its value) worked out from its type. A command whose first
@@ -50,7 +50,9 @@ class Opt:
     ``hidden``. ``kind`` overrides the kind the type gives; ``choices``: the texts a choice
     takes, where its type is a ``Literal`` (an enum's values are its choices); ``multiple``:
     the option may be given again, each time adding a value; ``nargs``: the words it takes,
-    where its type does not say (a window's four numbers typed as a sequence).
+    where its type does not say (a window's four numbers typed as a sequence); ``lists``: a
+    flag that, given, lists rows of ``(name, description)`` instead of answering and stops
+    (``"module:function"`` of the rows, loaded when it is given: ``theory --list``).
 
     (A plain class, not a dataclass: reading one costs the command line's start-up nothing.)
     """
@@ -60,6 +62,7 @@ class Opt:
         "help",
         "hidden",
         "kind",
+        "lists",
         "metavar",
         "multiple",
         "names",
@@ -78,10 +81,11 @@ class Opt:
         multiple: bool = False,
         choices: tuple[str, ...] = (),
         nargs: int | None = None,
+        lists: str = "",
     ) -> None:
         self.names, self.help, self.metavar, self.kind = names, help, metavar, kind
         self.show_default, self.hidden, self.multiple = show_default, hidden, multiple
-        self.choices, self.nargs = choices, nargs
+        self.choices, self.nargs, self.lists = choices, nargs, lists
 
     def __repr__(self) -> str:
         return f"Opt({', '.join(map(repr, self.names))}, help={self.help!r})"
@@ -144,12 +148,13 @@ class Declared:
     """One parameter of a command, as its library function declares it: its ``name``, its
     ``meta`` (:class:`Arg` or :class:`Opt`; a :class:`Words` list an :class:`Arg`), its ``kind`` (one of :data:`KINDS`), ``nargs``
     (the words it takes; -1: all that are left), ``choices`` (a choice's enum, or its texts),
-    ``optional`` (whether ``None`` is a value: the library's default for it) and ``default``
+    ``optional`` (whether ``None`` is a value: the library's default for it), ``default``
     (the function's; ``inspect.Parameter.empty``: required; a ``*values`` parameter takes
-    every word left and is required). A plain class: reading a
-    declaration at start-up builds no named-tuple class."""
+    every word left and is required) and ``file`` (its type is a ``Path``: a file to write,
+    never a folder). A plain class: reading a declaration at start-up builds no named-tuple
+    class."""
 
-    __slots__ = ("choices", "default", "kind", "meta", "name", "nargs", "optional")
+    __slots__ = ("choices", "default", "file", "kind", "meta", "name", "nargs", "optional")
 
     def __init__(
         self,
@@ -160,9 +165,10 @@ class Declared:
         choices: type[Enum] | tuple[str, ...] | None,
         optional: bool,
         default: Any,
+        file: bool = False,
     ) -> None:
         self.name, self.meta, self.kind, self.nargs = name, meta, kind, nargs
-        self.choices, self.optional, self.default = choices, optional, default
+        self.choices, self.optional, self.default, self.file = choices, optional, default, file
 
     @property
     def required(self) -> bool:
@@ -276,5 +282,8 @@ def declared(fn: Callable[..., Any]) -> tuple[Declared, ...]:
         if p.kind is p.VAR_POSITIONAL:  # ``*values``: every word left
             nargs = -1
         optional = type(None) in _members(base)
-        out.append(Declared(name, meta, meta.kind or kind, nargs, choices, optional, p.default))
+        file = Path in _members(base)
+        out.append(
+            Declared(name, meta, meta.kind or kind, nargs, choices, optional, p.default, file)
+        )
     return tuple(out)

@@ -27,9 +27,8 @@ from .words import UsageError
 if TYPE_CHECKING:
     from ..core.records import Solution
     from ..display import Answer
-    from . import commands, parser
+    from . import parser
 else:  # a declared command read by the command line needs neither
-    commands = lazy.module("scanconv.questions.commands")
     parser = lazy.module("scanconv.questions.parser")
 
 
@@ -122,10 +121,10 @@ def solve(line: CommandLine) -> Solution:
 
 def _solve(line: CommandLine) -> Solution:
     """:func:`solve` once the work is weighed."""
-    declared = BY_FUNCTION.get(line.function)
-    body = declared.answerer() if declared is not None else commands.BODIES[line.function]
+    body = BY_FUNCTION[line.function].answerer()
     try:
-        return body(**line.arguments)
+        solution: Solution = body(**line.arguments)
+        return solution
     except UsageError:
         raise
     except ValueError as err:

@@ -2,7 +2,7 @@
 check (:func:`scanconv.render.budget.check_work`) on its arguments, before any work.
 
 :func:`library_call` names the library function of a command (``compare line`` is
-``compare_lines``, ``bezier --at`` is ``bezier_at``) as :mod:`scanconv.render.work` costs it;
+``compare_lines``) as :mod:`scanconv.render.work` costs it;
 :func:`check_budget` refuses a parsed question beyond the budget of the format it is to be
 answered in. Everything that answers a question goes through it: :func:`scanconv.questions.answer`,
 the site's page (:mod:`scanconv.site.page`), the command line (:mod:`scanconv.cli.budget`, which
@@ -34,17 +34,9 @@ LIBRARY_NAMES = {
 def library_call(name: str, arguments: Mapping[str, Any]) -> tuple[str, Mapping[str, Any]]:
     """The library function that command ``name`` calls for ``arguments``, and its arguments.
 
-    >>> library_call("bezier", {"points": [0, 0, 1, 1], "t": "1/2"})[0]
-    'bezier_at'
     >>> library_call("image_ramp", {"size": "8"})[0]
     'ramp'
     """
-    if name in ("bezier", "bspline") and arguments.get("t") is not None:
-        return name + "_at", arguments
-    if name == "bspline" and arguments.get("basis"):
-        return "bspline_basis", arguments
-    if name == "continuity" and arguments.get("values") is not None:
-        return name, {**arguments, "first": arguments["values"]}
     return LIBRARY_NAMES.get(name, name), arguments
 
 

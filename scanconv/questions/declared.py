@@ -20,16 +20,12 @@ if TYPE_CHECKING:
 
 from ..core.checks import InputError
 from ..core.declare import WORDS, Words
+from .outputs import OUTPUTS as OUTPUTS
+from .outputs import PICTURE as PICTURE
 from .words import UsageError
 
 NOT_QUESTIONS = ("check", "exam", "mcp", "practice", "sheet", "site")
 """Commands that write documents or mark: never a question."""
-
-PICTURE = "Draw the shaded text picture."
-"""The help of ``--grid/--no-grid`` where the grid is the shaded picture (``sample``)."""
-
-OUTPUTS = ("fmt", "grid", "origin", "output", "brief", "exact", "explain", "svg", "png")
-"""The output options every command shares, in the order they follow its own."""
 
 
 class Command(NamedTuple):
@@ -58,6 +54,8 @@ class Command(NamedTuple):
     first: tuple[str, ...] = ()
     """Parameters its ``--help`` and grammar list first, where the function's positional
     order differs (``dither ordered``: ``--top`` before ``--matrix``)."""
+    no_args_is_help: bool = False
+    """Whether the command given no words shows its help (``theory``)."""
 
     @property
     def function(self) -> str:
@@ -128,11 +126,17 @@ _ALL = (
     Command(("compare", "line"), "shapes.compare_lines"),
     Command(("compare", "circle"), "shapes.compare_circles"),
     Command(("compare", "curves"), "shapes.compare_curves", grid=False, ignore_unknown=False),
+    Command(("parametric", "circle"), "parametric.parametric_circle", figures=True),
     Command(("parametric", "ellipse"), "parametric.parametric_ellipse", figures=True),
     Command(("parametric", "parabola"), "parametric.parametric_parabola", figures=True),
     Command(("parametric", "line"), "parametric.parametric_line", figures=True),
     Command(("parametric", "custom"), "parametric.parametric_custom", figures=True),
     Command(("transform",), "process.transform"),
+    Command(("bezier",), "curves.bezier", figures=True),
+    Command(("bspline",), "curves.bspline", figures=True),
+    Command(("continuity",), "curves.continuity", figures=True),
+    Command(("local-control",), "curves.local_control"),
+    Command(("theory",), "color_theory.theory", ignore_unknown=False, no_args_is_help=True),
     Command(("viewport",), "process.viewport"),
     Command(("clip", "line"), "process.clip_line"),
     Command(("clip", "convex"), "process.clip_convex"),

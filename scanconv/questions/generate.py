@@ -8,7 +8,15 @@ one direction only)."""
 
 from __future__ import annotations
 
-from .grammar import Param, Spec, spec_of, values
+from ..core.declare import declared
+from .grammar import Param, Spec, param_of, spec_of, values
+from .outputs import outputs
+
+
+def shared() -> dict[str, Param]:
+    """The shared output options as the grammar takes them, read from their declaration
+    (:func:`scanconv.questions.outputs.outputs`)."""
+    return {d.name: param_of(d) for d in declared(outputs)}
 
 
 def specs() -> dict[tuple[str, ...], Spec]:
@@ -17,12 +25,13 @@ def specs() -> dict[tuple[str, ...], Spec]:
     from . import grammar_table as table
     from .declared import COMMANDS
 
+    common = shared()
     out = {
-        path: spec_of(COMMANDS[path], table.S) if path in COMMANDS else spec
+        path: spec_of(COMMANDS[path], common) if path in COMMANDS else spec
         for path, spec in table.SPECS.items()
     }
     # a command declared since the table was last written joins it at the end
-    return out | {path: spec_of(c, table.S) for path, c in COMMANDS.items() if path not in out}
+    return out | {path: spec_of(c, common) for path, c in COMMANDS.items() if path not in out}
 
 
 def _enums(path: tuple[str, ...]) -> dict[str, str]:
@@ -55,9 +64,9 @@ def _param_source(p: Param, enum: str | None = None) -> str:
 
 def module_text() -> str:
     """The source of :mod:`scanconv.questions.grammar_table`."""
-    from . import grammar_table as table
     from .declared import NOT_QUESTIONS, OUTPUTS
 
+    common = shared()
     lines = [
         '"""The grammar of every question command: generated from the library\'s declarations',
         'by ``python -m scanconv.questions.generate`` (do not edit: a test compares)."""',
@@ -74,16 +83,16 @@ def module_text() -> str:
         "",
         "# fmt: off",
         "S = {",
-        *(f"    {name!r}: {_param_source(p)}," for name, p in table.S.items()),
+        *(f"    {name!r}: {_param_source(p)}," for name, p in common.items()),
         "}",
         '"""The shared output options, as most commands take them."""',
         "",
-        "SPECS: dict[tuple[str, ...], Spec] = {",
+        "_ALL = (",
     ]
     for path, spec in specs().items():
         enums = _enums(path)
         params = [
-            f"S[{p.name!r}]" if table.S.get(p.name) == p else _param_source(p, enums.get(p.name))
+            f"S[{p.name!r}]" if common.get(p.name) == p else _param_source(p, enums.get(p.name))
             for p in spec.params
         ]
         rows: list[list[str]] = []  # in the command's order, the shared ones run on one line
@@ -94,11 +103,17 @@ def module_text() -> str:
                 rows.append([s])
         flags = f", no_args_is_help={spec.no_args_is_help!r}" if spec.no_args_is_help else ""
         lines += [
-            f"    {path!r}: Spec({path!r}, {spec.function!r}, (",
+            f"    Spec({path!r}, {spec.function!r}, (",
             *(f"        {', '.join(row)}," for row in rows),
             f"    ), own={spec.own!r}, ignore_unknown={spec.ignore_unknown!r}{flags}),",
         ]
-    lines += ["}", "# fmt: on"]
+    lines += [
+        ")",
+        "# fmt: on",
+        "",
+        "SPECS: dict[tuple[str, ...], Spec] = {spec.path: spec for spec in _ALL}",
+        '"""Every question command\'s grammar, by its words."""',
+    ]
     return "\n".join(lines) + "\n"
 
 

@@ -203,4 +203,5 @@ def spec_of(command: Command, shared: dict[str, Param]) -> Spec:
         params=tuple(params),
         own=tuple(own),
         ignore_unknown=command.ignore_unknown,
+        no_args_is_help=command.no_args_is_help,
     )

@@ -1,8 +1,6 @@
 """The grammar of every question command: generated from the library's declarations
 by ``python -m scanconv.questions.generate`` (do not edit: a test compares)."""
 
-from fractions import Fraction
-
 from .grammar import Param, Spec, values
 
 NOT_QUESTIONS = ("check", "exam", "mcp", "practice", "sheet", "site")
@@ -25,8 +23,8 @@ S = {
 }
 """The shared output options, as most commands take them."""
 
-SPECS: dict[tuple[str, ...], Spec] = {
-    ('line',): Spec(('line',), 'line', (
+_ALL = (
+    Spec(('line',), 'line', (
         Param('x1', (), 'number', required=True, metavar='X1', help='x of the first end point P1.'),
         Param('y1', (), 'number', required=True, metavar='Y1', help='y of the first end point P1.'),
         Param('x2', (), 'number', required=True, metavar='X2', help='x of the second end point P2.'),
@@ -43,7 +41,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('pseudocode', ('--algorithm',), 'flag', default=False, help='Add the pseudocode of the variant used for this input.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('x1', 'y1', 'x2', 'y2', 'algo', 'rounding', 'tie', 'start', 'scale', 'ends', 'convention', 'layout', 'derive', 'pseudocode'), ignore_unknown=True),
-    ('storage',): Spec(('storage',), 'storage', (
+    Spec(('storage',), 'storage', (
         Param('m', (), 'number', required=True, metavar='M', help='M, the first size (1024 in 1024 x 768; 1024x768 works too).'),
         Param('n', (), 'number', required=True, metavar='N', help='N, the second size (768 in 1024 x 768).'),
         Param('levels', ('--levels', '-L'), 'number', help='Gray levels L (k = ceil(log2 L)).'),
@@ -53,14 +51,14 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('frames', ('--frames',), 'number', default=1, help='Number of frames F (default 1).'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('m', 'n', 'levels', 'bits', 'binary', 'color', 'frames'), ignore_unknown=True),
-    ('quantize',): Spec(('quantize',), 'quantize', (
+    Spec(('quantize',), 'quantize', (
         Param('bits', ('--bits',), 'number', required=True, help='Bits per pixel B (1-24; storage also 32, 48, 64).'),
         Param('value_range', ('--range',), 'number', nargs=2, help="Input range: add each level's inputs and reconstruction value."),
         Param('kind', ('--input',), 'choice', default='integer', choices=('integer', 'real'), help='integer: the inputs are the integers LO..HI (8-bit: --range 0 255); real: any value in [LO, HI].'),
         Param('recon', ('--recon',), 'choice', default='midpoint', choices=('midpoint', 'lower'), help="Reconstruction value: the midpoint of each level's cell or its lower end."),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('bits', 'value_range', 'kind', 'recon'), ignore_unknown=True),
-    ('sample',): Spec(('sample',), 'sample', (
+    Spec(('sample',), 'sample', (
         Param('expr', (), 'text', required=True, metavar='EXPR', help="f(x, y), e.g. 'x + y' or 'sin(x)*cos(y)'."),
         Param('size', ('--size',), 'text', required=True, help='M x N: M rows, N columns (8x8, or 8 for square).'),
         Param('levels', ('--levels', '-L'), 'number', required=True, help='Gray levels L.'),
@@ -71,13 +69,13 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('origin', ('--origin',), 'choice', default='bottom-left', choices=('bottom-left', 'top-left'), help='Row 0 is the top: bottom-left: y up (row 0 is y1); top-left: y down.'),
         S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('expr', 'size', 'levels', 'domain', 'value_range', 'origin'), ignore_unknown=True),
-    ('bezier',): Spec(('bezier',), 'bezier', (
+    Spec(('bezier',), 'bezier', (
         Param('points', (), 'number', nargs=-1, required=True, metavar='X0 Y0 X1 Y1 ...', help='Control points as x y pairs.'),
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         Param('t', ('--at',), 'text', help="De Casteljau's construction at this t in [0, 1]."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('points', 'samples', 't'), ignore_unknown=True),
-    ('bspline',): Spec(('bspline',), 'bspline', (
+    Spec(('bspline',), 'bspline', (
         Param('points', (), 'number', nargs=-1, metavar='[X0 Y0 X1 Y1 ...]', help='Control points as x y pairs (none with --basis and an explicit --knots list).'),
         Param('degree', ('--degree', '-p'), 'integer', default=3, help='B-spline degree p (1 <= p <= n, at most 10).'),
         Param('knots', ('--knots',), 'text', default='open', help='open (clamped uniform), uniform, or an explicit comma list of n + p + 2 values.'),
@@ -86,12 +84,12 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('points', 'degree', 'knots', 'basis', 't', 'samples'), ignore_unknown=True),
-    ('continuity',): Spec(('continuity',), 'continuity', (
-        Param('values', (), 'coordinate', nargs=-1, required=True, metavar='X0 Y0 ... : X0 Y0 ...', help="The control points of the first segment, ':', those of the second."),
+    Spec(('continuity',), 'continuity', (
+        Param('first', (), 'coordinate', nargs=-1, required=True, metavar='X0 Y0 ... : X0 Y0 ...', help="The control points of the first segment, ':', those of the second."),
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
-    ), own=('values', 'samples'), ignore_unknown=True),
-    ('local-control',): Spec(('local-control',), 'local_control', (
+    ), own=('first', 'samples'), ignore_unknown=True),
+    Spec(('local-control',), 'local_control', (
         Param('points', (), 'number', nargs=-1, required=True, metavar='X0 Y0 X1 Y1 ...', help='Control points as x y pairs.'),
         Param('move', ('--move',), 'number', nargs=3, required=True, help='Move control point P_I to (X, Y).'),
         Param('degree', ('--degree', '-p'), 'integer', default=3, help='B-spline degree p (1 <= p <= n, at most 10).'),
@@ -99,7 +97,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('points', 'move', 'degree', 'knots', 'samples'), ignore_unknown=True),
-    ('circle',): Spec(('circle',), 'circle', (
+    Spec(('circle',), 'circle', (
         Param('r', (), 'number', required=True, metavar='R', help='The radius r (a whole number).'),
         Param('center', ('--center', '-c'), 'number', nargs=2, default=(0, 0), help='Centre (xc, yc), integers; default (0, 0).'),
         Param('method', ('--method', '-m'), 'choice', default='midpoint', choices=values('scanconv.algorithms.circle_choices:CircleMethod'), help="Circle method: midpoint (the notes' Topic 9 'Bresenham', p0 = 1 - r), bresenham (d0 = 3 - 2r), general (the notes' p0 = 0 at the point), polynomial (square root), trig, symmetric-dda."),
@@ -115,7 +113,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('pseudocode', ('--algorithm',), 'flag', default=False, help='Add the pseudocode of the variant used for this input.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('r', 'center', 'method', 'rounding', 'tie', 'p0', 'loop', 'update', 'xstep', 'convention', 'layout', 'derive', 'pseudocode'), ignore_unknown=True),
-    ('ellipse',): Spec(('ellipse',), 'ellipse', (
+    Spec(('ellipse',), 'ellipse', (
         Param('rx', (), 'number', required=True, metavar='RX', help='The semi-axis rx along x (a whole number).'),
         Param('ry', (), 'number', required=True, metavar='RY', help='The semi-axis ry along y (a whole number).'),
         Param('center', ('--center', '-c'), 'number', nargs=2, default=(0, 0), help='Centre (xc, yc), integers; default (0, 0).'),
@@ -127,23 +125,23 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('pseudocode', ('--algorithm',), 'flag', default=False, help='Add the pseudocode of the variant used for this input.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('rx', 'ry', 'center', 'loop', 'tie', 'p0', 'convention', 'derive', 'pseudocode'), ignore_unknown=True),
-    ('transform',): Spec(('transform',), 'transform', (
+    Spec(('transform',), 'transform', (
         Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 ... --TRANSFORMATION ARGS ...', help='The points, then the transformations in the order they are applied.'),
         Param('inverse', ('--inverse',), 'flag', default=False, help='Also show the inverse of the composite matrix.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('words', 'inverse'), ignore_unknown=True),
-    ('viewport',): Spec(('viewport',), 'viewport', (
+    Spec(('viewport',), 'viewport', (
         Param('window', ('--window', '-w'), 'number', nargs=4, required=True, help='The clipping window in world coordinates (closed: its edges are inside).'),
         Param('viewport', ('--viewport',), 'number', nargs=4, required=True, help='The viewport in device coordinates.'),
         Param('points', (), 'number', nargs=-1, default=(), metavar='[X1 Y1 ...]', help="World points to map (default: the window's four corners)."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('window', 'viewport', 'points'), ignore_unknown=True),
-    ('polygon',): Spec(('polygon',), 'polygon', (
+    Spec(('polygon',), 'polygon', (
         Param('vertices', (), 'number', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ...', help="The polygon's vertices, in order."),
         Param('rule', ('--rule',), 'choice', default='even-odd', choices=values('scanconv.algorithms.process_choices:FillRule'), help='Fill rule: even-odd (alternate) or nonzero winding.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('vertices', 'rule'), ignore_unknown=True),
-    ('halftone',): Spec(('halftone',), 'halftone', (
+    Spec(('halftone',), 'halftone', (
         Param('n', (), 'number', required=True, metavar='N', help="N, the halftone cell's width: 1 to 16."),
         Param('level', ('--level', '-l'), 'number', help='Only the pattern of this level.'),
         Param('bits', ('--bits',), 'number', default=1, help='Bits per pixel of the device (default 1).'),
@@ -151,13 +149,13 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('matrix', ('--matrix', '-m'), 'text', help="The cell's order given: N x N rows holding 0..N^2-1 (or 1..N^2) once each."),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('n', 'level', 'bits', 'order', 'matrix'), ignore_unknown=True),
-    ('inside',): Spec(('inside',), 'inside', (
+    Spec(('inside',), 'inside', (
         Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ... --points X Y ...', help="The polygon's vertices in order, then --points and the points to test."),
         Param('rule', ('--rule',), 'choice', default='both', choices=('both', 'even-odd', 'nonzero'), help='even-odd, nonzero winding, or both.'),
         Param('boundary', ('--boundary',), 'choice', default='inside', choices=('inside', 'outside', 'left-bottom'), help='A point on the boundary is inside, outside, or as the count says (left-bottom: on a left or bottom edge inside, a right or top edge outside).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('words', 'rule', 'boundary'), ignore_unknown=True),
-    ('framebuffer',): Spec(('framebuffer',), 'framebuffer', (
+    Spec(('framebuffer',), 'framebuffer', (
         Param('width', (), 'number', required=True, metavar='W', help='W, pixels across.'),
         Param('height', (), 'number', required=True, metavar='H', help='H, pixels down.'),
         Param('bits', (), 'number', required=True, metavar='BITS', help='B, bits per pixel (bit planes).'),
@@ -177,7 +175,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('pixel_time', ('--pixel-time',), 'number', help='Seconds a pixel gets: the frame rate follows.'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('width', 'height', 'bits', 'lut', 'rate', 'refresh', 'interlaced', 'dpi', 'pixel', 'address', 'base', 'major', 'row0', 'count', 'hretrace', 'vretrace', 'pixel_time'), ignore_unknown=True),
-    ('linestyle',): Spec(('linestyle',), 'line_style', (
+    Spec(('linestyle',), 'line_style', (
         Param('x1', (), 'number', required=True, metavar='X1', help='x of the first end point P1.'),
         Param('y1', (), 'number', required=True, metavar='Y1', help='y of the first end point P1.'),
         Param('x2', (), 'number', required=True, metavar='X2', help='x of the second end point P2.'),
@@ -187,7 +185,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('repeat', ('--repeat',), 'number', default=1, help='Use each bit for N pixels (default 1).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('x1', 'y1', 'x2', 'y2', 'mask', 'bits', 'repeat'), ignore_unknown=True),
-    ('thickline',): Spec(('thickline',), 'thick_line', (
+    Spec(('thickline',), 'thick_line', (
         Param('x1', (), 'number', required=True, metavar='X1', help='x of the first end point P1.'),
         Param('y1', (), 'number', required=True, metavar='Y1', help='y of the first end point P1.'),
         Param('x2', (), 'number', required=True, metavar='X2', help='x of the second end point P2.'),
@@ -196,7 +194,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('brush', ('--brush',), 'flag', default=False, help='A square brush instead of pixel replication.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('x1', 'y1', 'x2', 'y2', 'width', 'brush'), ignore_unknown=True),
-    ('color',): Spec(('color',), 'color', (
+    Spec(('color',), 'color', (
         Param('model', (), 'text', required=True, metavar='MODEL', help='The model given: rgb, cmy, hsv, hsi, grey.'),
         Param('values', (), 'text', nargs=-1, required=True, metavar='VALUES...', help='Its components: R G B (0..255; 0..1 with --unit), C M Y (0..1), H S V or H S I (H in degrees, S, V, I in 0..1), or one grey level Y.'),
         Param('to', ('--to',), 'text', default=(), multiple=True, help='The models to convert to (rgb, cmy, hsv, hsi, grey; several: --to cmy hsv hsi). Default: every other one.'),
@@ -204,19 +202,19 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('bits', ('--bits',), 'number', default=8, help='Bits per RGB channel (default 8: 0..255, 24-bit colour).'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('model', 'values', 'to', 'unit', 'bits'), ignore_unknown=True),
-    ('theory',): Spec(('theory',), 'theory', (
+    Spec(('theory',), 'theory', (
         Param('topic', (), 'text', required=True, metavar='TOPIC', help="The question's topic: scan-conversion, raster-display, rgb-model, dda, symmetry, bezier, ... (--list names them all)."),
         Param('list_', ('--list',), 'flag', default=False, help='List the topics, one a line (name, then the question), and stop.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('topic', 'list_'), ignore_unknown=False, no_args_is_help=True),
-    ('image', 'ramp'): Spec(('image', 'ramp'), 'image_ramp', (
+    Spec(('image', 'ramp'), 'image_ramp', (
         Param('size', ('--size',), 'text', default='8', help='M x N: M rows, N columns (8x8, or 8 for square).'),
         Param('levels', ('--levels', '-L'), 'number', default=8, help='Gray levels L (default 8).'),
         S['fmt'],
         Param('grid', ('--grid',), 'flag', default=True, secondary=('--no-grid',), help='Draw the shaded text picture.'),
         S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('size', 'levels'), ignore_unknown=False),
-    ('compare', 'line'): Spec(('compare', 'line'), 'compare_line', (
+    Spec(('compare', 'line'), 'compare_line', (
         Param('x1', (), 'number', required=True, metavar='x1'),
         Param('y1', (), 'number', required=True, metavar='y1'),
         Param('x2', (), 'number', required=True, metavar='x2'),
@@ -224,23 +222,23 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('theory', ('--theory',), 'flag', default=False, help="Add the points the notes' comparison questions expect."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('x1', 'y1', 'x2', 'y2', 'theory'), ignore_unknown=True),
-    ('compare', 'circle'): Spec(('compare', 'circle'), 'compare_circle', (
+    Spec(('compare', 'circle'), 'compare_circle', (
         Param('r', (), 'number', required=True, metavar='r'),
         Param('theory', ('--theory',), 'flag', default=False, help="Add the points the notes' comparison questions expect."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('r', 'theory'), ignore_unknown=True),
-    ('compare', 'curves'): Spec(('compare', 'curves'), 'compare_curves', (
+    Spec(('compare', 'curves'), 'compare_curves', (
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=(), ignore_unknown=False),
-    ('parametric', 'circle'): Spec(('parametric', 'circle'), 'parametric_circle', (
+    Spec(('parametric', 'circle'), 'parametric_circle', (
         Param('r', (), 'number', metavar='r', help='Radius r, as in circle (or --radius).'),
-        Param('center', ('--center',), 'number', nargs=2, default=(Fraction(0, 1), Fraction(0, 1)), help='Centre (xc, yc).'),
+        Param('center', ('--center',), 'number', nargs=2, default=(0, 0), help='Centre (xc, yc).'),
         Param('radius', ('--radius', '-r'), 'number', help='Radius r (default 1).'),
         Param('t_range', ('--t-range',), 'text', nargs=2, help="Parameter range; numbers or formulas such as 2*pi (default: the curve's own)."),
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('r', 'center', 'radius', 't_range', 'samples'), ignore_unknown=True),
-    ('parametric', 'ellipse'): Spec(('parametric', 'ellipse'), 'parametric_ellipse', (
+    Spec(('parametric', 'ellipse'), 'parametric_ellipse', (
         Param('center', ('--center',), 'number', nargs=2, default=(0, 0), help='Centre (xc, yc).'),
         Param('a', ('--a',), 'number', default=2, help='Semi-axis a (along x).'),
         Param('b', ('--b',), 'number', default=1, help='Semi-axis b (along y).'),
@@ -248,14 +246,14 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('center', 'a', 'b', 't_range', 'samples'), ignore_unknown=True),
-    ('parametric', 'parabola'): Spec(('parametric', 'parabola'), 'parametric_parabola', (
+    Spec(('parametric', 'parabola'), 'parametric_parabola', (
         Param('vertex', ('--vertex',), 'number', nargs=2, default=(0, 0), help='Vertex (h, k).'),
         Param('a', ('--a',), 'number', default=1, help='Coefficient a in y = k + a t^2.'),
         Param('t_range', ('--t-range',), 'text', nargs=2, help="Parameter range; numbers or formulas such as 2*pi (default: the curve's own)."),
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('vertex', 'a', 't_range', 'samples'), ignore_unknown=True),
-    ('parametric', 'line'): Spec(('parametric', 'line'), 'parametric_line', (
+    Spec(('parametric', 'line'), 'parametric_line', (
         Param('x0', (), 'number', required=True, metavar='X0', help='x of the start point P0.'),
         Param('y0', (), 'number', required=True, metavar='Y0', help='y of the start point P0.'),
         Param('x1', (), 'number', required=True, metavar='X1', help='x of the end point P1.'),
@@ -264,14 +262,14 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('x0', 'y0', 'x1', 'y1', 't_range', 'samples'), ignore_unknown=True),
-    ('parametric', 'custom'): Spec(('parametric', 'custom'), 'parametric_custom', (
+    Spec(('parametric', 'custom'), 'parametric_custom', (
         Param('x', ('--x',), 'text', required=True, help="x(t), e.g. '3*cos(t)'."),
         Param('y', ('--y',), 'text', required=True, help="y(t), e.g. '2*sin(t)'."),
         Param('t_range', ('--t-range',), 'text', nargs=2, help="Parameter range; numbers or formulas such as 2*pi (default: the curve's own)."),
         Param('samples', ('--samples', '-n'), 'integer', help='Steps of t: the curve is tabulated at N + 1 values of t, both ends included (default 16; parametric line: max(|dx|, |dy|)).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('x', 'y', 't_range', 'samples'), ignore_unknown=True),
-    ('clip', 'line'): Spec(('clip', 'line'), 'clip_line', (
+    Spec(('clip', 'line'), 'clip_line', (
         Param('x1', (), 'number', required=True, metavar='x1'),
         Param('y1', (), 'number', required=True, metavar='y1'),
         Param('x2', (), 'number', required=True, metavar='x2'),
@@ -284,19 +282,19 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('stop', ('--stop',), 'choice', choices=('length', 'edge'), help="midpoint-subdivision: split until one unit long (length, default), or also stop where a midpoint lands on the window's edge (edge)."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('x1', 'y1', 'x2', 'y2', 'window', 'method', 'normals', 'ends', 'midpoint', 'stop'), ignore_unknown=True),
-    ('clip', 'convex'): Spec(('clip', 'convex'), 'clip_convex', (
+    Spec(('clip', 'convex'), 'clip_convex', (
         Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 --window-vertices X Y X Y X Y ...', help="The segment's end points, then --window-vertices and the convex window's vertices in order."),
         Param('normals', ('--normals',), 'choice', choices=('outward', 'inward'), help='cyrus-beck: the edge normals point outward (default) or inward.'),
         Param('ends', ('--ends',), 'choice', choices=('exact', 'truncated'), help='cyrus-beck: the clipped end points exact (default) or truncated.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('words', 'normals', 'ends'), ignore_unknown=True),
-    ('clip', 'polygon'): Spec(('clip', 'polygon'), 'clip_polygon', (
+    Spec(('clip', 'polygon'), 'clip_polygon', (
         Param('words', (), 'text', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ... [--window-vertices X Y X Y X Y ...]', help="The polygon's vertices in order; then, for a window of any shape, --window-vertices and its vertices in order (convex for Sutherland-Hodgman)."),
         Param('window', ('--window', '-w'), 'number', nargs=4, help='A rectangular clipping window in world coordinates (closed: its edges are inside); or give --window-vertices after the polygon.'),
-        Param('method', ('--method', '-m'), 'choice', default='sutherland-hodgman', choices=('sutherland-hodgman', 'weiler-atherton'), help='Polygon clipping method.'),
+        Param('method', ('--method', '-m'), 'choice', default='sutherland-hodgman', choices=values('scanconv.algorithms.process_choices:PolygonClipMethod'), help='Polygon clipping method.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('words', 'window', 'method'), ignore_unknown=True),
-    ('dither', 'threshold'): Spec(('dither', 'threshold'), 'dither_threshold', (
+    Spec(('dither', 'threshold'), 'dither_threshold', (
         Param('image', ('--image', '-i'), 'text', required=True, help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: '10 200; 60 90'."),
         Param('top', ('--top',), 'number', default=255, help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
         Param('at', ('--at', '-t'), 'number', help='The threshold T (default TOP / 2).'),
@@ -305,7 +303,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('grid', ('--grid',), 'flag', default=True, secondary=('--no-grid',), help='Draw the shaded text picture.'),
         S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('image', 'top', 'at', 'compare'), ignore_unknown=True),
-    ('dither', 'ordered'): Spec(('dither', 'ordered'), 'dither_ordered', (
+    Spec(('dither', 'ordered'), 'dither_ordered', (
         Param('image', ('--image', '-i'), 'text', required=True, help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: '10 200; 60 90'."),
         Param('top', ('--top',), 'number', default=255, help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
         Param('matrix', ('--matrix', '-m'), 'text', default=2, help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
@@ -317,7 +315,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('grid', ('--grid',), 'flag', default=True, secondary=('--no-grid',), help='Draw the shaded text picture.'),
         S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('image', 'top', 'matrix', 'compare', 'scale', 'base', 'transpose'), ignore_unknown=True),
-    ('dither', 'floyd-steinberg'): Spec(('dither', 'floyd-steinberg'), 'dither_diffusion', (
+    Spec(('dither', 'floyd-steinberg'), 'dither_diffusion', (
         Param('image', ('--image', '-i'), 'text', required=True, help="The image's values, rows separated by ';' (or '/'), values by spaces or commas: '10 200; 60 90'."),
         Param('top', ('--top',), 'number', default=255, help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
         Param('kernel', ('--kernel',), 'choice', default='floyd-steinberg', choices=('floyd-steinberg', 'simple', 'jarvis-judice-ninke', 'stucki', 'burkes', 'sierra', 'two-row-sierra', 'sierra-lite', 'one-dimensional'), help='floyd-steinberg (7, 3, 5, 1)/16, simple (3, 3, 2)/8, jarvis-judice-ninke /48, stucki /42, burkes /32, sierra /32, two-row-sierra /16, sierra-lite /4, or one-dimensional (all to the next pixel).'),
@@ -329,7 +327,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('grid', ('--grid',), 'flag', default=True, secondary=('--no-grid',), help='Draw the shaded text picture.'),
         S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('image', 'top', 'kernel', 'order', 'arithmetic', 'carry', 'compare'), ignore_unknown=True),
-    ('char', 'bitmap'): Spec(('char', 'bitmap'), 'char_bitmap', (
+    Spec(('char', 'bitmap'), 'char_bitmap', (
         Param('char', (), 'text', required=True, metavar='CHAR', help='The character (A-Z, 0-9).'),
         Param('rows', ('--rows', '-r'), 'text', help="The glyph's rows, top first, separated by '/': 01110/10001/... (default: the 5 x 7 font's)."),
         Param('at', ('--at',), 'number', nargs=2, default=(0, 0), help="The character's bottom-left corner (default 0 0)."),
@@ -337,14 +335,14 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('bit_order', ('--bit-order',), 'choice', default='msb', choices=('msb', 'lsb'), help="The glyph's bytes: a row's leftmost pixel the most significant bit (msb, the usual font: a row reads as written) or the least (lsb)."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('char', 'rows', 'at', 'scale', 'bit_order'), ignore_unknown=True),
-    ('char', 'stroke'): Spec(('char', 'stroke'), 'char_stroke', (
+    Spec(('char', 'stroke'), 'char_stroke', (
         Param('char', (), 'text', required=True, metavar='CHAR', help='The character (A-Z, 0-9).'),
         Param('at', ('--at',), 'number', nargs=2, default=(0, 0), help="The character's bottom-left corner (default 0 0)."),
         Param('scale', ('--scale',), 'number', default=1, help='Scale factor, 1..16 (default 1).'),
         Param('algo', ('--algo', '-a'), 'choice', default='bresenham', choices=('bresenham', 'dda'), help='The line algorithm each stroke is drawn with.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('char', 'at', 'scale', 'algo'), ignore_unknown=True),
-    ('char', 'storage'): Spec(('char', 'storage'), 'char_storage', (
+    Spec(('char', 'storage'), 'char_storage', (
         Param('count', (), 'number', required=True, metavar='COUNT', help='How many characters the font holds.'),
         Param('width', (), 'number', required=True, metavar='WIDTH', help="A glyph's width in pixels."),
         Param('height', (), 'number', required=True, metavar='HEIGHT', help="A glyph's height in pixels."),
@@ -354,7 +352,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('base', ('--base',), 'text', default=0, help="The first glyph's byte address, decimal or 0x hexadecimal (default 0)."),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('count', 'width', 'height', 'packing', 'char', 'first', 'base'), ignore_unknown=True),
-    ('pipeline', 'line'): Spec(('pipeline', 'line'), 'pipeline_line', (
+    Spec(('pipeline', 'line'), 'pipeline_line', (
         Param('x1', (), 'number', required=True, metavar='x1'),
         Param('y1', (), 'number', required=True, metavar='y1'),
         Param('x2', (), 'number', required=True, metavar='x2'),
@@ -365,7 +363,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('clip', ('--clip',), 'choice', default='cohen-sutherland', choices=values('scanconv.algorithms.process_choices:LineClipMethod'), help='Line clipping method.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('x1', 'y1', 'x2', 'y2', 'window', 'viewport', 'algo', 'clip'), ignore_unknown=True),
-    ('pipeline', 'polygon'): Spec(('pipeline', 'polygon'), 'pipeline_polygon', (
+    Spec(('pipeline', 'polygon'), 'pipeline_polygon', (
         Param('vertices', (), 'number', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ...', help="The polygon's vertices, in order."),
         Param('window', ('--window', '-w'), 'number', nargs=4, required=True, help='The clipping window in world coordinates (closed: its edges are inside).'),
         Param('viewport', ('--viewport',), 'number', nargs=4, required=True, help='The viewport in device coordinates.'),
@@ -373,7 +371,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('rule', ('--rule',), 'choice', default='even-odd', choices=values('scanconv.algorithms.process_choices:FillRule'), help='Fill rule (with --fill).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('vertices', 'window', 'viewport', 'fill', 'rule'), ignore_unknown=True),
-    ('fill', 'boundary'): Spec(('fill', 'boundary'), 'fill_boundary', (
+    Spec(('fill', 'boundary'), 'fill_boundary', (
         Param('seed', ('--seed', '-s'), 'integer', nargs=2, required=True, help='The seed pixel.'),
         Param('vertices', (), 'number', nargs=-1, metavar='[X1 Y1 X2 Y2 X3 Y3 ...]', help='A polygon whose Bresenham outline is the boundary (or give --rows).'),
         Param('rows', ('--rows', '-r'), 'text', help="The grid as text rows, top row first, separated by '/': '#' boundary, '.' empty, '*' fill colour, other letters other colours; the bottom row is y = 0."),
@@ -382,7 +380,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('span', ('--span',), 'flag', default=False, help='The span (scan-line seed) fill: a whole run per seed.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('seed', 'vertices', 'rows', 'connectivity', 'order', 'span'), ignore_unknown=True),
-    ('fill', 'flood'): Spec(('fill', 'flood'), 'fill_flood', (
+    Spec(('fill', 'flood'), 'fill_flood', (
         Param('seed', ('--seed', '-s'), 'integer', nargs=2, required=True, help='The seed pixel.'),
         Param('vertices', (), 'number', nargs=-1, metavar='[X1 Y1 X2 Y2 X3 Y3 ...]', help='A polygon whose Bresenham outline is the boundary (or give --rows).'),
         Param('rows', ('--rows', '-r'), 'text', help="The grid as text rows, top row first, separated by '/': '#' boundary, '.' empty, '*' fill colour, other letters other colours; the bottom row is y = 0."),
@@ -391,7 +389,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('span', ('--span',), 'flag', default=False, help='The span (scan-line seed) fill: a whole run per seed.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('seed', 'vertices', 'rows', 'connectivity', 'order', 'span'), ignore_unknown=True),
-    ('antialias', 'line'): Spec(('antialias', 'line'), 'antialias_line', (
+    Spec(('antialias', 'line'), 'antialias_line', (
         Param('x1', (), 'number', required=True, metavar='x1'),
         Param('y1', (), 'number', required=True, metavar='y1'),
         Param('x2', (), 'number', required=True, metavar='x2'),
@@ -406,7 +404,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('divide', ('--divide',), 'choice', choices=values('scanconv.algorithms.process_choices:Divide'), help="subpixel: intensity c / n (n, the default: n levels above zero) or c / n^2 (n2: the fraction of the pixel's sub-pixels)."),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('x1', 'y1', 'x2', 'y2', 'method', 'samples', 'levels', 'ends', 'width', 'across', 'subgrid', 'divide'), ignore_unknown=True),
-    ('antialias', 'circle'): Spec(('antialias', 'circle'), 'antialias_circle', (
+    Spec(('antialias', 'circle'), 'antialias_circle', (
         Param('r', (), 'number', required=True, metavar='r'),
         Param('center', ('--center', '-c'), 'number', nargs=2, default=(0, 0), help='Centre (xc, yc), integers; default (0, 0).'),
         Param('method', ('--method', '-m'), 'choice', default='area', choices=values('scanconv.algorithms.process_choices:AAMethod'), help="area: exact covered area; supersample: N x N samples; wu: Wu's line; subpixel: Hearn & Baker's Bresenham on sub-pixels (wu and subpixel: lines only)."),
@@ -414,7 +412,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('levels', ('--levels', '-L'), 'integer', default=8, help='Intensity levels L (level = round(I (L - 1))).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('r', 'center', 'method', 'samples', 'levels'), ignore_unknown=True),
-    ('antialias', 'polygon'): Spec(('antialias', 'polygon'), 'antialias_polygon', (
+    Spec(('antialias', 'polygon'), 'antialias_polygon', (
         Param('vertices', (), 'number', nargs=-1, required=True, metavar='X1 Y1 X2 Y2 X3 Y3 ...', help="The polygon's vertices, in order."),
         Param('method', ('--method', '-m'), 'choice', default='area', choices=values('scanconv.algorithms.process_choices:AAMethod'), help="area: exact covered area; supersample: N x N samples; wu: Wu's line; subpixel: Hearn & Baker's Bresenham on sub-pixels (wu and subpixel: lines only)."),
         Param('samples', ('--samples', '-n'), 'integer', default=4, help='Supersampling: N x N samples per pixel (1-16).'),
@@ -422,7 +420,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('rule', ('--rule',), 'choice', default='even-odd', choices=values('scanconv.algorithms.process_choices:FillRule'), help='Fill rule: even-odd (alternate) or nonzero winding.'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('vertices', 'method', 'samples', 'levels', 'rule'), ignore_unknown=True),
-    ('printer',): Spec(('printer',), 'printer', (
+    Spec(('printer',), 'printer', (
         Param('dpi', ('--dpi',), 'number', help="The printer's dots per inch."),
         Param('lpi', ('--lpi',), 'number', help="The halftone screen's lines (cells) per inch."),
         Param('cell', ('--cell',), 'number', help="The halftone cell's side N, in dots."),
@@ -431,7 +429,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('dots', ('--dots',), 'choice', default='whole', choices=('whole', 'exact'), help='The cell from dpi / lpi: whole dots (rounded down) or exact.'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('dpi', 'lpi', 'cell', 'levels', 'count', 'dots'), ignore_unknown=True),
-    ('dither', 'lookup'): Spec(('dither', 'lookup'), 'dither_lookup', (
+    Spec(('dither', 'lookup'), 'dither_lookup', (
         Param('pixels', (), 'text', nargs=-1, required=True, metavar='X Y ...', help="The pixels' screen positions: x across, y down (row y), in pairs."),
         Param('matrix', ('--matrix', '-m'), 'text', default=4, help="The Bayer matrix of order 2, 4, 8 or 16, or a matrix's rows as --image's."),
         Param('top', ('--top',), 'number', default=255, help='The top of the scale: values run 0..TOP, an on pixel is TOP.'),
@@ -443,7 +441,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('transpose', ('--transpose',), 'flag', default=False, help='Index the matrix by x first (its transpose).'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('pixels', 'matrix', 'top', 'value', 'count', 'compare', 'scale', 'base', 'transpose'), ignore_unknown=True),
-    ('3d', 'transform'): Spec(('3d', 'transform'), 'transform3d', (
+    Spec(('3d', 'transform'), 'transform3d', (
         Param('words', (), 'text', nargs=-1, default=(), metavar='X1 Y1 Z1 ... --TRANSFORMATION ARGS ...', help='The vertices X1 Y1 Z1 ..., then the transformations in the order applied: --translate TX TY TZ, --scale S or SX SY SZ, --rotate-x/-y/-z A, --rotate-axis X1 Y1 Z1 X2 Y2 Z2 A, --reflect xy|yz|zx or --reflect plane A B C D (Ax + By + Cz + D = 0), --shear x|y|z A B (scale, rotate and shear may add --about X Y Z).'),
         Param('solid', ('--solid',), 'choice', choices=('unit-cube', 'cube', 'pyramid', 'tetrahedron'), help='A named solid instead of the vertices.'),
         Param('convention', ('--convention',), 'choice', choices=('hearn-baker', 'foley', 'rogers'), help='The conventions of a text: hearn-baker (default), foley or rogers.'),
@@ -452,7 +450,7 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('sense', ('--sense',), 'choice', choices=('standard', 'reversed'), help='A positive angle turns y toward z about x (standard, default) or the other way (reversed).'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('words', 'solid', 'convention', 'vectors', 'axes', 'sense'), ignore_unknown=True),
-    ('3d', 'project'): Spec(('3d', 'project'), 'project3d', (
+    Spec(('3d', 'project'), 'project3d', (
         Param('words', (), 'text', nargs=-1, default=(), metavar='X1 Y1 Z1 ... --TRANSFORMATION ARGS ...', help='The vertices X1 Y1 Z1 ..., then the transformations in the order applied: --translate TX TY TZ, --scale S or SX SY SZ, --rotate-x/-y/-z A, --rotate-axis X1 Y1 Z1 X2 Y2 Z2 A, --reflect xy|yz|zx or --reflect plane A B C D (Ax + By + Cz + D = 0), --shear x|y|z A B (scale, rotate and shear may add --about X Y Z).'),
         Param('solid', ('--solid',), 'choice', choices=('unit-cube', 'cube', 'pyramid', 'tetrahedron'), help='A named solid instead of the vertices.'),
         Param('parallel', ('--parallel',), 'choice', choices=('orthographic', 'oblique', 'cavalier', 'cabinet', 'isometric', 'dimetric', 'trimetric'), help='A parallel projection: orthographic (onto --view), oblique, cavalier, cabinet, isometric, dimetric or trimetric.'),
@@ -471,5 +469,8 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('cop', ('--cop',), 'choice', choices=('minus-d', 'plus-d', 'origin'), help='perspective: the centre at (0, 0, -d) on the plane z = 0, at (0, 0, d) (hearn-baker), or at the origin with the plane z = d (foley).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('words', 'solid', 'parallel', 'perspective', 'view', 'angle', 'receding', 'angles', 'ratio', 'd', 'convention', 'vectors', 'axes', 'sense', 'oblique', 'cop'), ignore_unknown=True),
-}
+)
 # fmt: on
+
+SPECS: dict[tuple[str, ...], Spec] = {spec.path: spec for spec in _ALL}
+"""Every question command's grammar, by its words."""

@@ -223,8 +223,12 @@ def _pipeline_polygon(a: Args) -> Work:
     return Work("rows", math.ceil(abs(vy[1] - vy[0])) + 2, None, "polygon/scan-line", "viewport")
 
 
-def _samples(key: str, default: int = 16, points: str | None = None) -> Callable[[Args], Work]:
-    def rows(a: Args) -> Work:
+def _samples(
+    key: str, default: int = 16, points: str | None = None
+) -> Callable[[Args], Work | None]:
+    def rows(a: Args) -> Work | None:
+        if a.get("t") is not None:  # the curve at one t (``bezier --at``): as BOUNDED's *_at
+            return None
         n = a.get("samples")
         count = default if n is None else int(_num(a, "samples"))
         _within(count, algorithms_curve_limits.MAX_SAMPLES)
@@ -236,7 +240,7 @@ def _samples(key: str, default: int = 16, points: str | None = None) -> Callable
     return rows
 
 
-def _parametric_line(a: Args) -> Work:
+def _parametric_line(a: Args) -> Work | None:
     if a.get("samples") is None:
         rows, param = _line_rows(a, ("x0", "y0", "x1", "y1"))
         return Work("rows", rows, None, "parametric", param)
@@ -311,7 +315,7 @@ def _char_bitmap(a: Args) -> Work:
 
 # keyword arguments: the keys are library functions' names, and one of them (ramp) is also a
 # method's name (image ramp), which tests/test_methods.py would count as a test of a method name
-ESTIMATES: dict[str, Callable[[Args], Work]] = dict(
+ESTIMATES: dict[str, Callable[[Args], Work | None]] = dict(
     line_style=_line_style,
     thick_line=_thick_line,
     inside=_inside,

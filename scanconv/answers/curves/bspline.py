@@ -14,6 +14,7 @@ from ...algorithms.bspline import (
     bspline_samples,
     domain,
     knot_vector,
+    named_knots,
     span,
 )
 from ...algorithms.curve_limits import (
@@ -83,6 +84,20 @@ def bspline_setup(
     return BsplineSetup(pts, n, u, kind)
 
 
+def _knots_note(kind: str, p: int) -> str:
+    """What the knot vector is, as the working notes it (TeX).
+
+    >>> print(_knots_note("open", 2), _knots_note("uniform", 2), _knots_note("explicit", 2))
+    (\\text{open: } p + 1 = 3 \\text{ equal end knots, uniform inside}) (\\text{uniform: equally spaced, not clamped}) (\\text{as given})
+    """
+    named = named_knots(kind)
+    if named is None:
+        return r"(\text{as given})"
+    if named.clamped:
+        return f"(\\text{{{named.name}: }} p + 1 = {p + 1} \\text{{ {named.words}}})"
+    return f"(\\text{{{named.name}: {named.words}}})"
+
+
 def _bspline_derived(
     pts: Sequence[Point], p: int, knots: Sequence[Number], kind: str
 ) -> list[Quantity]:
@@ -90,10 +105,7 @@ def _bspline_derived(
     m = n + p + 1
     t0, t1 = domain(knots, p, n)
     # Kept short: LaTeX cannot break this line (inline math) and it must fit the page width.
-    how = {
-        "open": f"(\\text{{open: }} p + 1 = {p + 1} \\text{{ equal end knots, uniform inside}})",
-        "uniform": r"(\text{uniform: equally spaced, not clamped})",
-    }.get(kind, r"(\text{as given})")
+    how = _knots_note(kind, p)
     terms = " + ".join(f"N_{{{i},{p}}}(t) \\cdot {point_text(pt)}" for i, pt in enumerate(pts))
     return [
         worked(

@@ -2,7 +2,7 @@
 of t, the table of samples and the joined pixels.
 
 Each curve of :data:`PARAMETRIC` is described by a :class:`_Spec` (its formulas, their working,
-the default range of t and the given values), built by the factory registered for its kind.
+the default range of t and the given values), built by the factory its record names.
 """
 
 from __future__ import annotations
@@ -232,16 +232,23 @@ def _custom_spec(inp: _Inputs) -> _Spec:
     )
 
 
-_SPECS: dict[str, Callable[[_Inputs], _Spec]] = {
-    "circle": _circle_spec,
-    "ellipse": _ellipse_spec,
-    "parabola": _parabola_spec,
-    "line": _line_spec,
-    "custom": _custom_spec,
-}
-"""How each parametric curve is built from the inputs, by its kind."""
+class _Curve(NamedTuple):
+    """A parametric curve, declared once: its name and how its :class:`_Spec` is built from
+    the inputs."""
 
-PARAMETRIC = tuple(_SPECS)
+    name: str
+    build: Callable[[_Inputs], _Spec]
+
+
+_CURVES = (
+    _Curve("circle", _circle_spec),
+    _Curve("ellipse", _ellipse_spec),
+    _Curve("parabola", _parabola_spec),
+    _Curve("line", _line_spec),
+    _Curve("custom", _custom_spec),
+)
+
+PARAMETRIC = tuple(c.name for c in _CURVES)
 """The parametric curves, by their names: circle, ellipse, parabola, line, custom."""
 
 
@@ -272,12 +279,12 @@ def parametric_solution(
     >>> list(sol.pixels())[:3]
     [(5, 0), (4, 1), (3, 2)]
     """
-    factory = _SPECS.get(kind)
-    if factory is None:
+    curve = next((c for c in _CURVES if c.name == kind), None)
+    if curve is None:
         raise InputError(
             f"unknown parametric curve {kind!r} (choose from {', '.join(PARAMETRIC)})", "kind"
         )
-    spec = factory(_Inputs(points, center, radius, a, b, vertex, x, y))
+    spec = curve.build(_Inputs(points, center, radius, a, b, vertex, x, y))
     lo, hi = spec.t_range if t_range is None else (_bound(t_range[0]), _bound(t_range[1]))
     exact = not (isinstance(lo.value, float) or isinstance(hi.value, float))
     if (exact and lo.value > hi.value) or float(lo.value) > float(hi.value):

@@ -28,6 +28,15 @@ def topics() -> list[Topic]:
     return [t for section in SECTIONS for t in lazy.load(f"{__name__}.{section}:TOPICS")]
 
 
+def listed() -> list[tuple[str, str]]:
+    """Every topic's name and question, in the notes' order (``scanconv theory --list``).
+
+    >>> listed()[0]
+    ('scan-conversion', 'Define scan conversion')
+    """
+    return [(t.name, t.title) for t in topics()]
+
+
 def topic(name: str) -> Topic:
     """The topic called ``name``, or :class:`InputError` listing the names."""
     found = {t.name: t for t in topics()}
