@@ -265,6 +265,17 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "answers.process.transform.MAX_TRANSFORMS": [
         (["transform", "0", "0", *["--translate", "1", "1"] * 21], "at most 20 transformations"),
     ],
+    # the 3D chapter: an axis's square roots exact, and few enough of them
+    "algorithms.radical.MAX_ROOT": [
+        ("3d transform 0 0 0 --rotate-axis 0 0 0 1000000 1000000 1 30".split(), "past 10"),
+    ],
+    "answers.space.transform.MAX_ROOT_PRIMES": [
+        (
+            "3d transform 1 2 3 --rotate-axis 0 0 0 1 2 0 30 --rotate-axis 0 0 0 1 2 3 15 "
+            "--rotate-axis 0 0 0 1 1 3 15 --rotate-axis 0 0 0 1 1 4 15".split(),
+            "at most 6",
+        ),
+    ],
     # scanconv check: a student's file, and the question it is marked against
     "marking.student_table.MAX_TABLE_BYTES": [
         (["check", str(CHECK / "too-large.csv"), "--", "line", "2", "2", "10", "6"], "bytes")

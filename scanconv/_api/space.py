@@ -54,6 +54,61 @@ SENSE = Opt(
 )
 
 
+PARALLEL = Opt(
+    "--parallel",
+    help="A parallel projection: orthographic (onto --view), oblique, cavalier, cabinet, "
+    "isometric, dimetric or trimetric.",
+    choices=(
+        "orthographic",
+        "oblique",
+        "cavalier",
+        "cabinet",
+        "isometric",
+        "dimetric",
+        "trimetric",
+    ),
+)
+PERSPECTIVE = Opt(
+    "--perspective",
+    help="A perspective projection: one-point, two-point (turned about y by --angle) or "
+    "three-point (turned about y, then x, by --angles).",
+    choices=("one-point", "two-point", "three-point"),
+)
+VIEW = Opt(
+    "--view", help="orthographic: the plane, xy (default), yz or zx.", choices=("xy", "yz", "zx")
+)
+ANGLE = Opt(
+    "--angle",
+    help="oblique: the receding angle phi (default 45), or the projectors' angle alpha with "
+    "--oblique-angle projector; two-point: the turn about y (default 30).",
+    metavar="A",
+)
+RECEDING = Opt(
+    "--receding", help="oblique with --oblique-angle projector: phi (default 45).", metavar="PHI"
+)
+ANGLES = Opt(
+    "--angles",
+    help="trimetric, three-point: the turns about y and x (default 30 45; 30 30).",
+    metavar="PHI THETA",
+)
+RATIO = Opt(
+    "--ratio",
+    help="oblique: L1 (default 1/2); dimetric: the z axis's foreshortening (default 1/2).",
+)
+D = Opt("--d", help="perspective: the distance d of the centre of projection (default 1).")
+OBLIQUE = Opt(
+    "--oblique-angle",
+    help="oblique: --angle is the receding angle phi (default) or the projectors' angle alpha.",
+    choices=("receding", "projector"),
+)
+COP = Opt(
+    "--cop",
+    help="perspective: the centre at (0, 0, -d) on the plane z = 0, at (0, 0, d) (hearn-baker), "
+    "or at the origin with the plane z = d (foley).",
+    choices=("minus-d", "plus-d", "origin"),
+)
+
+
 def _given(vectors: str | None, axes: str | None, sense: str | None) -> dict[str, str | None]:
     return {"vectors": vectors, "axes": axes, "sense": sense}
 
@@ -114,97 +169,20 @@ def project3d(
     words: Annotated[Sequence[str], WORDS] = (),
     solid: Annotated[str | None, SOLID] = None,
     *,
-    parallel: Annotated[
-        str | None,
-        Opt(
-            "--parallel",
-            help="A parallel projection: orthographic (onto --view), oblique, cavalier, "
-            "cabinet, isometric, dimetric or trimetric.",
-            choices=(
-                "orthographic",
-                "oblique",
-                "cavalier",
-                "cabinet",
-                "isometric",
-                "dimetric",
-                "trimetric",
-            ),
-        ),
-    ] = None,
-    perspective: Annotated[
-        str | None,
-        Opt(
-            "--perspective",
-            help="A perspective projection: one-point, two-point (turned about y by --angle) "
-            "or three-point (turned about y, then x, by --angles).",
-            choices=("one-point", "two-point", "three-point"),
-        ),
-    ] = None,
-    view: Annotated[
-        str | None,
-        Opt(
-            "--view",
-            help="orthographic: the plane, xy (default), yz or zx.",
-            choices=("xy", "yz", "zx"),
-        ),
-    ] = None,
-    angle: Annotated[
-        str | None,
-        Opt(
-            "--angle",
-            help="oblique: the receding angle phi (default 45), or the projectors' angle alpha "
-            "with --oblique-angle projector; two-point: the turn about y (default 30).",
-            metavar="A",
-        ),
-    ] = None,
-    receding: Annotated[
-        str | None,
-        Opt(
-            "--receding",
-            help="oblique with --oblique-angle projector: phi (default 45).",
-            metavar="PHI",
-        ),
-    ] = None,
-    angles: Annotated[
-        tuple[str, str] | None,
-        Opt(
-            "--angles",
-            help="trimetric, three-point: the turns about y and x (default 30 45; 30 30).",
-            metavar="PHI THETA",
-        ),
-    ] = None,
-    ratio: Annotated[
-        NumberLike | None,
-        Opt(
-            "--ratio",
-            help="oblique: L1 (default 1/2); dimetric: the z axis's foreshortening (default 1/2).",
-        ),
-    ] = None,
-    d: Annotated[
-        NumberLike | None,
-        Opt("--d", help="perspective: the distance d of the centre of projection (default 1)."),
-    ] = None,
+    parallel: Annotated[str | None, PARALLEL] = None,
+    perspective: Annotated[str | None, PERSPECTIVE] = None,
+    view: Annotated[str | None, VIEW] = None,
+    angle: Annotated[str | None, ANGLE] = None,
+    receding: Annotated[str | None, RECEDING] = None,
+    angles: Annotated[tuple[str, str] | None, ANGLES] = None,
+    ratio: Annotated[NumberLike | None, RATIO] = None,
+    d: Annotated[NumberLike | None, D] = None,
     convention: Annotated[str | None, CONVENTION] = None,
     vectors: Annotated[Literal["column", "row"] | None, VECTORS] = None,
     axes: Annotated[Literal["right", "left"] | None, AXES] = None,
     sense: Annotated[Literal["standard", "reversed"] | None, SENSE] = None,
-    oblique: Annotated[
-        Literal["receding", "projector"] | None,
-        Opt(
-            "--oblique-angle",
-            help="oblique: --angle is the receding angle phi (default) or the projectors' angle alpha.",
-            choices=("receding", "projector"),
-        ),
-    ] = None,
-    cop: Annotated[
-        Literal["minus-d", "plus-d", "origin"] | None,
-        Opt(
-            "--cop",
-            help="perspective: the centre at (0, 0, -d) on the plane z = 0, at (0, 0, d) "
-            "(hearn-baker), or at the origin with the plane z = d (foley).",
-            choices=("minus-d", "plus-d", "origin"),
-        ),
-    ] = None,
+    oblique: Annotated[Literal["receding", "projector"] | None, OBLIQUE] = None,
+    cop: Annotated[Literal["minus-d", "plus-d", "origin"] | None, COP] = None,
 ) -> Solution:
     """A parallel or perspective projection of a solid (``scanconv 3d project``).
 

@@ -26,13 +26,14 @@ from ...core.ideal import Polyline
 from ...core.numeric import Number, fmt_short
 from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
 from ..methods import method
-from ..process._shared import json_scalar, matrix_json, matrix_rows, matrix_tex, matrix_text, text
+from ..process._shared import json_scalar, matrix_json, text
 from ..process.transform import parse_angle
 from .transform import (
     MATRIX_COLUMNS,
     Factor,
     Stage,
     approx_point,
+    composite,
     conventions,
     irrational,
     notes_of,
@@ -343,6 +344,57 @@ def _vp_table(m: Matrix4) -> tuple[Table, list[Any]]:
     return Table("Vanishing points of the principal axes", cols, lambda: rows), data
 
 
+def _projected(m: Matrix4, s: space.Solid) -> list[pj.Projected]:
+    """Each vertex through ``m``, refused at or behind the centre of projection."""
+    projected = []
+    for lab, p in zip(s.labels, s.vertices, strict=True):
+        try:
+            projected.append(pj.project(m, p))
+        except ZeroDivisionError:
+            raise InputError(
+                f"vertex {lab} {point_text(p)} is in the plane of the centre of projection (W = 0)",
+                "d",
+            ) from None
+        if approx(projected[-1].homogeneous[3]) < 0:
+            raise InputError(
+                f"vertex {lab} {point_text(p)} is behind the centre of projection (W < 0)", "d"
+            )
+    return projected
+
+
+def _vertex_table(
+    s: space.Solid,
+    projected: Sequence[pj.Projected],
+    uv: Sequence[tuple[Scalar, Scalar]],
+    uv_index: tuple[int, int],
+) -> Table:
+    """Each vertex, M·P and the projected point (and its approximation where irrational)."""
+    u_name, v_name = "xyz"[uv_index[0]], "xyz"[uv_index[1]]
+    rough = irrational(uv)
+    cols = [
+        Column("vertex", "vertex", r"\text{vertex}", role="label"),
+        Column("before", "P = (x, y, z)", "P = (x, y, z)", role="given"),
+        Column("h", "M·P = (X, Y, Z, W)", r"M P = (X, Y, Z, W)", role="working"),
+        Column("after", f"P' = ({u_name}', {v_name}')", f"P' = ({u_name}', {v_name}')"),
+    ]
+    if rough:
+        cols.append(Column("approx", "P' (approx.)", r"P' \text{ (approx.)}"))
+
+    def rows() -> list[tuple[str, ...]]:
+        return [
+            (
+                lab,
+                point_text(p),
+                "(" + ", ".join(text(v) for v in q.homogeneous) + ")",
+                point_text(w),
+                *((approx_point(w),) if rough else ()),
+            )
+            for lab, p, q, w in zip(s.labels, s.vertices, projected, uv, strict=True)
+        ]
+
+    return Table("Projected vertices", tuple(cols), rows)
+
+
 def project_solution(
     words: Sequence[str],
     solid: str | None = None,
@@ -370,14 +422,8 @@ def project_solution(
     if (parallel is None) == (perspective is None):
         raise InputError("choose one projection: --parallel KIND or --perspective KIND", "parallel")
     kind = str(parallel or perspective)
-    a = {
-        "view": view,
-        "angle": angle,
-        "receding": receding,
-        "angles": angles,
-        "ratio": ratio,
-        "d": d,
-    }
+    a: dict[str, Any] = {"view": view, "angle": angle, "receding": receding, "angles": angles}
+    a |= {"ratio": ratio, "d": d}
     built: Built = method("3d", kind).load("generator")(a, used, sense)
     for name, value in a.items():
         if value is not None and name not in built.reads:
@@ -385,61 +431,13 @@ def project_solution(
     label = built.label
     all_stages = [*stages, Stage(label, tuple(built.factors), tuple(built.work), True)]
     derived, mat_rows, mats = stage_matrices(all_stages, written)
-    m = space.compose(mats)
-    order = written.product([f"M{i}" for i in range(1, len(mats) + 1)])
-    shown = written.shown(m)
-    if len(mats) > 1:
-        derived.append(
-            Quantity(
-                "M",
-                matrix_json(shown),
-                f"M = {order} = {matrix_text(shown)}",
-                f"M = {order.replace('·', ' ')} = {matrix_tex(shown)}",
-            )
-        )
-        mat_rows += matrix_rows("M", f"composite {order}", shown)
-    projected = []
-    for lab, p in zip(s.labels, s.vertices, strict=True):
-        try:
-            projected.append(pj.project(m, p))
-        except ZeroDivisionError:
-            raise InputError(
-                f"vertex {lab} {point_text(p)} is in the plane of the centre of projection (W = 0)",
-                "d",
-            ) from None
-        if projected[-1].homogeneous[3] == 0 or approx(projected[-1].homogeneous[3]) < 0:
-            raise InputError(
-                f"vertex {lab} {point_text(p)} is behind the centre of projection (W < 0)", "d"
-            )
-    uv_index = built.uv
-    uv = pj.drawn([q.point for q in projected], uv_index)
-    names = "xyz"
-    u_name, v_name = names[uv_index[0]], names[uv_index[1]]
+    m, order, shown = composite(mats, written, derived, mat_rows, always=False)
+    projected = _projected(m, s)
+    uv = pj.drawn([q.point for q in projected], built.uv)
     rough = irrational(uv)
-    cols = [
-        Column("vertex", "vertex", r"\text{vertex}", role="label"),
-        Column("before", "P = (x, y, z)", "P = (x, y, z)", role="given"),
-        Column("h", "M·P = (X, Y, Z, W)", r"M P = (X, Y, Z, W)", role="working"),
-        Column("after", f"P' = ({u_name}', {v_name}')", f"P' = ({u_name}', {v_name}')"),
-    ]
-    if rough:
-        cols.append(Column("approx", "P' (approx.)", r"P' \text{ (approx.)}"))
-
-    def rows() -> list[tuple[str, ...]]:
-        return [
-            (
-                lab,
-                point_text(p),
-                "(" + ", ".join(text(v) for v in q.homogeneous) + ")",
-                point_text(w),
-                *((approx_point(w),) if rough else ()),
-            )
-            for lab, p, q, w in zip(s.labels, s.vertices, projected, uv, strict=True)
-        ]
-
     tables = [
         Table(f"Matrices ({written.law})", MATRIX_COLUMNS, lambda: mat_rows),
-        Table("Projected vertices", tuple(cols), rows),
+        _vertex_table(s, projected, uv, built.uv),
     ]
     data: dict[str, Any] = {
         "conventions": used,

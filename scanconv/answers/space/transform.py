@@ -372,6 +372,31 @@ def stage_matrices(
     return derived, rows, mats
 
 
+def composite(
+    mats: Sequence[Matrix4],
+    written: Written,
+    derived: list[Quantity],
+    rows: list[tuple[str, ...]],
+    always: bool = True,
+) -> tuple[Matrix4, str, Matrix4]:
+    """The composite of the stages' matrices, its order written and the matrix as shown; its
+    working and table rows added to ``derived`` and ``rows`` (``always``: even of one)."""
+    m = space.compose(mats)
+    order = written.product([f"M{i}" for i in range(1, len(mats) + 1)])
+    shown = written.shown(m)
+    if always or len(mats) > 1:
+        derived.append(
+            Quantity(
+                "M",
+                matrix_json(shown),
+                f"M = {order} = {matrix_text(shown)}",
+                f"M = {order.replace('·', ' ')} = {matrix_tex(shown)}",
+            )
+        )
+        rows += matrix_rows("M", f"composite {order}", shown)
+    return m, order, shown
+
+
 MATRIX_COLUMNS = (
     Column("matrix", "matrix", r"\text{matrix}", role="label"),
     Column("work", "transformation", r"\text{transformation}", role="given"),
@@ -439,18 +464,7 @@ def transform_solution(
     if not stages:
         raise InputError(f"no transformation given (choose from {', '.join(NAMES)})", "transforms")
     derived, mat_rows, mats = stage_matrices(stages, written)
-    m = space.compose(mats)
-    order = written.product([f"M{i}" for i in range(1, len(mats) + 1)])
-    shown = written.shown(m)
-    derived.append(
-        Quantity(
-            "M",
-            matrix_json(shown),
-            f"M = {order} = {matrix_text(shown)}",
-            f"M = {order.replace('·', ' ')} = {matrix_tex(shown)}",
-        )
-    )
-    mat_rows += matrix_rows("M", f"composite {order}", shown)
+    m, order, shown = composite(mats, written, derived, mat_rows)
     after = [space.apply(m, p) for p in s.vertices]
     det = space.determinant(m)
     derived.append(
