@@ -114,7 +114,10 @@ def module_text() -> str:
         "SPECS: dict[tuple[str, ...], Spec] = {spec.path: spec for spec in _ALL}",
         '"""Every question command\'s grammar, by its words."""',
     ]
-    return "\n".join(lines) + "\n"
+    text = "\n".join(lines) + "\n"
+    if "Fraction(" not in text:  # no default is a fraction: the import would be unused
+        text = text.replace("from fractions import Fraction\n\n", "", 1)
+    return text
 
 
 if __name__ == "__main__":
