@@ -50,6 +50,8 @@ from ._api import storage as storage
 from ._api import thick_line as thick_line
 from ._api import transform as transform
 from ._api import viewport as viewport
+from ._api import visible_backface as visible_backface
+from ._api import visible_zbuffer as visible_zbuffer
 from ._api.color_theory import color as color
 from ._api.color_theory import theory as theory
 from ._api.generators import basic_line as basic
@@ -158,4 +160,6 @@ __all__ = [
     "thick_line",
     "transform",
     "viewport",
+    "visible_backface",
+    "visible_zbuffer",
 ]

@@ -66,6 +66,8 @@ from .values import NumberLike as NumberLike
 from .values import PointLike as PointLike
 from .values import PointsLike as PointsLike
 from .values import TRangeLike as TRangeLike
+from .visible import visible_backface as visible_backface
+from .visible import visible_zbuffer as visible_zbuffer
 
 __all__ = [
     "CircleMethod",
@@ -122,4 +124,6 @@ __all__ = [
     "thick_line",
     "transform",
     "viewport",
+    "visible_backface",
+    "visible_zbuffer",
 ]

@@ -503,6 +503,13 @@ _CHARACTERS = (
            no_generator="arithmetic, worked in one pass", model="PlainRowsTable"),
 )  # fmt: skip
 
+_V = "scanconv.answers.visible."
+_VISIBLE = (
+    _plain("3d", "backface", "back-face detection", _V + "backface:backface_solution", _G + "visible:backface"),
+    _plain("3d", "zbuffer", "depth-buffer (z-buffer) method", _V + "zbuffer:zbuffer_solution",
+           _G + "visible_zbuffer:zbuffer"),
+)  # fmt: skip
+
 # fmt: off
 _COSTS: dict[str, dict[str, float]] = {
     "line/basic": {"csv": 16.2, "json": 37.4, "plain": 53.5, "markdown": 41.7, "latex": 61.6, "html": 107.3, "rich": 695.7},
@@ -539,7 +546,7 @@ METHODS: dict[str, Method] = {
     m.key: _with_costs(m)
     for m in (
         *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_PRINTER, *_INSIDE,
-        *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS,
+        *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS, *_VISIBLE,
     )
 }  # fmt: skip
 """Every method record, by ``"command/method"``."""

@@ -51,6 +51,7 @@ PANELS = (
         ),
     ),
     ("Theory and exam", ("color", "theory", "exam", "site")),
+    ("3D", ("3d",)),
 )
 
 EXAMPLES = """\b
@@ -134,6 +135,10 @@ char_app = _subapp(
 pipeline_app = _subapp(
     "pipeline", "The scan-conversion process end to end: clip, map to the viewport, scan convert."
 )
+three_d_app = _subapp(
+    "3d",
+    "3D: transformations, projections and visible-surface detection (back faces, z-buffer, ...).",
+)
 
 
 def _version(value: bool) -> None:
@@ -172,6 +177,7 @@ TOPIC_MODULES: tuple[str, ...] = (
     "check",
     "site",
     "serve",
+    "three_d",
 )
 
 #: Which module defines each top-level command or group.
@@ -212,6 +218,7 @@ TOPIC_OF = {
     "exam": "exam",
     "site": "site",
     "mcp": "serve",
+    "3d": "three_d",
 }
 
 

@@ -108,6 +108,8 @@ _ALL = (
     Command(("char", "bitmap"), "syllabus.char_bitmap"),
     Command(("char", "stroke"), "syllabus.char_stroke"),
     Command(("image", "ramp"), "image.ramp", picture=True, origin=False, ignore_unknown=False),
+    Command(("3d", "backface"), "visible.visible_backface", grid=False, name="visible_backface"),
+    Command(("3d", "zbuffer"), "visible.visible_zbuffer", grid=False, name="visible_zbuffer"),
 )
 
 COMMANDS: dict[tuple[str, ...], Command] = {c.path: c for c in _ALL}

@@ -17,10 +17,12 @@ def specs() -> dict[tuple[str, ...], Spec]:
     from . import grammar_table as table
     from .declared import COMMANDS
 
-    return {
+    known = {
         path: spec_of(COMMANDS[path], table.S) if path in COMMANDS else spec
         for path, spec in table.SPECS.items()
     }
+    new = {path: spec_of(c, table.S) for path, c in COMMANDS.items() if path not in known}
+    return known | new  # a command declared since the table was written comes last
 
 
 def _param_source(p: Param) -> str:

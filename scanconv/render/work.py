@@ -279,6 +279,14 @@ def _char_bitmap(a: Args) -> Work:
     return Work("rows", max(bits, 1), None, "char/bitmap", "scale", max(1.0, scale * scale / 8))
 
 
+def _zbuffer(a: Args) -> Work:
+    # a row per polygon and pixel of the grid at most (the grid's side is refused beyond 32)
+    polygons = 1 + sum(1 for v in a["polygons"] if isinstance(v, str) and v.strip() == ":")
+    size = a.get("size")
+    w, h = (32, 32) if size is None else algorithms_image_limits.parse_size(str(size))
+    return Work("rows", max(1, polygons * w * h), None, "3d/zbuffer", "size")
+
+
 ESTIMATES: dict[str, Callable[[Args], Work]] = {
     "line_style": _line_style,
     "thick_line": _thick_line,
@@ -307,6 +315,7 @@ ESTIMATES: dict[str, Callable[[Args], Work]] = {
     "bspline_basis": _samples("curve", points="points"),
     "continuity": _samples("curve", points="first"),
     "local_control": _samples("curve", points="points"),
+    "visible_zbuffer": _zbuffer,
 }
 """How the size of each library function's answer is estimated, by the function's name."""
 
@@ -334,6 +343,7 @@ BOUNDED: dict[str, str] = {
     "char_stroke": "at most 4 strokes on a 5 x 7 grid, scaled at most 16 times",
     "char_storage": "closed-form arithmetic on exact integers",
     "clip_convex": "one line against at most algorithms.cyrus_beck.MAX_EDGES = 64 edges",
+    "visible_backface": "at most algorithms.visible.MAX_FACES = 24 faces of 16 vertices, a row each",
 }
 """The library functions whose answer is small whatever their arguments, and why."""
 

@@ -1,0 +1,27 @@
+"""Visible-surface detection: ``3d backface`` (the sign test of each face's normal) and
+``3d zbuffer`` (the depth buffer on a small grid)."""
+
+from __future__ import annotations
+
+from .application import three_d_app
+from .declared import command
+
+command(
+    three_d_app,
+    ("3d", "backface"),
+    help="""Back-face detection: each face's normal N = (V2 - V1) x (V3 - V1) with its numbers,
+    the view vector V, the sign of V.N and the table of faces, visible or hidden.
+
+    Example: scanconv 3d backface --solid cube
+    """,
+)
+command(
+    three_d_app,
+    ("3d", "zbuffer"),
+    help="""The z-buffer on a small grid: each polygon's plane and depth increments (-A/C along a
+    scan line, (A/m + B)/C down an edge), the depth comparisons and buffer updates, the final
+    frame and depth buffers.
+
+    Example: scanconv 3d zbuffer 0 0 2 5 0 2 0 5 2 : 1 1 4 5 1 0 1 5 0 --size 5
+    """,
+)
