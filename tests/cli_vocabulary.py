@@ -959,7 +959,10 @@ VOCABULARY[("3d", "backface")] = Vocab(
     too_few=(("0", "0", "0", "1", "0", "0"), "at least 3 vertices"),
     too_many=(tuple(str(c) for i in range(17) for c in (i, i * i, 0)), "at most 16"),
     wrong_type=(("0", "0", "0", "1", "0", "0", "0", "1"), "each vertex is x y z"),
-    small={"--solid": ("cube", "pyramid", "tetrahedron"), "--direction": ("into-scene", "to-viewer")},
+    small={
+        "--solid": ("cube", "pyramid", "tetrahedron"),
+        "--direction": ("into-scene", "to-viewer"),
+    },
     positional=("0", "1", "2", "-1", "1/2", ":"),
 )
 VOCABULARY[("3d", "zbuffer")] = Vocab(
