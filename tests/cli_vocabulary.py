@@ -981,3 +981,19 @@ VOCABULARY[("3d", "zbuffer")] = Vocab(
     small={"--size": ("3", "4x3"), "--depth": ("larger-nearer", "smaller-nearer")},
     positional=("0", "1", "2", "3", "1/2", ":"),
 )
+VOCABULARY[("3d", "warnock")] = Vocab(
+    valid=((*ZA, ":", *ZB), (*ZA, ":", *ZB, "--size", "4", "--depth", "smaller-nearer")),
+    numbers=(
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+    ),
+    out_of_range=(
+        ((*ZA, "--size", "64"), "1 to 32"),
+        (("0", "0", "1", "3", "0", "1e10", "0", "3", "1"), "out of range"),
+    ),
+    too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
+    too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
+    wrong_type=((*ZA, "--size", "6"), "2^n"),
+    small={"--size": ("2", "4"), "--ties": ("keep", "replace")},
+    positional=("0", "1", "2", "3", "1/2", ":"),
+)

@@ -67,6 +67,7 @@ from .values import PointLike as PointLike
 from .values import PointsLike as PointsLike
 from .values import TRangeLike as TRangeLike
 from .visible import visible_backface as visible_backface
+from .visible import visible_warnock as visible_warnock
 from .visible import visible_zbuffer as visible_zbuffer
 
 __all__ = [
@@ -125,5 +126,6 @@ __all__ = [
     "transform",
     "viewport",
     "visible_backface",
+    "visible_warnock",
     "visible_zbuffer",
 ]

@@ -19,12 +19,14 @@ from .values import NumberLike, _choice, _maybe, _number
 
 if TYPE_CHECKING:
     from ..answers.visible import backface as answers_backface
+    from ..answers.visible import warnock as answers_warnock
     from ..answers.visible import zbuffer as answers_zbuffer
     from ..core.numeric import Number
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
     answers_backface = lazy.module("scanconv.answers.visible.backface")
     answers_zbuffer = lazy.module("scanconv.answers.visible.zbuffer")
+    answers_warnock = lazy.module("scanconv.answers.visible.warnock")
 
 FacesLike = Sequence[NumberLike] | Sequence[Sequence[tuple[NumberLike, NumberLike, NumberLike]]]
 """Faces: flat numbers with ``":"`` between faces, or faces of ``(x, y, z)`` points."""
@@ -257,5 +259,60 @@ def visible_zbuffer(
         _values(polygons, "polygons"),
         size=None if size is None else _choice(size, "size"),
         far=None if far is None else _number(far, "far"),
+        conventions={"depth": _maybe(depth, "depth"), "ties": _maybe(ties, "ties")},
+    )
+
+
+@answers
+def visible_warnock(
+    polygons: Annotated[FacesLike, POLYGONS],
+    *,
+    size: Annotated[
+        str | None,
+        Opt(
+            "--size",
+            help="The grid's side, 2^n pixels (1 to 32; default: the smallest holding the vertices).",
+            show_default=False,
+        ),
+    ] = None,
+    depth: Annotated[str | None, DEPTH] = None,
+    ties: Annotated[str | None, TIES] = None,
+) -> Solution:
+    """Warnock's area subdivision (``scanconv 3d warnock``).
+
+    Parameters
+    ----------
+    polygons : numbers or sequence of polygons
+        ``x y z`` of each vertex with ``":"`` between polygons (A, B, ...), each convex, planar
+        and not seen edge-on; at most 8, with ``|x|, |y| <= 64``.
+    size : str, optional
+        The grid's side, a power of two up to 32 (default: the smallest holding the vertices).
+    depth : {"larger-nearer", "smaller-nearer"}, optional
+        Which z is nearer (default ``"larger-nearer"``).
+    ties : {"keep", "replace"}, optional
+        Equal depths at a pixel: the polygon given first (default) or last.
+
+    Returns
+    -------
+    Answer
+        The windows depth first, each polygon's class against each, the decision; the final
+        frame; ``.data["windows"]``, ``.data["frame"]``.
+
+    Notes
+    -----
+    Hearn & Baker, *Computer Graphics, C version*, 2nd ed., §13-7 (area-subdivision method):
+    surrounding, overlapping, inside and outside surfaces; a window is done when all surfaces
+    are outside, one is inside, overlapping or surrounding, or a surrounding one obscures
+    the others.
+
+    Examples
+    --------
+    >>> sol = visible_warnock([0, 0, 1, 4, 0, 1, 0, 4, 1, ":", 0, 0, 2, 2, 0, 2, 0, 2, 2])
+    >>> sol.data["windows"][0]["classes"], sol.data["frame"]["0,0"]
+    (['contained', 'contained'], 'B')
+    """
+    return answers_warnock.warnock_solution(
+        _values(polygons, "polygons"),
+        size=None if size is None else _choice(size, "size"),
         conventions={"depth": _maybe(depth, "depth"), "ties": _maybe(ties, "ties")},
     )

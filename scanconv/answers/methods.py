@@ -508,6 +508,8 @@ _VISIBLE = (
     _plain("3d", "backface", "back-face detection", _V + "backface:backface_solution", _G + "visible:backface"),
     _plain("3d", "zbuffer", "depth-buffer (z-buffer) method", _V + "zbuffer:zbuffer_solution",
            _G + "visible_zbuffer:zbuffer"),
+    _plain("3d", "warnock", "Warnock's area subdivision", _V + "warnock:warnock_solution",
+           _G + "visible_warnock:warnock"),
 )  # fmt: skip
 
 # fmt: off

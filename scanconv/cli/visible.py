@@ -1,5 +1,5 @@
-"""Visible-surface detection: ``3d backface`` (the sign test of each face's normal) and
-``3d zbuffer`` (the depth buffer on a small grid)."""
+"""Visible-surface detection: ``3d backface`` (the sign test of each face's normal),
+``3d zbuffer`` (the depth buffer on a small grid) and ``3d warnock`` (area subdivision)."""
 
 from __future__ import annotations
 
@@ -23,5 +23,15 @@ command(
     frame and depth buffers.
 
     Example: scanconv 3d zbuffer 0 0 2 5 0 2 0 5 2 : 1 1 4 5 1 0 1 5 0 --size 5
+    """,
+)
+command(
+    three_d_app,
+    ("3d", "warnock"),
+    help="""Warnock's area subdivision: the windows depth first (the quadtree), each polygon's
+    class against each window (surrounding, intersecting, contained, disjoint), the test that
+    decides it, and the final frame.
+
+    Example: scanconv 3d warnock 0 0 1 6 0 1 0 6 1 : 2 2 3 7 2 3 2 7 3 --size 8
     """,
 )

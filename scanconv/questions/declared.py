@@ -110,6 +110,7 @@ _ALL = (
     Command(("image", "ramp"), "image.ramp", picture=True, origin=False, ignore_unknown=False),
     Command(("3d", "backface"), "visible.visible_backface", grid=False, name="visible_backface"),
     Command(("3d", "zbuffer"), "visible.visible_zbuffer", grid=False, name="visible_zbuffer"),
+    Command(("3d", "warnock"), "visible.visible_warnock", grid=False, name="visible_warnock"),
 )
 
 COMMANDS: dict[tuple[str, ...], Command] = {c.path: c for c in _ALL}

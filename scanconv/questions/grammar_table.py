@@ -461,5 +461,12 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('ties', ('--ties',), 'choice', choices=('keep', 'replace'), help='Equal depths: keep (the polygon drawn first keeps the pixel, the default) or replace.'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('polygons', 'size', 'far', 'depth', 'ties'), ignore_unknown=True),
+    ('3d', 'warnock'): Spec(('3d', 'warnock'), 'visible_warnock', (
+        Param('polygons', (), 'coordinate', nargs=-1, required=True, metavar='X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3 ... [: ...]', help="The polygons: x y z of each vertex, ':' between polygons (named A, B, ... in order)."),
+        Param('size', ('--size',), 'text', help="The grid's side, 2^n pixels (1 to 32; default: the smallest holding the vertices)."),
+        Param('depth', ('--depth',), 'choice', choices=('larger-nearer', 'smaller-nearer'), help='larger-nearer: a larger z is nearer, z > depth(x, y) writes (Hearn & Baker, the default); smaller-nearer: z < depth(x, y) writes.'),
+        Param('ties', ('--ties',), 'choice', choices=('keep', 'replace'), help='Equal depths: keep (the polygon drawn first keeps the pixel, the default) or replace.'),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('polygons', 'size', 'depth', 'ties'), ignore_unknown=True),
 }
 # fmt: on
