@@ -67,6 +67,7 @@ from .values import PointLike as PointLike
 from .values import PointsLike as PointsLike
 from .values import TRangeLike as TRangeLike
 from .visible import visible_backface as visible_backface
+from .visible import visible_scanline as visible_scanline
 from .visible import visible_warnock as visible_warnock
 from .visible import visible_zbuffer as visible_zbuffer
 
@@ -126,6 +127,7 @@ __all__ = [
     "transform",
     "viewport",
     "visible_backface",
+    "visible_scanline",
     "visible_warnock",
     "visible_zbuffer",
 ]

@@ -19,6 +19,7 @@ from .values import NumberLike, _choice, _maybe, _number
 
 if TYPE_CHECKING:
     from ..answers.visible import backface as answers_backface
+    from ..answers.visible import scanline as answers_scanline
     from ..answers.visible import warnock as answers_warnock
     from ..answers.visible import zbuffer as answers_zbuffer
     from ..core.numeric import Number
@@ -26,6 +27,7 @@ if TYPE_CHECKING:
 else:  # each command's answer module, loaded by its first call
     answers_backface = lazy.module("scanconv.answers.visible.backface")
     answers_zbuffer = lazy.module("scanconv.answers.visible.zbuffer")
+    answers_scanline = lazy.module("scanconv.answers.visible.scanline")
     answers_warnock = lazy.module("scanconv.answers.visible.warnock")
 
 FacesLike = Sequence[NumberLike] | Sequence[Sequence[tuple[NumberLike, NumberLike, NumberLike]]]
@@ -312,6 +314,54 @@ def visible_warnock(
     (['contained', 'contained'], 'B')
     """
     return answers_warnock.warnock_solution(
+        _values(polygons, "polygons"),
+        size=None if size is None else _choice(size, "size"),
+        conventions={"depth": _maybe(depth, "depth"), "ties": _maybe(ties, "ties")},
+    )
+
+
+@answers
+def visible_scanline(
+    polygons: Annotated[FacesLike, POLYGONS],
+    *,
+    size: Annotated[str | None, SIZE] = None,
+    depth: Annotated[str | None, DEPTH] = None,
+    ties: Annotated[str | None, TIES] = None,
+) -> Solution:
+    """The scan-line method of visible-surface detection (``scanconv 3d scanline``).
+
+    Parameters
+    ----------
+    polygons : numbers or sequence of polygons
+        ``x y z`` of each vertex with ``":"`` between polygons (A, B, ...), each planar and not
+        seen edge-on; at most 8, with ``|x|, |y| <= 64``.
+    size : str, optional
+        The grid ``"WxH"`` (or ``"N"``), at most 32 x 32; default: from 0 to the largest
+        vertex coordinates.
+    depth : {"larger-nearer", "smaller-nearer"}, optional
+        Which z is nearer (default ``"larger-nearer"``).
+    ties : {"keep", "replace"}, optional
+        Equal depths at a pixel: the polygon given first (default) or last.
+
+    Returns
+    -------
+    Answer
+        The edge table, the polygon table (planes, flags), each scan line's active edges and
+        intervals with the flags on and the depths compared; the frame; ``.data["frame"]``.
+
+    Notes
+    -----
+    Hearn & Baker, *Computer Graphics, C version*, 2nd ed., §13-4: the edge table, the
+    polygon table with an in/out flag per polygon, the active edge list of each scan line, and
+    depth calculations only where more than one flag is on.
+
+    Examples
+    --------
+    >>> sol = visible_scanline([0, 0, 1, 4, 0, 1, 0, 4, 1, ":", 1, 0, 2, 4, 0, 2, 4, 3, 2], size="5")
+    >>> [sol.data["frame"][f"{x},1"] for x in range(4)]
+    ['A', 'A', 'B', 'B']
+    """
+    return answers_scanline.scanline_solution(
         _values(polygons, "polygons"),
         size=None if size is None else _choice(size, "size"),
         conventions={"depth": _maybe(depth, "depth"), "ties": _maybe(ties, "ties")},

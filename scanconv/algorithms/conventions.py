@@ -265,7 +265,7 @@ KNOBS: dict[str, Knob] = {
             "farthest value and a pixel is written when z < depth(x, y) (OpenGL's depth range)",
         },
         "larger-nearer",
-        ("3d/zbuffer", "3d/warnock"),
+        ("3d/zbuffer", "3d/warnock", "3d/scanline"),
     ),
     "ties": Knob(
         "ties",
@@ -275,7 +275,7 @@ KNOBS: dict[str, Knob] = {
             "replace": "equal depths let the polygon drawn later replace it (z >= depth(x, y))",
         },
         "keep",
-        ("3d/zbuffer", "3d/warnock"),
+        ("3d/zbuffer", "3d/warnock", "3d/scanline"),
     ),
 }
 """Every knob, by name. The defaults are the course notes' own stated rules."""

@@ -510,6 +510,8 @@ _VISIBLE = (
            _G + "visible_zbuffer:zbuffer"),
     _plain("3d", "warnock", "Warnock's area subdivision", _V + "warnock:warnock_solution",
            _G + "visible_warnock:warnock"),
+    _plain("3d", "scanline", "scan-line method (visible surfaces)", _V + "scanline:scanline_solution",
+           _G + "visible_scanline:scanline"),
 )  # fmt: skip
 
 # fmt: off

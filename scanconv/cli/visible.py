@@ -1,5 +1,6 @@
 """Visible-surface detection: ``3d backface`` (the sign test of each face's normal),
-``3d zbuffer`` (the depth buffer on a small grid) and ``3d warnock`` (area subdivision)."""
+``3d zbuffer`` (the depth buffer on a small grid), ``3d scanline`` (the scan-line method) and
+``3d warnock`` (area subdivision)."""
 
 from __future__ import annotations
 
@@ -33,5 +34,14 @@ command(
     decides it, and the final frame.
 
     Example: scanconv 3d warnock 0 0 1 6 0 1 0 6 1 : 2 2 3 7 2 3 2 7 3 --size 8
+    """,
+)
+command(
+    three_d_app,
+    ("3d", "scanline"),
+    help="""The scan-line method: the edge and polygon tables, each scan line's active edge list
+    with the polygons' in/out flags, the depth comparison where two flags are on, the frame.
+
+    Example: scanconv 3d scanline 0 0 1 4 0 1 0 4 1 : 1 0 2 4 0 2 4 3 2 --size 5
     """,
 )

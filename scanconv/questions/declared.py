@@ -111,6 +111,7 @@ _ALL = (
     Command(("3d", "backface"), "visible.visible_backface", grid=False, name="visible_backface"),
     Command(("3d", "zbuffer"), "visible.visible_zbuffer", grid=False, name="visible_zbuffer"),
     Command(("3d", "warnock"), "visible.visible_warnock", grid=False, name="visible_warnock"),
+    Command(("3d", "scanline"), "visible.visible_scanline", grid=False, name="visible_scanline"),
 )
 
 COMMANDS: dict[tuple[str, ...], Command] = {c.path: c for c in _ALL}
