@@ -51,6 +51,7 @@ from ._api import thick_line as thick_line
 from ._api import transform as transform
 from ._api import viewport as viewport
 from ._api import visible_backface as visible_backface
+from ._api import visible_depth_sort as visible_depth_sort
 from ._api import visible_scanline as visible_scanline
 from ._api import visible_warnock as visible_warnock
 from ._api import visible_zbuffer as visible_zbuffer
@@ -163,6 +164,7 @@ __all__ = [
     "transform",
     "viewport",
     "visible_backface",
+    "visible_depth_sort",
     "visible_scanline",
     "visible_warnock",
     "visible_zbuffer",

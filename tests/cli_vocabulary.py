@@ -1013,3 +1013,19 @@ VOCABULARY[("3d", "scanline")] = Vocab(
     small={"--size": ("3", "4x3"), "--depth": ("larger-nearer", "smaller-nearer")},
     positional=("0", "1", "2", "3", "1/2", ":"),
 )
+VOCABULARY[("3d", "depth-sort")] = Vocab(
+    valid=((*ZA, ":", *ZB), (*ZA, ":", *ZB, "--size", "4", "--depth", "smaller-nearer")),
+    numbers=(
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+    ),
+    out_of_range=(
+        ((*ZA, "--size", "33"), "1 to 32"),
+        (("0", "0", "1", "3", "0", "1e10", "0", "3", "1"), "out of range"),
+    ),
+    too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
+    too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
+    wrong_type=(("0", "0", "1", "3", "0", "1", "0", "3"), "each vertex is x y z"),
+    small={"--size": ("3", "4x3"), "--depth": ("larger-nearer", "smaller-nearer")},
+    positional=("0", "1", "2", "3", "1/2", ":"),
+)

@@ -67,6 +67,7 @@ from .values import PointLike as PointLike
 from .values import PointsLike as PointsLike
 from .values import TRangeLike as TRangeLike
 from .visible import visible_backface as visible_backface
+from .visible import visible_depth_sort as visible_depth_sort
 from .visible import visible_scanline as visible_scanline
 from .visible import visible_warnock as visible_warnock
 from .visible import visible_zbuffer as visible_zbuffer
@@ -127,6 +128,7 @@ __all__ = [
     "transform",
     "viewport",
     "visible_backface",
+    "visible_depth_sort",
     "visible_scanline",
     "visible_warnock",
     "visible_zbuffer",

@@ -19,6 +19,7 @@ from .values import NumberLike, _choice, _maybe, _number
 
 if TYPE_CHECKING:
     from ..answers.visible import backface as answers_backface
+    from ..answers.visible import depthsort as answers_depthsort
     from ..answers.visible import scanline as answers_scanline
     from ..answers.visible import warnock as answers_warnock
     from ..answers.visible import zbuffer as answers_zbuffer
@@ -27,6 +28,7 @@ if TYPE_CHECKING:
 else:  # each command's answer module, loaded by its first call
     answers_backface = lazy.module("scanconv.answers.visible.backface")
     answers_zbuffer = lazy.module("scanconv.answers.visible.zbuffer")
+    answers_depthsort = lazy.module("scanconv.answers.visible.depthsort")
     answers_scanline = lazy.module("scanconv.answers.visible.scanline")
     answers_warnock = lazy.module("scanconv.answers.visible.warnock")
 
@@ -365,4 +367,49 @@ def visible_scanline(
         _values(polygons, "polygons"),
         size=None if size is None else _choice(size, "size"),
         conventions={"depth": _maybe(depth, "depth"), "ties": _maybe(ties, "ties")},
+    )
+
+
+@answers
+def visible_depth_sort(
+    polygons: Annotated[FacesLike, POLYGONS],
+    *,
+    size: Annotated[str | None, SIZE] = None,
+    depth: Annotated[str | None, DEPTH] = None,
+) -> Solution:
+    """The depth-sort (painter's) method (``scanconv 3d depth-sort``).
+
+    Parameters
+    ----------
+    polygons : numbers or sequence of polygons
+        ``x y z`` of each vertex with ``":"`` between polygons (A, B, ...), each convex,
+        planar and not seen edge-on; at most 8, with ``|x|, |y| <= 64``.
+    size : str, optional
+        The grid the frame is painted on, ``"WxH"`` (or ``"N"``), at most 32 x 32.
+    depth : {"larger-nearer", "smaller-nearer"}, optional
+        Which z is nearer (default ``"larger-nearer"``, the viewer on +z).
+
+    Returns
+    -------
+    Answer
+        The polygons by farthest depth, each pair's tests in order until one passes, the
+        painting order (a cyclic overlap said), the frame; ``.data["painted"]``,
+        ``.data["tests"]``, ``.data["frame"]``.
+
+    Notes
+    -----
+    Hearn & Baker, *Computer Graphics, C version*, 2nd ed., §13-5 (Newell, Newell and Sancha):
+    a surface S is painted when no overlapping S' fails every test; one that fails them all
+    is moved before S, and a surface moved twice means the two must be split.
+
+    Examples
+    --------
+    >>> sol = visible_depth_sort([0, 0, 1, 4, 0, 1, 0, 4, 1, ":", 1, 1, 3, 5, 1, 3, 1, 5, 3], size="6")
+    >>> sol.data["painted"], [t["passed"] for t in sol.data["tests"]]
+    (['A', 'B'], ['z'])
+    """
+    return answers_depthsort.depth_sort_solution(
+        _values(polygons, "polygons"),
+        size=None if size is None else _choice(size, "size"),
+        conventions={"depth": _maybe(depth, "depth")},
     )

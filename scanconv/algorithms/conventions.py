@@ -265,7 +265,7 @@ KNOBS: dict[str, Knob] = {
             "farthest value and a pixel is written when z < depth(x, y) (OpenGL's depth range)",
         },
         "larger-nearer",
-        ("3d/zbuffer", "3d/warnock", "3d/scanline"),
+        ("3d/zbuffer", "3d/warnock", "3d/scanline", "3d/depth-sort"),
     ),
     "ties": Knob(
         "ties",

@@ -512,6 +512,8 @@ _VISIBLE = (
            _G + "visible_warnock:warnock"),
     _plain("3d", "scanline", "scan-line method (visible surfaces)", _V + "scanline:scanline_solution",
            _G + "visible_scanline:scanline"),
+    _plain("3d", "depth-sort", "depth-sort (painter's) method", _V + "depthsort:depth_sort_solution",
+           _G + "visible_depthsort:depth_sort"),
 )  # fmt: skip
 
 # fmt: off

@@ -1,5 +1,5 @@
 """Visible-surface detection: ``3d backface`` (the sign test of each face's normal),
-``3d zbuffer`` (the depth buffer on a small grid), ``3d scanline`` (the scan-line method) and
+``3d zbuffer`` (the depth buffer on a small grid), ``3d scanline`` (the scan-line method), ``3d depth-sort`` (the painter's method) and
 ``3d warnock`` (area subdivision)."""
 
 from __future__ import annotations
@@ -43,5 +43,15 @@ command(
     with the polygons' in/out flags, the depth comparison where two flags are on, the frame.
 
     Example: scanconv 3d scanline 0 0 1 4 0 1 0 4 1 : 1 0 2 4 0 2 4 3 2 --size 5
+    """,
+)
+command(
+    three_d_app,
+    ("3d", "depth-sort"),
+    help="""The depth-sort (painter's) method: the polygons by farthest depth, each pair's tests
+    in order (z, x and y extents, behind the other's plane, in front of it, the projections),
+    the painting order and the frame painted.
+
+    Example: scanconv 3d depth-sort 0 0 1 4 0 1 0 4 1 : 1 1 3 5 1 3 1 5 3 --size 6
     """,
 )

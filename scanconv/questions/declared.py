@@ -112,6 +112,9 @@ _ALL = (
     Command(("3d", "zbuffer"), "visible.visible_zbuffer", grid=False, name="visible_zbuffer"),
     Command(("3d", "warnock"), "visible.visible_warnock", grid=False, name="visible_warnock"),
     Command(("3d", "scanline"), "visible.visible_scanline", grid=False, name="visible_scanline"),
+    Command(
+        ("3d", "depth-sort"), "visible.visible_depth_sort", grid=False, name="visible_depth_sort"
+    ),
 )
 
 COMMANDS: dict[tuple[str, ...], Command] = {c.path: c for c in _ALL}

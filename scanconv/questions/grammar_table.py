@@ -475,5 +475,11 @@ SPECS: dict[tuple[str, ...], Spec] = {
         Param('ties', ('--ties',), 'choice', choices=('keep', 'replace'), help='Equal depths: keep (the polygon drawn first keeps the pixel, the default) or replace.'),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
     ), own=('polygons', 'size', 'depth', 'ties'), ignore_unknown=True),
+    ('3d', 'depth-sort'): Spec(('3d', 'depth-sort'), 'visible_depth_sort', (
+        Param('polygons', (), 'coordinate', nargs=-1, required=True, metavar='X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3 ... [: ...]', help="The polygons: x y z of each vertex, ':' between polygons (named A, B, ... in order)."),
+        Param('size', ('--size',), 'text', help="The grid, W x H pixels (6x4, or 6 for square; default: the vertices' extent from 0)."),
+        Param('depth', ('--depth',), 'choice', choices=('larger-nearer', 'smaller-nearer'), help='larger-nearer: a larger z is nearer, z > depth(x, y) writes (Hearn & Baker, the default); smaller-nearer: z < depth(x, y) writes.'),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('polygons', 'size', 'depth'), ignore_unknown=True),
 }
 # fmt: on

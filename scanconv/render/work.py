@@ -343,6 +343,7 @@ BOUNDED: dict[str, str] = {
     "char_stroke": "at most 4 strokes on a 5 x 7 grid, scaled at most 16 times",
     "char_storage": "closed-form arithmetic on exact integers",
     "clip_convex": "one line against at most algorithms.cyrus_beck.MAX_EDGES = 64 edges",
+    "visible_depth_sort": "at most 8 polygons: at most 8 x 8 x 7 pair rows",
     "visible_scanline": "a row per interval of each of at most 32 scan lines, 8 polygons: a few hundred rows",
     "visible_warnock": "a 2^n grid of at most 32 x 32 pixels: at most 1,365 windows",
     "visible_backface": "at most algorithms.visible.MAX_FACES = 24 faces of 16 vertices, a row each",
