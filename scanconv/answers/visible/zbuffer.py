@@ -9,7 +9,7 @@ from fractions import Fraction
 from typing import Any
 
 from ...algorithms import visible_zbuffer as zb
-from ...algorithms.visible import Face, Plane, normal
+from ...algorithms.visible import Face, Plane, normal, sub
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt_paren, fmt_short, normalize
 from ...core.records import Column, Solution, Table, Walk, heading, rule, worked
@@ -60,7 +60,11 @@ def size_of(size: str | None, polygons: Sequence[tuple[str, Face]]) -> tuple[int
 def _plane_quantities(name: str, face: Face, p: Plane) -> list[Any]:
     n = normal(face)
     return [
-        worked(f"N_{name}", n, f"N_{{{name}}} = (V_2 - V_1) \\times (V_3 - V_1) = {vec(n)} = (A, B, C)"),
+        worked(
+            f"N_{name}", n,
+            f"N_{{{name}}} = (V_2 - V_1) \\times (V_3 - V_1) = {vec(sub(face[1], face[0]))} \\times "
+            f"{vec(sub(face[2], face[0]))} = {vec(n)} = (A, B, C)",
+        ),
         worked(
             f"D_{name}", p.d,
             f"D_{{{name}}} = -(A x_1 + B y_1 + C z_1) = -({fmt_short(p.a)} \\cdot {fmt_paren(face[0][0])} + "
