@@ -18,9 +18,9 @@ from ....core.checks import InputError
 from ....core.records import Solution
 from ._build import Topic
 
-SECTIONS = ("scan", "image", "lines", "circles", "curves", "syllabus", "windows")
-"""The modules, in the notes' order; ``syllabus`` and ``windows`` (the topics the papers ask
-beyond the notes) last."""
+SECTIONS = ("scan", "image", "lines", "circles", "curves", "syllabus", "windows", "visible")
+"""The modules, in the notes' order; ``syllabus``, ``windows`` and ``visible`` (the topics the
+papers ask beyond the notes) last."""
 
 
 def topics() -> list[Topic]:
