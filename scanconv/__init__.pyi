@@ -52,6 +52,11 @@ from ._api import thick_line as thick_line
 from ._api import transform as transform
 from ._api import transform3d as transform3d
 from ._api import viewport as viewport
+from ._api import visible_backface as visible_backface
+from ._api import visible_depth_sort as visible_depth_sort
+from ._api import visible_scanline as visible_scanline
+from ._api import visible_warnock as visible_warnock
+from ._api import visible_zbuffer as visible_zbuffer
 from ._api.color_theory import color as color
 from ._api.color_theory import theory as theory
 from ._api.generators import basic_line as basic
@@ -162,4 +167,9 @@ __all__ = [
     "transform",
     "transform3d",
     "viewport",
+    "visible_backface",
+    "visible_depth_sort",
+    "visible_scanline",
+    "visible_warnock",
+    "visible_zbuffer",
 ]

@@ -1005,3 +1005,91 @@ VOCABULARY[("3d", "project")] = Vocab(
     },
     positional=("0", "1", "2", "-3", "1/2", "--translate", "--rotate-y", "30"),
 )
+
+
+# Visible-surface detection (scanconv 3d).
+
+FACE = ("0", "0", "0", "1", "0", "0", "0", "1", "0")
+FACE_UP = ("0", "0", "1", "0", "1", "1", "1", "0", "1")
+ZA = ("0", "0", "1", "3", "0", "1", "0", "3", "1")
+ZB = ("0", "0", "2", "2", "0", "2", "0", "2", "2")
+VOCABULARY[("3d", "backface")] = Vocab(
+    valid=(("--solid", "cube"), (*FACE, ":", *FACE_UP, "--direction", "to-viewer")),
+    numbers=((), (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18)),
+    out_of_range=(
+        (("0", "0", "0", "1", "0", "0", "1e10", "1", "0"), "out of range"),
+        (tuple(w for _ in range(25) for w in (*FACE, ":")), "at most 24"),
+    ),
+    too_few=(("0", "0", "0", "1", "0", "0"), "at least 3 vertices"),
+    too_many=(tuple(str(c) for i in range(17) for c in (i, i * i, 0)), "at most 16"),
+    wrong_type=(("0", "0", "0", "1", "0", "0", "0", "1"), "each vertex is x y z"),
+    small={
+        "--solid": ("cube", "pyramid", "tetrahedron"),
+        "--direction": ("into-scene", "to-viewer"),
+    },
+    positional=("0", "1", "2", "-1", "1/2", ":"),
+)
+VOCABULARY[("3d", "zbuffer")] = Vocab(
+    valid=((*ZA, ":", *ZB), (*ZA, ":", *ZB, "--size", "4", "--ties", "replace")),
+    numbers=(
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+    ),
+    out_of_range=(
+        ((*ZA, "--size", "33"), "1 to 32"),
+        (("0", "0", "1", "3", "0", "1e10", "0", "3", "1"), "out of range"),
+    ),
+    too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
+    too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
+    wrong_type=(("0", "0", "1", "3", "0", "1", "0", "3"), "each vertex is x y z"),
+    small={"--size": ("3", "4x3"), "--depth": ("larger-nearer", "smaller-nearer")},
+    positional=("0", "1", "2", "3", "1/2", ":"),
+)
+VOCABULARY[("3d", "warnock")] = Vocab(
+    valid=((*ZA, ":", *ZB), (*ZA, ":", *ZB, "--size", "4", "--depth", "smaller-nearer")),
+    numbers=(
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+    ),
+    out_of_range=(
+        ((*ZA, "--size", "64"), "1 to 32"),
+        (("0", "0", "1", "3", "0", "1e10", "0", "3", "1"), "out of range"),
+    ),
+    too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
+    too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
+    wrong_type=((*ZA, "--size", "6"), "2^n"),
+    small={"--size": ("2", "4"), "--ties": ("keep", "replace")},
+    positional=("0", "1", "2", "3", "1/2", ":"),
+)
+VOCABULARY[("3d", "scanline")] = Vocab(
+    valid=((*ZA, ":", *ZB), (*ZA, ":", *ZB, "--size", "4", "--ties", "replace")),
+    numbers=(
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+    ),
+    out_of_range=(
+        ((*ZA, "--size", "33"), "1 to 32"),
+        (("0", "0", "1", "3", "0", "1e10", "0", "3", "1"), "out of range"),
+    ),
+    too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
+    too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
+    wrong_type=(("0", "0", "1", "3", "0", "1", "0", "3"), "each vertex is x y z"),
+    small={"--size": ("3", "4x3"), "--depth": ("larger-nearer", "smaller-nearer")},
+    positional=("0", "1", "2", "3", "1/2", ":"),
+)
+VOCABULARY[("3d", "depth-sort")] = Vocab(
+    valid=((*ZA, ":", *ZB), (*ZA, ":", *ZB, "--size", "4", "--depth", "smaller-nearer")),
+    numbers=(
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+        (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18),
+    ),
+    out_of_range=(
+        ((*ZA, "--size", "33"), "1 to 32"),
+        (("0", "0", "1", "3", "0", "1e10", "0", "3", "1"), "out of range"),
+    ),
+    too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
+    too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
+    wrong_type=(("0", "0", "1", "3", "0", "1", "0", "3"), "each vertex is x y z"),
+    small={"--size": ("3", "4x3"), "--depth": ("larger-nearer", "smaller-nearer")},
+    positional=("0", "1", "2", "3", "1/2", ":"),
+)

@@ -78,6 +78,11 @@ QUESTIONS = (
     "char bitmap A --at 2 1",
     "char stroke T --scale 2",
     "char storage 128 5 7",
+    "3d backface --solid pyramid",
+    "3d zbuffer 0 0 2 5 0 2 0 5 2 : 1 1 4 5 1 0 1 5 0 --size 5",
+    "3d scanline 0 0 1 4 0 1 0 4 1 : 1 0 2 4 0 2 4 3 2 --size 5",
+    "3d depth-sort 0 0 1 4 0 1 0 4 1 : 1 1 3 5 1 0 1 5 0 --size 6",
+    "3d warnock 0 0 1 6 0 1 0 6 1 : 2 2 3 7 2 3 2 7 3 --size 8",
 )
 """One question (or more) of every command; the site answers them with the same code."""
 

@@ -68,6 +68,11 @@ from .values import NumberLike as NumberLike
 from .values import PointLike as PointLike
 from .values import PointsLike as PointsLike
 from .values import TRangeLike as TRangeLike
+from .visible import visible_backface as visible_backface
+from .visible import visible_depth_sort as visible_depth_sort
+from .visible import visible_scanline as visible_scanline
+from .visible import visible_warnock as visible_warnock
+from .visible import visible_zbuffer as visible_zbuffer
 
 __all__ = [
     "CircleMethod",
@@ -126,4 +131,9 @@ __all__ = [
     "transform",
     "transform3d",
     "viewport",
+    "visible_backface",
+    "visible_depth_sort",
+    "visible_scanline",
+    "visible_warnock",
+    "visible_zbuffer",
 ]

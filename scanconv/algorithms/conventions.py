@@ -221,6 +221,62 @@ KNOBS: dict[str, Knob] = {
         "new",
         ("circle/midpoint",),
     ),
+    # visible-surface detection (scanconv 3d): the defaults are Hearn & Baker's (C version,
+    # 2nd ed., ch. 13), the most common textbook form; the course notes stop before 3D
+    "direction": Knob(
+        "direction",
+        {
+            "into-scene": "V is the viewing direction, from the viewer into the scene: a back "
+            "face has V·N > 0 (Hearn & Baker)",
+            "to-viewer": "V points from the face toward the viewer (the line of sight): a back "
+            "face has V·N < 0",
+        },
+        "into-scene",
+        ("3d/backface",),
+    ),
+    "edge-on": Knob(
+        "edge-on",
+        {
+            "hidden": "a face seen edge-on (V·N = 0) is hidden (Hearn & Baker: C <= 0 for V "
+            "along -z)",
+            "visible": "a face seen edge-on (V·N = 0) is kept as visible",
+        },
+        "hidden",
+        ("3d/backface",),
+    ),
+    "handed": Knob(
+        "handed",
+        {
+            "right": "right-handed axes: vertices counter-clockwise seen from outside, the "
+            "viewer on +z looking along -z (V = (0, 0, -1))",
+            "left": "left-handed viewing axes (Hearn & Baker): vertices clockwise seen from "
+            "outside, the viewer looking along +z (V = (0, 0, 1))",
+        },
+        "right",
+        ("3d/backface",),
+    ),
+    "depth": Knob(
+        "depth",
+        {
+            "larger-nearer": "a larger z is nearer the viewer: the depth buffer starts at the "
+            "farthest value and a pixel is written when z > depth(x, y) (Hearn & Baker, C "
+            "version)",
+            "smaller-nearer": "a smaller z is nearer the viewer: the buffer starts at the "
+            "farthest value and a pixel is written when z < depth(x, y) (OpenGL's depth range)",
+        },
+        "larger-nearer",
+        ("3d/zbuffer", "3d/warnock", "3d/scanline", "3d/depth-sort"),
+    ),
+    "ties": Knob(
+        "ties",
+        {
+            "keep": "equal depths keep what the buffer holds: the polygon drawn first wins "
+            "(a strict comparison, Hearn & Baker)",
+            "replace": "equal depths let the polygon drawn later replace it (z >= depth(x, y))",
+        },
+        "keep",
+        ("3d/zbuffer", "3d/warnock", "3d/scanline"),
+    ),
 }
 """Every knob, by name. The defaults are the course notes' own stated rules."""
 

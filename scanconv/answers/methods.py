@@ -535,6 +535,19 @@ _SPACE = (
     ),
 )  # fmt: skip
 
+_V = "scanconv.answers.visible."
+_VISIBLE = (
+    _plain("3d", "backface", "back-face detection", _V + "backface:backface_solution", _G + "visible:backface"),
+    _plain("3d", "zbuffer", "depth-buffer (z-buffer) method", _V + "zbuffer:zbuffer_solution",
+           _G + "visible_zbuffer:zbuffer"),
+    _plain("3d", "warnock", "Warnock's area subdivision", _V + "warnock:warnock_solution",
+           _G + "visible_warnock:warnock"),
+    _plain("3d", "scanline", "scan-line method (visible surfaces)", _V + "scanline:scanline_solution",
+           _G + "visible_scanline:scanline"),
+    _plain("3d", "depth-sort", "depth-sort (painter's) method", _V + "depthsort:depth_sort_solution",
+           _G + "visible_depthsort:depth_sort"),
+)  # fmt: skip
+
 # fmt: off
 _COSTS: dict[str, dict[str, float]] = {
     "line/basic": {"csv": 16.2, "json": 37.4, "plain": 53.5, "markdown": 41.7, "latex": 61.6, "html": 107.3, "rich": 695.7},
@@ -571,7 +584,7 @@ METHODS: dict[str, Method] = {
     m.key: _with_costs(m)
     for m in (
         *_LINE, *_CIRCLE, *_ELLIPSE, *_CURVES, *_PROCESS, *_IMAGE, *_DITHER, *_PRINTER, *_INSIDE,
-        *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS, *_SPACE,
+        *_FRAMEBUFFER, *_ATTRIBUTES, *_CHARACTERS, *_SPACE, *_VISIBLE,
     )
 }  # fmt: skip
 """Every method record, by ``"command/method"``."""

@@ -51,7 +51,7 @@ PANELS = (
         ),
     ),
     ("Theory and exam", ("color", "theory", "exam", "site")),
-    ("3D: transformations and projections", ("3d",)),
+    ("3D: transformations, projections, visible surfaces", ("3d",)),
 )
 
 EXAMPLES = """\b
@@ -135,8 +135,10 @@ char_app = _subapp(
 pipeline_app = _subapp(
     "pipeline", "The scan-conversion process end to end: clip, map to the viewport, scan convert."
 )
-space_app = _subapp(
-    "3d", "The 3D chapter: transformations in homogeneous coordinates (4 x 4) and projections."
+three_d_app = _subapp(
+    "3d",
+    "The 3D chapter: transformations in homogeneous coordinates (4 x 4), projections and "
+    "visible-surface detection (back faces, z-buffer, scan line, depth sort, Warnock).",
 )
 
 
@@ -176,7 +178,7 @@ TOPIC_MODULES: tuple[str, ...] = (
     "check",
     "site",
     "serve",
-    "space",
+    "three_d",
 )
 
 #: Which module defines each top-level command or group.
@@ -217,7 +219,7 @@ TOPIC_OF = {
     "exam": "exam",
     "site": "site",
     "mcp": "serve",
-    "3d": "space",
+    "3d": "three_d",
 }
 
 

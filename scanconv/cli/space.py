@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from .application import space_app
+from .application import three_d_app
 from .declared import command
 
 command(
-    space_app,
+    three_d_app,
     ("3d", "transform"),
     help="""Compose 3D transformations (homogeneous coordinates, 4 x 4) and apply them to the
     vertices X1 Y1 Z1 ... or a --solid, in the order given: each matrix with its numbers (a
@@ -24,7 +24,7 @@ command(
 )
 
 command(
-    space_app,
+    three_d_app,
     ("3d", "project"),
     help="""Project the vertices X1 Y1 Z1 ... or a --solid (after any transformations given):
     the projection matrix with its numbers, the projected vertex table, the vanishing points of

@@ -178,6 +178,13 @@ _ALL = (
     # the 3D chapter (answers/space)
     Command(("3d", "transform"), "space.transform3d", grid=False, name="transform3d"),
     Command(("3d", "project"), "space.project3d", figures=True, name="project3d"),
+    Command(("3d", "backface"), "visible.visible_backface", grid=False, name="visible_backface"),
+    Command(("3d", "zbuffer"), "visible.visible_zbuffer", grid=False, name="visible_zbuffer"),
+    Command(("3d", "warnock"), "visible.visible_warnock", grid=False, name="visible_warnock"),
+    Command(("3d", "scanline"), "visible.visible_scanline", grid=False, name="visible_scanline"),
+    Command(
+        ("3d", "depth-sort"), "visible.visible_depth_sort", grid=False, name="visible_depth_sort"
+    ),
 )
 
 COMMANDS: dict[tuple[str, ...], Command] = {c.path: c for c in _ALL}

@@ -469,6 +469,44 @@ _ALL = (
         Param('cop', ('--cop',), 'choice', choices=('minus-d', 'plus-d', 'origin'), help='perspective: the centre at (0, 0, -d) on the plane z = 0, at (0, 0, d) (hearn-baker), or at the origin with the plane z = d (foley).'),
         S['fmt'], S['grid'], S['origin'], S['output'], S['brief'], S['exact'], S['explain'], S['svg'], S['png'],
     ), own=('words', 'solid', 'parallel', 'perspective', 'view', 'angle', 'receding', 'angles', 'ratio', 'd', 'convention', 'vectors', 'axes', 'sense', 'oblique', 'cop'), ignore_unknown=True),
+    Spec(('3d', 'backface'), 'visible_backface', (
+        Param('faces', (), 'coordinate', nargs=-1, metavar='[X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3 ... : ...]', help="The faces: x y z of each vertex, ':' between faces (or give --solid)."),
+        Param('solid', ('--solid',), 'choice', choices=('cube', 'pyramid', 'tetrahedron'), help='A named solid instead: cube (the unit cube), pyramid (base 0..2 on y = 0, apex (1, 2, 1)), tetrahedron (the origin and the unit points).'),
+        Param('view', ('--view',), 'number', nargs=3, help='The view vector V (default by --direction and --handed).'),
+        Param('eye', ('--eye',), 'number', nargs=3, help="The viewer's position instead: V per face, from the eye to V1."),
+        Param('direction', ('--direction',), 'choice', choices=('into-scene', 'to-viewer'), help='into-scene: V from the viewer into the scene, back face when V.N > 0 (Hearn & Baker, the default); to-viewer: V toward the viewer, back face when V.N < 0.'),
+        Param('edge_on', ('--edge-on',), 'choice', choices=('hidden', 'visible'), help="A face with V.N = 0: hidden (the default, Hearn & Baker's C <= 0) or visible."),
+        Param('handed', ('--handed',), 'choice', choices=('right', 'left'), help="right (the default): the viewer on +z looking along -z; left: looking along +z (Hearn & Baker's left-handed viewing system)."),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('faces', 'solid', 'view', 'eye', 'direction', 'edge_on', 'handed'), ignore_unknown=True),
+    Spec(('3d', 'zbuffer'), 'visible_zbuffer', (
+        Param('polygons', (), 'coordinate', nargs=-1, required=True, metavar='X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3 ... [: ...]', help="The polygons: x y z of each vertex, ':' between polygons (named A, B, ... in order)."),
+        Param('size', ('--size',), 'text', help="The grid, W x H pixels (6x4, or 6 for square; default: the vertices' extent from 0)."),
+        Param('far', ('--far',), 'number', help="The depth buffer's first value (default: -inf, or +inf with smaller-nearer)."),
+        Param('depth', ('--depth',), 'choice', choices=('larger-nearer', 'smaller-nearer'), help='larger-nearer: a larger z is nearer, z > depth(x, y) writes (Hearn & Baker, the default); smaller-nearer: z < depth(x, y) writes.'),
+        Param('ties', ('--ties',), 'choice', choices=('keep', 'replace'), help='Equal depths: keep (the polygon drawn first keeps the pixel, the default) or replace.'),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('polygons', 'size', 'far', 'depth', 'ties'), ignore_unknown=True),
+    Spec(('3d', 'warnock'), 'visible_warnock', (
+        Param('polygons', (), 'coordinate', nargs=-1, required=True, metavar='X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3 ... [: ...]', help="The polygons: x y z of each vertex, ':' between polygons (named A, B, ... in order)."),
+        Param('size', ('--size',), 'text', help="The grid's side, 2^n pixels (1 to 32; default: the smallest holding the vertices)."),
+        Param('depth', ('--depth',), 'choice', choices=('larger-nearer', 'smaller-nearer'), help='larger-nearer: a larger z is nearer, z > depth(x, y) writes (Hearn & Baker, the default); smaller-nearer: z < depth(x, y) writes.'),
+        Param('ties', ('--ties',), 'choice', choices=('keep', 'replace'), help='Equal depths: keep (the polygon drawn first keeps the pixel, the default) or replace.'),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('polygons', 'size', 'depth', 'ties'), ignore_unknown=True),
+    Spec(('3d', 'scanline'), 'visible_scanline', (
+        Param('polygons', (), 'coordinate', nargs=-1, required=True, metavar='X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3 ... [: ...]', help="The polygons: x y z of each vertex, ':' between polygons (named A, B, ... in order)."),
+        Param('size', ('--size',), 'text', help="The grid, W x H pixels (6x4, or 6 for square; default: the vertices' extent from 0)."),
+        Param('depth', ('--depth',), 'choice', choices=('larger-nearer', 'smaller-nearer'), help='larger-nearer: a larger z is nearer, z > depth(x, y) writes (Hearn & Baker, the default); smaller-nearer: z < depth(x, y) writes.'),
+        Param('ties', ('--ties',), 'choice', choices=('keep', 'replace'), help='Equal depths: keep (the polygon drawn first keeps the pixel, the default) or replace.'),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('polygons', 'size', 'depth', 'ties'), ignore_unknown=True),
+    Spec(('3d', 'depth-sort'), 'visible_depth_sort', (
+        Param('polygons', (), 'coordinate', nargs=-1, required=True, metavar='X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3 ... [: ...]', help="The polygons: x y z of each vertex, ':' between polygons (named A, B, ... in order)."),
+        Param('size', ('--size',), 'text', help="The grid, W x H pixels (6x4, or 6 for square; default: the vertices' extent from 0)."),
+        Param('depth', ('--depth',), 'choice', choices=('larger-nearer', 'smaller-nearer'), help='larger-nearer: a larger z is nearer, z > depth(x, y) writes (Hearn & Baker, the default); smaller-nearer: z < depth(x, y) writes.'),
+        S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
+    ), own=('polygons', 'size', 'depth'), ignore_unknown=True),
 )
 # fmt: on
 

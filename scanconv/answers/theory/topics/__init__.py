@@ -18,9 +18,19 @@ from ....core.checks import InputError
 from ....core.records import Solution
 from ._build import Topic
 
-SECTIONS = ("scan", "image", "lines", "circles", "curves", "syllabus", "windows", "space")
-"""The modules, in the notes' order; ``syllabus``, ``windows`` and ``space`` (the topics the papers ask
-beyond the notes) last."""
+SECTIONS = (
+    "scan",
+    "image",
+    "lines",
+    "circles",
+    "curves",
+    "syllabus",
+    "windows",
+    "space",
+    "visible",
+)
+"""The modules, in the notes' order; ``syllabus``, ``windows``, ``space`` and ``visible`` (the
+topics the papers ask beyond the notes) last."""
 
 
 def topics() -> list[Topic]:

@@ -1,0 +1,138 @@
+"""Warnock's area subdivision (``scanconv 3d warnock``): each polygon's class against each
+window, the tests in order, the quadtree, and the final pixels against a per-pixel brute
+force written here."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from scanconv import visible_warnock
+
+from .helpers import run
+from .test_zbuffer import _depth, _inside
+
+# Worked by hand: A, the triangle (0, 0), (6, 0), (0, 6) at z = 1, and B, the triangle (2, 2),
+# (7, 2), (2, 7) at z = 3, on an 8 x 8 grid (a window is its pixels' squares: W runs from
+# -1/2 to 7 1/2 across). Both lie inside W (contained), so W is divided. Its top-left quadrant
+# W1 (x 0..3, y 4..7) is crossed by A's edge x + y = 6 and by B's edges: both intersecting,
+# divided again. W11 (x 0..1, y 6..7, the square -1/2 .. 1 1/2 by 5 1/2 .. 7 1/2) is crossed
+# by x + y = 6 but lies left of B's edge x = 2: A intersecting, B disjoint, so only A, on the
+# pixels it covers. The pixel (3, 3) is W322: B surrounds its square and its depth 3 is
+# nearer than A's 1 at every corner, so B obscures A there.
+HAND = (
+    "0",
+    "0",
+    "1",
+    "6",
+    "0",
+    "1",
+    "0",
+    "6",
+    "1",
+    ":",
+    "2",
+    "2",
+    "3",
+    "7",
+    "2",
+    "3",
+    "2",
+    "7",
+    "3",
+)
+
+
+def test_the_hand_worked_windows() -> None:
+    sol = visible_warnock(list(HAND), size="8")
+    windows = {w["label"]: w for w in sol.data["windows"]}
+    assert windows["W"]["classes"] == ["contained", "contained"]
+    assert windows["W"]["decision"] == "subdivide"
+    assert windows["W1"]["classes"] == ["intersecting", "intersecting"]
+    assert windows["W11"]["classes"] == ["intersecting", "disjoint"]
+    assert windows["W11"]["decision"] == "one"
+    assert windows["W2"]["classes"] == ["disjoint", "intersecting"]  # x 4..7, y 4..7
+    # W322 is the pixel (3, 3): B (z = 3) surrounds it and is nearer than A's z = 1
+    assert windows["W322"]["decision"] == "obscures" and windows["W322"]["shown"] == "B"
+    assert [k for k in windows if len(k) > 4] == []  # nothing below single pixels
+
+
+def _brute(
+    triangles: list[tuple[tuple[int, int, int], ...]], side: int, nearer: str, ties: str
+) -> dict[str, str]:
+    out = {}
+    for y in range(side):
+        for x in range(side):
+            best: tuple[int, Fraction] | None = None
+            for i, t in enumerate(triangles):
+                if not _inside([(Fraction(p[0]), Fraction(p[1])) for p in t], x, y):
+                    continue
+                z = _depth(list(t), x, y)
+                closer = best is None or (z > best[1] if nearer == "larger-nearer" else z < best[1])
+                if closer or (best is not None and z == best[1] and ties == "replace"):
+                    best = (i, z)
+            if best is not None:
+                out[f"{x},{y}"] = "ABCD"[best[0]]
+    return out
+
+
+coord = st.integers(-2, 9)
+depth = st.integers(-4, 4)
+triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
+
+
+@settings(deadline=None)
+@given(
+    st.lists(triangle, min_size=1, max_size=4),
+    st.sampled_from(["larger-nearer", "smaller-nearer"]),
+    st.sampled_from(["keep", "replace"]),
+)
+def test_the_final_pixels_are_the_brute_force_nearest(
+    triangles: list[tuple[tuple[int, int, int], ...]], nearer: str, ties: str
+) -> None:
+    def area(t: tuple[tuple[int, int, int], ...]) -> int:
+        (x1, y1, _), (x2, y2, _), (x3, y3, _) = t
+        return (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
+
+    triangles = [t for t in triangles if area(t) != 0]
+    if not triangles:
+        return
+    flat: list[object] = []
+    for t in triangles:
+        flat += [":", *[c for p in t for c in p]]
+    sol = visible_warnock(flat, size="8", depth=nearer, ties=ties)
+    assert sol.data["frame"] == _brute(triangles, 8, nearer, ties)
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        ((*HAND, "--size", "6"), "2^n"),
+        (("0", "0", "0", "4", "0", "0", "1", "1", "0", "0", "4", "0"), "not convex"),
+        ((*HAND, "--size", "x"), "one number"),
+    ],
+)
+def test_bad_input_is_one_line_and_exit_2(args: tuple[str, ...], message: str) -> None:
+    result = run("3d", "warnock", *args)
+    assert result.code == 2 and result.out == ""
+    assert message in result.err and result.err.count("\n") == 1
+
+
+@pytest.mark.parametrize("ties", ["keep", "replace"])
+def test_a_surrounding_polygon_at_an_equal_depth_obscures_nothing(ties: str) -> None:
+    # A, a square at z = 1 around the whole grid; B, a triangle at the same depth, given after
+    # it: no window is decided by A obscuring B, and B's pixels are A's (keep) or B's (replace)
+    square = ("-1", "-1", "1", "5", "-1", "1", "5", "5", "1", "-1", "5", "1")
+    tri = ("0", "0", "1", "3", "0", "1", "0", "3", "1")
+    sol = visible_warnock([*square, ":", *tri], size="4", ties=ties)
+    assert all(w["decision"] != "obscures" for w in sol.data["windows"])
+    b_pixels = {"0,0", "1,0", "2,0", "0,1", "1,1", "0,2"}
+    want = {
+        f"{x},{y}": ("B" if f"{x},{y}" in b_pixels and ties == "replace" else "A")
+        for x in range(4)
+        for y in range(4)
+    }
+    assert sol.data["frame"] == want

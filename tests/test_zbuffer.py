@@ -1,0 +1,175 @@
+"""The z-buffer (``scanconv 3d zbuffer``): the depths from the plane equation and its
+increments, the step table of comparisons, the final frame and depth buffers, against a
+hand-worked example and a per-pixel brute-force depth comparison written here."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from scanconv import visible_zbuffer
+
+from .helpers import run
+
+# Worked by hand with Hearn & Baker's formulas (C version, 2nd ed., section 13-3:
+# z = (-Ax - By - D)/C, z' = z - A/C along a scan line, z' = z + (A/m + B)/C down an edge).
+# A lies in z = 2; B in x + y + z = 6. B covers (1..4, 1), (1..3, 2), (1..2, 3), (1, 4), A
+# covers x < 5 - y; where both cover a pixel B's z = 6 - x - y is compared with 2: nearer
+# (larger) at (1, 1), (2, 1), (1, 2); equal at (3, 1), (2, 2), (1, 3), where A, drawn first,
+# keeps the pixel.
+EXAMPLE = (
+    "0",
+    "0",
+    "2",
+    "5",
+    "0",
+    "2",
+    "0",
+    "5",
+    "2",
+    ":",
+    "1",
+    "1",
+    "4",
+    "5",
+    "1",
+    "0",
+    "1",
+    "5",
+    "0",
+)
+FRAME = [
+    "AB...",
+    "AAB..",
+    "ABAB.",
+    "ABBAB",
+    "AAAAA",
+]
+
+
+def _frame(data: dict[str, object], width: int, height: int) -> list[str]:
+    frame = data["frame"]
+    assert isinstance(frame, dict)
+    return [
+        "".join(frame.get(f"{x},{y}", ".") for x in range(width)) for y in range(height - 1, -1, -1)
+    ]
+
+
+def test_the_hand_worked_example() -> None:
+    sol = visible_zbuffer(list(EXAMPLE), size="5")
+    assert _frame(sol.data, 5, 5) == FRAME
+    assert sol.data["depth"]["1,1"] == 4 and sol.data["depth"]["3,1"] == 2
+    replaced = visible_zbuffer(list(EXAMPLE), size="5", ties="replace")
+    flipped = [list(r) for r in FRAME]
+    for x, y in ((3, 1), (2, 2), (1, 3)):
+        flipped[4 - y][x] = "B"
+    assert _frame(replaced.data, 5, 5) == ["".join(r) for r in flipped]
+
+
+def test_the_increments_are_the_plane_s() -> None:
+    sol = visible_zbuffer(list(EXAMPLE), size="5")
+    derived = {q.key: q.value for q in sol.derived}
+    assert derived["dx_B"] == -1 and derived["dx_A"] == 0  # -A/C
+    scan_b = next(t for t in sol.tables if t.title.startswith("Polygon B"))
+    rows = list(scan_b.rows())
+    # the left edge x = 1 (1/m = 0): down it z changes by (A/m + B)/C = (0 + 16)/16 = 1
+    assert [r[5] for r in rows] == ["1", "2", "3", "4"]
+    assert "+ 1" in rows[1][4]
+
+
+def _inside(poly: list[tuple[Fraction, Fraction]], x: int, y: int) -> bool:
+    """The half-open rule written out: edges with one end at or below y and the other above,
+    crossing at x_e <= x, counted; odd is inside."""
+    count = 0
+    for (xa, ya), (xb, yb) in zip(poly, poly[1:] + poly[:1], strict=True):
+        if (ya <= y) != (yb <= y):
+            xe = xa + (y - ya) * (xb - xa) / (yb - ya)
+            count += xe <= x
+    return count % 2 == 1
+
+
+def _depth(tri: list[tuple[int, int, int]], x: int, y: int) -> Fraction:
+    """z on the plane through the triangle, by Cramer's rule on barycentric weights."""
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = tri
+    det = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
+    s = Fraction((x - x1) * (y3 - y1) - (x3 - x1) * (y - y1), det)
+    t = Fraction((x2 - x1) * (y - y1) - (x - x1) * (y2 - y1), det)
+    return z1 + s * (z2 - z1) + t * (z3 - z1)
+
+
+coord = st.integers(-2, 7)
+depth = st.integers(-5, 5)
+triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
+
+
+@settings(deadline=None)
+@given(
+    st.lists(triangle, min_size=1, max_size=4),
+    st.sampled_from(["larger-nearer", "smaller-nearer"]),
+    st.sampled_from(["keep", "replace"]),
+)
+def test_the_frame_is_the_brute_force_nearest_at_each_pixel(
+    triangles: list[tuple[tuple[int, int, int], ...]], nearer: str, ties: str
+) -> None:
+    def area(t: tuple[tuple[int, int, int], ...]) -> int:
+        (x1, y1, _), (x2, y2, _), (x3, y3, _) = t
+        return (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
+
+    triangles = [t for t in triangles if area(t) != 0]
+    if not triangles:
+        return
+    flat: list[object] = []
+    for t in triangles:
+        flat += [":", *[c for p in t for c in p]]
+    sol = visible_zbuffer(flat, size="6x5", depth=nearer, ties=ties)
+    for y in range(5):
+        for x in range(6):
+            best: tuple[int, Fraction] | None = None
+            for i, t in enumerate(triangles):
+                if not _inside([(Fraction(p[0]), Fraction(p[1])) for p in t], x, y):
+                    continue
+                z = _depth(list(t), x, y)
+                if best is None:
+                    best = (i, z)
+                    continue
+                closer = z > best[1] if nearer == "larger-nearer" else z < best[1]
+                if closer or (z == best[1] and ties == "replace"):
+                    best = (i, z)
+            key = f"{x},{y}"
+            if best is None:
+                assert key not in sol.data["frame"]
+            else:
+                assert sol.data["frame"][key] == "ABCD"[best[0]], (x, y)
+                assert sol.data["depth"][key] == best[1]
+
+
+def test_the_far_value_keeps_what_is_behind_it() -> None:
+    sol = visible_zbuffer(list(EXAMPLE), size="5", far=3)
+    assert set(sol.data["frame"].values()) == {"B"}  # only B's z = 4 at (1, 1) is nearer than 3
+    assert list(sol.data["frame"]) == ["1,1"]
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        ((*EXAMPLE, "--size", "40"), "1 to 32"),
+        ((*EXAMPLE, "--size", "4y4"), "W x H"),
+        (("0", "0", "0", "0", "1", "0", "0", "0", "1"), "edge-on"),
+        (("0", "0", "0", "100", "0", "0", "0", "1", "0"), "at most 64"),
+        (("0", "0", "0", "1", "0", "0", "0", "1", "0", "1", "1", "1"), "not planar"),
+    ],
+)
+def test_bad_input_is_one_line_and_exit_2(args: tuple[str, ...], message: str) -> None:
+    result = run("3d", "zbuffer", *args)
+    assert result.code == 2 and result.out == ""
+    assert message in result.err and result.err.count("\n") == 1
+
+
+def test_an_oversized_question_is_refused_before_work() -> None:
+    from scanconv.render.work import estimate
+
+    work = estimate("visible_zbuffer", {"polygons": list(EXAMPLE), "size": "32"})
+    assert work is not None and work.rows == 2 * 32 * 32
