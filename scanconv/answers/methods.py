@@ -25,7 +25,7 @@ fall-through to another method):
 >>> method("line", "midpoint-x")
 Traceback (most recent call last):
 ...
-scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from basic, dda, bresenham, midpoint, wu)
+scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from basic, dda, bresenham, midpoint, symmetric-dda, wu)
 >>> method("circle", "midpoint").knobs
 ('tie', 'p0', 'loop', 'update')
 >>> methods_of("ellipse")
@@ -112,7 +112,11 @@ class Method(NamedTuple):
     facts: tuple[tuple[str, str], ...] = ()
     """What ``compare`` says of it: ``tag`` (its name in a reason tag, ``SDDA twice``),
     ``work`` and ``arithmetic`` (a line method's row of the "Arithmetic per pixel" table,
-    ``{maj}``, ``{mnr}`` and ``{d}`` standing for the axes and the minor difference)."""
+    ``{maj}``, ``{mnr}`` and ``{d}`` standing for the axes and the minor difference; a line
+    method's ``tag`` gives compare line's reason tags, ``SDDA off``/``SDDA repeats``); a
+    DDA-family line's (its answer ``line:dda_answer``) ``heading`` (the answer's title) and
+    ``steps`` (the TeX of its number of steps, of ``{adx}``, ``{ady}``, ``{longest}``, ``{n}``
+    and ``{steps}``; the simple DDA's ``max(|Δx|, |Δy|)`` without one)."""
 
     def fact(self, name: str) -> str:
         """One of :attr:`facts` (``""`` if the record states none)."""
@@ -222,6 +226,23 @@ _LINE = (
             ("pseudocode", "Bresenham's loop with d for p (the bresenham method's pseudocode)"),
             ("raster", "raster.line's bresenham gives the same pixels (the default tie)"),
             ("practice", "the practice topic midpoint-line words it itself"),
+        ),
+    ),
+    Method(
+        command="line", name="symmetric-dda", title="symmetric DDA line algorithm",
+        answer=_L + "dda_answer", generator=_G + "lines:symmetric_dda",
+        model=_MODELS + "dda_line", errata=_ERRATA + "none", practice=_LP + "practice",
+        rows=_G + "lines:symmetric_dda_rows", cost=28.7, short="sym. DDA",
+        facts=(
+            ("work", "x += eps d{maj}, y += eps d{mnr}"), ("arithmetic", "fractions 1/2^n, rounding"),
+            ("tag", "SDDA"), ("heading", "Symmetric DDA line algorithm"),
+            ("steps", r"\text{{steps}} = 2^n,\ 2^{{n-1}} \le \max(|\Delta x|, |\Delta y|) = "
+             r"\max({adx}, {ady}) = {longest} < 2^n:\ n = {n},\ \text{{steps}} = 2^{{{n}}} = {steps}"),
+        ),
+        missing=(
+            ("derivation", "the notes give no symmetric DDA line: the steps and increments are its working"),
+            ("pseudocode", "the notes give no symmetric DDA line (the DDA's loop, steps = 2^n)"),
+            ("raster", "raster.line draws bresenham, dda and basic"),
         ),
     ),
     Method(
@@ -570,7 +591,7 @@ def compared(command: str) -> tuple[str, ...]:
     """The methods ``scanconv compare`` sets side by side, in column order.
 
     >>> compared("line")
-    ('basic', 'dda', 'bresenham')
+    ('basic', 'dda', 'bresenham', 'symmetric-dda')
     """
     return tuple(m.name for m in METHODS.values() if m.command == command and m.short)
 
