@@ -133,7 +133,7 @@ def _matrix() -> Case:
 
 
 POINTS = ["0", "0", "3", "9", "6", "9", "9", "0", "12", "4", "15", "8", "18", "1", "21", "5"]
-LINES = ("basic", "dda", "bresenham", "wu", "midpoint")
+LINES = ("basic", "dda", "bresenham", "wu", "midpoint", "symmetric-dda")
 CIRCLES = ("midpoint", "bresenham", "polynomial", "general", "trig", "symmetric-dda")
 
 #: (costs key, library function, its arguments and the command line for about n rows).

@@ -89,7 +89,9 @@ def test_every_format_and_algorithm(fmt, algo):
         px, py = ("plot_x", "plot_y") if "plot_x" in header else ("x", "y")  # the pixel's
         x, y = header.index(px), header.index(py)
         assert [(int(row[x]), int(row[y])) for row in rows] == steps
-        assert pixels[len(pixels) - len(rows) :] == steps  # every row's pixel is plotted
+        # every row's pixel is plotted (a pixel repeated by consecutive rows once: the DDAs')
+        once = [p for i, p in enumerate(steps) if i == 0 or p != steps[i - 1]]
+        assert pixels[len(pixels) - len(once) :] == once
     elif fmt == "html":
         drawn = re.findall(
             r'<rect class="sc-px" data-i="\d+" data-x="(-?\d+)" data-y="(-?\d+)"', r.out

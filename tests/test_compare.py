@@ -25,10 +25,21 @@ def _rows(solution):
     return list(solution.tables[0].rows())
 
 
+def _notes_rows(solution):
+    """The rows as the notes' three methods see them: x, the exact y, basic, DDA, Bresenham,
+    and the reason tags that concern them (a method compared after them, as the symmetric
+    DDA, has its own column and ``SDDA`` tags, checked in tests/test_lines_symmetric_dda.py)."""
+    out = []
+    for r in _rows(solution):
+        tags = [t for t in str(r[-1]).split(", ") if r[-1] is not None and "SDDA" not in t]
+        out.append((*r[:5], ", ".join(tags) or None))
+    return out
+
+
 def test_notes_example_negative_slope_differs_exactly_at_the_ties():
     # y = 8 - (x - 2) / 2: a tie (y = k + 1/2) at every odd x; half up takes the upper pixel,
     # Bresenham (walking right, stepping y toward the end point) the lower one.
-    rows = _rows(compare_lines(2, 8, 10, 4))
+    rows = _notes_rows(compare_lines(2, 8, 10, 4))
     assert [r[0] for r in rows] == list(range(2, 11))
     for x, exact, basic, dda, bres, reason in rows:
         y = Fraction(16 - (x - 2), 2)
@@ -42,9 +53,12 @@ def test_notes_example_negative_slope_differs_exactly_at_the_ties():
 
 def test_positive_slope_all_agree_and_say_so():
     solution = compare_lines(2, 2, 10, 6)
-    assert all(r[-1] is None for r in _rows(solution))
-    assert solution.notes[0] == "Every method plots the same pixels (9)."
-    assert solution.data["columns_differing"] == 0
+    assert all(r[-1] is None for r in _notes_rows(solution))
+    # the notes' three agree; the symmetric DDA's 16 steps of (1/2, 1/4) plot two pixels in
+    # each of the columns x = 3, 5, 7, 9 (its points (2.5, 2.25) and (3, 2.5) round to (3, 2)
+    # and (3, 3)): 13 pixels in all
+    assert solution.notes[0].startswith("The methods differ in 4 of 9 columns (basic: 9 pixels")
+    assert "sym. DDA: 13 pixels" in solution.notes[0]
 
 
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop
@@ -53,7 +67,7 @@ def test_positive_slope_all_agree_and_say_so():
 @given(st.tuples(*[st.integers(-12, 12)] * 4))
 def test_integer_lines_differ_only_at_ties(ends):
     x1, y1, x2, y2 = ends
-    rows = _rows(compare_lines(*ends))
+    rows = _notes_rows(compare_lines(*ends))
     steep = abs(y2 - y1) > abs(x2 - x1)
     for _, exact, basic, dda, bres, reason in rows:
         assert basic == dda  # same exact points, same rounding
@@ -116,7 +130,8 @@ def test_cli_compare_line_plain_and_json():
     assert result.out.isascii()
     data = json.loads(run("compare", "line", "2", "8", "10", "4", "--format", "json").out)
     assert data["algorithm"] == "compare" and data["columns_differing"] == 4
-    assert data["tables"][0]["rows"][1] == [3, 7.5, 8, 8, 7, "tie"]
+    row = data["tables"][0]["rows"][1]
+    assert row[:5] + row[-1:] == [3, 7.5, 8, 8, 7, "tie"]
 
 
 def test_cli_compare_line_bad_input_is_one_line_exit_2():

@@ -22,7 +22,12 @@ from scanconv.core.records import Move
 
 coord = st.integers(min_value=-60, max_value=60)
 lines = st.tuples(coord, coord, coord, coord)
-NOT_ONE_PIXEL_A_STEP = {"wu": "anti-aliased: two pixels a column, each with an intensity"}
+NOT_ONE_PIXEL_A_STEP = {
+    "wu": "anti-aliased: two pixels a column, each with an intensity",
+    "symmetric-dda": "2^n steps of ε Δ, both coordinates rounded: a step can move the minor "
+    "coordinate alone (a corner, a pixel off the major-step line) and points repeat a pixel "
+    "(tests/test_lines_symmetric_dda.py checks it against its own definition)",
+}
 """The line methods the pixel properties below do not hold for, and why."""
 ALGOS = tuple(m for m in methods_of("line") if m not in NOT_ONE_PIXEL_A_STEP)
 """Every line method of the records that plots one pixel a step (a new one is walked at once)."""

@@ -320,6 +320,6 @@ def test_every_method_with_a_marking_model_has_the_test_and_no_other_of_its_comm
         if walk:
             with_model.add(record.key)
     assert with_model == {
-        "line/dda", "line/bresenham", "line/midpoint", "circle/midpoint", "circle/bresenham",
-        "circle/general", "ellipse/midpoint",
+        "line/dda", "line/bresenham", "line/midpoint", "line/symmetric-dda", "circle/midpoint",
+        "circle/bresenham", "circle/general", "ellipse/midpoint",
     }  # fmt: skip

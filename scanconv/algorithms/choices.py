@@ -11,7 +11,7 @@ from __future__ import annotations
 from enum import Enum
 from typing import Literal
 
-LineAlgorithmName = Literal["bresenham", "dda", "basic", "wu", "midpoint"]
+LineAlgorithmName = Literal["bresenham", "dda", "basic", "wu", "midpoint", "symmetric-dda"]
 """``algo`` of :func:`scanconv.line`, the API's ``Literal`` (what mypy checks a name against):
 one line method's name here and in :class:`LineAlgorithm` just below, the two side by side
 (``tests/test_api_typing.py`` checks they agree, ``tests/test_methods.py`` that each has its
@@ -30,6 +30,8 @@ class LineAlgorithm(str, Enum):
     """Xiaolin Wu's anti-aliased line (the table of :mod:`scanconv.answers.process.antialias.sampling`)."""
     midpoint = "midpoint"
     """The midpoint line algorithm: d = F(M), Bresenham's p with its own derivation."""
+    symmetric_dda = "symmetric-dda"
+    """The symmetric DDA: both coordinates stepped by ε Δ, ε = 2^-n (Rogers)."""
 
 
 class Rounding(str, Enum):

@@ -1,4 +1,5 @@
-"""Line drawing: the basic (direct) method, the simple DDA and Bresenham's algorithm.
+"""Line drawing: the basic (direct) method, the simple and the symmetric DDA and Bresenham's
+algorithm.
 
 Each algorithm is a generator of :class:`~scanconv.core.records.Step` records, valid in all eight
 octants; :func:`line_solution` wraps one of them with the given and derived values an exam
@@ -9,7 +10,7 @@ answer writes above the table. Coordinates are ``(x, y)`` with y up (see
 import math
 from collections.abc import Iterator
 from fractions import Fraction
-from typing import NamedTuple
+from typing import NamedTuple, Protocol
 
 from ..core.numeric import (
     Number,
@@ -263,14 +264,89 @@ def dda(
     8 10.000 6.000 (10, 6)
     """
     # dda(2, 2, 10, 6) -> y: 2 2.5 3 3.5 4 4.5 5 5.5 6 ; rounded: 2 3 3 4 4 5 5 6 6
+    return walk_increments(x1, y1, x2, y2, dda_steps(x1, y1, x2, y2), rounding)
+
+
+def walk_increments(
+    x1: Number, y1: Number, x2: Number, y2: Number, steps: int, rounding: str = "half-up"
+) -> Iterator[Step]:
+    """The DDA family's walk: ``steps + 1`` rows from P1 to P2, both coordinates stepped by
+    :func:`increments` (exact), each rounded by ``rounding``; ``Step.extra`` is
+    ``(x_k, y_k, round(x_k), round(y_k))``.
+
+    >>> [s.pixel for s in walk_increments(0, 0, 2, 1, 4)]
+    [(0, 0), (1, 0), (1, 1), (2, 1), (2, 1)]
+    """
     rnd = rounder(rounding)
-    steps = dda_steps(x1, y1, x2, y2)
-    xi, yi = dda_increments(x1, y1, x2, y2)
+    xi, yi = increments(x1, y1, x2, y2, steps)
     for k in range(steps + 1):
         x = normalize(x1 + k * xi)  # exact: k * inc, not repeated addition
         y = normalize(y1 + k * yi)
         px, py = rnd(x), rnd(y)
         yield Step(k, None, None, (px, py), (x, y, px, py))
+
+
+def symmetric_dda(
+    x1: Number, y1: Number, x2: Number, y2: Number, rounding: str = "half-up"
+) -> Iterator[Step]:
+    """The symmetric DDA: both coordinates stepped by ``ε Δx`` and ``ε Δy`` with ``ε = 2^-n``,
+    ``2^(n-1) <= max(|Δx|, |Δy|) < 2^n``, from P1 to P2 as given, exact; ``Step.extra`` is
+    ``(x_k, y_k, round(x_k), round(y_k))``, ``2^n + 1`` rows.
+
+    Notes
+    -----
+    Rogers, *Procedural Elements for Computer Graphics*, the symmetric DDA: ε a power of 2, so
+    that a machine steps by a shift, each increment at most 1 (half a pixel or more along the
+    major axis, so that pixels repeat, about half of them). With exact fractions no error
+    accumulates; pixels are rounded half up (``floor(v + 1/2)``). A line shorter than a pixel
+    takes one step, a point none (:func:`symmetric_dda_steps`).
+
+    Examples
+    --------
+    Hand-worked: (0, 0) to (5, 2), n = 3 (4 <= 5 < 8), ε = 1/8:
+
+    >>> from scanconv.core.numeric import fmt
+    >>> for s in symmetric_dda(0, 0, 5, 2):
+    ...     print(s.k, fmt(s.extra[0], 3), fmt(s.extra[1], 3), s.pixel)
+    0 0.000 0.000 (0, 0)
+    1 0.625 0.250 (1, 0)
+    2 1.250 0.500 (1, 1)
+    3 1.875 0.750 (2, 1)
+    4 2.500 1.000 (3, 1)
+    5 3.125 1.250 (3, 1)
+    6 3.750 1.500 (4, 2)
+    7 4.375 1.750 (4, 2)
+    8 5.000 2.000 (5, 2)
+    """
+    return walk_increments(x1, y1, x2, y2, symmetric_dda_steps(x1, y1, x2, y2), rounding)
+
+
+def symmetric_dda_steps(x1: Number, y1: Number, x2: Number, y2: Number) -> int:
+    """``2^n`` with ``2^(n-1) <= max(|Δx|, |Δy|) < 2^n``; 1 for a line shorter than a pixel
+    (n = 0), 0 for a point.
+
+    >>> symmetric_dda_steps(0, 0, 5, 2), symmetric_dda_steps(2, 2, 10, 6), symmetric_dda_steps(0, 0, "1/2", 0)
+    (8, 16, 1)
+    """
+    longest = max(abs_value(Fraction(x2) - Fraction(x1)), abs_value(Fraction(y2) - Fraction(y1)))
+    return 0 if longest == 0 else 1 << math.floor(longest).bit_length()
+
+
+class Asked(Protocol):
+    """A line question as a row estimate reads it (:class:`scanconv.answers.asked.LineQuestion`)."""
+
+    @property
+    def points(self) -> tuple[Number, Number, Number, Number]: ...
+
+
+def symmetric_dda_rows(q: Asked) -> int:
+    """The symmetric DDA's rows (its record's estimate, exact): ``2^n + 1``.
+
+    >>> from scanconv.answers.asked import LineQuestion
+    >>> symmetric_dda_rows(LineQuestion("symmetric-dda", 0, 0, 1500000, 1))
+    2097153
+    """
+    return symmetric_dda_steps(*q.points) + 1
 
 
 def abs_value(v: Number) -> Fraction:
@@ -353,4 +429,4 @@ def basic(
 
 
 ALGORITHMS = tuple(a.value for a in LineAlgorithm)
-"""The line algorithms' names: ``("bresenham", "dda", "basic", "wu")``."""
+"""The line algorithms' names, :class:`~scanconv.algorithms.choices.LineAlgorithm`'s values."""

@@ -25,7 +25,7 @@ fall-through to another method):
 >>> method("line", "midpoint-x")
 Traceback (most recent call last):
 ...
-scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from basic, dda, bresenham, midpoint, wu)
+scanconv.core.checks.InputError: unknown line method 'midpoint-x' (choose from basic, dda, bresenham, midpoint, symmetric-dda, wu)
 >>> method("circle", "midpoint").knobs
 ('tie', 'p0', 'loop', 'update')
 >>> methods_of("ellipse")
@@ -102,6 +102,23 @@ _LINE = (
             ("pseudocode", "Bresenham's loop with d for p (the bresenham method's pseudocode)"),
             ("raster", "raster.line's bresenham gives the same pixels (the default tie)"),
             ("practice", "the practice topic midpoint-line words it itself"),
+        ),
+    ),
+    Method(
+        command="line", name="symmetric-dda", title="symmetric DDA line algorithm",
+        answer=_L + "dda_answer", generator=_G + "lines:symmetric_dda",
+        model=_MODELS + "dda_line", errata=_ERRATA + "none", practice=_LP + "practice",
+        rows=_G + "lines:symmetric_dda_rows", cost=28.7, short="sym. DDA",
+        facts=(
+            ("work", "x += eps d{maj}, y += eps d{mnr}"), ("arithmetic", "fractions 1/2^n, rounding"),
+            ("tag", "SDDA"), ("heading", "Symmetric DDA line algorithm"),
+            ("steps", r"\text{{steps}} = 2^n,\ 2^{{n-1}} \le \max(|\Delta x|, |\Delta y|) = "
+             r"\max({adx}, {ady}) = {longest} < 2^n:\ n = {n},\ \text{{steps}} = 2^{{{n}}} = {steps}"),
+        ),
+        missing=(
+            ("derivation", "the notes give no symmetric DDA line: the steps and increments are its working"),
+            ("pseudocode", "the notes give no symmetric DDA line (the DDA's loop, steps = 2^n)"),
+            ("raster", "raster.line draws bresenham, dda and basic"),
         ),
     ),
     Method(
@@ -441,7 +458,7 @@ def compared(command: str) -> tuple[str, ...]:
     """The methods ``scanconv compare`` sets side by side, in column order.
 
     >>> compared("line")
-    ('basic', 'dda', 'bresenham')
+    ('basic', 'dda', 'bresenham', 'symmetric-dda')
     """
     return tuple(m.name for m in METHODS.values() if m.command == command and m.short)
 

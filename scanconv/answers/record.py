@@ -80,7 +80,11 @@ class Method(NamedTuple):
     facts: tuple[tuple[str, str], ...] = ()
     """What ``compare`` says of it: ``tag`` (its name in a reason tag, ``SDDA twice``),
     ``work`` and ``arithmetic`` (a line method's row of the "Arithmetic per pixel" table,
-    ``{maj}``, ``{mnr}`` and ``{d}`` standing for the axes and the minor difference)."""
+    ``{maj}``, ``{mnr}`` and ``{d}`` standing for the axes and the minor difference; a line
+    method's ``tag`` gives compare line's reason tags, ``SDDA off``/``SDDA repeats``); a
+    DDA-family line's (its answer ``line:dda_answer``) ``heading`` (the answer's title) and
+    ``steps`` (the TeX of its number of steps, of ``{adx}``, ``{ady}``, ``{longest}``, ``{n}``
+    and ``{steps}``; the simple DDA's ``max(|Δx|, |Δy|)`` without one)."""
 
     spec: str | None = None
     """A command's own record of the method (``module:attribute``), where its answer reads
