@@ -40,6 +40,7 @@ from .values import NumberLike, PointLike, _choice, _maybe, _number, _numbers, _
 if TYPE_CHECKING:
     from ..algorithms import circle_choices
     from ..answers import compare as answers_compare
+    from ..answers.curves import compare as answers_curves_compare
     from ..answers.primitives import circle as answers_circle
     from ..answers.primitives import ellipse as answers_ellipse
     from ..answers.primitives import line as answers_line
@@ -64,6 +65,7 @@ else:  # each command's answer module, loaded by its first call; the circle's ch
     circle_choices = lazy.module("scanconv.algorithms.circle_choices")
     answers_circle = lazy.module("scanconv.answers.primitives.circle")
     answers_compare = lazy.module("scanconv.answers.compare")
+    answers_curves_compare = lazy.module("scanconv.answers.curves.compare")
     answers_ellipse = lazy.module("scanconv.answers.primitives.ellipse")
     answers_line = lazy.module("scanconv.answers.primitives.line")
 
@@ -517,4 +519,4 @@ def compare_curves() -> Solution:
     >>> list(sol.tables[0].rows())[0]
     ('control', 'global: a point moves the whole curve', 'local: only nearby spans')
     """
-    return answers_compare.compare_curves()
+    return answers_curves_compare.compare_curves()

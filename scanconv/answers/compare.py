@@ -21,7 +21,7 @@ from ..core import lazy
 from ..core.checks import InputError, check_integer
 from ..core.ideal import IdealCircle, IdealLine
 from ..core.numeric import Number, fmt, fmt_short, normalize
-from ..core.records import Pixel, PixelFigure, Plot, Solution, Table, Walk, heading, rule
+from ..core.records import Pixel, PixelFigure, Plot, Solution, Table, Walk, heading
 from .methods import METHODS, compared, method
 
 if TYPE_CHECKING:
@@ -573,31 +573,5 @@ def _theory(kind: str, wanted: bool) -> tuple[Table, ...]:
             "Theory: general method vs Bresenham (midpoint)",
             ("point", "general method", "Bresenham"),
             th.CIRCLE_THEORY,
-        ),
-    )
-
-
-def compare_curves() -> Solution:
-    """The points the notes' Bezier vs B-spline comparison expects (a theory table only).
-
-    >>> len(list(compare_curves().tables[0].rows()))
-    5
-    """
-    return Solution(
-        primitive="curve",
-        algorithm="compare",
-        title="Bezier vs B-spline curves",
-        given=(rule("question", r"\text{Compare Bezier and B-spline curves}"),),
-        derived=(),
-        notes=(
-            "A clamped B-spline does pass through its first and last control points "
-            "(erratum E4); the notes' 'does not pass' holds for unclamped knots.",
-        ),
-        walk=Walk(
-            tables=(
-                th.theory_table(
-                    "Theory: Bezier vs B-spline", ("point", "Bezier", "B-spline"), th.CURVE_THEORY
-                )._replace(stepped=True),
-            )
         ),
     )
