@@ -165,6 +165,7 @@ COMMANDS = {
     "characters": {"char"},
     "midpoint-line": {"line"},
     "dither": {"dither", "halftone", "printer"},
+    "visible": {"3d"},
 }
 
 

@@ -51,6 +51,7 @@ class Topic(str, Enum):
     characters = "characters"
     midpoint_line = "midpoint-line"
     antialias = "antialias"
+    visible = "visible"
     all = "all"
 
 

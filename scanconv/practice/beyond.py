@@ -15,6 +15,7 @@ from typing import Any
 from ..answers.methods import method
 from . import windows
 from .records import PracticeQuestion, line_question
+from .visible import visible
 
 
 def _image(rng: random.Random, rows: int, cols: int) -> str:
@@ -459,6 +460,7 @@ KINDS: dict[str, list[Any]] = {
             (6, False),
         )
     ],  # a tie: d = 0 at some step (the tie convention decides)
+    "visible": ["backface", "zbuffer", "scanline", "depth-sort", "warnock"],
 }
 """Each topic's kinds, walked in a seeded rotation."""
 
@@ -471,4 +473,5 @@ MAKERS = {
     "characters": characters,
     "midpoint-line": midpoint_line,
     "antialias": antialias,
+    "visible": visible,
 }
