@@ -39,8 +39,11 @@ def _words(faces: dict[str, tuple[tuple[int, int, int], ...]]) -> list[str]:
 
 
 def test_the_published_tetrahedron_s_normals_and_verdicts() -> None:
-    sol = visible_backface([w if w == ":" else int(w) for w in _words(TETRA)])
+    sol = visible_backface(
+        [w if w == ":" else int(w) for w in _words(TETRA)], names=",".join(TETRA)
+    )
     faces = sol.data["faces"]
+    assert [f["name"] for f in faces] == list(TETRA)
     assert [tuple(f["normal"]) for f in faces] == list(PUBLISHED.values())
     assert [f["back"] for f in faces] == [False, False, True, True]
 
@@ -136,6 +139,9 @@ def test_left_handed_axes_look_along_plus_z() -> None:
         (("--solid", "cube", "--view", "0", "0", "0"), "zero"),
         (("--solid", "cube", "--view", "0", "0", "1", "--eye", "0", "0", "5"), "not both"),
         ((), "give the faces"),
+        (("--solid", "cube", "--names", "a,b"), "their own names"),
+        (("0", "0", "0", "1", "0", "0", "0", "1", "0", "--names", "a,b"), "2 given for 1 faces"),
+        (("0", "0", "0", "1", "0", "0", "0", "1", "0", "--names", "a b"), "up to 12 letters"),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(args: tuple[str, ...], message: str) -> None:
