@@ -79,6 +79,7 @@ small = st.integers(-6, 6)
 point = st.tuples(small, small, small)
 
 
+@pytest.mark.slow  # a property of many answers: over 50 ms
 @settings(deadline=None)
 @given(
     st.lists(st.tuples(point, point, point), min_size=1, max_size=5),
