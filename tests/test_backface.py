@@ -5,6 +5,7 @@ against the sign of the dot product computed here."""
 from __future__ import annotations
 
 from fractions import Fraction
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
@@ -155,3 +156,26 @@ def test_the_answer_states_its_conventions() -> None:
     out = run("3d", "backface", "--solid", "pyramid", "--direction", "to-viewer", "-f", "plain").out
     assert "direction = to-viewer" in out and "edge-on = hidden" in out and "handed = right" in out
     assert "Conventions (as given)" in out
+
+
+def test_check_marks_a_student_s_table_of_faces(tmp_path: Path) -> None:
+    # the tetrahedron's xy face (N = (0, 0, -1), V.N = 1: hidden) written as visible with V.N = -1
+    rows = [
+        "face,normal,dot,verdict",
+        'xy,"(0, 0, -1)",-1,visible',
+        'yz,"(-1, 0, 0)",0,"edge-on, hidden (back face)"',
+        'zx,"(0, -1, 0)",0,"edge-on, hidden (back face)"',
+        'slant,"(1, 1, 1)",-1,visible',
+    ]
+    student = tmp_path / "faces.csv"
+    student.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    result = run(
+        "check", str(student), "--", "3d", "backface", "--solid", "tetrahedron", "-f", "plain"
+    )
+    assert result.code == 0, result.err
+    marks = [
+        line.split()[-1]
+        for line in result.out.splitlines()
+        if line.strip().endswith(("right", "wrong"))
+    ]
+    assert marks == ["wrong", "right", "right", "right"]
