@@ -5,6 +5,7 @@ against the sign of the dot product computed here."""
 from __future__ import annotations
 
 from fractions import Fraction
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
@@ -39,8 +40,11 @@ def _words(faces: dict[str, tuple[tuple[int, int, int], ...]]) -> list[str]:
 
 
 def test_the_published_tetrahedron_s_normals_and_verdicts() -> None:
-    sol = visible_backface([w if w == ":" else int(w) for w in _words(TETRA)])
+    sol = visible_backface(
+        [w if w == ":" else int(w) for w in _words(TETRA)], names=",".join(TETRA)
+    )
     faces = sol.data["faces"]
+    assert [f["name"] for f in faces] == list(TETRA)
     assert [tuple(f["normal"]) for f in faces] == list(PUBLISHED.values())
     assert [f["back"] for f in faces] == [False, False, True, True]
 
@@ -76,6 +80,7 @@ small = st.integers(-6, 6)
 point = st.tuples(small, small, small)
 
 
+@pytest.mark.slow  # a property of many answers: over 50 ms
 @settings(deadline=None)
 @given(
     st.lists(st.tuples(point, point, point), min_size=1, max_size=5),
@@ -136,6 +141,9 @@ def test_left_handed_axes_look_along_plus_z() -> None:
         (("--solid", "cube", "--view", "0", "0", "0"), "zero"),
         (("--solid", "cube", "--view", "0", "0", "1", "--eye", "0", "0", "5"), "not both"),
         ((), "give the faces"),
+        (("--solid", "cube", "--names", "a,b"), "their own names"),
+        (("0", "0", "0", "1", "0", "0", "0", "1", "0", "--names", "a,b"), "2 given for 1 faces"),
+        (("0", "0", "0", "1", "0", "0", "0", "1", "0", "--names", "a b"), "up to 12 letters"),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(args: tuple[str, ...], message: str) -> None:
@@ -148,3 +156,26 @@ def test_the_answer_states_its_conventions() -> None:
     out = run("3d", "backface", "--solid", "pyramid", "--direction", "to-viewer", "-f", "plain").out
     assert "direction = to-viewer" in out and "edge-on = hidden" in out and "handed = right" in out
     assert "Conventions (as given)" in out
+
+
+def test_check_marks_a_student_s_table_of_faces(tmp_path: Path) -> None:
+    # the tetrahedron's xy face (N = (0, 0, -1), V.N = 1: hidden) written as visible with V.N = -1
+    rows = [
+        "face,normal,dot,verdict",
+        'xy,"(0, 0, -1)",-1,visible',
+        'yz,"(-1, 0, 0)",0,"edge-on, hidden (back face)"',
+        'zx,"(0, -1, 0)",0,"edge-on, hidden (back face)"',
+        'slant,"(1, 1, 1)",-1,visible',
+    ]
+    student = tmp_path / "faces.csv"
+    student.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    result = run(
+        "check", str(student), "--", "3d", "backface", "--solid", "tetrahedron", "-f", "plain"
+    )
+    assert result.code == 0, result.err
+    marks = [
+        line.split()[-1]
+        for line in result.out.splitlines()
+        if line.strip().endswith(("right", "wrong"))
+    ]
+    assert marks == ["wrong", "right", "right", "right"]

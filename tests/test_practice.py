@@ -166,6 +166,7 @@ COMMANDS = {
     "midpoint-line": {"line"},
     "line-methods": {"line"},
     "dither": {"dither", "halftone", "printer"},
+    "visible": {"3d"},
 }
 
 

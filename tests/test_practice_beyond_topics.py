@@ -14,7 +14,7 @@ from scanconv.practice.notes import TOPICS, practice
 
 from .helpers import run
 
-NEW = ("attributes", "characters", "midpoint-line", "antialias")
+NEW = ("attributes", "characters", "midpoint-line", "antialias", "visible")
 
 
 def test_the_topics_are_offered() -> None:

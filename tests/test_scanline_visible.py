@@ -61,6 +61,7 @@ depth = st.integers(-5, 5)
 triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
 
 
+@pytest.mark.slow  # a property of many answers: over 50 ms
 @settings(deadline=None)
 @given(
     st.lists(triangle, min_size=1, max_size=4),

@@ -124,6 +124,14 @@ def visible_backface(
             show_default=False,
         ),
     ] = None,
+    names: Annotated[
+        str | None,
+        Opt(
+            "--names",
+            help="The faces' names, separated by commas (default F1, F2, ...).",
+            show_default=False,
+        ),
+    ] = None,
     direction: Annotated[
         str | None,
         Opt(
@@ -169,6 +177,8 @@ def visible_backface(
         right-handed).
     eye : (x, y, z), optional
         The viewer's position: V is worked per face from its first vertex.
+    names : str, optional
+        The faces' names, separated by commas (``"PQR,QSR,PRS,PSQ"``; default F1, F2, ...).
     direction : {"into-scene", "to-viewer"}, optional
         Which way V points (default ``"into-scene"``: a back face has ``V . N > 0``).
     edge_on : {"hidden", "visible"}, optional
@@ -200,6 +210,7 @@ def visible_backface(
         solid=_maybe(solid, "solid"),
         view=_vec(view, "view"),
         eye=_vec(eye, "eye"),
+        names=None if names is None else _choice(names, "names"),
         conventions={
             "direction": _maybe(direction, "direction"),
             "edge-on": _maybe(edge_on, "edge_on"),

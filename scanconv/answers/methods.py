@@ -381,17 +381,15 @@ _SPACE = (
     ),
 )  # fmt: skip
 
-_V = "scanconv.answers.visible."
-_VISIBLE = (
-    _plain("3d", "backface", "back-face detection", _V + "backface:backface_solution", _G + "visible:backface"),
-    _plain("3d", "zbuffer", "depth-buffer (z-buffer) method", _V + "zbuffer:zbuffer_solution",
-           _G + "visible_zbuffer:zbuffer"),
-    _plain("3d", "warnock", "Warnock's area subdivision", _V + "warnock:warnock_solution",
-           _G + "visible_warnock:warnock"),
-    _plain("3d", "scanline", "scan-line method (visible surfaces)", _V + "scanline:scanline_solution",
-           _G + "visible_scanline:scanline"),
-    _plain("3d", "depth-sort", "depth-sort (painter's) method", _V + "depthsort:depth_sort_solution",
-           _G + "visible_depthsort:depth_sort"),
+_VISIBLE = tuple(  # scanconv 3d: answers.visible.<module>:<fn>_solution, algorithms.<gen>:<fn>
+    _plain("3d", name, title, f"scanconv.answers.visible.{mod}:{fn}_solution", f"{_G}{gen}:{fn}")
+    for name, title, mod, fn, gen in (
+        ("backface", "back-face detection", "backface", "backface", "visible"),
+        ("zbuffer", "depth-buffer (z-buffer) method", "zbuffer", "zbuffer", "visible_zbuffer"),
+        ("warnock", "Warnock's area subdivision", "warnock", "warnock", "visible_warnock"),
+        ("scanline", "scan-line method (visible surfaces)", "scanline", "scanline", "visible_scanline"),
+        ("depth-sort", "depth-sort (painter's) method", "depthsort", "depth_sort", "visible_depthsort"),
+    )
 )  # fmt: skip
 
 # fmt: off

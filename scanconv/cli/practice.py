@@ -52,6 +52,7 @@ class Topic(str, Enum):
     midpoint_line = "midpoint-line"
     antialias = "antialias"
     line_methods = "line-methods"
+    visible = "visible"
     all = "all"
 
 

@@ -66,6 +66,16 @@ def table_models_for(solution: Solution) -> list[TableModel]:
                 )
             )
         return verdicts
+    if solution.primitive == "3d":  # the visible-surface tables: each row stands alone
+        return [
+            PlainRowsTable(
+                t.title,
+                tuple(c.key for c in t.columns if c.role == "answer"),
+                "Each row stands alone (a face's normal and verdict, a pixel's depth, a window's "
+                "decision, a buffer's row).",
+            )
+            for t in solution.tables
+        ]
     stages = [t for t in solution.tables if tuple(c.key for c in t.columns) == _STAGE_COLUMNS]
     if stages and not solution.columns:  # a polygon clipped stage by stage (Sutherland-Hodgman)
         return [

@@ -15,6 +15,7 @@ from typing import Any
 from ..answers.methods import method, methods_of
 from . import windows
 from .records import PracticeQuestion, line_question
+from .visible import visible
 
 
 def _image(rng: random.Random, rows: int, cols: int) -> str:
@@ -471,6 +472,7 @@ KINDS: dict[str, list[Any]] = {
             (6, False),
         )
     ],  # a tie: d = 0 at some step (the tie convention decides)
+    "visible": ["backface", "zbuffer", "scanline", "depth-sort", "warnock"],
 }
 """Each topic's kinds, walked in a seeded rotation."""
 
@@ -484,4 +486,5 @@ MAKERS = {
     "midpoint-line": midpoint_line,
     "antialias": antialias,
     "line-methods": line_methods,
+    "visible": visible,
 }

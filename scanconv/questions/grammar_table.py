@@ -474,11 +474,12 @@ _ALL = (
         Param('solid', ('--solid',), 'choice', choices=('cube', 'pyramid', 'tetrahedron'), help='A named solid instead: cube (the unit cube), pyramid (base 0..2 on y = 0, apex (1, 2, 1)), tetrahedron (the origin and the unit points).'),
         Param('view', ('--view',), 'number', nargs=3, help='The view vector V (default by --direction and --handed).'),
         Param('eye', ('--eye',), 'number', nargs=3, help="The viewer's position instead: V per face, from the eye to V1."),
+        Param('names', ('--names',), 'text', help="The faces' names, separated by commas (default F1, F2, ...)."),
         Param('direction', ('--direction',), 'choice', choices=('into-scene', 'to-viewer'), help='into-scene: V from the viewer into the scene, back face when V.N > 0 (Hearn & Baker, the default); to-viewer: V toward the viewer, back face when V.N < 0.'),
         Param('edge_on', ('--edge-on',), 'choice', choices=('hidden', 'visible'), help="A face with V.N = 0: hidden (the default, Hearn & Baker's C <= 0) or visible."),
         Param('handed', ('--handed',), 'choice', choices=('right', 'left'), help="right (the default): the viewer on +z looking along -z; left: looking along +z (Hearn & Baker's left-handed viewing system)."),
         S['fmt'], S['output'], S['brief'], S['exact'], S['explain'],
-    ), own=('faces', 'solid', 'view', 'eye', 'direction', 'edge_on', 'handed'), ignore_unknown=True),
+    ), own=('faces', 'solid', 'view', 'eye', 'names', 'direction', 'edge_on', 'handed'), ignore_unknown=True),
     Spec(('3d', 'zbuffer'), 'visible_zbuffer', (
         Param('polygons', (), 'coordinate', nargs=-1, required=True, metavar='X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3 ... [: ...]', help="The polygons: x y z of each vertex, ':' between polygons (named A, B, ... in order)."),
         Param('size', ('--size',), 'text', help="The grid, W x H pixels (6x4, or 6 for square; default: the vertices' extent from 0)."),

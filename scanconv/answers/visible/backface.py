@@ -84,6 +84,7 @@ def backface_solution(
     solid: str | None = None,
     view: Sequence[Number] | None = None,
     eye: Sequence[Number] | None = None,
+    names: str | None = None,
     conventions: Mapping[str, str | None] | None = None,
 ) -> Solution:
     """Back-face detection of the faces given (numbers ``x y z ...`` with ``:`` between faces)
@@ -95,7 +96,9 @@ def backface_solution(
     """
     knobs = knobs_for("backface", conventions or {})
     if solid is not None and faces:
-        raise InputError("give the faces or --solid, not both", "solid")
+        raise InputError("give the faces or a named solid, not both", "solid")
+    if solid is not None and names is not None:
+        raise InputError("a named solid's faces have their own names", "names")
     if solid is not None:
         if solid not in vs.SOLIDS:
             raise InputError(
@@ -105,8 +108,10 @@ def backface_solution(
     else:
         given = faces_from(faces, "faces")
         if not given:
-            raise InputError("give the faces (x y z x y z x y z ... : ...) or --solid", "faces")
-        named = checked_faces(given, [f"F{i}" for i in range(1, len(given) + 1)])
+            raise InputError(
+                "give the faces (x y z x y z x y z ... : ...) or a named solid", "faces"
+            )
+        named = checked_faces(given, _names(names, len(given)))
     if view is not None and eye is not None:
         raise InputError("give the view vector or the eye, not both", "view")
     v = None if view is None else _vector(view, "view")
@@ -115,6 +120,20 @@ def backface_solution(
         raise InputError("the view vector is zero", "view")
     tests = list(vs.backface(named, v, e, knobs))
     return _solution(tests, solid, v, e, knobs)
+
+
+def _names(names: str | None, n: int) -> list[str]:
+    """The faces' names: given, separated by commas, or F1, F2, ..."""
+    if names is None:
+        return [f"F{i}" for i in range(1, n + 1)]
+    out = [w.strip() for w in names.split(",")]
+    if len(out) != n or not all(out) or len(set(out)) != n:
+        raise InputError(
+            f"names: {len(out)} given for {n} faces (distinct, separated by commas)", "names"
+        )
+    if any(len(w) > 12 or not w.replace("-", "").replace("_", "").isalnum() for w in out):
+        raise InputError("a face's name is up to 12 letters, digits, '-' or '_'", "names")
+    return out
 
 
 def _vector(values: Sequence[Number], param: str) -> vs.Vec:
