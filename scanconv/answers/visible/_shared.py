@@ -111,7 +111,7 @@ def buffer_tables(
     buffer, top row first, as tables with a column per x."""
     columns = (
         heading("y", "y", role="label"),
-        *(Column(f"x{x}", f"x={x}", f"x = {x}") for x in range(width)),
+        *(Column(f"x{x}", f"x={x}", f"x={x}") for x in range(width)),
     )
 
     def frame_rows() -> Iterator[tuple[Any, ...]]:
