@@ -11,9 +11,10 @@ ASCII notation (``x^2``) set as math (:func:`prose_tex`).
 Tables stay whole where they can: a short table (:data:`KEEP_ROWS`) is a ``tabular`` and its
 heading makes room for it on the page (``\\scneed``); a longer one is a ``longtable`` that
 continues on the next page with its heading repeated. A table too wide for the text width has
-its long text columns wrapped (a comparison's sentences) or, when short, is scaled to the
-width; only a long table too wide even in ``\\scriptsize`` is set in parts of its columns,
-each repeating the first column. Each plotted pixel is its own ``$...$``, so the pixel list
+its long text columns wrapped (a comparison's sentences) or, when short, has its headings
+set on their sides; only a long table too wide even in ``\\scriptsize`` is set in parts of
+its columns, each repeating the first column. Nothing is set below ``\\scriptsize`` (7 pt),
+nor scaled down: print is read on paper. Each plotted pixel is its own ``$...$``, so the pixel list
 breaks between pixels, ragged-right. The pixel grid and the answer's figures are drawn with
 TikZ (:mod:`scanconv.render.tikz`); a figure too large to draw stays a typewriter picture.
 """
@@ -158,8 +159,9 @@ _MARKUP = str.maketrans("", "", "_{}^\\")
 Layout = tuple[str, bool]
 """``(font size, tight)``: what :func:`table_layout` picks for a table."""
 
-_TINY: Layout = ("\\tiny", True)
-"""The last resort for a table whose first column and one other do not fit side by side."""
+_LAST: Layout = ("\\scriptsize", True)
+"""The last resort for a table whose first column and one other do not fit side by side:
+7 pt (the smallest print is set at), its headings on their sides (:func:`sideways_layout`)."""
 
 
 def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> Layout | None:
@@ -179,13 +181,17 @@ def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> Layout
     >>> table_layout([Column(str(i), "(xc + x, yc + y)", "") for i in range(9)], []) is None
     True
     """
-    widths = [_heading_chars(c) for c in columns]
-    for r in rows:
-        widths = [max(w, len(c) + 0.6 * c.count("-")) for w, c in zip(widths, r, strict=True)]
-    text = 4.8 * sum(widths)
+    cells = _cell_chars(columns, rows)
+    text = 4.8 * sum(max(_heading_chars(c), n) for c, n in zip(columns, cells, strict=True))
+    return _fitting(text, len(columns))
+
+
+def _fitting(text: float, count: int) -> Layout | None:
+    """The largest font (and the widest gap) in which ``text`` pt of 10 pt text in ``count``
+    columns fits :data:`TEXT_WIDTH`; ``None`` if not even ``\\scriptsize`` at 3pt does."""
     for gap, tight in ((12, False), (6, True)):
         for size, factor in _SIZES:
-            if text * factor + gap * len(columns) <= 0.97 * TEXT_WIDTH:  # 3% to spare
+            if text * factor + gap * count <= 0.97 * TEXT_WIDTH:  # 3% to spare
                 return size, tight
     return None
 
@@ -206,7 +212,7 @@ def split_columns(
     every = list(range(len(columns)))
     whole = table_layout(columns, rows)
     if whole is not None or len(columns) < 3:
-        return [(every, whole or _TINY)]
+        return [(every, whole or _LAST)]
     rest = every[1:]
     for count in range(2, len(rest) + 1):
         bounds = [len(rest) * i // count for i in range(count + 1)]
@@ -219,7 +225,7 @@ def split_columns(
             fitted.append((part, layout))
         else:
             return fitted
-    return [(every, _TINY)]  # not even one column beside the first fits
+    return [(every, _LAST)]  # not even one column beside the first fits
 
 
 def _select(
@@ -236,8 +242,9 @@ def _heading_chars(column: Column) -> float:
 
 
 RESIZE_ROWS = 40
-"""A table too wide for the page with at most this many rows is set whole, scaled to the
-text width (it fits on a page); a longer one is set in parts of its columns."""
+"""A table too wide for the page with at most this many rows is set whole, its wide headings
+on their sides (:func:`sideways_layout`), when it fits so; a longer one is set in parts of
+its columns."""
 
 WRAP_CHARS = 24
 """A text column with a cell longer than this is set as a paragraph column that wraps."""
@@ -246,32 +253,36 @@ WRAP_CHARS = 24
 def _tables(title: str, columns: Sequence[Column], rows: Rows, after: float = 0) -> Iterator[str]:
     """One table, whole whenever it can be: in the largest type that fits the text width;
     with its long text columns wrapped (a comparison's sentences) rather than set smaller
-    than ``\\small``; scaled down to the text
-    width when it has at most :data:`RESIZE_ROWS` rows; only a long table too wide for the
-    page is set in parts of its columns, each part repeating the first column."""
+    than ``\\small``; its wide headings set on their sides when it has at most
+    :data:`RESIZE_ROWS` rows; only a long table too wide for the page is set in parts of its
+    columns, each part repeating the first column (its headings on their sides too if a part
+    fits no other way). Never shrunk below ``\\scriptsize`` (7 pt)."""
     first = rows()
     head = list(islice(first, _SAMPLE_ROWS))
     parts = split_columns(columns, head)
-    small = parts[0][1][0] in ("\\footnotesize", "\\scriptsize", "\\tiny")
+    small = parts[0][1][0] in ("\\footnotesize", "\\scriptsize")
     wrapped = wrap_spec(columns, head) if len(parts) > 1 or small else None
     if wrapped is not None:
         yield _heading(title, len(head), after)
         yield from _tabular(columns, ("\\small", True), chain(head, first), wrapped)
         yield "\n"
         return
-    if (len(parts) > 1 or parts[0][1] == _TINY) and len(head) <= RESIZE_ROWS:
+    side = sideways_layout(columns, head) if len(head) <= RESIZE_ROWS else None
+    if side is not None and (len(parts) > 1 or table_layout(columns, head) is None):
         yield _heading(title, len(head), after)
-        yield from resized(columns, head)
+        yield from _tabular(columns, side, chain(head, first), sideways=True)
         yield "\n"
         return
     for n, (part, layout) in enumerate(parts, 1):
         label = title if len(parts) == 1 else f"{title}, part {n} of {len(parts)}"
         yield _heading(label, len(head), after if n == len(parts) else 0)
+        cols, sample = _select(columns, head, part)
+        sideways = table_layout(cols, sample) is None  # the last resort: headings on their sides
         if len(parts) == 1:  # the whole table: the rows already started, read on
-            yield from _tabular(columns, layout, chain(head, first))
+            yield from _tabular(columns, layout, chain(head, first), sideways=sideways)
         else:  # each part reads the rows afresh, keeping its own columns
-            cols = [columns[i] for i in part]
-            yield from _tabular(cols, layout, ([r[i] for i in part] for r in rows()))
+            part_rows = ([r[i] for i in part] for r in rows())
+            yield from _tabular(cols, layout, part_rows, sideways=sideways)
         yield "\n"
 
 
@@ -288,8 +299,9 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
     'l>{\\\\raggedright\\\\arraybackslash}p{293.8pt}'
     """
     longest = [max((len(r[i]) for r in rows), default=0) for i in range(len(columns))]
-    wrap = [
-        n > WRAP_CHARS and any(not math_cell(r[i]) for r in rows) for i, n in enumerate(longest)
+    wrap = [  # text, or a list of points (it breaks between them)
+        n > WRAP_CHARS and any(not math_cell(r[i]) or _BETWEEN_POINTS.search(r[i]) for r in rows)
+        for i, n in enumerate(longest)
     ]
     if not any(wrap):
         return None
@@ -310,35 +322,78 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
     )
 
 
-def resized(columns: Sequence[Column], rows: Iterable[list[str]]) -> Iterator[str]:
-    """A short table too wide for the page, whole, scaled to the text width (needs
-    ``graphicx``)."""
-    spec = "".join("r" if numeric_column(c) else "c" for c in columns)
-    yield f"\\noindent\\resizebox{{\\linewidth}}{{!}}{{\\begin{{tabular}}{{{spec}}}\n\\toprule\n"
-    yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n"
+SIDEWAYS_CHARS = 2.5
+"""The width of a heading set on its side, in characters of 10 pt text: one line of type."""
+
+
+def _cell_chars(columns: Sequence[Column], rows: Sequence[list[str]]) -> list[float]:
+    """Each column's widest cell, in characters (a minus sign counts 1.6)."""
+    widths = [0.0] * len(columns)
     for r in rows:
-        yield " & ".join(_cell(c) for c in r) + " \\\\\n"
-    yield "\\bottomrule\n\\end{tabular}}\\par\n"
+        widths = [max(w, len(c) + 0.6 * c.count("-")) for w, c in zip(widths, r, strict=True)]
+    return widths
+
+
+def _sideways(column: Column, chars: float) -> bool:
+    """A heading wider than its column's widest cell is set on its side."""
+    return _heading_chars(column) > max(chars, SIDEWAYS_CHARS)
+
+
+def sideways_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> Layout | None:
+    r"""The layout of a table whose headings wider than their cells are set on their sides
+    (``\rotatebox{90}``, needs ``graphicx``), never smaller than ``\scriptsize``: the
+    largest font whose cells fit the text width, or ``None``.
+
+    >>> from scanconv.core.records import Column
+    >>> wide = [Column(str(i), "(xc + x, yc + y)", "") for i in range(9)]
+    >>> sideways_layout(wide, [["(13, 14)"] * 9])
+    ('\\scriptsize', True)
+    >>> sideways_layout(wide, [["(1234567, 1234567)"] * 9]) is None
+    True
+    """
+    cells = _cell_chars(columns, rows)
+    widths = [
+        max(n, SIDEWAYS_CHARS) if _sideways(c, n) else max(n, _heading_chars(c))
+        for c, n in zip(columns, cells, strict=True)
+    ]
+    return _fitting(4.8 * sum(widths), len(columns))
+
+
+def _heading_row(columns: Sequence[Column], rows: Sequence[list[str]], sideways: bool) -> str:
+    """The heading row: each heading in math, those wider than their cells on their sides
+    when ``sideways``."""
+    cells = _cell_chars(columns, rows) if sideways else [0.0] * len(columns)
+    return " & ".join(
+        f"\\rotatebox{{90}}{{${c.tex}$}}" if sideways and _sideways(c, n) else f"${c.tex}$"
+        for c, n in zip(columns, cells, strict=True)
+    )
 
 
 def _tabular(
-    columns: Sequence[Column], layout: Layout, rows: Iterable[list[str]], spec: str = ""
+    columns: Sequence[Column],
+    layout: Layout,
+    rows: Iterable[list[str]],
+    spec: str = "",
+    *,
+    sideways: bool = False,
 ) -> Iterator[str]:
     """Every row in ``rows`` in the font size and spacing of ``layout``: a ``tabular``, which
     never breaks, when there are at most :data:`KEEP_ROWS` rows (its heading has made room
-    for it), else a ``longtable`` that continues on the next page with its heading."""
+    for it), else a ``longtable`` that continues on the next page with its heading. ``sideways``: headings wider than their
+    cells are set on their sides (:func:`sideways_layout`)."""
     spec = spec or "".join("r" if numeric_column(c) else "c" for c in columns)
     it = iter(rows)
     head = list(islice(it, KEEP_ROWS + 1))
     short = len(head) <= KEEP_ROWS
+    heading = _heading_row(columns, head, sideways)
     size, tight = layout
     yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
     if short:
         yield f"\\par\\centering\\begin{{tabular}}{{{spec}}}\n\\toprule\n"
-        yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n"
+        yield heading + " \\\\\n\\midrule\n"
     else:
         yield f"\\begin{{longtable}}{{{spec}}}\n\\toprule\n"
-        yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n\\endhead\n"
+        yield heading + " \\\\\n\\midrule\n\\endhead\n"
     for r in chain(head, it):
         yield " & ".join(_cell(c) for c in r) + " \\\\\n"
     if short:
@@ -348,23 +403,66 @@ def _tabular(
 
 
 #: Font sizes for the verbatim grid by the widest line (characters) that fits an article's
-#: 345pt text width in cmtt (0.525 em a character): 10pt holds 65, 8pt 82, 7pt 94, 5pt 131.
-_GRID_SIZES = ((65, ""), (82, "\\footnotesize"), (94, "\\scriptsize"))
+#: 345pt text width in cmtt (0.525 em a character): 10pt holds 65, 8pt 82, 7pt 92. Nothing is
+#: set smaller (print is read on paper): a wider picture is set in strips (:func:`strips`), a
+#: longer line of code folded (:func:`fold`).
+_GRID_SIZES = ((65, ""), (82, "\\footnotesize"), (92, "\\scriptsize"))
+GRID_CHARS = _GRID_SIZES[-1][0]
+"""The widest typewriter line set (at 7 pt)."""
 
 
 def grid_size(lines: Sequence[str]) -> str:
-    """The font-size command that lets the grid fit the text width (``""``: normal size).
+    """The font-size command that lets the grid fit the text width (``""``: normal size),
+    never below ``\\scriptsize`` (7 pt): a wider picture is first cut into strips.
 
     >>> grid_size(["7 | .  #"]), grid_size(["x" * 90]), grid_size(["x" * 200])
-    ('', '\\\\scriptsize', '\\\\tiny')
+    ('', '\\\\scriptsize', '\\\\scriptsize')
     """
     width = max((len(line) for line in lines), default=0)
-    return next((size for limit, size in _GRID_SIZES if width <= limit), "\\tiny")
+    return next((size for limit, size in _GRID_SIZES if width <= limit), "\\scriptsize")
+
+
+def strips(lines: Sequence[str], width: int = GRID_CHARS) -> list[list[str]]:
+    """A typewriter picture wider than ``width`` cut into strips of its columns, one under
+    the other, each repeating the picture's left margin (its axis labels up to ``| ``, where
+    every ruled line has the rule in the same place).
+
+    >>> strips(["1 | abcdef", "0 | ghijkl"], 8)
+    [['1 | abcd', '0 | ghij'], ['1 | ef', '0 | kl']]
+    >>> strips(["abc"], 7)
+    [['abc']]
+    """
+    if max((len(line) for line in lines), default=0) <= width:
+        return [list(lines)]
+    rules = {line.index("|") for line in lines if "|" in line}
+    margin = min(rules.pop() + 2, width // 2) if len(rules) == 1 else 0
+    body = width - margin
+    longest = max(len(line) for line in lines) - margin
+    return [
+        [(line[:margin] + line[margin + at : margin + at + body]).rstrip() for line in lines]
+        for at in range(0, longest, body)
+    ]
+
+
+def fold(lines: Sequence[str], width: int = GRID_CHARS) -> list[str]:
+    """Lines of code longer than ``width`` folded, each continuation indented four more.
+
+    >>> fold(["ab cdefgh"], 7)
+    ['ab cdef', '    gh']
+    """
+    out = []
+    for line in lines:
+        out.append(line[:width])
+        rest = line[width:]
+        while rest:
+            out.append("    " + rest[: width - 4])
+            rest = rest[width - 4 :]
+    return out
 
 
 def _wrap_key(line: str, width: int = _GRID_SIZES[0][0]) -> list[str]:
     """A figure's key (``shades: '@' = 0 (black), ...``) wrapped between its items, so a long
-    key does not shrink the whole picture to ``\\tiny``; drawing and axis lines are kept.
+    key does not cut the whole picture into strips; drawing and axis lines are kept.
 
     >>> _wrap_key("shades: 'a' = 0, 'b' = 1", 16)
     ["shades: 'a' = 0,", "  'b' = 1"]
@@ -494,7 +592,7 @@ def _code(block: Pseudocode, options: Options, doc: Document) -> Iterator[str]:
     \end{minipage}
     <BLANKLINE>
     """
-    lines = block.numbered()
+    lines = fold(block.numbered())
     yield _heading(block.title, len(lines))
     yield "\n\\noindent\\begin{minipage}{\\linewidth}" + grid_size(lines) + "\\ttfamily\n"
     yield "\\\\\n".join("\\mbox{}" + tt_text(line) for line in lines)
@@ -573,10 +671,10 @@ def _verbatim(lines: Sequence[str]) -> Iterator[str]:
     """A typewriter picture in a minipage (never split across a page), set small enough to
     fit the text width."""
     lines = [part for line in lines for part in _wrap_key(line)]
-    if lines:
-        size = grid_size(lines)
+    for strip in strips(lines) if lines else []:
+        size = grid_size(strip)
         yield "\n\\noindent\\begin{minipage}{\\linewidth}\n" + (f"{size}\n" if size else "")
         yield "\\begin{verbatim}\n"
-        for line in lines:
+        for line in strip:
             yield line + "\n"
         yield "\\end{verbatim}\n\\end{minipage}\n"
