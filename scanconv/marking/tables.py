@@ -213,7 +213,7 @@ def _answer(solution: Solution, model: TableModel) -> tuple[tuple[Column, ...], 
 
         rows = []
         for n, s in enumerate(solution.steps()):
-            if n > MAX_QUESTION_ROWS:
+            if n >= MAX_QUESTION_ROWS:  # the row n + 1 (n counts from 0)
                 raise InputError(f"the question's table has more than {MAX_QUESTION_ROWS} rows")
             rows.append(tuple(cells(s)))
         columns = solution.columns
