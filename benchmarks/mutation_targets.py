@@ -194,6 +194,16 @@ EQUIVALENT: dict[tuple[str, str, str], str] = {
         "_markdown_rows(): s starts with '|', so len(s) >= 1 always; at len(s) == 1, s is "
         "'|' and s[1:-1] = s[1:] = '': both branches give the empty body."
     ),
+    (
+        "scanconv/marking/table_head.py",
+        'end = max(line.rfind(")"), line.rfind("]")) + ⟦1⟧',
+        "2",
+    ): (
+        "unbracketed(): end is one past the last closing bracket; one more takes the character "
+        "after it into the part the groups are removed from, and a group must end in a closing "
+        "bracket, none of which is there: the same groups go (with no closing bracket at all, "
+        "line[:1] is one character, no group)."
+    ),
 }
 
 #: The hand-made mutations of the mutation report (shared/reference/mutation-report.md) that

@@ -280,3 +280,66 @@ def test_a_table_question_at_the_row_limit(tmp_path) -> None:
     assert "1 of 10000" in done.out or "1/10000" in done.out, done.out[:300]
     too_long = run("check", str(path), "--", "thickline", "0", "0", "10000", "0", "--width", "3")
     assert_refused(too_long, "more than 10000 rows")
+
+
+def test_a_heading_is_found_under_a_preamble_of_at_most_ten_lines() -> None:
+    from scanconv.marking.table_head import without_preamble
+
+    table = ["k,p,x,y", "0,0,2,2"]
+    names = [f"Line {n}:,note" for n in range(11)]  # two cells each: they head nothing
+    assert without_preamble(names[:10] + table) == table
+    assert without_preamble(names + table) == names + table  # an 11th line: kept whole
+    # a heading of three columns, two of them named as a table's, under the student's name
+    assert without_preamble(["Name:,Gita", "k,x,y", "0,2,2"]) == ["k,x,y", "0,2,2"]
+    assert without_preamble(["Name:,Gita", "x,y,comment", "2,2,ok"]) == ["x,y,comment", "2,2,ok"]
+    # a line of three cells naming one column is not a heading: the file is kept whole
+    odd = ["Name:,Gita", "Group,A,p", "k,p,x,y", "0,0,2,2"]
+    assert without_preamble(odd) == odd
+
+
+def test_the_ellipse_model_moved_to_a_students_pixel_re_decides_its_region() -> None:
+    # rx = 8, ry = 6: region 1 while 2 ry^2 x < 2 rx^2 y (72 x < 128 y). From a region-1
+    # state, (2, 6) stays in region 1 (144 < 768) with its p; (7, 3) is in region 2
+    # (504 >= 384), its p worked out afresh as p2_0 = ry^2 (x + 1/2)^2 + rx^2 (y - 1)^2
+    # - rx^2 ry^2 = 36 * 56.25 + 64 * 4 - 2304 = 2025 + 256 - 2304 = -23
+    from scanconv.marking.models import MidpointEllipse
+
+    m = MidpointEllipse(8, 6)
+    s = m.start()
+    assert s.region == 1
+    inside = m.at((2, 6), s)
+    assert inside.region == 1 and inside.p == s.p
+    beyond = m.at((7, 3), s)
+    assert beyond.region == 2 and beyond.p == -23
+
+
+def test_a_textbook_line_question_is_marked_in_the_textbook_layout() -> None:
+    from scanconv.marking.diagnose import model_for
+    from scanconv.questions.marking import marking_answer, marking_line
+
+    shapes = [
+        model_for(marking_answer(marking_line(f"line 2 2 10 6 --layout {layout}"))).shape
+        for layout in ("notes", "textbook")
+    ]
+    assert shapes == ["at", "after"]
+
+
+def test_a_chains_steps_name_the_state_before_each() -> None:
+    from scanconv.marking.diagnose import states_steps
+    from scanconv.marking.models import BresenhamLine, chain
+
+    model = BresenhamLine(2, 2, 6, 4)
+    states = list(chain(model))
+    steps = states_steps(model, states)
+    assert [e.point for e in steps] == [(3, 3), (4, 3), (5, 4), (6, 4)]
+    assert [e.decision for e in steps] == ["NE", "E", "NE", "E"]
+    assert [e.prev for e in steps] == [None, *states[:3]]
+    assert [e.state for e in steps] == states[:4]
+
+
+def test_an_expected_step_names_its_exact_values_and_its_next_p() -> None:
+    from scanconv.marking.words import expected_text
+
+    exp = Expected((3, 2), F(1), "E", F(-3), (F(5, 2), F(2)))
+    assert expected_text(exp, ("exact", "pixel")) == "x = 2.5, y = 2, (3, 2)"
+    assert expected_text(exp, ("p", "decision", "p_next")) == "p = 1, E, next p = -3"
