@@ -17,6 +17,7 @@ from fractions import Fraction as F
 
 import pytest
 
+from scanconv.marking.mark import score
 from scanconv.marking.rows import (
     Expected,
     Got,
@@ -28,7 +29,6 @@ from scanconv.marking.rows import (
     same,
     steps_of,
 )
-from scanconv.marking.mark import score
 from scanconv.marking.student_table import Cell, parse_text
 from scanconv.marking.table_models import (
     InsideVerdictsTable,
@@ -135,7 +135,13 @@ def test_an_nll_relation_follows_from_the_students_own_numbers() -> None:
     # the answer compares m1 = 1/2 with m_L = 3/4: "<"; she wrote m1 as 1 (a slip): her
     # relation is then ">" (1 > 3/4), judged by her numbers
     answer = [
-        {"left": "m1", "left_value": F(1, 2), "relation": "<", "right": "mL", "right_value": F(3, 4)}
+        {
+            "left": "m1",
+            "left_value": F(1, 2),
+            "relation": "<",
+            "right": "mL",
+            "right_value": F(3, 4),
+        }
     ]
     own = [{"left_value": F(1), "relation": ">", "right_value": F(3, 4)}]
     assert NLLTable().expect(0, answer, own)["relation"] == ">"
@@ -186,7 +192,8 @@ def test_an_inside_verdict_follows_from_the_students_own_count() -> None:
 def test_a_row_past_the_end_of_a_table_is_numbered_on_and_costs_one_mark(tmp_path) -> None:
     # the threshold question's four pixels written right, and a fifth row past them: 3 of 4,
     # the fifth numbered 5 and marked extra
-    from .test_marking_hand_tables import THRESHOLD, check, score as scored_as
+    from .test_marking_hand_tables import THRESHOLD, check
+    from .test_marking_hand_tables import score as scored_as
 
     text = (
         "x,y,value,threshold,output\n"
@@ -210,7 +217,8 @@ def test_a_file_of_exactly_the_largest_size_is_read_to_its_last_byte(tmp_path) -
     # a student file may have: its last byte (the 6 of the last pixel) is read, 8 of 8
     from scanconv.marking.student_table import MAX_TABLE_BYTES
 
-    from .test_marking_hand_tables import BRESENHAM, check, score as scored_as
+    from .test_marking_hand_tables import BRESENHAM, check
+    from .test_marking_hand_tables import score as scored_as
 
     pixels = [(3, 3), (4, 3), (5, 4), (6, 4), (7, 5), (8, 5), (9, 6), (10, 6)]
     table = "x,y\n" + "\n".join(f"{x},{y}" for x, y in pixels)

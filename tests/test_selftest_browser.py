@@ -152,7 +152,8 @@ def test_a_page_opened_from_file_follows_through_as_check_does(quiz, tmp_path, s
     pct = round(100 * int(score.split(" / ")[0]) / 8 + 1e-9)
     assert q.score() == f"Score: {score} steps right ({pct} %)"
     assert (
-        "\u2717 p\u2081 = \u22128, not 8 (p\u2081 = p\u2080 \u2212 8 = 0 \u2212 8 = \u22128)" in f[1]
+        "\u2717 p\u2081 = \u22128, not 8 (p\u2081 = p\u2080 \u2212 8 = 0 \u2212 8 = \u22128)"
+        in f[1]
     )
     assert "\u2713 decision NE: it follows from your p\u2081 = 8 > 0 (follow-through)" in f[1]
     assert "\u2713 next pixel (4, 4) (follow-through from your decision)" in f[1]

@@ -193,9 +193,7 @@ def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
                     source, number, f"at most {MAX_QUESTIONS} questions in one sheet"
                 )
             questions.append(
-                Question(
-                    len(questions) + 1, number, argv, marks, " ".join(wording), section, quiz
-                )
+                Question(len(questions) + 1, number, argv, marks, " ".join(wording), section, quiz)
             )
             wording, quiz = [], ()
         except QuestionError as err:  # the next lines are read on: every bad line is named
