@@ -351,3 +351,16 @@ def test_an_expected_step_names_its_exact_values_and_its_next_p() -> None:
     exp = Expected((3, 2), F(1), "E", F(-3), (F(5, 2), F(2)))
     assert expected_text(exp, ("exact", "pixel")) == "x = 2.5, y = 2, (3, 2)"
     assert expected_text(exp, ("p", "decision", "p_next")) == "p = 1, E, next p = -3"
+
+
+def test_a_table_without_a_marked_column_is_refused_naming_the_ones_marked(tmp_path) -> None:
+    # the threshold question marks each pixel's threshold T and its output; a table of the
+    # pixels' positions and values alone has neither: refused, naming those two, not the
+    # columns it has
+    from .helpers import assert_refused, run
+    from .test_marking_hand_tables import THRESHOLD
+
+    path = tmp_path / "values.csv"
+    path.write_text("x,y,value\n0,0,128\n", encoding="utf-8")
+    done = run("check", str(path), "--", *THRESHOLD)
+    assert_refused(done, "no column to mark: the answer's table has T, output")
