@@ -182,10 +182,6 @@ EQUIVALENT: dict[tuple[str, str, str], str] = {
         "and a later candidate replaces the best only when n < best[0] = 0: never, so "
         "searching on returns the same best."
     ),
-    ("scanconv/marking/tables.py", "model = tied[⟦0⟧] if len(tied) == 1", "-1"): (
-        "mark_table(): tied[0] is read only when tied holds one model, and then tied[0] is "
-        "tied[-1]."
-    ),
     (
         "scanconv/marking/student_table.py",
         'body = s[1:-1] if s.endswith("|") and ⟦len(s) > 1⟧',
