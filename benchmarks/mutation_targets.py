@@ -23,10 +23,34 @@ class Target:
 
 MARK_TESTS = (
     "tests/test_marking_hand_tables.py",
+    "tests/test_marking_hand_edges.py",
     "tests/test_marking_roundtrip.py",
     "tests/test_marking_layouts.py",
     "tests/test_marking_tables.py",
+    "tests/test_marking_first_error.py",
+    "tests/test_marking_glyph_tables.py",
+    "tests/test_marking_steps.py",
+    "tests/test_marking_windows_addresses.py",
+    "tests/test_marking_conventions.py",
     "tests/test_check.py",
+    "tests/test_check_batch.py",
+    "tests/test_check_student_words.py",
+)
+#: The marking modules (all of scanconv/marking/ but its constants): each is tested by
+#: :data:`MARK_TESTS` and the golden answers of ``check``.
+MARKING = tuple(
+    f"scanconv/marking/{m}.py"
+    for m in (
+        "mark",
+        "rows",
+        "table_models",
+        "tables",
+        "student_table",
+        "models",
+        "diagnose",
+        "words",
+        "table_head",
+    )
 )
 ESCAPE_TESTS = ("tests/test_escaping.py", "tests/test_escaping_readers.py")
 
@@ -73,11 +97,7 @@ TARGETS: dict[str, Target] = {
         ("tests/test_numeric.py", "tests/test_lines.py", "tests/test_circles.py"),
         "lines or circle or ellipse",
     ),
-    "scanconv/marking/mark.py": Target(MARK_TESTS, "check"),
-    "scanconv/marking/rows.py": Target(MARK_TESTS, "check"),
-    "scanconv/marking/table_models.py": Target(MARK_TESTS, "check"),
-    "scanconv/marking/tables.py": Target(MARK_TESTS, "check"),
-    "scanconv/marking/student_table.py": Target(MARK_TESTS, "check"),
+    **{path: Target(MARK_TESTS, "check") for path in MARKING},
     "scanconv/render/mappings/text.py": Target(
         ("tests/test_streaming.py", *ESCAPE_TESTS),
         "md",
@@ -157,6 +177,29 @@ EQUIVALENT: dict[tuple[str, str, str], str] = {
         "[⟦4 * v + a⟧ for v in row] + [4 * v + b for v in row]\nfor row in d\nfor a, b in [(0, 2)]",
         "(4 * v - a)",
     ): ("bayer(): in the first half a = 0, so 4v + a = 4v - a."),
+    ("scanconv/marking/mark.py", "if n == ⟦0⟧:\nbreak", "-1"): (
+        "_judged(): the break only ends the search early; n counts wrong fields (n >= 0) "
+        "and a later candidate replaces the best only when n < best[0] = 0: never, so "
+        "searching on returns the same best."
+    ),
+    (
+        "scanconv/marking/student_table.py",
+        'body = s[1:-1] if s.endswith("|") and ⟦len(s) > 1⟧',
+        "(len(s) >= 1)",
+    ): (
+        "_markdown_rows(): s starts with '|', so len(s) >= 1 always; at len(s) == 1, s is "
+        "'|' and s[1:-1] = s[1:] = '': both branches give the empty body."
+    ),
+    (
+        "scanconv/marking/table_head.py",
+        'end = max(line.rfind(")"), line.rfind("]")) + ⟦1⟧',
+        "2",
+    ): (
+        "unbracketed(): end is one past the last closing bracket; one more takes the character "
+        "after it into the part the groups are removed from, and a group must end in a closing "
+        "bracket, none of which is there: the same groups go (with no closing bracket at all, "
+        "line[:1] is one character, no group)."
+    ),
 }
 
 #: The hand-made mutations of the mutation report (shared/reference/mutation-report.md) that

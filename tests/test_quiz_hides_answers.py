@@ -108,10 +108,11 @@ def question(draw: st.DrawFn) -> str:
         if (a, b) == (c, d):
             c += 3
         return f"line {a} {b} {c} {d}" + (" --algo dda" if kind == "dda" else "")
+    more = "quiz: symmetry\n" if draw(st.booleans()) else ""  # the symmetry tables asked too
     if kind == "circle":
-        return f"circle {draw(st.integers(2, 9))} --center {a} {b}"
+        return f"{more}circle {draw(st.integers(2, 9))} --center {a} {b}"
     if kind == "ellipse":
-        return f"ellipse {draw(st.integers(2, 8))} {draw(st.integers(2, 8))}"
+        return f"{more}ellipse {draw(st.integers(2, 8))} {draw(st.integers(2, 8))}"
     if kind == "clip":
         if (a, b) == (c, d):
             d += 5
@@ -124,7 +125,10 @@ def question(draw: st.DrawFn) -> str:
 
 
 def quiz_files(lines: list[str]) -> tuple[str, str]:
-    text = "".join(f"[{i + 3}] {q}\n" for i, q in enumerate(lines))
+    text = "".join(  # a "quiz:" line stays above its question's marks
+        f"{q.rpartition(chr(10))[0]}\n[{i + 3}] {q.rpartition(chr(10))[2]}\n".lstrip("\n")
+        for i, q in enumerate(lines)
+    )
     sheet = read_questions(text, "q.txt")
     answered = answer_questions(sheet.questions, sheet.source)
     return (

@@ -102,50 +102,83 @@ def test_a_right_bresenham_line_scores_full_marks(quiz):
         feedback = q.answer(p, d, px)
         assert "\u2717" not in feedback, (i, feedback)
         if i < len(LINE_RIGHT) - 1:
-            assert q.score() == f"Score so far: {3 * (i + 1)} / {3 * (i + 1)}"
+            assert q.score() == f"Score so far: {i + 1} / {i + 1} steps right"
             q.next()
-    assert q.score() == "Score: 24 / 24 (100 %)"
+    assert q.score() == "Score: 8 / 8 steps right (100 %)"
     assert "p\u2087 = \u22128 < 0, so the next pixel is E: (10, 6)." in feedback
 
 
-def test_a_wrong_bresenham_line_is_marked_with_follow_through(quiz):
+def check_score(tmp_path: Path, question: tuple[str, ...], steps, header: str) -> str:
+    """``check``'s score (``N of M``) of the same steps written as a student's CSV, a row a
+    step in the textbooks' layout (p_k, the decision, the point it reaches)."""
+    rows = [",".join([str(k), *(c for c in step if c is not None)]) for k, step in enumerate(steps)]
+    path = tmp_path / "same.csv"
+    path.write_text(header + "\n" + "\n".join(r.replace(", ", ",") for r in rows) + "\n")
+    done = run("check", str(path), "--", *question, "-f", "json")
+    assert done.code == 0, done.err
+    import json
+
+    data = json.loads(done.out)
+    return f"{data['score']} / {data['out_of']}"
+
+
+# Bresenham from (2, 2) to (10, 6) with p1 written 8 (it is -8): NE follows from 8 > 0 and
+# (4, 4) from NE; then on from her own (4, 4) with p2 = 8 - 8 = 0 (her p and her move):
+# 0, NE, (5, 5); -8, E, (6, 5); 0, NE, (7, 6); -8, E, (8, 6); 0, NE, (9, 7); -8, E, (10, 7).
+# One slip, every later step followed through from it: 7 of 8 steps, as check marks it.
+FOLLOWED = [("0", "NE", "3, 3"), ("8", "NE", "4, 4"), ("0", "NE", "5, 5"), ("-8", "E", "6, 5"),
+            ("0", "NE", "7, 6"), ("-8", "E", "8, 6"), ("0", "NE", "9, 7"), ("-8", "E", "10, 7")]  # fmt: skip
+# The same slip, then back on the answer's revealed rows with a wrong decision word and a
+# wrong pixel: 5 of 8 as check marks it (its rows 3 and 4 judged from her own (4, 4))
+MIXED = [("0", "NE", "3, 3"), ("8", "NE", "4, 4"), ("0", "E", "5, 3"), ("-8", "E", "6, 5"),
+         *LINE_RIGHT[4:]]  # fmt: skip
+
+
+def _typed(q: Quiz, steps) -> list[str]:
+    feedback = []
+    for i, (p, d, px) in enumerate(steps):
+        feedback.append(q.answer(p, d, px))
+        if i < len(steps) - 1:
+            q.next()
+    return feedback
+
+
+@pytest.mark.parametrize(("steps", "score"), [(FOLLOWED, "7 / 8"), (MIXED, "5 / 8")])
+def test_a_page_opened_from_file_follows_through_as_check_does(quiz, tmp_path, steps, score):
     q = quiz(*LINE)
     q.start()
-    marks = []
-    # step 0 right
-    assert "\u2717" not in q.answer("0", "NE", "3, 3")
-    marks.append(3)
-    q.next()
-    # step 1: p1 = 8 (it is -8); NE follows from the student's 8 > 0, and (4, 4) from NE
-    f = q.answer("8", "NE", "4, 4")
+    f = _typed(q, steps)
+    assert check_score(tmp_path, LINE, steps, "k,p,decision,x,y") == score
+    pct = round(100 * int(score.split(" / ")[0]) / 8 + 1e-9)
+    assert q.score() == f"Score: {score} steps right ({pct} %)"
     assert (
-        "\u2717 p\u2081 = \u22128, not 8 (p\u2081 = p\u2080 \u2212 8 = 0 \u2212 8 = \u22128)" in f
+        "\u2717 p\u2081 = \u22128, not 8 (p\u2081 = p\u2080 \u2212 8 = 0 \u2212 8 = \u22128)"
+        in f[1]
     )
-    assert "\u2713 decision NE: it follows from your p\u2081 = 8 > 0 (follow-through)" in f
-    assert "\u2713 next pixel (4, 4) (follow-through from your decision)" in f
-    assert "p\u2081 = \u22128 < 0, so the next pixel is E: (4, 3)." in f
-    marks.append(2)
-    q.next()
-    # the right row is revealed and the test goes on from (4, 3)
-    assert "from (4, 3)" in q.page.inner_text(".sc-tq")
-    # step 2: p2 = 0 right, E wrong (0 chooses NE), (5, 3) follows from E
-    f = q.answer("0", "E", "5, 3")
-    assert "\u2717 decision: E; p\u2082 = 0 chooses NE" in f
-    assert "\u2713 next pixel (5, 3) (follow-through from your decision)" in f
-    marks.append(2)
-    q.next()
-    # step 3: the pixel wrong
-    f = q.answer("-8", "E", "6, 5")
-    assert "\u2717 next pixel: E from (5, 4) goes to (6, 4), not (6, 5)" in f
-    marks.append(2)
-    q.next()
-    for i, (p, d, px) in enumerate(LINE_RIGHT[4:]):
-        assert "\u2717" not in q.answer(p, d, px)
-        marks.append(3)
-        if i < 3:
-            q.next()
-    assert sum(marks) == 21
-    assert q.score() == "Score: 21 / 24 (88 %)"
+    assert "\u2713 decision NE: it follows from your p\u2081 = 8 > 0 (follow-through)" in f[1]
+    assert "\u2713 next pixel (4, 4) (follow-through from your decision)" in f[1]
+    assert "p\u2081 = \u22128 < 0, so the next pixel is E: (4, 3)." in f[1]
+    if steps is FOLLOWED:  # each later step judged from her own state: all right
+        assert all("\u2717" not in x for x in f[2:]), f[2:]
+        assert "\u2713 p\u2082 = 0" in f[2] and "\u2713 next pixel (5, 5)" in f[2]
+
+
+# The midpoint circle r = 8 with p1 written -5 (it is -4): her p2 = -5 + 2*1 + 3 = 0 chooses SE
+# (3, 7), p3 = 0 + 2*2 - 2*8 + 5 = -7, E (4, 7), p4 = -7 + 2*3 + 3 = 2, SE (5, 6),
+# p5 = 2 + 2*4 - 2*7 + 5 = 1, SE (6, 5): 5 of 6 steps (worked by hand; check agrees).
+CIRCLE_SLIP = [("-7", "E", "1, 8"), ("-5", "E", "2, 8"), ("0", "SE", "3, 7"), ("-7", "E", "4, 7"),
+               ("2", "SE", "5, 6"), ("1", "SE", "6, 5")]  # fmt: skip
+
+
+def test_a_circles_slip_in_p_is_followed_through_as_check_does(quiz, tmp_path):
+    q = quiz("circle", "8")
+    q.start()
+    f = _typed(q, CIRCLE_SLIP)
+    header = 'k,p_k,decision,"(x_{k+1}, y_{k+1})"'
+    steps = [(p, d, f'"({px})"') for p, d, px in CIRCLE_SLIP]
+    assert check_score(tmp_path, ("circle", "8"), steps, header) == "5 / 6"
+    assert q.score() == "Score: 5 / 6 steps right (83 %)"
+    assert all("\u2717" not in x for x in f[2:]), f[2:]
 
 
 def test_the_rules_own_pixel_after_a_wrong_decision_word_is_right(quiz):
@@ -157,7 +190,7 @@ def test_the_rules_own_pixel_after_a_wrong_decision_word_is_right(quiz):
     f = q.answer("0", "E", "3, 3")
     assert "\u2717 decision: E; p\u2080 = 0 chooses NE" in f
     assert "\u2713 next pixel (3, 3) (the rule's step: the decision was the slip)" in f
-    assert q.score() == "Score so far: 2 / 3"
+    assert q.score() == "Score so far: 0 / 1 steps right"
 
 
 def test_the_table_hides_from_the_current_row_on_and_the_stepper_keys_give_nothing_away(quiz):
@@ -203,7 +236,7 @@ def test_a_right_midpoint_circle_clicked_on_the_grid_scores_full_marks(quiz):
         if i < 3:
             q.next()
     assert "p\u2083 = 3 > 0, so the next pixel is SE: (4, 3)." in f
-    assert q.score() == "Score: 12 / 12 (100 %)"
+    assert q.score() == "Score: 4 / 4 steps right (100 %)"
 
 
 def test_a_wrong_midpoint_circle_is_marked_with_follow_through(quiz):
@@ -218,12 +251,14 @@ def test_a_wrong_midpoint_circle_is_marked_with_follow_through(quiz):
     assert "\u2713 next pixel (2, 4)" in f
     assert "p\u2081 = \u22121 < 0, so the next pixel is E: (2, 5)." in f
     q.next()
-    f = q.answer("4", "E", "3, 5")
-    assert "\u2717 decision: E; p\u2082 = 4 > 0 chooses SE" in f
+    # her p2 = 2 + 2*1 - 2*5 + 5 = -1 from her (2, 4) (check's follow-through): E, (3, 4)
+    f = q.answer("-1", "E", "3, 4")
+    assert "\u2717" not in f and "\u2713 p\u2082 = \u22121 (follow-through" in f
     q.next()
-    f = q.answer("3", "SE", "4, 4")
+    # p3 = -1 + 2*2 + 3 = 6 from (3, 4): SE (4, 3), written (4, 4): the pixel wrong
+    f = q.answer("6", "SE", "4, 4")
     assert "\u2717 next pixel: SE from (3, 4) goes to (4, 3), not (4, 4)" in f
-    assert q.score() == "Score: 9 / 12 (75 %)"
+    assert q.score() == "Score: 2 / 4 steps right (50 %)"
     q.next()  # "Again" starts over
     assert "Step 1 of 4" in q.page.inner_text(".sc-tq") and q.score() == ""
 
@@ -242,7 +277,7 @@ def test_a_dda_line_asks_the_exact_values_and_rounds_the_students_own(quiz):
     for xy, px in [("3, 9/5", "3, 2"), ("4, 2.4", "4, 2"), ("5, 3", "5, 3")]:
         q.next()
         assert "\u2717" not in q.answer(xy, None, px)
-    assert q.score() == "Score: 9 / 10 (90 %)"
+    assert q.score() == "Score: 4 / 5 steps right (80 %)"
 
 
 def test_an_ellipse_asks_both_regions(quiz):
@@ -258,7 +293,7 @@ def test_an_ellipse_asks_both_regions(quiz):
         assert "\u2717" not in q.answer(p, d, px)
         if i < len(right) - 1:
             q.next()
-    assert q.score() == "Score: 30 / 30 (100 %)"
+    assert q.score() == "Score: 10 / 10 steps right (100 %)"
 
 
 def test_the_script_rounds_as_the_library_does(quiz):
@@ -342,7 +377,7 @@ def test_a_click_on_a_grid_with_y_down_names_the_right_pixel(quiz):
         assert q.page.input_value("input[name=pixel]") == f"{x}, {y}"
         if i < 2:
             q.next()
-    assert q.score() == "Score so far: 9 / 9"
+    assert q.score() == "Score so far: 3 / 3 steps right"
 
 
 def test_two_notebook_answers_test_apart(browser, tmp_path):

@@ -271,13 +271,13 @@ _PROCESS = (
         short="Liang-Barsky", stage=_CLIP + "rectangle:liang_barsky_clipped"),
     _plain("clip", "cyrus-beck", "Cyrus-Beck line clipping (any convex window)",
            _CLIP + "cyrus_beck:rectangle_solution", _G + "cyrus_beck:cyrus_beck",
-           model="CyrusBeckTable")._replace(
+           model="cyrus_beck")._replace(
         short="Cyrus-Beck", options=("normals", "ends"), stage=_CLIP + "cyrus_beck:rectangle_clipped"),
     _plain("clip", "midpoint-subdivision", "midpoint subdivision line clipping",
            _CLIP + "midpoint:midpoint_clip_solution", _G + "midpoint_clip:subdivide",
-           model="MidpointClipTable")._replace(options=("midpoint", "stop")),
+           model="midpoint_clip")._replace(options=("midpoint", "stop")),
     _plain("clip", "nicholl-lee-nicholl", "Nicholl-Lee-Nicholl line clipping",
-           _CLIP + "nll:nll_solution", _G + "nll:nicholl_lee_nicholl", model="NLLTable")._replace(
+           _CLIP + "nll:nll_solution", _G + "nll:nicholl_lee_nicholl", model="nll")._replace(
         short="Nicholl-Lee-Nicholl", stage=_CLIP + "nll:nll_clipped"),
     _plain("clip", "weiler-atherton", "Weiler-Atherton polygon clipping (concave polygons)",
            _CLIP + "weiler_atherton:polygon_answer", _G + "weiler_atherton:weiler_atherton"),
@@ -315,59 +315,59 @@ _IMAGE = (
 
 _DITHER = (
     _plain("dither", "threshold", "thresholding", "scanconv.answers.image.dither:threshold_solution",
-           _G + "dither:threshold", model="DitherTable"),
+           _G + "dither:threshold", model="dither_threshold"),
     _plain("dither", "ordered", "ordered dither (Bayer matrix)", "scanconv.answers.image.dither:ordered_solution",
-           _G + "dither:ordered", model="DitherTable"),
+           _G + "dither:ordered", model="dither_ordered"),
     _plain("dither", "lookup", "dither threshold looked up by screen position",
            "scanconv.answers.image.dither:lookup_solution", None,
-           no_generator="one closed-form lookup per pixel (algorithms.dither.lookup)", model="PlainRowsTable"),
+           no_generator="one closed-form lookup per pixel (algorithms.dither.lookup)", model="dither_lookup"),
     _plain("dither", "floyd-steinberg", "Floyd-Steinberg error diffusion",
            "scanconv.answers.image.dither:diffusion_solution", _G + "dither:error_diffusion",
-           model="DiffusionTable"),
+           model="diffusion"),
     _plain("halftone", "pattern", "halftone patterns", "scanconv.answers.image.dither:pattern_solution", None,
-           no_generator="one pattern per level, from the Bayer matrix", model="PlainRowsTable"),
+           no_generator="one pattern per level, from the Bayer matrix", model="halftone_patterns", answered_as=("dither", "pattern")),
 )  # fmt: skip
 
 _PRINTER = (
     _plain("printer", "halftone", "halftone printing arithmetic (dpi, lpi, cell, levels)",
            "scanconv.answers.image.halftone:printer_solution", None,
-           no_generator="arithmetic, worked in one pass", model="PlainRowsTable"),
+           no_generator="arithmetic, worked in one pass", model="printer"),
 )  # fmt: skip
 
 _INSIDE = tuple(
     _plain("inside", rule_name, f"inside-outside test ({title})", "scanconv.answers.process.fill.inside:inside_solution",
-           _G + "inside:edge_tests", model="InsideVerdictsTable")
+           _G + "inside:edge_tests", model="inside")
     for rule_name, title in (("even-odd", "even-odd rule"), ("nonzero", "nonzero winding rule"))
 )  # fmt: skip
 
 _FRAMEBUFFER = (
     _plain("framebuffer", "arithmetic", "frame-buffer arithmetic",
            "scanconv.answers.image.framebuffer:framebuffer_solution", None,
-           no_generator="arithmetic, worked in one pass", model="FrameBufferTable"),
+           no_generator="arithmetic, worked in one pass", model="framebuffer"),
 )  # fmt: skip
 
 _ATTRIBUTES = (
     _plain("linestyle", "mask", "line style from a pixel mask",
            "scanconv.answers.primitives.attributes:line_style_solution", _G + "attributes:styled",
-           model="LineStyleTable"),
+           model="line_style", answered_as=("line", "style")),
     _plain("thickline", "replication", "thick line by pixel replication",
            "scanconv.answers.primitives.attributes:thick_line_solution", _G + "attributes:thick",
-           model="PlainRowsTable"),
+           model="thick_line", answered_as=("line", "replication")),
     _plain("thickline", "brush", "thick line by a rectangular brush",
            "scanconv.answers.primitives.attributes:thick_line_solution", _G + "attributes:thick",
-           model="PlainRowsTable"),
+           model="thick_line", answered_as=("line", "brush")),
 )  # fmt: skip
 
 _CHARACTERS = (
     _plain("char", "bitmap", "bitmap character generation",
            "scanconv.answers.primitives.characters:bitmap_solution", _G + "characters:draw_bitmap",
-           model="PlainRowsTable"),
+           model="bitmap_char", answered_as=("characters", "bitmap")),
     _plain("char", "stroke", "stroke character generation",
            "scanconv.answers.primitives.characters:stroke_solution", _G + "characters:draw_strokes",
-           model="PlainRowsTable"),
+           model="stroke_char", answered_as=("characters", "stroke")),
     _plain("char", "storage", "bitmap font storage",
            "scanconv.answers.primitives.characters:font_storage_solution", None,
-           no_generator="arithmetic, worked in one pass", model="PlainRowsTable"),
+           no_generator="arithmetic, worked in one pass", model="font_storage", answered_as=("characters", "storage")),
 )  # fmt: skip
 
 _SPACE = (
@@ -433,6 +433,8 @@ METHODS: dict[str, Method] = {
 }  # fmt: skip
 """Every method record, by ``"command/method"``."""
 
+_ANSWERED = {m.answered_as or (m.command, m.name): m for m in reversed(METHODS.values())}
+
 
 DOCUMENTS = {
     "compare": "sets the records of one command's methods side by side",
@@ -459,6 +461,15 @@ def compared(command: str) -> tuple[str, ...]:
     ('basic', 'dda', 'bresenham', 'symmetric-dda')
     """
     return tuple(m.name for m in METHODS.values() if m.command == command and m.short)
+
+
+def answered_by(primitive: str, algorithm: str) -> Method | None:
+    """The record of an answer labelled ``(primitive, algorithm)`` (``None``: no record's).
+
+    >>> answered_by("line", "replication").key, answered_by("clip", "cyrus-beck").key
+    ('thickline/replication', 'clip/cyrus-beck')
+    """
+    return _ANSWERED.get((primitive, algorithm))
 
 
 def method(command: str, name: str) -> Method:

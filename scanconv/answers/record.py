@@ -75,6 +75,8 @@ class Method(NamedTuple):
     budget costs the command as a whole (its function's estimate)."""
     missing: tuple[tuple[str, str], ...] = ()
     """``(piece, reason)`` for every piece that is ``None``."""
+    answered_as: tuple[str, str] | tuple[()] = ()
+    """Its answers' ``(primitive, algorithm)`` when not ``(command, name)``: :func:`answered_by`."""
     short: str = ""
     """The name in a comparison table's heading (``compare``); empty: not compared."""
     facts: tuple[tuple[str, str], ...] = ()
@@ -169,9 +171,10 @@ def plain_method(
     raster: str | None = None,
     no_generator: str = "",
     model: str | None = None,
+    answered_as: tuple[str, str] | tuple[()] = (),
 ) -> Method:
-    """A method with no derivation or pseudocode (each said why); ``model``: its table model
-    (:mod:`.table_models`, marked by its own columns), else why it has none."""
+    """A method with no derivation or pseudocode (each said why); ``model``: its table model's
+    factory (:mod:`scanconv.marking.table_factories`), else why it has none."""
     missing = [
         ("derivation", _NO_DERIVATION),
         ("pseudocode", "the notes give it as prose steps, shown in the working"),
@@ -193,7 +196,8 @@ def plain_method(
         title=title,
         answer=answer,
         generator=generator,
-        model=None if model is None else "scanconv.marking.table_models:" + model,
+        model=None if model is None else "scanconv.marking.table_factories:" + model,
+        answered_as=answered_as,
         raster=raster,
         missing=tuple(missing),
     )

@@ -252,6 +252,15 @@ def sheet(
             "(LaTeX and PDF: with page numbers; HTML: linked).",
         ),
     ] = False,
+    quiz_symmetry: Annotated[
+        bool,
+        typer.Option(
+            "--quiz-symmetry",
+            help="Moodle and GIFT: also ask each circle's and ellipse's symmetry table (the "
+            "mirrored points), not only the octant's steps the exam asks (one question: a "
+            "'quiz: symmetry' line before it).",
+        ),
+    ] = False,
 ) -> None:
     """Answer every question of a question file in one document."""
     kind = "worksheet" if worksheet else "key"
@@ -263,6 +272,8 @@ def sheet(
     try:
         sheet, answered = build(questions, (name, "pdf") if pdf is not None else (name,))
         sheet = sheet._replace(contents=contents)
+        if quiz_symmetry:
+            answered = [asking(a, "symmetry") for a in answered]
         notices: list[str] = []
         text = sheet_document(sheet, answered, kind, name, standalone=standalone, notices=notices)
         latex = None
@@ -277,6 +288,12 @@ def sheet(
     write_outputs(text, output, latex, pdf, quiet=fmt == "auto")
     for message in dict.fromkeys(notices):
         note(message)
+
+
+def asking(a: Answered, what: str) -> Answered:
+    """``a`` whose quiz also asks ``what`` (``symmetry``: a question file's ``quiz:`` word)."""
+    q = a.question
+    return a._replace(question=q._replace(quiz=tuple(dict.fromkeys((*q.quiz, what)))))
 
 
 def pdf_output(output: Path | None, pdf: str | None) -> tuple[Path | None, str | None]:

@@ -14,10 +14,11 @@ own earlier cells (follow-through, so one slip is charged once). The result is a
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Iterator, Sequence
 from fractions import Fraction
 from typing import Any
 
+from ..answers.methods import STEPPED, answered_by
 from ..core.checks import InputError
 from ..core.numeric import fmt_short, parse_number
 from ..core.records import Column, Solution
@@ -25,16 +26,9 @@ from .limits import MAX_QUESTION_ROWS
 from .rows import Marking, RowText, Verdict
 from .table_models import (
     CoxDeBoorTable,
-    CyrusBeckTable,
-    DiffusionTable,
-    DitherTable,
     FontTableTable,
-    FrameBufferTable,
     GlyphBytesTable,
     InsideVerdictsTable,
-    LineStyleTable,
-    MidpointClipTable,
-    NLLTable,
     PixelAddressTable,
     PlainRowsTable,
     Row,
@@ -107,62 +101,21 @@ def _glyph_tables(solution: Solution) -> list[TableModel]:
     return found
 
 
-_ROW_ALONE: dict[tuple[str, str], Callable[[], TableModel]] = {
-    ("clip", "cyrus-beck"): CyrusBeckTable,
-    ("clip", "nicholl-lee-nicholl"): NLLTable,
-    ("clip", "midpoint-subdivision"): MidpointClipTable,
-    ("line", "style"): LineStyleTable,
-    ("framebuffer", "arithmetic"): FrameBufferTable,
-    ("printer", "halftone"): lambda: PlainRowsTable(
-        "Printer and screen", ("value",), "Each quantity stands alone (dpi, lpi, cell, levels)."
-    ),
-    ("dither", "lookup"): lambda: PlainRowsTable(
-        None,
-        ("i", "j", "row", "col", "threshold", "output"),
-        "Each pixel's lookup stands alone (its position, its matrix cell, its threshold).",
-    ),
-    **dict.fromkeys(
-        [("line", "replication"), ("line", "brush")],  # a thick line, either way
-        lambda: PlainRowsTable(None, ("added",), "Each step's added pixels stand alone."),
-    ),
-    ("characters", "bitmap"): lambda: PlainRowsTable(
-        None, ("row", "column"), "Each pixel stands alone."
-    ),
-    ("characters", "stroke"): lambda: PlainRowsTable(
-        None, ("segment", "pixels"), "Each stroke's pixels stand alone."
-    ),
-    ("characters", "storage"): lambda: PlainRowsTable(
-        "Every packing",
-        ("glyph", "bits", "bytes"),
-        "Each packing's sizes stand alone (a glyph's bits, the font's bits and bytes).",
-    ),
-}
-"""The table models that need nothing of the answer but its method, by (primitive, algorithm)."""
-
-
 def table_model_for(solution: Solution) -> TableModel | None:
-    """The table model of ``solution``'s method, or ``None`` (a pixel walk, or unmarked)."""
-    key = (solution.primitive, solution.algorithm)
-    data = solution.data
-    if key in _ROW_ALONE:
-        return _ROW_ALONE[key]()
-    if key == ("dither", "ordered"):
-        return DitherTable(data.get("compare", ">"))
-    if key == ("dither", "threshold"):
-        return DitherTable(data.get("compare", ">="))
-    if key == ("dither", "floyd-steinberg"):
-        given = {q.key: q.value for q in solution.given}
-        return DiffusionTable(given["image"], given["top"], data, data.get("compare", ">="))
-    if key == ("curve", "bspline-basis-at"):
+    """The table model of ``solution``'s method, or ``None`` (a pixel walk, or unmarked): the
+    factory its method record names (:func:`~scanconv.answers.methods.answered_by`, the
+    record's ``model``, :mod:`.table_factories`)."""
+    if solution.primitive == "inside":
+        return table_models_for(solution)[0]
+    if (solution.primitive, solution.algorithm) == ("curve", "bspline-basis-at"):
         found = {q.key: q.value for q in solution.derived}
         t = next(q.value for q in solution.given if q.key == "t")
         return CoxDeBoorTable(found["knots"], t, int(found["span"]))
-    if key == ("dither", "pattern") and solution.tables:
-        title = solution.tables[0].title.split(" (")[0]  # "4 x 4 patterns"
-        return PlainRowsTable(title, ("pattern", "on"), "Each level's pattern stands alone.")
-    if solution.primitive == "inside":
-        return table_models_for(solution)[0]
-    return None
+    record = answered_by(solution.primitive, solution.algorithm)
+    if record is None or record.model is None or record.command in STEPPED:
+        return None
+    model: TableModel | None = record.load("model")(solution)
+    return model
 
 
 def canon(value: Any) -> Any:
@@ -223,7 +176,7 @@ def _answer(solution: Solution, model: TableModel) -> tuple[tuple[Column, ...], 
 
         rows = []
         for n, s in enumerate(solution.steps()):
-            if n > MAX_QUESTION_ROWS:
+            if n >= MAX_QUESTION_ROWS:  # the row n + 1 (n counts from 0)
                 raise InputError(f"the question's table has more than {MAX_QUESTION_ROWS} rows")
             rows.append(tuple(cells(s)))
         columns = solution.columns

@@ -6,6 +6,7 @@
     section: Lines                             (optional: a heading for the questions after it)
     # a comment; blank lines are ignored
     > Draw the line from (2, 2) to (10, 6) with the DDA algorithm.   (optional wording)
+    quiz: symmetry                             (optional: its quiz also asks the mirrored points)
     [4] line 2 2 10 6 --algo dda               ([N] or [N marks]: the marks, optional)
     circle 8 --center 2 3   # a comment after a question
 
@@ -66,7 +67,10 @@ def every(errors: Sequence[QuestionError], sheet: Sheet | None = None) -> Questi
 
 
 _MARKS = re.compile(r"^\[\s*(\d{1,4})\s*(?:marks?\s*)?\]\s*", re.IGNORECASE)
-_KEYWORD = re.compile(r"^(title|section)\s*:\s*(.*)$", re.IGNORECASE)
+_KEYWORD = re.compile(r"^(title|section|quiz)\s*:\s*(.*)$", re.IGNORECASE)
+QUIZ_ASKS = ("symmetry",)
+"""What a ``quiz:`` line may ask beyond the exam's own question (docs/lms.md): ``symmetry``,
+the symmetry tables (a circle's 8-way, an ellipse's 4-way mirrored points)."""
 _LINE_END = re.compile(r"\r\n|\r|\n")
 #: ESC, BEL, NEL, FF, VT, the line and paragraph separators...: never echoed, never a line end
 _CONTROL = re.compile("[\x01-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029]")
@@ -153,6 +157,7 @@ def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
     title = ""
     section = ""
     wording: list[str] = []
+    quiz: tuple[str, ...] = ()  # the next question's quiz: what it asks beyond the exam's
     questions: list[Question] = []
     errors: list[QuestionError] = []
     number = 0
@@ -173,7 +178,9 @@ def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
                 name, value = keyword.group(1).lower(), " ".join(keyword.group(2).split())
                 if not value:
                     raise QuestionError(source, number, f"'{name}:' needs a text after it")
-                if name == "title":
+                if name == "quiz":
+                    quiz = _quiz_asks(value, source, number)
+                elif name == "title":
                     if title:
                         raise QuestionError(source, number, "a second title line (one per sheet)")
                     title = value
@@ -186,21 +193,40 @@ def read_questions(text: str, source: str = "QUESTIONS") -> Sheet:
                     source, number, f"at most {MAX_QUESTIONS} questions in one sheet"
                 )
             questions.append(
-                Question(len(questions) + 1, number, argv, marks, " ".join(wording), section)
+                Question(len(questions) + 1, number, argv, marks, " ".join(wording), section, quiz)
             )
-            wording = []
+            wording, quiz = [], ()
         except QuestionError as err:  # the next lines are read on: every bad line is named
             errors.append(err)
-            wording = []
+            wording, quiz = [], ()
             if len(questions) == MAX_QUESTIONS:
                 # a sheet over the limit is refused at once: its questions are not weighed
                 # one by one for their own errors (a thousand of them would be answered)
                 raise every(errors) from None
     if wording:
         errors.append(QuestionError(source, number, "'>' wording without a question after it"))
+    if quiz:
+        errors.append(QuestionError(source, number, "'quiz:' without a question after it"))
     if errors:
         raise every(errors, Sheet(title, tuple(questions), source))
     return Sheet(title, tuple(questions), source)
+
+
+def _quiz_asks(value: str, source: str, number: int) -> tuple[str, ...]:
+    """A ``quiz:`` line's words (``symmetry``), each one of :data:`QUIZ_ASKS`.
+
+    >>> _quiz_asks("Symmetry", "q.txt", 3)
+    ('symmetry',)
+    >>> _quiz_asks("all", "q.txt", 3)
+    Traceback (most recent call last):
+    ...
+    scanconv.questions.files.QuestionError: q.txt:3: 'quiz:' takes symmetry, not 'all'
+    """
+    words = tuple(dict.fromkeys(value.lower().replace(",", " ").split()))
+    bad = [w for w in words if w not in QUIZ_ASKS]
+    if bad:
+        raise QuestionError(source, number, f"'quiz:' takes {', '.join(QUIZ_ASKS)}, not {bad[0]!r}")
+    return words
 
 
 def _question(line: str, source: str, number: int) -> tuple[int | None, tuple[str, ...]]:

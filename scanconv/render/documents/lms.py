@@ -311,11 +311,14 @@ def answer_pieces(value: Any, label: str = "") -> tuple[Piece, ...]:
     return tuple(out)
 
 
-def gap_tables(answer: Solution | Document, limit: int = MAX_GAPS) -> tuple[GapTable, ...] | None:
+def gap_tables(
+    answer: Solution | Document, limit: int = MAX_GAPS, asks: Sequence[str] = ()
+) -> tuple[GapTable, ...] | None:
     """The answer's tables (its document's :class:`~scanconv.document.StepTable` and
     :class:`~scanconv.document.Table` blocks) with their answer cells as gaps (the module
     docstring's rules); ``None`` when they would hold more than ``limit`` gaps (found out
-    without building more)."""
+    without building more). ``asks``: what the quiz asks beyond the exam's question
+    (``symmetry``: the tables whose columns are all working, :func:`symmetry_table`)."""
     doc = as_document(answer)
     room = [limit]
     tables = []
@@ -330,11 +333,29 @@ def gap_tables(answer: Solution | Document, limit: int = MAX_GAPS) -> tuple[GapT
             if split and table.columns and table.columns[0].key == "k":
                 continue  # the step table, split (the ellipse's regions): asked once
             if all(c.role == "working" for c in table.columns):
+                if "symmetry" in asks and table.columns:
+                    tables.append(symmetry_table(table.title, table.columns, table.rows(), room))
                 continue  # all of it follows from the answers asked (a symmetry table)
             tables.append(_gap_table(table.title, table.columns, table.rows(), True, room))
     except _TooMany:
         return None
     return tuple(tables)
+
+
+ROW_COLUMN = Column("row", "row", "\\text{row}", role="label")
+"""The column that numbers the rows of a symmetry table asked in a quiz."""
+
+
+def symmetry_table(
+    title: str, columns: Sequence[Column], rows: Iterable[Sequence[Any]], room: list[int]
+) -> GapTable:
+    """A table whose columns are all working (a circle's 8-way, an ellipse's 4-way symmetry:
+    each octant point and its mirror images) asked all the same, when the quiz asks for more
+    than the exam (``quiz: symmetry``): every cell a blank, the octant's point too (shown,
+    it would answer the step table's pixel), each row named by its number alone."""
+    asked = [ROW_COLUMN, *(c._replace(role="answer") for c in columns)]
+    numbered = ((n, *row) for n, row in enumerate(rows, 1))
+    return _gap_table(title, asked, numbered, True, room)
 
 
 def gaps(tables: Iterable[GapTable]) -> Iterator[Gap]:
@@ -388,7 +409,7 @@ def _quiz_question(title: str, a: Answered, notices: list[str] | None) -> QuizQu
             key.append(chunk)
     tables: tuple[GapTable, ...] | None = ()
     if doc.primitive != "theory":
-        tables = gap_tables(doc, MAX_GAPS)
+        tables = gap_tables(doc, MAX_GAPS, q.quiz)
     if tables is None:
         if notices is not None:
             notices.append(

@@ -55,6 +55,10 @@ class Question(NamedTuple):
     """The question in words (the ``>`` lines before it), or ``""``: worded from the answer."""
     section: str = ""
     """The ``section:`` it is under, or ``""``."""
+    quiz: tuple[str, ...] = ()
+    """What its quiz asks beyond what the exam asks (a ``quiz:`` line before it in the
+    question file, or the sheet's choice): ``("symmetry",)`` also asks the symmetry tables
+    (docs/lms.md)."""
 
     @property
     def command(self) -> str:

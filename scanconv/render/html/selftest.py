@@ -17,6 +17,12 @@ arithmetic):
   :meth:`~scanconv.marking.models.Model.step` from the row's point);
 * a **row** is one step: the point it is taken from, p_k as an exact fraction string (and as
   the table prints it), the move, the point it reaches, and the stepper positions to show;
+* a row's **increments** (``inc``): how p moves on each move, ``c0 + cx x + cy y`` of the point
+  the step is taken from (:func:`increments`, read off the model's
+  :meth:`~scanconv.marking.models.Model.step` at the row's point and two neighbours, and kept
+  only when it gives the model's own next p), so that the script follows a slip through to
+  the next steps as ``check`` does: the next p_k is expected from the student's own p and
+  move, the next pixel from the student's own pixel;
 * ``next``: the step table's p_{k+1} column (hidden in the last row shown: it is the answer);
 * the DDA has no decision: its rows hold the exact coordinates (fraction strings) and the
   descriptor names the rounding (:data:`~scanconv.algorithms.conventions.ROUNDINGS`).
@@ -98,6 +104,41 @@ def apply_rule(rule: dict[str, Any], at: list[int], p: Fraction | None) -> tuple
     return move, [at[0] + dx, at[1] + dy]
 
 
+_PROBES = ((0, 0), (1, 0), (0, 1))
+
+
+def increments(model: Model, s: State, t: State) -> dict[str, list[str]] | None:
+    """How p moves on a step from ``s`` by each of its moves, as ``[c0, cx, cy]`` (exact
+    strings): p_{k+1} = p_k + c0 + cx x + cy y, with (x, y) the point the step is taken from,
+    read off the model at ``s`` and at its two neighbours (the same p); ``None`` when ``s``
+    has no p, a step ends the loop there, or the form does not give ``t``'s p (a region's new
+    start: the ellipse's p2 is worked out afresh).
+
+    >>> from scanconv.marking.models import BresenhamLine, chain
+    >>> m = BresenhamLine(2, 2, 10, 6)
+    >>> s, t = list(chain(m))[:2]
+    >>> increments(m, s, t)
+    {'E': ['8', '0', '0'], 'NE': ['-8', '0', '0']}
+    """
+    if s.p is None or t.p is None:
+        return None
+    out: dict[str, list[str]] = {}
+    x, y = s.point
+    for move in model.moves(s):
+        d = []
+        for dx, dy in _PROBES:
+            nxt = model.step(s._replace(point=(x + dx, y + dy)), move)
+            if nxt is None or nxt.p is None:
+                return None
+            d.append(Fraction(nxt.p) - Fraction(s.p))
+        cx, cy = d[1] - d[0], d[2] - d[0]
+        out[move] = [str(c) for c in (d[0] - cx * x - cy * y, cx, cy)]
+    c0, cx, cy = (Fraction(c) for c in out.get(str(model.decide(s)), ["0", "0", "0"]))
+    if model.decide(s) not in out or Fraction(s.p) + c0 + cx * x + cy * y != t.p:
+        return None
+    return out
+
+
 def _layout(states: list[State], records: list[Step]) -> str | None:
     """``at`` (record i is state i) or ``after`` (record i holds p_i and state i + 1's
     point), as the page's table prints the chain; ``None``: the table is not the chain's."""
@@ -173,6 +214,9 @@ def _rows(
         name = stem if s.region == 0 else rule["name"]
         row["name"] = column_label(f"{name}_k", records[j].k)
         row["d"] = model.decide(s)
+        inc = increments(model, s, t)
+        if inc is not None:
+            row["inc"] = inc
         move, to = apply_rule(rule, row["at"], None if s.p is None else Fraction(s.p))
         if to != row["to"] or (s.p is not None and move != row["d"]):
             return None  # pragma: no cover - the tests keep the rules and the chains equal

@@ -11,9 +11,10 @@ ASCII notation (``x^2``) set as math (:func:`prose_tex`).
 Tables stay whole where they can: a short table (:data:`KEEP_ROWS`) is a ``tabular`` and its
 heading makes room for it on the page (``\\scneed``); a longer one is a ``longtable`` that
 continues on the next page with its heading repeated. A table too wide for the text width has
-its long text columns wrapped (a comparison's sentences) or, when short, is scaled to the
-width; only a long table too wide even in ``\\scriptsize`` is set in parts of its columns,
-each repeating the first column. Each plotted pixel is its own ``$...$``, so the pixel list
+its long text columns wrapped (a comparison's sentences) or, when short, has its headings
+set on their sides; only a long table too wide even in ``\\scriptsize`` is set in parts of
+its columns, each repeating the first column. Nothing is set below ``\\scriptsize`` (7 pt),
+nor scaled down: print is read on paper. Each plotted pixel is its own ``$...$``, so the pixel list
 breaks between pixels, ragged-right. The pixel grid and the answer's figures are drawn with
 TikZ (:mod:`scanconv.render.figures.tikz`); a figure too large to draw stays a typewriter picture.
 """
@@ -48,6 +49,23 @@ from ..cells import note_segments, numeric_column, prose_math, wrap_items
 from ..figures.grid import too_large
 from ..figures.tikz import tikz_figure, tikz_grid
 from .latex_breaks import breakable_math, kept_with_grid
+from .latex_fit import (
+    GRID_SIZES,
+    RESIZE_ROWS,
+    SAMPLE_ROWS,
+    TEXT_WIDTH,
+    WRAP_CHARS,
+    Layout,
+    fold,
+    grid_size,
+    heading_chars,
+    heading_row,
+    select_columns,
+    sideways_layout,
+    split_columns,
+    strips,
+    table_layout,
+)
 from .text import Rows, figure_text, grid_block, pixel_count, step_rows, table_rows
 
 MATH_TOKENS = (
@@ -145,133 +163,39 @@ def _heading(title: str, rows: int, after: float = 0) -> str:
     return f"{room}{{\\raggedright\\paragraph{{{title}}}\\mbox{{}}\\\\[1ex]\\par}}\n"
 
 
-TEXT_WIDTH = 345
-"""An article's text width in points (10pt, one column): what tables and grids must fit."""
-
-#: Font sizes to try, with the width of their text relative to the 10pt body text (Computer
-#: Modern's smaller sizes are drawn relatively wider: cmr7 text is 0.79 as wide, not 0.7).
-_SIZES = (("", 1.0), ("\\small", 0.93), ("\\footnotesize", 0.86), ("\\scriptsize", 0.79))
-_SAMPLE_ROWS = 100
-_MARKUP = str.maketrans("", "", "_{}^\\")
-
-
-Layout = tuple[str, bool]
-"""``(font size, tight)``: what :func:`table_layout` picks for a table."""
-
-_TINY: Layout = ("\\tiny", True)
-"""The last resort for a table whose first column and one other do not fit side by side."""
-
-
-def table_layout(columns: Sequence[Column], rows: Sequence[list[str]]) -> Layout | None:
-    """``(font size, tight)`` for a table: the largest font whose estimated width fits
-    :data:`TEXT_WIDTH`, first at the normal 6pt between columns, then at 3pt (``tight``);
-    ``None`` if it does not fit even in ``\\scriptsize`` at 3pt.
-
-    The width is estimated from the headings and the first rows: about 4.8pt a character at
-    10pt (digits are 5pt, points and commas less; a minus sign counts 1.6), plus the gaps.
-
-    >>> from scanconv.core.records import Column
-    >>> cols = [Column(str(i), f"col {i}", "") for i in range(4)]
-    >>> table_layout(cols, [["1.000"] * 4])
-    ('', False)
-    >>> table_layout([Column(str(i), "N_{i,3}", "") for i in range(11)], [["0.125"] * 11])
-    ('', True)
-    >>> table_layout([Column(str(i), "(xc + x, yc + y)", "") for i in range(9)], []) is None
-    True
-    """
-    widths = [_heading_chars(c) for c in columns]
-    for r in rows:
-        widths = [max(w, len(c) + 0.6 * c.count("-")) for w, c in zip(widths, r, strict=True)]
-    text = 4.8 * sum(widths)
-    for gap, tight in ((12, False), (6, True)):
-        for size, factor in _SIZES:
-            if text * factor + gap * len(columns) <= 0.97 * TEXT_WIDTH:  # 3% to spare
-                return size, tight
-    return None
-
-
-def split_columns(
-    columns: Sequence[Column], rows: Sequence[list[str]]
-) -> list[tuple[list[int], Layout]]:
-    """The column indexes of each part a table is set in, with each part's layout: one part
-    if it fits the text width, else the fewest parts of about equal width that each fit,
-    every part repeating the first column (``k``, or the octant point of a symmetry table) so
-    its rows can be read alone.
-
-    >>> from scanconv.core.records import Column
-    >>> cols = [Column("k", "k", "")] + [Column("c", "(xc + x, yc + y)", "")] * 8
-    >>> [part for part, _ in split_columns(cols, [])]
-    [[0, 1, 2, 3, 4], [0, 5, 6, 7, 8]]
-    """
-    every = list(range(len(columns)))
-    whole = table_layout(columns, rows)
-    if whole is not None or len(columns) < 3:
-        return [(every, whole or _TINY)]
-    rest = every[1:]
-    for count in range(2, len(rest) + 1):
-        bounds = [len(rest) * i // count for i in range(count + 1)]
-        parts = [[0, *rest[bounds[i] : bounds[i + 1]]] for i in range(count)]
-        fitted = []
-        for part in parts:
-            layout = table_layout(*_select(columns, rows, part))
-            if layout is None:
-                break
-            fitted.append((part, layout))
-        else:
-            return fitted
-    return [(every, _TINY)]  # not even one column beside the first fits
-
-
-def _select(
-    columns: Sequence[Column], rows: Sequence[list[str]], part: Sequence[int]
-) -> tuple[list[Column], list[list[str]]]:
-    return [columns[i] for i in part], [[r[i] for i in part] for r in rows]
-
-
-def _heading_chars(column: Column) -> float:
-    """The width of a heading in characters: its plain text without ``_{}^``, plus one for
-    each ``+ - =``, which math mode sets with space on both sides."""
-    ops = sum(column.tex.count(op) for op in "+-=")
-    return len(column.text.translate(_MARKUP)) + ops
-
-
-RESIZE_ROWS = 40
-"""A table too wide for the page with at most this many rows is set whole, scaled to the
-text width (it fits on a page); a longer one is set in parts of its columns."""
-
-WRAP_CHARS = 24
-"""A text column with a cell longer than this is set as a paragraph column that wraps."""
-
-
 def _tables(title: str, columns: Sequence[Column], rows: Rows, after: float = 0) -> Iterator[str]:
     """One table, whole whenever it can be: in the largest type that fits the text width;
     with its long text columns wrapped (a comparison's sentences) rather than set smaller
-    than ``\\small``; scaled down to the text
-    width when it has at most :data:`RESIZE_ROWS` rows; only a long table too wide for the
-    page is set in parts of its columns, each part repeating the first column."""
+    than ``\\small``; its wide headings set on their sides when it has at most
+    :data:`RESIZE_ROWS` rows; only a long table too wide for the page is set in parts of its
+    columns, each part repeating the first column (its headings on their sides too if a part
+    fits no other way). Never shrunk below ``\\scriptsize`` (7 pt)."""
     first = rows()
-    head = list(islice(first, _SAMPLE_ROWS))
+    head = list(islice(first, SAMPLE_ROWS))
     parts = split_columns(columns, head)
-    small = parts[0][1][0] in ("\\footnotesize", "\\scriptsize", "\\tiny")
+    small = parts[0][1][0] in ("\\footnotesize", "\\scriptsize")
     wrapped = wrap_spec(columns, head) if len(parts) > 1 or small else None
     if wrapped is not None:
         yield _heading(title, len(head), after)
         yield from _tabular(columns, ("\\small", True), chain(head, first), wrapped)
         yield "\n"
         return
-    if (len(parts) > 1 or parts[0][1] == _TINY) and len(head) <= RESIZE_ROWS:
+    side = sideways_layout(columns, head) if len(head) <= RESIZE_ROWS else None
+    if side is not None and (len(parts) > 1 or table_layout(columns, head) is None):
         yield _heading(title, len(head), after)
-        yield from resized(columns, head)
+        yield from _tabular(columns, side, chain(head, first), sideways=True)
         yield "\n"
         return
     for n, (part, layout) in enumerate(parts, 1):
         label = title if len(parts) == 1 else f"{title}, part {n} of {len(parts)}"
         yield _heading(label, len(head), after if n == len(parts) else 0)
+        cols, sample = select_columns(columns, head, part)
+        sideways = table_layout(cols, sample) is None  # the last resort: headings on their sides
         if len(parts) == 1:  # the whole table: the rows already started, read on
-            yield from _tabular(columns, layout, chain(head, first))
+            yield from _tabular(columns, layout, chain(head, first), sideways=sideways)
         else:  # each part reads the rows afresh, keeping its own columns
-            cols = [columns[i] for i in part]
-            yield from _tabular(cols, layout, ([r[i] for i in part] for r in rows()))
+            part_rows = ([r[i] for i in part] for r in rows())
+            yield from _tabular(cols, layout, part_rows, sideways=sideways)
         yield "\n"
 
 
@@ -288,13 +212,14 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
     'l>{\\\\raggedright\\\\arraybackslash}p{293.8pt}'
     """
     longest = [max((len(r[i]) for r in rows), default=0) for i in range(len(columns))]
-    wrap = [
-        n > WRAP_CHARS and any(not math_cell(r[i]) for r in rows) for i, n in enumerate(longest)
+    wrap = [  # text, or a list of points (it breaks between them)
+        n > WRAP_CHARS and any(not math_cell(r[i]) or _BETWEEN_POINTS.search(r[i]) for r in rows)
+        for i, n in enumerate(longest)
     ]
     if not any(wrap):
         return None
     fixed = sum(
-        4.4 * max(n, _heading_chars(c)) + 6
+        4.4 * max(n, heading_chars(c)) + 6
         for c, n, w in zip(columns, longest, wrap, strict=True)
         if not w
     )
@@ -310,35 +235,31 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
     )
 
 
-def resized(columns: Sequence[Column], rows: Iterable[list[str]]) -> Iterator[str]:
-    """A short table too wide for the page, whole, scaled to the text width (needs
-    ``graphicx``)."""
-    spec = "".join("r" if numeric_column(c) else "c" for c in columns)
-    yield f"\\noindent\\resizebox{{\\linewidth}}{{!}}{{\\begin{{tabular}}{{{spec}}}\n\\toprule\n"
-    yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n"
-    for r in rows:
-        yield " & ".join(_cell(c) for c in r) + " \\\\\n"
-    yield "\\bottomrule\n\\end{tabular}}\\par\n"
-
-
 def _tabular(
-    columns: Sequence[Column], layout: Layout, rows: Iterable[list[str]], spec: str = ""
+    columns: Sequence[Column],
+    layout: Layout,
+    rows: Iterable[list[str]],
+    spec: str = "",
+    *,
+    sideways: bool = False,
 ) -> Iterator[str]:
     """Every row in ``rows`` in the font size and spacing of ``layout``: a ``tabular``, which
     never breaks, when there are at most :data:`KEEP_ROWS` rows (its heading has made room
-    for it), else a ``longtable`` that continues on the next page with its heading."""
+    for it), else a ``longtable`` that continues on the next page with its heading. ``sideways``: headings wider than their
+    cells are set on their sides (:func:`sideways_layout`)."""
     spec = spec or "".join("r" if numeric_column(c) else "c" for c in columns)
     it = iter(rows)
     head = list(islice(it, KEEP_ROWS + 1))
     short = len(head) <= KEEP_ROWS
+    heading = heading_row(columns, head, sideways)
     size, tight = layout
     yield "{" + size + ("\\setlength{\\tabcolsep}{3pt}" if tight else "") + "\n"
     if short:
         yield f"\\par\\centering\\begin{{tabular}}{{{spec}}}\n\\toprule\n"
-        yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n"
+        yield heading + " \\\\\n\\midrule\n"
     else:
         yield f"\\begin{{longtable}}{{{spec}}}\n\\toprule\n"
-        yield " & ".join(f"${c.tex}$" for c in columns) + " \\\\\n\\midrule\n\\endhead\n"
+        yield heading + " \\\\\n\\midrule\n\\endhead\n"
     for r in chain(head, it):
         yield " & ".join(_cell(c) for c in r) + " \\\\\n"
     if short:
@@ -347,24 +268,9 @@ def _tabular(
         yield "\\bottomrule\n\\end{longtable}\n}\n"
 
 
-#: Font sizes for the verbatim grid by the widest line (characters) that fits an article's
-#: 345pt text width in cmtt (0.525 em a character): 10pt holds 65, 8pt 82, 7pt 94, 5pt 131.
-_GRID_SIZES = ((65, ""), (82, "\\footnotesize"), (94, "\\scriptsize"))
-
-
-def grid_size(lines: Sequence[str]) -> str:
-    """The font-size command that lets the grid fit the text width (``""``: normal size).
-
-    >>> grid_size(["7 | .  #"]), grid_size(["x" * 90]), grid_size(["x" * 200])
-    ('', '\\\\scriptsize', '\\\\tiny')
-    """
-    width = max((len(line) for line in lines), default=0)
-    return next((size for limit, size in _GRID_SIZES if width <= limit), "\\tiny")
-
-
-def _wrap_key(line: str, width: int = _GRID_SIZES[0][0]) -> list[str]:
+def _wrap_key(line: str, width: int = GRID_SIZES[0][0]) -> list[str]:
     """A figure's key (``shades: '@' = 0 (black), ...``) wrapped between its items, so a long
-    key does not shrink the whole picture to ``\\tiny``; drawing and axis lines are kept.
+    key does not cut the whole picture into strips; drawing and axis lines are kept.
 
     >>> _wrap_key("shades: 'a' = 0, 'b' = 1", 16)
     ["shades: 'a' = 0,", "  'b' = 1"]
@@ -494,7 +400,7 @@ def _code(block: Pseudocode, options: Options, doc: Document) -> Iterator[str]:
     \end{minipage}
     <BLANKLINE>
     """
-    lines = block.numbered()
+    lines = fold(block.numbered())
     yield _heading(block.title, len(lines))
     yield "\n\\noindent\\begin{minipage}{\\linewidth}" + grid_size(lines) + "\\ttfamily\n"
     yield "\\\\\n".join("\\mbox{}" + tt_text(line) for line in lines)
@@ -535,7 +441,7 @@ def _pixels(block: Pixels, options: Options, doc: Document) -> Iterator[str | No
         return
     chunks = list(grid_block(block, options))
     lines = [c for c in chunks if isinstance(c, str)]
-    if max((len(line) for line in lines), default=0) > _GRID_SIZES[-1][0]:
+    if max((len(line) for line in lines), default=0) > GRID_SIZES[-1][0]:
         lines = [c for c in grid_block(block, options, compact=True) if isinstance(c, str)]
     yield from (c for c in chunks if isinstance(c, Notice))
     yield from _verbatim(lines)
@@ -573,10 +479,10 @@ def _verbatim(lines: Sequence[str]) -> Iterator[str]:
     """A typewriter picture in a minipage (never split across a page), set small enough to
     fit the text width."""
     lines = [part for line in lines for part in _wrap_key(line)]
-    if lines:
-        size = grid_size(lines)
+    for strip in strips(lines) if lines else []:
+        size = grid_size(strip)
         yield "\n\\noindent\\begin{minipage}{\\linewidth}\n" + (f"{size}\n" if size else "")
         yield "\\begin{verbatim}\n"
-        for line in lines:
+        for line in strip:
             yield line + "\n"
         yield "\\end{verbatim}\n\\end{minipage}\n"

@@ -90,6 +90,9 @@
       var trs = root.querySelectorAll("tr[data-pos]");
       var svg = root.querySelector("svg.sc-stepgrid");
       var i = 0, got = 0, asked = 0, testing = false, waiting = false, typed = [], byHost = false;
+      // the student's own state after their last step (check's follow-through): the pixel they
+      // reached, their next p or exact values; null: the answer's own row
+      var own = null;
       var stepped = [];
       trs.forEach(function (tr) { stepped.push(tr.closest(".sc-tablebox, .sc-scroll")); });
       root.querySelectorAll(".sc-tablebox, .sc-scroll").forEach(function (box) {
@@ -146,8 +149,8 @@
         goTo(r.lit);
         inSight(r.at);
         var last = typed.length && T.pixel(typed[typed.length - 1].pixel);
-        var own = last && (last[0] !== r.at[0] || last[1] !== r.at[1]) ? " (or from your own " + pt(last) + ")" : "";
-        q.textContent = "Step " + (i + 1) + " of " + rows.length + ": from " + (dda ? "(" + r.xyt.join(", ") + ")" : pt(r.at)) + (T.host ? own : "") +
+        var yours = last && (last[0] !== r.at[0] || last[1] !== r.at[1]) ? " (or from your own " + pt(last) + ")" : "";
+        q.textContent = "Step " + (i + 1) + " of " + rows.length + ": from " + (dda ? "(" + r.xyt.join(", ") + ")" : pt(r.at)) + yours +
           (dda ? "" : r.p === null ? ", the pixel only" : ", what are " + r.name + ", the decision and the next pixel?");
         if (dda) { q.textContent += ", what are " + r.name + " and the pixel?"; }
         pName.textContent = r.name + " =";
@@ -165,11 +168,17 @@
         (pLab.hidden ? xyIn : pIn).focus();
       }
       function line(ok, text) { var p = el("p", ok ? "sc-ok" : "sc-no", (ok ? "\u2713 " : "\u2717 ") + text); feed.append(p); }
+      function add(a, b) { return mk(a.n * b.d + b.n * a.d, a.d * b.d); }
+      function sub(a, b) { return mk(a.n * b.d - b.n * a.d, a.d * b.d); }
       function judgeDda(r) {
         var parts = pIn.value.replace(/^\s*\(|\)\s*$/g, "").split(/\s*[,;]\s*|\s+/);
         var gx = parts.length === 2 ? T.num(parts[0]) : null, gy = parts.length === 2 ? T.num(parts[1]) : null;
-        var wx = T.num(r.nxy[0]), wy = T.num(r.nxy[1]);
-        var okXY = T.same(gx, wx) && T.same(gy, wy);
+        var ax = T.num(r.nxy[0]), ay = T.num(r.nxy[1]);
+        // follow-through: the increments added to the student's own values of the row before
+        var wx = own ? add(own.xy[0], sub(ax, T.num(r.xy[0]))) : ax;
+        var wy = own ? add(own.xy[1], sub(ay, T.num(r.xy[1]))) : ay;
+        var okXY = (T.same(gx, wx) && T.same(gy, wy)) || (T.same(gx, ax) && T.same(gy, ay));
+        if (!(T.same(gx, wx) && T.same(gy, wy)) && okXY) { wx = ax; wy = ay; }
         var ux = gx && gy ? gx : wx, uy = gx && gy ? gy : wy;  // follow-through: the pixel of your own values
         var want = [Number(T.round(ux, data.rounding)), Number(T.round(uy, data.rounding))];
         var px = T.pixel(xyIn.value), okPx = !!px && px[0] === want[0] && px[1] === want[1];
@@ -178,47 +187,84 @@
         line(okPx, okPx ? "pixel " + pt(want) + (okXY ? "" : ", rounded from your values: follow-through") :
           "pixel: " + data.rounding + " rounding of " + (gx && gy ? "your (" + T.show(gx) + ", " + T.show(gy) + ")" : right) + " gives " + pt(want));
         feed.append(el("p", "", r.name + " = " + right + ", so the pixel is " + pt(r.to) + "."));
+        own = { xy: gx && gy ? [gx, gy] : [wx, wy] };
         return (okXY ? 1 : 0) + (okPx ? 1 : 0);
       }
-      function judge(r) {
-        var rule = data.rules[r.rule], moves = rule.moves, marks = 0;
-        var want = r.p === null ? null : T.num(r.p), gp = T.num(pIn.value);
-        var okP = want === null || T.same(gp, want);
-        if (want !== null) {
-          var prev = rows[i - 1], why = "";
-          if (prev && prev.p !== null && prev.rule === r.rule) {
-            var a = T.num(prev.p), inc = mk(want.n * a.d - a.n * want.d, want.d * a.d);
-            why = " (" + r.name + " = " + prev.name + (inc.n < B0 ? " \u2212 " + T.show(mk(-inc.n, inc.d)) : " + " + T.show(inc)) +
-              " = " + T.show(a) + (inc.n < B0 ? " \u2212 " : " + ") + T.show(mk(abs(inc.n), inc.d)) + " = " + T.show(want) + ")";
-          } else if (!okP) { why = " (see the working)"; }
-          line(okP, okP ? r.name + " = " + r.pt.replace(/-/g, "\u2212") : r.name + " = " + r.pt.replace(/-/g, "\u2212") + ", not " + (pIn.value.trim() || "blank") + why);
-          marks += okP ? 1 : 0;
-        }
-        var used = okP || !gp || want === null ? want : gp;   // decided on your own p
+      // one reading of the student's step, as check reads it: taken from ``base`` (where the
+      // step starts and the p it should have), deciding on their own p (``ownP``) or on the
+      // base's; its marks, and what it expects
+      function reading(r, base, ownP) {
+        var rule = data.rules[r.rule], moves = rule.moves;
+        var gp = T.num(pIn.value), px = T.pixel(xyIn.value), dv = dIn.value;
+        var want = r.p === null ? null : base.p, okP = want === null || T.same(gp, want);
+        var used = want === null ? null : ownP && gp ? gp : want;
         var dWant = used === null ? Object.keys(moves)[0] : rule[T.sign(used)];
-        if (want !== null) {
-          var okD = dIn.value === dWant;
-          var on = r.name + " = " + T.show(used) + CMP[T.sign(used)];
-          line(okD, okD ? "decision " + dWant + (okP ? "" : ": it follows from your " + on + " (follow-through)") :
-            "decision: " + (dIn.value ? dIn.value : "none chosen") + "; " + (okP ? "" : "your ") + on + " chooses " + dWant);
-          marks += okD ? 1 : 0;
-        }
-        var move = moves[dIn.value] ? dIn.value : dWant;
-        var to = [r.at[0] + moves[move][0], r.at[1] + moves[move][1]];
-        var px = T.pixel(xyIn.value), okX = !!px && px[0] === to[0] && px[1] === to[1];
-        var from = move === r.d ? "" : " (follow-through from your decision)";
-        var ruled = [r.at[0] + moves[dWant][0], r.at[1] + moves[dWant][1]];
+        var okD = want === null || dv === dWant, move = moves[dv] ? dv : dWant;
+        var to = [base.at[0] + moves[move][0], base.at[1] + moves[move][1]];
+        var ruled = [base.at[0] + moves[dWant][0], base.at[1] + moves[dWant][1]];
+        var okX = !!px && px[0] === to[0] && px[1] === to[1], slip = false;
         if (!okX && px && px[0] === ruled[0] && px[1] === ruled[1]) {
           // the pixel the rule's own step reaches: the decision word was the one slip (as check
           // judges it: a right cell is never called wrong)
-          okX = true; to = ruled; from = " (the rule's step: the decision was the slip)";
+          okX = true; to = ruled; slip = true;
         }
-        line(okX, okX ? "next pixel " + pt(to) + from : "next pixel: " + move + " from " + pt(r.at) + " goes to " + pt(to) + (px ? ", not " + pt(px) : ""));
-        marks += okX ? 1 : 0;
-        var tail = want === null ? "the next pixel is " + r.d + ": " + pt(r.to) :
-          r.name + " = " + r.pt.replace(/-/g, "\u2212") + CMP[T.sign(want)] + ", so the next pixel is " + r.d + ": " + pt(r.to);
+        var marks = (want === null ? 0 : (okP ? 1 : 0) + (okD ? 1 : 0)) + (okX ? 1 : 0);
+        return { r: r, base: base, want: want, okP: okP, gp: gp, used: used, dWant: dWant, okD: okD,
+          move: slip ? dWant : move, to: to, okX: okX, slip: slip, px: px, marks: marks };
+      }
+      // where the next step starts after a reading (check's bases): the student's own pixel
+      // (else the move's), p moved on from the p they decided by, by their move and by the
+      // rule's (the row's increments; none known: the answer's next p)
+      function after(rd) {
+        var out = [], at = rd.base.at;
+        [rd.move, rd.dWant].forEach(function (m) {
+          var inc = rd.r.inc && rd.used !== null && rd.r.inc[m], moves = data.rules[rd.r.rule].moves;
+          var p = inc ? add(rd.used, add(T.num(inc[0]), add(mk(T.num(inc[1]).n * BigInt(at[0]), T.num(inc[1]).d),
+            mk(T.num(inc[2]).n * BigInt(at[1]), T.num(inc[2]).d)))) : null;
+          var b = { at: rd.px || [at[0] + moves[m][0], at[1] + moves[m][1]], p: p, from: rd.used };
+          if (!out.some(function (o) { return o.at[0] === b.at[0] && o.at[1] === b.at[1] && T.same(o.p, b.p); })) { out.push(b); }
+        });
+        return out;
+      }
+      function judge(r) {
+        var answer = { at: r.at, p: r.p === null ? null : T.num(r.p) };
+        var best = reading(r, answer, true);
+        if (best.marks < parts(r)) {  // not the answer's own step: the best reading from hers
+          best = null;
+          (own || [answer]).forEach(function (b) {
+            if (b.p === null && r.p !== null) { b = { at: b.at, p: answer.p, from: b.from }; }
+            [true, false].forEach(function (ownP) {
+              var rd = reading(r, b, ownP);
+              if (!best || rd.marks > best.marks) { best = rd; }
+            });
+          });
+        }
+        own = after(best);
+        show(r, best);
+        return best.marks;
+      }
+      function show(r, rd) {
+        var mine = rd.base.at !== r.at || (rd.want !== null && !T.same(rd.want, T.num(r.p)));
+        if (rd.want !== null) {
+          var prev = rows[i - 1], why = "", want = rd.want;
+          if (prev && prev.p !== null && prev.rule === r.rule) {
+            var a = rd.base.from !== undefined && rd.base.from !== null ? rd.base.from : T.num(prev.p);
+            var inc = mk(want.n * a.d - a.n * want.d, want.d * a.d);
+            why = " (" + r.name + " = " + prev.name + (inc.n < B0 ? " \u2212 " + T.show(mk(-inc.n, inc.d)) : " + " + T.show(inc)) +
+              " = " + T.show(a) + (inc.n < B0 ? " \u2212 " : " + ") + T.show(mk(abs(inc.n), inc.d)) + " = " + T.show(want) + ")";
+          } else if (!rd.okP) { why = " (see the working)"; }
+          var shown = mine ? T.show(want) + (T.same(want, T.num(r.p)) ? "" : " (follow-through: from your own answers)") : r.pt.replace(/-/g, "\u2212");
+          line(rd.okP, rd.okP ? r.name + " = " + shown : r.name + " = " + shown + ", not " + (pIn.value.trim() || "blank") + why);
+          var on = r.name + " = " + T.show(rd.used) + CMP[T.sign(rd.used)];
+          line(rd.okD, rd.okD ? "decision " + rd.dWant + (rd.okP ? "" : ": it follows from your " + on + " (follow-through)") :
+            "decision: " + (dIn.value ? dIn.value : "none chosen") + "; " + (rd.okP ? "" : "your ") + on + " chooses " + rd.dWant);
+        }
+        var from = rd.slip ? " (the rule's step: the decision was the slip)" :
+          rd.move === r.d && !mine ? "" : " (follow-through from your decision)";
+        line(rd.okX, rd.okX ? "next pixel " + pt(rd.to) + from : "next pixel: " + rd.move + " from " + pt(rd.base.at) + " goes to " + pt(rd.to) + (rd.px ? ", not " + pt(rd.px) : ""));
+        var tail = rd.want === null && r.p === null ? "the next pixel is " + r.d + ": " + pt(r.to) :
+          r.name + " = " + r.pt.replace(/-/g, "\u2212") + CMP[T.sign(T.num(r.p))] + ", so the next pixel is " + r.d + ": " + pt(r.to);
         feed.append(el("p", "", tail + "."));
-        return marks;
       }
       function parts(r) { return dda ? 2 : r.p === null ? 1 : 3; }
       // the library's verdict (the site's): each answer right or wrong against the value
@@ -248,7 +294,7 @@
         got = marks; asked = steps;
         hideFrom(r.row + 1);
         goTo(r.lit + 1);
-        var unit = byHost ? " steps right" : "";
+        var unit = " steps right";
         score.textContent = "Score so far: " + got + " / " + asked + unit;
         i += 1;
         if (i >= rows.length) {
@@ -277,7 +323,7 @@
             feed.textContent = "";
             if (res.error || !res.parts) {  // the site cannot mark this answer: judged here, from now on
               T.host = null; byHost = false;
-              judged(r, got + (dda ? judgeDda(r) : judge(r)), asked + parts(r));
+              judged(r, got + stepRight(r), asked + 1);
               return;
             }
             showJudged(r, res);
@@ -285,10 +331,12 @@
           });
           return;
         }
-        judged(r, got + (dda ? judgeDda(r) : judge(r)), asked + parts(r));
+        judged(r, got + stepRight(r), asked + 1);
       }
+      // a step is right when each of its answers is (the score in steps, as check counts it)
+      function stepRight(r) { return (dda ? judgeDda(r) : judge(r)) === parts(r) ? 1 : 0; }
       next.addEventListener("click", function () {
-        if (i >= rows.length) { i = 0; got = 0; asked = 0; typed = []; score.textContent = ""; }
+        if (i >= rows.length) { i = 0; got = 0; asked = 0; typed = []; own = null; score.textContent = ""; }
         ask();
       });
       // a grid cell is a target to tap: at least 26 CSS px while testing (WCAG 2.2's 24 px
@@ -306,7 +354,7 @@
       }
       function start() {
         targets(true);
-        testing = true; i = 0; got = 0; asked = 0; typed = [];
+        testing = true; i = 0; got = 0; asked = 0; typed = []; own = null;
         root.classList.add("sc-testing");
         panel.hidden = false;
         btn.setAttribute("aria-expanded", "true");
