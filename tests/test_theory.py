@@ -32,7 +32,7 @@ def _text(sol: object, fmt: Format) -> str:
 
 
 def test_the_topics_have_unique_names_and_questions() -> None:
-    assert len(NAMES) == len(set(NAMES)) == 24 + 19  # the notes, and the papers beyond them
+    assert len(NAMES) == len(set(NAMES)) == 24 + 21  # the notes, and the papers beyond them
     asked = [q for t in topics() for q in t.questions]
     assert len(asked) == len(set(asked))
 

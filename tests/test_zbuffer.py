@@ -169,8 +169,13 @@ def test_bad_input_is_one_line_and_exit_2(args: tuple[str, ...], message: str) -
     assert message in result.err and result.err.count("\n") == 1
 
 
-def test_an_oversized_question_is_refused_before_work() -> None:
-    from scanconv.render.work import estimate
+def test_the_largest_question_is_bounded_by_the_limits_before_work() -> None:
+    from scanconv.algorithms.visible_zbuffer import MAX_POLYGONS, MAX_SIDE
+    from scanconv.render.work import BOUNDED
 
-    work = estimate("visible_zbuffer", {"polygons": list(EXAMPLE), "size": "32"})
-    assert work is not None and work.rows == 2 * 32 * 32
+    # a row per polygon and pixel at most: within the terminal's 10,000 rows, so no format
+    # refuses it and the limits alone bound it (one polygon more, or a side of 33, is refused)
+    assert MAX_POLYGONS * MAX_SIDE * MAX_SIDE <= 10_000 and "visible_zbuffer" in BOUNDED
+    too_many = " : ".join(["0 0 1 3 0 1 0 3 1"] * (MAX_POLYGONS + 1)).split()
+    assert run("3d", "zbuffer", *too_many).code == 2
+    assert run("3d", "zbuffer", *EXAMPLE, "--size", str(MAX_SIDE + 1)).code == 2

@@ -85,6 +85,40 @@ def _values(faces: FacesLike | None, param: str) -> list[Any]:
     return out
 
 
+Direction = Annotated[
+    str | None,
+    Opt(
+        "--direction",
+        help="into-scene: V from the viewer into the scene, back face when V.N > 0 (Hearn & "
+        "Baker, the default); to-viewer: V toward the viewer, back face when V.N < 0.",
+        choices=("into-scene", "to-viewer"),
+        show_default=False,
+    ),
+]
+
+EdgeOn = Annotated[
+    str | None,
+    Opt(
+        "--edge-on",
+        help="A face with V.N = 0: hidden (the default, Hearn & Baker's C <= 0) or visible.",
+        choices=("hidden", "visible"),
+        show_default=False,
+    ),
+]
+
+Handed = Annotated[
+    str | None,
+    Opt(
+        "--handed",
+        help="right (the default): the viewer on +z looking along -z; left: looking along +z "
+        "(Hearn & Baker's left-handed viewing system).",
+        choices=("right", "left"),
+        show_default=False,
+    ),
+]
+"""The back-face conventions, as ``3d backface`` declares them."""
+
+
 @answers
 def visible_backface(
     faces: Annotated[
@@ -132,35 +166,9 @@ def visible_backface(
             show_default=False,
         ),
     ] = None,
-    direction: Annotated[
-        str | None,
-        Opt(
-            "--direction",
-            help="into-scene: V from the viewer into the scene, back face when V.N > 0 (Hearn & "
-            "Baker, the default); to-viewer: V toward the viewer, back face when V.N < 0.",
-            choices=("into-scene", "to-viewer"),
-            show_default=False,
-        ),
-    ] = None,
-    edge_on: Annotated[
-        str | None,
-        Opt(
-            "--edge-on",
-            help="A face with V.N = 0: hidden (the default, Hearn & Baker's C <= 0) or visible.",
-            choices=("hidden", "visible"),
-            show_default=False,
-        ),
-    ] = None,
-    handed: Annotated[
-        str | None,
-        Opt(
-            "--handed",
-            help="right (the default): the viewer on +z looking along -z; left: looking along +z "
-            "(Hearn & Baker's left-handed viewing system).",
-            choices=("right", "left"),
-            show_default=False,
-        ),
-    ] = None,
+    direction: Direction = None,
+    edge_on: EdgeOn = None,
+    handed: Handed = None,
 ) -> Solution:
     """Back-face detection (``scanconv 3d backface``): each face's normal, the view vector, the
     sign of ``V . N`` and the verdict.

@@ -60,6 +60,18 @@ def _tests_table(result: ds.DepthSort) -> Table:
     )
 
 
+def _painted(
+    polys: Sequence[Any], order: Sequence[int], width: int, height: int
+) -> dict[tuple[int, int], int]:
+    """The frame painted in ``order``: each pixel the last polygon (by index) that covers it."""
+    frame: dict[tuple[int, int], int] = {}
+    for i in order:
+        for x, y in fill_pixels([(v[0], v[1]) for v in polys[i][1]]):
+            if 0 <= x < width and 0 <= y < height:
+                frame[(x, y)] = i
+    return frame
+
+
 def depth_sort_solution(
     polygons: Sequence[Any],
     *,
@@ -77,11 +89,7 @@ def depth_sort_solution(
     polys = polygons_from(polygons)
     width, height = size_of(size, polys)
     result = ds.depth_sort(polys, knobs)
-    frame: dict[tuple[int, int], int] = {}
-    for i in result.painted:
-        for x, y in fill_pixels([(v[0], v[1]) for v in polys[i][1]]):
-            if 0 <= x < width and 0 <= y < height:
-                frame[(x, y)] = i
+    frame = _painted(polys, result.painted, width, height)
     names = [n for n, _ in polys]
     given = (
         *(worked(n, f, f"{n}: " + ", ".join(vec(v) for v in f)) for n, f in polys),
