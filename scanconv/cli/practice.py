@@ -51,6 +51,7 @@ class Topic(str, Enum):
     characters = "characters"
     midpoint_line = "midpoint-line"
     antialias = "antialias"
+    three_d = "3d"
     all = "all"
 
 
