@@ -78,6 +78,8 @@ QUESTIONS = (
     "char bitmap A --at 2 1",
     "char stroke T --scale 2",
     "char storage 128 5 7",
+    "3d transform --solid unit-cube --rotate-axis 0 0 0 1 1 1 120",
+    "3d project --solid unit-cube --perspective two-point --d 4 --cop minus-d",
 )
 """One question (or more) of every command; the site answers them with the same code."""
 
