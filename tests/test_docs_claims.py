@@ -527,10 +527,10 @@ def test_the_practice_options_teaching_md_gives_are_the_programs():
     options = _options(COMMANDS["practice"])
     page = TEXT[ROOT / "docs" / "teaching.md"]
     section = " ".join(page.split("## Practice questions")[1].split("\n## ")[0].split())
-    named = re.search(r"`--topic ([a-z|-]+)` \(default `([a-z]+)`", section)
+    named = re.search(r"`--topic ([a-z0-9|-]+)` \(default `([a-z]+)`", section)
     beyond = re.search(r"a topic beyond the notes: (.*?)`--count N`", section)
     assert named is not None and beyond is not None
-    topics = named[1].split("|") + re.findall(r"`([a-z-]+)`", beyond[1])
+    topics = named[1].split("|") + re.findall(r"`([a-z0-9-]+)`", beyond[1])
     assert sorted(topics) == sorted(_choices(options["--topic"]) or ())
     assert named[2] == options["--topic"].default.value
     levels = re.search(r"`--difficulty ([a-z|]+)`", section)

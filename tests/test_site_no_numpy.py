@@ -83,6 +83,8 @@ QUESTIONS = (
     "3d scanline 0 0 1 4 0 1 0 4 1 : 1 0 2 4 0 2 4 3 2 --size 5",
     "3d depth-sort 0 0 1 4 0 1 0 4 1 : 1 1 3 5 1 0 1 5 0 --size 6",
     "3d warnock 0 0 1 6 0 1 0 6 1 : 2 2 3 7 2 3 2 7 3 --size 8",
+    "3d transform --solid unit-cube --rotate-axis 0 0 0 1 1 1 120",
+    "3d project --solid unit-cube --perspective two-point --d 4 --cop minus-d",
 )
 """One question (or more) of every command; the site answers them with the same code."""
 

@@ -374,7 +374,8 @@ _SPACE = (
     _plain("3d", "transform", "composite 3D transformation (4 x 4 homogeneous)",
            "scanconv.answers.space.transform:transform_solution", _G + "space:compose"),
     *(
-        _plain("3d", kind, f"{kind} projection", "scanconv.answers.space.project:project_solution",
+        _plain("3d", kind, f"{kind} {'perspective ' if kind.endswith('-point') else ''}projection",
+               "scanconv.answers.space.project:project_solution",
                "scanconv.answers.space.project:" + kind.replace("-", "_"))
         for kind in ("orthographic", "oblique", "cavalier", "cabinet", "isometric", "dimetric", "trimetric",
                      "one-point", "two-point", "three-point")

@@ -53,6 +53,7 @@ class Topic(str, Enum):
     antialias = "antialias"
     line_methods = "line-methods"
     visible = "visible"
+    three_d = "3d"
     all = "all"
 
 

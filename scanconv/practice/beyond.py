@@ -3,7 +3,8 @@ dithering, inside-outside tests, clipping (Cohen-Sutherland, Liang-Barsky, Cyrus
 midpoint subdivision, Weiler-Atherton, Nicholl-Lee-Nicholl), the frame buffer, line
 attributes (dashed and dotted lines, thick lines), character generation (bitmap, stroke,
 storage), the midpoint line and anti-aliasing (Wu's line with either end-point convention,
-area sampling, Hearn & Baker's sub-pixel supersampling). Each topic walks its kinds as the
+area sampling, Hearn & Baker's sub-pixel supersampling) and the 3D chapter (transformations
+and projections of a solid). Each topic walks its kinds as the
 notes' topics do, so a few questions show every method; every question is worded with the
 method's own name (:mod:`.methods`)."""
 
@@ -12,6 +13,7 @@ from __future__ import annotations
 import random
 from typing import Any
 
+from ..algorithms import space_conventions
 from ..answers.methods import method, methods_of
 from . import windows
 from .records import PracticeQuestion, line_question
@@ -431,6 +433,83 @@ LINE_METHODS = [n for n in methods_of("line") if method("line", n).practice]
 """The line methods the ``line-methods`` topic draws: every line record with a practice
 wording (a new method's record that names one is drawn with no change here)."""
 
+
+_AXES_3D = ((1, 1, 1), (0, 1, 1), (1, 0, 1), (1, 1, 0), (1, 2, 2), (2, 1, 2))
+_SOLIDS_3D = ("unit-cube", "pyramid", "tetrahedron")
+
+
+def space3d(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
+    """A 3D question: a transformation of a solid, or a projection of one."""
+    solid = "unit-cube" if difficulty == "easy" else rng.choice(_SOLIDS_3D)
+    what = {"unit-cube": "the unit cube", "pyramid": "the square pyramid"}.get(
+        solid, "the tetrahedron"
+    )
+    angle = rng.choice((30, 45, 60, 90) if difficulty != "hard" else (15, 30, 45, 120))
+    if kind == "rotate-axis":
+        p1 = (0, 0, 0) if difficulty == "easy" else tuple(rng.randrange(0, 3) for _ in range(3))
+        v = rng.choice(_AXES_3D)
+        p2 = tuple(a + b for a, b in zip(p1, v, strict=True))
+        words = ("--rotate-axis", *map(str, (*p1, *p2)), str(angle))
+        how = f"rotate {what} by {angle}° about the axis through {p1} and {p2}"
+        marks = 14
+    elif kind == "fixed-point":
+        k, c = rng.choice((2, 3)), tuple(rng.randrange(0, 3) for _ in range(3))
+        words = ("--scale", str(k), "--about", *map(str, c), "--rotate-z", str(angle))
+        how = f"scale {what} by {k} about {c}, then rotate it by {angle}° about the z axis"
+        marks = 8
+    elif kind == "reflect-plane":
+        n = rng.choice(((1, 1, 1), (1, 0, 1), (0, 1, 1)))
+        d = -rng.randrange(1, 4)
+        words = ("--reflect", "plane", *map(str, (*n, d)))
+        plane = " + ".join(v for c, v in zip(n, "xyz", strict=True) if c)
+        how = f"reflect {what} about the plane {plane} - {-d} = 0"
+        marks = 8
+    else:  # a projection: the kinds of the 3d method records
+        return _projection_3d(rng, difficulty, kind, solid, what)
+    return PracticeQuestion(
+        "3d",
+        ("3d", "transform", "--solid", solid, *words),
+        f"In homogeneous coordinates, {how}: give each matrix, the composite and the vertices "
+        "after.",
+        marks,
+        frozenset({kind}),
+    )
+
+
+def _projection_3d(
+    rng: random.Random, difficulty: str, kind: str, solid: str, what: str
+) -> PracticeQuestion:
+    """A projection question: its options are those the kind's builder reads (its method
+    record's), so a perspective asks for d and the vanishing points."""
+    record = method("3d", kind)
+    built = record.load("generator")({}, space_conventions.resolve(None, {}), 1)
+    argv: tuple[str, ...] = ("--perspective" if built.vanishing else "--parallel", kind)
+    how = f"the {record.title} of {what}"
+    marks = 8
+    if built.vanishing:
+        d = rng.choice((2, 4, 5, 10))
+        argv += ("--d", str(d), "--cop", "minus-d")
+        how += f" onto z = 0 with the centre of projection at (0, 0, -{d})"
+        marks = 14 if difficulty != "easy" else 8
+    if "angle" in built.reads:
+        phi = rng.choice((30, 45, 60) if built.vanishing else (30, 45))
+        argv += ("--angle", str(phi))
+        how += (
+            f", the solid first turned by {phi}° about y"
+            if built.vanishing
+            else f" with a receding angle of {phi}°"
+        )
+    if built.vanishing:
+        how += "; find the vanishing points"
+    return PracticeQuestion(
+        "3d",
+        ("3d", "project", "--solid", solid, *argv),
+        f"Find {how}: give the projection matrix and the projected vertices, and draw it.",
+        marks,
+        frozenset({kind}),
+    )
+
+
 KINDS: dict[str, list[Any]] = {
     "dither": [
         "ordered",
@@ -473,6 +552,16 @@ KINDS: dict[str, list[Any]] = {
         )
     ],  # a tie: d = 0 at some step (the tie convention decides)
     "visible": ["backface", "zbuffer", "scanline", "depth-sort", "warnock"],
+    "3d": [
+        "rotate-axis",
+        "cavalier",
+        "one-point",
+        "fixed-point",
+        "cabinet",
+        "isometric",
+        "reflect-plane",
+        "two-point",
+    ],
 }
 """Each topic's kinds, walked in a seeded rotation."""
 
@@ -487,4 +576,5 @@ MAKERS = {
     "antialias": antialias,
     "line-methods": line_methods,
     "visible": visible,
+    "3d": space3d,
 }

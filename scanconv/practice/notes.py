@@ -42,6 +42,7 @@ else:
 TOPICS: tuple[str, ...] = ("line", "circle", "ellipse", "bezier", "bspline", "storage", "quantize")
 TOPICS += ("dither", "inside", "clip", "framebuffer")  # beyond the notes: .practice_more
 TOPICS += ("attributes", "characters", "midpoint-line", "antialias", "line-methods", "visible")
+TOPICS += ("3d",)  # the 3D chapter: transformations and projections
 """The topics a practice set can draw from (``all``: every one, lines most often)."""
 DIFFICULTIES = ("easy", "exam", "hard")
 MAX_COUNT = 200

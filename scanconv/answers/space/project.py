@@ -24,7 +24,7 @@ from ...algorithms.transform import cos_sin, outline
 from ...core.checks import InputError
 from ...core.ideal import Polyline
 from ...core.numeric import Number, fmt_short
-from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
+from ...core.records import Plot, Quantity, Solution, Table, Walk, heading, worked
 from ..methods import method
 from ..process._shared import json_scalar, matrix_json, text
 from ..process.transform import parse_angle
@@ -115,11 +115,12 @@ def _axonometric(
 
 def isometric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
     work = [
-        Quantity(
+        worked(
             "angles",
             None,
-            "φ = 45° about y; θ about x with sin θ = 1/sqrt(3) = sqrt(3)/3, cos θ = sqrt(6)/3 (θ ≈ 35.26°)",
-            "\\phi = 45^\\circ,\\ \\sin\\theta = \\tfrac{1}{\\sqrt{3}},\\ \\cos\\theta = \\tfrac{\\sqrt{6}}{3}",
+            "\\phi = 45^\\circ \\text{ about y};\\ \\theta \\text{ about x}: \\sin\\theta = "
+            "1/\\sqrt{3} = \\frac{\\sqrt{3}}{3},\\ \\cos\\theta = \\frac{\\sqrt{6}}{3}\\ "
+            "(\\theta \\approx 35.26^\\circ)",
         )
     ]
     return _axonometric("isometric", pj.ISOMETRIC, work, ("45°", "θ"), sense, ())
@@ -134,12 +135,12 @@ def dimetric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
         )
     (cp, sp), (ct, st) = cs = pj.dimetric(f)
     work = [
-        Quantity(
+        worked(
             "angles",
             None,
-            f"f_z = {fmt_short(f)}: sin θ = f_z/sqrt(2) = {text(st)}, cos θ = {text(ct)}; "
-            f"sin φ = f_z/sqrt(2 - f_z²) = {text(sp)}, cos φ = {text(cp)}",
-            f"f_z = {fmt_short(f)}:\\ \\sin\\theta = {text(st, True)},\\ \\sin\\phi = {text(sp, True)}",
+            f"f_z = {fmt_short(f)}:\\ \\sin\\theta = f_z/\\sqrt{{2}} = {text(st, True)},\\ "
+            f"\\cos\\theta = {text(ct, True)};\\ \\sin\\phi = f_z/\\sqrt{{2 - f_z^2}} = "
+            f"{text(sp, True)},\\ \\cos\\phi = {text(cp, True)}",
         )
     ]
     return _axonometric("dimetric", cs, work, ("φ", "θ"), sense, ("ratio",))
@@ -167,21 +168,22 @@ def _oblique(
             raise InputError("the projectors cannot be parallel to the view plane (α = 0)", "angle")
         ratio = simplify(Radical.of(ca) / sa)
         phi = _degrees(a.get("receding"), 45, "receding")
-        how = f"L1 = cot α = cot {fmt_short(alpha)}° = {text(ratio)}"
+        how = f"L_1 = \\cos\\alpha/\\sin\\alpha,\\ \\alpha = {fmt_short(alpha)}^\\circ: L_1 = {text(ratio, True)}"
         reads += ("receding",)
     else:
         phi = _degrees(a.get("angle"), 45, "angle")
         if ratio is None:
             ratio = a.get("ratio") or Fraction(1, 2)
-            how = f"L1 = {text(ratio)}"
+            how = f"L_1 = {text(ratio, True)}"
             reads += ("ratio",)
     c, s = _trig(phi, "angle")
     work = [
-        Quantity(
+        worked(
             "oblique",
             (json_scalar(ratio), json_scalar(c), json_scalar(s)),
-            f"{how}; φ = {fmt_short(phi)}°: cos φ = {text(c)}, sin φ = {text(s)}; x' = x + L1·z·cos φ, y' = y + L1·z·sin φ",
-            f"L_1 = {text(ratio, True)},\\ \\phi = {fmt_short(phi)}^\\circ:\\ x' = x + L_1 z \\cos\\phi,\\ y' = y + L_1 z \\sin\\phi",
+            f"{how};\\ \\phi = {fmt_short(phi)}^\\circ: \\cos\\phi = {text(c, True)},\\ "
+            f"\\sin\\phi = {text(s, True)};\\ x' = x + L_1 z \\cos\\phi,\\ "
+            f"y' = y + L_1 z \\sin\\phi",
         )
     ]
     label = f"{kind} projection onto z = 0 (L1 = {text(ratio)}, φ = {fmt_short(phi)}°)"
@@ -199,11 +201,17 @@ def oblique(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
 
 
 def cavalier(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
-    return _oblique("cavalier", 1, "L1 = 1 (cavalier: α = 45°)", a, used)
+    return _oblique("cavalier", 1, "L_1 = 1\\ \\text{(cavalier: } \\alpha = 45^\\circ)", a, used)
 
 
 def cabinet(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
-    return _oblique("cabinet", Fraction(1, 2), "L1 = 1/2 (cabinet: tan α = 2, α ≈ 63.43°)", a, used)
+    return _oblique(
+        "cabinet",
+        Fraction(1, 2),
+        "L_1 = 1/2\\ \\text{(cabinet: } \\tan\\alpha = 2,\\ \\alpha \\approx 63.43^\\circ)",
+        a,
+        used,
+    )
 
 
 def _turn(axis: str, word: str | None, default: int, what: str, sense: int) -> Factor:
@@ -235,11 +243,11 @@ def _perspective(
         "origin": "x' = x·d/z, y' = y·d/z",
     }[cop]
     work = [
-        Quantity(
+        worked(
             "centre",
             json_scalar(d),
-            f"d = {fmt_short(d)}: centre of projection {centre}; {formula}",
-            f"d = {fmt_short(d)}:\\ {formula.replace('·', ' ')}",
+            f"d = {fmt_short(d)}:\\ \\text{{centre of projection {centre}}};\\ "
+            + formula.replace("·", " \\cdot "),
         )
     ]
     factors = [*turns, Factor("P_per", "P_{per}", pj.perspective(cop, d))]
@@ -336,9 +344,9 @@ def _vp_table(m: Matrix4) -> tuple[Table, list[Any]]:
         for axis, h, vp in vps
     ]
     cols = (
-        Column("axis", "direction", r"\text{direction}", role="label"),
-        Column("image", "M·[d, 0] = (X, Y, Z, W)", r"M [d, 0]^T", role="working"),
-        Column("vp", "vanishing point (X/W, Y/W)", r"\text{vanishing point}"),
+        heading("axis", r"\text{direction}", role="label"),
+        heading("image", r"M \cdot [d, 0]^T", role="working"),
+        heading("vp", r"\text{vanishing point}"),
     )
     data = [None if vp is None else [json_scalar(v) for v in vp[:2]] for _, _, vp in vps]
     return Table("Vanishing points of the principal axes", cols, lambda: rows), data
@@ -372,13 +380,13 @@ def _vertex_table(
     u_name, v_name = "xyz"[uv_index[0]], "xyz"[uv_index[1]]
     rough = irrational(uv)
     cols = [
-        Column("vertex", "vertex", r"\text{vertex}", role="label"),
-        Column("before", "P = (x, y, z)", "P = (x, y, z)", role="given"),
-        Column("h", "M·P = (X, Y, Z, W)", r"M P = (X, Y, Z, W)", role="working"),
-        Column("after", f"P' = ({u_name}', {v_name}')", f"P' = ({u_name}', {v_name}')"),
+        heading("vertex", r"\text{vertex}", role="label"),
+        heading("before", "P = (x, y, z)", role="given"),
+        heading("h", r"M \cdot P = (X, Y, Z, W)", role="working"),
+        heading("after", f"P' = ({u_name}', {v_name}')"),
     ]
     if rough:
-        cols.append(Column("approx", "P' (approx.)", r"P' \text{ (approx.)}"))
+        cols.append(heading("approx", r"P' \text{ (approx.)}"))
 
     def rows() -> list[tuple[str, ...]]:
         return [
@@ -451,11 +459,11 @@ def project_solution(
     if built.foreshortening:
         f2 = pj.foreshortening(m)
         derived.append(
-            Quantity(
+            worked(
                 "foreshortening",
                 [json_scalar(v) for v in f2],
-                "foreshortening f² of the unit x, y, z vectors: " + ", ".join(text(v) for v in f2),
-                "f_x^2, f_y^2, f_z^2 = " + ", ".join(text(v, True) for v in f2),
+                "\\text{foreshortening of the unit x, y, z vectors: } f_x^2, f_y^2, f_z^2 = "
+                + ", ".join(text(v, True) for v in f2),
             )
         )
     knobs = ("vectors", "axes", "sense", *built.knobs)

@@ -29,15 +29,13 @@ from ...algorithms.space_conventions import convention_notes, resolve
 from ...algorithms.transform import cos_sin
 from ...core.checks import InputError
 from ...core.numeric import fmt, fmt_short, parse_number
-from ...core.records import Column, Plot, Quantity, Solution, Table, Walk
+from ...core.records import Plot, Quantity, Solution, Table, Walk, heading, worked
 from ..process._shared import (
     MAX_POINTS,
-    approx_text,
     json_scalar,
     matrix_json,
     matrix_rows,
     matrix_tex,
-    matrix_text,
     text,
 )
 from ..process.transform import MAX_TRANSFORMS, _rounded, _tex_deg, _Words, parse_angle
@@ -108,12 +106,12 @@ def _angle(words: _Words, what: str) -> tuple[Scalar, Scalar, bool, str, Quantit
     else:
         c, s, exact = _rounded(math.cos(rad)), _rounded(math.sin(rad)), False
         name = label
-    how = "" if exact else " (rounded half up to 6 decimals)"
-    trig = Quantity(
+    how = "" if exact else "\\ \\text{(rounded half up to 6 decimals)}"
+    trig = worked(
         "trig",
         (json_scalar(c), json_scalar(s)),
-        f"θ = {label}: cos θ = {text(c)}{approx_text(c)}, sin θ = {text(s)}{approx_text(s)}{how}",
-        f"\\theta = {_tex_deg(label)}: \\cos\\theta = {text(c, True)}, \\sin\\theta = {text(s, True)}",
+        f"\\theta = {_tex_deg(label)}: \\cos\\theta = {text(c, True)}, "
+        f"\\sin\\theta = {text(s, True)}{how}",
     )
     return c, s, exact, name, trig
 
@@ -128,10 +126,10 @@ def _rotate(words: _Words, axis: str, sense: int) -> Stage:
     return Stage(f"rotate by {name} about the {axis} axis{through}", factors, (trig,), exact)
 
 
-def _root_text(square: Scalar, root: Scalar) -> str:
-    """``sqrt(n) = value``, or ``sqrt(n)`` alone where that is its exact text."""
-    first = f"sqrt({text(square)})"
-    return first if text(root) == first else f"{first} = {text(root)}"
+def _root_tex(square: Scalar, root: Scalar) -> str:
+    """``\\sqrt{n} = value`` in TeX, or ``\\sqrt{n}`` alone where that is its exact value."""
+    first = f"\\sqrt{{{text(square, True)}}}"
+    return first if text(root, True) == first else f"{first} = {text(root, True)}"
 
 
 def _rotate_axis(words: _Words, sense: int) -> Stage:
@@ -144,30 +142,30 @@ def _rotate_axis(words: _Words, sense: int) -> Stage:
         raise InputError(f"rotate-axis: {err}", "transforms") from None
     (vx, vy, vz), (a, b, cz) = r.v, r.u
     steps = [
-        Quantity(
+        worked(
             "axis",
             [json_scalar(v) for v in r.u],
-            f"V = P2 - P1 = {point_text(r.v)}, |V| = {_root_text(vx * vx + vy * vy + vz * vz, r.length)}; u = V/|V| = (a, b, c) = {point_text(r.u)}; d = sqrt(b² + c²) = {text(r.d)}",
-            f"V = P_2 - P_1 = {point_text(r.v, True)},\\ |V| = {text(r.length, True)},\\ "
-            f"u = (a, b, c) = {point_text(r.u, True)},\\ d = \\sqrt{{b^2 + c^2}} = {text(r.d, True)}",
+            f"V = P_2 - P_1 = {point_text(r.v, True)},\\ |V| = "
+            f"{_root_tex(vx * vx + vy * vy + vz * vz, r.length)};\\ u = V/|V| = (a, b, c) = "
+            f"{point_text(r.u, True)};\\ d = \\sqrt{{b^2 + c^2}} = {text(r.d, True)}",
         ),
     ]
     if r.d != 0:
         ca, sa = simplify(cz / Radical.of(r.d)), simplify(b / Radical.of(r.d))
         steps.append(
-            Quantity(
+            worked(
                 "alpha",
                 (json_scalar(ca), json_scalar(sa)),
-                f"about x: cos α = c/d = {text(ca)}, sin α = b/d = {text(sa)}",
-                f"\\cos\\alpha = c/d = {text(ca, True)},\\ \\sin\\alpha = b/d = {text(sa, True)}",
+                f"\\text{{about x: }} \\cos\\alpha = c/d = {text(ca, True)},\\ "
+                f"\\sin\\alpha = b/d = {text(sa, True)}",
             )
         )
     steps.append(
-        Quantity(
+        worked(
             "beta",
             (json_scalar(r.d), json_scalar(-a)),
-            f"about y: cos β = d = {text(r.d)}, sin β = -a = {text(-a)}",
-            f"\\cos\\beta = d = {text(r.d, True)},\\ \\sin\\beta = -a = {text(-a, True)}",
+            f"\\text{{about y: }} \\cos\\beta = d = {text(r.d, True)},\\ "
+            f"\\sin\\beta = -a = {text(-a, True)}",
         )
     )
     names = {"Rz(θ)": (f"Rz({name})", f"R_z({_tex_deg(name)})")}
@@ -199,13 +197,12 @@ def _reflect(words: _Words) -> Stage:
         )
     p0 = (-d * a / nn, -d * b / nn, -d * c / nn)
     core = Factor("Ref(n)", "\\mathrm{Ref}(n)", space.reflection_plane((a, b, c)))
-    work = Quantity(
+    work = worked(
         "plane",
         None,
-        f"n = ({fmt_short(a)}, {fmt_short(b)}, {fmt_short(c)}), n·n = {fmt_short(nn)}: Ref(n) = I - 2·n·nᵀ/(n·n); "
-        f"a point of the plane P0 = -D·n/(n·n) = {point_text(p0)}",
-        f"n = ({fmt_short(a)}, {fmt_short(b)}, {fmt_short(c)}),\\ \\mathrm{{Ref}}(n) = I - "
-        f"\\frac{{2 n n^T}}{{n \\cdot n}},\\ P_0 = {point_text(p0, True)}",
+        f"n = ({fmt_short(a)}, {fmt_short(b)}, {fmt_short(c)}),\\ n \\cdot n = {fmt_short(nn)}:\\ "
+        f"\\mathrm{{Ref}}(n) = I - 2 n n^T/(n \\cdot n);\\ \\text{{a point of the plane }} "
+        f"P_0 = -D n/(n \\cdot n) = {point_text(p0, True)}",
     )
     factors = (core,) if d == 0 else (_t(p0, -1), core, _t(p0))
     label = f"reflect about the plane {fmt_short(a)}x + {fmt_short(b)}y + {fmt_short(c)}z + {fmt_short(d)} = 0"
@@ -354,7 +351,6 @@ def stage_matrices(
         mi = space.compose([f.matrix for f in stage.factors])
         mats.append(mi)
         derived.extend(q._replace(key=f"{q.key}{i}") for q in stage.working)
-        names = written.product([f.text for f in stage.factors])
         tex = written.product([f.tex for f in stage.factors]).replace("·", "\\cdot ")
         shown = written.shown(mi)
         if len(stage.factors) > 1:
@@ -362,10 +358,9 @@ def stage_matrices(
                 rows += matrix_rows(f.text, "", written.shown(f.matrix))
         rows += matrix_rows(f"{prefix}{i}", stage.label, shown)
         derived.append(
-            Quantity(
+            worked(
                 f"{prefix}{i}",
                 matrix_json(shown),
-                f"{prefix}{i} = {names} = {matrix_text(shown)}",
                 f"{prefix}_{{{i}}} = {tex} = {matrix_tex(shown)}",
             )
         )
@@ -386,11 +381,10 @@ def composite(
     shown = written.shown(m)
     if always or len(mats) > 1:
         derived.append(
-            Quantity(
+            worked(
                 "M",
                 matrix_json(shown),
-                f"M = {order} = {matrix_text(shown)}",
-                f"M = {order.replace('·', ' ')} = {matrix_tex(shown)}",
+                "M = " + order.replace("·", " \\cdot ") + f" = {matrix_tex(shown)}",
             )
         )
         rows += matrix_rows("M", f"composite {order}", shown)
@@ -398,18 +392,17 @@ def composite(
 
 
 MATRIX_COLUMNS = (
-    Column("matrix", "matrix", r"\text{matrix}", role="label"),
-    Column("work", "transformation", r"\text{transformation}", role="given"),
-    *(Column(f"c{j}", f"col {j}", rf"\text{{col }} {j}") for j in range(1, 5)),
+    heading("matrix", r"\text{matrix}", role="label"),
+    heading("work", r"\text{transformation}", role="given"),
+    *(heading(f"c{j}", rf"\text{{col }} {j}") for j in range(1, 5)),
 )
 
 
 def vertices_given(s: Solid) -> tuple[Quantity, ...]:
     return tuple(
-        Quantity(
+        worked(
             lab,
             [json_scalar(v) for v in p],
-            f"{lab} = {point_text(p)}",
             f"{lab} = {point_text(p, True)}",
         )
         for lab, p in zip(s.labels, s.vertices, strict=True)
@@ -467,17 +460,15 @@ def transform_solution(
     m, order, shown = composite(mats, written, derived, mat_rows)
     after = [space.apply(m, p) for p in s.vertices]
     det = space.determinant(m)
-    derived.append(
-        Quantity("det", json_scalar(det), f"det M = {text(det)}", f"\\det M = {text(det, True)}")
-    )
+    derived.append(worked("det", json_scalar(det), f"\\det M = {text(det, True)}"))
     rough = irrational(after)
     cols = [
-        Column("vertex", "vertex", r"\text{vertex}", role="label"),
-        Column("before", "P = (x, y, z)", "P = (x, y, z)", role="given"),
-        Column("after", "P' = (x', y', z')", "P' = (x', y', z')"),
+        heading("vertex", r"\text{vertex}", role="label"),
+        heading("before", "P = (x, y, z)", role="given"),
+        heading("after", "P' = (x', y', z')"),
     ]
     if rough:
-        cols.append(Column("approx", "P' (approx.)", r"P' \text{ (approx.)}"))
+        cols.append(heading("approx", r"P' \text{ (approx.)}"))
 
     def vertex_rows() -> list[tuple[str, ...]]:
         return [
