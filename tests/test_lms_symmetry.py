@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 from fractions import Fraction
 
 import pytest
-from scanconv.render.sheet import sheet_document
+from scanconv.render.documents.sheet import sheet_document
 
 from scanconv.cli.sheet import answer_questions, read_questions
 from scanconv.questions.files import QuestionError

@@ -15,7 +15,7 @@ import re
 import pytest
 
 from scanconv.core.records import Column
-from scanconv.render import latex
+from scanconv.render.mappings import latex
 
 from .external import overfull, typeset
 from .helpers import run
