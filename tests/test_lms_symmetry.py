@@ -15,10 +15,10 @@ import xml.etree.ElementTree as ET
 from fractions import Fraction
 
 import pytest
-from scanconv.render.documents.sheet import sheet_document
 
 from scanconv.cli.sheet import answer_questions, read_questions
 from scanconv.questions.files import QuestionError
+from scanconv.render.documents.sheet import sheet_document
 
 from .helpers import assert_refused, run
 from .test_quiz_hides_answers import CLOZE, gift_leaks, moodle_leaks, plain

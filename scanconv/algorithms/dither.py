@@ -49,12 +49,12 @@ MAX_ORDER = 16
 MAX_CELLS = 4096
 """The largest image dithered in a step table (64 x 64 pixels)."""
 
-DITHER_KNOBS: dict[str, tuple[str, ...]] = {
-    "compare": (">", ">="),
-    "scale": ("raw", "centered", "given"),
-    "base": ("0", "1"),
-    "count": ("0", "1"),
-    "kernel": (
+DITHER_KNOBS: dict[str, tuple[str, ...]] = dict(  # knob names (one, arithmetic, is also a method's)
+    compare=(">", ">="),
+    scale=("raw", "centered", "given"),
+    base=("0", "1"),
+    count=("0", "1"),
+    kernel=(
         "floyd-steinberg",
         "simple",
         "jarvis-judice-ninke",
@@ -65,10 +65,10 @@ DITHER_KNOBS: dict[str, tuple[str, ...]] = {
         "sierra-lite",
         "one-dimensional",
     ),
-    "order": ("raster", "serpentine"),
-    "arithmetic": ("exact", "integer"),
-    "carry": ("kept", "clamped"),
-}
+    order=("raster", "serpentine"),
+    arithmetic=("exact", "integer"),
+    carry=("kept", "clamped"),
+)
 """Each named convention and its values, the default first."""
 
 

@@ -256,13 +256,18 @@ _PROCESS = (
            _G + "seedfill:seed_fill"),
     _plain("fill", "flood", "flood fill", "scanconv.answers.process.fill.seed:flood_answer", _G + "seedfill:seed_fill"),
     _plain("antialias", "area", "area sampling", "scanconv.answers.process.antialias.sampling:area_answer",
-           _G + "coverage:area_coverage"),
+           _G + "coverage:area_coverage")._replace(facts=(
+        ("practice", "anti-aliased by {title} (the line one pixel thick)"),
+        ("asks", "the intensity of each pixel the line covers"))),
     _plain("antialias", "supersample", "supersampling", "scanconv.answers.process.antialias.sampling:supersample_answer",
            _G + "coverage:supersample_coverage"),
     _plain("antialias", "wu", "Xiaolin Wu's anti-aliased line", "scanconv.answers.process.antialias.sampling:wu_answer",
-           _G + "wu:wu", raster="scanconv.raster:line_aa"),
+           _G + "wu:wu", raster="scanconv.raster:line_aa")._replace(facts=(
+        ("practice", "with {title} algorithm"), ("asks", "each column's two pixels and their intensities"))),
     _plain("antialias", "subpixel", "supersampling on a sub-pixel grid (Hearn & Baker)",
-           "scanconv.answers.process.antialias.sampling:subpixel_answer", _G + "subpixel:walk"),
+           "scanconv.answers.process.antialias.sampling:subpixel_answer", _G + "subpixel:walk")._replace(facts=(
+        ("practice", "anti-aliased by supersampling on a 3 x 3 sub-pixel grid (Hearn & Baker)"),
+        ("asks", "the sub-pixel decision table and each pixel's count and intensity"))),
     _plain("clip", "cohen-sutherland", "Cohen-Sutherland line clipping",
            _CLIP + "rectangle:cohen_sutherland_answer", _G + "clipping:cohen_sutherland")._replace(
         short="Cohen-Sutherland", stage=_CLIP + "rectangle:cohen_sutherland_clipped"),
@@ -336,8 +341,9 @@ _PRINTER = (
 
 _INSIDE = tuple(
     _plain("inside", rule_name, f"inside-outside test ({title})", "scanconv.answers.process.fill.inside:inside_solution",
-           _G + "inside:edge_tests", model="inside")
-    for rule_name, title in (("even-odd", "even-odd rule"), ("nonzero", "nonzero winding rule"))
+           _G + "inside:edge_tests", model="inside")._replace(facts=(("practice", wording),))
+    for rule_name, title, wording in (("even-odd", "even-odd rule", "the odd-even rule"),
+                                      ("nonzero", "nonzero winding rule", "the nonzero winding rule"))
 )  # fmt: skip
 
 _FRAMEBUFFER = (
@@ -352,10 +358,12 @@ _ATTRIBUTES = (
            model="line_style", answered_as=("line", "style")),
     _plain("thickline", "replication", "thick line by pixel replication",
            "scanconv.answers.primitives.attributes:thick_line_solution", _G + "attributes:thick",
-           model="thick_line", answered_as=("line", "replication")),
+           model="thick_line", answered_as=("line", "replication"))._replace(
+        facts=(("practice", "pixel replication"),)),
     _plain("thickline", "brush", "thick line by a rectangular brush",
            "scanconv.answers.primitives.attributes:thick_line_solution", _G + "attributes:thick",
-           model="thick_line", answered_as=("line", "brush")),
+           model="thick_line", answered_as=("line", "brush"))._replace(
+        facts=(("practice", "a {width} x {width} square brush"), ("words", "--brush"))),
 )  # fmt: skip
 
 _CHARACTERS = (

@@ -86,7 +86,10 @@ class Method(NamedTuple):
     method's ``tag`` gives compare line's reason tags, ``SDDA off``/``SDDA repeats``); a
     DDA-family line's (its answer ``line:dda_answer``) ``heading`` (the answer's title) and
     ``steps`` (the TeX of its number of steps, of ``{adx}``, ``{ady}``, ``{longest}``, ``{n}``
-    and ``{steps}``; the simple DDA's ``max(|Δx|, |Δy|)`` without one)."""
+    and ``{steps}``; the simple DDA's ``max(|Δx|, |Δy|)`` without one); and where a practice
+    topic words its questions from the record (antialias, inside, thickline), ``practice`` (the
+    method as the question names it), ``asks`` (what the question asks for) and ``words`` (the
+    command-line words that choose it)."""
 
     spec: str | None = None
     """A command's own record of the method (``module:attribute``), where its answer reads

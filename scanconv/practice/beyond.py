@@ -143,8 +143,11 @@ def inside(rng: random.Random, difficulty: str, kind: int | str) -> PracticeQues
     count = {"easy": 1, "exam": 2, "hard": 3}[difficulty]
     points = [str(rng.randrange(0, 9)) for _ in range(2 * count)]
     rule = "both" if difficulty != "easy" else rng.choice(("even-odd", "nonzero"))
-    name = {"both": "the odd-even and the nonzero winding rules", "even-odd": "the odd-even rule",
-            "nonzero": "the nonzero winding rule"}[rule]  # fmt: skip
+    name = (  # each rule's record words it
+        "the odd-even and the nonzero winding rules"
+        if rule == "both"
+        else method("inside", rule).fact("practice")
+    )
     pairs = ", ".join(f"({points[i]}, {points[i + 1]})" for i in range(0, len(points), 2))
     return PracticeQuestion(
         "inside",
@@ -312,23 +315,15 @@ def attributes(rng: random.Random, difficulty: str, kind: str) -> PracticeQuesti
             frozenset({kind}),
         )
     width = rng.choice((3, 5)) if difficulty != "easy" else 3
-    brush = kind == "brush"
-    how = f"a {width} x {width} square brush" if brush else "pixel replication"
+    thick = method("thickline", kind)  # its record words the question and names its flag
+    how = thick.fact("practice").format(width=width)
     return PracticeQuestion(
         "attributes",
-        ("thickline", *ends, "--width", str(width), *(("--brush",) if brush else ())),
+        ("thickline", *ends, "--width", str(width), *thick.fact("words").split()),
         f"Draw {line} {width} pixels thick by {how}: give the pixels each step adds.",
         6,
         frozenset({kind}),
     )
-
-
-_AA_ASK = {
-    "wu": "each column's two pixels and their intensities",
-    "wu-coverage": "each column's two pixels and their intensities",
-    "area": "the intensity of each pixel the line covers",
-    "subpixel": "the sub-pixel decision table and each pixel's count and intensity",
-}
 
 
 def antialias(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestion:
@@ -340,18 +335,14 @@ def antialias(rng: random.Random, difficulty: str, kind: str) -> PracticeQuestio
     name = "wu" if kind == "wu-coverage" else kind
     argv: tuple[str, ...] = ("antialias", "line", str(x1), str(y1), str(x2), str(y2))
     argv += ("--method", name, *(("--ends", "coverage") if kind == "wu-coverage" else ()))
-    title = method("antialias", name).title
-    how = {
-        "wu": f"with {title} algorithm",
-        "wu-coverage": f"with {title} algorithm, the end points weighted by the part of their "
-        "column the line covers",
-        "area": f"anti-aliased by {title} (the line one pixel thick)",
-        "subpixel": "anti-aliased by " + title.replace("a sub-pixel", "a 3 x 3 sub-pixel"),
-    }[kind]
+    record = method("antialias", name)  # its record words the question
+    how = record.fact("practice").format(title=record.title)
+    if kind == "wu-coverage":
+        how += ", the end points weighted by the part of their column the line covers"
     return PracticeQuestion(
         "antialias",
         argv,
-        f"Draw the line from ({x1}, {y1}) to ({x2}, {y2}) {how}: give {_AA_ASK[kind]}.",
+        f"Draw the line from ({x1}, {y1}) to ({x2}, {y2}) {how}: give {record.fact('asks')}.",
         8 if difficulty == "easy" else 10,
         frozenset({kind, *(("steep",) if y2 - y1 > x2 - x1 else ())}),
     )

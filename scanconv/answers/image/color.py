@@ -175,7 +175,9 @@ def color_solution(
         rgb = tuple(min(1, max(0, v)) if isinstance(v, float) else v for v in rgb)
         levels = _rgb_levels(w, rgb, top)
     rows: list[tuple[str, str, str]] = [(RGB.label, _triple(rgb), _triple(rgb, True))]
-    data: dict[str, object] = {"model": model, "targets": want, "scale": scale, "rgb": list(rgb)}
+    data: dict[str, object] = dict(
+        model=model, targets=want, scale=scale, rgb=list(rgb)
+    )  # JSON keys
     for target, name in zip(targets_, want, strict=True):
         if target not in (RGB, source):
             out = target.convert(w, cast(Rgb, rgb))

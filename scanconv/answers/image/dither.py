@@ -179,7 +179,7 @@ def threshold_solution(
         lambda: d.threshold(img, t, compare),
         ("value", "threshold", "output"),
         2,
-        {"threshold": t, "compare": compare},
+        dict(threshold=t, compare=compare),  # JSON keys
     )
 
 
@@ -471,13 +471,7 @@ def diffusion_solution(
         steps,
         ("received", "value", "output", "error", "carries"),
         2,
-        {
-            "kernel": kernel,
-            "order": order,
-            "arithmetic": arithmetic,
-            "carry": carry,
-            "compare": compare,
-        },
+        dict(kernel=kernel, order=order, arithmetic=arithmetic, carry=carry, compare=compare),
     )
 
 
