@@ -8,6 +8,8 @@ one direction only)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from ..core.declare import declared
 from .grammar import Param, Spec, param_of, spec_of, values
 from .outputs import outputs
@@ -37,16 +39,20 @@ def specs() -> dict[tuple[str, ...], Spec]:
 def _enums(path: tuple[str, ...]) -> dict[str, str]:
     """A declared command's parameters that the library types by an enum: ``name`` to the
     enum as ``"module:Class"`` (the table reads their choices from it, :func:`values`)."""
-    from enum import Enum
-
-    from ..core.declare import declared
     from .declared import COMMANDS
 
     if path not in COMMANDS:
         return {}
+    return _enum_names(COMMANDS[path].declaration())
+
+
+def _enum_names(fn: Callable[..., object]) -> dict[str, str]:
+    """``fn``'s parameters typed by an enum: ``name`` to the enum as ``"module:Class"``."""
+    from enum import Enum
+
     return {
         d.name: f"{d.choices.__module__}:{d.choices.__qualname__}"
-        for d in declared(COMMANDS[path].declaration())
+        for d in declared(fn)
         if isinstance(d.choices, type) and issubclass(d.choices, Enum)
     }
 
@@ -67,6 +73,7 @@ def module_text() -> str:
     from .declared import NOT_QUESTIONS, OUTPUTS
 
     common = shared()
+    shared_enums = _enum_names(outputs)  # --format: render.Format, read when the table loads
     lines = [
         '"""The grammar of every question command: generated from the library\'s declarations',
         'by ``python -m scanconv.questions.generate`` (do not edit: a test compares)."""',
@@ -83,7 +90,10 @@ def module_text() -> str:
         "",
         "# fmt: off",
         "S = {",
-        *(f"    {name!r}: {_param_source(p)}," for name, p in common.items()),
+        *(
+            f"    {name!r}: {_param_source(p, shared_enums.get(name))},"
+            for name, p in common.items()
+        ),
         "}",
         '"""The shared output options, as most commands take them."""',
         "",

@@ -11,7 +11,7 @@ SHARED = ("fmt", "grid", "origin", "output", "brief", "exact", "explain", "svg",
 
 # fmt: off
 S = {
-    'fmt': Param('fmt', ('--format', '-f'), 'choice', default='auto', choices=('auto', 'rich', 'markdown', 'latex', 'csv', 'json', 'plain', 'html'), help='Output format. auto: rich on a terminal, markdown otherwise.'),
+    'fmt': Param('fmt', ('--format', '-f'), 'choice', default='auto', choices=values('scanconv.render:Format'), help='Output format. auto: rich on a terminal, markdown otherwise.'),
     'grid': Param('grid', ('--grid',), 'flag', default=True, secondary=('--no-grid',), help='Draw the text pixel grid.'),
     'origin': Param('origin', ('--origin',), 'choice', default='bottom-left', choices=('bottom-left', 'top-left'), help='Grid orientation: bottom-left (y up, as in the notes) or top-left (screen, y down).'),
     'output': Param('output', ('--output', '-o'), 'text', help='Write to this file (atomically: complete or not at all) instead of stdout.'),
