@@ -1014,8 +1014,11 @@ FACE_UP = ("0", "0", "1", "0", "1", "1", "1", "0", "1")
 ZA = ("0", "0", "1", "3", "0", "1", "0", "3", "1")
 ZB = ("0", "0", "2", "2", "0", "2", "0", "2", "2")
 VOCABULARY[("3d", "backface")] = Vocab(
-    valid=(("--solid", "cube"), (*FACE, ":", *FACE_UP, "--direction", "to-viewer")),
-    numbers=((), (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18)),
+    valid=(
+        ("--solid", "cube", "--view", "0", "0", "-1"),
+        (*FACE, ":", *FACE_UP, "--direction", "to-viewer"),
+    ),
+    numbers=((3, 4, 5), (0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18)),
     out_of_range=(
         (("0", "0", "0", "1", "0", "0", "1e10", "1", "0"), "out of range"),
         (tuple(w for _ in range(25) for w in (*FACE, ":")), "at most 24"),

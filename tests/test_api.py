@@ -442,6 +442,27 @@ CASES += [
 ]
 
 
+def _polygons(text: str) -> list[int | str]:
+    """``x y z ... : x y z ...`` as the API takes it: the numbers, and ``":"`` between."""
+    return [w if w == ":" else int(w) for w in text.split()]
+
+
+# Visible surfaces (scanconv 3d): the polygons' numbers and ':' as the API takes them.
+_TWO = "0 0 2 5 0 2 0 5 2 : 1 1 4 5 1 0 1 5 0"
+CASES += [
+    (("3d", "backface"), ("--solid", "pyramid"), "visible_backface", (), {"solid": "pyramid"}),
+    *(
+        (("3d", command), (*_TWO.split(), "--size", size), name, (_polygons(_TWO),), {"size": size})
+        for command, name, size in (
+            ("zbuffer", "visible_zbuffer", "5"),
+            ("scanline", "visible_scanline", "5"),
+            ("depth-sort", "visible_depth_sort", "6"),
+            ("warnock", "visible_warnock", "8"),
+        )
+    ),
+]
+
+
 def _json(solution: Any) -> str:
     chunks = render(solution, Format.json, Options())
     return "".join(c for c in chunks if isinstance(c, str))

@@ -258,17 +258,24 @@ def test_latex_fits_the_page_width(tmp_path: Path, name: str) -> None:
     typeset_each(tmp_path, PREAMBLE, _latex(name), _every(), _fits_within(1), passes=2)
 
 
-def test_latex_wide_short_table_is_set_whole_never_in_parts(tmp_path: Path) -> None:
-    """The circle's 9-column symmetry table is one table (scaled to the text width),
-    not parts of its columns; it fits the page."""
+def test_latex_wide_short_table_is_never_scaled_down_but_set_in_parts(tmp_path: Path) -> None:
+    """The circle's 9-column symmetry table is never shrunk below 7 pt (no ``\\resizebox``):
+    it is set in parts of its columns, each repeating the octant's (x, y) and every row; it
+    fits the page."""
     from scanconv.answers.primitives.circle import circle_solution
 
     (table,) = circle_solution("midpoint", 10).tables
     out = _answer("circle", "10")
-    assert ", part 1 of" not in out
-    whole = out.split("8-way symmetry about the centre (0, 0)")[1].split("\\end{tabular}")[0]
-    assert "\\resizebox{\\linewidth}" in whole
-    assert whole.count("\\\\\n") == 1 + sum(1 for _ in table.rows())  # heading and rows
+    assert "\\resizebox" not in out and "\\tiny" not in out
+    parts = out.split("8-way symmetry about the centre (0, 0), part ")[1:]
+    assert len(parts) == 2 and parts[0].startswith("1 of 2") and parts[1].startswith("2 of 2")
+    heads = []
+    for part in parts:
+        body = part.split("\\end{tabular}")[0]
+        assert body.count("\\\\\n") == 1 + sum(1 for _ in table.rows())  # heading and rows
+        heads += body.split("\\midrule")[0].split("\\toprule")[1].split("&")
+    cells = [h.strip().rstrip("\\").strip() for h in heads]
+    assert cells.count("$(x, y)$") == 2 and len(set(cells)) == len(table.columns)
     typeset_each(tmp_path, PREAMBLE, out, _every(), _fits_within(1), passes=2)
 
 

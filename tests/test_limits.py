@@ -88,6 +88,8 @@ POINTS_101 = [str(i % 7) for i in range(202)]
 POINTS_12 = [str(i % 5) for i in range(24)]
 
 #: For each limit: command lines just beyond it, with a word the one-line refusal must contain.
+_FACE = "0 0 0 1 0 0 0 1 0"
+_TRIANGLE = "0 0 1 3 0 1 0 3 1"
 BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "answers.image.color.MAX_BITS": [(["color", "rgb", "1", "2", "3", "--bits", "17"], "1..16")],
     "practice.notes.MAX_COUNT": [(["practice", "--count", "201", "--seed", "1"], "200")],
@@ -268,6 +270,24 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     # the 3D chapter: an axis's square roots exact, and few enough of them
     "algorithms.radical.MAX_ROOT": [
         ("3d transform 0 0 0 --rotate-axis 0 0 0 1000000 1000000 1 30".split(), "past 10"),
+    ],
+    "algorithms.visible.MAX_FACES": [
+        (["3d", "backface", *" : ".join([_FACE] * 25).split()], "25 faces; at most 24"),
+    ],
+    "algorithms.visible.MAX_VERTICES": [
+        (
+            ["3d", "backface", *(str(c) for i in range(17) for c in (i, i * i, 0))],
+            "17 vertices; at most 16",
+        ),
+    ],
+    "algorithms.visible_zbuffer.MAX_POLYGONS": [
+        (["3d", "zbuffer", *" : ".join([_TRIANGLE] * 9).split()], "9 polygons; at most 8"),
+    ],
+    "algorithms.visible_zbuffer.MAX_SIDE": [
+        (["3d", "zbuffer", *_TRIANGLE.split(), "--size", "33"], "1 to 32 pixels"),
+    ],
+    "answers.visible.zbuffer.MAX_XY": [
+        (["3d", "zbuffer", "0", "0", "1", "65", "0", "1", "0", "3", "1"], "at most 64"),
     ],
     "answers.space.transform.MAX_ROOT_PRIMES": [
         (

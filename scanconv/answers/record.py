@@ -124,6 +124,7 @@ class Method(NamedTuple):
     def load(self, piece: str) -> Any:
         """The object a piece names, imported now; :class:`InputError` if the method has none.
 
+        >>> from scanconv.answers.methods import method
         >>> method("line", "bresenham").load("generator").__name__
         'bresenham'
         """
