@@ -27,7 +27,7 @@ from ...core.numeric import Number, fmt_short
 from ...core.records import Plot, Quantity, Solution, Table, Walk, heading, worked
 from ..methods import method
 from ..process._shared import json_scalar, matrix_json, text
-from ..process.transform import parse_angle
+from ..process.transform import _tex_deg, parse_angle
 from .transform import (
     MATRIX_COLUMNS,
     Factor,
@@ -66,8 +66,13 @@ def _degrees(word: str | None, default: int, what: str) -> Fraction:
     return deg
 
 
+_GREEK_TEX = {"θ": "\\theta", "φ": "\\phi"}
+"""The angles' names as TeX (the Unicode name is the plain text's)."""
+
+
 def _rot(axis: str, c: Scalar, s: Scalar, name: str, sense: int) -> Factor:
-    return Factor(f"R{axis}({name})", f"R_{axis}({name})", space.rotation(axis, c, sense * s))
+    tex = _GREEK_TEX.get(name) or _tex_deg(name)
+    return Factor(f"R{axis}({name})", f"R_{axis}({tex})", space.rotation(axis, c, sense * s))
 
 
 class Built(NamedTuple):
