@@ -224,15 +224,44 @@ def wrap_spec(columns: Sequence[Column], rows: Sequence[list[str]]) -> str | Non
         if not w
     )
     room = 0.95 * TEXT_WIDTH - fixed - 6 * sum(wrap)  # 5% to spare: the estimate is rough
-    total = sum(n for n, w in zip(longest, wrap, strict=True) if w)
     if room < 60 * sum(wrap):
         return None
+    widths = _shared_room(room, columns, rows, longest, wrap)
+    if widths is None:
+        return None
     return "".join(
-        f">{{\\raggedright\\arraybackslash}}p{{{room * n / total:.1f}pt}}"
+        f">{{\\raggedright\\arraybackslash}}p{{{widths[i]:.1f}pt}}"
         if w
         else ("r" if all(math_cell(r[i]) or r[i] == "-" for r in rows) else "l")
-        for i, (n, w) in enumerate(zip(longest, wrap, strict=True))
+        for i, w in enumerate(wrap)
     )
+
+
+def _shared_room(
+    room: float,
+    columns: Sequence[Column],
+    rows: Sequence[list[str]],
+    longest: list[int],
+    wrap: list[bool],
+) -> dict[int, float] | None:
+    """The wrapping columns' widths: ``room`` shared in proportion to their longest text, but
+    never narrower than the column's heading or longest word (the depth sort's "outcome"
+    column ran past its share); ``None`` if those alone do not fit."""
+    total = sum(n for n, w in zip(longest, wrap, strict=True) if w)
+    share = {i: room * longest[i] / total for i, w in enumerate(wrap) if w}
+    least = {
+        i: 5.0
+        * max([heading_chars(columns[i])] + [len(word) for r in rows for word in r[i].split()])
+        for i in share
+    }
+    short = {i for i in share if share[i] < least[i]}
+    if not short:
+        return share
+    left = room - sum(least[i] for i in short)
+    rest = sum(longest[i] for i in share if i not in short)
+    if left <= 0 or not rest:
+        return None
+    return {i: least[i] if i in short else left * longest[i] / rest for i in share}
 
 
 def _tabular(
@@ -352,8 +381,17 @@ def tex_command(command: str) -> str:
 def _given(block: Given, options: Options, doc: Document) -> Iterator[str]:
     """The given values in one paragraph; the words of a value (``\\text{shape: ...}``) are
     set as text, so the line can break inside them (a box of math cannot)."""
-    items = (breakable_math(q.tex) for q in block.quantities)
-    yield "\\paragraph{Given} " + ", ".join(items) + "\n\n"
+    items = ", ".join(breakable_math(q.tex) for q in block.quantities)
+    if len(items) > RAGGED_GIVEN:  # many lines of boxed points: too few spaces to justify
+        yield "{\\raggedright\\paragraph{Given} " + items + "\\par}\n\n"
+        return
+    yield "\\paragraph{Given} " + items + "\n\n"
+
+
+RAGGED_GIVEN = 480
+"""A given paragraph longer than this (in characters of its LaTeX: about three lines) is set
+ragged right: a line of points in math has no space to stretch (``3d backface --solid cube``'s
+six faces ran 3.5 pt past the margin)."""
 
 
 def _working(block: Working, options: Options, doc: Document) -> Iterator[str]:
