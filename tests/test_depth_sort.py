@@ -4,8 +4,6 @@ brute force written here."""
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -13,7 +11,7 @@ from hypothesis import strategies as st
 from scanconv import visible_depth_sort
 
 from .helpers import run
-from .test_zbuffer import _depth, _inside
+from .visible_oracle import as_words, covering
 
 
 def _words(*polys: tuple[int, ...]) -> list[object]:
@@ -75,32 +73,21 @@ triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
 def test_the_painted_frame_is_the_brute_force_nearest(
     triangles: list[tuple[tuple[int, int, int], ...]], nearer: str
 ) -> None:
-    def area(t: tuple[tuple[int, int, int], ...]) -> int:
-        (x1, y1, _), (x2, y2, _), (x3, y3, _) = t
-        return (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
-
-    triangles = [t for t in triangles if area(t) != 0]
+    triangles, flat = as_words(triangles)
     if not triangles:
         return
-    flat: list[object] = []
-    for t in triangles:
-        flat += [":", *[c for p in t for c in p]]
     sol = visible_depth_sort(flat, size="6x5", depth=nearer)
     if sol.data["cycle"]:
         return  # a cyclic overlap needs splitting: nothing to compare
     frame = sol.data["frame"]
     for y in range(5):
         for x in range(6):
-            covering = [
-                (i, _depth(list(t), x, y))
-                for i, t in enumerate(triangles)
-                if _inside([(Fraction(p[0]), Fraction(p[1])) for p in t], x, y)
-            ]
-            if not covering:
+            cover = covering(triangles, x, y)
+            if not cover:
                 assert f"{x},{y}" not in frame
                 continue
-            zs = sorted({z for _, z in covering}, reverse=nearer == "larger-nearer")
-            nearest = [i for i, z in covering if z == zs[0]]
+            zs = sorted({z for _, z in cover}, reverse=nearer == "larger-nearer")
+            nearest = [i for i, z in cover if z == zs[0]]
             if len(nearest) == 1:  # equal depths: the painting order decides, any is right
                 assert frame[f"{x},{y}"] == "ABCD"[nearest[0]], (x, y)
 

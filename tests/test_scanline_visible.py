@@ -4,8 +4,6 @@ pixels against a per-pixel brute force written here."""
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -13,7 +11,8 @@ from hypothesis import strategies as st
 from scanconv import visible_scanline
 
 from .helpers import run
-from .test_zbuffer import EXAMPLE, FRAME, _depth, _frame, _inside
+from .test_zbuffer import EXAMPLE, FRAME, _frame
+from .visible_oracle import as_words, nearest
 
 # Worked by hand: A, the triangle (0, 0), (4, 0), (0, 4) at z = 1; B, the triangle (1, 0),
 # (4, 0), (4, 3) at z = 2. On scan line y = 1 the active edges are A's x = 0 and x = 3 (the
@@ -71,27 +70,14 @@ triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
 def test_the_frame_is_the_brute_force_nearest_at_each_pixel(
     triangles: list[tuple[tuple[int, int, int], ...]], nearer: str, ties: str
 ) -> None:
-    def area(t: tuple[tuple[int, int, int], ...]) -> int:
-        (x1, y1, _), (x2, y2, _), (x3, y3, _) = t
-        return (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
-
-    triangles = [t for t in triangles if area(t) != 0]
+    triangles, flat = as_words(triangles)
     if not triangles:
         return
-    flat: list[object] = []
-    for t in triangles:
-        flat += [":", *[c for p in t for c in p]]
     frame = visible_scanline(flat, size="6x5", depth=nearer, ties=ties).data["frame"]
+    brute = nearest(triangles, 6, 5, nearer, ties)
     for y in range(5):
         for x in range(6):
-            best: tuple[int, Fraction] | None = None
-            for i, t in enumerate(triangles):
-                if not _inside([(Fraction(p[0]), Fraction(p[1])) for p in t], x, y):
-                    continue
-                z = _depth(list(t), x, y)
-                closer = best is None or (z > best[1] if nearer == "larger-nearer" else z < best[1])
-                if closer or (best is not None and z == best[1] and ties == "replace"):
-                    best = (i, z)
+            best = brute.get((x, y))
             assert frame.get(f"{x},{y}") == (None if best is None else "ABCD"[best[0]]), (x, y)
 
 

@@ -4,8 +4,6 @@ force written here."""
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -13,7 +11,7 @@ from hypothesis import strategies as st
 from scanconv import visible_warnock
 
 from .helpers import run
-from .test_zbuffer import _depth, _inside
+from .visible_oracle import as_words, nearest
 
 # Worked by hand: A, the triangle (0, 0), (6, 0), (0, 6) at z = 1, and B, the triangle (2, 2),
 # (7, 2), (2, 7) at z = 3, on an 8 x 8 grid (a window is its pixels' squares: W runs from
@@ -60,25 +58,6 @@ def test_the_hand_worked_windows() -> None:
     assert [k for k in windows if len(k) > 4] == []  # nothing below single pixels
 
 
-def _brute(
-    triangles: list[tuple[tuple[int, int, int], ...]], side: int, nearer: str, ties: str
-) -> dict[str, str]:
-    out = {}
-    for y in range(side):
-        for x in range(side):
-            best: tuple[int, Fraction] | None = None
-            for i, t in enumerate(triangles):
-                if not _inside([(Fraction(p[0]), Fraction(p[1])) for p in t], x, y):
-                    continue
-                z = _depth(list(t), x, y)
-                closer = best is None or (z > best[1] if nearer == "larger-nearer" else z < best[1])
-                if closer or (best is not None and z == best[1] and ties == "replace"):
-                    best = (i, z)
-            if best is not None:
-                out[f"{x},{y}"] = "ABCD"[best[0]]
-    return out
-
-
 coord = st.integers(-2, 9)
 depth = st.integers(-4, 4)
 triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
@@ -94,18 +73,12 @@ triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
 def test_the_final_pixels_are_the_brute_force_nearest(
     triangles: list[tuple[tuple[int, int, int], ...]], nearer: str, ties: str
 ) -> None:
-    def area(t: tuple[tuple[int, int, int], ...]) -> int:
-        (x1, y1, _), (x2, y2, _), (x3, y3, _) = t
-        return (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
-
-    triangles = [t for t in triangles if area(t) != 0]
+    triangles, flat = as_words(triangles)
     if not triangles:
         return
-    flat: list[object] = []
-    for t in triangles:
-        flat += [":", *[c for p in t for c in p]]
     sol = visible_warnock(flat, size="8", depth=nearer, ties=ties)
-    assert sol.data["frame"] == _brute(triangles, 8, nearer, ties)
+    brute = nearest(triangles, 8, 8, nearer, ties)
+    assert sol.data["frame"] == {f"{x},{y}": "ABCD"[i] for (x, y), (i, _) in brute.items()}
 
 
 @pytest.mark.parametrize(

@@ -4,8 +4,6 @@ hand-worked example and a per-pixel brute-force depth comparison written here.""
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -13,6 +11,7 @@ from hypothesis import strategies as st
 from scanconv import visible_zbuffer
 
 from .helpers import run
+from .visible_oracle import as_words, nearest
 
 # Worked by hand with Hearn & Baker's formulas (C version, 2nd ed., section 13-3:
 # z = (-Ax - By - D)/C, z' = z - A/C along a scan line, z' = z + (A/m + B)/C down an edge).
@@ -80,26 +79,6 @@ def test_the_increments_are_the_plane_s() -> None:
     assert "+ 1" in rows[1][4]
 
 
-def _inside(poly: list[tuple[Fraction, Fraction]], x: int, y: int) -> bool:
-    """The half-open rule written out: edges with one end at or below y and the other above,
-    crossing at x_e <= x, counted; odd is inside."""
-    count = 0
-    for (xa, ya), (xb, yb) in zip(poly, poly[1:] + poly[:1], strict=True):
-        if (ya <= y) != (yb <= y):
-            xe = xa + (y - ya) * (xb - xa) / (yb - ya)
-            count += xe <= x
-    return count % 2 == 1
-
-
-def _depth(tri: list[tuple[int, int, int]], x: int, y: int) -> Fraction:
-    """z on the plane through the triangle, by Cramer's rule on barycentric weights."""
-    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = tri
-    det = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
-    s = Fraction((x - x1) * (y3 - y1) - (x3 - x1) * (y - y1), det)
-    t = Fraction((x2 - x1) * (y - y1) - (x - x1) * (y2 - y1), det)
-    return z1 + s * (z2 - z1) + t * (z3 - z1)
-
-
 coord = st.integers(-2, 7)
 depth = st.integers(-5, 5)
 triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
@@ -115,36 +94,20 @@ triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
 def test_the_frame_is_the_brute_force_nearest_at_each_pixel(
     triangles: list[tuple[tuple[int, int, int], ...]], nearer: str, ties: str
 ) -> None:
-    def area(t: tuple[tuple[int, int, int], ...]) -> int:
-        (x1, y1, _), (x2, y2, _), (x3, y3, _) = t
-        return (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
-
-    triangles = [t for t in triangles if area(t) != 0]
+    triangles, flat = as_words(triangles)
     if not triangles:
         return
-    flat: list[object] = []
-    for t in triangles:
-        flat += [":", *[c for p in t for c in p]]
     sol = visible_zbuffer(flat, size="6x5", depth=nearer, ties=ties)
+    brute = nearest(triangles, 6, 5, nearer, ties)
     for y in range(5):
         for x in range(6):
-            best: tuple[int, Fraction] | None = None
-            for i, t in enumerate(triangles):
-                if not _inside([(Fraction(p[0]), Fraction(p[1])) for p in t], x, y):
-                    continue
-                z = _depth(list(t), x, y)
-                if best is None:
-                    best = (i, z)
-                    continue
-                closer = z > best[1] if nearer == "larger-nearer" else z < best[1]
-                if closer or (z == best[1] and ties == "replace"):
-                    best = (i, z)
             key = f"{x},{y}"
-            if best is None:
+            if (x, y) not in brute:
                 assert key not in sol.data["frame"]
             else:
-                assert sol.data["frame"][key] == "ABCD"[best[0]], (x, y)
-                assert sol.data["depth"][key] == best[1]
+                i, z = brute[(x, y)]
+                assert sol.data["frame"][key] == "ABCD"[i], (x, y)
+                assert sol.data["depth"][key] == z
 
 
 def test_the_far_value_keeps_what_is_behind_it() -> None:
