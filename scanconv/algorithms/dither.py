@@ -49,28 +49,6 @@ MAX_ORDER = 16
 MAX_CELLS = 4096
 """The largest image dithered in a step table (64 x 64 pixels)."""
 
-DITHER_KNOBS: dict[str, tuple[str, ...]] = dict(  # knob names (one, arithmetic, is also a method's)
-    compare=(">", ">="),
-    scale=("raw", "centered", "given"),
-    base=("0", "1"),
-    count=("0", "1"),
-    kernel=(
-        "floyd-steinberg",
-        "simple",
-        "jarvis-judice-ninke",
-        "stucki",
-        "burkes",
-        "sierra",
-        "two-row-sierra",
-        "sierra-lite",
-        "one-dimensional",
-    ),
-    order=("raster", "serpentine"),
-    arithmetic=("exact", "integer"),
-    carry=("kept", "clamped"),
-)
-"""Each named convention and its values, the default first."""
-
 
 class Share(NamedTuple):
     """One neighbour's share of an error: ``(di, dj, weight)``, ``dj`` toward the scan."""
@@ -182,6 +160,18 @@ KERNELS: dict[str, Kernel] = {
     )
 }
 """The error-diffusion kernels, by name."""
+
+DITHER_KNOBS: dict[str, tuple[str, ...]] = dict(  # knob names (one, arithmetic, is also a method's)
+    compare=(">", ">="),
+    scale=("raw", "centered", "given"),
+    base=("0", "1"),
+    count=("0", "1"),
+    kernel=tuple(KERNELS),  # the kernels' records, above
+    order=("raster", "serpentine"),
+    arithmetic=("exact", "integer"),
+    carry=("kept", "clamped"),
+)
+"""Each named convention and its values, the default first."""
 
 
 def choice_of(values: Sequence[str], value: str, knob: str) -> str:
