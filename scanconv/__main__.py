@@ -1,5 +1,6 @@
 """``python -m scanconv`` and the ``scanconv`` program (:func:`run`)."""
 
+import gc
 import signal
 import sys
 
@@ -11,6 +12,7 @@ def run() -> int:
     instead of printing a ``KeyboardInterrupt`` traceback from the middle of an import."""
     if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
         signal.signal(signal.SIGINT, signal.SIG_DFL)
+    gc.disable()  # start-up makes only long-lived objects: main() freezes them, then collects
     from .cli import main
 
     return main()

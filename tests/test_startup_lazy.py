@@ -173,6 +173,27 @@ def test_the_program_freezes_what_its_start_up_made():
     assert out.stdout.startswith("k,")
 
 
+@pytest.mark.slow  # a subprocess
+def test_the_program_starts_with_the_collector_off_and_runs_with_it_on():
+    # run() turns the collector off for the imports and the command's build (start-up makes
+    # only objects that live until exit); main() freezes them and turns it back on, so an
+    # answer's own garbage is still collected.
+    code = (
+        "import gc, sys\n"
+        "import scanconv.cli.entry as entry\n"
+        "seen = []\n"
+        "built = entry._command_for\n"
+        "entry._command_for = lambda argv: (seen.append(gc.isenabled()), built(argv))[1]\n"
+        "from scanconv.__main__ import run\n"
+        "sys.argv = ['scanconv', 'line', '0', '0', '3', '1', '--format', 'csv']\n"
+        "status = run()\n"
+        "print(status, seen, gc.isenabled(), file=sys.stderr)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stderr.split() == ["0", "[False]", "True"]
+    assert out.stdout.startswith("k,")
+
+
 def test_a_lazy_module_reads_its_module_live(monkeypatch):
     from scanconv.core import numeric
 

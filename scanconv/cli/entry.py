@@ -87,7 +87,10 @@ def main(argv: list[str] | None = None) -> int:
     SIGTERM into a one-line exit 130 or 143 (:func:`scanconv.cli.output.catch_signals`),
     and freezes the objects of its start-up (:func:`gc.freeze`: the modules, typer's and its
     own, and the command live until exit, so no collection walks them again, the last one at
-    exit included; about a fifth of scanconv's own start-up). Called in-process with ``argv``
+    exit included; about a fifth of scanconv's own start-up), then turns the collector back
+    on (:func:`scanconv.__main__.run` turns it off for the imports and the command's build,
+    which make only such objects: a quarter of scanconv's own start-up more). Called
+    in-process with ``argv``
     it leaves the caller's signal handlers and collector alone, so that a SIGTERM to a test
     runner still ends it."""
     as_program = argv is None
@@ -101,6 +104,7 @@ def main(argv: list[str] | None = None) -> int:
     command = _command_for(argv)
     if as_program:  # what start-up made lives until exit: the collector (at exit too) skips it
         gc.freeze()
+        gc.enable()  # run() turned it off for the start-up
     restore_signals = output.catch_signals() if as_program else _nothing
     try:
         return _run(command, argv)
