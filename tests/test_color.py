@@ -206,8 +206,8 @@ def test_unit_scale_and_non_rgb_input() -> None:
         (("grey", "1", "2"), "takes 1 value"),
         (("lab", "1", "2", "3"), "unknown colour model"),
         (("rgb", "1", "2", "3", "--to", "xyz"), "unknown colour model"),
-        (("rgb", "1", "2", "3", "hsv"), "after --to"),
-        (("rgb", "0.5", "2", "3"), "--unit"),
+        (("rgb", "1", "2", "3", "hsv"), "--to: a colour component must be a number"),
+        (("rgb", "0.5", "2", "3"), "--unit: R = 0.5"),
         (("rgb", "1", "2", "3", "--bits", "0"), "1..16"),
     ],
 )

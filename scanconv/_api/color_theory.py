@@ -110,9 +110,9 @@ def color(
             targets.append(v)
         else:
             raise InputError(
-                f"a colour component must be a number, got {v!r} (name the target models "
-                "after --to)",
-                "values",
+                f"a colour component must be a number, got {v!r} (the target models are "
+                "given on their own, as to)",
+                "to",
             )
     b = _number(bits, "bits")
     return answers_color.color_solution(

@@ -204,8 +204,8 @@ def bspline(
         return bspline_basis(points, degree, knots, samples)
     if not points:
         raise InputError(
-            "missing control points X0 Y0 X1 Y1 ... (only --basis takes a degree and a knot "
-            "list alone)",
+            "missing control points X0 Y0 X1 Y1 ... (only the basis functions alone are "
+            "asked with a degree and a knot list but no points)",
             "points",
         )
     if t is not None:

@@ -68,7 +68,8 @@ def parametric_circle(
     """
     if r is not None and radius is not None and _number(r, "r") != _number(radius, "radius"):
         raise InputError(
-            f"unexpected extra argument {r}: the radius is already given by --radius {radius}"
+            f"unexpected extra argument {r}: the radius is already given as {radius}",
+            "radius",
         )
     chosen = r if r is not None else radius if radius is not None else 1
     return _parametric(

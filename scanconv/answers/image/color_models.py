@@ -99,8 +99,8 @@ def _level(v: Number, what: str, top: int, unit: bool) -> Fraction:
         return _unit(f, what)
     if f.denominator != 1:
         raise InputError(
-            f"{what} = {fmt_short(f)} must be an integer 0..{top} (give --unit for values in 0..1)",
-            "values",
+            f"{what} = {fmt_short(f)} must be an integer 0..{top} (or ask for the unit scale, values in 0..1)",
+            "unit",
         )
     if not 0 <= f <= top:
         raise InputError(

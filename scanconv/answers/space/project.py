@@ -135,7 +135,7 @@ def dimetric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
     f = a.get("ratio") or Fraction(1, 2)
     if not 0 < f <= 1:
         raise InputError(
-            f"dimetric: the z axis's foreshortening --ratio must be in (0, 1], got {fmt_short(f)}",
+            f"dimetric: the z axis's foreshortening ratio must be in (0, 1], got {fmt_short(f)}",
             "ratio",
         )
     (cp, sp), (ct, st) = cs = pj.dimetric(f)
@@ -433,7 +433,7 @@ def project_solution(
     points, stages = parse(words, sense)
     s = solid_of(points, solid)
     if (parallel is None) == (perspective is None):
-        raise InputError("choose one projection: --parallel KIND or --perspective KIND", "parallel")
+        raise InputError("choose one projection, a parallel or a perspective one", "parallel")
     kind = str(parallel or perspective)
     a: dict[str, Any] = {"view": view, "angle": angle, "receding": receding, "angles": angles}
     a |= {"ratio": ratio, "d": d}

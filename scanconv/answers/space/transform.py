@@ -300,14 +300,14 @@ def solid_of(points: Sequence[Point3], solid: str | None) -> Solid:
     """The solid the answer works on: a named one, or the vertices given."""
     if solid is not None:
         if points:
-            raise InputError("give the vertices or --solid, not both", "solid")
+            raise InputError("give the vertices or a named solid, not both", "solid")
         if solid not in space.SOLIDS:
             raise InputError(
                 f"unknown solid {solid!r} (choose from {', '.join(space.SOLIDS)})", "solid"
             )
         return space.SOLIDS[solid]
     if not points:
-        raise InputError("no vertices given (X1 Y1 Z1 ... or --solid NAME)", "vertices")
+        raise InputError("no vertices given (X1 Y1 Z1 ... or a named solid)", "vertices")
     return space.given_solid(points)
 
 
