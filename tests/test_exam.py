@@ -82,7 +82,7 @@ def test_sections_are_picked_by_number_name_or_word() -> None:
         (("--section", "nope"), "is not a section"),
         (("--section", "9"), "is not a section"),
         (("--section", "line"), "several sections"),
-        (("--contents", "--format", "html"), "not available"),
+        (("--contents", "--format", "html"), "not available in html: choose from latex, markdown"),
     ],
 )
 def test_bad_sections_are_one_line_exit_2(argv: tuple[str, ...], word: str) -> None:

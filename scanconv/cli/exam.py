@@ -95,7 +95,8 @@ def exam_sheet(section: str | None = None) -> Sheet:
 def contents(section: str | None, fmt: str) -> str:
     """Only the table of contents (nothing is answered): markdown, plain, LaTeX or JSON."""
     if fmt not in (*CONTENTS_ALONE, "json"):
-        raise ValueError(f"--contents is not available in {fmt}: markdown, plain, latex or json")
+        choices = ", ".join((*CONTENTS_ALONE, "json"))
+        raise ValueError(f"--contents is not available in {fmt}: choose from {choices}")
     return contents_document(exam_sheet(section), fmt)
 
 
