@@ -14,13 +14,34 @@ its model from it instead of reading the question back out of the answer's text.
 LineKnobs(rounding=None, tie='step', start='swap', scale=None, ends=None)
 >>> q.ends
 (2, 2, 10, 6)
+
+The commands whose records dispatch by method without a stepped table have one question each
+too, built once where the command's function checks its input, every piece of the command
+taking it: :class:`ClipLineQuestion` (``clip line``: the answer and the pipeline's ``stage``),
+:class:`ClipPolygonQuestion` (``clip polygon``) and :class:`FillQuestion` (``fill``); their
+choices are typed by the :mod:`~scanconv.core.choices` ``Literal`` of the API, so a misspelt
+method is a mypy error here as it is in ``scanconv.clip_line(..., method=...)``.
 """
 
+from __future__ import annotations
+
 from collections.abc import Mapping
-from typing import NamedTuple
+from typing import TYPE_CHECKING, Literal, NamedTuple
 
 from ..algorithms.conventions import resolve
 from ..core.numeric import Number, normalize
+
+if TYPE_CHECKING:  # the choices' Literal types cost the start-up nothing
+    from ..core.choices import (
+        ClipEndsName,
+        FillMethodName,
+        LineClipMethodName,
+        MidpointName,
+        MidpointStopName,
+        NormalsName,
+        OrderName,
+        PolygonClipMethodName,
+    )
 
 
 class LineKnobs(NamedTuple):
@@ -142,3 +163,69 @@ def line_question(
     default); :class:`~scanconv.core.checks.InputError` for a knob that does not apply."""
     knobs = resolve("line", algo, convention, dict(given or {}))
     return LineQuestion(algo, x1, y1, x2, y2, LineKnobs(**knobs), layout, convention)
+
+
+class ClipLineQuestion(NamedTuple):
+    """A line clipping question: ``clip line X1 Y1 X2 Y2 --window XMIN YMIN XMAX YMAX --method
+    NAME``, its end points exact and its window checked; what a ``clip`` line method's
+    ``answer`` and ``stage`` take. A convention is ``None`` where not given (the method's
+    default); one given to a method it is not the method's is refused before it is built."""
+
+    method: LineClipMethodName
+    p1: tuple[Number, Number]
+    p2: tuple[Number, Number]
+    window: tuple[Number, Number, Number, Number]
+    """``(xmin, ymin, xmax, ymax)``, ``xmin < xmax`` and ``ymin < ymax``."""
+    normals: NormalsName | None = None
+    ends: ClipEndsName | None = None
+    midpoint: MidpointName | None = None
+    stop: MidpointStopName | None = None
+
+    @property
+    def key(self) -> str:
+        """Its method record's key, ``clip/<method>``."""
+        return f"clip/{self.method}"
+
+
+class ClipPolygonQuestion(NamedTuple):
+    """A polygon clipping question: ``clip polygon X1 Y1 ... (--window XMIN YMIN XMAX YMAX |
+    --window-vertices X Y ...) --method NAME``; what a ``clip`` polygon method's ``answer``
+    takes."""
+
+    method: PolygonClipMethodName
+    vertices: tuple[Number, ...]
+    """The polygon's ``x y x y ...``."""
+    window: tuple[Number, ...]
+    """A rectangle's ``(xmin, ymin, xmax, ymax)``, or a polygon window's ``x y x y ...``."""
+    polygon: bool = False
+    """The window is a polygon's vertices (``False``: the rectangle)."""
+
+    @property
+    def key(self) -> str:
+        """Its method record's key, ``clip/<method>``."""
+        return f"clip/{self.method}"
+
+
+Connectivity = Literal[4, 8]
+"""A seed fill's neighbours (:data:`scanconv.algorithms.seedfill.CONNECTIVITIES`)."""
+
+
+class FillQuestion(NamedTuple):
+    """A seed fill question: ``fill METHOD --seed X Y (VERTICES | --rows ROWS)``, checked;
+    what a ``fill`` method's ``answer`` takes. Exactly one of ``vertices`` and ``rows``."""
+
+    method: FillMethodName
+    seed: tuple[int, int]
+    vertices: tuple[Number, ...] | None = None
+    """A polygon's ``x y x y ...``, whose Bresenham outline is the boundary."""
+    rows: tuple[str, ...] | None = None
+    """The grid as text rows, top row first."""
+    connectivity: Connectivity = 4
+    order: OrderName = "stack"
+    span: bool = False
+    """The span (scan-line seed) fill."""
+
+    @property
+    def key(self) -> str:
+        """Its method record's key, ``fill/<method>``."""
+        return f"fill/{self.method}"
