@@ -18,7 +18,8 @@ LineKnobs(rounding=None, tie='step', start='swap', scale=None, ends=None)
 The commands whose records dispatch by method without a stepped table have one question each
 too, built once where the command's function checks its input, every piece of the command
 taking it: :class:`ClipLineQuestion` (``clip line``: the answer and the pipeline's ``stage``),
-:class:`ClipPolygonQuestion` (``clip polygon``) and :class:`FillQuestion` (``fill``); their
+:class:`ClipPolygonQuestion` (``clip polygon``), :class:`FillQuestion` (``fill``) and
+:class:`ProjectionQuestion` (``3d project``: each kind's builder, its record's ``generator``); their
 choices are typed by the :mod:`~scanconv.core.choices` ``Literal`` of the API, so a misspelt
 method is a mypy error here as it is in ``scanconv.clip_line(..., method=...)``.
 """
@@ -229,3 +230,44 @@ class FillQuestion(NamedTuple):
     def key(self) -> str:
         """Its method record's key, ``fill/<method>``."""
         return f"fill/{self.method}"
+
+
+ObliqueAngle = Literal["receding", "projector"]
+"""What an oblique projection's angle is (the ``oblique-angle`` convention,
+:data:`~scanconv.algorithms.space_conventions.SPACE_KNOBS`)."""
+CentreOfProjection = Literal["minus-d", "plus-d", "origin"]
+"""Where a perspective's centre of projection is (the ``cop`` convention)."""
+
+PROJECTION_OPTIONS = ("view", "angle", "receding", "angles", "ratio", "d")
+"""The options of :class:`ProjectionQuestion`: a kind's builder says which it reads
+(``Built.reads``), and one given that it does not read is refused."""
+
+
+class ProjectionQuestion(NamedTuple):
+    """A projection question: ``3d project ... --parallel KIND | --perspective KIND`` with its
+    options, ``None`` where not given (the kind's default); what each kind's builder (its
+    ``3d`` record's ``generator``) takes. The two conventions a builder reads come resolved (a
+    preset's or the one given), and ``sense`` is 1 for the standard sense of a positive
+    angle, -1 for the reversed."""
+
+    kind: str
+    oblique_angle: ObliqueAngle
+    """What an oblique ``angle`` is (the ``oblique-angle`` convention)."""
+    cop: CentreOfProjection
+    """Where the centre of projection is (the ``cop`` convention)."""
+    sense: Literal[1, -1]
+    view: str | None = None
+    angle: str | None = None
+    receding: str | None = None
+    angles: tuple[str, ...] | None = None
+    ratio: Number | None = None
+    d: Number | None = None
+
+    @property
+    def key(self) -> str:
+        """Its method record's key, ``3d/<kind>``."""
+        return f"3d/{self.kind}"
+
+    def given(self) -> dict[str, object]:
+        """The options given (not ``None``), by name."""
+        return {k: getattr(self, k) for k in PROJECTION_OPTIONS if getattr(self, k) is not None}
