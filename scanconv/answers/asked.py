@@ -170,7 +170,8 @@ class ClipLineQuestion(NamedTuple):
     """A line clipping question: ``clip line X1 Y1 X2 Y2 --window XMIN YMIN XMAX YMAX --method
     NAME``, its end points exact and its window checked; what a ``clip`` line method's
     ``answer`` and ``stage`` take. A convention is ``None`` where not given (the method's
-    default); one given to a method it is not the method's is refused before it is built."""
+    default); one given to a method that does not take it is refused before the question is
+    built."""
 
     method: LineClipMethodName
     p1: tuple[Number, Number]

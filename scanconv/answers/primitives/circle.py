@@ -239,8 +239,7 @@ def circle_solution(
     rec = methods.method("circle", method)
     derivation = rec.load("derivation") if derive else None
     listing = rec.load("pseudocode") if pseudocode else None
-    parts: Parts = rec.load("answer")(q)
-    title, derived, columns, extra_keys, steps, points, notes, _ = parts
+    title, derived, columns, extra_keys, steps, points, notes, after = rec.load("answer")(q)
     notes = _circle_notes(method, notes, rounding)
     added = Theory(
         (theory.DERIVATION, *derivation(q)) if derivation is not None else (),
@@ -268,7 +267,7 @@ def circle_solution(
             tables=(symmetry_table(points, images, ixc, iyc),),
             symmetry=8,
             center=(ixc, iyc),
-            next_pixel=parts.next_pixel,
+            next_pixel=after,  # the method's Parts.next_pixel
         ),
         plot=Plot(
             pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
