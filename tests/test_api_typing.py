@@ -70,6 +70,84 @@ def test_mypy_sees_the_names_and_refuses_a_misspelt_keyword_or_choice(tmp_path: 
     ], done.stdout + done.stderr
 
 
+QUESTIONS = """\
+from scanconv.answers.asked import (
+    ClipLineQuestion, ClipPolygonQuestion, FillQuestion, ProjectionQuestion,
+)
+
+ClipLineQuestion("cohen-sutherland", (0, 0), (1, 1), (0, 0, 4, 4), normals="inward")
+ClipPolygonQuestion("weiler-atherton", (0, 0, 4, 0, 0, 4), (1, 1, 3, 3))
+FillQuestion("flood", (1, 1), connectivity=8, order="queue")
+ProjectionQuestion("cavalier", "projector", "plus-d", -1)
+ClipLineQuestion("cohen-sutherlnd", (0, 0), (1, 1), (0, 0, 4, 4))
+ClipLineQuestion("cyrus-beck", (0, 0), (1, 1), (0, 0, 4, 4), normals="outwards")
+ClipLineQuestion("midpoint-subdivision", (0, 0), (1, 1), (0, 0, 4, 4), stop="edges")
+ClipPolygonQuestion("sutherland-hodgmann", (0, 0, 4, 0, 0, 4), (1, 1, 3, 3))
+FillQuestion("flod", (1, 1))
+FillQuestion("flood", (1, 1), connectivity=6)
+FillQuestion("flood", (1, 1), order="heap")
+ProjectionQuestion("cavalier", "projectors", "plus-d", 1)
+ProjectionQuestion("one-point", "receding", "minus_d", 1)
+"""
+#: The misspelt choices of QUESTIONS, from its first misspelt line on, one a line.
+MISSPELT = ("cohen-sutherlnd", "outwards", "edges", "sutherland-hodgmann", "flod", 6, "heap",
+            "projectors", "minus_d")  # fmt: skip
+
+
+def _mypy(tmp_path: Path, source: str) -> list[tuple[int, str]]:
+    """mypy's messages on ``source`` (the project's config, a copy of its cache), each with
+    its line number."""
+    (tmp_path / "snippet.py").write_text(source, encoding="utf-8")
+    cache = tmp_path / ".mypy_cache"
+    if (ROOT / ".mypy_cache").is_dir():
+        shutil.copytree(ROOT / ".mypy_cache", cache)
+    done = subprocess.run(
+        [sys.executable, "-m", "mypy", "--config-file", str(ROOT / "pyproject.toml"),
+         "--cache-dir", str(cache), "--no-error-summary", "snippet.py"],
+        cwd=tmp_path, capture_output=True, text=True, timeout=600,
+        env={**os.environ, "MYPYPATH": str(ROOT)},
+    )  # fmt: skip
+    found = []
+    for x in done.stdout.splitlines():
+        if x.startswith("snippet.py:"):
+            _, line, text = x.split(":", 2)
+            found.append((int(line), text.strip()))
+    assert found or done.returncode == 0, done.stdout + done.stderr
+    return found
+
+
+@pytest.mark.slow
+def test_mypy_refuses_a_misspelt_choice_in_each_commands_question(tmp_path: Path) -> None:
+    """The questions of clip, fill and 3d project type their choices as Literals (the
+    method, each convention, the connectivity): the right spellings pass, each misspelt one is
+    an error on its own line naming the value."""
+    found = _mypy(tmp_path, QUESTIONS)
+    first = (
+        QUESTIONS.splitlines().index(
+            'ClipLineQuestion("cohen-sutherlnd", (0, 0), (1, 1), (0, 0, 4, 4))'
+        )
+        + 1
+    )
+    errors = [(line, text) for line, text in found if text.startswith("error:")]
+    assert [line for line, _ in errors] == list(range(first, first + len(MISSPELT))), found
+    for (_, text), value in zip(errors, MISSPELT, strict=True):
+        assert f"Literal[{value!r}]" in text and "[arg-type]" in text, text
+
+
+def test_the_questions_own_literals_list_what_the_library_accepts() -> None:
+    """The question Literals not in :mod:`scanconv.core.choices` (no API parameter is typed
+    by them) against the values the library checks."""
+    from typing import get_args
+
+    from scanconv.algorithms.seedfill import CONNECTIVITIES
+    from scanconv.algorithms.space_conventions import SPACE_KNOBS
+    from scanconv.answers import asked
+
+    assert get_args(asked.Connectivity) == CONNECTIVITIES
+    assert get_args(asked.ObliqueAngle) == tuple(SPACE_KNOBS["oblique-angle"])
+    assert get_args(asked.CentreOfProjection) == tuple(SPACE_KNOBS["cop"])
+
+
 def _listed(alias: object) -> str:
     """A ``Literal``'s values as mypy writes them: ``'bresenham', 'dda'``."""
     from typing import get_args

@@ -155,6 +155,80 @@ def test_the_structure_is_read_from_declared_fields_not_from_titles_or_names() -
     }
 
 
+def _stepped_answers() -> list[tuple[str, Solution]]:
+    """Every line, circle and ellipse method of the records, in every layout it takes."""
+    from scanconv.algorithms.choices import Layout
+    from scanconv.answers.methods import methods_of
+    from scanconv.answers.primitives.circle import circle_solution
+
+    found = [(f"ellipse/{m}", ellipse_solution(8, 6)) for m in methods_of("ellipse")]
+    for lay in Layout:
+        found += [
+            (f"line/{m} {lay.value}", line_solution(m, 2, 2, 10, 6, layout=lay.value))
+            for m in methods_of("line")
+        ]
+        found += [
+            (f"circle/{m} {lay.value}", circle_solution(m, 5, layout=lay.value))
+            for m in methods_of("circle")
+        ]
+    return found
+
+
+def test_every_stepped_answer_declares_the_pixel_its_heading_names() -> None:
+    """``Walk.next_pixel`` is set by the answer that lays the table out; the heading a student
+    reads says the same: ``(x_{k+1}, y_{k+1})`` exactly when the field is set (the numbering
+    reads the field, so a heading and a field that disagree would number the grid wrong)."""
+    answers = _stepped_answers()
+    assert {key.split()[0] for key, _ in answers} >= {
+        "line/bresenham",
+        "line/midpoint",
+        "circle/midpoint",
+        "ellipse/midpoint",
+    }
+    declared = set()
+    for key, sol in answers:
+        heads = [c.tex.replace(" ", "") for c in sol.columns if c.key == "pixel"]  # wu: none
+        assert any("k+1" in h for h in heads) == sol.walk.next_pixel, (key, heads)
+        if sol.walk.next_pixel:
+            declared.add(key)
+    # by the notes and the textbooks: the (x_{k+1}, y_{k+1}) rows are these, no others
+    assert declared == {
+        "line/bresenham textbook",
+        "line/midpoint textbook",
+        "circle/midpoint textbook",
+        "ellipse/midpoint",
+    }
+
+
+def _headed(sol: Solution, tex: str, next_pixel: bool) -> Solution:
+    """``sol`` with its pixel column headed ``tex`` and ``next_pixel`` declared."""
+    columns = tuple(heading("pixel", tex) if c.key == "pixel" else c for c in sol.columns)
+    walk = sol.walk._replace(columns=columns, next_pixel=next_pixel)
+    return Solution(**{**sol.fields(), "walk": walk})
+
+
+def test_the_pixel_numbers_follow_the_declared_field_not_the_heading() -> None:
+    """Bresenham's rows (2, 2) to (10, 6) headed "pixel", the field set: still numbered k + 1
+    from the start's 0 (Hearn & Baker's table: row k plots (x_{k+1}, y_{k+1}), the pixels
+    (3, 3), (4, 3), ... (10, 6)); the DDA's rows headed (x_{k+1}, y_{k+1}) without the field:
+    still numbered k."""
+    from scanconv.algorithms.lines import bresenham, dda
+    from scanconv.document.numbering import label_offset, numbering_legend, step_labels
+
+    plain = _headed(line_solution("bresenham", 2, 2, 10, 6), r"\text{pixel}", True)
+    labels = step_labels(plain)
+    assert label_offset(plain) == 1 and labels[(2, 2)] == 0
+    assert all(labels[s.pixel] == s.k + 1 for s in bresenham(2, 2, 10, 6))
+    assert numbering_legend(plain) == "number: k + 1 for row k; 0: start"
+    assert document(plain).get(StepTable).offset == 1
+
+    misled = _headed(line_solution("dda", 2, 2, 10, 6), "(x_{k+1}, y_{k+1})", False)
+    firsts: dict[tuple[int, int], int] = {}
+    for s in dda(2, 2, 10, 6):
+        firsts.setdefault(s.pixel, s.k)
+    assert label_offset(misled) == 0 and step_labels(misled) == firsts
+
+
 def test_construction_points_are_a_table_flag() -> None:
     doc = document(bezier_at_solution([(0, 0), (4, 8), (8, 0)], Fraction(1, 2)))
     assert doc.get(Pixels).construction == "de Casteljau points"

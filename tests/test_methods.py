@@ -154,6 +154,80 @@ def test_a_record_s_pieces_are_what_the_commands_call(monkeypatch: pytest.Monkey
         check_work("line", args, None)
 
 
+_GOT: list[object] = []
+"""The questions the fake pieces below were given."""
+
+
+def _fake_piece(q: object) -> Solution:
+    """An answer that only records its question."""
+    _GOT.append(q)
+    return Solution("fake", "fake", _MARK, (), ())
+
+
+def _fake_stage(q: object) -> object:
+    """A clipping stage that always keeps the segment (1, 1) to (3, 2)."""
+    from scanconv.answers.process._shared import Clipped
+
+    _GOT.append(q)
+    return Clipped([], [], ((1, 1), (3, 2)))
+
+
+def test_the_clip_fill_and_projection_records_pieces_are_what_the_commands_call(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Replace clip's, fill's and 3d projection's pieces in their records: each command's
+    answer changes, each piece gets the one typed question (the numbers as the command
+    checked them), and the answer keeps it."""
+    import scanconv
+    import scanconv.answers.methods as methods
+    from scanconv.answers.asked import ClipLineQuestion, ClipPolygonQuestion, FillQuestion
+
+    here = "tests.test_methods:"
+    room = "#####/#.a.#/#####"  # 'a' stops a flood fill from (1, 1), not a boundary fill
+    assert sorted(scanconv.fill("flood", (1, 1), rows=room).pixels()) == [(1, 1)]
+    cabinet = methods.METHODS["3d/cabinet"].generator
+    for key, piece in (
+        ("clip/liang-barsky", {"answer": here + "_fake_piece"}),
+        ("clip/nicholl-lee-nicholl", {"stage": here + "_fake_stage"}),
+        ("clip/weiler-atherton", {"answer": here + "_fake_piece"}),
+        ("fill/flood", {"answer": "scanconv.answers.process.fill.seed:boundary_answer"}),
+        ("fill/boundary", {"answer": here + "_fake_piece"}),
+        ("3d/cavalier", {"generator": cabinet}),
+    ):
+        monkeypatch.setitem(methods.METHODS, key, methods.METHODS[key]._replace(**piece))
+    _GOT.clear()
+
+    clipped = scanconv.clip_line(7, 9, 11, 4, (4, 4, 10, 8), "liang-barsky")
+    asked = ClipLineQuestion("liang-barsky", (7, 9), (11, 4), (4, 4, 10, 8))
+    assert clipped.title == _MARK and _GOT.pop() == asked and clipped.question == asked
+
+    piped = scanconv.pipeline_line(-5, 0, 15, 10, (0, 0, 10, 10), (0, 0, 20, 10),
+                                   clip="nicholl-lee-nicholl")  # fmt: skip
+    assert piped.data["clipped"] == [[1, 1], [3, 2]]  # the fake stage's, mapped on from there
+    assert _GOT.pop() == ClipLineQuestion("nicholl-lee-nicholl", (-5, 0), (15, 10), (0, 0, 10, 10))
+
+    polygon = scanconv.clip_polygon([(0, 0), (8, 0), (8, 8)], (2, 1, 9, 3), "weiler-atherton")
+    asked_polygon = ClipPolygonQuestion("weiler-atherton", (0, 0, 8, 0, 8, 8), (2, 1, 9, 3))
+    assert polygon.title == _MARK and _GOT.pop() == asked_polygon
+    assert polygon.question == asked_polygon
+
+    # flood's record now answers with the boundary fill: 'a' is filled too (by hand)
+    flood = scanconv.fill("flood", (1, 1), rows=room)
+    assert sorted(flood.pixels()) == [(1, 1), (2, 1), (3, 1)]
+    assert flood.question == FillQuestion("flood", (1, 1), rows=(room,))
+    boundary = scanconv.fill("boundary", (2, 2), vertices=[(0, 0), (5, 0), (5, 4)],
+                             connectivity=8, order="queue")  # fmt: skip
+    assert boundary.title == _MARK
+    assert _GOT.pop() == FillQuestion("boundary", (2, 2), (0, 0, 5, 0, 5, 4), None, 8, "queue")
+    assert _GOT == []
+
+    # cavalier's record builds with cabinet's generator: L1 = 1/2, so the vertex (0, 0, 1)
+    # lands at (cos 45°, sin 45°)/2 = (sqrt(2)/4, sqrt(2)/4), not cavalier's sqrt(2)/2
+    cavalier = scanconv.project3d(solid="unit-cube", parallel="cavalier")
+    assert cavalier.data["projected"][4] == ["sqrt(2)/4", "sqrt(2)/4"]
+    assert cavalier.question.key == "3d/cavalier"
+
+
 def test_a_record_missing_a_piece_fails_when_the_table_is_built() -> None:
     good = method("line", "dda")
     for piece in ("generator", "errata", "rows"):

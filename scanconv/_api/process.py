@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
-from typing import TYPE_CHECKING, Annotated
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Annotated, cast
 
 from ..algorithms.choices import LineAlgorithm, LineAlgorithmName
 from ..algorithms.process_choices import FillRule, LineClipMethod, PolygonClipMethod
@@ -19,7 +19,7 @@ POLYGON_CLIP_METHODS = tuple(m.value for m in PolygonClipMethod)
 """The polygon clipping methods, by name."""
 
 if TYPE_CHECKING:
-    from ..answers import methods
+    from ..answers import asked, methods
     from ..answers.process import pipeline as answers_pipeline
     from ..answers.process import transform as answers_transform
     from ..answers.process import viewport as answers_viewport
@@ -36,6 +36,7 @@ if TYPE_CHECKING:
     )
     from ..core.records import Solution
 else:  # each command's answer module, loaded by its first call
+    asked = lazy.module("scanconv.answers.asked")
     methods = lazy.module("scanconv.answers.methods")
     answers_clip = lazy.module("scanconv.answers.process.clip.rectangle")
     answers_cyrus_beck = lazy.module("scanconv.answers.process.clip.cyrus_beck")
@@ -219,21 +220,10 @@ def clip_line(
     """
     a, b, c, d = _numbers(x1=x1, y1=y1, x2=x2, y2=y2)
     rect = _rect(window, "window")
-    name = _choice(method, "method")
-    given = dict(normals=normals, ends=ends, midpoint=midpoint, stop=stop)
-    conventions = {param: value for param, value in given.items() if value is not None}
-    _only(name, conventions)
-    record = methods.method("clip", answers_clip.check_method(name))
-    return record.load("answer")(a, b, c, d, rect, **conventions)  # type: ignore[no-any-return]
-
-
-def _only(name: str, conventions: Iterable[str]) -> None:
-    """Refuse a convention given to a method it does not apply to (its record's
-    ``options``)."""
-    for param in conventions:
-        owners = [m for m in methods.METHODS.values() if m.command == "clip" and param in m.options]
-        if not any(m.name == name for m in owners):
-            raise InputError(f"{param} applies to {owners[0].name} only, not to {name}", param)
+    return answers_clip.clip_line_solution(
+        a, b, c, d, rect, _choice(method, "method"),
+        normals=normals, ends=ends, midpoint=midpoint, stop=stop,
+    )  # fmt: skip
 
 
 @answers
@@ -363,8 +353,11 @@ def clip_polygon(
             f"unknown polygon clipping method {name!r} ({', '.join(POLYGON_CLIP_METHODS)})",
             "method",
         )
-    answer = methods.method("clip", name).load("answer")
-    return answer(flat, shape, polygon)  # type: ignore[no-any-return]
+    checked = cast("PolygonClipMethodName", name)  # one of POLYGON_CLIP_METHODS
+    q = asked.ClipPolygonQuestion(checked, tuple(flat), tuple(shape), polygon)
+    sol: Solution = methods.method("clip", name).load("answer")(q)
+    sol.question = q
+    return sol
 
 
 @answers

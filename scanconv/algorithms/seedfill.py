@@ -55,6 +55,8 @@ EIGHT = (*FOUR, (1, 1), (-1, 1), (-1, -1), (1, -1))
 METHODS = ("boundary", "flood")
 """The colour tests: stop at the boundary colour, or replace the seed's colour."""
 ORDERS = tuple(o.value for o in Order)
+CONNECTIVITIES = (4, 8)
+"""The neighbours a fill visits: the 4 edge neighbours, or the 8 with the corners."""
 
 
 @dataclass(slots=True)
@@ -156,10 +158,11 @@ class SpanStep(NamedTuple):
     upcoming: tuple[Pixel, ...]
 
 
-def _check(method: str, connectivity: int, order: str) -> None:
+def check_fill(method: str, connectivity: int, order: str) -> None:
+    """InputError for an unknown colour test, connectivity or order."""
     if method not in METHODS:
         raise InputError(f"unknown fill {method!r} (choose from {', '.join(METHODS)})", "method")
-    if connectivity not in (4, 8):
+    if connectivity not in CONNECTIVITIES:
         raise InputError(f"connectivity must be 4 or 8, got {connectivity}", "connectivity")
     if order not in ORDERS:
         raise InputError(f"order must be stack or queue, got {order!r}", "order")
@@ -202,7 +205,7 @@ def seed_fill(
     >>> [(s.pixel, s.filled, s.pushed) for s in seed_fill(g, (1, 1))]
     [((1, 1), True, ())]
     """
-    _check(method, connectivity, order)
+    check_fill(method, connectivity, order)
     check_seed(grid, seed, method)
     ok = _fillable(method, grid.colours[seed])
     steps = FOUR if connectivity == 4 else EIGHT
@@ -237,7 +240,7 @@ def span_fill(
     >>> [(s.pixel, s.span, s.pushed) for s in span_fill(g, (1, 1))]
     [((1, 1), (1, 2), ())]
     """
-    _check(method, connectivity, order)
+    check_fill(method, connectivity, order)
     check_seed(grid, seed, method)
     ok = _fillable(method, grid.colours[seed])
     todo: deque[Pixel] = deque([seed])

@@ -14,13 +14,35 @@ its model from it instead of reading the question back out of the answer's text.
 LineKnobs(rounding=None, tie='step', start='swap', scale=None, ends=None)
 >>> q.ends
 (2, 2, 10, 6)
+
+The commands whose records dispatch by method without a stepped table have one question each
+too, built once where the command's function checks its input, every piece of the command
+taking it: :class:`ClipLineQuestion` (``clip line``: the answer and the pipeline's ``stage``),
+:class:`ClipPolygonQuestion` (``clip polygon``), :class:`FillQuestion` (``fill``) and
+:class:`ProjectionQuestion` (``3d project``: each kind's builder, its record's ``generator``); their
+choices are typed by the :mod:`~scanconv.core.choices` ``Literal`` of the API, so a misspelt
+method is a mypy error here as it is in ``scanconv.clip_line(..., method=...)``.
 """
 
+from __future__ import annotations
+
 from collections.abc import Mapping
-from typing import NamedTuple
+from typing import TYPE_CHECKING, Literal, NamedTuple
 
 from ..algorithms.conventions import resolve
 from ..core.numeric import Number, normalize
+
+if TYPE_CHECKING:  # the choices' Literal types cost the start-up nothing
+    from ..core.choices import (
+        ClipEndsName,
+        FillMethodName,
+        LineClipMethodName,
+        MidpointName,
+        MidpointStopName,
+        NormalsName,
+        OrderName,
+        PolygonClipMethodName,
+    )
 
 
 class LineKnobs(NamedTuple):
@@ -142,3 +164,111 @@ def line_question(
     default); :class:`~scanconv.core.checks.InputError` for a knob that does not apply."""
     knobs = resolve("line", algo, convention, dict(given or {}))
     return LineQuestion(algo, x1, y1, x2, y2, LineKnobs(**knobs), layout, convention)
+
+
+class ClipLineQuestion(NamedTuple):
+    """A line clipping question: ``clip line X1 Y1 X2 Y2 --window XMIN YMIN XMAX YMAX --method
+    NAME``, its end points exact and its window checked; what a ``clip`` line method's
+    ``answer`` and ``stage`` take. A convention is ``None`` where not given (the method's
+    default); one given to a method that does not take it is refused before the question is
+    built."""
+
+    method: LineClipMethodName
+    p1: tuple[Number, Number]
+    p2: tuple[Number, Number]
+    window: tuple[Number, Number, Number, Number]
+    """``(xmin, ymin, xmax, ymax)``, ``xmin < xmax`` and ``ymin < ymax``."""
+    normals: NormalsName | None = None
+    ends: ClipEndsName | None = None
+    midpoint: MidpointName | None = None
+    stop: MidpointStopName | None = None
+
+    @property
+    def key(self) -> str:
+        """Its method record's key, ``clip/<method>``."""
+        return f"clip/{self.method}"
+
+
+class ClipPolygonQuestion(NamedTuple):
+    """A polygon clipping question: ``clip polygon X1 Y1 ... (--window XMIN YMIN XMAX YMAX |
+    --window-vertices X Y ...) --method NAME``; what a ``clip`` polygon method's ``answer``
+    takes."""
+
+    method: PolygonClipMethodName
+    vertices: tuple[Number, ...]
+    """The polygon's ``x y x y ...``."""
+    window: tuple[Number, ...]
+    """A rectangle's ``(xmin, ymin, xmax, ymax)``, or a polygon window's ``x y x y ...``."""
+    polygon: bool = False
+    """The window is a polygon's vertices (``False``: the rectangle)."""
+
+    @property
+    def key(self) -> str:
+        """Its method record's key, ``clip/<method>``."""
+        return f"clip/{self.method}"
+
+
+Connectivity = Literal[4, 8]
+"""A seed fill's neighbours (:data:`scanconv.algorithms.seedfill.CONNECTIVITIES`)."""
+
+
+class FillQuestion(NamedTuple):
+    """A seed fill question: ``fill METHOD --seed X Y (VERTICES | --rows ROWS)``, checked;
+    what a ``fill`` method's ``answer`` takes. Exactly one of ``vertices`` and ``rows``."""
+
+    method: FillMethodName
+    seed: tuple[int, int]
+    vertices: tuple[Number, ...] | None = None
+    """A polygon's ``x y x y ...``, whose Bresenham outline is the boundary."""
+    rows: tuple[str, ...] | None = None
+    """The grid as text rows, top row first."""
+    connectivity: Connectivity = 4
+    order: OrderName = "stack"
+    span: bool = False
+    """The span (scan-line seed) fill."""
+
+    @property
+    def key(self) -> str:
+        """Its method record's key, ``fill/<method>``."""
+        return f"fill/{self.method}"
+
+
+ObliqueAngle = Literal["receding", "projector"]
+"""What an oblique projection's angle is (the ``oblique-angle`` convention,
+:data:`~scanconv.algorithms.space_conventions.SPACE_KNOBS`)."""
+CentreOfProjection = Literal["minus-d", "plus-d", "origin"]
+"""Where a perspective's centre of projection is (the ``cop`` convention)."""
+
+PROJECTION_OPTIONS = ("view", "angle", "receding", "angles", "ratio", "d")
+"""The options of :class:`ProjectionQuestion`: a kind's builder says which it reads
+(``Built.reads``), and one given that it does not read is refused."""
+
+
+class ProjectionQuestion(NamedTuple):
+    """A projection question: ``3d project ... --parallel KIND | --perspective KIND`` with its
+    options, ``None`` where not given (the kind's default); what each kind's builder (its
+    ``3d`` record's ``generator``) takes. The two conventions a builder reads come resolved (a
+    preset's or the one given), and ``sense`` is 1 for the standard sense of a positive
+    angle, -1 for the reversed."""
+
+    kind: str
+    oblique_angle: ObliqueAngle
+    """What an oblique ``angle`` is (the ``oblique-angle`` convention)."""
+    cop: CentreOfProjection
+    """Where the centre of projection is (the ``cop`` convention)."""
+    sense: Literal[1, -1]
+    view: str | None = None
+    angle: str | None = None
+    receding: str | None = None
+    angles: tuple[str, ...] | None = None
+    ratio: Number | None = None
+    d: Number | None = None
+
+    @property
+    def key(self) -> str:
+        """Its method record's key, ``3d/<kind>``."""
+        return f"3d/{self.kind}"
+
+    def given(self) -> dict[str, object]:
+        """The options given (not ``None``), by name."""
+        return {k: getattr(self, k) for k in PROJECTION_OPTIONS if getattr(self, k) is not None}

@@ -279,10 +279,10 @@ _PROCESS = (
            model="cyrus_beck")._replace(
         short="Cyrus-Beck", options=("normals", "ends"), stage=_CLIP + "cyrus_beck:rectangle_clipped"),
     _plain("clip", "midpoint-subdivision", "midpoint subdivision line clipping",
-           _CLIP + "midpoint:midpoint_clip_solution", _G + "midpoint_clip:subdivide",
+           _CLIP + "midpoint:midpoint_answer", _G + "midpoint_clip:subdivide",
            model="midpoint_clip")._replace(options=("midpoint", "stop")),
     _plain("clip", "nicholl-lee-nicholl", "Nicholl-Lee-Nicholl line clipping",
-           _CLIP + "nll:nll_solution", _G + "nll:nicholl_lee_nicholl", model="nll")._replace(
+           _CLIP + "nll:nll_answer", _G + "nll:nicholl_lee_nicholl", model="nll")._replace(
         short="Nicholl-Lee-Nicholl", stage=_CLIP + "nll:nll_clipped"),
     _plain("clip", "weiler-atherton", "Weiler-Atherton polygon clipping (concave polygons)",
            _CLIP + "weiler_atherton:polygon_answer", _G + "weiler_atherton:weiler_atherton"),

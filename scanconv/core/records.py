@@ -261,6 +261,10 @@ class Walk(NamedTuple):
     ``Step.pixel`` is the point relative to :attr:`center`, as the circle tables print it)."""
     center: tuple[Any, Any] = (0, 0)
     """The centre the points are mirrored about (with symmetry 4 or 8)."""
+    next_pixel: bool = False
+    """``True``: row k's pixel is ``(x_{k+1}, y_{k+1})``, the pixel its decision reaches (the
+    textbooks' layout), so the grid numbers it k + 1 and the start 0; ``False``: row k's pixel
+    is numbered k. Declared by the answer that lays the table out, never read from a heading."""
 
 
 Numbering = Literal["row", "continued", "order", "none"]

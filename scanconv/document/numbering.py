@@ -41,17 +41,15 @@ def mirror_images(pixel: Pixel, symmetry: int, center: tuple[Any, Any]) -> Itera
 
 
 def label_offset(solution: Solution) -> int:
-    """1 when the step table's pixel column is ``(x_{k+1}, y_{k+1})``, else 0.
+    """1 when the step table's pixel column is ``(x_{k+1}, y_{k+1})``, else 0: as the answer
+    declares it (:attr:`~scanconv.core.records.Walk.next_pixel`), not as a heading reads.
 
     >>> from scanconv.answers.primitives.line import line_solution
     >>> label_offset(line_solution("bresenham", 2, 2, 10, 6)), label_offset(
     ...     line_solution("dda", 2, 2, 10, 6))
     (1, 0)
     """
-    for c in solution.columns:
-        if c.key == "pixel":
-            return 1 if "k+1" in c.tex.replace(" ", "") else 0
-    return 0
+    return 1 if solution.walk.next_pixel else 0
 
 
 def numbering(solution: Solution) -> Numbering:

@@ -472,8 +472,11 @@ def _projection_3d(
 ) -> PracticeQuestion:
     """A projection question: its options are those the kind's builder reads (its method
     record's), so a perspective asks for d and the vanishing points."""
+    from ..answers.space.project import projection_question  # the 3d answers: only here
+
     record = method("3d", kind)
-    built = record.load("generator")({}, space_conventions.resolve(None, {}), 1)
+    asked = projection_question(kind, space_conventions.resolve(None, {}), 1)  # nothing given
+    built = record.load("generator")(asked)
     argv: tuple[str, ...] = ("--perspective" if built.vanishing else "--parallel", kind)
     how = f"the {record.title} of {what}"
     marks = 8

@@ -239,7 +239,7 @@ def circle_solution(
     rec = methods.method("circle", method)
     derivation = rec.load("derivation") if derive else None
     listing = rec.load("pseudocode") if pseudocode else None
-    title, derived, columns, extra_keys, steps, points, notes = rec.load("answer")(q)
+    title, derived, columns, extra_keys, steps, points, notes, after = rec.load("answer")(q)
     notes = _circle_notes(method, notes, rounding)
     added = Theory(
         (theory.DERIVATION, *derivation(q)) if derivation is not None else (),
@@ -267,6 +267,7 @@ def circle_solution(
             tables=(symmetry_table(points, images, ixc, iyc),),
             symmetry=8,
             center=(ixc, iyc),
+            next_pixel=after,  # the method's Parts.next_pixel
         ),
         plot=Plot(
             pixels=lambda: pixels(symmetric_pixels(points(), ixc, iyc)),
@@ -415,7 +416,7 @@ def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> Parts:
         def points() -> Iterator[Pixel]:
             return (st.pixel for st in steps())
 
-        return (
+        return Parts(
             "Midpoint circle algorithm",
             derived,
             _MIDPOINT_NOTES_COLUMNS,
@@ -430,7 +431,7 @@ def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> Parts:
         for st in gen():
             yield st.pixel
 
-    return (
+    return Parts(
         "Midpoint circle algorithm",
         derived,
         _MIDPOINT_COLUMNS,
@@ -438,6 +439,7 @@ def _midpoint_parts(r: int, knobs: dict[str, str], layout: str) -> Parts:
         gen,
         textbook_points,
         notes,
+        next_pixel=True,  # _MIDPOINT_COLUMNS: row k plots (x_{k+1}, y_{k+1})
     )
 
 
@@ -483,7 +485,7 @@ def _general_parts(r: int, knobs: dict[str, str]) -> Parts:
     def points() -> Iterator[Pixel]:
         return (st.pixel for st in general(r, tie, loop))
 
-    return (
+    return Parts(
         "Circle by the notes' general method",
         derived,
         columns,
@@ -541,4 +543,6 @@ def _bresenham_parts(r: int, tie: str, xstep: str = "last") -> Parts:
     def steps() -> Iterator[Step]:
         return bresenham(r, tie, xstep)
 
-    return ("Bresenham's circle algorithm", derived, columns, (), steps, pixels_of(steps), notes)
+    return Parts(
+        "Bresenham's circle algorithm", derived, columns, (), steps, pixels_of(steps), notes
+    )

@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator
 from fractions import Fraction
+from typing import NamedTuple
 
 from ...algorithms.circles import (
     SQRT_PLACES,
@@ -20,15 +21,21 @@ from ...algorithms.conventions import rounder
 from ...core.numeric import fmt, fmt_value
 from ...core.records import Column, Pixel, Quantity, Step, heading, rule, worked
 
-Parts = tuple[
-    str,
-    tuple[Quantity, ...],
-    tuple[Column, ...],
-    tuple[str, ...],
-    Callable[[], Iterator[Step]],
-    Callable[[], Iterator[Pixel]],
-    tuple[str, ...],
-]
+
+class Parts(NamedTuple):
+    """A circle method's octant answer, as its record's ``answer`` gives it:
+    :func:`~scanconv.answers.primitives.circle.circle_solution` mirrors it 8 ways."""
+
+    title: str
+    derived: tuple[Quantity, ...]
+    columns: tuple[Column, ...]
+    extra_keys: tuple[str, ...]
+    steps: Callable[[], Iterator[Step]]
+    points: Callable[[], Iterator[Pixel]]
+    """The octant points, relative to the centre."""
+    notes: tuple[str, ...]
+    next_pixel: bool = False
+    """Row k's point is ``(x_{k+1}, y_{k+1})`` (:attr:`~scanconv.core.records.Walk.next_pixel`)."""
 
 
 def pixels_of(gen: Callable[[], Iterator[Step]]) -> Callable[[], Iterator[Pixel]]:
@@ -71,7 +78,7 @@ def polynomial_parts(r: int, rounding: str) -> Parts:
     def steps() -> Iterator[Step]:
         return polynomial(r, rounding)
 
-    return (
+    return Parts(
         "Circle by the polynomial (square-root) method",
         derived,
         columns,
@@ -122,7 +129,7 @@ def trig_parts(r: int, rounding: str) -> Parts:
     def steps() -> Iterator[Step]:
         return trig(r, rounding)
 
-    return (
+    return Parts(
         "Circle by the parametric (trigonometric) method",
         derived,
         columns,
@@ -175,7 +182,7 @@ def sdda_parts(r: int, rounding: str) -> Parts:
     def steps() -> Iterator[Step]:
         return symmetric_dda(r, rounding)
 
-    return (
+    return Parts(
         "Circle by the symmetric DDA",
         derived,
         columns,

@@ -322,6 +322,7 @@ def midpoint_answer(q: EllipseQuestion) -> Solution:
             region_p=("p1_k", "p2_k"),  # the p columns of the region tables
             symmetry=4,
             center=(e.xc, e.yc),
+            next_pixel=True,  # _region_columns: row k plots (x_{k+1}, y_{k+1})
         ),
         plot=Plot(
             pixels=lambda: symmetric_pixels(points(), e.xc, e.yc),

@@ -362,7 +362,8 @@ def _bresenham_solution(
         for s in bresenham(ix1, iy1, ix2, iy2, tie, start):
             yield s.pixel
 
-    pixel_head = "(x_k, y_k)" if layout == "notes" else "(x_{k+1}, y_{k+1})"
+    after = layout != "notes"  # the textbooks' rows: row k plots the pixel its decision reaches
+    pixel_head = "(x_{k+1}, y_{k+1})" if after else "(x_k, y_k)"
     return Solution(
         primitive="line",
         algorithm="bresenham",
@@ -380,6 +381,7 @@ def _bresenham_solution(
             ),
             extra_keys=("p_next",),
             steps=steps,
+            next_pixel=after,
         ),
         plot=Plot(
             pixels=pixels,

@@ -30,6 +30,7 @@ from ...core.records import (
     step_getter,
 )
 from .. import methods
+from ..asked import ClipLineQuestion
 from ..primitives.line import line_solution
 from ._shared import check_rect, fits, point_quantity, pt, pt_approx, rect_quantity, rect_text
 from .clip.rectangle import check_method
@@ -38,6 +39,7 @@ from .viewport import mapping_table, scale_parts
 
 if TYPE_CHECKING:
     from ...algorithms import polygon
+    from ...core.choices import LineClipMethodName
 else:
     polygon = lazy.module("scanconv.algorithms.polygon")
 
@@ -86,12 +88,14 @@ _LINE_NOTES = (
 )
 
 
-def _check_line_method(algo: str, clip: str) -> None:
-    check_method(clip, "clip")
+def _check_line_method(algo: str, clip: str) -> LineClipMethodName:
+    """The clipping method, checked (and the line algorithm)."""
+    name = check_method(clip, "clip")
     if algo not in ALGORITHMS:
         raise InputError(
             f"unknown line algorithm {algo!r} (choose from {', '.join(ALGORITHMS)})", "algo"
         )
+    return name
 
 
 def _clipped_quantity(seg: tuple[tuple[Number, Number], ...]) -> Quantity:
@@ -213,11 +217,11 @@ def pipeline_line(
     """:func:`pipeline_line_solution` with each stage's end points as values."""
     w = check_rect(window, "window", "window")
     v = check_rect(viewport, "viewport", "viewport")
-    _check_line_method(algo, clip)
+    name = _check_line_method(algo, clip)
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
-    record = methods.method("clip", clip)
+    record = methods.method("clip", name)
     derived = [_stage(f"1. clip in world coordinates ({record.short})")]
-    clip_work, clip_tables, seg = record.load("stage")(p1, p2, w)
+    clip_work, clip_tables, seg = record.load("stage")(ClipLineQuestion(name, p1, p2, w))
     derived += clip_work
     tables = [Table(f"Stage 1, clipping: {t.title}", t.columns, t.rows) for t in clip_tables]
     notes = list(_LINE_NOTES)

@@ -12,9 +12,9 @@ projection is.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from fractions import Fraction
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple, cast
 
 from ...algorithms import projection as pj
 from ...algorithms import space
@@ -25,6 +25,7 @@ from ...core.checks import InputError
 from ...core.ideal import Polyline
 from ...core.numeric import Number, fmt_short
 from ...core.records import Plot, Quantity, Solution, Table, Walk, heading, worked
+from ..asked import ProjectionQuestion
 from ..methods import method
 from ..process._shared import json_scalar, matrix_json, text
 from ..process.transform import _tex_deg, parse_angle
@@ -43,6 +44,9 @@ from .transform import (
     stage_matrices,
     vertices_given,
 )
+
+if TYPE_CHECKING:
+    from ..asked import CentreOfProjection, ObliqueAngle
 
 FIGURE_CELLS = 24
 """The drawn figure's longer side, in grid cells: the projected solid is scaled to it."""
@@ -89,11 +93,11 @@ class Built(NamedTuple):
     knobs: tuple[str, ...] = ()
 
 
-Builder = Callable[[dict[str, Any], dict[str, str], int], Built]
+Builder = Callable[[ProjectionQuestion], Built]
 
 
-def orthographic(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
-    view = a.get("view") or "xy"
+def orthographic(q: ProjectionQuestion) -> Built:
+    view = q.view or "xy"
     zero = "xyz"[3 - sum(pj.VIEWS[view])]
     p = pj.orthographic(view)
     label = f"orthographic projection onto the {view} plane ({zero} = 0)"
@@ -118,7 +122,7 @@ def _axonometric(
     return Built(factors, work, label, reads=reads, foreshortening=True)
 
 
-def isometric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+def isometric(q: ProjectionQuestion) -> Built:
     work = [
         worked(
             "angles",
@@ -128,17 +132,17 @@ def isometric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
             "(\\theta \\approx 35.26^\\circ)",
         )
     ]
-    return _axonometric("isometric", pj.ISOMETRIC, work, ("45°", "θ"), sense, ())
+    return _axonometric("isometric", pj.ISOMETRIC, work, ("45°", "θ"), q.sense, ())
 
 
-def dimetric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
-    f = a.get("ratio") or Fraction(1, 2)
+def dimetric(q: ProjectionQuestion) -> Built:
+    f = q.ratio or Fraction(1, 2)
     if not 0 < f <= 1:
         raise InputError(
             f"dimetric: the z axis's foreshortening ratio must be in (0, 1], got {fmt_short(f)}",
             "ratio",
         )
-    (cp, sp), (ct, st) = cs = pj.dimetric(f)
+    (cp, sp), (ct, st) = cs = pj.dimetric(Fraction(f))
     work = [
         worked(
             "angles",
@@ -148,37 +152,34 @@ def dimetric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
             f"{text(sp, True)},\\ \\cos\\phi = {text(cp, True)}",
         )
     ]
-    return _axonometric("dimetric", cs, work, ("φ", "θ"), sense, ("ratio",))
+    return _axonometric("dimetric", cs, work, ("φ", "θ"), q.sense, ("ratio",))
 
 
-def trimetric(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+def trimetric(q: ProjectionQuestion) -> Built:
     phi, theta = (
-        _degrees(w, d, "angles")
-        for w, d in zip(a.get("angles") or (None, None), (30, 45), strict=True)
+        _degrees(w, d, "angles") for w, d in zip(q.angles or (None, None), (30, 45), strict=True)
     )
     cs = (_trig(phi, "angles"), _trig(theta, "angles"))
     return _axonometric(
-        "trimetric", cs, [], (f"{fmt_short(phi)}°", f"{fmt_short(theta)}°"), sense, ("angles",)
+        "trimetric", cs, [], (f"{fmt_short(phi)}°", f"{fmt_short(theta)}°"), q.sense, ("angles",)
     )
 
 
-def _oblique(
-    kind: str, ratio: Scalar | None, how: str, a: dict[str, Any], used: dict[str, str]
-) -> Built:
+def _oblique(kind: str, ratio: Scalar | None, how: str, q: ProjectionQuestion) -> Built:
     reads: tuple[str, ...] = ("angle",)
-    if used["oblique-angle"] == "projector" and ratio is None:
-        alpha = _degrees(a.get("angle"), 45, "angle")
+    if q.oblique_angle == "projector" and ratio is None:
+        alpha = _degrees(q.angle, 45, "angle")
         ca, sa = _trig(alpha, "angle")
         if sa == 0:
             raise InputError("the projectors cannot be parallel to the view plane (α = 0)", "angle")
         ratio = simplify(Radical.of(ca) / sa)
-        phi = _degrees(a.get("receding"), 45, "receding")
+        phi = _degrees(q.receding, 45, "receding")
         how = f"L_1 = \\cos\\alpha/\\sin\\alpha,\\ \\alpha = {fmt_short(alpha)}^\\circ: L_1 = {text(ratio, True)}"
         reads += ("receding",)
     else:
-        phi = _degrees(a.get("angle"), 45, "angle")
+        phi = _degrees(q.angle, 45, "angle")
         if ratio is None:
-            ratio = a.get("ratio") or Fraction(1, 2)
+            ratio = q.ratio or Fraction(1, 2)
             how = f"L_1 = {text(ratio, True)}"
             reads += ("ratio",)
     c, s = _trig(phi, "angle")
@@ -201,21 +202,20 @@ def _oblique(
     )
 
 
-def oblique(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
-    return _oblique("oblique", None, "", a, used)
+def oblique(q: ProjectionQuestion) -> Built:
+    return _oblique("oblique", None, "", q)
 
 
-def cavalier(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
-    return _oblique("cavalier", 1, "L_1 = 1\\ \\text{(cavalier: } \\alpha = 45^\\circ)", a, used)
+def cavalier(q: ProjectionQuestion) -> Built:
+    return _oblique("cavalier", 1, "L_1 = 1\\ \\text{(cavalier: } \\alpha = 45^\\circ)", q)
 
 
-def cabinet(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
+def cabinet(q: ProjectionQuestion) -> Built:
     return _oblique(
         "cabinet",
         Fraction(1, 2),
         "L_1 = 1/2\\ \\text{(cabinet: } \\tan\\alpha = 2,\\ \\alpha \\approx 63.43^\\circ)",
-        a,
-        used,
+        q,
     )
 
 
@@ -231,12 +231,12 @@ def _turn(axis: str, word: str | None, default: int, what: str, sense: int) -> F
 
 
 def _perspective(
-    kind: str, turns: list[Factor], a: dict[str, Any], used: dict[str, str], reads: tuple[str, ...]
+    kind: str, turns: list[Factor], q: ProjectionQuestion, reads: tuple[str, ...]
 ) -> Built:
-    d = Fraction(a.get("d") or 1)
+    d = Fraction(q.d or 1)
     if d <= 0:
         raise InputError(f"the distance d must be positive, got {fmt_short(d)}", "d")
-    cop = used["cop"]
+    cop = q.cop
     centre = {
         "minus-d": f"(0, 0, -{fmt_short(d)}), view plane z = 0",
         "plus-d": f"(0, 0, {fmt_short(d)}), view plane z = 0",
@@ -260,20 +260,18 @@ def _perspective(
     return Built(factors, work, label, reads=("d", *reads), vanishing=True, knobs=("cop",))
 
 
-def one_point(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
-    return _perspective("one-point", [], a, used, ())
+def one_point(q: ProjectionQuestion) -> Built:
+    return _perspective("one-point", [], q, ())
 
 
-def two_point(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
-    return _perspective(
-        "two-point", [_turn("y", a.get("angle"), 30, "angle", sense)], a, used, ("angle",)
-    )
+def two_point(q: ProjectionQuestion) -> Built:
+    return _perspective("two-point", [_turn("y", q.angle, 30, "angle", q.sense)], q, ("angle",))
 
 
-def three_point(a: dict[str, Any], used: dict[str, str], sense: int) -> Built:
-    phi, theta = a.get("angles") or (None, None)
-    turns = [_turn("y", phi, 30, "angles", sense), _turn("x", theta, 30, "angles", sense)]
-    return _perspective("three-point", turns, a, used, ("angles",))
+def three_point(q: ProjectionQuestion) -> Built:
+    phi, theta = q.angles or (None, None)
+    turns = [_turn("y", phi, 30, "angles", q.sense), _turn("x", theta, 30, "angles", q.sense)]
+    return _perspective("three-point", turns, q, ("angles",))
 
 
 def _figure(s: space.Solid, uv: Sequence[tuple[Scalar, Scalar]], title: str) -> Plot:
@@ -408,6 +406,20 @@ def _vertex_table(
     return Table("Projected vertices", tuple(cols), rows)
 
 
+def projection_question(kind: str, used: Mapping[str, str], sense: int) -> ProjectionQuestion:
+    """The question of the projection ``kind`` with no option given, under the conventions
+    ``used`` (:func:`~scanconv.algorithms.space_conventions.resolve`'s, each checked against
+    its choices) and ``sense`` (1 or -1).
+
+    >>> from scanconv.algorithms.space_conventions import resolve
+    >>> projection_question("one-point", resolve(None, {}), 1).cop  # Hearn & Baker's
+    'plus-d'
+    """
+    oblique = cast("ObliqueAngle", used["oblique-angle"])  # each one of SPACE_KNOBS' choices
+    cop = cast("CentreOfProjection", used["cop"])
+    return ProjectionQuestion(kind, oblique, cop, 1 if sense == 1 else -1)
+
+
 def project_solution(
     words: Sequence[str],
     solid: str | None = None,
@@ -435,11 +447,13 @@ def project_solution(
     if (parallel is None) == (perspective is None):
         raise InputError("choose one projection, a parallel or a perspective one", "parallel")
     kind = str(parallel or perspective)
-    a: dict[str, Any] = {"view": view, "angle": angle, "receding": receding, "angles": angles}
-    a |= {"ratio": ratio, "d": d}
-    built: Built = method("3d", kind).load("generator")(a, used, sense)
-    for name, value in a.items():
-        if value is not None and name not in built.reads:
+    pair = None if angles is None else tuple(angles)
+    q = projection_question(kind, used, sense)._replace(
+        view=view, angle=angle, receding=receding, angles=pair, ratio=ratio, d=d
+    )
+    built: Built = method("3d", kind).load("generator")(q)
+    for name in q.given():
+        if name not in built.reads:
             raise InputError(f"--{name} does not apply to the {kind} projection", name)
     label = built.label
     all_stages = [*stages, Stage(label, tuple(built.factors), tuple(built.work), True)]
@@ -478,7 +492,7 @@ def project_solution(
     )
     if rough:
         notes.append("Values with square roots are exact; the figure rounds them half up.")
-    return Solution(
+    sol = Solution(
         primitive="3d-project",
         algorithm=kind,
         title=f"3D projection of {s.title}: {label}",
@@ -489,3 +503,5 @@ def project_solution(
         plot=_figure(s, uv, label),
         data=data,
     )
+    sol.question = q
+    return sol

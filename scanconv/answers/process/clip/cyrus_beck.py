@@ -5,7 +5,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ....algorithms.cyrus_beck import CBResult, cyrus_beck
 from ....core.checks import InputError
@@ -14,6 +14,9 @@ from ....core.numeric import Number, fmt_short, normalize
 from ....core.records import Plot, Quantity, Solution, Table, Walk, heading, rule, worked
 from .._shared import Clipped, pt
 from ._shared import corners
+
+if TYPE_CHECKING:
+    from ...asked import ClipLineQuestion
 
 
 def _vertices(coords: Sequence[Number], param: str) -> list[tuple[Number, Number]]:
@@ -160,23 +163,16 @@ def cyrus_beck_solution(
     )
 
 
-def rectangle_clipped(
-    p0: tuple[Number, Number], p1: tuple[Number, Number], w: Sequence[Number]
-) -> Clipped:
-    """Cyrus-Beck with the rectangle ``w`` as its convex window (the record's ``stage``)."""
-    return cyrus_beck_clipped(p0, p1, corners(w))
+def rectangle_clipped(q: ClipLineQuestion) -> Clipped:
+    """Cyrus-Beck with the question's rectangle as its convex window (the record's
+    ``stage``)."""
+    normals, ends = q.normals or "outward", q.ends or "exact"
+    return cyrus_beck_clipped(q.p1, q.p2, corners(q.window), normals, ends)
 
 
-def rectangle_solution(
-    x1: Number,
-    y1: Number,
-    x2: Number,
-    y2: Number,
-    window: Sequence[Number],
-    *,
-    normals: str = "outward",
-    ends: str = "exact",
-) -> Solution:
-    """:func:`cyrus_beck_solution` with the rectangle ``window`` as the convex window."""
-    flat = [c for p in corners(window) for c in p]
-    return cyrus_beck_solution(x1, y1, x2, y2, flat, normals=normals, ends=ends)
+def rectangle_solution(q: ClipLineQuestion) -> Solution:
+    """:func:`cyrus_beck_solution` with the question's rectangle as the convex window (the
+    record's ``answer``)."""
+    flat = [c for p in corners(q.window) for c in p]
+    normals, ends = q.normals or "outward", q.ends or "exact"
+    return cyrus_beck_solution(*q.p1, *q.p2, flat, normals=normals, ends=ends)

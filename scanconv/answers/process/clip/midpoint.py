@@ -5,7 +5,7 @@ visible part (:mod:`scanconv.algorithms.midpoint_clip`)."""
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ....algorithms.clipping import Rect
 from ....algorithms.midpoint_clip import Piece, subdivide, visible
@@ -14,6 +14,9 @@ from ....core.ideal import IdealLine
 from ....core.numeric import Number, fmt_short, normalize
 from ....core.records import Plot, Quantity, Solution, Table, Walk, heading, rule, worked
 from .._shared import pt
+
+if TYPE_CHECKING:
+    from ...asked import ClipLineQuestion
 
 
 def _code(c: int | None) -> str:
@@ -71,6 +74,12 @@ def _rules(midpoint: str, stop: str) -> tuple[Quantity, ...]:
         rule("stop", r"\text{a piece one unit long keeps its inside end}"),
         *((edge,) if stop == "edge" else ()),
     )
+
+
+def midpoint_answer(q: ClipLineQuestion) -> Solution:
+    """:func:`midpoint_clip_solution` of the question (the record's ``answer``)."""
+    midpoint, stop = q.midpoint or "rounded", q.stop or "length"
+    return midpoint_clip_solution(*q.p1, *q.p2, q.window, midpoint=midpoint, stop=stop)
 
 
 def midpoint_clip_solution(

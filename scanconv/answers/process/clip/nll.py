@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ....algorithms.clipping import Edge, Point, Rect
 from ....algorithms.nll import EDGE_OF, REGION_NAMES, NLLResult, nicholl_lee_nicholl
@@ -22,6 +22,9 @@ from .._shared import (
     rect_quantity,
 )
 from ._shared import clipped_quantity, code_reason
+
+if TYPE_CHECKING:
+    from ...asked import ClipLineQuestion
 
 _LIMIT = {"L": "x_{\\min}", "R": "x_{\\max}", "B": "y_{\\min}", "T": "y_{\\max}"}
 
@@ -131,10 +134,14 @@ def _crossing_line(p1: Point, p2: Point, role: str, edge: Edge, point: Point) ->
     return worked(f"{role}_{letter}", point, f"\\text{{{role}, {edge.value} edge: }} {tex}")
 
 
-def nll_clipped(p1: Point, p2: Point, w: Rect, result: NLLResult | None = None) -> Clipped:
+def nll_clipped(q: ClipLineQuestion) -> Clipped:
+    """NLL's working against the question's rectangle (the record's ``stage``)."""
+    return _clipped(q.p1, q.p2, q.window, nicholl_lee_nicholl(q.p1, q.p2, q.window))
+
+
+def _clipped(p1: Point, p2: Point, w: Rect, result: NLLResult) -> Clipped:
     """NLL's working (P1's region, the slopes, P2's region, the crossings), its tests table and
-    the clipped segment (``result``: the run, if it is done already)."""
-    result = result or nicholl_lee_nicholl(p1, p2, w)
+    the clipped segment of the run ``result``."""
     why = code_reason(p1, w) if result.region1 else "code 0000"
     derived: list[Quantity] = [
         worked("region1", result.region1 or "inside",
@@ -154,6 +161,11 @@ def nll_clipped(p1: Point, p2: Point, w: Rect, result: NLLResult | None = None) 
     return Clipped(derived, [_tests_table(result)], result.segment)
 
 
+def nll_answer(q: ClipLineQuestion) -> Solution:
+    """:func:`nll_solution` of the question (the record's ``answer``)."""
+    return nll_solution(*q.p1, *q.p2, q.window)
+
+
 def nll_solution(
     x1: Number, y1: Number, x2: Number, y2: Number, window: Sequence[Number]
 ) -> Solution:
@@ -166,7 +178,7 @@ def nll_solution(
     w = check_rect(window, "window", "window")
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
     result = nicholl_lee_nicholl(p1, p2, w)
-    clipped = nll_clipped(p1, p2, w, result)
+    clipped = _clipped(p1, p2, w, result)
     seg = clipped.segment
     derived = [*clipped.working, clipped_quantity(seg)]
     notes = (

@@ -7,9 +7,9 @@ Every intersection is exact: table cells show ``39/5`` or ``7.8``, never a round
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 from ....algorithms.clipping import (
     EDGES,
@@ -27,6 +27,7 @@ from ....core.checks import InputError
 from ....core.numeric import Number, fmt_paren, fmt_short, normalize
 from ....core.records import Column, Plot, Quantity, Solution, Table, Walk
 from ... import methods
+from ...asked import ClipLineQuestion
 from .._shared import (
     Clipped,
     check_rect,
@@ -40,20 +41,29 @@ from .._shared import (
 )
 from ._shared import clipped_quantity, code_reason
 
+if TYPE_CHECKING:
+    from ....core.choices import (
+        ClipEndsName,
+        LineClipMethodName,
+        MidpointName,
+        MidpointStopName,
+        NormalsName,
+    )
+
 LINE_METHODS = tuple(m.value for m in LineClipMethod)
 """The line clipping methods, by name."""
 
 
-def cohen_sutherland_clipped(p1: Point, p2: Point, w: Rect) -> Clipped:
-    """Cohen-Sutherland's working against the rectangle ``w`` (the record's ``stage``)."""
-    cs = cohen_sutherland(p1, p2, w)
-    return Clipped(*cs_parts(p1, p2, w, cs), cs.segment)
+def cohen_sutherland_clipped(q: ClipLineQuestion) -> Clipped:
+    """Cohen-Sutherland's working against the question's rectangle (the record's ``stage``)."""
+    cs = cohen_sutherland(q.p1, q.p2, q.window)
+    return Clipped(*cs_parts(q.p1, q.p2, q.window, cs), cs.segment)
 
 
-def liang_barsky_clipped(p1: Point, p2: Point, w: Rect) -> Clipped:
-    """Liang-Barsky's working against the rectangle ``w`` (the record's ``stage``)."""
-    lb = liang_barsky(p1, p2, w)
-    return Clipped(*lb_parts(p1, p2, w, lb), lb.segment)
+def liang_barsky_clipped(q: ClipLineQuestion) -> Clipped:
+    """Liang-Barsky's working against the question's rectangle (the record's ``stage``)."""
+    lb = liang_barsky(q.p1, q.p2, q.window)
+    return Clipped(*lb_parts(q.p1, q.p2, q.window, lb), lb.segment)
 
 
 _CS_NOTES = (
@@ -320,7 +330,7 @@ def lb_parts(p1: Point, p2: Point, w: Rect, r: LBResult) -> tuple[list[Quantity]
     ]
 
 
-def check_method(method: str, param: str = "method") -> str:
+def check_method(method: str, param: str = "method") -> LineClipMethodName:
     """``method`` if it is one of :data:`LINE_METHODS`, else InputError naming the choices;
     for the pipeline (``param`` ``clip``), one whose record has a rectangle ``stage``."""
     if method not in LINE_METHODS:
@@ -335,7 +345,16 @@ def check_method(method: str, param: str = "method") -> str:
             "midpoints may leave several pieces)",
             param,
         )
-    return method
+    return cast("LineClipMethodName", method)  # one of LINE_METHODS, the Literal's values
+
+
+def only_its_own(method: str, conventions: Iterable[str]) -> None:
+    """Refuse a convention given to a method it does not apply to (its record's
+    ``options``)."""
+    for param in conventions:
+        owners = [m for m in methods.METHODS.values() if m.command == "clip" and param in m.options]
+        if not any(m.name == method for m in owners):
+            raise InputError(f"{param} applies to {owners[0].name} only, not to {method}", param)
 
 
 def clip_line_solution(
@@ -345,46 +364,48 @@ def clip_line_solution(
     y2: Number,
     window: Sequence[Number],
     method: str = "cohen-sutherland",
+    *,
+    normals: NormalsName | None = None,
+    ends: ClipEndsName | None = None,
+    midpoint: MidpointName | None = None,
+    stop: MidpointStopName | None = None,
 ) -> Solution:
-    """The worked answer of clipping the segment P1 P2 against ``window`` by ``method``
-    (its record's answer).
+    """The worked answer of clipping the segment P1 P2 against ``window`` by ``method``: its
+    record's answer to the question (:class:`~scanconv.answers.asked.ClipLineQuestion`),
+    which the answer keeps. A convention (``normals``, ``ends``: Cyrus-Beck's; ``midpoint``,
+    ``stop``: midpoint subdivision's) given to another method is refused.
 
     >>> sol = clip_line_solution(7, 9, 11, 4, (4, 4, 10, 8))
     >>> sol.derived[-1].text
     'clipped segment: (7.8, 8) to (10, 5.25)'
+    >>> sol.question.key
+    'clip/cohen-sutherland'
     """
+    given = dict(normals=normals, ends=ends, midpoint=midpoint, stop=stop)
+    only_its_own(method, [param for param, value in given.items() if value is not None])
+    name = check_method(method)
     w = check_rect(window, "window", "window")
-    answer = methods.method("clip", check_method(method)).load("answer")
-    return answer(x1, y1, x2, y2, w)  # type: ignore[no-any-return]
-
-
-def cohen_sutherland_answer(
-    x1: Number, y1: Number, x2: Number, y2: Number, window: Sequence[Number]
-) -> Solution:
-    """Cohen-Sutherland clipping of the segment P1 P2 against ``window``."""
-    return _answer(x1, y1, x2, y2, window, "cohen-sutherland", _CS_NOTES)
-
-
-def liang_barsky_answer(
-    x1: Number, y1: Number, x2: Number, y2: Number, window: Sequence[Number]
-) -> Solution:
-    """Liang-Barsky clipping of the segment P1 P2 against ``window``."""
-    return _answer(x1, y1, x2, y2, window, "liang-barsky", _PARAMETRIC)
-
-
-def _answer(
-    x1: Number,
-    y1: Number,
-    x2: Number,
-    y2: Number,
-    window: Sequence[Number],
-    name: str,
-    method_notes: tuple[str, ...],
-) -> Solution:
-    w = check_rect(window, "window", "window")
-    record = methods.method("clip", name)
     p1, p2 = (normalize(x1), normalize(y1)), (normalize(x2), normalize(y2))
-    derived, tables, seg = record.load("stage")(p1, p2, w)
+    q = ClipLineQuestion(name, p1, p2, w, normals, ends, midpoint, stop)
+    sol: Solution = methods.method("clip", name).load("answer")(q)
+    sol.question = q
+    return sol
+
+
+def cohen_sutherland_answer(q: ClipLineQuestion) -> Solution:
+    """Cohen-Sutherland clipping of the question's segment against its window."""
+    return _answer(q, "cohen-sutherland", _CS_NOTES)
+
+
+def liang_barsky_answer(q: ClipLineQuestion) -> Solution:
+    """Liang-Barsky clipping of the question's segment against its window."""
+    return _answer(q, "liang-barsky", _PARAMETRIC)
+
+
+def _answer(q: ClipLineQuestion, name: str, method_notes: tuple[str, ...]) -> Solution:
+    record = methods.method("clip", name)
+    p1, p2, w = q.p1, q.p2, q.window
+    derived, tables, seg = record.load("stage")(q)
     derived.append(clipped_quantity(seg))
     notes = [
         "The window is closed: a point on an edge is inside (code 0000), so a segment along an edge or through a corner is kept.",

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ....algorithms.clipping import (
     Edge,
@@ -38,6 +38,9 @@ from .._shared import (
     rect_text,
     window_figure,
 )
+
+if TYPE_CHECKING:
+    from ...asked import ClipPolygonQuestion
 
 MAX_VERTICES = 100
 """Most vertices of a clipped polygon (one table row per edge for each window edge)."""
@@ -248,10 +251,10 @@ def clip_polygon_window_solution(
     )
 
 
-def polygon_answer(vertices: Sequence[Number], window: Sequence[Number], polygon: bool) -> Solution:
-    """The polygon clipped against ``window``: a convex polygon's ``x y x y ...`` if
-    ``polygon`` (a pass per edge), else the rectangle ``(xmin, ymin, xmax, ymax)`` (four
-    passes)."""
-    if polygon:
-        return clip_polygon_window_solution(vertices, window)
-    return clip_polygon_solution(vertices, window)
+def polygon_answer(q: ClipPolygonQuestion) -> Solution:
+    """The question's polygon clipped against its window: a convex polygon's ``x y x y ...``
+    (a pass per edge), or the rectangle ``(xmin, ymin, xmax, ymax)`` (four passes) (the
+    record's ``answer``)."""
+    if q.polygon:
+        return clip_polygon_window_solution(q.vertices, q.window)
+    return clip_polygon_solution(q.vertices, q.window)

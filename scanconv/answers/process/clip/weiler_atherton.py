@@ -5,7 +5,7 @@ crossings inserted and labelled in/out, each walk, and the output polygons
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ....algorithms.weiler_atherton import Entry, weiler_atherton
 from ....core.checks import InputError
@@ -14,6 +14,9 @@ from ....core.numeric import Number, normalize
 from ....core.records import Plot, Solution, Table, Walk, heading, rule, worked
 from .._shared import pt
 from ._shared import corners
+
+if TYPE_CHECKING:
+    from ...asked import ClipPolygonQuestion
 
 
 def _points(coords: Sequence[Number], name: str) -> list[tuple[Number, Number]]:
@@ -111,8 +114,8 @@ def weiler_atherton_solution(subject: Sequence[Number], clip: Sequence[Number]) 
     )
 
 
-def polygon_answer(vertices: Sequence[Number], window: Sequence[Number], polygon: bool) -> Solution:
-    """The polygon clipped against ``window``: a polygon's ``x y x y ...`` if ``polygon``, else
-    the rectangle ``(xmin, ymin, xmax, ymax)``."""
-    shape = window if polygon else [c for p in corners(window) for c in p]
-    return weiler_atherton_solution(vertices, shape)
+def polygon_answer(q: ClipPolygonQuestion) -> Solution:
+    """The question's polygon clipped against its window: a polygon's ``x y x y ...``, or the
+    rectangle ``(xmin, ymin, xmax, ymax)`` (the record's ``answer``)."""
+    shape = q.window if q.polygon else [c for p in corners(q.window) for c in p]
+    return weiler_atherton_solution(q.vertices, shape)

@@ -4,7 +4,7 @@ the stack or queue, then the filled grid, and the 4/8 leak explained where it ha
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 from ....algorithms.polygon import check_polygon, outline_pixels, vertices_from_coords
 from ....algorithms.seedfill import (
@@ -18,6 +18,7 @@ from ....algorithms.seedfill import (
     FillStep,
     Grid,
     SpanStep,
+    check_fill,
     check_size,
     grid_around,
     seed_fill,
@@ -40,6 +41,11 @@ from ....core.records import (
 )
 from ....core.working import tex_text
 from ... import methods
+from ...asked import FillQuestion
+
+if TYPE_CHECKING:
+    from ....core.choices import FillMethodName, OrderName
+    from ...asked import Connectivity
 
 GRID_CHARS = {"#": BOUNDARY, ".": EMPTY, "*": FILLED}
 """How a grid given as text is read: ``#`` boundary, ``.`` empty, ``*`` already the fill
@@ -310,50 +316,55 @@ def seed_fill_solution(
 ) -> Solution:
     """Boundary or flood fill (``span``: the scan-line seed fill) over a polygon's Bresenham
     outline (``vertices``: ``x1 y1 x2 y2 ...``) or over a grid given as text ``rows``: the
-    answer of ``method``'s record.
+    answer of ``method``'s record to the question (:class:`~scanconv.answers.asked.FillQuestion`),
+    which the answer keeps.
 
     >>> sol = seed_fill_solution("boundary", (1, 1), rows=["####", "#..#", "####"])
     >>> [r[1] for r in sol.tables[0].rows()]
     ['(1, 1)', '(2, 1)']
+    >>> sol.question.connectivity, sol.question.order
+    (4, 'stack')
     """
     if method not in METHODS:
         raise InputError(f"unknown fill {method!r} (choose from {', '.join(METHODS)})", "method")
     answer = methods.method("fill", method).load("answer")
-    return answer(  # type: ignore[no-any-return]
-        seed, vertices=vertices, rows=rows, connectivity=connectivity, order=order, span=span
-    )
+    sx, sy = _check_fill(seed, vertices, rows, order)
+    check_fill(method, connectivity, order)
+    q = FillQuestion(
+        cast("FillMethodName", method),
+        (sx, sy),
+        None if vertices is None else tuple(vertices),
+        None if rows is None else tuple(rows),
+        cast("Connectivity", connectivity),
+        cast("OrderName", order),
+        span,
+    )  # each choice checked above
+    sol: Solution = answer(q)
+    sol.question = q
+    return sol
 
 
-def boundary_answer(seed: Sequence[Number], **given: Any) -> Solution:
+def boundary_answer(q: FillQuestion) -> Solution:
     """Boundary fill: a cell is filled when its colour is neither the boundary's nor the
     fill's."""
-    return _fill_solution("boundary", lambda seed_colour: _BOUNDARY_TEST, seed, **given)
+    return _fill_solution("boundary", lambda seed_colour: _BOUNDARY_TEST, q)
 
 
-def flood_answer(seed: Sequence[Number], **given: Any) -> Solution:
+def flood_answer(q: FillQuestion) -> Solution:
     """Flood fill: a cell is filled when it has the seed's colour."""
     return _fill_solution(
-        "flood", lambda seed_colour: f"colour = {seed_colour} (the seed's colour)", seed, **given
+        "flood", lambda seed_colour: f"colour = {seed_colour} (the seed's colour)", q
     )
 
 
 _BOUNDARY_TEST = "colour is neither boundary nor filled"
 
 
-def _fill_solution(
-    method: str,
-    test_of: Callable[[str], str],
-    seed: Sequence[Number],
-    *,
-    vertices: Sequence[Number] | None = None,
-    rows: Sequence[str] | None = None,
-    connectivity: int = 4,
-    order: str = "stack",
-    span: bool = False,
-) -> Solution:
-    """The fill's answer, ``test_of`` the wording of its colour test (given the seed's
-    colour's name)."""
-    sx, sy = _check_fill(seed, vertices, rows, order)
+def _fill_solution(method: str, test_of: Callable[[str], str], q: FillQuestion) -> Solution:
+    """The fill's answer by the colour test ``method``, ``test_of`` the wording of its test
+    (given the seed's colour's name)."""
+    connectivity, order, span = q.connectivity, q.order, q.span
+    vertices, rows, (sx, sy) = q.vertices, q.rows, q.seed
     grid, source = _start_grid(vertices, rows)
     names = _colour_names(rows)
     before = grid.copy()
