@@ -178,7 +178,9 @@ def zbuffer_solution(
     knobs = knobs_for("zbuffer", conventions or {}, convention)
     if far is not None:  # the buffer's first value given: no clear convention applies
         if (conventions or {}).get("clear"):
-            raise InputError("far gives the depth buffer's first value: clear cannot go with it", "far")
+            raise InputError(
+                "far gives the depth buffer's first value: clear cannot go with it", "far"
+            )
         del knobs["clear"]
     start = far if far is not None or knobs["clear"] == "farthest" else 0
     polys = polygons_from(polygons)
