@@ -763,11 +763,11 @@ ARGUMENTLESS.add(("exam",))  # a section name, no number
 VOCABULARY[("exam",)] = Vocab(
     valid=(("--contents",), ("--section", "2", "--format", "plain")),
     numbers=((), ()),
-    out_of_range=((("--section", "8"), "is not a section"),),
+    out_of_range=((("--section", "9"), "is not a section"),),
     too_few=(("--section",), "requires an argument"),
     too_many=(("extra",), "unexpected extra argument"),
     wrong_type=(("--section", "nope"), "is not a section"),
-    small={"--section": ("1", "dda", "14", "circle")},
+    small={"--section": ("1", "dda", "14", "circle", "3d")},
 )
 
 # The commands beyond lines and curves: dithering, halftones, the inside-outside test, the

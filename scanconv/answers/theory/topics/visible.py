@@ -45,8 +45,7 @@ def z_buffer() -> Solution:
         points=(
             "Polygons may come in any order: no sorting, no comparison between polygons.",
             "Memory: one depth value a pixel (often 16 to 32 bits).",
-            "Equal depths: the comparison decides (strict z > depth(x, y): the first drawn "
-            "keeps it, Hearn & Baker; z >= depth(x, y): the later wins, Foley).",
+            "Equal depths: > keeps the first drawn (Hearn & Baker), >= the later (Foley).",
             "Say which z is nearer: a larger (Hearn & Baker, C) or a smaller (OpenGL).",
         ),
         advantages=(
