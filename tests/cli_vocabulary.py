@@ -763,11 +763,11 @@ ARGUMENTLESS.add(("exam",))  # a section name, no number
 VOCABULARY[("exam",)] = Vocab(
     valid=(("--contents",), ("--section", "2", "--format", "plain")),
     numbers=((), ()),
-    out_of_range=((("--section", "8"), "is not a section"),),
+    out_of_range=((("--section", "9"), "is not a section"),),
     too_few=(("--section",), "requires an argument"),
     too_many=(("extra",), "unexpected extra argument"),
     wrong_type=(("--section", "nope"), "is not a section"),
-    small={"--section": ("1", "dda", "14", "circle")},
+    small={"--section": ("1", "dda", "14", "circle", "3d")},
 )
 
 # The commands beyond lines and curves: dithering, halftones, the inside-outside test, the
@@ -1029,6 +1029,7 @@ VOCABULARY[("3d", "backface")] = Vocab(
     small={
         "--solid": ("cube", "pyramid", "tetrahedron"),
         "--direction": ("into-scene", "to-viewer"),
+        "--convention": ("hearn-baker", "foley", "rogers"),
     },
     positional=("0", "1", "2", "-1", "1/2", ":"),
 )
@@ -1045,7 +1046,12 @@ VOCABULARY[("3d", "zbuffer")] = Vocab(
     too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
     too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
     wrong_type=(("0", "0", "1", "3", "0", "1", "0", "3"), "each vertex is x y z"),
-    small={"--size": ("3", "4x3"), "--depth": ("larger-nearer", "smaller-nearer")},
+    small={
+        "--size": ("3", "4x3"),
+        "--depth": ("larger-nearer", "smaller-nearer"),
+        "--clear": ("zero", "farthest"),
+        "--convention": ("hearn-baker", "foley", "rogers"),
+    },
     positional=("0", "1", "2", "3", "1/2", ":"),
 )
 VOCABULARY[("3d", "warnock")] = Vocab(
@@ -1061,7 +1067,11 @@ VOCABULARY[("3d", "warnock")] = Vocab(
     too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
     too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
     wrong_type=((*ZA, "--size", "6"), "2^n"),
-    small={"--size": ("2", "4"), "--ties": ("keep", "replace")},
+    small={
+        "--size": ("2", "4"),
+        "--ties": ("keep", "replace"),
+        "--convention": ("hearn-baker", "foley", "rogers"),
+    },
     positional=("0", "1", "2", "3", "1/2", ":"),
 )
 VOCABULARY[("3d", "scanline")] = Vocab(
@@ -1077,7 +1087,11 @@ VOCABULARY[("3d", "scanline")] = Vocab(
     too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
     too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
     wrong_type=(("0", "0", "1", "3", "0", "1", "0", "3"), "each vertex is x y z"),
-    small={"--size": ("3", "4x3"), "--depth": ("larger-nearer", "smaller-nearer")},
+    small={
+        "--size": ("3", "4x3"),
+        "--depth": ("larger-nearer", "smaller-nearer"),
+        "--convention": ("hearn-baker", "foley", "rogers"),
+    },
     positional=("0", "1", "2", "3", "1/2", ":"),
 )
 VOCABULARY[("3d", "depth-sort")] = Vocab(
@@ -1093,6 +1107,10 @@ VOCABULARY[("3d", "depth-sort")] = Vocab(
     too_few=(("0", "0", "1", "3", "0", "1"), "at least 3 vertices"),
     too_many=(tuple(w for _ in range(9) for w in (*ZA, ":")), "at most 8"),
     wrong_type=(("0", "0", "1", "3", "0", "1", "0", "3"), "each vertex is x y z"),
-    small={"--size": ("3", "4x3"), "--depth": ("larger-nearer", "smaller-nearer")},
+    small={
+        "--size": ("3", "4x3"),
+        "--depth": ("larger-nearer", "smaller-nearer"),
+        "--convention": ("hearn-baker", "foley", "rogers"),
+    },
     positional=("0", "1", "2", "3", "1/2", ":"),
 )

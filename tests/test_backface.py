@@ -155,7 +155,9 @@ def test_bad_input_is_one_line_and_exit_2(args: tuple[str, ...], message: str) -
 def test_the_answer_states_its_conventions() -> None:
     out = run("3d", "backface", "--solid", "pyramid", "--direction", "to-viewer", "-f", "plain").out
     assert "direction = to-viewer" in out and "edge-on = hidden" in out and "handed = right" in out
-    assert "Conventions (as given)" in out
+    # the preset (Hearn & Baker's, the default) is named, and the value given that is not its
+    assert "Conventions (preset hearn-baker: Hearn & Baker" in out
+    assert "direction = to-viewer, not the preset's into-scene" in out
 
 
 def test_check_marks_a_student_s_table_of_faces(tmp_path: Path) -> None:

@@ -421,9 +421,10 @@ def test_the_theory_topics_the_docs_count_and_list_are_the_programs():
 
 
 def _exam_counts() -> tuple[int, int]:
-    from scanconv.cli.exam import exam_sheet
+    """The notes' questions of the book (its 3D section, beyond the notes, left out)."""
+    from scanconv.cli.exam import BEYOND_NOTES, exam_sheet
 
-    questions = exam_sheet().questions
+    questions = [q for q in exam_sheet().questions if q.section != BEYOND_NOTES]
     topics = sum(1 for q in questions if q.marks == 14)
     return len(questions) - topics, topics
 

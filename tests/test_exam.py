@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from scanconv.cli.exam import exam_sheet, exam_text, pick_section
+from scanconv.cli.exam import BEYOND_NOTES, exam_sheet, exam_text, pick_section
 from scanconv.cli.sheet import answer_questions
 from scanconv.render import Format, render
 
@@ -48,11 +48,14 @@ def test_every_exam_question_of_the_notes_is_answered_in_the_shipped_file() -> N
             assert found.question.marks == 14
 
 
-def test_the_shipped_file_is_a_sheet_of_37_questions_in_7_sections() -> None:
+def test_the_shipped_file_is_the_notes_37_questions_then_the_3d_chapter_s() -> None:
     sheet = exam_sheet()
-    assert len(sheet.questions) == 37
+    assert len(sheet.questions) == 37 + 15
     sections = list(dict.fromkeys(q.section for q in sheet.questions))
-    assert len(sections) == 7 and all(q.wording for q in sheet.questions)
+    assert len(sections) == 8 and all(q.wording for q in sheet.questions)
+    # the notes' questions keep their numbers 1-37; the 3D chapter comes after, on its own
+    assert sections[-1] == BEYOND_NOTES
+    assert [q.number for q in sheet.questions if q.section == BEYOND_NOTES] == list(range(38, 53))
     assert run("exam", "--source").out == exam_text()
     assert exam_text() == (ROOT / "scanconv" / "data" / "exam.txt").read_text(encoding="utf-8")
 
@@ -70,6 +73,7 @@ def test_sections_are_picked_by_number_name_or_word() -> None:
     assert pick_section(names, "dda") == "Simple DDA algorithm"
     assert pick_section(names, "14") == "The 14-mark topics"
     assert pick_section(names, "CIRCLE DRAWING") == "Circle drawing"
+    assert pick_section(names, "3d") == pick_section(names, "8") == BEYOND_NOTES
     with pytest.raises(ValueError, match="several sections"):
         pick_section(names, "line")  # line drawing and Bresenham's line algorithm
     out = run("exam", "--section", "circle", "--format", "markdown").out
@@ -96,8 +100,8 @@ def test_the_markdown_book_opens_with_its_contents() -> None:
     out = run("exam", "--format", "markdown").out
     head, _, body = out.partition("\n## Scan conversion\n")
     listed = re.findall(r"^ {4}(\d+)\. ", head, re.M)
-    assert listed == [str(n) for n in range(1, 38)]
-    assert body.count("### Question") == 37
+    assert listed == [str(n) for n in range(1, 53)]
+    assert body.count("### Question") == 52
     assert head.index("## Contents") < len(head)
 
 
@@ -116,7 +120,7 @@ def test_the_html_book_links_its_contents_to_every_question() -> None:
 @pytest.mark.slow  # over 50 ms a case: outside the inner loop
 def test_the_json_book_has_question_section_and_answer() -> None:
     book = json.loads(run("exam", "--format", "json").out)
-    assert len(book["questions"]) == 37
+    assert len(book["questions"]) == 52
     for q in book["questions"]:
         assert q["question"] and q["section"] and q["answer"]["title"]
 
@@ -137,7 +141,7 @@ def test_the_latex_book_compiles_with_contents_and_no_overfull_box(tmp_path: Pat
     assert done.code == 0, done.log[-2000:]
     assert "Overfull" not in done.log, re.findall(r"Overfull.*", done.log)[:5]
     toc = (done.folder / "doc.toc").read_text(encoding="utf-8")
-    assert toc.count("{subsection}") == 37 and toc.count("{section}") == 7
+    assert toc.count("{subsection}") == 52 and toc.count("{section}") == 8
 
 
 def test_the_cheat_sheets_point_every_question_to_its_command() -> None:

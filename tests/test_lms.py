@@ -588,9 +588,10 @@ def test_the_whole_exam_as_a_quiz(gift_reader: GiftReader) -> None:
     """The notes' exam (``scanconv exam --source``): its theory questions are essays, every
     other question a Cloze question whose blanks hold the key, and gift-pegjs reads the
     GIFT of the same questions with the same answers."""
-    from scanconv.cli.exam import exam_text
+    from scanconv.cli.exam import BEYOND_NOTES, exam_text
 
-    xml, text, answers = documents(exam_text())
+    notes = exam_text().split(f"section: {BEYOND_NOTES}", 1)[0]  # the 3D section: below
+    xml, text, answers = documents(notes)
     questions = read_moodle(xml)
     marked = [(q, a) for q, a in zip(questions, answers, strict=True) if q.type == "cloze"]
     assert {a["primitive"] for q, a in zip(questions, answers, strict=True)
@@ -609,3 +610,32 @@ def test_the_whole_exam_as_a_quiz(gift_reader: GiftReader) -> None:
     assert len(blanks) == len(cells)
     for question, value in zip(blanks, cells, strict=True):
         assert holds(*gift_answers(question), value), (question["title"], value)
+
+
+def test_the_exam_s_3d_section_as_a_quiz(gift_reader: GiftReader) -> None:
+    """The book's 3D section: its theory questions are essays, every other question a Cloze
+    question whose blanks are key cells in the key's order (its tables' given and working
+    columns shown, not asked), the back faces' verdicts among them; the GIFT holds as many
+    blanks."""
+    from scanconv.cli.exam import BEYOND_NOTES, exam_text
+
+    section = exam_text().split(f"section: {BEYOND_NOTES}", 1)[1]
+    xml, text, answers = documents(f"section: {BEYOND_NOTES}{section}")
+    questions = read_moodle(xml)
+    assert len(questions) == 15
+    every = []
+    for q, answer in zip(questions, answers, strict=True):
+        if answer["primitive"] == "theory":
+            assert q.type == "essay"
+            continue
+        assert q.type == "cloze" and q.blanks, answer["title"]
+        cells = iter(key_cells(answer))
+        for blank in q.blanks:  # each blank holds a later key cell than the blank before
+            assert any(holds(blank.kind, blank.answers, c) for c in cells), (answer["title"], blank)
+        every += q.blanks
+        if answer["algorithm"] == "backface":
+            asked = [str(b.answers[0][0]) for b in q.blanks]
+            verdicts = [row[-1] for row in answer["tables"][0]["rows"]]
+            assert [a for a in asked if not re.fullmatch(r"-?\d+", a)] == verdicts
+    parsed = [g for g in gift_reader.parse(text) if g["type"] != "Essay"]
+    assert len(parsed) == len(every)

@@ -90,15 +90,26 @@ triangle = st.tuples(*(st.tuples(coord, coord, depth) for _ in range(3)))
     st.lists(triangle, min_size=1, max_size=4),
     st.sampled_from(["larger-nearer", "smaller-nearer"]),
     st.sampled_from(["keep", "replace"]),
+    st.sampled_from([None, "zero", "farthest"]),
 )
 def test_the_frame_is_the_brute_force_nearest_at_each_pixel(
-    triangles: list[tuple[tuple[int, int, int], ...]], nearer: str, ties: str
+    triangles: list[tuple[tuple[int, int, int], ...]], nearer: str, ties: str, clear: str | None
 ) -> None:
+    """With the buffer cleared to the farthest value every covering point competes; cleared
+    to 0 (Hearn & Baker's and Foley's back clipping plane, the default preset's) a pixel is
+    written only where the nearest point is in front of 0 (z > 0, or z >= 0 when ties
+    replace); a preset's 0 means nothing when a smaller z is nearer."""
     triangles, flat = as_words(triangles)
     if not triangles:
         return
-    sol = visible_zbuffer(flat, size="6x5", depth=nearer, ties=ties)
+    if clear == "zero" and nearer == "smaller-nearer":
+        with pytest.raises(ValueError, match="clear zero"):
+            visible_zbuffer(flat, size="6x5", depth=nearer, ties=ties, clear=clear)
+        return
+    sol = visible_zbuffer(flat, size="6x5", depth=nearer, ties=ties, clear=clear)
     brute = nearest(triangles, 6, 5, nearer, ties)
+    if clear != "farthest" and nearer == "larger-nearer":
+        brute = {p: b for p, b in brute.items() if b[1] > 0 or (b[1] == 0 and ties == "replace")}
     for y in range(5):
         for x in range(6):
             key = f"{x},{y}"

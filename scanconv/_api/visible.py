@@ -15,6 +15,7 @@ from ..core import lazy
 from ..core.checks import InputError
 from ..core.declare import Arg, Opt
 from ..display import answers
+from .space import PRESETS
 from .values import NumberLike, _choice, _maybe, _number
 
 if TYPE_CHECKING:
@@ -55,8 +56,16 @@ DEPTH = Opt(
 )
 TIES = Opt(
     "--ties",
-    help="Equal depths: keep (the polygon drawn first keeps the pixel, the default) or replace.",
+    help="Equal depths: keep (the polygon drawn first keeps the pixel: hearn-baker, rogers) or "
+    "replace (foley).",
     choices=("keep", "replace"),
+    show_default=False,
+)
+CONVENTION = Opt(
+    "--convention",
+    help="The conventions of a text: hearn-baker (default), foley or rogers; an option below "
+    "overrides one of them.",
+    choices=PRESETS,
     show_default=False,
 )
 
@@ -100,7 +109,8 @@ EdgeOn = Annotated[
     str | None,
     Opt(
         "--edge-on",
-        help="A face with V.N = 0: hidden (the default, Hearn & Baker's C <= 0) or visible.",
+        help="A face with V.N = 0: hidden (hearn-baker's C <= 0, foley's V.N >= 0) or visible "
+        "(rogers: a back plane only when V.N is strictly of the back sign).",
         choices=("hidden", "visible"),
         show_default=False,
     ),
@@ -169,6 +179,7 @@ def visible_backface(
     direction: Direction = None,
     edge_on: EdgeOn = None,
     handed: Handed = None,
+    convention: Annotated[str | None, CONVENTION] = None,
 ) -> Solution:
     """Back-face detection (``scanconv 3d backface``): each face's normal, the view vector, the
     sign of ``V . N`` and the verdict.
@@ -193,6 +204,8 @@ def visible_backface(
         A face with ``V . N = 0`` (default ``"hidden"``).
     handed : {"right", "left"}, optional
         The axes (default ``"right"``); the default V follows.
+    convention : {"hearn-baker", "foley", "rogers"}, optional
+        The conventions of a text (default Hearn & Baker's; ``rogers`` keeps an edge-on face).
 
     Returns
     -------
@@ -224,6 +237,7 @@ def visible_backface(
             "edge-on": _maybe(edge_on, "edge_on"),
             "handed": _maybe(handed, "handed"),
         },
+        convention=_maybe(convention, "convention"),
     )
 
 
@@ -236,12 +250,23 @@ def visible_zbuffer(
         NumberLike | None,
         Opt(
             "--far",
-            help="The depth buffer's first value (default: -inf, or +inf with smaller-nearer).",
+            help="The depth buffer's first value, a number (default: as --clear says).",
             show_default=False,
         ),
     ] = None,
     depth: Annotated[str | None, DEPTH] = None,
     ties: Annotated[str | None, TIES] = None,
+    clear: Annotated[
+        str | None,
+        Opt(
+            "--clear",
+            help="The depth buffer's first value: zero, the back clipping plane (hearn-baker, "
+            "foley), or farthest, -inf (rogers; +inf with smaller-nearer).",
+            choices=("zero", "farthest"),
+            show_default=False,
+        ),
+    ] = None,
+    convention: Annotated[str | None, CONVENTION] = None,
 ) -> Solution:
     """The depth-buffer (z-buffer) method on a small grid (``scanconv 3d zbuffer``).
 
@@ -254,11 +279,17 @@ def visible_zbuffer(
         The grid ``"WxH"`` (or ``"N"``), at most 32 x 32; default: from 0 to the largest
         vertex coordinates.
     far : number, optional
-        The depth buffer's initial value (default: farther than everything).
+        The depth buffer's initial value (default: as ``clear`` says).
     depth : {"larger-nearer", "smaller-nearer"}, optional
         Which z is nearer (default ``"larger-nearer"``, Hearn & Baker).
     ties : {"keep", "replace"}, optional
         Equal depths (default ``"keep"``: the first polygon drawn keeps the pixel).
+    clear : {"zero", "farthest"}, optional
+        The depth buffer's first value: 0, the back clipping plane (default, Hearn & Baker's
+        and Foley's), or farther than everything (Rogers'); with ``depth="smaller-nearer"``
+        always the farthest.
+    convention : {"hearn-baker", "foley", "rogers"}, optional
+        The conventions of a text (default Hearn & Baker's; ``foley``: ties replace).
 
     Returns
     -------
@@ -282,7 +313,12 @@ def visible_zbuffer(
         _values(polygons, "polygons"),
         size=None if size is None else _choice(size, "size"),
         far=None if far is None else _number(far, "far"),
-        conventions={"depth": _maybe(depth, "depth"), "ties": _maybe(ties, "ties")},
+        conventions={
+            "depth": _maybe(depth, "depth"),
+            "ties": _maybe(ties, "ties"),
+            "clear": _maybe(clear, "clear"),
+        },
+        convention=_maybe(convention, "convention"),
     )
 
 
@@ -300,6 +336,7 @@ def visible_warnock(
     ] = None,
     depth: Annotated[str | None, DEPTH] = None,
     ties: Annotated[str | None, TIES] = None,
+    convention: Annotated[str | None, CONVENTION] = None,
 ) -> Solution:
     """Warnock's area subdivision (``scanconv 3d warnock``).
 
@@ -314,6 +351,8 @@ def visible_warnock(
         Which z is nearer (default ``"larger-nearer"``).
     ties : {"keep", "replace"}, optional
         Equal depths at a pixel: the polygon given first (default) or last.
+    convention : {"hearn-baker", "foley", "rogers"}, optional
+        The conventions of a text (default Hearn & Baker's; ``foley``: ties replace).
 
     Returns
     -------
@@ -338,6 +377,7 @@ def visible_warnock(
         _values(polygons, "polygons"),
         size=None if size is None else _choice(size, "size"),
         conventions={"depth": _maybe(depth, "depth"), "ties": _maybe(ties, "ties")},
+        convention=_maybe(convention, "convention"),
     )
 
 
@@ -348,6 +388,7 @@ def visible_scanline(
     size: Annotated[str | None, SIZE] = None,
     depth: Annotated[str | None, DEPTH] = None,
     ties: Annotated[str | None, TIES] = None,
+    convention: Annotated[str | None, CONVENTION] = None,
 ) -> Solution:
     """The scan-line method of visible-surface detection (``scanconv 3d scanline``).
 
@@ -363,6 +404,8 @@ def visible_scanline(
         Which z is nearer (default ``"larger-nearer"``).
     ties : {"keep", "replace"}, optional
         Equal depths at a pixel: the polygon given first (default) or last.
+    convention : {"hearn-baker", "foley", "rogers"}, optional
+        The conventions of a text (default Hearn & Baker's; ``foley``: ties replace).
 
     Returns
     -------
@@ -386,6 +429,7 @@ def visible_scanline(
         _values(polygons, "polygons"),
         size=None if size is None else _choice(size, "size"),
         conventions={"depth": _maybe(depth, "depth"), "ties": _maybe(ties, "ties")},
+        convention=_maybe(convention, "convention"),
     )
 
 
@@ -395,6 +439,7 @@ def visible_depth_sort(
     *,
     size: Annotated[str | None, SIZE] = None,
     depth: Annotated[str | None, DEPTH] = None,
+    convention: Annotated[str | None, CONVENTION] = None,
 ) -> Solution:
     """The depth-sort (painter's) method (``scanconv 3d depth-sort``).
 
@@ -407,6 +452,8 @@ def visible_depth_sort(
         The grid the frame is painted on, ``"WxH"`` (or ``"N"``), at most 32 x 32.
     depth : {"larger-nearer", "smaller-nearer"}, optional
         Which z is nearer (default ``"larger-nearer"``, the viewer on +z).
+    convention : {"hearn-baker", "foley", "rogers"}, optional
+        The conventions of a text (default Hearn & Baker's; the three agree on depth).
 
     Returns
     -------
@@ -431,4 +478,5 @@ def visible_depth_sort(
         _values(polygons, "polygons"),
         size=None if size is None else _choice(size, "size"),
         conventions={"depth": _maybe(depth, "depth")},
+        convention=_maybe(convention, "convention"),
     )

@@ -239,7 +239,8 @@ KNOBS: dict[str, Knob] = {
         {
             "hidden": "a face seen edge-on (V·N = 0) is hidden (Hearn & Baker: C <= 0 for V "
             "along -z)",
-            "visible": "a face seen edge-on (V·N = 0) is kept as visible",
+            "visible": "a face seen edge-on (V·N = 0) is kept as visible (Rogers: a back plane "
+            "only when the test is strictly negative)",
         },
         "hidden",
         ("3d/backface",),
@@ -258,11 +259,10 @@ KNOBS: dict[str, Knob] = {
     "depth": Knob(
         "depth",
         {
-            "larger-nearer": "a larger z is nearer the viewer: the depth buffer starts at the "
-            "farthest value and a pixel is written when z > depth(x, y) (Hearn & Baker, C "
-            "version)",
-            "smaller-nearer": "a smaller z is nearer the viewer: the buffer starts at the "
-            "farthest value and a pixel is written when z < depth(x, y) (OpenGL's depth range)",
+            "larger-nearer": "a larger z is nearer the viewer (the viewer on +z looking along "
+            "-z): a pixel is written when z > depth(x, y) (Hearn & Baker, Foley, Rogers)",
+            "smaller-nearer": "a smaller z is nearer the viewer: a pixel is written when "
+            "z < depth(x, y) (OpenGL's depth range)",
         },
         "larger-nearer",
         ("3d/zbuffer", "3d/warnock", "3d/scanline", "3d/depth-sort"),
@@ -272,10 +272,23 @@ KNOBS: dict[str, Knob] = {
         {
             "keep": "equal depths keep what the buffer holds: the polygon drawn first wins "
             "(a strict comparison, Hearn & Baker)",
-            "replace": "equal depths let the polygon drawn later replace it (z >= depth(x, y))",
+            "replace": "equal depths let the polygon drawn later replace it (z >= depth(x, y): "
+            "Foley's 'not farther')",
         },
         "keep",
         ("3d/zbuffer", "3d/warnock", "3d/scanline"),
+    ),
+    "clear": Knob(
+        "clear",
+        {
+            "zero": "the depth buffer starts at 0, the back clipping plane (depths run from 0 "
+            "at the back to z_max at the front: Hearn & Baker, Foley): a point at z < 0 is "
+            "never written, nor one at z = 0 when ties keep",
+            "farthest": "the depth buffer starts farther than every point, -inf (+inf when a "
+            "smaller z is nearer: Rogers' 'minimum z value'): every point is compared",
+        },
+        "zero",
+        ("3d/zbuffer",),
     ),
 }
 """Every knob, by name. The defaults are the course notes' own stated rules."""

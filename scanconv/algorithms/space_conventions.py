@@ -1,4 +1,5 @@
-"""The conventions of 3D transformations and projections, named and settable, with presets.
+"""The conventions of 3D transformations, projections and visible-surface detection, named and
+settable, with presets (the visible-surface ones: :data:`VISIBLE_PRESETS`).
 
 Published answers differ on each, and each changes what is printed:
 
@@ -96,6 +97,73 @@ SPACE_SOURCES = {
 
 DEFAULT = "hearn-baker"
 """The preset when none is named."""
+
+
+# --- visible-surface detection ---------------------------------------------------------------
+
+VISIBLE_PRESETS: dict[str, dict[str, str]] = {
+    "hearn-baker": {
+        "direction": "into-scene",
+        "edge-on": "hidden",
+        "handed": "right",
+        "depth": "larger-nearer",
+        "ties": "keep",
+        "clear": "zero",
+    },
+    "foley": {
+        "direction": "into-scene",
+        "edge-on": "hidden",
+        "handed": "right",
+        "depth": "larger-nearer",
+        "ties": "replace",
+        "clear": "zero",
+    },
+    "rogers": {
+        "direction": "into-scene",
+        "edge-on": "visible",
+        "handed": "right",
+        "depth": "larger-nearer",
+        "ties": "keep",
+        "clear": "farthest",
+    },
+}
+"""The visible-surface conventions of each source (the knobs of
+:data:`scanconv.algorithms.conventions.KNOBS` that apply to ``3d``; ``docs/conventions.md``
+says where each value is read and which are uncertain):
+
+- Hearn & Baker: V the viewing direction, a back face when ``V . N > 0``, and with V along -z
+  "any polygon ... a back face if ... C <= 0" (edge-on hidden); the depth buffer starts at 0
+  (the back clipping plane) and a pixel is written when ``z > depth(x, y)`` (strict: ties keep);
+- Foley et al.: back faces by "a nonnegative dot product" of the normal with the vector from
+  the centre of projection (edge-on hidden); the z-buffer "initialized to zero" and written
+  when ``pz >= ReadZ(x, y)`` ("not farther": ties replace);
+- Rogers (*Procedural Elements*): the Roberts test ``E . [VT] < 0`` for a back plane, strict
+  (edge-on kept: its edges may show); the z-buffer set to "the minimum z value" and written
+  when ``z(x, y) > Zbuffer(x, y)`` (strict).
+"""
+
+VISIBLE_SOURCES = {
+    "hearn-baker": "Hearn & Baker, Computer Graphics, C Version, 2nd ed., ch. 13",
+    "foley": "Foley, van Dam, Feiner & Hughes, Computer Graphics, 2nd ed., 15.2.4 and 15.4",
+    "rogers": "Rogers, Procedural Elements for Computer Graphics, 2nd ed., ch. 4",
+}
+"""What each visible-surface preset's name stands for."""
+
+
+def visible_preset(convention: str | None) -> tuple[str, dict[str, str]]:
+    """The visible-surface preset named ``convention`` (default :data:`DEFAULT`) and its
+    values; :class:`InputError` for an unknown name.
+
+    >>> visible_preset("foley")[1]["ties"], visible_preset(None)[0]
+    ('replace', 'hearn-baker')
+    """
+    name = convention or DEFAULT
+    if name not in VISIBLE_PRESETS:
+        raise InputError(
+            f"unknown convention {name!r} (choose from {', '.join(VISIBLE_PRESETS)})",
+            "convention",
+        )
+    return name, VISIBLE_PRESETS[name]
 
 
 def resolve(convention: str | None, given: Mapping[str, str | None]) -> dict[str, str]:

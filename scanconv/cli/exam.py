@@ -2,8 +2,9 @@
 
 The book is the question file shipped in the package (``scanconv/data/exam.txt``: every
 TYPICAL EXAM QUESTION of the notes and the seven closing topics, each worded as the notes word
-it and answered by a scanconv command line) run through :mod:`scanconv.cli.sheet`, with a table
-of contents. ``--source`` prints the file, so a teacher can copy it, edit it and run it with
+it and answered by a scanconv command line, then a section of its own for the 3D chapter beyond
+the notes, the typical questions of the papers, numbered after the notes' 37) run through
+:mod:`scanconv.cli.sheet`, with a table of contents. ``--source`` prints the file, so a teacher can copy it, edit it and run it with
 ``scanconv sheet``. ``--section`` keeps one section.
 """
 
@@ -23,12 +24,16 @@ from .sheet import Sheet, answer_questions, read_questions, write_document
 EXAM_FILE = "exam.txt"
 """The question file, in the package ``scanconv.data``."""
 
+BEYOND_NOTES = "The 3D chapter (beyond the notes)"
+"""The book's last section: the 3D chapter's typical questions, which the notes do not ask
+(numbered after the notes' questions, so theirs keep their numbers)."""
+
 
 def exam_text() -> str:
     """The shipped question file.
 
     >>> exam_text().count("section:")
-    7
+    8
     """
     from importlib.resources import files
 
@@ -115,8 +120,8 @@ def exam(
             "--section",
             "-s",
             metavar="SECTION",
-            help="Only this section: its number (1-7) or name (scan-conversion, "
-            "image-representation, line-drawing, dda, bresenham, circle-drawing, 14).",
+            help="Only this section: its number (1-8) or name (scan-conversion, "
+            "image-representation, line-drawing, dda, bresenham, circle-drawing, 14, 3d).",
         ),
     ] = None,
     fmt: DocumentFormatOpt = "auto",
@@ -140,7 +145,7 @@ def exam(
     """The whole exam of the notes answered, as one book with a table of contents.
 
     Every typical exam question and the seven 14-mark topics, each answered by the command
-    shown under it.
+    shown under it; then the 3D chapter beyond the notes (projections, visible surfaces).
     Example: scanconv exam --format latex --standalone -o exam.tex
     """
     name = document_format(fmt, output)

@@ -7,6 +7,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from typing import Any
 
 from ...algorithms.conventions import KNOBS
+from ...algorithms.space_conventions import VISIBLE_SOURCES, visible_preset
 from ...algorithms.visible import MAX_FACES, Face, Plane, check_face
 from ...core.checks import InputError
 from ...core.numeric import Number, fmt_paren, fmt_short
@@ -68,28 +69,60 @@ def checked_faces(faces: Sequence[Face], names: Sequence[str]) -> dict[str, Face
     return {name: check_face(f, name) for name, f in zip(names, faces, strict=True)}
 
 
-def knobs_for(method: str, given: Mapping[str, str | None]) -> dict[str, str]:
-    """The conventions of ``3d`` method ``method``: each given value checked, else the knob's
-    default (Hearn & Baker's)."""
+def knobs_for(
+    method: str, given: Mapping[str, str | None], convention: str | None = None
+) -> dict[str, str]:
+    """The conventions of ``3d`` method ``method``: each given value checked, else the
+    preset's (``convention``, default Hearn & Baker's:
+    :data:`~scanconv.algorithms.space_conventions.VISIBLE_PRESETS`).
+
+    A preset's depth buffer from 0 (``clear = zero``) is the back of a range where a larger z
+    is nearer; with ``depth = smaller-nearer`` it starts at the farthest value instead, and
+    ``clear = zero`` given with it is refused.
+
+    >>> knobs_for("zbuffer", {"ties": None}, "foley")
+    {'depth': 'larger-nearer', 'ties': 'replace', 'clear': 'zero'}
+    >>> knobs_for("zbuffer", {"depth": "smaller-nearer"})["clear"]
+    'farthest'
+    """
+    _, preset = visible_preset(convention)
     out: dict[str, str] = {}
     for name, knob in KNOBS.items():
         if not knob.applies_to("3d", method):
             continue
-        value = given.get(name) or knob.default
+        value = given.get(name) or preset.get(name, knob.default)
         if value not in knob.values:
             raise InputError(
                 f"unknown {name} {value!r} (choose from {', '.join(knob.values)})", name
             )
         out[name] = value
+    if out.get("clear") == "zero" and out.get("depth") == "smaller-nearer":
+        if given.get("clear") == "zero":
+            raise InputError(
+                "clear zero is the back of a depth range where a larger z is nearer: with "
+                "depth smaller-nearer, give far for the buffer's first value",
+                "clear",
+            )
+        out["clear"] = "farthest"
     return out
 
 
-def convention_note(used: Mapping[str, str]) -> str:
-    """The note naming every convention an answer used."""
-    parts = "; ".join(f"{k} = {v} ({KNOBS[k].values[v]})" for k, v in used.items())
-    changed = any(KNOBS[k].default != v for k, v in used.items())
-    where = "as given" if changed else "Hearn & Baker's, the default"
-    return f"Conventions ({where}): {parts}."
+def convention_note(used: Mapping[str, str], convention: str | None = None) -> str:
+    """The note naming the preset and every convention an answer used (a value that is not
+    the preset's says so).
+
+    >>> print(convention_note({"ties": "replace"}, "hearn-baker"))  # doctest: +ELLIPSIS
+    Conventions (preset hearn-baker: Hearn & Baker, ...): ties = replace, not the preset's keep (...).
+    """
+    name, preset = visible_preset(convention)
+
+    def part(k: str, v: str) -> str:
+        theirs = preset.get(k, KNOBS[k].default)
+        other = "" if theirs == v else f", not the preset's {theirs}"
+        return f"{k} = {v}{other} ({KNOBS[k].values[v]})"
+
+    parts = "; ".join(part(k, v) for k, v in used.items())
+    return f"Conventions (preset {name}: {VISIBLE_SOURCES[name]}): {parts}."
 
 
 def plane_tex(name: str, p: Plane) -> str:
@@ -128,5 +161,5 @@ def buffer_tables(
         Table(
             "Frame buffer (the polygon seen at each pixel; . the background)", columns, frame_rows
         ),
-        Table(f"Depth buffer ({far}: never written)", columns, depth_rows),
+        Table(f"Depth buffer ({far} where never written)", columns, depth_rows),
     )

@@ -86,6 +86,7 @@ def backface_solution(
     eye: Sequence[Number] | None = None,
     names: str | None = None,
     conventions: Mapping[str, str | None] | None = None,
+    convention: str | None = None,
 ) -> Solution:
     """Back-face detection of the faces given (numbers ``x y z ...`` with ``:`` between faces)
     or of a named solid (:data:`~scanconv.algorithms.visible.SOLIDS`).
@@ -94,7 +95,7 @@ def backface_solution(
     >>> [r[-1] for r in sol.tables[0].rows()]
     ['visible', 'hidden (back face)', 'edge-on, hidden (back face)', 'edge-on, hidden (back face)', 'edge-on, hidden (back face)', 'edge-on, hidden (back face)']
     """
-    knobs = knobs_for("backface", conventions or {})
+    knobs = knobs_for("backface", conventions or {}, convention)
     if solid is not None and faces:
         raise InputError("give the faces or a named solid, not both", "solid")
     if solid is not None and names is not None:
@@ -119,7 +120,7 @@ def backface_solution(
     if v == (0, 0, 0):
         raise InputError("the view vector is zero", "view")
     tests = list(vs.backface(named, v, e, knobs))
-    return _solution(tests, solid, v, e, knobs)
+    return _solution(tests, solid, v, e, knobs, convention)
 
 
 def _names(names: str | None, n: int) -> list[str]:
@@ -148,6 +149,7 @@ def _solution(
     view: vs.Vec | None,
     eye: vs.Vec | None,
     knobs: Mapping[str, str],
+    convention: str | None,
 ) -> Solution:
     if eye is not None:
         how = r"V = V_1 - E" if knobs["direction"] == "into-scene" else r"V = E - V_1"
@@ -186,7 +188,7 @@ def _solution(
         f"{', '.join(hidden) or 'none'}.",
         "The normal points outward when the vertices run counter-clockwise seen from outside "
         "(right-handed axes; clockwise with left-handed ones).",
-        convention_note(knobs),
+        convention_note(knobs, convention),
     )
     return Solution(
         primitive="3d",

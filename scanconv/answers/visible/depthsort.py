@@ -77,6 +77,7 @@ def depth_sort_solution(
     *,
     size: str | None = None,
     conventions: Mapping[str, str | None] | None = None,
+    convention: str | None = None,
 ) -> Solution:
     """The depth sort of the polygons (numbers ``x y z ...``, ``:`` between them), painted on a
     ``W x H`` grid.
@@ -85,7 +86,7 @@ def depth_sort_solution(
     >>> sol.data["painted"], sol.data["frame"]["0,0"]
     (['B', 'A'], 'A')
     """
-    knobs = knobs_for("depth-sort", conventions or {})
+    knobs = knobs_for("depth-sort", conventions or {}, convention)
     polys = polygons_from(polygons)
     width, height = size_of(size, polys)
     result = ds.depth_sort(polys, knobs)
@@ -125,7 +126,7 @@ def depth_sort_solution(
             else "Painted in order, the farthest first: a later polygon overwrites an earlier one."
         ),
         "Orthographic view along z; each polygon's pixels are the scan-line fill's.",
-        convention_note(knobs),
+        convention_note(knobs, convention),
     )
     frame_table, _ = buffer_tables(frame, {}, width, height, "-")
     return Solution(

@@ -109,6 +109,7 @@ def scanline_solution(
     *,
     size: str | None = None,
     conventions: Mapping[str, str | None] | None = None,
+    convention: str | None = None,
 ) -> Solution:
     """The scan-line method for the polygons (numbers ``x y z ...``, ``:`` between them) on
     a ``W x H`` grid.
@@ -117,7 +118,7 @@ def scanline_solution(
     >>> sol.data["frame"]["2,1"], sol.data["frame"]["1,1"]
     ('B', 'A')
     """
-    knobs = knobs_for("scanline", conventions or {})
+    knobs = knobs_for("scanline", conventions or {}, convention)
     polys = polygons_from(polygons)
     width, height = size_of(size, polys)
     names = [n for n, _ in polys]
@@ -145,7 +146,7 @@ def scanline_solution(
         f"{len(rows)} scan lines meet the polygons; {overlaps} interval(s) with more than one flag on.",
         "Orthographic view along z; a pixel lies in the interval [x_a, x_b) its centre is in "
         "(the scan-line fill's half-open rule, each polygon's top end left out).",
-        convention_note(knobs),
+        convention_note(knobs, convention),
     )
     frame_table, _ = buffer_tables(frame, {}, width, height, "-")
     return Solution(

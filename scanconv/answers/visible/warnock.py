@@ -85,6 +85,7 @@ def warnock_solution(
     *,
     size: str | None = None,
     conventions: Mapping[str, str | None] | None = None,
+    convention: str | None = None,
 ) -> Solution:
     """Warnock's subdivision of the polygons (numbers ``x y z ...``, ``:`` between polygons)
     on a square grid of 2^n pixels.
@@ -93,7 +94,7 @@ def warnock_solution(
     >>> [r[1] for r in sol.tables[0].rows()][:3]
     ['W', 'W1', 'W2']
     """
-    knobs = knobs_for("warnock", conventions or {})
+    knobs = knobs_for("warnock", conventions or {}, convention)
     polys = polygons_from(polygons)
     side = _size(size, polys)
     names = [n for n, _ in polys]
@@ -122,7 +123,7 @@ def warnock_solution(
         f"{len(windows)} windows: " + ", ".join(f"{v} {k}" for k, v in counts.items() if v) + ".",
         "Orthographic view along z; a pixel is covered by a polygon as in the scan-line fill "
         "(centres at integer points, half-open spans and edges).",
-        convention_note(knobs),
+        convention_note(knobs, convention),
     )
     frame_table, _ = buffer_tables(frame, {}, side, side, "-")
     return Solution(

@@ -166,6 +166,7 @@ def zbuffer_solution(
     size: str | None = None,
     far: Number | None = None,
     conventions: Mapping[str, str | None] | None = None,
+    convention: str | None = None,
 ) -> Solution:
     """The z-buffer of the polygons (numbers ``x y z ...``, ``:`` between polygons) on a
     ``W x H`` grid.
@@ -174,13 +175,21 @@ def zbuffer_solution(
     >>> [r for r in sol.tables[-2].rows()]
     [(3, '.', '.', '.', '.'), (2, 'A', '.', '.', '.'), (1, 'B', 'A', '.', '.'), (0, 'B', 'B', 'A', '.')]
     """
-    knobs = knobs_for("zbuffer", conventions or {})
+    knobs = knobs_for("zbuffer", conventions or {}, convention)
+    if far is not None:  # the buffer's first value given: no clear convention applies
+        if (conventions or {}).get("clear"):
+            raise InputError(
+                "far gives the depth buffer's first value: clear cannot go with it", "far"
+            )
+        del knobs["clear"]
+    start = far if far is not None or knobs["clear"] == "farthest" else 0
     polys = polygons_from(polygons)
     width, height = size_of(size, polys)
     planes = [zb.check_plane(n, f) for n, f in polys]
-    steps = list(zb.zbuffer(polys, width, height, knobs, far))
+    steps = list(zb.zbuffer(polys, width, height, knobs, start))
     frame, depth = zb.buffers(steps)
-    far_text = _far_text(knobs["depth"], far)
+    far_text = _far_text(knobs["depth"], start)
+    behind = sum(1 for s in steps if s.before is not None and s.holder is None and not s.written)
     given = (
         *(worked(n, f, f"{n}: " + ", ".join(vec(v) for v in f)) for n, f in polys),
         worked(
@@ -211,7 +220,15 @@ def zbuffer_solution(
         "Orthographic view along z: a polygon's pixels are the scan-line fill's (pixel centres "
         "at integer points, a span from ceil(x_left) to ceil(x_right) - 1, an edge's top end "
         "left out), walked from the top scan line down; polygons in the order given.",
-        convention_note(knobs),
+        *(
+            (
+                f"{behind} pixel(s) lie at or behind the depth buffer's first value "
+                f"{far_text} (the back clipping plane) and are never written.",
+            )
+            if behind
+            else ()
+        ),
+        convention_note(knobs, convention),
     )
     return Solution(
         primitive="3d",

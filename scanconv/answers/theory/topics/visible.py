@@ -32,7 +32,9 @@ def z_buffer() -> Solution:
             "so far; a surface's pixel is written only when it is nearer than that depth."
         ),
         paragraphs=(
-            "Initialise every depth to the farthest value and every pixel to the background. "
+            "Initialise every depth to the farthest value (Hearn & Baker and Foley: 0, the back "
+            "clipping plane, depths running up to z_max at the front) and every pixel to the "
+            "background. "
             "Then for each polygon, for each pixel (x, y) it covers, compute its depth z; if z "
             "is nearer than depth(x, y) (with a larger z nearer: z > depth(x, y)), set "
             "depth(x, y) = z and frame(x, y) to the polygon's colour.",
@@ -43,7 +45,7 @@ def z_buffer() -> Solution:
         points=(
             "Polygons may come in any order: no sorting, no comparison between polygons.",
             "Memory: one depth value a pixel (often 16 to 32 bits).",
-            "Equal depths: the comparison decides (strict: the first drawn keeps it).",
+            "Equal depths: > keeps the first drawn (Hearn & Baker), >= the later (Foley).",
             "Say which z is nearer: a larger (Hearn & Baker, C) or a smaller (OpenGL).",
         ),
         advantages=(
