@@ -60,7 +60,7 @@ def test_a_question_file_that_is_no_regular_file_is_refused_at_once(tmp_path, ki
     )
 
 
-@pytest.mark.parametrize("section", ["-1", "+1", "-7", "-14", "0", "8"])
+@pytest.mark.parametrize("section", ["-1", "+1", "-7", "-14", "0", "9"])
 def test_a_signed_or_out_of_range_number_is_not_a_section(section):
     r = run("exam", "-s", section)
     assert r.code == 2 and r.out == "" and "is not a section" in r.err

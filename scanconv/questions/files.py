@@ -295,7 +295,7 @@ def read_file(path: str) -> Sheet:
     >>> from importlib.resources import files
     >>> sheet = read_file(str(files("scanconv.data") / "exam.txt"))  # scanconv exam's book
     >>> sheet.title, len(sheet.questions), sheet.questions[0].argv
-    ('Scan conversion: the whole exam, answered', 37, ('theory', 'scan-conversion'))
+    ('Scan conversion: the whole exam, answered', 52, ('theory', 'scan-conversion'))
     >>> read_file("no-such-file.txt")
     Traceback (most recent call last):
     ...
