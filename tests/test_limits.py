@@ -283,13 +283,6 @@ BEYOND: dict[str, list[tuple[list[str], str]]] = {
     "algorithms.visible_zbuffer.MAX_POLYGONS": [
         (["3d", "zbuffer", *" : ".join([_TRIANGLE] * 9).split()], "9 polygons; at most 8"),
     ],
-    "algorithms.visible_depthsort.MAX_SPLITS": [  # four triangles that need a ninth split
-        (
-            "3d depth-sort 2 4 -4 7 4 -3 6 1 1 : 5 -1 4 3 6 3 0 -2 -2 : 1 -2 0 1 1 3 6 4 3 : "
-            "4 0 -2 -2 1 3 6 -2 5".split(),
-            "more than 8 splits",
-        )
-    ],
     "algorithms.visible_zbuffer.MAX_SIDE": [
         (["3d", "zbuffer", *_TRIANGLE.split(), "--size", "33"], "1 to 32 pixels"),
     ],

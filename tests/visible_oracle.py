@@ -22,9 +22,8 @@ def inside(poly: list[tuple[Fraction, Fraction]], x: int, y: int) -> bool:
 
 
 def depth(tri: list[tuple[int, int, int]], x: int, y: int) -> Fraction:
-    """z on the plane through the triangle (a planar polygon's first three vertices), by
-    Cramer's rule on barycentric weights."""
-    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = tri[:3]
+    """z on the plane through the triangle, by Cramer's rule on barycentric weights."""
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = tri
     det = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
     s = Fraction((x - x1) * (y3 - y1) - (x3 - x1) * (y - y1), det)
     t = Fraction((x2 - x1) * (y - y1) - (x - x1) * (y2 - y1), det)
@@ -46,8 +45,7 @@ def as_words(triangles: list[Triangle]) -> tuple[list[Triangle], list[object]]:
 
 
 def covering(triangles: list[Triangle], x: int, y: int) -> list[tuple[int, Fraction]]:
-    """Each triangle (or planar convex polygon) covering the pixel ``(x, y)``, with its depth
-    there, in the given order."""
+    """Each triangle covering the pixel ``(x, y)``, with its depth there, in the given order."""
     return [
         (i, depth(list(t), x, y))
         for i, t in enumerate(triangles)

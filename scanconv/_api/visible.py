@@ -459,17 +459,14 @@ def visible_depth_sort(
     -------
     Answer
         The polygons by farthest depth, each pair's tests in order until one passes, the
-        splits of a cyclic overlap (the split line's exact points, the pieces), the painting
-        order, the frame; ``.data["painted"]``, ``.data["tests"]``, ``.data["splits"]``,
-        ``.data["frame"]``.
+        painting order (a cyclic overlap said), the frame; ``.data["painted"]``,
+        ``.data["tests"]``, ``.data["frame"]``.
 
     Notes
     -----
     Hearn & Baker, *Computer Graphics, C version*, 2nd ed., §13-5 (Newell, Newell and Sancha):
     a surface S is painted when no overlapping S' fails every test; one that fails them all
-    is moved before S, and one that would move a second time (a cyclic overlap) is split
-    along the plane of S, its two pieces replacing it in the list; at most 8 splits
-    (``algorithms.visible_depthsort.MAX_SPLITS``), more is refused.
+    is moved before S, and a surface moved twice means the two must be split.
 
     Examples
     --------

@@ -50,8 +50,7 @@ command(
     ("3d", "depth-sort"),
     help="""The depth-sort (painter's) method: the polygons by farthest depth, each pair's tests
     in order (z, x and y extents, behind the other's plane, in front of it, the projections),
-    a cyclic overlap split along the other polygon's plane, the painting order and the frame
-    painted.
+    the painting order and the frame painted.
 
     Example: scanconv 3d depth-sort 0 0 1 4 0 1 0 4 1 : 1 1 3 5 1 3 1 5 3 --size 6
     """,

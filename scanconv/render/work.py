@@ -373,7 +373,7 @@ BOUNDED: dict[str, str] = {
     "transform3d": "at most answers.process._shared.MAX_POINTS vertices and answers.process.transform.MAX_TRANSFORMS",
     "project3d": "at most answers.process._shared.MAX_POINTS vertices, MAX_TRANSFORMS and one projection",
     "visible_zbuffer": "at most algorithms.visible_zbuffer.MAX_POLYGONS = 8 polygons on MAX_SIDE = 32 squared pixels: 8,192 rows, under rich's 10,000 (4.4 s)",
-    "visible_depth_sort": "at most 8 polygons and algorithms.visible_depthsort.MAX_SPLITS = 8 splits: at most max_pair_tests() = 2,535 pair rows",
+    "visible_depth_sort": "at most 8 polygons: at most 8 x 8 x 7 pair rows",
     "visible_scanline": "a row per interval of each of at most 32 scan lines, 8 polygons: a few hundred rows",
     "visible_warnock": "a 2^n grid of at most 32 x 32 pixels: at most 1,365 windows",
     "visible_backface": "at most algorithms.visible.MAX_FACES = 24 faces of 16 vertices, a row each",

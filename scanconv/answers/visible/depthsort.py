@@ -1,7 +1,6 @@
 """The worked answer of the depth-sort (painter's) method: the polygons by farthest depth, the
 tests of each pair in order (z, x and y extents, the plane side tests, the projections), the
-splits that resolve a cyclic overlap (each vertex's side of the plane, the split line, the
-pieces), the painting order and the frame painted."""
+painting order and the frame painted."""
 
 from __future__ import annotations
 
@@ -35,29 +34,18 @@ def _extents(face: Any) -> str:
 
 
 def _tests_table(result: ds.DepthSort) -> Table:
-    name = [p.name for p in result.polygons]
-
     def rows() -> Iterator[tuple[Any, ...]]:
         for t in result.tests:
             said = "; ".join(f"{n}: {_WORDS[n][ok]}" for n, ok in t.results)
-            if t.split is not None:
-                cut = result.splits[t.split]
-                first, second = (name[i] for i in cut.pieces)
+            if t.cycle:
                 outcome = (
-                    f"all fail and {name[t.second]} moved before: cyclic overlap; "
-                    f"{name[cut.polygon]} split by the plane of {name[cut.by]} "
-                    f"into {first} and {second}"
-                )
-            elif t.cycle:
-                outcome = (
-                    f"all fail and {name[t.second]} moved before: cyclic overlap, and no "
-                    "plane cuts a polygon of the list"
+                    f"all fail and {letter(t.second)} moved before: cyclic overlap, split needed"
                 )
             elif t.passed is None:
-                outcome = f"all fail: {name[t.second]} moves before {name[t.first]}"
+                outcome = f"all fail: {letter(t.second)} moves before {letter(t.first)}"
             else:
                 outcome = f"passes ({t.passed})"
-            yield (t.k, name[t.first], name[t.second], said, outcome)
+            yield (t.k, letter(t.first), letter(t.second), said, outcome)
 
     return Table(
         "Pairs tested (S, the next to paint, against each S'), each test in order until one passes",
@@ -72,120 +60,16 @@ def _tests_table(result: ds.DepthSort) -> Table:
     )
 
 
-def _splits_table(result: ds.DepthSort) -> Table:
-    """Each split: the polygon, the plane, each vertex's side of it, the split line, the
-    pieces (the viewer's side first)."""
-    name = [p.name for p in result.polygons]
-
-    def rows() -> Iterator[tuple[Any, ...]]:
-        for n, cut in enumerate(result.splits):
-            face = result.polygons[cut.polygon].face
-            sides = ", ".join(
-                f"{vec(v)}: {fmt_short(d)}" for v, d in zip(face, cut.sides, strict=True)
-            )
-            pieces = "; ".join(
-                f"{name[i]}: " + ", ".join(vec(v) for v in result.polygons[i].face)
-                for i in cut.pieces
-            )
-            line = f"{vec(cut.line[0])} to {vec(cut.line[1])}"
-            yield (n + 1, cut.k, name[cut.polygon], name[cut.by], sides, line, pieces)
-
-    return Table(
-        "Splits (a cyclic overlap: the polygon cut along the other's plane, "
-        "A x + B y + C z + D with the viewer's side positive)",
-        (
-            heading("split", r"\text{split}", role="label"),
-            heading("k", "k", role="given"),
-            heading("polygon", r"\text{polygon}", role="given"),
-            heading("plane", r"\text{plane of}", role="given"),
-            heading("sides", r"\text{each vertex's side}", role="working"),
-            heading("line", r"\text{split line}"),
-            heading("pieces", r"\text{pieces (the viewer's side first)}"),
-        ),
-        rows,
-    )
-
-
-def _painted(result: ds.DepthSort, width: int, height: int) -> dict[tuple[int, int], int]:
-    """The frame painted in the sort's order: each pixel the given polygon (by index) of the
-    last polygon or piece that covers it."""
+def _painted(
+    polys: Sequence[Any], order: Sequence[int], width: int, height: int
+) -> dict[tuple[int, int], int]:
+    """The frame painted in ``order``: each pixel the last polygon (by index) that covers it."""
     frame: dict[tuple[int, int], int] = {}
-    for i in result.painted:
-        piece = result.polygons[i]
-        for x, y in fill_pixels([(v[0], v[1]) for v in piece.face]):
+    for i in order:
+        for x, y in fill_pixels([(v[0], v[1]) for v in polys[i][1]]):
             if 0 <= x < width and 0 <= y < height:
-                frame[(x, y)] = piece.origin
+                frame[(x, y)] = i
     return frame
-
-
-def _split_working(result: ds.DepthSort) -> tuple[Any, ...]:
-    """The split rule and each split's line and pieces, as working."""
-    if not result.splits:
-        return ()
-    name = [p.name for p in result.polygons]
-    out: list[Any] = [
-        rule(
-            "split",
-            r"\text{cyclic overlap: cut } S' \text{ by the plane of } S \text{; on the edge } "
-            r"V_i V_j \text{ with } d_i d_j < 0 \text{: } V_i + (V_j - V_i)\, d_i / (d_i - d_j)",
-        )
-    ]
-    for n, cut in enumerate(result.splits, start=1):
-        first, second = (name[i] for i in cut.pieces)
-        out.append(
-            worked(
-                f"split_{n}",
-                [list(p) for p in cut.line],
-                f"\\text{{split {n}: {name[cut.polygon]} by the plane of {name[cut.by]}, "
-                f"along {vec(cut.line[0])} to {vec(cut.line[1])}, into {first} and {second}}}",
-            )
-        )
-    return tuple(out)
-
-
-def _cycle_note(result: ds.DepthSort) -> str:
-    if result.splits:
-        return (
-            f"A cyclic overlap: S' had moved before S once and fails again, so it is split along "
-            f"the plane of S (Hearn & Baker, section 13-5), and the two pieces take its place in "
-            f"the list by their farthest depth ({len(result.splits)} split(s), at most "
-            f"{ds.MAX_SPLITS}); the marks are cleared and the tests start again."
-        )
-    if result.cycle:
-        return (
-            "A cyclic overlap that no polygon's plane cuts: the rest is painted in the list's "
-            "order."
-        )
-    return "Painted in order, the farthest first: a later polygon overwrites an earlier one."
-
-
-def _data(
-    result: ds.DepthSort, frame: Mapping[tuple[int, int], int], knobs: Mapping[str, str]
-) -> dict[str, Any]:
-    """The JSON data: the orders, the tests, the splits (exact numbers), the frame."""
-    names = [p.name for p in result.polygons]
-    return {
-        "initial": [names[i] for i in result.initial],
-        "painted": [names[i] for i in result.painted],
-        "cycle": result.cycle,
-        "tests": [
-            {"S": names[t.first], "S2": names[t.second], "passed": t.passed} for t in result.tests
-        ],
-        "splits": [
-            {
-                "polygon": names[cut.polygon],
-                "by": names[cut.by],
-                "sides": list(cut.sides),
-                "line": [list(p) for p in cut.line],
-                "pieces": {
-                    names[i]: [list(v) for v in result.polygons[i].face] for i in cut.pieces
-                },
-            }
-            for cut in result.splits
-        ],
-        "frame": {f"{x},{y}": letter(i) for (x, y), i in sorted(frame.items())},
-        "conventions": dict(knobs),
-    }
 
 
 def depth_sort_solution(
@@ -206,8 +90,8 @@ def depth_sort_solution(
     polys = polygons_from(polygons)
     width, height = size_of(size, polys)
     result = ds.depth_sort(polys, knobs)
-    frame = _painted(result, width, height)
-    names = [p.name for p in result.polygons]
+    frame = _painted(polys, result.painted, width, height)
+    names = [n for n, _ in polys]
     given = (
         *(worked(n, f, f"{n}: " + ", ".join(vec(v) for v in f)) for n, f in polys),
         worked(
@@ -227,7 +111,6 @@ def depth_sort_solution(
             [names[i] for i in result.initial],
             r"\text{by farthest depth: } " + ", ".join(names[i] for i in result.initial),
         ),
-        *_split_working(result),
         worked(
             "painted",
             [names[i] for i in result.painted],
@@ -235,17 +118,17 @@ def depth_sort_solution(
         ),
     )
     notes = (
-        _cycle_note(result),
-        "Orthographic view along z; each polygon's pixels are the scan-line fill's"
-        + (" (a piece's pixels are shown as its polygon's)." if result.splits else "."),
+        (
+            "A cyclic overlap: each polygon would have to be painted before the other, so one "
+            "must be split along the other's plane (not done here); the rest is painted in the "
+            "list's order."
+            if result.cycle
+            else "Painted in order, the farthest first: a later polygon overwrites an earlier one."
+        ),
+        "Orthographic view along z; each polygon's pixels are the scan-line fill's.",
         convention_note(knobs, convention),
     )
     frame_table, _ = buffer_tables(frame, {}, width, height, "-")
-    tables = (
-        _tests_table(result),
-        *((_splits_table(result),) if result.splits else ()),
-        frame_table,
-    )
     return Solution(
         primitive="3d",
         algorithm="depth-sort",
@@ -253,6 +136,16 @@ def depth_sort_solution(
         given=given,
         derived=derived,
         notes=notes,
-        walk=Walk(tables=tables),
-        data=_data(result, frame, knobs),
+        walk=Walk(tables=(_tests_table(result), frame_table)),
+        data={
+            "initial": [names[i] for i in result.initial],
+            "painted": [names[i] for i in result.painted],
+            "cycle": result.cycle,
+            "tests": [
+                {"S": names[t.first], "S2": names[t.second], "passed": t.passed}
+                for t in result.tests
+            ],
+            "frame": {f"{x},{y}": letter(i) for (x, y), i in sorted(frame.items())},
+            "conventions": dict(knobs),
+        },
     )
