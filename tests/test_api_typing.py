@@ -42,22 +42,8 @@ raster.polygon([0, 4, 2], [0, 0, 3], rule="nonzero")
 
 @pytest.mark.slow
 def test_mypy_sees_the_names_and_refuses_a_misspelt_keyword_or_choice(tmp_path: Path) -> None:
-    (tmp_path / "snippet.py").write_text("import numpy as np\n" + SNIPPET, encoding="utf-8")
-    # The README's test command runs `mypy` (the project's config) before pytest: a copy of its
-    # cache, read with the same config, checks the snippet alone (under a second of CPU) where
-    # a cold cache checks scanconv and numpy's stubs again (about 10 s). The config's stricter
-    # flags apply to scanconv's own modules only, so the snippet sees what a user's mypy sees.
-    # Without that cache (pytest run alone), the run is a cold one: the same result, slower.
-    cache = tmp_path / ".mypy_cache"
-    if (ROOT / ".mypy_cache").is_dir():
-        shutil.copytree(ROOT / ".mypy_cache", cache)
-    done = subprocess.run(
-        [sys.executable, "-m", "mypy", "--config-file", str(ROOT / "pyproject.toml"),
-         "--cache-dir", str(cache), "--no-error-summary", "snippet.py"],
-        cwd=tmp_path, capture_output=True, text=True, timeout=600,
-        env={**os.environ, "MYPYPATH": str(ROOT)},
-    )  # fmt: skip
-    lines = [x.split(": ", 1)[1] for x in done.stdout.splitlines() if x.startswith("snippet.py")]
+    found = _mypy(tmp_path, "import numpy as np\n" + SNIPPET)
+    lines = [text for _, text in found]
     assert lines == [
         'note: Revealed type is "scanconv.display.Answer"',
         'error: Unexpected keyword argument "algoo" for "line"; did you mean "algo"?  [call-arg]',
@@ -67,7 +53,7 @@ def test_mypy_sees_the_names_and_refuses_a_misspelt_keyword_or_choice(tmp_path: 
         # a misspelt choice is a type error (core.choices), the right spelling is not
         'error: Argument "algo" to "line" has incompatible type "Literal[\'bresenhm\']"; '
         f'expected "LineAlgorithm | Literal[{_listed(LineAlgorithmName)}]"  [arg-type]',
-    ], done.stdout + done.stderr
+    ], found
 
 
 QUESTIONS = """\
@@ -98,6 +84,11 @@ def _mypy(tmp_path: Path, source: str) -> list[tuple[int, str]]:
     """mypy's messages on ``source`` (the project's config, a copy of its cache), each with
     its line number."""
     (tmp_path / "snippet.py").write_text(source, encoding="utf-8")
+    # The README's test command runs `mypy` (the project's config) before pytest: a copy of its
+    # cache, read with the same config, checks the snippet alone (under a second of CPU) where
+    # a cold cache checks scanconv and numpy's stubs again (about 10 s). The config's stricter
+    # flags apply to scanconv's own modules only, so the snippet sees what a user's mypy sees.
+    # Without that cache (pytest run alone), the run is a cold one: the same result, slower.
     cache = tmp_path / ".mypy_cache"
     if (ROOT / ".mypy_cache").is_dir():
         shutil.copytree(ROOT / ".mypy_cache", cache)

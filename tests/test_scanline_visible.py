@@ -11,8 +11,8 @@ from hypothesis import strategies as st
 from scanconv import visible_scanline
 
 from .helpers import run
-from .test_zbuffer import EXAMPLE, FRAME, _frame
-from .visible_oracle import as_words, nearest
+from .test_zbuffer import EXAMPLE, FRAME
+from .visible_oracle import as_words, frame_rows, nearest
 
 # Worked by hand: A, the triangle (0, 0), (4, 0), (0, 4) at z = 1; B, the triangle (1, 0),
 # (4, 0), (4, 3) at z = 2. On scan line y = 1 the active edges are A's x = 0 and x = 3 (the
@@ -52,7 +52,7 @@ def test_the_hand_worked_scan_line() -> None:
 
 
 def test_the_z_buffer_s_example_gives_the_z_buffer_s_frame() -> None:
-    assert _frame(visible_scanline(list(EXAMPLE), size="5").data, 5, 5) == FRAME
+    assert frame_rows(visible_scanline(list(EXAMPLE), size="5").data, 5, 5) == FRAME
 
 
 coord = st.integers(-2, 7)

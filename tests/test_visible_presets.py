@@ -18,7 +18,7 @@ from scanconv import (
 )
 
 from .helpers import assert_refused, run
-from .visible_oracle import nearest
+from .visible_oracle import frame_rows, nearest
 
 #: Each text's values, written from the texts (not read from the library's table):
 #: Hearn & Baker, C version, 2nd ed., ch. 13 (V.N > 0 a back face, C <= 0 along -z; the depth
@@ -89,21 +89,15 @@ def test_the_cube_s_side_faces_edge_on_hidden_or_kept() -> None:
     assert "edge-on = visible (" in out and "edge-on, visible" in out
 
 
-def _frame(data: dict[str, object], width: int, height: int) -> list[str]:
-    frame = data["frame"]
-    assert isinstance(frame, dict)
-    return [
-        "".join(frame.get(f"{x},{y}", ".") for x in range(width)) for y in range(height - 1, -1, -1)
-    ]
-
-
 def test_a_polygon_in_z_0_by_each_text_s_z_buffer() -> None:
     # A: (0, 0, 0) (4, 0, 0) (0, 4, 0), pixels x + y < 4; B: (1, 1, 0) (3, 1, 0) (1, 3, 0),
     # pixels (1, 1), (2, 1), (1, 2); both in z = 0. Hearn & Baker: the buffer is 0 and 0 > 0
     # fails, nothing is drawn. Foley: 0 >= 0, A everywhere, then B replaces it on its three
     # pixels. Rogers: the buffer starts at the minimum, A is drawn, B's equal 0 keeps A.
     polys = [0, 0, 0, 4, 0, 0, 0, 4, 0, ":", 1, 1, 0, 3, 1, 0, 1, 3, 0]
-    frames = {p: _frame(visible_zbuffer(polys, size="4", convention=p).data, 4, 4) for p in TEXTS}
+    frames = {
+        p: frame_rows(visible_zbuffer(polys, size="4", convention=p).data, 4, 4) for p in TEXTS
+    }
     assert frames["hearn-baker"] == ["....", "....", "....", "...."]
     assert frames["foley"] == ["A...", "AB..", "ABB.", "AAAA"]
     assert frames["rogers"] == ["A...", "AA..", "AAA.", "AAAA"]

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from scanconv import visible_zbuffer
 
 from .helpers import run
-from .visible_oracle import as_words, nearest
+from .visible_oracle import as_words, frame_rows, nearest
 
 # Worked by hand with Hearn & Baker's formulas (C version, 2nd ed., section 13-3:
 # z = (-Ax - By - D)/C, z' = z - A/C along a scan line, z' = z + (A/m + B)/C down an edge).
@@ -49,23 +49,15 @@ FRAME = [
 ]
 
 
-def _frame(data: dict[str, object], width: int, height: int) -> list[str]:
-    frame = data["frame"]
-    assert isinstance(frame, dict)
-    return [
-        "".join(frame.get(f"{x},{y}", ".") for x in range(width)) for y in range(height - 1, -1, -1)
-    ]
-
-
 def test_the_hand_worked_example() -> None:
     sol = visible_zbuffer(list(EXAMPLE), size="5")
-    assert _frame(sol.data, 5, 5) == FRAME
+    assert frame_rows(sol.data, 5, 5) == FRAME
     assert sol.data["depth"]["1,1"] == 4 and sol.data["depth"]["3,1"] == 2
     replaced = visible_zbuffer(list(EXAMPLE), size="5", ties="replace")
     flipped = [list(r) for r in FRAME]
     for x, y in ((3, 1), (2, 2), (1, 3)):
         flipped[4 - y][x] = "B"
-    assert _frame(replaced.data, 5, 5) == ["".join(r) for r in flipped]
+    assert frame_rows(replaced.data, 5, 5) == ["".join(r) for r in flipped]
 
 
 def test_the_increments_are_the_plane_s() -> None:

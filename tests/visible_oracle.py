@@ -70,3 +70,12 @@ def nearest(
             if best is not None:
                 out[(x, y)] = best
     return out
+
+
+def frame_rows(data: dict[str, object], width: int, height: int) -> list[str]:
+    """An answer's ``data["frame"]`` as text rows, top row first (``.``: background)."""
+    frame = data["frame"]
+    assert isinstance(frame, dict)
+    return [
+        "".join(frame.get(f"{x},{y}", ".") for x in range(width)) for y in range(height - 1, -1, -1)
+    ]
