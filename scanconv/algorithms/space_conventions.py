@@ -157,25 +157,28 @@ def visible_preset(convention: str | None) -> tuple[str, dict[str, str]]:
     >>> visible_preset("foley")[1]["ties"], visible_preset(None)[0]
     ('replace', 'hearn-baker')
     """
+    return _preset(VISIBLE_PRESETS, convention)
+
+
+def _preset(
+    presets: Mapping[str, dict[str, str]], convention: str | None
+) -> tuple[str, dict[str, str]]:
+    """The preset of ``presets`` named ``convention`` (default :data:`DEFAULT`) and its
+    values, or :class:`InputError` naming the choices."""
     name = convention or DEFAULT
-    if name not in VISIBLE_PRESETS:
+    if name not in presets:
         raise InputError(
-            f"unknown convention {name!r} (choose from {', '.join(VISIBLE_PRESETS)})",
-            "convention",
+            f"unknown convention {name!r} (choose from {', '.join(presets)})", "convention"
         )
-    return name, VISIBLE_PRESETS[name]
+    return name, presets[name]
 
 
 def resolve(convention: str | None, given: Mapping[str, str | None]) -> dict[str, str]:
     """The conventions of one answer: an explicit value wins, then the preset's."""
-    name = convention or DEFAULT
-    if name not in SPACE_PRESETS:
-        raise InputError(
-            f"unknown convention {name!r} (choose from {', '.join(SPACE_PRESETS)})", "convention"
-        )
+    _, preset = _preset(SPACE_PRESETS, convention)
     out = {}
     for knob, values in SPACE_KNOBS.items():
-        value = given.get(knob) or SPACE_PRESETS[name][knob]
+        value = given.get(knob) or preset[knob]
         if value not in values:
             raise InputError(
                 f"unknown {knob} convention {value!r} (choose from {', '.join(values)})", knob
