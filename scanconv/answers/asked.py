@@ -239,10 +239,6 @@ ObliqueAngle = Literal["receding", "projector"]
 CentreOfProjection = Literal["minus-d", "plus-d", "origin"]
 """Where a perspective's centre of projection is (the ``cop`` convention)."""
 
-PROJECTION_OPTIONS = ("view", "angle", "receding", "angles", "ratio", "d")
-"""The options of :class:`ProjectionQuestion`: a kind's builder says which it reads
-(``Built.reads``), and one given that it does not read is refused."""
-
 
 class ProjectionQuestion(NamedTuple):
     """A projection question: ``3d project ... --parallel KIND | --perspective KIND`` with its
@@ -272,3 +268,8 @@ class ProjectionQuestion(NamedTuple):
     def given(self) -> dict[str, object]:
         """The options given (not ``None``), by name."""
         return {k: getattr(self, k) for k in PROJECTION_OPTIONS if getattr(self, k) is not None}
+
+
+PROJECTION_OPTIONS = ProjectionQuestion._fields[ProjectionQuestion._fields.index("sense") + 1 :]
+"""The options of :class:`ProjectionQuestion`, its fields after ``sense``: a kind's builder
+says which it reads (``Built.reads``), and one given that it does not read is refused."""
